@@ -1,0 +1,8 @@
+r"""
+sage_dynsym: symbolic modelling and qualitative analysis of dynamic systems.
+
+This module only re-exports the public API; see the submodules.
+"""
+from .errors import (DynSymError, ModelError, DescriptionError, ExpressionError,
+                     CircuitError, AnalysisError)
+from .lagrangian import Lagrangian

@@ -1,0 +1,133 @@
+r"""
+Exceptions raised by sage_dynsym
+
+Every error a user can provoke with bad input is one of these classes, with a
+message naming the offending entry and saying what was expected. They also
+derive from the matching built-in class (``ValueError`` or ``TypeError``) so
+that generic ``except ValueError`` code keeps working.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.errors import DescriptionError, DynSymError
+    sage: err = DescriptionError("rotation axis must be 1, 2 or 3, got 4",
+    ....:                        entry="bodies[0].rotations[1]", source="top.yaml")
+    sage: print(err)
+    top.yaml: bodies[0].rotations[1]: rotation axis must be 1, 2 or 3, got 4
+    sage: isinstance(err, DynSymError), isinstance(err, ValueError)
+    (True, True)
+"""
+
+
+class DynSymError(Exception):
+    r"""
+    Base class of all errors raised by sage_dynsym.
+
+    INPUT:
+
+    - ``message`` -- what is wrong and what was expected
+    - ``entry`` -- (optional) the name or path of the offending entry,
+      e.g. ``"bodies[1].parent"``
+    - ``source`` -- (optional) the file the entry comes from
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import DynSymError
+        sage: raise DynSymError("something is off", entry="bodies[0]")
+        Traceback (most recent call last):
+        ...
+        DynSymError: bodies[0]: something is off
+    """
+
+    def __init__(self, message, entry=None, source=None):
+        self.message = message
+        self.entry = entry
+        self.source = source
+        super().__init__(self._full_message())
+
+    def _full_message(self):
+        parts = [p for p in (self.source, self.entry) if p]
+        return ": ".join(parts + [self.message])
+
+    def with_context(self, entry=None, source=None):
+        r"""
+        Return a copy of this error with an outer entry path and/or a file.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.errors import ModelError
+            sage: e = ModelError("must be symmetric", entry="inertia")
+            sage: print(e.with_context(entry="bodies[2]", source="f.yaml"))
+            f.yaml: bodies[2].inertia: must be symmetric
+        """
+        if entry and self.entry:
+            entry = f"{entry}.{self.entry}"
+        return type(self)(self.message, entry=entry or self.entry,
+                          source=source or self.source)
+
+
+class ModelError(DynSymError, ValueError):
+    r"""
+    An inconsistent or non-physical model: unknown parent body, cycle of
+    parents, bad rotation axis, non-symmetric inertia tensor, undeclared
+    symbol, wrong vector length, ...
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import ModelError
+        sage: issubclass(ModelError, ValueError)
+        True
+    """
+
+
+class DescriptionError(ModelError):
+    r"""
+    A description file that cannot be read: YAML syntax, unknown or missing
+    keys, malformed expressions, attempts to construct Python objects.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import DescriptionError, ModelError
+        sage: issubclass(DescriptionError, ModelError)
+        True
+    """
+
+
+class ExpressionError(ModelError):
+    r"""
+    A malformed expression string, or one using an undeclared symbol or a
+    function that is not allowed.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import ExpressionError
+        sage: print(ExpressionError("undeclared symbol 'x'", entry="mass"))
+        mass: undeclared symbol 'x'
+    """
+
+
+class CircuitError(ModelError):
+    r"""
+    A circuit graph that cannot be handled: disconnected graph, self-loop,
+    unknown element, a circuit that is not *complete* (no Brayton--Moser
+    split), ...
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import CircuitError, ModelError
+        sage: issubclass(CircuitError, ModelError)
+        True
+    """
+
+
+class AnalysisError(DynSymError, ValueError):
+    r"""
+    Input to an analysis routine that does not fit its assumptions: a point
+    that is not a solution, a non-symmetric quadratic form, an integral that
+    is not conserved, non-polynomial input to elimination.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import AnalysisError
+        sage: issubclass(AnalysisError, ValueError)
+        True
+    """

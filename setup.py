@@ -1,0 +1,22 @@
+"""Installation script of sage_dynsym (also usable as ``sage -pip install .``)."""
+from setuptools import setup, find_packages
+
+setup(
+    name="sage_dynsym",
+    version="0.1.0",
+    description=("Symbolic modelling and qualitative analysis of dynamic "
+                 "systems (rigid bodies, electrical circuits) in SageMath"),
+    long_description=open("README.md", encoding="utf-8").read(),
+    long_description_content_type="text/markdown",
+    license="GPL-2.0-or-later",
+    python_requires=">=3.10",
+    packages=find_packages(include=["sage_dynsym", "sage_dynsym.*"]),
+    # Sage itself is not listed: inside an existing SageMath it is already
+    # there, and the project .venv installs passagemath-standard (Makefile).
+    install_requires=["pyyaml"],
+    extras_require={
+        "passagemath": ["passagemath-standard~=10.8"],
+        "test": ["pytest", "sympy", "scipy"],
+    },
+    entry_points={"console_scripts": ["sage-dynsym = sage_dynsym.__main__:main"]},
+)

@@ -1,0 +1,89 @@
+"""
+Plain-data descriptions of rigid-body chains (no Sage, no SymPy objects).
+
+The dicts use the fields read by :mod:`reference.sympy_chain`; every entry is
+an int, a :class:`fractions.Fraction` or a string over the declared names, so
+the same description can be handed to any implementation.
+"""
+import random
+from fractions import Fraction
+
+
+def _rational(rng, low, high, den=4):
+    return Fraction(rng.randint(low * den, high * den), den)
+
+
+def random_spd(rng, den=4):
+    """A random symmetric positive definite 3x3 matrix of rationals (A A^T + I/2)."""
+    A = [[rng.randint(-3, 3) for _ in range(3)] for _ in range(3)]
+    return [[Fraction(sum(A[i][s] * A[j][s] for s in range(3)), den)
+             + (Fraction(1, 2) if i == j else 0) for j in range(3)] for i in range(3)]
+
+
+def random_chain(seed, n_bodies=None, max_rotations=3, symbolic=False, massless_carrier=False):
+    """
+    A random chain of 1-4 rigid bodies in uniform gravity.
+
+    Each body gets a random earlier parent (body 1: the inertial frame), 0..3
+    elementary rotations about random axes (each angle is its own coordinate
+    ``q<k>_<i>``), random joint and mass-centre vectors, a random mass and a
+    random symmetric positive definite inertia tensor about its joint point.
+
+    With ``symbolic=True`` the masses, one mass-centre component and the
+    diagonal inertias are symbols (``m<k>``, ``c<k>``, ``A<k>``) whose random
+    values are returned in ``values``; with ``massless_carrier=True`` body 1 has
+    mass 0 and zero inertia.
+
+    OUTPUT: dict with keys ``bodies``, ``coordinates``, ``parameters``,
+    ``gravity``, ``values`` (numbers for the parameters).
+    """
+    rng = random.Random(seed)
+    n = n_bodies or rng.randint(1, 4)
+    bodies, coords, params, values = [], [], [], {}
+    for k in range(1, n + 1):
+        rotations = []
+        for i in range(1, rng.randint(0, max_rotations) + 1):
+            name = f"q{k}_{i}"
+            rotations.append((rng.randint(1, 3), name))
+            coords.append(name)
+        body = dict(parent=0 if k == 1 else rng.randint(1, k - 1),
+                    rotations=rotations,
+                    joint=[_rational(rng, -2, 2) for _ in range(3)],
+                    mass_center=[_rational(rng, -2, 2) for _ in range(3)],
+                    mass=_rational(rng, 1, 3),
+                    inertia=random_spd(rng))
+        if symbolic:
+            m, c, A = f"m{k}", f"c{k}", f"A{k}"
+            params += [m, c, A]
+            values.update({m: float(body['mass']), c: float(body['mass_center'][2]),
+                           A: float(body['inertia'][0][0])})
+            body['mass'] = m
+            body['mass_center'][2] = c
+            body['inertia'][0][0] = A
+        bodies.append(body)
+    if massless_carrier:
+        bodies[0]['mass'] = 0
+        bodies[0]['inertia'] = [[0] * 3 for _ in range(3)]
+    gravity = [_rational(rng, -3, 3) for _ in range(3)]
+    return dict(bodies=bodies, coordinates=coords, parameters=params,
+                gravity=gravity, values=values)
+
+
+def spatial_chain(n):
+    """
+    The N-link spatial chain of the benchmark: link k turns about z by
+    ``psi<k>`` then about the new x by ``theta<k>``; its joint is at the end of
+    the previous link, ``(0, 0, l<k-1>)`` in the parent's axes; mass centre
+    ``(0, 0, c<k>)``; inertia ``diag(A<k>, A<k>, C<k>)`` about the joint; mass
+    ``m<k>``; gravity ``(0, 0, -g)``.
+    """
+    bodies, coords, params = [], [], ['g']
+    for k in range(1, n + 1):
+        coords += [f"psi{k}", f"theta{k}"]
+        params += [f"m{k}", f"l{k}", f"c{k}", f"A{k}", f"C{k}"]
+        bodies.append(dict(parent=k - 1, rotations=[(3, f"psi{k}"), (1, f"theta{k}")],
+                           joint=[0, 0, f"l{k - 1}" if k > 1 else 0],
+                           mass_center=[0, 0, f"c{k}"], mass=f"m{k}",
+                           inertia=[[f"A{k}", 0, 0], [0, f"A{k}", 0], [0, 0, f"C{k}"]]))
+    return dict(bodies=bodies, coordinates=coords, parameters=params,
+                gravity=[0, 0, "-g"], values={})
