@@ -1,0 +1,284 @@
+r"""
+Hamiltonians: the Legendre transform, and Dirac's scheme when it fails
+
+For a regular Lagrangian the momenta `p_i = \partial L/\partial \dot q_i`
+are solved for the velocities and `H = p \cdot \dot q - L` is expressed in
+`(q, p, t)`; Hamilton's equations are `\dot q = \partial H/\partial p`,
+`\dot p = -\partial H/\partial q + Q - \partial R/\partial \dot q` (the
+non-potential forces written in phase variables).
+
+When `\det(\partial^2 L/\partial \dot q^2) = 0` the Hamiltonian carries a
+:class:`~sage_dynsym.dirac.DiracConstraints` analysis instead: primary
+constraints, the canonical Hamiltonian `H_c`, secondary constraints, their
+first/second-class split and Dirac brackets.
+
+EXAMPLES:
+
+A charged particle in a uniform magnetic field (vector potential
+`A = B/2 (-y, x, 0)`)::
+
+    sage: from sage_dynsym import Lagrangian
+    sage: x, y, dx, dy, m, e, B = var('x y dx dy m e B')
+    sage: L = Lagrangian(m*(dx^2 + dy^2)/2 + e*B/2*(x*dy - y*dx), [x, y])
+    sage: H = L.hamiltonian(); H
+    Hamiltonian in coordinates (x, y) and momenta (p_x, p_y) : 1/8*B^2*e^2*x^2/m + 1/8*B^2*e^2*y^2/m - 1/2*B*e*p_y*x/m + 1/2*B*e*p_x*y/m + 1/2*p_x^2/m + 1/2*p_y^2/m
+    sage: H.equations()
+    [(1/2*B*e*y/m + p_x/m, -1/4*B^2*e^2*x/m + 1/2*B*e*p_y/m),
+     (-1/2*B*e*x/m + p_y/m, -1/4*B^2*e^2*y/m - 1/2*B*e*p_x/m)]
+"""
+from sage.matrix.constructor import matrix, vector
+from sage.misc.cachefunc import cached_method
+from sage.misc.latex import latex
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from .errors import ModelError
+from .expressions import momentum
+
+
+def poisson_bracket(f, g, coordinates, momenta):
+    r"""
+    The canonical Poisson bracket
+    `\{f, g\} = \sum_i \partial_{q_i} f\, \partial_{p_i} g - \partial_{p_i} f\, \partial_{q_i} g`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.hamiltonian import poisson_bracket
+        sage: q, p = var('q p')
+        sage: poisson_bracket(q, p, [q], [p]), poisson_bracket(q^2, p^2, [q], [p])
+        (1, 4*p*q)
+    """
+    f, g = SR(f), SR(g)
+    return sum(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q)
+               for q, p in zip(coordinates, momenta))
+
+
+class Hamiltonian(SageObject):
+    r"""
+    The Hamiltonian of a :class:`~sage_dynsym.lagrangian.Lagrangian`.
+
+    INPUT:
+
+    - ``lagrangian`` -- a Lagrangian (natural or not; regular or singular)
+    - ``momenta`` -- (default: ``p_<q>``) symbols of the momenta
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: x, dx, m, k, c = var('x dx m k c')
+        sage: H = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=c*dx^2/2).hamiltonian()
+        sage: H.expr(), H.coordinates(), H.momenta()
+        (1/2*k*x^2 + 1/2*p_x^2/m, [x], [p_x])
+        sage: H.equations()
+        [(p_x/m, -k*x - c*p_x/m)]
+        sage: H.velocities()
+        [p_x/m]
+
+    A Lagrangian that is not quadratic in the velocities is inverted with
+    Sage's solver (here with the assumption `m > 0` it needs)::
+
+        sage: assume(m > 0)
+        sage: H = Lagrangian(-m*sqrt(1 - dx^2), [x]).hamiltonian(); H.expr()
+        sqrt(m^2 + p_x^2)
+        sage: forget()
+
+    TESTS::
+
+        sage: Lagrangian(exp(dx) + dx, [x]).hamiltonian().expr()
+        p_x*(log(p_x - 1) - 1) - log(p_x - 1) + 1
+    """
+
+    def __init__(self, lagrangian, momenta=None):
+        self._lagrangian = lagrangian
+        self._coordinates = lagrangian.coordinates()
+        if momenta is None:
+            momenta = [momentum(q) for q in self._coordinates]
+        self._momenta = [SR(p) for p in momenta]
+        self._dirac = None
+        if lagrangian.is_singular():
+            from .dirac import DiracConstraints
+            self._dirac = DiracConstraints(lagrangian, self._momenta)
+            self._velocity_map = self._dirac.velocity_map()
+            self._expr = self._dirac.canonical_hamiltonian()
+        elif lagrangian.is_natural():
+            self._legendre_natural()
+        else:
+            self._legendre_general()
+
+    def _legendre_natural(self):
+        A, A1, A0 = self._lagrangian.decomposition()
+        shifted = vector(SR, self._momenta) - A1
+        dq = A.solve_right(shifted)
+        self._velocity_map = dict(zip(self._lagrangian.velocities(),
+                                      [v.simplify_rational() for v in dq]))
+        self._expr = (sum(s * v for s, v in zip(shifted, self._velocity_map.values())) / 2
+                      - A0).expand()
+
+    def _legendre_general(self):
+        from sage.symbolic.relation import solve
+        velocities = self._lagrangian.velocities()
+        equations = [p == pi for p, pi in zip(self._momenta,
+                                              self._lagrangian.generalized_momenta())]
+        solutions = solve(equations, velocities, solution_dict=True, to_poly_solve=True)
+        if len(solutions) != 1 or any(v not in solutions[0] or
+                                      any(solutions[0][v].has(w) for w in velocities)
+                                      for v in velocities):
+            raise ModelError("cannot invert the momentum map p = dL/d(dq) "
+                             f"uniquely for {velocities}: solutions {solutions}",
+                             entry="lagrangian")
+        self._velocity_map = {v: solutions[0][v] for v in velocities}
+        H = sum(p * v for p, v in zip(self._momenta, velocities)) - self._lagrangian.expr()
+        self._expr = H.subs(self._velocity_map).simplify_full()
+
+    def _repr_(self):
+        kind = "Hamiltonian" if self._dirac is None else "Canonical Hamiltonian (singular Lagrangian)"
+        return (f"{kind} in coordinates ({', '.join(map(str, self._coordinates))}) and "
+                f"momenta ({', '.join(map(str, self._momenta))}) : {self._expr}")
+
+    def _latex_(self):
+        return "H = " + latex(self._expr)
+
+    def expr(self):
+        r"""
+        `H(q, p, t)`; for a singular Lagrangian, the canonical Hamiltonian
+        `H_c` (defined up to the primary constraints).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian().expr()
+            1/2*p_x^2 + 1/2*x^2
+        """
+        return self._expr
+
+    def coordinates(self):
+        r"""
+        The coordinates `q` (a new list).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: Lagrangian(var('dx')^2, [var('x')]).hamiltonian().coordinates()
+            [x]
+        """
+        return list(self._coordinates)
+
+    def momenta(self):
+        r"""
+        The momentum symbols `p` (a new list), in the order of the coordinates.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: Lagrangian(var('dx')^2, [var('x')]).hamiltonian().momenta()
+            [p_x]
+        """
+        return list(self._momenta)
+
+    def lagrangian(self):
+        r"""
+        The Lagrangian this Hamiltonian was obtained from.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: L = Lagrangian(var('dx')^2, [var('x')])
+            sage: L.hamiltonian().lagrangian() is L
+            True
+        """
+        return self._lagrangian
+
+    def velocities(self):
+        r"""
+        The velocities as functions of `(q, p, t)` (for a singular
+        Lagrangian: one particular solution, the undetermined velocities
+        set to zero).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m = var('x dx m')
+            sage: Lagrangian(m*dx^2/2, [x]).hamiltonian().velocities()
+            [p_x/m]
+        """
+        return [self._velocity_map[v] for v in self._lagrangian.velocities()]
+
+    def is_singular(self):
+        r"""
+        Whether the Lagrangian is singular (Dirac's scheme applies).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian(x*dy - y*dx, [x, y]).hamiltonian().is_singular()
+            True
+        """
+        return self._dirac is not None
+
+    def constraints(self):
+        r"""
+        Dirac's constraint analysis (``None`` for a regular Lagrangian).
+
+        See :class:`~sage_dynsym.dirac.DiracConstraints`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).hamiltonian().constraints()
+            Dirac constraints: 2 second-class, 0 first-class
+            sage: Lagrangian(dx^2 + dy^2, [x, y]).hamiltonian().constraints() is None
+            True
+        """
+        return self._dirac
+
+    def poisson_bracket(self, f, g):
+        r"""
+        The canonical Poisson bracket `\{f, g\}` in this Hamiltonian's
+        variables.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: H = Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian()
+            sage: H.poisson_bracket(x, H.expr())
+            p_x
+        """
+        return poisson_bracket(f, g, self._coordinates, self._momenta)
+
+    def _nonpotential_forces(self):
+        L = self._lagrangian
+        return [(Q - L.dissipation().diff(v)).subs(self._velocity_map)
+                for v, Q in zip(L.velocities(), L.generalized_forces())]
+
+    @cached_method
+    def equations(self):
+        r"""
+        Hamilton's equations as a list of pairs
+        `(\dot q_i, \dot p_i)` of right-hand sides, one pair per coordinate.
+
+        For a singular Lagrangian these are the Hamilton--Dirac equations
+        `\dot f = \{f, H_c + \sum_k v_k \varphi_k\}_D` with Dirac brackets for
+        the second-class constraints and arbitrary multipliers `v_k` for the
+        first-class primary constraints `\varphi_k` (gauge freedom).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: H = Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).hamiltonian()
+            sage: H.equations()
+            [(-y, -x), (x, -y)]
+
+        These agree with the Lagrange equations `\dot x = -y`, `\dot y = x`
+        (and `p_x = -y`, `p_y = x` on the constraint surface).
+        """
+        if self._dirac is not None:
+            return self._dirac.equations()
+        H = self._expr
+        return [(H.diff(p), -H.diff(q) + F)
+                for q, p, F in zip(self._coordinates, self._momenta,
+                                   self._nonpotential_forces())]
