@@ -1,0 +1,344 @@
+r"""
+Electrical circuits
+
+A :class:`Circuit` is an immutable graph of elementary branches (see
+:mod:`~sage_dynsym.circuits.elements` for the entry forms and the
+orientation convention). A linear circuit gives Lagrangians by the
+loop-current and node-potential methods (:mod:`~sage_dynsym.circuits.linear`);
+a complete, possibly nonlinear circuit gives the Brayton--Moser mixed
+potential and the state equations (:mod:`~sage_dynsym.circuits.mixed_potential`).
+
+EXAMPLES:
+
+A series RLC circuit driven by a voltage source::
+
+    sage: from sage_dynsym.circuits import Circuit
+    sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']], name="RLC")
+    sage: C
+    Circuit 'RLC' with 4 branches on 4 nodes
+    sage: L = C.lagrangian(method="loop"); L
+    Lagrangian in coordinates (q1) : 1/2*L1*dq1^2 - 1/2*q1^2/C1
+    sage: L.lagrange_equations()
+    [L1*ddq1 + R1*dq1 - E1 + q1/C1]
+    sage: C.state_variables()
+    [(i1, 'L1'), (u2, 'C1')]
+    sage: C.state_equations()
+    [-R1*i1 - E1 + u2, -i1]
+    sage: C.brayton_moser().mixed_potential()
+    -1/2*R1*i1^2 - (E1 - u2)*i1
+
+Here `u_2 = \varphi(0) - \varphi(3)` is the rise across ``C1`` from node 3
+to node 0, so `L_1\, di_1/dt = u_2 - E_1 - R_1 i_1` is Kirchhoff's voltage
+law around the loop.
+
+The node-potential method gives Kirchhoff's current law instead::
+
+    sage: Ln = C.lagrangian(method="node"); Ln.coordinates()
+    [phi2, phi3]
+    sage: Ln.lagrange_equations()
+    [(dphi2 - E1)/R1 + (phi2 - phi3)/L1, C1*ddphi3 - (phi2 - phi3)/L1]
+"""
+import re
+
+from sage.misc.cachefunc import cached_method
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import CircuitError
+from .elements import parse_entries, Branch, Coupling
+from .graph import CircuitGraph
+
+RESERVED = re.compile(r'^([iut]|[iuq]\d+|phi\w*)$')
+
+
+class Circuit(SageObject):
+    r"""
+    An electrical circuit given as a list of branches.
+
+    INPUT:
+
+    - ``branches`` -- list of entries ``[from, to, name]`` (the element kind
+      follows the first letter of ``name``: ``R`` resistor, ``L`` inductor,
+      ``C`` capacitor, ``E`` voltage source, ``I`` current source, ``f``
+      nonlinear resistor `i = f(u)`), or long-form dicts
+      ``{from, to, kind, name, value}`` and ``{kind: mutual, between:
+      [L1, L2], value: M}`` (see :func:`~sage_dynsym.circuits.elements.parse_entries`)
+    - ``name`` -- (optional) a title
+    - ``parameters`` -- (optional) extra symbols allowed in long-form values
+
+    The element name is its symbol (``L1`` is ``var('L1')``); a nonlinear
+    resistor ``f1`` without a value is ``function('f1')`` of its branch
+    voltage. In a long-form value, ``i`` stands for an inductor's own
+    current and ``u`` for a capacitor's (or nonlinear resistor's) own voltage.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: C = Circuit([[1, 2, 'L1'], {'from': 2, 'to': 1, 'kind': 'capacitor',
+        ....:              'value': 'C0*(1 + u^2)', 'name': 'C1'}], parameters=['C0'])
+        sage: C.branches()[1]
+        Branch(index=1, name='C1', kind='capacitor', tail=2, head=1, value=(u^2 + 1)*C0)
+        sage: C.brayton_moser().capacitances()
+        [(u2^2 + 1)*C0]
+
+    TESTS::
+
+        sage: Circuit([[1, 2, 'R1'], [2, 1, 'R1']])
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1]: duplicate element name 'R1'
+        sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1'], {'kind': 'mutual', 'between': ['L1', 'C1'], 'value': 'M'}])
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[2]: a mutual inductance couples two inductors; C1 is not an inductor
+        sage: Circuit([{'from': 1, 'to': 2, 'kind': 'resistor', 'name': 'q1'}, [2, 1, 'C1']])
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[0]: the name 'q1' is reserved for variables ...
+    """
+
+    def __init__(self, branches, name=None, parameters=()):
+        entries = list(branches)
+        self._parameters = tuple(str(p) for p in parameters)
+        self._branches, self._couplings = parse_entries(entries, self._parameters)
+        seen = set()
+        for b in self._branches:
+            if b.name in seen:
+                raise CircuitError(f"duplicate element name {b.name!r}",
+                                   entry=f"branches[{b.index}]")
+            if RESERVED.match(b.name):
+                raise CircuitError(f"the name {b.name!r} is reserved for variables "
+                                   "(i, u, t, i<k>, u<k>, q<k>, phi...)",
+                                   entry=f"branches[{b.index}]")
+            seen.add(b.name)
+        kind = {b.name: b.kind for b in self._branches}
+        pairs = set()
+        mutual_entries = [k for k, e in enumerate(entries)
+                          if isinstance(e, dict) and e.get('kind') == 'mutual']
+        for k, c in zip(mutual_entries, self._couplings):
+            for x in (c.first, c.second):
+                if kind.get(x) != 'inductor':
+                    raise CircuitError(f"a mutual inductance couples two inductors; {x} "
+                                       "is not an inductor", entry=f"branches[{k}]")
+            pair = frozenset((c.first, c.second))
+            if len(pair) != 2 or pair in pairs:
+                raise CircuitError("a mutual inductance couples two different inductors, "
+                                   "once", entry=f"branches[{k}]")
+            pairs.add(pair)
+        self._name = name
+        self._cgraph = CircuitGraph(self._branches)
+
+    def _repr_(self):
+        title = f" {self._name!r}" if self._name else ""
+        extra = f" and {len(self._couplings)} mutual inductances" if self._couplings else ""
+        return (f"Circuit{title} with {len(self._branches)} branches on "
+                f"{len(self._cgraph.nodes)} nodes{extra}")
+
+    def __eq__(self, other):
+        return (isinstance(other, Circuit) and self._branches == other._branches
+                and self._couplings == other._couplings)
+
+    def __hash__(self):
+        return hash((self._branches, self._couplings))
+
+    def _graph(self):
+        return self._cgraph
+
+    def name(self):
+        r"""The title of the circuit (or ``None``)."""
+        return self._name
+
+    def parameters(self):
+        r"""The extra symbols declared for long-form values."""
+        return self._parameters
+
+    def branches(self):
+        r"""
+        The branches, a tuple of :class:`~sage_dynsym.circuits.elements.Branch`.
+        """
+        return self._branches
+
+    def couplings(self):
+        r"""
+        The mutual inductances, a tuple of
+        :class:`~sage_dynsym.circuits.elements.Coupling`.
+        """
+        return self._couplings
+
+    def nodes(self):
+        r"""
+        The nodes, sorted.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[3, 1, 'R1'], [1, 2, 'C1'], [2, 3, 'L1']]).nodes()
+            [1, 2, 3]
+        """
+        return list(self._cgraph.nodes)
+
+    def graph(self):
+        r"""
+        The circuit graph: an immutable Sage ``Graph`` with multiple edges,
+        each edge labelled by its branch's position.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'R1'], [1, 2, 'C1']]).graph().edges(sort=True)
+            [(1, 2, 0), (1, 2, 1)]
+        """
+        return self._cgraph.graph
+
+    def elements(self, kind=None):
+        r"""
+        The element names, optionally only those of one ``kind``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'R1'], [1, 2, 'C1'], [2, 1, 'R2']]).elements('resistor')
+            ['R1', 'R2']
+        """
+        return [b.name for b in self._branches if kind is None or b.kind == kind]
+
+    def _check_source_loops(self):
+        # voltage sources alone must not form a loop (KVL would fix a sum of sources)
+        sources = [p for p, b in enumerate(self._branches) if b.kind == 'voltage_source']
+        try:
+            self._cgraph.components(sources)
+        except ValueError as err:
+            loop = self._cgraph.cycle_through(sources[:sources.index(err.args[0])],
+                                              err.args[0])
+            raise CircuitError(f"the voltage sources {', '.join(loop)} form a loop: "
+                               "Kirchhoff's voltage law cannot hold for arbitrary "
+                               "source values") from None
+
+    @cached_method
+    def loop_analysis(self):
+        r"""
+        The loop-current description (loops, matrices, energies); see
+        :class:`~sage_dynsym.circuits.linear.LoopAnalysis`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [1, 2, 'R1'], [2, 0, 'C1']]).loop_analysis()
+            sage: A.loops()
+            [[(1, 0, 'L1'), (0, 1, 'E1')], [(1, 2, 'R1'), (2, 0, 'C1'), (0, 1, 'E1')]]
+            sage: A.inductance_matrix(), A.elastance_matrix(), A.resistance_matrix()
+            (
+            [L1  0]  [   0    0]  [ 0  0]
+            [ 0  0], [   0 1/C1], [ 0 R1]
+            )
+            sage: A.source_vector()
+            [E1, E1]
+        """
+        from .linear import LoopAnalysis
+        return LoopAnalysis(self)
+
+    @cached_method
+    def node_analysis(self, ground=None):
+        r"""
+        The node-potential description; see
+        :class:`~sage_dynsym.circuits.linear.NodeAnalysis`.
+
+        INPUT:
+
+        - ``ground`` -- (default: node ``0`` if present, else the highest node)
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'I1'], [1, 0, 'L1'], [1, 2, 'R1'], [2, 0, 'C1']]).node_analysis()
+            sage: A.coordinates(), A.source_vector()
+            ([phi1, phi2], [I1, 0])
+            sage: A.capacitance_matrix(), A.inverse_inductance_matrix(), A.conductance_matrix()
+            (
+            [ 0  0]  [1/L1    0]  [ 1/R1 -1/R1]
+            [ 0 C1], [   0    0], [-1/R1  1/R1]
+            )
+        """
+        from .linear import NodeAnalysis
+        return NodeAnalysis(self, ground)
+
+    def lagrangian(self, method="loop", ground=None):
+        r"""
+        The Lagrangian `L = T - \Pi` of a linear circuit, with its Rayleigh
+        function and generalized forces.
+
+        INPUT:
+
+        - ``method`` -- ``"loop"`` (loop charges ``q1, q2, ...``) or
+          ``"node"`` (node flux linkages ``phi<node>``)
+        - ``ground`` -- (node method) the grounded node
+
+        OUTPUT: a :class:`~sage_dynsym.lagrangian.Lagrangian`
+
+        EXAMPLES:
+
+        Two coupled inductors (a transformer) with a resistive load::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 0, 'L2'], [0, 2, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:             parameters=['M'])
+            sage: L = C.lagrangian(); L
+            Lagrangian in coordinates (q1, q2) : 1/2*L1*dq1^2 - M*dq1*dq2 + 1/2*L2*dq2^2
+            sage: L.lagrange_equations()
+            [L1*ddq1 - M*ddq2 - E1, -M*ddq1 + L2*ddq2 + R2*dq2]
+
+        TESTS::
+
+            sage: Circuit([[1, 2, 'f1'], [2, 1, 'C1']]).lagrangian()
+            Traceback (most recent call last):
+            ...
+            CircuitError: branches[0]: the loop-current method needs a linear circuit, but f1 is nonlinear; use mixed_potential()
+            sage: Circuit([[1, 2, 'R1'], [2, 1, 'C1']]).lagrangian(method="mesh")
+            Traceback (most recent call last):
+            ...
+            CircuitError: unknown method 'mesh'; expected "loop" or "node"
+        """
+        from ..lagrangian import Lagrangian
+        if method == "loop":
+            A = self.loop_analysis()
+        elif method == "node":
+            A = self.node_analysis(ground)
+        else:
+            raise CircuitError(f"unknown method {method!r}; expected \"loop\" or \"node\"")
+        title = f" of {self._name}" if self._name else ""
+        return Lagrangian(A.kinetic_energy() - A.potential_energy(), A.coordinates(),
+                          dissipation=A.dissipation(), forces=A.source_vector(),
+                          name=f"{method} Lagrangian{title}")
+
+    @cached_method
+    def brayton_moser(self):
+        r"""
+        The Brayton--Moser data of a complete circuit: split, loops, `F`,
+        `G`, `(i, \gamma u)`, mixed potential, state equations; see
+        :class:`~sage_dynsym.circuits.mixed_potential.MixedPotential`.
+        """
+        from .mixed_potential import MixedPotential
+        return MixedPotential(self)
+
+    def mixed_potential(self):
+        r"""
+        The mixed potential `P(i, u) = F(i) - G(u) + (i, \gamma u)` of a
+        complete circuit (see :meth:`brayton_moser`).
+        """
+        return self.brayton_moser().mixed_potential()
+
+    def state_variables(self):
+        r"""
+        The state variables, pairs ``(symbol, element name)``: inductor
+        currents ``i1, ..., ir`` first, then capacitor voltages.
+        """
+        return self.brayton_moser().state_variables()
+
+    def state_equations(self):
+        r"""
+        The right-hand sides of `L_k\, di_k/dt = \partial P/\partial i_k`
+        and `C_l\, du_l/dt = -\partial P/\partial u_l`, in the order of
+        :meth:`state_variables`.
+        """
+        return self.brayton_moser().state_equations()

@@ -1,0 +1,147 @@
+r"""
+Circuit description files
+
+A circuit description (contract §1) is a mapping with the keys
+
+- ``kind: circuit`` (required),
+- ``name`` (optional title),
+- ``branches`` (required): a list of ``[from, to, element]`` entries or
+  long-form mappings (see :mod:`~sage_dynsym.circuits.elements`),
+- ``parameters`` (optional): extra symbols used in long-form values,
+- ``results`` (optional): written by ``save``; ignored when reading.
+
+The generic ``sage_dynsym.load`` reads the YAML file safely and hands the
+mapping to :func:`circuit_from_dict`; ``save`` writes
+:func:`circuit_to_dict` plus a ``results:`` section. Expressions are parsed
+by :class:`~sage_dynsym.expressions.ExpressionParser`, never evaluated.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.circuits.description import circuit_from_dict, circuit_to_dict
+    sage: data = {'kind': 'circuit', 'name': 'RC', 'branches': [[1, 2, 'R1'], [2, 1, 'C1'],
+    ....:         {'from': 1, 'to': 2, 'kind': 'current_source', 'value': '2*I0', 'name': 'I1'}],
+    ....:         'parameters': ['I0']}
+    sage: C = circuit_from_dict(data); C
+    Circuit 'RC' with 3 branches on 2 nodes
+    sage: circuit_to_dict(C) == data
+    True
+    sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1'], [2, 1, 'X1']]},
+    ....:                   source='bad.yaml')
+    Traceback (most recent call last):
+    ...
+    CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
+"""
+from ..errors import CircuitError, DescriptionError
+from .circuit import Circuit
+from .elements import PREFIXES
+
+KEYS = {'kind', 'name', 'branches', 'parameters', 'results'}
+
+
+def circuit_from_dict(data, source=None):
+    r"""
+    Build a :class:`~sage_dynsym.circuits.circuit.Circuit` from a
+    description mapping.
+
+    INPUT:
+
+    - ``data`` -- the mapping read from a description file
+    - ``source`` -- (optional) the file name, used in error messages
+
+    OUTPUT: a ``Circuit``
+
+    TESTS::
+
+        sage: from sage_dynsym.circuits.description import circuit_from_dict
+        sage: circuit_from_dict({'kind': 'circuit'}, source='c.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: c.yaml: branches: missing key 'branches' (a list of [from, to, element])
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1']], 'colour': 1})
+        Traceback (most recent call last):
+        ...
+        DescriptionError: colour: unknown key; a circuit description has keys branches, kind, name, parameters, results
+        sage: circuit_from_dict({'kind': 'mechanical', 'branches': []})
+        Traceback (most recent call last):
+        ...
+        DescriptionError: kind: expected 'circuit', got 'mechanical'
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': {'a': 1}})
+        Traceback (most recent call last):
+        ...
+        DescriptionError: branches: expected a non-empty list of branches, got {'a': 1}
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1'], [2, 2, 'C1']]}, 'x.yaml')
+        Traceback (most recent call last):
+        ...
+        CircuitError: x.yaml: branches[1]: self-loop: branch C1 joins node 2 to itself
+    """
+    if not isinstance(data, dict):
+        raise DescriptionError(f"a circuit description is a mapping, got {type(data).__name__}",
+                               source=source)
+    for key in data:
+        if key not in KEYS:
+            raise DescriptionError("unknown key; a circuit description has keys "
+                                   f"{', '.join(sorted(KEYS))}", entry=str(key), source=source)
+    if data.get('kind') != 'circuit':
+        raise DescriptionError(f"expected 'circuit', got {data.get('kind')!r}",
+                               entry='kind', source=source)
+    if 'branches' not in data:
+        raise DescriptionError("missing key 'branches' (a list of [from, to, element])",
+                               entry='branches', source=source)
+    branches = data['branches']
+    if not isinstance(branches, list) or not branches:
+        raise DescriptionError(f"expected a non-empty list of branches, got {branches!r}",
+                               entry='branches', source=source)
+    name = data.get('name')
+    if name is not None and not isinstance(name, str):
+        raise DescriptionError(f"expected a text, got {name!r}", entry='name', source=source)
+    parameters = data.get('parameters', [])
+    if not isinstance(parameters, list) or not all(
+            isinstance(p, str) and p.isidentifier() for p in parameters):
+        raise DescriptionError(f"expected a list of symbol names, got {parameters!r}",
+                               entry='parameters', source=source)
+    try:
+        return Circuit(branches, name=name, parameters=parameters)
+    except CircuitError as err:
+        raise err.with_context(source=source) from None
+
+
+def circuit_to_dict(circuit):
+    r"""
+    The description mapping of ``circuit`` (short form wherever the
+    element's value is its own symbol), inverse of :func:`circuit_from_dict`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: from sage_dynsym.circuits.description import circuit_to_dict
+        sage: circuit_to_dict(Circuit([[1, 2, 'L1'], [2, 1, 'L2'], [1, 2, 'f1'],
+        ....:     {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}], parameters=['M']))
+        {'branches': [[1, 2, 'L1'],
+                      [2, 1, 'L2'],
+                      [1, 2, 'f1'],
+                      {'between': ['L1', 'L2'], 'kind': 'mutual', 'value': 'M'}],
+         'kind': 'circuit',
+         'parameters': ['M']}
+    """
+    out = {'kind': 'circuit'}
+    if circuit.name():
+        out['name'] = circuit.name()
+    if circuit.parameters():
+        out['parameters'] = list(circuit.parameters())
+    branches = []
+    for b in circuit.branches():
+        short = PREFIXES.get(b.name[0]) == b.kind and (
+            b.value is None if b.kind == 'nonlinear_resistor'
+            else b.value.is_symbol() and str(b.value) == b.name)
+        if short:
+            branches.append([b.tail, b.head, b.name])
+        else:
+            entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}
+            if b.value is not None:
+                entry['value'] = str(b.value)
+            branches.append(entry)
+    for c in circuit.couplings():
+        branches.append({'kind': 'mutual', 'between': [c.first, c.second],
+                         'value': str(c.value)})
+    out['branches'] = branches
+    return out

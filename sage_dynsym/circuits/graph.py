@@ -1,0 +1,249 @@
+r"""
+The circuit graph: spanning trees and fundamental loops
+
+Nodes are vertices, every elementary branch is one edge of a Sage
+``Graph(multiedges=True)`` labelled by the branch's position, so parallel
+branches are distinct edges. Independent loops are the *fundamental
+cycles* of a spanning tree (a cycle basis of the graph), never faces of a
+drawing: non-planar circuits are handled like any other.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.circuits.elements import parse_entries
+    sage: from sage_dynsym.circuits.graph import CircuitGraph
+    sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
+    sage: CG = CircuitGraph(branches)
+    sage: tree = CG.spanning_tree(priority=['voltage_source', 'capacitor'])
+    sage: sorted(tree)
+    [1, 3]
+    sage: T = CG.rooted(tree)
+    sage: [(b.name, s) for b, s in T.loop(branches[0])]
+    [('R1', 1), ('C1', 1), ('E1', -1)]
+"""
+from sage.graphs.graph import Graph
+
+from ..errors import CircuitError
+
+
+class UnionFind:
+    r"""
+    Disjoint sets of nodes (used to grow forests such as the
+    capacitor/voltage-source forest).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.graph import UnionFind
+        sage: U = UnionFind([1, 2, 3])
+        sage: U.union(1, 2), U.union(2, 1), U.find(1) == U.find(2)
+        (True, False, True)
+    """
+
+    def __init__(self, nodes):
+        self._parent = {v: v for v in nodes}
+
+    def find(self, v):
+        root = v
+        while self._parent[root] != root:
+            root = self._parent[root]
+        while self._parent[v] != root:     # path compression
+            self._parent[v], v = root, self._parent[v]
+        return root
+
+    def union(self, a, b):
+        r"""Join the sets of ``a`` and ``b``; return ``False`` if they were one set."""
+        ra, rb = self.find(a), self.find(b)
+        if ra == rb:
+            return False
+        self._parent[ra] = rb
+        return True
+
+
+def node_key(v):
+    r"""
+    Sort key for nodes that may mix integers and names (integers first).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.graph import node_key
+        sage: sorted(['b', 3, 'a', 1], key=node_key)
+        [1, 3, 'a', 'b']
+    """
+    return (isinstance(v, str), v)
+
+
+class CircuitGraph:
+    r"""
+    The graph of a circuit, with its branches.
+
+    INPUT:
+
+    - ``branches`` -- tuple of :class:`~sage_dynsym.circuits.elements.Branch`
+
+    Raises :class:`~sage_dynsym.errors.CircuitError` for a self-loop or a
+    disconnected graph.
+
+    TESTS::
+
+        sage: from sage_dynsym.circuits.elements import parse_entries
+        sage: from sage_dynsym.circuits.graph import CircuitGraph
+        sage: CircuitGraph(parse_entries([[1, 2, 'R1'], [2, 2, 'C1']])[0])
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1]: self-loop: branch C1 joins node 2 to itself
+        sage: CircuitGraph(parse_entries([[1, 2, 'R1'], [3, 4, 'C1']])[0])
+        Traceback (most recent call last):
+        ...
+        CircuitError: the circuit graph is disconnected: its parts have nodes [1, 2] and [3, 4]
+    """
+
+    def __init__(self, branches):
+        self.branches = tuple(branches)
+        graph = Graph(multiedges=True, loops=False)
+        for pos, b in enumerate(self.branches):
+            if b.tail == b.head:
+                raise CircuitError(f"self-loop: branch {b.name} joins node "
+                                   f"{b.tail} to itself", entry=f"branches[{b.index}]")
+            graph.add_edge(b.tail, b.head, pos)
+        if graph.num_verts() == 0:
+            raise CircuitError("a circuit needs at least one branch", entry="branches")
+        if not graph.is_connected():
+            parts = sorted((sorted(c, key=node_key) for c in graph.connected_components()),
+                           key=lambda c: node_key(c[0]))
+            raise CircuitError("the circuit graph is disconnected: its parts have "
+                               f"nodes {' and '.join(map(str, parts))}")
+        self.graph = graph.copy(immutable=True)
+        self.nodes = tuple(sorted(graph.vertices(sort=False), key=node_key))
+
+    def spanning_tree(self, priority=(), exclude=()):
+        r"""
+        Return a spanning tree as a set of branch positions.
+
+        Kruskal's algorithm (Sage's ``min_spanning_tree``) with branches of
+        the kinds listed first in ``priority`` preferred, then the others,
+        ties broken by branch order; branches of the kinds in ``exclude``
+        are never taken. Returns ``None`` when the remaining branches do not
+        connect all nodes.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: CG = CircuitGraph(parse_entries([[1, 2, 'L1'], [1, 2, 'C1'], [2, 3, 'I1']])[0])
+            sage: sorted(CG.spanning_tree(priority=['capacitor'])), CG.spanning_tree(exclude=['current_source'])
+            ([1, 2], None)
+        """
+        rank = {kind: r for r, kind in enumerate(priority)}
+        m = len(self.branches)
+        kept = [(b.tail, b.head, pos) for pos, b in enumerate(self.branches)
+                if b.kind not in exclude]
+        sub = Graph(kept, multiedges=True, loops=False, format='list_of_edges')
+        sub.add_vertices(self.nodes)
+        if not sub.is_connected():
+            return None
+        weight = {pos: rank.get(self.branches[pos].kind, len(rank)) * m + pos
+                  for _, _, pos in kept}
+        tree = sub.min_spanning_tree(weight_function=lambda e: weight[e[2]],
+                                     algorithm='Kruskal')
+        return {e[2] for e in tree}
+
+    def rooted(self, tree):
+        r"""
+        The spanning tree ``tree`` (set of branch positions) as a
+        :class:`RootedTree`, rooted at the last node.
+        """
+        return RootedTree(self, tree)
+
+    def components(self, positions):
+        r"""
+        Union-find of the nodes joined by the branches at ``positions``;
+        raises ``ValueError`` with the offending position if they contain a
+        cycle.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: CG = CircuitGraph(parse_entries([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1']])[0])
+            sage: U = CG.components([0, 1]); U.find(1) == U.find(3)
+            True
+            sage: CG.components([0, 1, 2])
+            Traceback (most recent call last):
+            ...
+            ValueError: 2
+        """
+        uf = UnionFind(self.nodes)
+        for pos in positions:
+            b = self.branches[pos]
+            if not uf.union(b.tail, b.head):
+                raise ValueError(pos)
+        return uf
+
+    def cycle_through(self, positions, pos):
+        r"""
+        A cycle made of the branch ``pos`` and branches of ``positions``
+        (which must join its ends), as a list of branch names.
+        """
+        sub = [(self.branches[p].tail, self.branches[p].head, p) for p in positions]
+        forest = Graph(sub, multiedges=True, loops=False, format='list_of_edges')
+        b = self.branches[pos]
+        path = forest.shortest_path(b.head, b.tail, by_weight=False)
+        names = [b.name]
+        for x, y in zip(path, path[1:]):
+            names.append(self.branches[min(forest.edge_label(x, y))].name)
+        return names
+
+
+class RootedTree:
+    r"""
+    A spanning tree with parent pointers, for fundamental loops and paths.
+
+    ``path(a, b)`` is the list of ``(branch, sign)`` met when walking in the
+    tree from node ``a`` to node ``b``, with ``sign = +1`` when a branch is
+    walked along its orientation. ``loop(chord)`` is the fundamental loop of
+    a branch outside the tree, oriented along that branch and starting with
+    it.
+    """
+
+    def __init__(self, cgraph, tree):
+        self.positions = frozenset(tree)
+        branches = cgraph.branches
+        adjacency = {v: [] for v in cgraph.nodes}
+        for pos in sorted(tree):
+            b = branches[pos]
+            adjacency[b.tail].append((b.head, pos))
+            adjacency[b.head].append((b.tail, pos))
+        root = cgraph.nodes[-1]
+        self.parent = {root: None}       # node -> (parent node, branch position)
+        self.depth = {root: 0}
+        queue = [root]
+        for v in queue:
+            for w, pos in adjacency[v]:
+                if w not in self.parent:
+                    self.parent[w] = (v, pos)
+                    self.depth[w] = self.depth[v] + 1
+                    queue.append(w)
+        self._branches = branches
+
+    def _step(self, v):
+        # the tree branch from v to its parent, with the sign of that walk
+        parent, pos = self.parent[v]
+        b = self._branches[pos]
+        return parent, (b, 1 if b.tail == v else -1)
+
+    def path(self, a, b):
+        up, down = [], []
+        while self.depth[a] > self.depth[b]:
+            a, step = self._step(a)
+            up.append(step)
+        while self.depth[b] > self.depth[a]:
+            b, (br, s) = self._step(b)
+            down.append((br, -s))
+        while a != b:
+            a, step = self._step(a)
+            up.append(step)
+            b, (br, s) = self._step(b)
+            down.append((br, -s))
+        return up + down[::-1]
+
+    def loop(self, chord):
+        return [(chord, 1)] + self.path(chord.head, chord.tail)

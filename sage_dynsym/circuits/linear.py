@@ -1,0 +1,366 @@
+r"""
+Lagrangians of linear circuits: loop-current and node-potential methods
+
+Both methods work branch by branch (spec section 2.1), with the branch
+variables and element laws of :mod:`~sage_dynsym.circuits.elements`.
+
+**Loop-current method.** A spanning tree is chosen that avoids the current
+sources (Sage's Kruskal, preferring voltage sources, then capacitors,
+resistors, inductors, ties by branch order). Every chord defines a
+fundamental loop, oriented along the chord; the loop charges ``q1, q2, ...``
+of the chords that are not current sources (in branch order) are the
+coordinates. A current-source chord fixes its loop current to `I` (its loop
+charge is `\int_0^t I`). With branch currents `i_b = \sum \pm \dot q_k` and
+branch charges `Q_b = \sum \pm q_k`:
+
+.. MATH::
+
+    T = \tfrac12 \sum_L L\, i_b^2 + \sum_{M} M\, i_a i_b,\quad
+    \Pi = \sum_C \frac{Q_b^2}{2C},\quad
+    R = \tfrac12 \sum_R R\, i_b^2,\quad
+    Q_k = \sum_{E \in \text{loop } k} \pm E,
+
+`L = T - \Pi`; the Lagrange equations are Kirchhoff's voltage law around
+each loop.
+
+**Node-potential method.** One node is grounded (node ``0`` if there is one,
+otherwise the highest node). The coordinates are node flux linkages
+``phi<node>`` (their derivatives are node potentials). Voltage sources tie
+the flux of their ``to`` node to that of their ``from`` node
+(`\varphi_b = \varphi_a + \int_0^t E`), so only one node per group joined by
+voltage sources is a coordinate (the ground's group has none). With branch
+fluxes `\Delta_b = \varphi(\text{to}) - \varphi(\text{from})`:
+
+.. MATH::
+
+    T = \tfrac12 \sum_C C\, \dot\Delta_b^2,\quad
+    \Pi = \tfrac12\, \Delta_L^T \mathbf{L}^{-1} \Delta_L,\quad
+    R = \tfrac12 \sum_R \dot\Delta_b^2 / R,
+
+and the current sources injecting into a node group are its generalized
+force; the Lagrange equations are Kirchhoff's current law at each node.
+"""
+from sage.matrix.constructor import matrix
+from sage.symbolic.ring import SR
+from sage.symbolic.integration.integral import definite_integral
+
+from ..errors import CircuitError
+from ..expressions import velocity, t
+from .graph import UnionFind, node_key
+
+
+def source_integral(value):
+    r"""
+    `\int_0^t` of a source value (a charge or a flux linkage).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.linear import source_integral
+        sage: E, w = var('E w')
+        sage: source_integral(E), source_integral(E*cos(w*t))
+        (E*t, E*sin(t*w)/w)
+    """
+    value = SR(value)
+    if t not in value.variables():
+        return value * t
+    s = SR.symbol('s')
+    try:
+        return value.subs({t: s}).integral(s, 0, t)
+    except (ValueError, TypeError, RuntimeError, NotImplementedError):
+        return definite_integral(value.subs({t: s}), s, 0, t, hold=True)
+
+
+def _check_linear(circuit, method):
+    for b in circuit.branches():
+        nonlinear = b.kind == 'nonlinear_resistor' or (
+            b.kind in ('inductor', 'capacitor') and
+            ({'i', 'u'} & {str(v) for v in b.value.variables()}))
+        if nonlinear:
+            raise CircuitError(f"the {method} method needs a linear circuit, but "
+                               f"{b.name} is nonlinear; use mixed_potential()",
+                               entry=f"branches[{b.index}]")
+
+
+def _quadratic(rows, values, coefficient):
+    # sum over branches b of coefficient(value_b) * (row_b)(row_b)^T, rows as
+    # sparse {coordinate index: sign}
+    n = coefficient[0]
+    M = matrix(SR, n, n, sparse=True)
+    for row, val in zip(rows, values):
+        w = coefficient[1](val)
+        for k, sk in row.items():
+            for l, sl in row.items():
+                M[k, l] += sk * sl * w
+    return M.dense_matrix()
+
+
+class LoopAnalysis:
+    r"""
+    Loop-current description of a linear circuit (see the module
+    documentation). Built by
+    :meth:`~sage_dynsym.circuits.circuit.Circuit.loop_analysis`.
+    """
+
+    def __init__(self, circuit):
+        _check_linear(circuit, "loop-current")
+        cg = circuit._graph()
+        br = cg.branches
+        tree = cg.spanning_tree(priority=['voltage_source', 'capacitor', 'resistor',
+                                          'nonlinear_resistor', 'inductor'],
+                                exclude=['current_source'])
+        if tree is None:
+            raise CircuitError("the current sources form a cut-set: Kirchhoff's "
+                               "current law cannot hold for arbitrary source values")
+        circuit._check_source_loops()
+        rooted = cg.rooted(tree)
+        chords = [p for p in range(len(br)) if p not in tree]
+        coords = [p for p in chords if br[p].kind != 'current_source']
+        self._coordinates = [SR.var(f"q{k + 1}") for k in range(len(coords))]
+        index = {p: k for k, p in enumerate(coords)}
+        pos_of = {b.name: p for p, b in enumerate(br)}
+        self._rows = rows = [dict() for _ in br]        # branch -> {loop: sign}
+        current = [SR(0)] * len(br)
+        charge = [SR(0)] * len(br)
+        self._loops = []
+        for c in chords:
+            loop = rooted.loop(br[c])
+            if c in index:
+                self._loops.append(loop)
+                x, X = velocity(self._coordinates[index[c]]), self._coordinates[index[c]]
+            else:
+                x, X = br[c].value, source_integral(br[c].value)
+            for b, sign in loop:
+                p = pos_of[b.name]
+                current[p] += sign * x
+                charge[p] += sign * X
+                if c in index:
+                    rows[p][index[c]] = sign
+        kinds = [b.kind for b in br]
+        T = sum(br[p].value * current[p] ** 2 / 2
+                for p in range(len(br)) if kinds[p] == 'inductor')
+        for cp in circuit.couplings():
+            T += cp.value * current[pos_of[cp.first]] * current[pos_of[cp.second]]
+        self._T = SR(T)
+        self._Pi = SR(sum(charge[p] ** 2 / (2 * br[p].value)
+                          for p in range(len(br)) if kinds[p] == 'capacitor'))
+        self._R = SR(sum(br[p].value * current[p] ** 2 / 2
+                         for p in range(len(br)) if kinds[p] == 'resistor'))
+        forces = [SR(0)] * len(coords)
+        for p in range(len(br)):
+            if kinds[p] == 'voltage_source':
+                for k, sign in rows[p].items():
+                    forces[k] += sign * br[p].value
+        self._forces = forces
+        self._br, self._kinds, self._circuit = br, kinds, circuit
+        self._pos_of = pos_of
+
+    def coordinates(self):
+        r"""The loop charges ``q1, q2, ...``."""
+        return list(self._coordinates)
+
+    def loops(self):
+        r"""
+        The loops of the coordinates, each a list of triples
+        ``(node, next node, name)`` in walking order, starting with the chord.
+        """
+        return [[(b.tail, b.head, b.name) if s > 0 else (b.head, b.tail, b.name)
+                 for b, s in loop] for loop in self._loops]
+
+    def _matrix(self, kind, weight):
+        sel = [p for p, k in enumerate(self._kinds) if k == kind]
+        return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
+                          (len(self._coordinates), weight))
+
+    def inductance_matrix(self):
+        r"""The loop inductance matrix `L_{ij}` (mutual inductances included)."""
+        M = self._matrix('inductor', lambda v: v)
+        for cp in self._circuit.couplings():
+            ra, rb = self._rows[self._pos_of[cp.first]], self._rows[self._pos_of[cp.second]]
+            for k, sk in ra.items():
+                for l, sl in rb.items():
+                    M[k, l] += sk * sl * cp.value
+                    M[l, k] += sk * sl * cp.value
+        return M
+
+    def elastance_matrix(self):
+        r"""The loop elastance matrix `(1/C)_{ij}`."""
+        return self._matrix('capacitor', lambda v: 1 / v)
+
+    def resistance_matrix(self):
+        r"""The loop resistance matrix `R_{ij}`."""
+        return self._matrix('resistor', lambda v: v)
+
+    def source_vector(self):
+        r"""The loop electromotive forces `Q_k = \sum \pm E` (generalized forces)."""
+        return list(self._forces)
+
+    def kinetic_energy(self):
+        r"""The magnetic energy `T`."""
+        return self._T
+
+    def potential_energy(self):
+        r"""The electric energy `\Pi`."""
+        return self._Pi
+
+    def dissipation(self):
+        r"""The Rayleigh function `R`."""
+        return self._R
+
+
+class NodeAnalysis:
+    r"""
+    Node-potential description of a linear circuit (see the module
+    documentation). Built by
+    :meth:`~sage_dynsym.circuits.circuit.Circuit.node_analysis`.
+    """
+
+    def __init__(self, circuit, ground=None):
+        _check_linear(circuit, "node-potential")
+        cg = circuit._graph()
+        br, nodes = cg.branches, cg.nodes
+        if ground is None:
+            ground = 0 if 0 in nodes else nodes[-1]
+        if ground not in nodes:
+            raise CircuitError(f"the ground node {ground!r} is not a node of the circuit")
+        circuit._check_source_loops()
+        sources = [p for p, b in enumerate(br) if b.kind == 'voltage_source']
+        uf = UnionFind(nodes)
+        adjacency = {v: [] for v in nodes}
+        for p in sources:
+            b = br[p]
+            uf.union(b.tail, b.head)
+            adjacency[b.tail].append((b.head, b.value))
+            adjacency[b.head].append((b.tail, -b.value))
+        # flux of every node = coordinate of its group's representative + offset
+        rep, offset = {}, {}
+        for root in [ground] + [v for v in nodes if v != ground]:
+            if root in rep:
+                continue
+            rep[root], offset[root] = root, SR(0)
+            queue = [root]
+            for v in queue:
+                for w, e in adjacency[v]:
+                    if w not in rep:
+                        rep[w], offset[w] = root, offset[v] + e
+                        queue.append(w)
+        reps = [v for v in nodes if rep[v] == v and v != ground]
+        self._coordinates = [SR.var(f"phi{v}" if not isinstance(v, str) else f"phi_{v}")
+                             for v in reps]
+        index = {v: k for k, v in enumerate(reps)}
+        flux = {}
+        dflux = {}
+        for v in nodes:
+            base = self._coordinates[index[rep[v]]] if rep[v] in index else SR(0)
+            flux[v] = base + source_integral(offset[v])
+            dflux[v] = (velocity(base) if rep[v] in index else SR(0)) + offset[v]
+        self._rows = rows = []
+        for b in br:
+            row = {}
+            for v, sign in ((b.head, 1), (b.tail, -1)):
+                if rep[v] in index:
+                    k = index[rep[v]]
+                    row[k] = row.get(k, 0) + sign
+            rows.append({k: s for k, s in row.items() if s})
+        kinds = [b.kind for b in br]
+        delta = [flux[b.head] - flux[b.tail] for b in br]
+        ddelta = [dflux[b.head] - dflux[b.tail] for b in br]
+        self._T = SR(sum(br[p].value * ddelta[p] ** 2 / 2
+                         for p in range(len(br)) if kinds[p] == 'capacitor'))
+        self._R = SR(sum(ddelta[p] ** 2 / (2 * br[p].value)
+                         for p in range(len(br)) if kinds[p] == 'resistor'))
+        self._gamma_blocks = self._inverse_inductance(circuit, br)
+        Pi = SR(0)
+        for block, G in self._gamma_blocks:
+            d = [delta[p] for p in block]
+            Pi += sum(G[a, b] * d[a] * d[b] for a in range(len(d)) for b in range(len(d))) / 2
+        self._Pi = Pi
+        forces = [SR(0)] * len(reps)
+        for b in br:
+            if b.kind == 'current_source':
+                for v, sign in ((b.head, 1), (b.tail, -1)):
+                    if rep[v] in index:
+                        forces[index[rep[v]]] += sign * b.value
+        self._forces = forces
+        self._br, self._kinds, self._ground = br, kinds, ground
+        self._reps = reps
+
+    @staticmethod
+    def _inverse_inductance(circuit, br):
+        # inverse inductance matrix, block by block of mutually coupled inductors
+        ind = [p for p, b in enumerate(br) if b.kind == 'inductor']
+        pos_of = {b.name: p for p, b in enumerate(br)}
+        uf = UnionFind(ind)
+        for cp in circuit.couplings():
+            uf.union(pos_of[cp.first], pos_of[cp.second])
+        groups = {}
+        for p in ind:
+            groups.setdefault(uf.find(p), []).append(p)
+        blocks = []
+        for block in groups.values():
+            if len(block) == 1:
+                blocks.append((block, matrix(SR, [[1 / br[block[0]].value]])))
+                continue
+            where = {p: k for k, p in enumerate(block)}
+            Lm = matrix(SR, len(block), len(block))
+            for p in block:
+                Lm[where[p], where[p]] = br[p].value
+            for cp in circuit.couplings():
+                a, b = pos_of[cp.first], pos_of[cp.second]
+                if a in where:
+                    Lm[where[a], where[b]] += cp.value
+                    Lm[where[b], where[a]] += cp.value
+            blocks.append((block, Lm.inverse().simplify_rational()))
+        return blocks
+
+    def ground(self):
+        r"""The grounded node."""
+        return self._ground
+
+    def coordinates(self):
+        r"""The node flux linkages ``phi<node>`` (one per node group, ground excluded)."""
+        return list(self._coordinates)
+
+    def nodes(self):
+        r"""The nodes whose flux linkages are the coordinates, in the same order."""
+        return list(self._reps)
+
+    def _matrix(self, kind, weight):
+        sel = [p for p, k in enumerate(self._kinds) if k == kind]
+        return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
+                          (len(self._coordinates), weight))
+
+    def capacitance_matrix(self):
+        r"""The node capacitance matrix `C_{ij}`."""
+        return self._matrix('capacitor', lambda v: v)
+
+    def conductance_matrix(self):
+        r"""The node conductance matrix `(1/R)_{ij}`."""
+        return self._matrix('resistor', lambda v: 1 / v)
+
+    def inverse_inductance_matrix(self):
+        r"""The node inverse-inductance matrix `(1/L)_{ij}` (mutual inductances included)."""
+        n = len(self._coordinates)
+        M = matrix(SR, n, n)
+        for block, G in self._gamma_blocks:
+            for a, pa in enumerate(block):
+                for b, pb in enumerate(block):
+                    for k, sk in self._rows[pa].items():
+                        for l, sl in self._rows[pb].items():
+                            M[k, l] += sk * sl * G[a, b]
+        return M
+
+    def source_vector(self):
+        r"""The source currents injected into each node group (generalized forces)."""
+        return list(self._forces)
+
+    def kinetic_energy(self):
+        r"""The electric energy `T` (in the node potentials)."""
+        return self._T
+
+    def potential_energy(self):
+        r"""The magnetic energy `\Pi` (in the node flux linkages)."""
+        return self._Pi
+
+    def dissipation(self):
+        r"""The Rayleigh function `R`."""
+        return self._R

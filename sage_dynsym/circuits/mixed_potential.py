@@ -1,0 +1,356 @@
+r"""
+Brayton--Moser mixed potential of a complete circuit
+
+For a *complete* circuit the state equations are
+
+.. MATH::
+
+    L_k(i_k)\, \frac{di_k}{dt} = \frac{\partial P}{\partial i_k}, \qquad
+    C_l(u_l)\, \frac{du_l}{dt} = -\frac{\partial P}{\partial u_l},
+    \qquad P(i, u) = F(i) - G(u) + (i, \gamma u)
+
+(with mutual inductances the left-hand sides are the rows of
+`\mathbf{L}\, di/dt`). The construction, in the branch variables of
+:mod:`~sage_dynsym.circuits.elements`:
+
+1. `T_C`: the capacitors and voltage sources; they must form a forest
+   (otherwise a loop of capacitors and voltage sources: not complete).
+2. `\Omega_u`: capacitors, voltage sources, and the resistors, nonlinear
+   resistors and current sources whose two nodes are joined by `T_C` (their
+   voltage is fixed by the capacitor voltages and the sources).
+   `\Omega_i`: all other branches -- inductors, and resistors and current
+   sources whose current must then be fixed by the inductor and
+   current-source currents. This is checked: `T_C` plus the resistors of
+   `\Omega_i` must be a spanning tree `K` of the graph. If it has a loop,
+   those resistors are determined neither way and the split is impossible;
+   if it is not connected, inductors and current sources form a cut-set
+   (not complete). A nonlinear resistor `i = f(u)` must lie in `\Omega_u`.
+3. The loop `\Lambda_p` of inductor `p` is its fundamental loop in `K`,
+   oriented along the inductor; it closes through `T_C` and resistors of
+   `\Omega_i`. Currents of `\Omega_i` resistors follow from these loops,
+   voltages of `\Omega_u` branches from `T_C`.
+4. `F(i) = \sum_{\rho \in \Omega_i} \int u_\rho\, di_\rho` (resistors:
+   `-R i_\rho^2/2`); `G(u) = \sum_{\mu \in \Omega_u} \int_0^{u_\mu}
+   i_\mu\, du_\mu` over resistors (`-u_\mu^2/(2R)`), nonlinear resistors
+   (`\int_0^{u_\mu} f(s)\,ds`) and current sources (`I u_\mu`); a current
+   source in `\Omega_i` adds `-I \sum \pm u_\sigma` over the capacitors on
+   its own fundamental loop; `(i, \gamma u) = \sum_p i_p
+   \sum_{\sigma \in \Lambda_p \cap T_C} \pm u_\sigma`, the sign ``+`` when
+   the loop runs along `\sigma`'s orientation (`u_\sigma = E` for a
+   voltage source).
+
+Why this gives the state equations: Tellegen's theorem applied to the
+actual branch voltages and the unit current around `\Lambda_k` gives
+`-u_{L_k} = \partial P / \partial i_k`; applied to the actual currents and
+the unit voltage of capacitor `l` it gives `i_{C_l} = \partial P /
+\partial u_l`; with `u_L = -L\, di/dt` and `i_C = -C\, du/dt` these are (8).
+
+**Naming of the state variables.** Inductor currents are ``i1, ..., ir``
+in the order of the branch list; capacitor voltages continue the numbering,
+``u(r+1), ..., u(r+m)``, in breadth-first order of the capacitor forest,
+each tree of it started at its highest node (trees taken from the highest
+such node down) and neighbours visited in increasing node order. For
+Example 2 this gives ``i1, i2`` for ``L1, L2`` and ``u3, u4, u5, u6`` for
+``C3, C2, C4, C1``, exactly the names of the specification.
+
+REFERENCES:
+
+- R. K. Brayton, J. K. Moser, *A theory of nonlinear networks I*,
+  Quart. Appl. Math. 22 (1964) 1--33.
+"""
+from sage.symbolic.ring import SR
+from sage.symbolic.function_factory import function as symbolic_function
+from sage.symbolic.integration.integral import definite_integral
+from sage.matrix.constructor import matrix
+
+from ..errors import CircuitError
+from .elements import own_variable
+from .graph import node_key
+
+RESISTIVE = ('resistor', 'nonlinear_resistor', 'current_source')
+
+
+def _integral(expr, var, upper):
+    # int_0^upper expr d var; polynomials in var integrate exactly, anything
+    # else Maxima cannot do is kept as an unevaluated integral
+    try:
+        return expr.integral(var, 0, upper)
+    except (ValueError, TypeError, RuntimeError, NotImplementedError):
+        return definite_integral(expr, var, 0, upper, hold=True)
+
+
+class MixedPotential:
+    r"""
+    The Brayton--Moser data of a complete circuit (see the module
+    documentation for the construction and the conventions).
+
+    Built by :meth:`~sage_dynsym.circuits.circuit.Circuit.brayton_moser`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: BM = load('examples/nonlinear_circuit.yaml').brayton_moser()  # not tested
+    """
+
+    def __init__(self, circuit):
+        self._circuit = circuit
+        cg = circuit._graph()
+        self._branches = br = cg.branches
+        self._pos = pos_of = {b.name: p for p, b in enumerate(br)}
+        tc = [p for p, b in enumerate(br) if b.kind in ('capacitor', 'voltage_source')]
+        try:
+            forest = cg.components(tc)
+        except ValueError as err:
+            loop = cg.cycle_through(tc[:tc.index(err.args[0])], err.args[0])
+            raise CircuitError("the circuit is not complete: the capacitors and "
+                               f"voltage sources {', '.join(loop)} form a loop; "
+                               "the capacitor voltages are not independent") from None
+        self._tc = frozenset(tc)
+        omega_u, omega_i, tree = [], [], list(tc)
+        for p, b in enumerate(br):
+            fixed_voltage = forest.find(b.tail) == forest.find(b.head)
+            if b.kind in ('capacitor', 'voltage_source') or (
+                    b.kind in RESISTIVE and fixed_voltage):
+                omega_u.append(p)
+            elif b.kind == 'nonlinear_resistor':
+                raise CircuitError(
+                    f"no Brayton-Moser split: the nonlinear resistor {b.name} is "
+                    "voltage-controlled (i = f(u)) but its voltage is not fixed by "
+                    "the capacitor voltages and voltage sources",
+                    entry=f"branches[{b.index}]")
+            else:
+                omega_i.append(p)
+                if b.kind == 'resistor':
+                    tree.append(p)
+        self._omega_u, self._omega_i = omega_u, omega_i
+        try:
+            kforest = cg.components(tree)
+        except ValueError as err:
+            loop = cg.cycle_through(tree[:tree.index(err.args[0])], err.args[0])
+            res = [n for n in loop if br[pos_of[n]].kind == 'resistor']
+            raise CircuitError(
+                f"no Brayton-Moser split: the resistors {', '.join(res)} lie in a loop "
+                f"{', '.join(loop)} of resistors, capacitors and voltage sources; their "
+                "voltages are not fixed by the capacitors and their currents are not "
+                "fixed by the inductors",
+                entry=f"branches[{br[err.args[0]].index}]") from None
+        if len(tree) != len(cg.nodes) - 1:
+            root = kforest.find(cg.nodes[0])
+            cut = [b.name for b in br
+                   if (kforest.find(b.tail) == root) != (kforest.find(b.head) == root)]
+            raise CircuitError("the circuit is not complete: the inductors and current "
+                               f"sources {', '.join(cut)} form a cut-set; the inductor "
+                               "currents are not independent")
+        self._tree = cg.rooted(tree)
+        self._name_states(cg)
+        self._build()
+
+    def _name_states(self, cg):
+        br = self._branches
+        inductors = [p for p, b in enumerate(br) if b.kind == 'inductor']
+        adjacency = {v: [] for v in cg.nodes}
+        for p, b in enumerate(br):
+            if b.kind == 'capacitor':
+                adjacency[b.tail].append((b.head, p))
+                adjacency[b.head].append((b.tail, p))
+        capacitors, seen = [], set()
+        for root in reversed(cg.nodes):
+            if root in seen or not adjacency[root]:
+                continue
+            seen.add(root)
+            queue = [root]
+            for v in queue:
+                for w, p in sorted(adjacency[v], key=lambda e: (node_key(e[0]), e[1])):
+                    if w not in seen:
+                        seen.add(w)
+                        capacitors.append(p)
+                        queue.append(w)
+        self._inductors, self._capacitors = inductors, capacitors
+        r = len(inductors)
+        self._symbol = {p: SR.var(f"i{k + 1}") for k, p in enumerate(inductors)}
+        self._symbol.update({p: SR.var(f"u{r + k + 1}") for k, p in enumerate(capacitors)})
+
+    def _voltage(self, p):
+        # voltage of a branch of T_C: a state variable or a source value
+        b = self._branches[p]
+        return self._symbol[p] if b.kind == 'capacitor' else b.value
+
+    def _current(self, p):
+        # current of an inductor or current source of Omega_i
+        b = self._branches[p]
+        return self._symbol[p] if b.kind == 'inductor' else b.value
+
+    def _build(self):
+        br, tree, tc, pos_of = self._branches, self._tree, self._tc, self._pos
+        used = {str(v) for b in br if b.value is not None for v in b.value.variables()}
+        used |= {str(x) for x in self._symbol.values()}
+        s = SR.var('s_' if 's' in used else 's')
+        self._loops = {p: tree.loop(br[p]) for p in self._omega_i
+                       if br[p].kind in ('inductor', 'current_source')}
+        alpha = {}          # currents of the Omega_i resistors, from the loops
+        for p, loop in self._loops.items():
+            for sigma, sign in loop[1:]:
+                if sigma.kind == 'resistor':
+                    q = pos_of[sigma.name]
+                    alpha[q] = alpha.get(q, 0) + sign * self._current(p)
+        F = SR(0)
+        for q in self._omega_i:
+            if br[q].kind == 'resistor':
+                F += -br[q].value * alpha.get(q, 0) ** 2 / 2
+        G = SR(0)
+        for p in self._omega_u:
+            b = br[p]
+            if b.kind not in RESISTIVE:
+                continue
+            beta = -sum(sign * self._voltage(pos_of[sigma.name])
+                        for sigma, sign in tree.loop(b)[1:])
+            if b.kind == 'resistor':
+                G += -beta ** 2 / (2 * b.value)
+            elif b.kind == 'current_source':
+                G += b.value * beta
+            elif b.value is None:
+                G += definite_integral(symbolic_function(b.name)(s), s, 0, beta, hold=True)
+            else:
+                G += _integral(b.value.subs({own_variable(b.kind): s}), s, beta)
+        J = SR(0)
+        for p, loop in self._loops.items():
+            if br[p].kind == 'inductor':
+                J += self._symbol[p] * sum(sign * self._voltage(pos_of[sigma.name])
+                                           for sigma, sign in loop[1:]
+                                           if pos_of[sigma.name] in tc)
+            else:   # a current source of Omega_i; constant terms dropped
+                G -= br[p].value * sum(sign * self._symbol[pos_of[sigma.name]]
+                                       for sigma, sign in loop[1:]
+                                       if sigma.kind == 'capacitor')
+        self._F, self._G, self._J = F, G, J
+        self._P = F - G + J
+
+    def _repr_(self):
+        return f"Brayton-Moser mixed potential of {self._circuit!r}"
+
+    __repr__ = _repr_
+
+    def _states(self):
+        return self._inductors + self._capacitors
+
+    def state_variables(self):
+        r"""
+        The state variables as pairs ``(symbol, element name)``: inductor
+        currents first, then capacitor voltages (naming rule in the module
+        documentation).
+        """
+        br = self._branches
+        return [(self._symbol[p], br[p].name) for p in self._states()]
+
+    def _triples(self, positions):
+        br = self._branches
+        return [(br[p].tail, br[p].head, br[p].name) for p in positions]
+
+    def omega_i(self):
+        r"""
+        The branches of `\Omega_i` (current fixed by the inductor and
+        current-source currents) as triples ``(from, to, name)``.
+        """
+        return self._triples(self._omega_i)
+
+    def omega_u(self):
+        r"""
+        The branches of `\Omega_u` (voltage fixed by the capacitor voltages
+        and voltage sources) as triples ``(from, to, name)``.
+        """
+        return self._triples(self._omega_u)
+
+    def tree(self):
+        r"""
+        The spanning tree `K` (capacitors, voltage sources and the resistors
+        of `\Omega_i`) as triples ``(from, to, name)``.
+        """
+        return self._triples(sorted(self._tree.positions))
+
+    def loops(self):
+        r"""
+        The loops `\Lambda_p`, one per inductor (in the order of the state
+        variables), each a list of triples ``(node, next node, name)`` in the
+        order they are walked, starting with the inductor along its
+        orientation.
+        """
+        return [[(b.tail, b.head, b.name) if sign > 0 else (b.head, b.tail, b.name)
+                 for b, sign in self._loops[p]] for p in self._inductors]
+
+    def current_potential(self):
+        r"""The current potential `F(i)`."""
+        return self._F
+
+    def voltage_potential(self):
+        r"""The voltage potential `G(u)`."""
+        return self._G
+
+    def coupling_term(self):
+        r"""The bilinear term `(i, \gamma u)`, voltage sources included."""
+        return self._J
+
+    def gamma_matrix(self):
+        r"""
+        The matrix `\gamma` (rows: inductor currents, columns: capacitor
+        voltages, in the order of :meth:`state_variables`).
+        """
+        rows = []
+        for p in self._inductors:
+            row = {q: 0 for q in self._capacitors}
+            for sigma, sign in self._loops[p][1:]:
+                if sigma.kind == 'capacitor':
+                    row[self._pos[sigma.name]] += sign
+            rows.append([row[q] for q in self._capacitors])
+        return matrix(SR, len(self._inductors), len(self._capacitors), rows)
+
+    def mixed_potential(self):
+        r"""The mixed potential `P(i, u) = F(i) - G(u) + (i, \gamma u)`."""
+        return self._P
+
+    def inductance_matrix(self):
+        r"""
+        The inductance matrix `\mathbf{L}(i)` of the inductors (mutual
+        inductances off the diagonal), in the order of the state variables.
+        """
+        br, ind = self._branches, self._inductors
+        n = len(ind)
+        M = matrix(SR, n, n)
+        for k, p in enumerate(ind):
+            M[k, k] = br[p].value.subs({own_variable('inductor'): self._symbol[p]})
+        index = {br[p].name: k for k, p in enumerate(ind)}
+        for c in self._circuit.couplings():
+            a, b = index[c.first], index[c.second]
+            M[a, b] += c.value
+            M[b, a] += c.value
+        return M
+
+    def capacitances(self):
+        r"""The capacitances `C_l(u_l)`, in the order of the state variables."""
+        br = self._branches
+        return [br[p].value.subs({own_variable('capacitor'): self._symbol[p]})
+                for p in self._capacitors]
+
+    def state_equations(self):
+        r"""
+        The right-hand sides of (8): `\partial P/\partial i_k` for the
+        inductors, then `-\partial P/\partial u_l` for the capacitors, in
+        the order of :meth:`state_variables`.
+        """
+        P = self._P
+        return ([P.diff(self._symbol[p]) for p in self._inductors]
+                + [-P.diff(self._symbol[p]) for p in self._capacitors])
+
+    def time_derivative(self):
+        r"""
+        The total time derivative of `P` along the state equations,
+        `dP/dt = P_i^T \mathbf{L}^{-1} P_i - \sum_l (\partial P/\partial u_l)^2 / C_l`.
+        """
+        eqs = self.state_equations()
+        r = len(self._inductors)
+        Pi, Pu = eqs[:r], eqs[r:]
+        if self._circuit.couplings():
+            vec = matrix(SR, r, 1, Pi)
+            di = (vec.transpose() * self.inductance_matrix().inverse() * vec)[0, 0]
+        else:
+            di = sum(x ** 2 / L for x, L in zip(Pi, self.inductance_matrix().diagonal()))
+        return di - sum(x ** 2 / Cl for x, Cl in zip(Pu, self.capacitances()))
