@@ -6,3 +6,9 @@ This module only re-exports the public API; see the submodules.
 from .errors import (DynSymError, ModelError, DescriptionError, ExpressionError,
                      CircuitError, AnalysisError)
 from .lagrangian import Lagrangian
+from .rigid_body import RigidBody
+from .force_functions import UniformGravity, NewtonianField
+from .mechanical_system import MechanicalSystem
+from .routh import RouthFunction
+from .hamiltonian import Hamiltonian
+from .dirac import DiracConstraints

@@ -1,0 +1,180 @@
+r"""
+Force functions of potential fields
+
+The force function `U` (minus the potential energy) enters the Lagrangian
+`L = T + U`. Two fields of the specification are provided:
+
+- :class:`UniformGravity`: `U_k = m_k\, g \cdot r^0_{ck}` (formula (3));
+- :class:`NewtonianField`: the attraction of a distant centre expanded to
+  second order in (size of the system)/(distance) (formula (2)), which gives
+  the gravity-gradient torques of satellite dynamics.
+
+A force function object is a description; the system evaluates it with its
+kinematics through :meth:`~sage_dynsym.mechanical_system.MechanicalSystem.force_function`.
+
+EXAMPLES::
+
+    sage: from sage_dynsym import UniformGravity, NewtonianField
+    sage: UniformGravity([0, 0, -var('g')])
+    uniform gravity field g = (0, 0, -g)
+    sage: NewtonianField(var('nu'), var('r'), [1, 0, 0])
+    Newtonian central field nu = nu, distance r, direction (1, 0, 0)
+"""
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from .rigid_body import _vector3, _scalar
+
+
+class UniformGravity(SageObject):
+    r"""
+    A uniform field of acceleration `g` (a vector in the inertial frame).
+
+    `U = \sum_k m_k\, (g \cdot r^0_{ck})`, `r^0_{ck}` the position of the
+    mass centre of body `k` in the inertial frame.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import UniformGravity
+        sage: UniformGravity([0, 0, -981/100]).acceleration()
+        (0, 0, -981/100)
+    """
+
+    def __init__(self, acceleration):
+        self._g = _vector3(acceleration, "uniform_gravity")
+
+    def _repr_(self):
+        return "uniform gravity field g = ({})".format(", ".join(map(str, self._g)))
+
+    def acceleration(self):
+        r"""
+        The acceleration vector `g` in the inertial frame.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import UniformGravity
+            sage: UniformGravity([0, -var('g'), 0]).acceleration()
+            (0, -g, 0)
+        """
+        return self._g
+
+    def evaluate(self, system):
+        r"""
+        The force function of ``system`` in this field.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody, MechanicalSystem, UniformGravity
+            sage: z, m, g = var('z m g')
+            sage: S = MechanicalSystem([RigidBody('ball', joint=[0, 0, z], mass=m)], [z])
+            sage: UniformGravity([0, 0, -g]).evaluate(S)
+            -g*m*z
+        """
+        from .frames import FrameVector
+        g = FrameVector(system.frame_tree(), {0: self._g})
+        return sum((body.mass() * g.dot(system.mass_center_position(k))
+                    for k, body in enumerate(system.bodies(), 1)
+                    if not body.mass().is_zero()), SR(0))
+
+
+class NewtonianField(SageObject):
+    r"""
+    The Newtonian field of an attracting centre `O`, to second order.
+
+    INPUT:
+
+    - ``nu`` -- gravitational parameter `\nu`
+    - ``distance`` -- `r = |OO_1|`, from the centre to the joint point of
+      the carrier (a constant, a coordinate or a function of ``t``)
+    - ``direction`` -- unit vector `e` from `O` to `O_1`, in the inertial
+      axes (its direction cosines; may depend on ``t``)
+
+    For body `k`, with `a_k = O_1 O_k` and `c_k = r^k_{ck}` (formula (2))
+
+    .. MATH::
+
+        U_k = \frac{\nu m_k}{r} - \frac{\nu m_k}{r^2}\, e\cdot(a_k + c_k)
+        + \frac{\nu}{2r^3}\Big[m_k\big(3(e\cdot a_k)^2 - a_k^2\big)
+        + 6 m_k (e\cdot a_k)(e\cdot c_k) - 2 m_k\, a_k\cdot c_k
+        + \operatorname{tr}\Theta^k - 3\,\gamma^k\cdot\Theta^k\gamma^k\Big],
+
+    `\gamma^k` the components of `e` in the body's axes.
+
+    EXAMPLES:
+
+    A dumbbell of two unit masses at `\pm b` on the body's `x` axis,
+    turned by `\varphi` from the local vertical `e`; its inertia tensor
+    about the centre is `\operatorname{diag}(0, 2b^2, 2b^2)`::
+
+        sage: from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField
+        sage: phi, b, nu, r = var('phi b nu r')
+        sage: body = RigidBody('dumbbell', rotations=[(3, phi)], mass=2,
+        ....:                  inertia=diagonal_matrix([0, 2*b^2, 2*b^2]))
+        sage: S = MechanicalSystem([body], [phi], force_function=NewtonianField(nu, r, [1, 0, 0]))
+        sage: U = S.force_function(); U
+        -3*b^2*nu*sin(phi)^2/r^3 + 2*b^2*nu/r^3 + 2*nu/r
+
+    This is the expansion of the exact `\nu/|R_1| + \nu/|R_2|`,
+    `|R_{1,2}|^2 = r^2 \pm 2 r b\cos\varphi + b^2`, to order `b^2/r^3`
+    (classical gravity-gradient term, maximal force function along the
+    vertical)::
+
+        sage: exact = nu/sqrt(r^2 + 2*r*b*cos(phi) + b^2) + nu/sqrt(r^2 - 2*r*b*cos(phi) + b^2)
+        sage: bool(exact.taylor(b, 0, 2) == U)
+        True
+    """
+
+    def __init__(self, nu, distance, direction):
+        self._nu = _scalar(nu, "newtonian.nu")
+        self._r = _scalar(distance, "newtonian.r")
+        self._e = _vector3(direction, "newtonian.direction")
+
+    def _repr_(self):
+        return "Newtonian central field nu = {}, distance {}, direction ({})".format(
+            self._nu, self._r, ", ".join(map(str, self._e)))
+
+    def parameters(self):
+        r"""
+        The triple `(\nu, r, e)`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import NewtonianField
+            sage: NewtonianField(1, 2, [0, 1, 0]).parameters()
+            (1, 2, (0, 1, 0))
+        """
+        return self._nu, self._r, self._e
+
+    def evaluate(self, system):
+        r"""
+        The force function (2) of ``system`` in this field.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField
+            sage: m, nu, r = var('m nu r')
+            sage: S = MechanicalSystem([RigidBody('point', mass=m)], [])
+            sage: NewtonianField(nu, r, [0, 0, 1]).evaluate(S)
+            m*nu/r
+        """
+        from .frames import FrameVector
+        tree = system.frame_tree()
+        e = FrameVector(tree, {0: self._e})
+        origin = system.joint_position(1)
+        nu, r = self._nu, self._r
+        U = SR(0)
+        for k, body in enumerate(system.bodies(), 1):
+            if body.is_massless():
+                continue
+            m, frame = body.mass(), system.body_frame(k)
+            a = system.joint_position(k) - origin
+            c = FrameVector(tree, {frame: body.mass_center()})
+            ea, ec = e.dot(a), e.dot(c)
+            gamma = e.components(frame)
+            Theta = body.inertia()
+            gradient = (m * (3 * ea ** 2 - a.dot(a)) + 6 * m * ea * ec - 2 * m * a.dot(c)
+                        + Theta.trace()
+                        - 3 * sum(gamma[i] * Theta[i, j] * gamma[j]
+                                  for i in range(3) for j in range(3)))
+            U += nu * m / r - nu * m / r ** 2 * (ea + ec) + nu / (2 * r ** 3) * gradient
+        return U

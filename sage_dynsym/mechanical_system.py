@@ -1,0 +1,595 @@
+r"""
+Mechanical systems of rigid bodies
+
+A :class:`MechanicalSystem` is the *description* of a system of rigid bodies
+(section 1.1 of the specification): its bodies, generalized coordinates,
+parameters, force function and non-potential forces. From it the kinematics
+(direction cosines, angular velocities, joint velocities), the kinetic
+energy (1), the force function ((2) or (3)) and the Lagrangian (4) are
+derived; the Lagrangian object then gives the Lagrange, Routh and Hamilton
+equations.
+
+EXAMPLES:
+
+Example 1 of the specification, the spherical pendulum::
+
+    sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+    sage: psi, theta, m, l, g = var('psi theta m l g')
+    sage: pendulum = RigidBody('pendulum', rotations=[(3, psi), (1, theta)],
+    ....:                      mass_center=[0, 0, l], mass=m,
+    ....:                      inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
+    sage: S = MechanicalSystem([pendulum], [psi, theta], parameters=[m, l, g],
+    ....:                      force_function=UniformGravity([0, 0, -g]),
+    ....:                      name="spherical pendulum"); S
+    Mechanical system 'spherical pendulum': 1 body, coordinates (psi, theta)
+    sage: S.angular_velocity(1)
+    (dtheta, dpsi*sin(theta), dpsi*cos(theta))
+    sage: S.kinetic_energy()
+    1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m
+    sage: S.force_function()
+    -g*l*m*cos(theta)
+    sage: L = S.lagrangian()
+    sage: bool(2*L.expr() == m*l^2*(sin(theta)^2*var('dpsi')^2 + var('dtheta')^2)
+    ....:                    - 2*m*g*l*cos(theta))
+    True
+"""
+import numbers
+
+from sage.misc.cachefunc import cached_method
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from .errors import ModelError
+from .expressions import velocity, time_derivative, t
+from .frames import FrameTree, FrameVector
+from .lagrangian import Lagrangian
+from .rigid_body import RigidBody
+
+
+class MechanicalSystem(SageObject):
+    r"""
+    A system of rigid bodies.
+
+    INPUT:
+
+    - ``bodies`` -- list of :class:`~sage_dynsym.rigid_body.RigidBody`
+      (any order: parents are resolved by name, index or object)
+    - ``coordinates`` -- list of symbolic variables, the generalized
+      coordinates
+    - ``parameters`` -- (optional) list of the symbolic parameters; when
+      given, every symbol of the model must be a coordinate, a velocity
+      ``d<q>``, a parameter or ``t``
+    - ``force_function`` -- (optional)
+      :class:`~sage_dynsym.force_functions.UniformGravity`,
+      :class:`~sage_dynsym.force_functions.NewtonianField`, or any
+      expression `U(q, t)`
+    - ``dissipation`` -- (default: 0) Rayleigh function `R(q, \dot q)`
+    - ``forces`` -- (optional) generalized forces, one per coordinate
+    - ``name`` -- (optional) a name
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody
+        sage: a, b, m = var('a b m')
+        sage: base = RigidBody('base', rotations=[(3, a)])
+        sage: arm = RigidBody('arm', parent='base', rotations=[(1, b)], mass=m,
+        ....:                 mass_center=[0, 1, 0])
+        sage: S = MechanicalSystem([arm, base], [a, b]); S.bodies()
+        [Rigid body 'base' (parent 0, rotations [(3, a)], mass 0),
+         Rigid body 'arm' (parent base, rotations [(1, b)], mass m)]
+
+    TESTS::
+
+        sage: MechanicalSystem([RigidBody('arm', parent='nothing')], [])
+        Traceback (most recent call last):
+        ...
+        ModelError: bodies[0].parent: unknown parent body 'nothing'; known bodies are: arm
+        sage: MechanicalSystem([RigidBody('p', parent='q'), RigidBody('q', parent='p')], [])
+        Traceback (most recent call last):
+        ...
+        ModelError: bodies: the parents form a cycle: p -> q -> p
+        sage: MechanicalSystem([RigidBody('p', parent=2)], [])
+        Traceback (most recent call last):
+        ...
+        ModelError: bodies[0].parent: body index 2 out of range 1..1
+        sage: MechanicalSystem([RigidBody('p', mass=m), RigidBody('p')], [])
+        Traceback (most recent call last):
+        ...
+        ModelError: bodies[1].name: duplicate body name 'p'
+        sage: MechanicalSystem([RigidBody('p', mass=m*var('k'))], [], parameters=[m])
+        Traceback (most recent call last):
+        ...
+        ModelError: p.mass: undeclared symbol k; declared are: m, t
+    """
+
+    def __init__(self, bodies, coordinates, parameters=None, force_function=None,
+                 dissipation=0, forces=None, name=None):
+        bodies = list(bodies)
+        for i, body in enumerate(bodies):
+            if not isinstance(body, RigidBody):
+                raise ModelError(f"expected a RigidBody, got {body!r}", entry=f"bodies[{i}]")
+        self._bodies = self._sorted_by_parents(bodies)
+        self._coordinates = [SR(q) for q in coordinates]
+        for q in self._coordinates:
+            if not q.is_symbol():
+                raise ModelError(f"coordinates must be symbolic variables, got {q}",
+                                 entry="coordinates")
+        self._velocities = [velocity(q) for q in self._coordinates]
+        self._parameters = None if parameters is None else [SR(p) for p in parameters]
+        self._force = force_function
+        self._dissipation = SR(dissipation)
+        n = len(self._coordinates)
+        self._forces = [SR(0)] * n if forces is None else [SR(f) for f in forces]
+        if len(self._forces) != n:
+            raise ModelError(f"expected {n} generalized forces, one per coordinate, got "
+                             f"{len(self._forces)}", entry="forces")
+        self._name = name
+        if self._parameters is not None:
+            self._check_symbols()
+        self._tree = FrameTree()
+        self._frames = [0]
+        for k, body in enumerate(self._bodies, 1):
+            self._frames.append(self._tree.add_rotations(self.body_frame(self._parents[k]),
+                                                         body.rotations()))
+
+    # ------------------------------------------------------------------
+    # construction helpers
+
+    def _sorted_by_parents(self, bodies):
+        names = {}
+        for i, body in enumerate(bodies):
+            if body.name() in names:
+                raise ModelError(f"duplicate body name {body.name()!r}", entry=f"bodies[{i}].name")
+            names[body.name()] = i
+        parent_of = []
+        for i, body in enumerate(bodies):
+            parent = body.parent()
+            entry = f"bodies[{i}].parent"
+            if isinstance(parent, RigidBody):
+                parent = parent.name()
+            if isinstance(parent, str):
+                if parent not in names:
+                    raise ModelError(f"unknown parent body {parent!r}; known bodies are: "
+                                     f"{', '.join(names)}", entry=entry)
+                parent_of.append(names[parent])
+            elif isinstance(parent, numbers.Integral) and not isinstance(parent, bool):
+                parent = int(parent)
+                if parent == 0:
+                    parent_of.append(None)
+                elif 1 <= parent <= len(bodies):
+                    parent_of.append(parent - 1)
+                else:
+                    raise ModelError(f"body index {parent} out of range 1..{len(bodies)}",
+                                     entry=entry)
+            else:
+                raise ModelError("expected 0 (inertial frame), a body name or a 1-based "
+                                 f"body index, got {parent!r}", entry=entry)
+        order, state = [], [0] * len(bodies)   # 0 new, 1 in progress, 2 done
+
+        def visit(i, trail):
+            if state[i] == 2:
+                return
+            if state[i] == 1:
+                cycle = trail[trail.index(i):] + [i]
+                raise ModelError("the parents form a cycle: " +
+                                 " -> ".join(bodies[j].name() for j in cycle), entry="bodies")
+            state[i] = 1
+            if parent_of[i] is not None:
+                visit(parent_of[i], trail + [i])
+            state[i] = 2
+            order.append(i)
+
+        for i in range(len(bodies)):
+            visit(i, [])
+        position = {i: k for k, i in enumerate(order, 1)}
+        self._parents = [None] + [0 if parent_of[i] is None else position[parent_of[i]]
+                                  for i in order]
+        return [bodies[i] for i in order]
+
+    def _check_symbols(self):
+        declared = set(self._coordinates) | set(self._velocities) | set(self._parameters) | {t}
+        names = ", ".join(sorted(map(str, set(self._parameters) | {t})))
+
+        def check(expr, entry):
+            for v in SR(expr).variables():
+                if v not in declared:
+                    raise ModelError(f"undeclared symbol {v}; declared are: {names}", entry=entry)
+
+        for body in self._bodies:
+            n = body.name()
+            for i, (_, angle) in enumerate(body.rotations()):
+                check(angle, f"{n}.rotations[{i}]")
+            for field in ("joint", "velocity", "mass_center"):
+                for c in getattr(body, field)() or ():
+                    check(c, f"{n}.{field}")
+            check(body.mass(), f"{n}.mass")
+            for c in body.inertia().list():
+                check(c, f"{n}.inertia")
+        check(self._dissipation, "dissipation")
+        for i, f in enumerate(self._forces):
+            check(f, f"forces[{i}]")
+
+    # ------------------------------------------------------------------
+    # description
+
+    def _repr_(self):
+        n = len(self._bodies)
+        name = f" {self._name!r}" if self._name else ""
+        return (f"Mechanical system{name}: {n} bod{'y' if n == 1 else 'ies'}, coordinates "
+                f"({', '.join(map(str, self._coordinates))})")
+
+    def name(self):
+        r"""
+        The system's name (or ``None``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: MechanicalSystem([], [], name="empty").name()
+            'empty'
+        """
+        return self._name
+
+    def bodies(self):
+        r"""
+        The bodies, parents before children; body `k` (1-based) is
+        ``bodies()[k-1]``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: MechanicalSystem([RigidBody('b')], []).bodies()
+            [Rigid body 'b' (parent 0, rotations [], mass 0)]
+        """
+        return list(self._bodies)
+
+    def parent_index(self, k):
+        r"""
+        The 1-based index of the parent of body ``k`` (0: inertial frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: S = MechanicalSystem([RigidBody('a'), RigidBody('b', parent='a')], [])
+            sage: S.parent_index(2), S.parent_index(1)
+            (1, 0)
+        """
+        return self._parents[k]
+
+    def coordinates(self):
+        r"""
+        The generalized coordinates.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: MechanicalSystem([], [var('x')]).coordinates()
+            [x]
+        """
+        return list(self._coordinates)
+
+    def parameters(self):
+        r"""
+        The declared parameters (``None`` if not declared).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: MechanicalSystem([], [], parameters=[var('m')]).parameters()
+            [m]
+        """
+        return None if self._parameters is None else list(self._parameters)
+
+    def force_field(self):
+        r"""
+        The force-function description given at construction.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, UniformGravity
+            sage: MechanicalSystem([], [], force_function=UniformGravity([0, 0, -1])).force_field()
+            uniform gravity field g = (0, 0, -1)
+        """
+        return self._force
+
+    def dissipation(self):
+        r"""
+        The Rayleigh dissipation function.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: x, dx = var('x dx')
+            sage: MechanicalSystem([], [x], dissipation=dx^2).dissipation()
+            dx^2
+        """
+        return self._dissipation
+
+    def generalized_forces(self):
+        r"""
+        The generalized non-potential forces `Q_i`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: MechanicalSystem([], [var('x')], forces=[1]).generalized_forces()
+            [1]
+        """
+        return list(self._forces)
+
+    # ------------------------------------------------------------------
+    # kinematics
+
+    def frame_tree(self):
+        r"""
+        The :class:`~sage_dynsym.frames.FrameTree` of all elementary
+        rotations.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, var('a'))])], [])
+            sage: S.frame_tree().angle(S.body_frame(1))
+            a
+        """
+        return self._tree
+
+    def body_frame(self, k):
+        r"""
+        The frame of body ``k`` in :meth:`frame_tree` (``0`` for ``k = 0``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, b = var('a b')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a), (1, b)])], [])
+            sage: S.body_frame(0), S.body_frame(1)
+            (0, 2)
+        """
+        return self._frames[k]
+
+    def _check_index(self, k):
+        if not 1 <= k <= len(self._bodies):
+            raise ModelError(f"body index {k} out of range 1..{len(self._bodies)}")
+
+    def direction_cosines(self, k, j=0):
+        r"""
+        The direction-cosine matrix `\alpha^{jk}`: columns are the axes of
+        body ``k`` in the axes of body ``j`` (``j = 0``: inertial frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a = var('a')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a)])], [a])
+            sage: S.direction_cosines(1)
+            [ cos(a) -sin(a)       0]
+            [ sin(a)  cos(a)       0]
+            [      0       0       1]
+        """
+        self._check_index(k)
+        return self._tree.direction_cosines(self._frames[k], self._frames[j])
+
+    def _rate(self, angle):
+        return time_derivative(angle, self._coordinates, self._velocities)
+
+    @cached_method
+    def angular_velocity_vector(self, k):
+        r"""
+        The absolute angular velocity `W_k` as a
+        :class:`~sage_dynsym.frames.FrameVector` (each rotation rate about its
+        own axis, in its own frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a = var('a')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a)])], [a])
+            sage: S.angular_velocity_vector(1).parts()
+            {1: (0, 0, da)}
+        """
+        if k == 0:
+            return FrameVector(self._tree)
+        parts = {}
+        frame, stop = self._frames[k], self._frames[self._parents[k]]
+        while frame != stop:
+            axis_vector = [0, 0, 0]
+            axis_vector[self._tree.axis(frame) - 1] = self._rate(self._tree.angle(frame))
+            parts[frame] = tuple(axis_vector)
+            frame = self._tree.parent(frame)
+        return self.angular_velocity_vector(self._parents[k]) + FrameVector(self._tree, parts)
+
+    def angular_velocity(self, k):
+        r"""
+        `W_k`, the absolute angular velocity of body ``k`` in its own axes.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, b = var('a b')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a), (1, b)])], [a, b])
+            sage: S.angular_velocity(1)
+            (db, da*sin(b), da*cos(b))
+        """
+        self._check_index(k)
+        return self.angular_velocity_vector(k).components(self._frames[k])
+
+    def relative_angular_velocity(self, k):
+        r"""
+        `\omega_k`, the angular velocity of body ``k`` relative to its
+        parent, in the axes of body ``k``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, b = var('a b')
+            sage: S = MechanicalSystem([RigidBody('p', rotations=[(3, a)]),
+            ....:                       RigidBody('c', parent='p', rotations=[(1, b)])], [a, b])
+            sage: S.relative_angular_velocity(2), S.angular_velocity(2)
+            ((db, 0, 0), (db, da*sin(b), da*cos(b)))
+        """
+        self._check_index(k)
+        own = self.angular_velocity_vector(k) - self.angular_velocity_vector(self._parents[k])
+        return own.components(self._frames[k])
+
+    def _relative_velocity(self, k):
+        body = self._bodies[k - 1]
+        if body.velocity() is not None:
+            return body.velocity()
+        return tuple(self._rate(c) for c in body.joint())
+
+    @cached_method
+    def joint_velocity_vector(self, k):
+        r"""
+        The absolute velocity `V_{0k} = V_{0j} + W_j \times r^j_{0k} +
+        v^j_{0k}` of the joint point of body ``k``, as a
+        :class:`~sage_dynsym.frames.FrameVector`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, l = var('a l')
+            sage: S = MechanicalSystem([RigidBody('p', rotations=[(3, a)]),
+            ....:                       RigidBody('c', parent='p', joint=[l, 0, 0])], [a])
+            sage: S.joint_velocity_vector(2).parts()
+            {1: (0, da*l, 0)}
+        """
+        if k == 0:
+            return FrameVector(self._tree)
+        j = self._parents[k]
+        parent_frame = self._frames[j]
+        joint = self._bodies[k - 1].joint()
+        V = self.joint_velocity_vector(j) + FrameVector(self._tree,
+                                                        {parent_frame: self._relative_velocity(k)})
+        for frame, w in self.angular_velocity_vector(j).parts().items():
+            r = self._tree.express(joint, parent_frame, frame)
+            V = V + FrameVector(self._tree, {frame: (w[1] * r[2] - w[2] * r[1],
+                                                     w[2] * r[0] - w[0] * r[2],
+                                                     w[0] * r[1] - w[1] * r[0])})
+        return V
+
+    def joint_velocity(self, k):
+        r"""
+        `V_{0k}` in the axes of body ``k``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: z = var('z')
+            sage: MechanicalSystem([RigidBody('s', joint=[0, 0, z])], [z]).joint_velocity(1)
+            (0, 0, dz)
+        """
+        self._check_index(k)
+        return self.joint_velocity_vector(k).components(self._frames[k])
+
+    @cached_method
+    def joint_position(self, k):
+        r"""
+        The position of the joint point `O_k` relative to the inertial origin,
+        as a :class:`~sage_dynsym.frames.FrameVector`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, l = var('a l')
+            sage: S = MechanicalSystem([RigidBody('p', rotations=[(3, a)]),
+            ....:                       RigidBody('c', parent='p', joint=[l, 0, 0])], [a])
+            sage: S.joint_position(2).components(0)
+            (l*cos(a), l*sin(a), 0)
+        """
+        if k == 0:
+            return FrameVector(self._tree)
+        j = self._parents[k]
+        return self.joint_position(j) + FrameVector(self._tree, {self._frames[j]:
+                                                                 self._bodies[k - 1].joint()})
+
+    def mass_center_position(self, k):
+        r"""
+        The position of the mass centre `C_k` relative to the inertial
+        origin, as a :class:`~sage_dynsym.frames.FrameVector`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, l = var('a l')
+            sage: S = MechanicalSystem([RigidBody('p', rotations=[(3, a)], mass_center=[l, 0, 0])], [a])
+            sage: S.mass_center_position(1).components(0)
+            (l*cos(a), l*sin(a), 0)
+        """
+        self._check_index(k)
+        return self.joint_position(k) + FrameVector(self._tree, {self._frames[k]:
+                                                                 self._bodies[k - 1].mass_center()})
+
+    # ------------------------------------------------------------------
+    # energies and the Lagrangian
+
+    @cached_method
+    def kinetic_energy(self, k=None):
+        r"""
+        The kinetic energy (1): of body ``k``, or of the whole system.
+
+        `T_k = \tfrac12 m_k V_{0k}^2 + \tfrac12 W_k\cdot\Theta^k W_k
+        + m_k (V_{0k}\times W_k)\cdot r^k_{ck}`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m = var('x m')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x]).kinetic_energy()
+            1/2*dx^2*m
+        """
+        if k is None:
+            return sum((self.kinetic_energy(i) for i in range(1, len(self._bodies) + 1)), SR(0))
+        self._check_index(k)
+        body = self._bodies[k - 1]
+        if body.is_massless():
+            return SR(0)
+        frame = self._frames[k]
+        V = self.joint_velocity_vector(k)
+        W = self.angular_velocity_vector(k).components(frame)
+        Theta, m, c = body.inertia(), body.mass(), body.mass_center()
+        rotational = sum(W[i] * Theta[i, j] * W[j] for i in range(3) for j in range(3)
+                         if not Theta[i, j].is_zero())
+        W_cross_c = (W[1] * c[2] - W[2] * c[1], W[2] * c[0] - W[0] * c[2],
+                     W[0] * c[1] - W[1] * c[0])
+        # (V x W).c = V.(W x c)
+        coupling = V.dot(FrameVector(self._tree, {frame: W_cross_c}))
+        return (m * V.dot(V) / 2 + rotational / 2 + m * coupling).expand()
+
+    @cached_method
+    def force_function(self):
+        r"""
+        The force function `U` (minus the potential energy) of the field
+        given at construction (0 if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: x = var('x')
+            sage: MechanicalSystem([], [x], force_function=-x^2/2).force_function()
+            -1/2*x^2
+        """
+        if self._force is None:
+            return SR(0)
+        if hasattr(self._force, 'evaluate'):
+            return self._force.evaluate(self).expand()
+        return SR(self._force)
+
+    @cached_method
+    def lagrangian(self):
+        r"""
+        The Lagrangian `L = T + U`, with the system's dissipation function and
+        generalized forces.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k, c = var('x m k c')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2, dissipation=c*var('dx')^2/2)
+            sage: S.lagrangian().lagrange_equations()
+            [c*dx + ddx*m + k*x]
+        """
+        return Lagrangian(self.kinetic_energy() + self.force_function(), self._coordinates,
+                          self._velocities, dissipation=self._dissipation,
+                          forces=self._forces, name=self._name)

@@ -1,0 +1,295 @@
+r"""
+Rigid bodies: the geometric and inertial description of one body
+
+A :class:`RigidBody` holds exactly the fields of section 1.1 of the
+specification: the parent body, the elementary rotations from the parent's
+frame to the body's frame, the joint point `r^j_{0k}` (in the parent's
+axes), its relative velocity `v^j_{0k}`, the mass centre `r^k_{ck}` (in the
+body's axes), the mass and the inertia tensor about the joint point `O_k`
+(in the body's axes). It is a description only; kinematics and energies are
+computed by :class:`~sage_dynsym.mechanical_system.MechanicalSystem`.
+
+EXAMPLES::
+
+    sage: from sage_dynsym import RigidBody
+    sage: psi, theta, m, l = var('psi theta m l')
+    sage: B = RigidBody('pendulum', parent=0, rotations=[(3, psi), (1, theta)],
+    ....:               mass_center=[0, 0, l], mass=m,
+    ....:               inertia=diagonal_matrix([m*l^2, m*l^2, 0])); B
+    Rigid body 'pendulum' (parent 0, rotations [(3, psi), (1, theta)], mass m)
+    sage: B.inertia()
+    [l^2*m     0     0]
+    [    0 l^2*m     0]
+    [    0     0     0]
+
+Bad input is rejected with the offending entry named::
+
+    sage: RigidBody('b', rotations=[(4, psi)])
+    Traceback (most recent call last):
+    ...
+    ModelError: b.rotations[0]: rotation axis must be 1, 2 or 3 (x, y, z), got 4
+    sage: RigidBody('b', inertia=[[1, 2, 0], [0, 1, 0], [0, 0, 1]])
+    Traceback (most recent call last):
+    ...
+    ModelError: b.inertia: the inertia tensor must be symmetric; entry (0, 1) is 2 but entry (1, 0) is 0
+"""
+from sage.matrix.constructor import matrix
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from .errors import ModelError
+
+
+def _vector3(value, entry):
+    if value is None:
+        return None
+    try:
+        components = list(value)
+    except TypeError:
+        raise ModelError(f"expected a list of 3 components, got {value!r}", entry=entry) from None
+    if len(components) != 3:
+        raise ModelError(f"expected a list of 3 components, got {len(components)}", entry=entry)
+    return tuple(_scalar(c, f"{entry}[{i}]") for i, c in enumerate(components))
+
+
+def _scalar(value, entry):
+    try:
+        return SR(value)
+    except (TypeError, ValueError):
+        raise ModelError(f"expected a symbolic expression, got {value!r}", entry=entry) from None
+
+
+def _check_nonnegative(value, entry, what):
+    if value.is_numeric() and value.is_real() and value < 0:
+        raise ModelError(f"{what} must be non-negative, got {value}", entry=entry)
+
+
+class RigidBody(SageObject):
+    r"""
+    One rigid body of a mechanical system.
+
+    INPUT:
+
+    - ``name`` -- a string
+    - ``parent`` -- (default: 0) ``0`` for the inertial frame, or the parent
+      body: its name, its 1-based index in the system, or the
+      :class:`RigidBody` itself
+    - ``rotations`` -- (default: ``[]``) list of pairs ``(axis, angle)``:
+      elementary rotations from the parent's frame, each about the *new*
+      axis; ``axis`` in ``{1, 2, 3}``; angles may be coordinates, functions
+      of ``t`` or constants
+    - ``joint`` -- (default: zero) `r^j_{0k}`, the joint point `O_k` in the
+      parent's axes
+    - ``velocity`` -- (default: ``None``, the time derivative of ``joint``)
+      `v^j_{0k}`, the relative velocity of `O_k` in the parent's axes
+    - ``mass_center`` -- (default: zero) `r^k_{ck}` in the body's axes
+    - ``mass`` -- (default: 0) the mass `m_k`
+    - ``inertia`` -- (default: zero) symmetric 3x3 inertia tensor about `O_k`
+      in the body's axes
+
+    A massless carrier (``mass=0`` and zero inertia) only defines a frame.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import RigidBody
+        sage: z, dz = var('z dz')
+        sage: slider = RigidBody('slider', joint=[0, 0, z], mass=1)
+        sage: slider.velocity() is None, slider.joint()
+        (True, (0, 0, z))
+
+    TESTS::
+
+        sage: RigidBody('b', joint=[1, 2])
+        Traceback (most recent call last):
+        ...
+        ModelError: b.joint: expected a list of 3 components, got 2
+        sage: RigidBody('b', mass=-1)
+        Traceback (most recent call last):
+        ...
+        ModelError: b.mass: the mass must be non-negative, got -1
+        sage: RigidBody('b', inertia=[[1, 0], [0, 1]])
+        Traceback (most recent call last):
+        ...
+        ModelError: b.inertia: expected a symmetric 3x3 matrix
+        sage: RigidBody('b', inertia=diagonal_matrix([1, -1, 1]))
+        Traceback (most recent call last):
+        ...
+        ModelError: b.inertia: the moments of inertia must be non-negative, got -1
+        sage: RigidBody('b', rotations=[3])
+        Traceback (most recent call last):
+        ...
+        ModelError: b.rotations[0]: expected a pair (axis, angle), got 3
+        sage: RigidBody('')
+        Traceback (most recent call last):
+        ...
+        ModelError: name: a body needs a non-empty name
+    """
+
+    def __init__(self, name, parent=0, rotations=(), joint=(0, 0, 0), velocity=None,
+                 mass_center=(0, 0, 0), mass=0, inertia=None):
+        if not isinstance(name, str) or not name:
+            raise ModelError("a body needs a non-empty name", entry="name")
+        self._name = name
+        self._parent = parent
+        self._rotations = []
+        for i, rotation in enumerate(rotations):
+            entry = f"{name}.rotations[{i}]"
+            if not isinstance(rotation, (tuple, list)) or len(rotation) != 2:
+                raise ModelError(f"expected a pair (axis, angle), got {rotation!r}", entry=entry)
+            axis, angle = rotation
+            if axis not in (1, 2, 3) or isinstance(axis, bool):
+                raise ModelError(f"rotation axis must be 1, 2 or 3 (x, y, z), got {axis!r}",
+                                 entry=entry)
+            self._rotations.append((int(axis), _scalar(angle, entry)))
+        self._joint = _vector3(joint, f"{name}.joint")
+        self._velocity = _vector3(velocity, f"{name}.velocity")
+        self._mass_center = _vector3(mass_center, f"{name}.mass_center")
+        self._mass = _scalar(mass, f"{name}.mass")
+        _check_nonnegative(self._mass, f"{name}.mass", "the mass")
+        self._inertia = self._make_inertia(inertia, f"{name}.inertia")
+
+    @staticmethod
+    def _make_inertia(inertia, entry):
+        if inertia is None:
+            return matrix(SR, 3, 3)
+        try:
+            tensor = matrix(SR, inertia)
+        except (TypeError, ValueError):
+            raise ModelError("expected a symmetric 3x3 matrix", entry=entry) from None
+        if tensor.dimensions() != (3, 3):
+            raise ModelError("expected a symmetric 3x3 matrix", entry=entry)
+        for i in range(3):
+            for j in range(i + 1, 3):
+                if not bool(tensor[i, j] == tensor[j, i]):
+                    raise ModelError(
+                        f"the inertia tensor must be symmetric; entry ({i}, {j}) is "
+                        f"{tensor[i, j]} but entry ({j}, {i}) is {tensor[j, i]}", entry=entry)
+            _check_nonnegative(tensor[i, i], entry, "the moments of inertia")
+        tensor.set_immutable()
+        return tensor
+
+    def _repr_(self):
+        return (f"Rigid body {self._name!r} (parent {self.parent_name()}, rotations "
+                f"{self._rotations}, mass {self._mass})")
+
+    def name(self):
+        r"""
+        The body's name.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('arm').name()
+            'arm'
+        """
+        return self._name
+
+    def parent(self):
+        r"""
+        The parent as given (``0``, a name, an index or a body).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('arm', parent='base').parent()
+            'base'
+        """
+        return self._parent
+
+    def parent_name(self):
+        r"""
+        The parent as a printable name (``0`` for the inertial frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: base = RigidBody('base')
+            sage: RigidBody('arm', parent=base).parent_name(), base.parent_name()
+            ('base', 0)
+        """
+        return self._parent.name() if isinstance(self._parent, RigidBody) else self._parent
+
+    def rotations(self):
+        r"""
+        The elementary rotations ``[(axis, angle), ...]``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('b', rotations=[(2, var('a'))]).rotations()
+            [(2, a)]
+        """
+        return list(self._rotations)
+
+    def joint(self):
+        r"""
+        `r^j_{0k}`: the joint point in the parent's axes.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('b', joint=[0, 0, 1]).joint()
+            (0, 0, 1)
+        """
+        return self._joint
+
+    def velocity(self):
+        r"""
+        `v^j_{0k}` as given, or ``None`` (then the time derivative of the
+        joint vector is used).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('b', velocity=[0, 0, var('dz')]).velocity()
+            (0, 0, dz)
+        """
+        return self._velocity
+
+    def mass_center(self):
+        r"""
+        `r^k_{ck}`: the mass centre in the body's axes.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('b', mass_center=[0, 0, var('l')]).mass_center()
+            (0, 0, l)
+        """
+        return self._mass_center
+
+    def mass(self):
+        r"""
+        The mass.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('b', mass=var('m')).mass()
+            m
+        """
+        return self._mass
+
+    def inertia(self):
+        r"""
+        The inertia tensor about the joint point, in the body's axes.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('b').inertia().is_zero()
+            True
+        """
+        return self._inertia
+
+    def is_massless(self):
+        r"""
+        Whether mass and inertia are both zero (a frame-only carrier).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: RigidBody('carrier').is_massless(), RigidBody('b', mass=1).is_massless()
+            (True, False)
+        """
+        return self._mass.is_zero() and self._inertia.is_zero()
