@@ -17,26 +17,27 @@ A series RLC circuit driven by a voltage source::
     sage: C
     Circuit 'RLC' with 4 branches on 4 nodes
     sage: L = C.lagrangian(method="loop"); L
-    Lagrangian in coordinates (q1) : 1/2*L1*dq1^2 - 1/2*q1^2/C1
+    Lagrangian of RLC (loop method) in coordinates (q1) : 1/2*L1*dq1^2 - 1/2*q1^2/C1
     sage: L.lagrange_equations()
     [L1*ddq1 + R1*dq1 - E1 + q1/C1]
     sage: C.state_variables()
     [(i1, 'L1'), (u2, 'C1')]
     sage: C.state_equations()
-    [-R1*i1 - E1 + u2, -i1]
+    [-R1*i1 + E1 + u2, -i1]
     sage: C.brayton_moser().mixed_potential()
-    -1/2*R1*i1^2 - (E1 - u2)*i1
+    -1/2*R1*i1^2 + (E1 + u2)*i1
 
 Here `u_2 = \varphi(0) - \varphi(3)` is the rise across ``C1`` from node 3
-to node 0, so `L_1\, di_1/dt = u_2 - E_1 - R_1 i_1` is Kirchhoff's voltage
-law around the loop.
+to node 0, so `L_1\, di_1/dt = E_1 + u_2 - R_1 i_1` is Kirchhoff's voltage
+law around the loop (the loop charge ``q1`` charges ``C1`` to `u_2 =
+-q_1/C_1`).
 
 The node-potential method gives Kirchhoff's current law instead::
 
     sage: Ln = C.lagrangian(method="node"); Ln.coordinates()
     [phi2, phi3]
     sage: Ln.lagrange_equations()
-    [(dphi2 - E1)/R1 + (phi2 - phi3)/L1, C1*ddphi3 - (phi2 - phi3)/L1]
+    [-(E1 - dphi2)/R1 + (phi2 - phi3)/L1, C1*ddphi3 - (phi2 - phi3)/L1]
 """
 import re
 
@@ -284,9 +285,9 @@ class Circuit(SageObject):
             ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
             ....:             parameters=['M'])
             sage: L = C.lagrangian(); L
-            Lagrangian in coordinates (q1, q2) : 1/2*L1*dq1^2 - M*dq1*dq2 + 1/2*L2*dq2^2
+            Lagrangian of circuit (loop method) in coordinates (q1, q2) : 1/2*L1*dq1^2 + M*dq1*dq2 + 1/2*L2*dq2^2
             sage: L.lagrange_equations()
-            [L1*ddq1 - M*ddq2 - E1, -M*ddq1 + L2*ddq2 + R2*dq2]
+            [L1*ddq1 + M*ddq2 - E1, M*ddq1 + L2*ddq2 + R2*dq2]
 
         TESTS::
 
@@ -306,10 +307,9 @@ class Circuit(SageObject):
             A = self.node_analysis(ground)
         else:
             raise CircuitError(f"unknown method {method!r}; expected \"loop\" or \"node\"")
-        title = f" of {self._name}" if self._name else ""
         return Lagrangian(A.kinetic_energy() - A.potential_energy(), A.coordinates(),
                           dissipation=A.dissipation(), forces=A.source_vector(),
-                          name=f"{method} Lagrangian{title}")
+                          name=f"{self._name or 'circuit'} ({method} method)")
 
     @cached_method
     def brayton_moser(self):

@@ -56,6 +56,7 @@ def source_integral(value):
     EXAMPLES::
 
         sage: from sage_dynsym.circuits.linear import source_integral
+        sage: from sage_dynsym.expressions import t
         sage: E, w = var('E w')
         sage: source_integral(E), source_integral(E*cos(w*t))
         (E*t, E*sin(t*w)/w)
@@ -63,10 +64,11 @@ def source_integral(value):
     value = SR(value)
     if t not in value.variables():
         return value * t
-    s = SR.symbol('s')
-    try:
-        return value.subs({t: s}).integral(s, 0, t)
+    try:    # an antiderivative needs no assumptions on t (a definite integral may)
+        prim = value.integral(t)
+        return prim - prim.subs({t: 0})
     except (ValueError, TypeError, RuntimeError, NotImplementedError):
+        s = SR.symbol('s')
         return definite_integral(value.subs({t: s}), s, 0, t, hold=True)
 
 

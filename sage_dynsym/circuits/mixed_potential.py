@@ -53,6 +53,78 @@ such node down) and neighbours visited in increasing node order. For
 Example 2 this gives ``i1, i2`` for ``L1, L2`` and ``u3, u4, u5, u6`` for
 ``C3, C2, C4, C1``, exactly the names of the specification.
 
+EXAMPLES:
+
+Example 2 of the specification, read from its description file::
+
+    sage: import os, yaml, sage_dynsym
+    sage: from sage_dynsym.circuits import circuit_from_dict
+    sage: path = os.path.join(os.path.dirname(sage_dynsym.__file__), os.pardir,
+    ....:                     'examples', 'nonlinear_circuit.yaml')
+    sage: with open(path) as f:
+    ....:     C = circuit_from_dict(yaml.safe_load(f), source=path)
+    sage: C
+    Circuit 'nonlinear circuit of Example 2' with 13 branches on 5 nodes
+    sage: BM = C.brayton_moser()
+    sage: BM.state_variables()
+    [(i1, 'L1'), (i2, 'L2'), (u3, 'C3'), (u4, 'C2'), (u5, 'C4'), (u6, 'C1')]
+
+The split, with `\Omega_i = \{\{1,2\} L_1, \{3,4\} L_2\}`, and the loops
+`\Lambda_1, \Lambda_2` (each step is ``(node, next node, element)``)::
+
+    sage: BM.omega_i()
+    [(1, 2, 'L1'), (3, 4, 'L2')]
+    sage: BM.omega_u()
+    [(2, 3, 'f1'), (2, 3, 'C1'), (4, 5, 'I02'), (4, 5, 'C4'), (4, 5, 'f4'),
+     (3, 5, 'C2'), (3, 5, 'f2'), (5, 2, 'I0'), (1, 5, 'C3'), (1, 5, 'f3'), (1, 5, 'I01')]
+    sage: BM.loops()
+    [[(1, 2, 'L1'), (2, 3, 'C1'), (3, 5, 'C2'), (5, 1, 'C3')],
+     [(3, 4, 'L2'), (4, 5, 'C4'), (5, 3, 'C2')]]
+
+`F`, `G`, `(i, \gamma u)` and `P`::
+
+    sage: BM.current_potential()
+    0
+    sage: G = BM.voltage_potential(); G
+    I01*u3 - I0*(u4 + u6) + I02*u5 + integrate(f1(s), s, 0, u6)
+     + integrate(f2(s), s, 0, u4) + integrate(f3(s), s, 0, u3) + integrate(f4(s), s, 0, u5)
+    sage: J = BM.coupling_term(); J
+    -i1*(u3 - u4 - u6) - i2*(u4 - u5)
+    sage: bool(J == var('i1')*(var('u4') + var('u6') - var('u3')) + var('i2')*(var('u5') - var('u4')))
+    True
+    sage: BM.gamma_matrix()
+    [-1  1  0  1]
+    [ 0 -1  1  0]
+    sage: P = C.mixed_potential(); bool(P == -G + J)
+    True
+
+The six state equations (11), in the order of the state variables::
+
+    sage: for (x, name), rhs in zip(C.state_variables(), C.state_equations()):
+    ....:     print(f"{name} d{x}/dt = {rhs}")
+    L1 di1/dt = -u3 + u4 + u6
+    L2 di2/dt = -u4 + u5
+    C3 du3/dt = I01 + i1 + f3(u3)
+    C2 du4/dt = -I0 - i1 + i2 + f2(u4)
+    C4 du5/dt = I02 - i2 + f4(u5)
+    C1 du6/dt = -I0 - i1 + f1(u6)
+
+The time derivative of `P` along them (Lyapunov-function analogue)::
+
+    sage: BM.time_derivative()
+    -(I0 + i1 - i2 - f2(u4))^2/C2 - (I0 + i1 - f1(u6))^2/C1
+     - (I01 + i1 + f3(u3))^2/C3 - (I02 - i2 + f4(u5))^2/C4
+     + (u3 - u4 - u6)^2/L1 + (u4 - u5)^2/L2
+
+Nonlinear inductances and capacitances (depending on their own variable)
+only change the left-hand sides::
+
+    sage: from sage_dynsym.circuits import Circuit
+    sage: C2 = Circuit([{'from': 1, 'to': 2, 'kind': 'inductor', 'name': 'L1',
+    ....:                'value': 'L0/(1 + i^2)'}, [2, 1, 'C1'], [2, 1, 'f1']], parameters=['L0'])
+    sage: C2.brayton_moser().inductance_matrix(), C2.state_equations()
+    ([L0/(i1^2 + 1)], [u2, -i1 + f1(u2)])
+
 REFERENCES:
 
 - R. K. Brayton, J. K. Moser, *A theory of nonlinear networks I*,
@@ -88,8 +160,35 @@ class MixedPotential:
 
     EXAMPLES::
 
-        sage: from sage_dynsym import load
-        sage: BM = load('examples/nonlinear_circuit.yaml').brayton_moser()  # not tested
+        sage: from sage_dynsym.circuits import Circuit
+        sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'L1'], [2, 0, 'C1'], [2, 0, 'R2']])
+        sage: BM = C.brayton_moser(); BM
+        Brayton-Moser mixed potential of Circuit with 4 branches on 3 nodes
+        sage: BM.omega_i(), BM.tree()
+        ([(1, 2, 'L1')], [(0, 1, 'E1'), (2, 0, 'C1')])
+        sage: BM.voltage_potential(), BM.coupling_term()
+        (-1/2*u2^2/R2, (E1 + u2)*i1)
+        sage: BM.state_equations()
+        [E1 + u2, -i1 - u2/R2]
+
+    TESTS::
+
+        sage: Circuit([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1'], [1, 3, 'L1']]).brayton_moser()
+        Traceback (most recent call last):
+        ...
+        CircuitError: the circuit is not complete: the capacitors and voltage sources E1, C1, C2 form a loop; the capacitor voltages are not independent
+        sage: Circuit([[1, 2, 'L1'], [2, 3, 'I1'], [3, 1, 'C1'], [3, 1, 'R1']]).brayton_moser()
+        Traceback (most recent call last):
+        ...
+        CircuitError: the circuit is not complete: the inductors and current sources L1, I1 form a cut-set; the inductor currents are not independent
+        sage: Circuit([[1, 2, 'I1'], [2, 3, 'f1'], [3, 1, 'C1'], [3, 1, 'L1']]).brayton_moser()
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1]: no Brayton-Moser split: the nonlinear resistor f1 is voltage-controlled ...
+        sage: Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'R2'], [2, 1, 'C1']]).brayton_moser()
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[2]: no Brayton-Moser split: the resistors R2, R1 lie in a loop R2, C1, R1 ...
     """
 
     def __init__(self, circuit):
