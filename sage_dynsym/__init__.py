@@ -12,3 +12,4 @@ from .mechanical_system import MechanicalSystem
 from .routh import RouthFunction
 from .hamiltonian import Hamiltonian
 from .dirac import DiracConstraints
+from .description import load, save

@@ -554,7 +554,7 @@ class MechanicalSystem(SageObject):
                      W[0] * c[1] - W[1] * c[0])
         # (V x W).c = V.(W x c)
         coupling = V.dot(FrameVector(self._tree, {frame: W_cross_c}))
-        return (m * V.dot(V) / 2 + rotational / 2 + m * coupling).expand()
+        return m * V.dot(V) / 2 + rotational / 2 + m * coupling
 
     @cached_method
     def force_function(self):
