@@ -3,6 +3,10 @@ sage_dynsym: symbolic modelling and qualitative analysis of dynamic systems.
 
 This module only re-exports the public API; see the submodules.
 """
+# Symbolic functions, Maxima and the coercion model need the full Sage
+# library initialised, also when the package is used from plain Python.
+import sage.all  # noqa: F401
+
 from .errors import (DynSymError, ModelError, DescriptionError, ExpressionError,
                      CircuitError, AnalysisError)
 from .lagrangian import Lagrangian

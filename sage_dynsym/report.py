@@ -1,0 +1,136 @@
+r"""
+Plain-text and LaTeX reports of a model
+
+:func:`report` derives what a description file's model has to offer
+(Lagrangian, Lagrange equations, Routh function for the cyclic coordinates,
+Hamiltonian; for circuits the mixed potential and state equations, and the
+loop Lagrangian of a linear circuit) and renders it as readable text with the
+LaTeX form of every formula. The command line ``python -m sage_dynsym`` (or
+``sage-dynsym``) prints it for each file given.
+
+EXAMPLES::
+
+    sage: from sage_dynsym import load
+    sage: from sage_dynsym.description import example_path
+    sage: from sage_dynsym.report import report
+    sage: print(report(load(example_path('spherical_pendulum.yaml'))))
+    == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
+    Lagrangian L = T + U:
+      1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)
+      LaTeX: ...
+    Lagrange equations (E_i = 0):
+      [psi] 2*dpsi*dtheta*l^2*m*cos(theta)*sin(theta) + ddpsi*l^2*m*sin(theta)^2
+      ...
+    Routh function for the cyclic coordinates psi (momenta p_psi):
+      ...
+    Hamiltonian:
+      ...
+"""
+from sage.misc.latex import latex
+
+from .errors import DynSymError
+
+
+def _formula(lines, label, expr, indent="  "):
+    lines.append(f"{indent}{label}{expr}")
+    lines.append(f"{indent}  LaTeX: {latex(expr)}")
+
+
+def _mechanical(system, lines):
+    coordinates = ", ".join(map(str, system.coordinates()))
+    n = len(system.bodies())
+    lines.append(f"== {system.name() or 'mechanical system'} (mechanical system: {n} "
+                 f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
+    L = system.lagrangian()
+    lines.append("Lagrangian L = T + U:")
+    _formula(lines, "", L.expr())
+    _lagrangian_equations(L, lines)
+    cyclic = L.cyclic_coordinates()
+    if cyclic and len(cyclic) < len(L.coordinates()):
+        R = L.routh(cyclic)
+        lines.append(f"Routh function for the cyclic coordinates {', '.join(map(str, cyclic))} "
+                     f"(momenta {', '.join(map(str, R.momenta()))}):")
+        _formula(lines, "R = ", R.expr())
+        lines.append("Routh equations (E_i = 0):")
+        for q, e in zip(R.coordinates(), R.equations()):
+            _formula(lines, f"[{q}] ", e)
+    H = L.hamiltonian()
+    if H.is_singular():
+        D = H.constraints()
+        lines.append(f"Singular Lagrangian: Dirac's scheme ({D}):")
+        for c in D.constraints():
+            _formula(lines, "constraint ", c)
+    lines.append("Hamiltonian:")
+    _formula(lines, "H = ", H.expr())
+
+
+def _lagrangian_equations(L, lines):
+    lines.append("Lagrange equations (E_i = 0):")
+    for q, e in zip(L.coordinates(), L.lagrange_equations()):
+        _formula(lines, f"[{q}] ", e)
+
+
+def _circuit(circuit, lines):
+    from .errors import CircuitError
+    lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
+                 f"branches on {len(circuit.nodes())} nodes) ==")
+    try:
+        equations = circuit.state_equations()
+    except CircuitError as err:
+        lines.append(f"No Brayton-Moser form: {err}")
+    else:
+        lines.append("Mixed potential P(i, u):")
+        _formula(lines, "P = ", circuit.mixed_potential())
+        lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du):")
+        for (v, element), e in zip(circuit.state_variables(), equations):
+            _formula(lines, f"[{element} d{v}/dt] ", e)
+    try:
+        L = circuit.lagrangian(method="loop")
+    except CircuitError as err:
+        lines.append(f"No loop Lagrangian: {err}")
+    else:
+        lines.append("Lagrangian (loop-current method):")
+        _formula(lines, "L = ", L.expr())
+        _lagrangian_equations(L, lines)
+
+
+def report(model):
+    r"""
+    A text report of ``model`` (see the module documentation).
+
+    INPUT:
+
+    - ``model`` -- a :class:`~sage_dynsym.mechanical_system.MechanicalSystem`
+      or a :class:`~sage_dynsym.circuits.circuit.Circuit`
+
+    OUTPUT: a string
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: from sage_dynsym.report import report
+        sage: text = report(load(example_path('nonlinear_circuit.yaml')))
+        sage: print(text.splitlines()[0])
+        == nonlinear circuit of Example 2 (circuit: 13 branches on 5 nodes) ==
+        sage: 'State equations' in text
+        True
+
+    TESTS::
+
+        sage: report(42)
+        Traceback (most recent call last):
+        ...
+        DynSymError: cannot report on Integer: expected a mechanical system or a circuit
+    """
+    from .mechanical_system import MechanicalSystem
+    from .circuits import Circuit
+    lines = []
+    if isinstance(model, MechanicalSystem):
+        _mechanical(model, lines)
+    elif isinstance(model, Circuit):
+        _circuit(model, lines)
+    else:
+        raise DynSymError(f"cannot report on {type(model).__name__}: expected a mechanical "
+                          "system or a circuit")
+    return "\n".join(lines)
