@@ -157,13 +157,30 @@ class LoopAnalysis:
         self._pos_of = pos_of
 
     def coordinates(self):
-        r"""The loop charges ``q1, q2, ...``."""
+        r"""The loop charges ``q1, q2, ...``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.coordinates()
+            [q1, q2]
+        """
         return list(self._coordinates)
 
     def loops(self):
         r"""
         The loops of the coordinates, each a list of triples
         ``(node, next node, name)`` in walking order, starting with the chord.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.loops()
+            [[(2, 3, 'L1'), (3, 0, 'C1'), (0, 1, 'E1'), (1, 2, 'R1')], [(3, 0, 'R2'), (0, 3, 'C1')]]
         """
         return [[(b.tail, b.head, b.name) if s > 0 else (b.head, b.tail, b.name)
                  for b, s in loop] for loop in self._loops]
@@ -174,7 +191,17 @@ class LoopAnalysis:
                           (len(self._coordinates), weight))
 
     def inductance_matrix(self):
-        r"""The loop inductance matrix `L_{ij}` (mutual inductances included)."""
+        r"""The loop inductance matrix `L_{ij}` (mutual inductances included).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.inductance_matrix()
+            [L1  0]
+            [ 0  0]
+        """
         M = self._matrix('inductor', lambda v: v)
         for cp in self._circuit.couplings():
             ra, rb = self._rows[self._pos_of[cp.first]], self._rows[self._pos_of[cp.second]]
@@ -185,27 +212,83 @@ class LoopAnalysis:
         return M
 
     def elastance_matrix(self):
-        r"""The loop elastance matrix `(1/C)_{ij}`."""
+        r"""The loop elastance matrix `(1/C)_{ij}`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.elastance_matrix()
+            [ 1/C1 -1/C1]
+            [-1/C1  1/C1]
+        """
         return self._matrix('capacitor', lambda v: 1 / v)
 
     def resistance_matrix(self):
-        r"""The loop resistance matrix `R_{ij}`."""
+        r"""The loop resistance matrix `R_{ij}`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.resistance_matrix()
+            [R1  0]
+            [ 0 R2]
+        """
         return self._matrix('resistor', lambda v: v)
 
     def source_vector(self):
-        r"""The loop electromotive forces `Q_k = \sum \pm E` (generalized forces)."""
+        r"""The loop electromotive forces `Q_k = \sum \pm E` (generalized forces).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.source_vector()
+            [E1, 0]
+        """
         return list(self._forces)
 
     def kinetic_energy(self):
-        r"""The magnetic energy `T`."""
+        r"""The magnetic energy `T`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.kinetic_energy()
+            1/2*L1*dq1^2
+        """
         return self._T
 
     def potential_energy(self):
-        r"""The electric energy `\Pi`."""
+        r"""The electric energy `\Pi`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.potential_energy()
+            1/2*(I1*t + q1 - q2)^2/C1
+        """
         return self._Pi
 
     def dissipation(self):
-        r"""The Rayleigh function `R`."""
+        r"""The Rayleigh function `R`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
+            sage: A.dissipation()
+            1/2*R1*dq1^2 + 1/2*R2*dq2^2
+        """
         return self._R
 
 
@@ -315,15 +398,42 @@ class NodeAnalysis:
         return blocks
 
     def ground(self):
-        r"""The grounded node."""
+        r"""The grounded node.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.ground()
+            0
+        """
         return self._ground
 
     def coordinates(self):
-        r"""The node flux linkages ``phi<node>`` (one per node group, ground excluded)."""
+        r"""The node flux linkages ``phi<node>`` (one per node group, ground excluded).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.coordinates()
+            [phi2, phi3]
+        """
         return list(self._coordinates)
 
     def nodes(self):
-        r"""The nodes whose flux linkages are the coordinates, in the same order."""
+        r"""The nodes whose flux linkages are the coordinates, in the same order.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.nodes()
+            [2, 3]
+        """
         return list(self._reps)
 
     def _matrix(self, kind, weight):
@@ -332,15 +442,45 @@ class NodeAnalysis:
                           (len(self._coordinates), weight))
 
     def capacitance_matrix(self):
-        r"""The node capacitance matrix `C_{ij}`."""
+        r"""The node capacitance matrix `C_{ij}`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.capacitance_matrix()
+            [ 0  0]
+            [ 0 C1]
+        """
         return self._matrix('capacitor', lambda v: v)
 
     def conductance_matrix(self):
-        r"""The node conductance matrix `(1/R)_{ij}`."""
+        r"""The node conductance matrix `(1/R)_{ij}`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.conductance_matrix()
+            [1/R1    0]
+            [   0 1/R2]
+        """
         return self._matrix('resistor', lambda v: 1 / v)
 
     def inverse_inductance_matrix(self):
-        r"""The node inverse-inductance matrix `(1/L)_{ij}` (mutual inductances included)."""
+        r"""The node inverse-inductance matrix `(1/L)_{ij}` (mutual inductances included).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.inverse_inductance_matrix()
+            [ 1/L1 -1/L1]
+            [-1/L1  1/L1]
+        """
         n = len(self._coordinates)
         M = matrix(SR, n, n)
         for block, G in self._gamma_blocks:
@@ -352,17 +492,53 @@ class NodeAnalysis:
         return M
 
     def source_vector(self):
-        r"""The source currents injected into each node group (generalized forces)."""
+        r"""The source currents injected into each node group (generalized forces).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.source_vector()
+            [0, I1]
+        """
         return list(self._forces)
 
     def kinetic_energy(self):
-        r"""The electric energy `T` (in the node potentials)."""
+        r"""The electric energy `T` (in the node potentials).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.kinetic_energy()
+            1/2*C1*dphi3^2
+        """
         return self._T
 
     def potential_energy(self):
-        r"""The magnetic energy `\Pi` (in the node flux linkages)."""
+        r"""The magnetic energy `\Pi` (in the node flux linkages).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.potential_energy()
+            1/2*(phi2 - phi3)^2/L1
+        """
         return self._Pi
 
     def dissipation(self):
-        r"""The Rayleigh function `R`."""
+        r"""The Rayleigh function `R`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
+            sage: A.dissipation()
+            1/2*(E1 - dphi2)^2/R1 + 1/2*dphi3^2/R2
+        """
         return self._R

@@ -329,6 +329,30 @@ class MixedPotential:
 
     __repr__ = _repr_
 
+    def _latex_(self):
+        r"""
+        The state equations (8) as an aligned system.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'L1'], [2, 0, 'C1'], [2, 0, 'f1']]).brayton_moser()
+            sage: latex(BM)
+            \begin{aligned}
+            L_{1} \dot{i_{1}} &= E_{1} + u_{2} \\
+            C_{1} \dot{u_{2}} &= -i_{1} + f_{1}\left(u_{2}\right)
+            \end{aligned}
+        """
+        from sage.misc.latex import latex
+        xs = [x for x, _ in self.state_variables()]
+        r = len(self._inductors)
+        Lm = self.inductance_matrix()
+        lhs = [" + ".join(f"{latex(Lm[k, j])} \\dot{{{latex(xs[j])}}}"
+                          for j in range(r) if not Lm[k, j].is_zero()) for k in range(r)]
+        lhs += [f"{latex(c)} \\dot{{{latex(x)}}}" for c, x in zip(self.capacitances(), xs[r:])]
+        rows = [f"{a} &= {latex(b)}" for a, b in zip(lhs, self.state_equations())]
+        return "\\begin{aligned}\n" + " \\\\\n".join(rows) + "\n\\end{aligned}"
+
     def _states(self):
         return self._inductors + self._capacitors
 
@@ -337,6 +361,14 @@ class MixedPotential:
         The state variables as pairs ``(symbol, element name)``: inductor
         currents first, then capacitor voltages (naming rule in the module
         documentation).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.state_variables()
+            [(i1, 'L1'), (u2, 'C1')]
         """
         br = self._branches
         return [(self._symbol[p], br[p].name) for p in self._states()]
@@ -349,6 +381,14 @@ class MixedPotential:
         r"""
         The branches of `\Omega_i` (current fixed by the inductor and
         current-source currents) as triples ``(from, to, name)``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.omega_i()
+            [(1, 2, 'R1'), (2, 3, 'L1')]
         """
         return self._triples(self._omega_i)
 
@@ -356,6 +396,14 @@ class MixedPotential:
         r"""
         The branches of `\Omega_u` (voltage fixed by the capacitor voltages
         and voltage sources) as triples ``(from, to, name)``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.omega_u()
+            [(0, 1, 'E1'), (3, 0, 'C1'), (3, 0, 'f1'), (0, 3, 'I1')]
         """
         return self._triples(self._omega_u)
 
@@ -363,6 +411,14 @@ class MixedPotential:
         r"""
         The spanning tree `K` (capacitors, voltage sources and the resistors
         of `\Omega_i`) as triples ``(from, to, name)``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.tree()
+            [(0, 1, 'E1'), (1, 2, 'R1'), (3, 0, 'C1')]
         """
         return self._triples(sorted(self._tree.positions))
 
@@ -372,26 +428,69 @@ class MixedPotential:
         variables), each a list of triples ``(node, next node, name)`` in the
         order they are walked, starting with the inductor along its
         orientation.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.loops()
+            [[(2, 3, 'L1'), (3, 0, 'C1'), (0, 1, 'E1'), (1, 2, 'R1')]]
         """
         return [[(b.tail, b.head, b.name) if sign > 0 else (b.head, b.tail, b.name)
                  for b, sign in self._loops[p]] for p in self._inductors]
 
     def current_potential(self):
-        r"""The current potential `F(i)`."""
+        r"""The current potential `F(i)`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.current_potential()
+            -1/2*R1*i1^2
+        """
         return self._F
 
     def voltage_potential(self):
-        r"""The voltage potential `G(u)`."""
+        r"""The voltage potential `G(u)`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.voltage_potential()
+            -I1*u2 + integrate(f1(s), s, 0, u2)
+        """
         return self._G
 
     def coupling_term(self):
-        r"""The bilinear term `(i, \gamma u)`, voltage sources included."""
+        r"""The bilinear term `(i, \gamma u)`, voltage sources included.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.coupling_term()
+            (E1 + u2)*i1
+        """
         return self._J
 
     def gamma_matrix(self):
         r"""
         The matrix `\gamma` (rows: inductor currents, columns: capacitor
         voltages, in the order of :meth:`state_variables`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.gamma_matrix()
+            [1]
         """
         rows = []
         for p in self._inductors:
@@ -403,13 +502,30 @@ class MixedPotential:
         return matrix(SR, len(self._inductors), len(self._capacitors), rows)
 
     def mixed_potential(self):
-        r"""The mixed potential `P(i, u) = F(i) - G(u) + (i, \gamma u)`."""
+        r"""The mixed potential `P(i, u) = F(i) - G(u) + (i, \gamma u)`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.mixed_potential()
+            -1/2*R1*i1^2 + (E1 + u2)*i1 + I1*u2 - integrate(f1(s), s, 0, u2)
+        """
         return self._P
 
     def inductance_matrix(self):
         r"""
         The inductance matrix `\mathbf{L}(i)` of the inductors (mutual
         inductances off the diagonal), in the order of the state variables.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.inductance_matrix()
+            [L1]
         """
         br, ind = self._branches, self._inductors
         n = len(ind)
@@ -424,7 +540,16 @@ class MixedPotential:
         return M
 
     def capacitances(self):
-        r"""The capacitances `C_l(u_l)`, in the order of the state variables."""
+        r"""The capacitances `C_l(u_l)`, in the order of the state variables.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.capacitances()
+            [C1]
+        """
         br = self._branches
         return [br[p].value.subs({own_variable('capacitor'): self._symbol[p]})
                 for p in self._capacitors]
@@ -434,6 +559,14 @@ class MixedPotential:
         The right-hand sides of (8): `\partial P/\partial i_k` for the
         inductors, then `-\partial P/\partial u_l` for the capacitors, in
         the order of :meth:`state_variables`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.state_equations()
+            [-R1*i1 + E1 + u2, -I1 - i1 + f1(u2)]
         """
         P = self._P
         return ([P.diff(self._symbol[p]) for p in self._inductors]
@@ -443,6 +576,14 @@ class MixedPotential:
         r"""
         The total time derivative of `P` along the state equations,
         `dP/dt = P_i^T \mathbf{L}^{-1} P_i - \sum_l (\partial P/\partial u_l)^2 / C_l`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.time_derivative()
+            -(I1 + i1 - f1(u2))^2/C1 + (R1*i1 - E1 - u2)^2/L1
         """
         eqs = self.state_equations()
         r = len(self._inductors)
