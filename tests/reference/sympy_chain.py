@@ -101,6 +101,12 @@ class SympyChain:
                 Ck.set_vel(N, Ck.pos_from(O).dt(N))
             else:
                 Ck.v2pt_theory(Ok, N, frame)
+            # Velocities expressed in the body's own axes: SymPy then dots
+            # single-frame vectors (a dot product of vectors spread over many
+            # frames grows quadratically and makes LagrangesMethod very slow).
+            frame.set_ang_vel(N, frame.ang_vel_in(N).express(frame))
+            Ok.set_vel(N, Ok.vel(N).express(frame))
+            Ck.set_vel(N, Ck.vel(N).express(frame))
             m = parse(body['mass'])
             I_O = sympy.Matrix(3, 3, [parse(x) for row in body['inertia'] for x in row])
             if I_O != I_O.T:
