@@ -295,6 +295,33 @@ class FrameVector:
         return FrameVector(self._tree, {f: tuple(scalar * c for c in v)
                                         for f, v in self._parts.items()})
 
+    def map_components(self, function):
+        r"""
+        The vector whose every component is ``function`` of this one's (e.g.
+        a partial derivative: all parts are linear in the components).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: x = var('x')
+            sage: FrameVector(FrameTree(), {0: (x^2, x, 1)}).map_components(lambda c: c.diff(x)).parts()
+            {0: (2*x, 1, 0)}
+        """
+        return FrameVector(self._tree, {f: tuple(function(c) for c in v)
+                                        for f, v in self._parts.items()})
+
+    def is_zero(self):
+        r"""
+        Whether no part is left.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: FrameVector(FrameTree(), {0: (0, 0, 0)}).is_zero()
+            True
+        """
+        return not self._parts
+
     def components(self, frame):
         r"""
         All parts summed, in the axes of ``frame``.

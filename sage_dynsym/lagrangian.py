@@ -78,6 +78,18 @@ def _is_at_most_quadratic(expr, velocities):
     return bool(scaled.is_polynomial(s)) and bool(scaled.degree(s) <= 2)
 
 
+def _natural_form(A, A1, A0, velocities):
+    r"""
+    `\tfrac12 \dot q^T A \dot q + A_1\cdot\dot q + A_0`, each
+    off-diagonal pair written once.
+    """
+    n = len(velocities)
+    v = velocities
+    quadratic = sum((A[i, i] * v[i] ** 2 / 2 for i in range(n)), SR(0)) + sum(
+        (A[i, j] * v[i] * v[j] for i in range(n) for j in range(i + 1, n)), SR(0))
+    return quadratic + sum((A1[i] * v[i] for i in range(n)), SR(0)) + SR(A0)
+
+
 class Lagrangian(SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
@@ -93,6 +105,10 @@ class Lagrangian(SageObject):
     - ``dissipation`` -- (default: 0) Rayleigh function `R(q, \dot q)`
     - ``forces`` -- (default: zeros) list of generalized forces `Q_i`
     - ``name`` -- (optional) a name used in the representation
+    - ``decomposition`` -- (optional) a triple ``(A, A1, A0)`` for a
+      Lagrangian of the form (4) already known in that form (as computed
+      by a mechanical system); then ``expr`` may be ``None``, and the
+      structure is kept instead of being recovered by differentiation
 
     EXAMPLES::
 
@@ -123,7 +139,7 @@ class Lagrangian(SageObject):
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
-                 forces=None, name=None):
+                 forces=None, name=None, decomposition=None):
         self._coordinates = _symbol_list(coordinates, "coordinates")
         if velocities is None:
             velocities = [velocity(q) for q in self._coordinates]
@@ -131,6 +147,12 @@ class Lagrangian(SageObject):
         if len(self._velocities) != len(self._coordinates):
             raise ModelError("expected one velocity per coordinate")
         self._accelerations = [acceleration(q) for q in self._coordinates]
+        self._structure = None
+        if decomposition is not None:
+            A, A1, A0 = decomposition
+            self._structure = (A, A1, SR(A0))
+            if expr is None:
+                expr = _natural_form(A, A1, A0, self._velocities)
         self._expr = SR(expr)
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
@@ -298,6 +320,8 @@ class Lagrangian(SageObject):
             sage: Lagrangian(-sqrt(1 - dx^2), [x]).is_natural()
             False
         """
+        if self._structure is not None:
+            return True
         return _is_at_most_quadratic(self._expr, self._velocities)
 
     @cached_method
@@ -328,6 +352,8 @@ class Lagrangian(SageObject):
             ...
             ModelError: the Lagrangian is not quadratic in the velocities (dx)
         """
+        if self._structure is not None:
+            return self._structure
         if not self.is_natural():
             names = ", ".join(map(str, self._velocities))
             raise ModelError(f"the Lagrangian is not quadratic in the velocities ({names})")

@@ -35,7 +35,9 @@ Example 1 of the specification, the spherical pendulum::
 """
 import numbers
 
+from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
+from sage.modules.free_module_element import vector
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
@@ -523,6 +525,107 @@ class MechanicalSystem(SageObject):
     # ------------------------------------------------------------------
     # energies and the Lagrangian
 
+    def _velocity_split(self, vector):
+        r"""
+        ``vector`` (linear in the velocities) as its Jacobian columns
+        `\partial/\partial \dot q_i` and the part at `\dot q = 0`.
+        """
+        zero = {v: 0 for v in self._velocities}
+        columns = [vector.map_components(lambda c, v=v: c.diff(v)) for v in self._velocities]
+        return columns, vector.map_components(lambda c: c.subs(zero))
+
+    @cached_method
+    def body_decomposition(self, k):
+        r"""
+        The decomposition (4) of the kinetic energy of body ``k``:
+        `T_k = \tfrac12 \sum A_{ij}\dot q_i\dot q_j + \sum A_i \dot q_i + A_0`.
+
+        Built from the velocity Jacobians: every column of `W_k` is a rotation
+        axis in its own frame, every column of `V_{0k}` a sum of
+        `e \times r` terms, so each `A_{ij}` involves only the rotations
+        between the frames concerned and needs no simplification.
+
+        OUTPUT: a triple ``(A, A1, A0)`` (matrix, vector, expression)
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, b, m, l = var('a b m l')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a), (1, b)], mass=m,
+            ....:                                 mass_center=[0, 0, l],
+            ....:                                 inertia=diagonal_matrix([m*l^2, m*l^2, 0]))],
+            ....:                      [a, b])
+            sage: A, A1, A0 = S.body_decomposition(1); A
+            [l^2*m*sin(b)^2              0]
+            [             0          l^2*m]
+        """
+        from sage.matrix.constructor import matrix
+        from sage.modules.free_module_element import vector as free_vector
+        n = len(self._coordinates)
+        body = self._bodies[k - 1]
+        if body.is_massless():
+            return matrix(SR, n, n), free_vector(SR, n), SR(0)
+        frame = self._frames[k]
+        m, Theta, c = body.mass(), body.inertia(), body.mass_center()
+        JV, V0 = self._velocity_split(self.joint_velocity_vector(k))
+        JW, W0 = self._velocity_split(self.angular_velocity_vector(k))
+        JW = [w.components(frame) for w in JW]
+        W0 = W0.components(frame)
+
+        def inertia_product(u, w):
+            return sum(u[i] * Theta[i, j] * w[j] for i in range(3) for j in range(3)
+                       if not Theta[i, j].is_zero())
+
+        def cross_c(w):
+            # w x c, in the body's axes
+            return FrameVector(self._tree, {frame: (w[1] * c[2] - w[2] * c[1],
+                                                    w[2] * c[0] - w[0] * c[2],
+                                                    w[0] * c[1] - w[1] * c[0])})
+
+        def bilinear(V1, W1, V2, W2):
+            # the symmetric bilinear form whose quadratic form is 2 T_k, (1)
+            return (m * V1.dot(V2) + inertia_product(W1, W2)
+                    + m * (V1.dot(cross_c(W2)) + V2.dot(cross_c(W1))))
+
+        A = matrix(SR, n, n)
+        for i in range(n):
+            for j in range(i, n):
+                A[i, j] = A[j, i] = bilinear(JV[i], JW[i], JV[j], JW[j])
+        A1 = free_vector(SR, [bilinear(JV[i], JW[i], V0, W0) for i in range(n)])
+        A0 = bilinear(V0, W0, V0, W0) / 2
+        A.set_immutable()
+        return A, A1, A0
+
+    @cached_method
+    def decomposition(self):
+        r"""
+        The decomposition (4) of the kinetic energy of the whole system,
+        with the force function added to `A_0` (see :meth:`body_decomposition`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: A, A1, A0 = load(example_path('spherical_pendulum.yaml')).decomposition()
+            sage: A, A0
+            (
+            [l^2*m*sin(theta)^2                  0]
+            [                 0              l^2*m], -g*l*m*cos(theta)
+            )
+        """
+        from .trig import trig_normal_form
+        parts = [self.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
+        n = len(self._coordinates)
+        A = sum((p[0] for p in parts), matrix(SR, n, n))
+        A1 = sum((p[1] for p in parts), vector(SR, n))
+        A0 = sum((p[2] for p in parts), SR(0)) + self.force_function()
+        # entries summed over bodies: a canonical trigonometric form lets
+        # the contributions of different bodies combine
+        A = A.apply_map(lambda e: trig_normal_form(e, self._coordinates))
+        A1 = A1.apply_map(lambda e: trig_normal_form(e, self._coordinates))
+        A.set_immutable()
+        return A, A1, trig_normal_form(A0, self._coordinates)
+
     @cached_method
     def kinetic_energy(self, k=None):
         r"""
@@ -539,22 +642,13 @@ class MechanicalSystem(SageObject):
             1/2*dx^2*m
         """
         if k is None:
-            return sum((self.kinetic_energy(i) for i in range(1, len(self._bodies) + 1)), SR(0))
-        self._check_index(k)
-        body = self._bodies[k - 1]
-        if body.is_massless():
-            return SR(0)
-        frame = self._frames[k]
-        V = self.joint_velocity_vector(k)
-        W = self.angular_velocity_vector(k).components(frame)
-        Theta, m, c = body.inertia(), body.mass(), body.mass_center()
-        rotational = sum(W[i] * Theta[i, j] * W[j] for i in range(3) for j in range(3)
-                         if not Theta[i, j].is_zero())
-        W_cross_c = (W[1] * c[2] - W[2] * c[1], W[2] * c[0] - W[0] * c[2],
-                     W[0] * c[1] - W[1] * c[0])
-        # (V x W).c = V.(W x c)
-        coupling = V.dot(FrameVector(self._tree, {frame: W_cross_c}))
-        return m * V.dot(V) / 2 + rotational / 2 + m * coupling
+            A, A1, A0 = self.decomposition()
+            A0 -= self.force_function()
+        else:
+            self._check_index(k)
+            A, A1, A0 = self.body_decomposition(k)
+        dq = vector(SR, self._velocities)
+        return _quadratic_form(A, dq) / 2 + A1 * dq + A0
 
     @cached_method
     def force_function(self):
@@ -590,6 +684,15 @@ class MechanicalSystem(SageObject):
             sage: S.lagrangian().lagrange_equations()
             [c*dx + ddx*m + k*x]
         """
-        return Lagrangian(self.kinetic_energy() + self.force_function(), self._coordinates,
-                          self._velocities, dissipation=self._dissipation,
+        return Lagrangian(None, self._coordinates, self._velocities,
+                          decomposition=self.decomposition(), dissipation=self._dissipation,
                           forces=self._forces, name=self._name)
+
+
+def _quadratic_form(A, x):
+    r"""
+    `x^T A x` for a symmetric matrix, each off-diagonal pair once.
+    """
+    n = A.nrows()
+    return sum((A[i, i] * x[i] ** 2 for i in range(n)), SR(0)) + sum(
+        (2 * A[i, j] * x[i] * x[j] for i in range(n) for j in range(i + 1, n)), SR(0))
