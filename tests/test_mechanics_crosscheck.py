@@ -80,15 +80,22 @@ def sympy_chain(desc):
 # ---------------------------------------------------------------------------
 
 def _random_cases():
+    # 5 cases each of 1, 2, 3 and 4 bodies; the massless carriers carry
+    # another body.
     cases, seed = {}, 0
     special = {2: dict(symbolic=True), 7: dict(symbolic=True),
-               11: dict(massless_carrier=True), 16: dict(massless_carrier=True)}
+               9: dict(massless_carrier=True), 14: dict(massless_carrier=True)}
     while len(cases) < N_RANDOM:
-        opts = special.get(len(cases), {})
-        desc = random_chain(1000 + seed, **opts)
+        index = len(cases)
+        opts = special.get(index, {})
+        n_bodies = 1 + index % 4
+        if opts.get('massless_carrier'):
+            n_bodies = max(n_bodies, 2)
+        desc = random_chain(1000 + seed, n_bodies=n_bodies, **opts)
         seed += 1
         if 1 <= len(desc['coordinates']) <= MAX_COORDINATES:
-            cases[f"random{len(cases):02d}-seed{999 + seed}" + "".join(f"-{o}" for o in opts)] = desc
+            tag = "".join(f"-{o}" for o in opts)
+            cases[f"random{index:02d}-seed{999 + seed}-{n_bodies}bodies{tag}"] = desc
     return cases
 
 
