@@ -145,10 +145,10 @@ def _short(entry_data, index, entry):
                   _check_node(head, entry), value)
 
 
-def _value(raw, kind, parser, entry):
+def _value(raw, parser, entry):
     if raw is None:
         return None
-    if isinstance(raw, str) or isinstance(raw, (int, float)):
+    if isinstance(raw, (str, int, float)):
         try:
             return parser.parse(raw, entry=f"{entry}.value")
         except ExpressionError as err:
@@ -189,7 +189,7 @@ def _long(data, index, entry, parser):
     if raw is None and kind != 'nonlinear_resistor':
         value = SR.var(name)
     else:
-        value = _value(raw, kind, parser, entry)
+        value = _value(raw, parser, entry)
     own = OWN_VARIABLE.get(kind)
     allowed = {own} if own else set()
     extra = {str(v) for v in (value.variables() if value is not None else ())}
@@ -215,7 +215,7 @@ def _mutual(data, entry, parser):
     if 'value' not in data and 'name' not in data:
         raise CircuitError("a mutual inductance needs a 'value'", entry=entry)
     raw = data.get('value', data.get('name'))
-    value = _value(raw, 'mutual', parser, entry)
+    value = _value(raw, parser, entry)
     return Coupling(between[0], between[1], value)
 
 

@@ -42,6 +42,7 @@ class UnionFind:
         self._parent = {v: v for v in nodes}
 
     def find(self, v):
+        r"""The representative of the set of ``v``."""
         root = v
         while self._parent[root] != root:
             root = self._parent[root]
@@ -150,6 +151,17 @@ class CircuitGraph:
         r"""
         The spanning tree ``tree`` (set of branch positions) as a
         :class:`RootedTree`, rooted at the last node.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: br, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1']])
+            sage: T = CircuitGraph(br).rooted({0, 1})
+            sage: [(b.name, s) for b, s in T.path(1, 3)]
+            [('R1', 1), ('C1', 1)]
+            sage: [(b.name, s) for b, s in T.loop(br[2])]
+            [('L1', 1), ('R1', 1), ('C1', 1)]
         """
         return RootedTree(self, tree)
 
@@ -182,6 +194,14 @@ class CircuitGraph:
         r"""
         A cycle made of the branch ``pos`` and branches of ``positions``
         (which must join its ends), as a list of branch names.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: CG = CircuitGraph(parse_entries([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1']])[0])
+            sage: CG.cycle_through([0, 1], 2)
+            ['E1', 'C1', 'C2']
         """
         sub = [(self.branches[p].tail, self.branches[p].head, p) for p in positions]
         forest = Graph(sub, multiedges=True, loops=False, format='list_of_edges')
@@ -231,6 +251,7 @@ class RootedTree:
         return parent, (b, 1 if b.tail == v else -1)
 
     def path(self, a, b):
+        r"""The tree path from node ``a`` to node ``b``: a list of ``(branch, sign)``."""
         up, down = [], []
         while self.depth[a] > self.depth[b]:
             a, step = self._step(a)
@@ -246,4 +267,5 @@ class RootedTree:
         return up + down[::-1]
 
     def loop(self, chord):
+        r"""The fundamental loop of ``chord``, oriented along it, starting with it."""
         return [(chord, 1)] + self.path(chord.head, chord.tail)

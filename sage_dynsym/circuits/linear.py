@@ -83,13 +83,12 @@ def _check_linear(circuit, method):
                                entry=f"branches[{b.index}]")
 
 
-def _quadratic(rows, values, coefficient):
-    # sum over branches b of coefficient(value_b) * (row_b)(row_b)^T, rows as
-    # sparse {coordinate index: sign}
-    n = coefficient[0]
+def _quadratic(rows, values, n, weight):
+    # n x n matrix sum_b weight(value_b) * row_b row_b^T, each row a sparse
+    # {coordinate index: sign}
     M = matrix(SR, n, n, sparse=True)
     for row, val in zip(rows, values):
-        w = coefficient[1](val)
+        w = weight(val)
         for k, sk in row.items():
             for l, sl in row.items():
                 M[k, l] += sk * sl * w
@@ -188,7 +187,7 @@ class LoopAnalysis:
     def _matrix(self, kind, weight):
         sel = [p for p, k in enumerate(self._kinds) if k == kind]
         return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
-                          (len(self._coordinates), weight))
+                          len(self._coordinates), weight)
 
     def inductance_matrix(self):
         r"""The loop inductance matrix `L_{ij}` (mutual inductances included).
@@ -439,7 +438,7 @@ class NodeAnalysis:
     def _matrix(self, kind, weight):
         sel = [p for p, k in enumerate(self._kinds) if k == kind]
         return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
-                          (len(self._coordinates), weight))
+                          len(self._coordinates), weight)
 
     def capacitance_matrix(self):
         r"""The node capacitance matrix `C_{ij}`.
