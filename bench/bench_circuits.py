@@ -62,6 +62,8 @@ def run_lcapy(n, timeout):
                               timeout=timeout)
     except subprocess.TimeoutExpired:
         return None
+    if proc.returncode != 0 and "No module named 'lcapy'" in proc.stderr:
+        return "missing"
     if proc.returncode != 0:
         raise RuntimeError(f"Lcapy failed at n={n}:\n{proc.stderr[-2000:]}")
     return json.loads(proc.stdout.strip().splitlines()[-1])
@@ -115,6 +117,9 @@ def main():
         ours, C, states, eqs = run_ours(n)
         size = sum(len(str(e)) for e in eqs)
         lc = run_lcapy(n, args.timeout)
+        if lc == "missing":
+            print(f"{n:>4} {len(states):>6} {ours:>16.3f}  (Lcapy not installed: pip install lcapy)")
+            continue
         if lc is None:
             lc_time, ratio, lc_size = f"> {args.timeout:.0f}", f"> {args.timeout / ours:.0f}", "-"
         else:
