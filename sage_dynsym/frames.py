@@ -33,7 +33,6 @@ EXAMPLES::
     (sin(psi)*sin(theta), -cos(psi)*sin(theta), cos(theta))
 """
 from sage.matrix.constructor import matrix
-from sage.modules.free_module_element import vector
 from sage.symbolic.ring import SR
 
 
@@ -61,12 +60,26 @@ def rotation_matrix(axis, angle):
     return matrix(SR, rows)
 
 
-def _rotate(components, axis, angle, inverse=False):
+def symbolic_trig(angle):
+    r"""
+    The pair `(\cos, \sin)` of ``angle`` in the symbolic ring.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.frames import symbolic_trig
+        sage: symbolic_trig(var('a'))
+        (cos(a), sin(a))
+    """
+    return SR(angle).cos(), SR(angle).sin()
+
+
+def _rotate(components, axis, trig, inverse=False):
     r"""
     Apply the elementary rotation (or its inverse) to a 3-tuple: only the two
-    components orthogonal to the axis change.
+    components orthogonal to the axis change. ``trig`` is the pair
+    `(\cos, \sin)` of the angle.
     """
-    c, s = SR(angle).cos(), SR(angle).sin()
+    c, s = trig
     if inverse:
         s = -s
     i, j = {1: (1, 2), 2: (2, 0), 3: (0, 1)}[axis]
@@ -81,6 +94,13 @@ class FrameTree:
     A tree of frames, each obtained from its parent by one elementary
     rotation. Frame ``0`` is the inertial frame.
 
+    INPUT:
+
+    - ``trig`` -- (default: :func:`symbolic_trig`) a function giving the
+      pair `(\cos\theta, \sin\theta)` of an angle, as elements of the
+      ring the components live in
+    - ``zero`` -- (default: ``SR(0)``) the zero of that ring
+
     EXAMPLES::
 
         sage: from sage_dynsym.frames import FrameTree
@@ -91,11 +111,14 @@ class FrameTree:
         ([2, 1, 0], v, 1)
     """
 
-    def __init__(self):
+    def __init__(self, trig=symbolic_trig, zero=None):
         self._parent = [None]
         self._axis = [None]
         self._angle = [None]
+        self._trig = [None]
         self._depth = [0]
+        self._trig_function = trig
+        self.zero = SR(0) if zero is None else zero
 
     def add_rotations(self, frame, rotations):
         r"""
@@ -113,6 +136,7 @@ class FrameTree:
             self._parent.append(frame)
             self._axis.append(axis)
             self._angle.append(SR(angle))
+            self._trig.append(self._trig_function(angle))
             self._depth.append(self._depth[frame] + 1)
             frame = len(self._parent) - 1
         return frame
@@ -203,16 +227,16 @@ class FrameTree:
             (cos(a), -sin(a), 0)
         """
         top = self.common_ancestor(source, target)
-        v = tuple(SR(c) for c in components)
+        v = tuple(components)
         while source != top:
-            v = _rotate(v, self._axis[source], self._angle[source])
+            v = _rotate(v, self._axis[source], self._trig[source])
             source = self._parent[source]
         down = []
         while target != top:
             down.append(target)
             target = self._parent[target]
         for frame in reversed(down):
-            v = _rotate(v, self._axis[frame], self._angle[frame], inverse=True)
+            v = _rotate(v, self._axis[frame], self._trig[frame], inverse=True)
         return v
 
     def direction_cosines(self, frame, reference=0):
@@ -231,7 +255,7 @@ class FrameTree:
         """
         columns = [self.express(e, frame, reference)
                    for e in ((1, 0, 0), (0, 1, 0), (0, 0, 1))]
-        return matrix(SR, columns).transpose()
+        return matrix(columns).transpose()
 
 
 class FrameVector:
@@ -262,7 +286,8 @@ class FrameVector:
             self._add_part(frame, components)
 
     def _add_part(self, frame, components):
-        components = tuple(SR(c) for c in components)
+        zero = self._tree.zero
+        components = tuple(zero + c for c in components)
         if frame in self._parts:
             components = tuple(a + b for a, b in zip(self._parts[frame], components))
         if any(not c.is_zero() for c in components):
@@ -332,7 +357,7 @@ class FrameVector:
             sage: FrameVector(FrameTree(), {}).components(0)
             (0, 0, 0)
         """
-        total = [SR(0)] * 3
+        total = [self._tree.zero] * 3
         for f, v in self._parts.items():
             total = [a + b for a, b in zip(total, self._tree.express(v, f, frame))]
         return tuple(total)
@@ -349,7 +374,7 @@ class FrameVector:
             sage: FrameVector(T, {f: (0, 0, 1)}).dot(FrameVector(T, {0: (0, 0, 1)}))
             cos(a)
         """
-        total = SR(0)
+        total = self._tree.zero
         for f, u in self._parts.items():
             for g, w in other._parts.items():
                 top = self._tree.common_ancestor(f, g)
@@ -368,5 +393,5 @@ class FrameVector:
             sage: FrameVector(T, {0: (1, 0, 0)}).cross(FrameVector(T, {0: (0, 1, 0)}), 0)
             (0, 0, 1)
         """
-        return tuple(vector(SR, self.components(frame)).cross_product(
-            vector(SR, other.components(frame))))
+        u, w = self.components(frame), other.components(frame)
+        return (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])

@@ -43,7 +43,9 @@ from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import velocity, time_derivative, t
-from .frames import FrameTree, FrameVector
+from .frames import FrameVector
+from .kinematics import Kinematics
+from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial
 from .lagrangian import Lagrangian
 from .rigid_body import RigidBody
 
@@ -128,11 +130,8 @@ class MechanicalSystem(SageObject):
         self._name = name
         if self._parameters is not None:
             self._check_symbols()
-        self._tree = FrameTree()
-        self._frames = [0]
-        for k, body in enumerate(self._bodies, 1):
-            self._frames.append(self._tree.add_rotations(self.body_frame(self._parents[k]),
-                                                         body.rotations()))
+        self._symbolic = Kinematics(self, SymbolicBackend())
+        self._tree = self._symbolic.tree
 
     # ------------------------------------------------------------------
     # construction helpers
@@ -348,7 +347,19 @@ class MechanicalSystem(SageObject):
             sage: S.body_frame(0), S.body_frame(1)
             (0, 2)
         """
-        return self._frames[k]
+        return self._symbolic.body_frame(k)
+
+    def velocities(self):
+        r"""
+        The velocity symbols ``d<q>`` of the coordinates.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: MechanicalSystem([], [var('x')]).velocities()
+            [dx]
+        """
+        return list(self._velocities)
 
     def _check_index(self, k):
         if not 1 <= k <= len(self._bodies):
@@ -370,12 +381,8 @@ class MechanicalSystem(SageObject):
             [      0       0       1]
         """
         self._check_index(k)
-        return self._tree.direction_cosines(self._frames[k], self._frames[j])
+        return self._tree.direction_cosines(self.body_frame(k), self.body_frame(j))
 
-    def _rate(self, angle):
-        return time_derivative(angle, self._coordinates, self._velocities)
-
-    @cached_method
     def angular_velocity_vector(self, k):
         r"""
         The absolute angular velocity `W_k` as a
@@ -390,16 +397,7 @@ class MechanicalSystem(SageObject):
             sage: S.angular_velocity_vector(1).parts()
             {1: (0, 0, da)}
         """
-        if k == 0:
-            return FrameVector(self._tree)
-        parts = {}
-        frame, stop = self._frames[k], self._frames[self._parents[k]]
-        while frame != stop:
-            axis_vector = [0, 0, 0]
-            axis_vector[self._tree.axis(frame) - 1] = self._rate(self._tree.angle(frame))
-            parts[frame] = tuple(axis_vector)
-            frame = self._tree.parent(frame)
-        return self.angular_velocity_vector(self._parents[k]) + FrameVector(self._tree, parts)
+        return self._symbolic.angular_velocity(k)
 
     def angular_velocity(self, k):
         r"""
@@ -414,7 +412,7 @@ class MechanicalSystem(SageObject):
             (db, da*sin(b), da*cos(b))
         """
         self._check_index(k)
-        return self.angular_velocity_vector(k).components(self._frames[k])
+        return self.angular_velocity_vector(k).components(self.body_frame(k))
 
     def relative_angular_velocity(self, k):
         r"""
@@ -432,15 +430,8 @@ class MechanicalSystem(SageObject):
         """
         self._check_index(k)
         own = self.angular_velocity_vector(k) - self.angular_velocity_vector(self._parents[k])
-        return own.components(self._frames[k])
+        return own.components(self.body_frame(k))
 
-    def _relative_velocity(self, k):
-        body = self._bodies[k - 1]
-        if body.velocity() is not None:
-            return body.velocity()
-        return tuple(self._rate(c) for c in body.joint())
-
-    @cached_method
     def joint_velocity_vector(self, k):
         r"""
         The absolute velocity `V_{0k} = V_{0j} + W_j \times r^j_{0k} +
@@ -456,19 +447,7 @@ class MechanicalSystem(SageObject):
             sage: S.joint_velocity_vector(2).parts()
             {1: (0, da*l, 0)}
         """
-        if k == 0:
-            return FrameVector(self._tree)
-        j = self._parents[k]
-        parent_frame = self._frames[j]
-        joint = self._bodies[k - 1].joint()
-        V = self.joint_velocity_vector(j) + FrameVector(self._tree,
-                                                        {parent_frame: self._relative_velocity(k)})
-        for frame, w in self.angular_velocity_vector(j).parts().items():
-            r = self._tree.express(joint, parent_frame, frame)
-            V = V + FrameVector(self._tree, {frame: (w[1] * r[2] - w[2] * r[1],
-                                                     w[2] * r[0] - w[0] * r[2],
-                                                     w[0] * r[1] - w[1] * r[0])})
-        return V
+        return self._symbolic.joint_velocity(k)
 
     def joint_velocity(self, k):
         r"""
@@ -482,9 +461,8 @@ class MechanicalSystem(SageObject):
             (0, 0, dz)
         """
         self._check_index(k)
-        return self.joint_velocity_vector(k).components(self._frames[k])
+        return self.joint_velocity_vector(k).components(self.body_frame(k))
 
-    @cached_method
     def joint_position(self, k):
         r"""
         The position of the joint point `O_k` relative to the inertial origin,
@@ -499,11 +477,7 @@ class MechanicalSystem(SageObject):
             sage: S.joint_position(2).components(0)
             (l*cos(a), l*sin(a), 0)
         """
-        if k == 0:
-            return FrameVector(self._tree)
-        j = self._parents[k]
-        return self.joint_position(j) + FrameVector(self._tree, {self._frames[j]:
-                                                                 self._bodies[k - 1].joint()})
+        return self._symbolic.joint_position(k)
 
     def mass_center_position(self, k):
         r"""
@@ -519,20 +493,10 @@ class MechanicalSystem(SageObject):
             (l*cos(a), l*sin(a), 0)
         """
         self._check_index(k)
-        return self.joint_position(k) + FrameVector(self._tree, {self._frames[k]:
-                                                                 self._bodies[k - 1].mass_center()})
+        return self._symbolic.mass_center_position(k)
 
     # ------------------------------------------------------------------
     # energies and the Lagrangian
-
-    def _velocity_split(self, vector):
-        r"""
-        ``vector`` (linear in the velocities) as its Jacobian columns
-        `\partial/\partial \dot q_i` and the part at `\dot q = 0`.
-        """
-        zero = {v: 0 for v in self._velocities}
-        columns = [vector.map_components(lambda c, v=v: c.diff(v)) for v in self._velocities]
-        return columns, vector.map_components(lambda c: c.subs(zero))
 
     @cached_method
     def body_decomposition(self, k):
@@ -559,42 +523,38 @@ class MechanicalSystem(SageObject):
             [l^2*m*sin(b)^2              0]
             [             0          l^2*m]
         """
-        from sage.matrix.constructor import matrix
-        from sage.modules.free_module_element import vector as free_vector
-        n = len(self._coordinates)
-        body = self._bodies[k - 1]
-        if body.is_massless():
-            return matrix(SR, n, n), free_vector(SR, n), SR(0)
-        frame = self._frames[k]
-        m, Theta, c = body.mass(), body.inertia(), body.mass_center()
-        JV, V0 = self._velocity_split(self.joint_velocity_vector(k))
-        JW, W0 = self._velocity_split(self.angular_velocity_vector(k))
-        JW = [w.components(frame) for w in JW]
-        W0 = W0.components(frame)
-
-        def inertia_product(u, w):
-            return sum(u[i] * Theta[i, j] * w[j] for i in range(3) for j in range(3)
-                       if not Theta[i, j].is_zero())
-
-        def cross_c(w):
-            # w x c, in the body's axes
-            return FrameVector(self._tree, {frame: (w[1] * c[2] - w[2] * c[1],
-                                                    w[2] * c[0] - w[0] * c[2],
-                                                    w[0] * c[1] - w[1] * c[0])})
-
-        def bilinear(V1, W1, V2, W2):
-            # the symmetric bilinear form whose quadratic form is 2 T_k, (1)
-            return (m * V1.dot(V2) + inertia_product(W1, W2)
-                    + m * (V1.dot(cross_c(W2)) + V2.dot(cross_c(W1))))
-
-        A = matrix(SR, n, n)
-        for i in range(n):
-            for j in range(i, n):
-                A[i, j] = A[j, i] = bilinear(JV[i], JW[i], JV[j], JW[j])
-        A1 = free_vector(SR, [bilinear(JV[i], JW[i], V0, W0) for i in range(n)])
-        A0 = bilinear(V0, W0, V0, W0) / 2
+        self._check_index(k)
+        kinematics = self._polynomial_kinematics() or self._symbolic
+        to_symbolic = kinematics._backend.to_symbolic
+        A, A1, A0 = kinematics.body_decomposition(k)
+        A = matrix(SR, [[to_symbolic(e) for e in row] for row in A])
         A.set_immutable()
-        return A, A1, A0
+        return A, vector(SR, [to_symbolic(e) for e in A1]), to_symbolic(A0)
+
+    @cached_method
+    def _polynomial_kinematics(self):
+        r"""
+        The kinematics over a :class:`~sage_dynsym.trig.TrigPolynomialRing`
+        when the model is polynomial in the sines and cosines of its angles
+        and in its parameters (the usual case), else ``None``.
+        """
+        symbols = set(self._coordinates) | set(self._velocities) | {t}
+        angles = []
+        for body in self._bodies:
+            data = [angle for _, angle in body.rotations()] + list(body.joint())
+            data += list(body.velocity() or ()) + list(body.mass_center())
+            data += [body.mass()] + body.inertia().list()
+            for expr in data:
+                symbols.update(SR(expr).variables())
+            angles += [angle for _, angle in body.rotations()]
+        try:
+            ring = TrigPolynomialRing(angles, symbols)
+            kinematics = Kinematics(self, ring)
+            for k in range(1, len(self._bodies) + 1):
+                kinematics.body_decomposition(k)
+        except NotPolynomial:
+            return None
+        return kinematics
 
     @cached_method
     def decomposition(self):
@@ -613,18 +573,22 @@ class MechanicalSystem(SageObject):
             [                 0              l^2*m], -g*l*m*cos(theta)
             )
         """
-        from .trig import trig_normal_form
-        parts = [self.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
         n = len(self._coordinates)
-        A = sum((p[0] for p in parts), matrix(SR, n, n))
-        A1 = sum((p[1] for p in parts), vector(SR, n))
-        A0 = sum((p[2] for p in parts), SR(0)) + self.force_function()
-        # entries summed over bodies: a canonical trigonometric form lets
-        # the contributions of different bodies combine
-        A = A.apply_map(lambda e: trig_normal_form(e, self._coordinates))
-        A1 = A1.apply_map(lambda e: trig_normal_form(e, self._coordinates))
+        kinematics = self._polynomial_kinematics()
+        if kinematics is None:
+            parts = [self.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
+            A = sum((p[0] for p in parts), matrix(SR, n, n))
+            A1 = sum((p[1] for p in parts), vector(SR, n))
+            A0 = sum((p[2] for p in parts), SR(0))
+        else:
+            # sum the polynomials first: contributions of the bodies combine
+            parts = [kinematics.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
+            to_symbolic = kinematics._backend.to_symbolic
+            A = matrix(SR, n, n, lambda i, j: to_symbolic(sum(p[0][i][j] for p in parts)))
+            A1 = vector(SR, [to_symbolic(sum(p[1][i] for p in parts)) for i in range(n)])
+            A0 = to_symbolic(sum(p[2] for p in parts))
         A.set_immutable()
-        return A, A1, trig_normal_form(A0, self._coordinates)
+        return A, A1, A0 + self.force_function()
 
     @cached_method
     def kinetic_energy(self, k=None):
