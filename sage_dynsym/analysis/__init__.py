@@ -1,0 +1,13 @@
+r"""
+Qualitative analysis of dynamic systems
+
+Section 3 of the method: stationary solutions and invariant manifolds
+(Routh--Lyapunov, also the modified method with an extended function),
+their stability by the second variation and quadratic-form criteria, first
+approximation (linearization, force structure, characteristic polynomial,
+Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
+and families of equilibria by elimination.
+"""
+from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
+                      lienard_chipart_conditions, real_negative_roots_conditions,
+                      conservative_stability_conditions, simplify_conditions)

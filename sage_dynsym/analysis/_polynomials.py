@@ -1,0 +1,115 @@
+r"""
+Conversions between symbolic expressions and Sage polynomial rings
+
+Internal helpers of :mod:`sage_dynsym.analysis`: the heavy algebra is done
+over polynomial rings with rational coefficients (Singular), and only the
+results are converted back to ``SR``.
+"""
+from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.polynomial.polynomial_ring import PolynomialRing_generic
+from sage.rings.polynomial.multi_polynomial_ring_base import MPolynomialRing_base
+from sage.rings.rational_field import QQ
+from sage.symbolic.ring import SR
+from sage.structure.element import Element
+
+from ..errors import AnalysisError
+
+
+def parameter_ring(symbols, extra=()):
+    r"""
+    The polynomial ring over `\QQ` in the given symbols (sorted by name).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import parameter_ring
+        sage: parameter_ring([var('b'), var('a')])
+        Multivariate Polynomial Ring in a, b over Rational Field
+    """
+    names = sorted({str(s) for s in symbols}) + [str(s) for s in extra]
+    if not names:
+        return QQ
+    return PolynomialRing(QQ, names, len(names))
+
+
+def to_ring(expr, ring, what="expression"):
+    r"""
+    Convert a symbolic expression that is polynomial in the generators of
+    ``ring`` into an element of ``ring``; raise :class:`AnalysisError`
+    otherwise.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import to_ring
+        sage: R = PolynomialRing(QQ, 'x,y')
+        sage: to_ring(SR('x^2/2 + y'), R)
+        1/2*x^2 + y
+        sage: to_ring(sin(x), R, "right-hand side")
+        Traceback (most recent call last):
+        ...
+        AnalysisError: right-hand side: expected a polynomial in x, y with rational coefficients, got sin(x)
+    """
+    if isinstance(expr, Element) and expr.parent() is ring:
+        return expr
+    try:
+        return ring(SR(expr).expand()) if ring is QQ else SR(expr).polynomial(ring=ring)
+    except (TypeError, ValueError, NotImplementedError, AttributeError):
+        gens = ', '.join(map(str, ring.gens())) if ring is not QQ else 'constants'
+        raise AnalysisError(f"expected a polynomial in {gens} with rational "
+                            f"coefficients, got {expr}", entry=what) from None
+
+
+def to_fraction(expr, symbols, what="expression"):
+    r"""
+    Write ``expr`` as ``numerator / denominator`` with both in the
+    polynomial ring of ``symbols``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import to_fraction, parameter_ring
+        sage: a, b = var('a b')
+        sage: to_fraction(a/b + 1, [a, b])
+        (a + b, b)
+    """
+    ring = parameter_ring(symbols)
+    expr = SR(expr)
+    try:
+        num, den = expr.numerator_denominator(normalize=True)
+    except (TypeError, ValueError, AttributeError):
+        num, den = expr, SR(1)
+    return to_ring(num, ring, what), to_ring(den, ring, what)
+
+
+def to_sr(poly):
+    r"""
+    Convert a polynomial (or a constant) back to ``SR``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import to_sr
+        sage: R.<x,y> = QQ[]
+        sage: to_sr(x*y - 1/2).parent()
+        Symbolic Ring
+    """
+    return SR(poly)
+
+
+def positive_polynomial(f, positive):
+    r"""
+    Whether the polynomial ``f`` is positive for all positive values of the
+    variables named in ``positive``: ``f`` is nonzero, uses only those
+    variables and has positive coefficients only.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import positive_polynomial
+        sage: R.<a,b> = QQ[]
+        sage: positive_polynomial(a*b + 2, {'a', 'b'}), positive_polynomial(a - b, {'a', 'b'})
+        (True, False)
+    """
+    if f == 0:
+        return False
+    if f.parent() is QQ or f.is_constant():
+        return QQ(f) > 0
+    if not {str(v) for v in f.variables()} <= positive:
+        return False
+    return all(c > 0 for c in f.coefficients())
