@@ -29,6 +29,7 @@ pytest: $(STAMP)
 test: doctest pytest
 
 bench: $(STAMP)
+	$(PY) -m pip install --quiet -r requirements-bench.txt
 	for b in bench/bench_*.py; do $(PY) $$b || exit 1; done
 
 clean:

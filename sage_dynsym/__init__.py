@@ -17,3 +17,4 @@ from .routh import RouthFunction
 from .hamiltonian import Hamiltonian
 from .dirac import DiracConstraints
 from .description import load, save
+from .circuits import Circuit

@@ -522,28 +522,42 @@ class Lagrangian(SageObject):
         A, A1, A0 = self.decomposition()
         q, dq, ddq = self._coordinates, self._velocities, self._accelerations
         n = len(q)
-        # dA[k][i][j] = dA_ij/dq_k, computed once and shared by all equations
-        dA = [[[A[i, j].diff(qk) if j >= i else None for j in range(n)]
-               for i in range(n)] for qk in q]
+        position = {v: k for k, v in enumerate(q)}
+        # dA[i, j] = {k: dA_ij/dq_k}, only for the coordinates A_ij depends on;
+        # zero tests are structural (is_trivial_zero): a full test would
+        # simplify large expressions
+        dA = {}
+        for i in range(n):
+            for j in range(i, n):
+                dA[i, j] = {position[v]: A[i, j].diff(v) for v in A[i, j].variables()
+                            if v in position}
+        zero = SR(0)
 
         def dA_(k, i, j):
-            return dA[k][min(i, j)][max(i, j)]
+            return dA[min(i, j), max(i, j)].get(k, zero)
 
-        dA1 = [[A1[i].diff(qk) for i in range(n)] for qk in q]
+        dA1 = [{position[v]: A1[i].diff(v) for v in SR(A1[i]).variables() if v in position}
+               for i in range(n)]
         equations = []
         for i in range(n):
-            terms = [A[i, r] * ddq[r] for r in range(n)]
+            terms = [A[i, r] * ddq[r] for r in range(n) if not A[i, r].is_trivial_zero()]
             for r in range(n):
                 # diagonal Christoffel coefficient, then the off-diagonal pairs
-                terms.append((dA_(r, i, r) - dA_(i, r, r) / 2) * dq[r] ** 2)
+                c = dA_(r, i, r) - dA_(i, r, r) / 2
+                if not c.is_trivial_zero():
+                    terms.append(c * dq[r] ** 2)
                 for j in range(r + 1, n):
-                    terms.append((dA_(j, i, r) + dA_(r, i, j) - dA_(i, r, j)) * dq[r] * dq[j])
+                    c = dA_(j, i, r) + dA_(r, i, j) - dA_(i, r, j)
+                    if not c.is_trivial_zero():
+                        terms.append(c * dq[r] * dq[j])
             for j in range(n):  # gyroscopic terms
-                terms.append((dA1[j][i] - dA1[i][j]) * dq[j])
-            terms.extend(A[i, r].diff(t) * dq[r] for r in range(n))
-            terms.append(A1[i].diff(t) if n else 0)
+                c = dA1[i].get(j, zero) - dA1[j].get(i, zero)
+                if not c.is_trivial_zero():
+                    terms.append(c * dq[j])
+            terms.extend(A[i, r].diff(t) * dq[r] for r in range(n) if A[i, r].has(t))
+            terms.append(SR(A1[i]).diff(t))
             terms.append(-A0.diff(q[i]))
-            equations.append(sum(SR(x) for x in terms))
+            equations.append(sum(terms, zero))
         return equations
 
     def accelerations_solved(self):
