@@ -8,6 +8,7 @@ approximation (linearization, force structure, characteristic polynomial,
 Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
 and families of equilibria by elimination.
 """
+from .elimination import equilibrium_family, EquilibriumFamily
 from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
                       conservative_stability_conditions, simplify_conditions)
