@@ -20,6 +20,21 @@ def random_spd(rng, den=4):
              + (Fraction(1, 2) if i == j else 0) for j in range(3)] for i in range(3)]
 
 
+def physical_inertia(rng, mass, center):
+    """
+    A random inertia tensor about O_k that a real body can have: the central
+    tensor ``tr(J) E - J`` of a random positive definite second-moment matrix
+    ``J`` (so its principal moments obey the triangle inequalities), moved to
+    O_k by the parallel-axis theorem.
+    """
+    J = random_spd(rng)
+    trace = J[0][0] + J[1][1] + J[2][2]
+    c2 = sum(x * x for x in center)
+    return [[(trace if i == j else 0) - J[i][j]
+             + mass * ((c2 if i == j else 0) - center[i] * center[j])
+             for j in range(3)] for i in range(3)]
+
+
 def random_chain(seed, n_bodies=None, max_rotations=3, symbolic=False, massless_carrier=False):
     """
     A random chain of 1-4 rigid bodies in uniform gravity.
@@ -27,7 +42,8 @@ def random_chain(seed, n_bodies=None, max_rotations=3, symbolic=False, massless_
     Each body gets a random earlier parent (body 1: the inertial frame), 0..3
     elementary rotations about random axes (each angle is its own coordinate
     ``q<k>_<i>``), random joint and mass-centre vectors, a random mass and a
-    random symmetric positive definite inertia tensor about its joint point.
+    random, physically possible (hence positive definite) inertia tensor
+    about its joint point.
 
     With ``symbolic=True`` the masses, one mass-centre component and the
     diagonal inertias are symbols (``m<k>``, ``c<k>``, ``A<k>``) whose random
@@ -50,8 +66,8 @@ def random_chain(seed, n_bodies=None, max_rotations=3, symbolic=False, massless_
                     rotations=rotations,
                     joint=[_rational(rng, -2, 2) for _ in range(3)],
                     mass_center=[_rational(rng, -2, 2) for _ in range(3)],
-                    mass=_rational(rng, 1, 3),
-                    inertia=random_spd(rng))
+                    mass=_rational(rng, 1, 3))
+        body['inertia'] = physical_inertia(rng, body['mass'], body['mass_center'])
         if symbolic:
             m, c, A = f"m{k}", f"c{k}", f"A{k}"
             params += [m, c, A]
