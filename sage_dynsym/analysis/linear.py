@@ -1,0 +1,504 @@
+r"""
+First approximation: linearization and the structure of forces
+
+Around an equilibrium `q = q^0`, `\dot q = 0` the Lagrange equations (5)
+become (15)--(16) of the method,
+
+.. MATH::
+
+    M \ddot\zeta + (D + 2G)\dot\zeta + (K + P)\zeta = 0,
+
+with `M = M^T` (kinetic), `D = D^T` (dissipative), `G = -G^T`
+(gyroscopic), `K = K^T` (potential), `P = -P^T` (non-conservative
+positional): the matrices of the velocity and position terms are split
+into their symmetric and skew-symmetric parts. A first-order system
+`B \dot x = F(x)` (circuit state equations, Hamilton equations, Euler--
+Poisson equations, ...) is linearized to `B \dot \xi = J \xi` with the
+Jacobian `J`.
+
+The characteristic polynomial is `\det(M\lambda^2 + S\lambda + W)`, resp.
+`\det(B\lambda - J)`, computed fraction-free: each row is first multiplied
+by the least common denominator of its entries (taken positive), then the
+determinant is taken over a polynomial ring in the parameters.
+
+EXAMPLES:
+
+A pendulum with a damper, from its Lagrangian::
+
+    sage: from sage_dynsym import Lagrangian
+    sage: from sage_dynsym.analysis.linear import linearize
+    sage: phi, dphi, m, l, g, c = var('phi dphi m l g c')
+    sage: L = Lagrangian(m*l^2*dphi^2/2 + m*g*l*cos(phi), [phi],
+    ....:                dissipation=c*dphi^2/2)
+    sage: down = linearize(L, {phi: 0}); down
+    Linear system M z'' + (D + 2G) z' + (K + P) z = 0 in (phi)
+    sage: down.M(), down.D(), down.K()
+    ([l^2*m], [c], [g*l*m])
+    sage: lam = var('lam')
+    sage: down.characteristic_polynomial(lam)
+    l^2*lam^2*m + g*l*m + c*lam
+    sage: linearize(L, {phi: pi}).K()
+    [-g*l*m]
+    sage: linearize(L, {phi: 1})
+    Traceback (most recent call last):
+    ...
+    AnalysisError: linearize: the point {phi: 1} is not an equilibrium: equation 0 gives g*l*m*sin(1) != 0
+"""
+from sage.matrix.constructor import matrix, identity_matrix
+from sage.rings.rational_field import QQ
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from ._polynomials import parameter_ring
+
+
+def _at(expr, point):
+    return SR(expr).subs(point)
+
+
+def _is_zero(expr):
+    expr = SR(expr)
+    if expr.is_zero():
+        return True
+    try:
+        return bool(expr.simplify_full().is_zero())
+    except (TypeError, ValueError):
+        return False
+
+
+def _tidy(expr):
+    expr = SR(expr)
+    try:
+        return expr.simplify_full() if expr.variables() else expr.simplify()
+    except (TypeError, ValueError):
+        return expr
+
+
+def _check_equilibrium(values, point):
+    for i, v in enumerate(values):
+        if not _is_zero(v):
+            shown = {k: point[k] for k in point if not str(k).startswith('dd')
+                     and not (str(k).startswith('d') and SR(point[k]).is_zero())}
+            raise AnalysisError(f"the point {shown} is not an equilibrium: "
+                                f"equation {i} gives {_tidy(v)} != 0",
+                                entry="linearize")
+
+
+def _fraction_free_det(A):
+    r"""``det(A)`` with each row multiplied by the lcm of its denominators,
+    over a polynomial ring when the entries are rational in their symbols."""
+    symbols = set()
+    for e in A.list():
+        symbols |= set(SR(e).variables())
+    R = parameter_ring(symbols)
+    try:
+        F = R.fraction_field() if R is not QQ else QQ
+        AF = matrix(F, [[F(SR(e)) for e in row] for row in A.rows()])
+    except (TypeError, ValueError, ZeroDivisionError):
+        return _symbolic_fraction_free_det(A)
+    rows = []
+    for row in AF.rows():
+        d = R(1)
+        for e in row:
+            d = d.lcm(R(e.denominator()))
+        if d.lc() < 0:
+            d = -d
+        rows.append([R(e * d) for e in row])
+    return SR(matrix(R, rows).det())
+
+
+def _symbolic_fraction_free_det(A):
+    rows = []
+    for row in A.rows():
+        d = SR(1)
+        for e in row:
+            den = SR(e).denominator()
+            try:
+                d = d * den / d.gcd(den)
+            except (TypeError, ValueError, AttributeError):
+                d = d * den
+        rows.append([(SR(e) * d).simplify_rational() for e in row])
+    return matrix(SR, rows).det()
+
+
+class LinearSystem(SageObject):
+    r"""
+    A linear system with constant coefficients: second-order
+    `M\ddot z + (D + 2G)\dot z + (K + P) z = 0`, or first-order
+    `B \dot x = J x`.
+
+    Built by :func:`linearize`, or directly.
+
+    INPUT:
+
+    - ``variables`` -- list of the unknowns (coordinates or state variables)
+    - ``M``, ``S``, ``W`` -- (second order) the matrices of accelerations,
+      velocities and coordinates, `M\ddot z + S\dot z + W z = 0`
+    - ``J``, ``B`` -- (first order) the Jacobian and the left-hand matrix
+      (default identity)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: x, y, g, k = var('x y g k')
+        sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+        ....:                   S=matrix([[0, -g], [g, 0]]), W=diagonal_matrix([k, k]))
+        sage: Ls.G(), Ls.D()
+        (
+        [   0 -1/2*g]  [0 0]
+        [ 1/2*g      0], [0 0]
+        )
+        sage: Ls.characteristic_polynomial(var('lam'))
+        g^2*lam^2 + lam^4 + 2*k*lam^2 + k^2
+    """
+
+    def __init__(self, variables, M=None, S=None, W=None, J=None, B=None):
+        self._variables = [SR(v) for v in variables]
+        n = len(self._variables)
+        if J is not None:
+            self._order = 1
+            self._J = matrix(SR, J)
+            self._B = identity_matrix(SR, n) if B is None else matrix(SR, B)
+        else:
+            self._order = 2
+            self._M, self._S, self._W = (matrix(SR, X) for X in (M, S, W))
+
+    def _repr_(self):
+        vs = ', '.join(map(str, self._variables))
+        if self._order == 1:
+            return f"Linear system B x' = J x in ({vs})"
+        return f"Linear system M z'' + (D + 2G) z' + (K + P) z = 0 in ({vs})"
+
+    def variables(self):
+        r"""The unknowns, in order."""
+        return list(self._variables)
+
+    def order(self):
+        r"""1 for `B\dot x = Jx`, 2 for the second-order form."""
+        return self._order
+
+    def _second(self):
+        if self._order != 2:
+            raise AnalysisError("the force structure M, D, G, K, P is defined for "
+                                "second-order systems (from a Lagrangian or Routh "
+                                "function)", entry="LinearSystem")
+
+    def M(self):
+        r"""The kinetic (mass) matrix `M`."""
+        self._second()
+        return self._M
+
+    def S(self):
+        r"""The matrix of velocity terms `S = D + 2G`."""
+        self._second()
+        return self._S
+
+    def W(self):
+        r"""The matrix of positional terms `W = K + P`."""
+        self._second()
+        return self._W
+
+    def D(self):
+        r"""The dissipative matrix, symmetric part of `S`."""
+        return ((self.S() + self.S().transpose()) / 2).apply_map(_tidy)
+
+    def G(self):
+        r"""The gyroscopic matrix `G = (S - S^T)/4` (so that `S = D + 2G`)."""
+        return ((self.S() - self.S().transpose()) / 4).apply_map(_tidy)
+
+    def K(self):
+        r"""The potential matrix, symmetric part of `W`."""
+        return ((self.W() + self.W().transpose()) / 2).apply_map(_tidy)
+
+    def P(self):
+        r"""The non-conservative positional matrix, skew part of `W`."""
+        return ((self.W() - self.W().transpose()) / 2).apply_map(_tidy)
+
+    def jacobian(self):
+        r"""
+        The first-order matrix `A` of `\dot x = A x` (for the second-order
+        form, `x = (z, \dot z)`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: m, c, k = var('m c k')
+            sage: LinearSystem([var('x')], M=[[m]], S=[[c]], W=[[k]]).jacobian()
+            [   0    1]
+            [-k/m -c/m]
+        """
+        if self._order == 1:
+            return (self._B.inverse() * self._J).apply_map(_tidy)
+        n = len(self._variables)
+        Mi = self._M.inverse()
+        top = matrix(SR, n, n).augment(identity_matrix(SR, n))
+        bottom = (-Mi * self._W).augment(-Mi * self._S)
+        return top.stack(bottom).apply_map(_tidy)
+
+    def lhs_matrix(self):
+        r"""The matrix `B` of a first-order system `B\dot x = Jx`."""
+        return self._B if self._order == 1 else None
+
+    def equations(self):
+        r"""
+        The linear equations as expressions (``== 0``), in the variables
+        and their ``d``/``dd`` derivative symbols.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, a = var('x a')
+            sage: LinearSystem([x], J=[[a]]).equations()
+            [-a*x + dx]
+        """
+        from ..expressions import velocity, acceleration
+        z = matrix(SR, [[v] for v in self._variables])
+        dz = matrix(SR, [[velocity(v)] for v in self._variables])
+        if self._order == 1:
+            E = self._B * dz - self._J * z
+        else:
+            ddz = matrix(SR, [[acceleration(v)] for v in self._variables])
+            E = self._M * ddz + self._S * dz + self._W * z
+        return [e.expand() for e in E.column(0)]
+
+    def characteristic_matrix(self, lam):
+        r"""`M\lambda^2 + S\lambda + W`, resp. `B\lambda - J`."""
+        if self._order == 1:
+            return self._B * lam - self._J
+        return self._M * lam ** 2 + self._S * lam + self._W
+
+    def characteristic_polynomial(self, lam):
+        r"""
+        The characteristic polynomial, fraction-free (see the module
+        documentation), expanded.
+
+        INPUT:
+
+        - ``lam`` -- a symbolic variable
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: L1, C1, r = var('L1 C1 r')
+            sage: Ls = LinearSystem([var('i'), var('u')], J=[[0, 1], [-1, -r]],
+            ....:                   B=diagonal_matrix([L1, C1]))
+            sage: Ls.characteristic_polynomial(var('lam'))
+            C1*L1*lam^2 + L1*lam*r + 1
+        """
+        return _fraction_free_det(self.characteristic_matrix(SR(lam))).expand()
+
+    def force_structure(self):
+        r"""
+        A plain-language description of which forces are present.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: g, k = var('g k')
+            sage: print(LinearSystem([var('x'), var('y')], M=identity_matrix(2),
+            ....:       S=matrix([[0, g], [-g, 0]]), W=-identity_matrix(2)).force_structure())
+            gyroscopic forces (G != 0); potential forces (K != 0)
+        """
+        self._second()
+        parts = []
+        for name, X, what in (("D", self.D(), "dissipative"), ("G", self.G(), "gyroscopic"),
+                              ("K", self.K(), "potential"),
+                              ("P", self.P(), "non-conservative positional")):
+            if not X.is_zero():
+                parts.append(f"{what} forces ({name} != 0)")
+        return '; '.join(parts) if parts else "no forces"
+
+    def kelvin_chetaev(self, positive=()):
+        r"""
+        The verdict of the Kelvin--Chetaev theorems, see
+        :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`.
+        """
+        from .kelvin_chetaev import kelvin_chetaev
+        self._second()
+        return kelvin_chetaev(self.M(), self.D(), self.G(), self.K(), self.P(),
+                              positive=positive)
+
+    def linear_integrals(self):
+        r"""
+        Linear first integrals `c^T x` of the first-order form
+        `\dot x = A x`: the left null space of `A` (constant integrals
+        `\frac{d}{dt} c^T x = c^T A x = 0`).
+
+        OUTPUT: list of expressions in the variables (and their ``d``
+        symbols for the second-order form)
+
+        EXAMPLES: a free coordinate gives a conserved momentum::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, m, k = var('x y m k')
+            sage: Ls = LinearSystem([x, y], M=diagonal_matrix([m, m]),
+            ....:                   S=zero_matrix(2), W=matrix([[k, -k], [-k, k]]))
+            sage: Ls.linear_integrals()
+            [dx + dy]
+        """
+        from ..expressions import velocity
+        A = self.jacobian()
+        xs = list(self._variables)
+        if self._order == 2:
+            xs += [velocity(v) for v in self._variables]
+        result = []
+        for c in A.transpose().right_kernel().basis():
+            result.append(sum(ci * xi for ci, xi in zip(c, xs)))
+        return [r.expand() for r in result]
+
+    def quadratic_integrals(self):
+        r"""
+        Quadratic first integrals `x^T X x` of `\dot x = A x`: the symmetric
+        solutions of `A^T X + X A = 0` (a basis).
+
+        OUTPUT: list of quadratic expressions
+
+        EXAMPLES: the energy of an oscillator::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, m, k = var('x m k')
+            sage: LinearSystem([x], M=[[m]], S=[[0]], W=[[k]]).quadratic_integrals()
+            [dx^2*m/k + x^2]
+        """
+        from ..expressions import velocity
+        A = self.jacobian()
+        N = A.nrows()
+        xs = list(self._variables)
+        if self._order == 2:
+            xs += [velocity(v) for v in self._variables]
+        idx = [(i, j) for i in range(N) for j in range(i, N)]
+        eqs = []
+        for r in range(N):
+            for s in range(r, N):
+                # (A^T X + X A)_{rs} = sum_k A_kr X_ks + X_rk A_ks
+                row = []
+                for (i, j) in idx:
+                    coef = 0
+                    for (a, b) in ((i, j), (j, i)) if i != j else ((i, j),):
+                        if b == s:
+                            coef += A[a, r]
+                        if a == r:
+                            coef += A[b, s]
+                    row.append(coef)
+                eqs.append(row)
+        E = matrix(SR, eqs)
+        result = []
+        for sol in E.right_kernel().basis():
+            X = matrix(SR, N, N)
+            for (i, j), v in zip(idx, sol):
+                X[i, j] = X[j, i] = v
+            xv = matrix(SR, [xs]).transpose()
+            q = (xv.transpose() * X * xv)[0, 0]
+            result.append(_tidy(q.expand()).expand())
+        return result
+
+
+def linearize(system, at, variables=None, lhs_matrix=None):
+    r"""
+    The first-approximation system around an equilibrium.
+
+    INPUT:
+
+    - ``system`` -- either a list of right-hand sides `F` of a first-order
+      system `B\dot x = F(x)`, or a characteristic-function object: a
+      :class:`~sage_dynsym.lagrangian.Lagrangian` (also a Routh function:
+      linearization in the positional coordinates, cyclic momenta are
+      parameters) or a :class:`~sage_dynsym.hamiltonian.Hamiltonian`
+    - ``at`` -- dict ``{variable: value}`` giving the point (coordinates for
+      a Lagrangian; velocities are zero; missing coordinates are an error)
+    - ``variables`` -- the list `x` (first-order systems; for a Hamiltonian
+      the default is coordinates then momenta)
+    - ``lhs_matrix`` -- (optional, first-order systems) the matrix `B`, or
+      the list of its diagonal entries; default the identity. E.g. the
+      inductances and capacitances of circuit state equations (8).
+
+    OUTPUT: a :class:`LinearSystem`; second-order for a Lagrangian, else
+    first-order
+
+    Raises :class:`AnalysisError` if the point is not an equilibrium.
+
+    EXAMPLES: see the module documentation, and Example 4 in
+    :mod:`sage_dynsym.analysis.examples`. A first-order system::
+
+        sage: from sage_dynsym.analysis.linear import linearize
+        sage: x, y, a = var('x y a')
+        sage: Ls = linearize([y, -sin(x) - a*y], {x: 0, y: 0}, [x, y]); Ls.jacobian()
+        [ 0  1]
+        [-1 -a]
+        sage: linearize([y, -sin(x) - a*y], {x: 0, y: 1}, [x, y])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: the point {x: 0, y: 1} is not an equilibrium: equation 0 gives 1 != 0
+
+    TESTS::
+
+        sage: linearize([y, x], {x: 0}, [x, y])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: no value given for y (the point must give every variable)
+    """
+    from ..lagrangian import Lagrangian
+    from ..hamiltonian import Hamiltonian
+    at = {SR(k): SR(v) for k, v in at.items()}
+    if isinstance(system, Lagrangian):
+        return _linearize_lagrangian(system, at)
+    if isinstance(system, Hamiltonian):
+        if variables is None:
+            variables = list(system.coordinates()) + list(system.momenta())
+        rhs = _hamilton_rhs(system)
+        return _linearize_first_order(rhs, at, variables, None)
+    if variables is None:
+        raise AnalysisError("a list of right-hand sides needs the list of "
+                            "variables", entry="linearize")
+    return _linearize_first_order(list(system), at, variables, lhs_matrix)
+
+
+def _hamilton_rhs(H):
+    eqs = H.equations()
+    dq = [pair[0] for pair in eqs]
+    dp = [pair[1] for pair in eqs]
+    return dq + dp
+
+
+def _point_for(variables, at):
+    for v in variables:
+        if SR(v) not in at:
+            raise AnalysisError(f"no value given for {v} (the point must give "
+                                f"every variable)", entry="linearize")
+    return {SR(v): at[SR(v)] for v in variables}
+
+
+def _linearize_first_order(rhs, at, variables, lhs_matrix):
+    variables = [SR(v) for v in variables]
+    point = _point_for(variables, at)
+    point.update(at)
+    rhs = [SR(f) for f in rhs]
+    if len(rhs) != len(variables):
+        raise AnalysisError(f"{len(rhs)} right-hand sides for {len(variables)} "
+                            f"variables", entry="linearize")
+    _check_equilibrium([_at(f, point) for f in rhs], point)
+    J = matrix(SR, [[_tidy(_at(f.diff(v), point)) for v in variables] for f in rhs])
+    B = None
+    if lhs_matrix is not None:
+        B = matrix(SR, lhs_matrix) if isinstance(lhs_matrix[0], (list, tuple)) or \
+            hasattr(lhs_matrix, 'nrows') else matrix.diagonal(SR, list(lhs_matrix))
+        B = B.apply_map(lambda e: _at(e, point))
+    return LinearSystem(variables, J=J, B=B)
+
+
+def _linearize_lagrangian(L, at):
+    q, dq, ddq = L.coordinates(), L.velocities(), L.accelerations()
+    point = _point_for(q, at)
+    for v in list(dq) + list(ddq):
+        if v in at and not SR(at[v]).is_zero():
+            raise AnalysisError(f"linearization of a Lagrangian is around an "
+                                f"equilibrium (velocities zero), got {v} = {at[v]}; "
+                                f"for steady motions use the Routh function",
+                                entry="linearize")
+        point[v] = SR(0)
+    point.update({k: v for k, v in at.items() if k not in point})
+    E = [SR(e) for e in L.lagrange_equations()]
+    _check_equilibrium([_at(e, point) for e in E], point)
+    mat = lambda xs: matrix(SR, [[_tidy(_at(e.diff(x), point)) for x in xs] for e in E])
+    return LinearSystem(q, M=mat(ddq), S=mat(dq), W=mat(q))
