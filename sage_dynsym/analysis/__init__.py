@@ -12,3 +12,6 @@ from .elimination import equilibrium_family, EquilibriumFamily
 from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
                       conservative_stability_conditions, simplify_conditions)
+from .linear import LinearSystem, linearize
+from .quadratic_forms import (sylvester_conditions, form_matrix, restrict_to_subspace,
+                              simultaneous_reduction)

@@ -102,7 +102,7 @@ def _fraction_free_det(A):
         d = R(1)
         for e in row:
             d = d.lcm(R(e.denominator()))
-        if d.lc() < 0:
+        if (d if R is QQ else d.lc()) < 0:
             d = -d
         rows.append([R(e * d) for e in row])
     return SR(matrix(R, rows).det())
