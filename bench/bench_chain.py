@@ -1,0 +1,165 @@
+"""
+Benchmark: Lagrange equations of an N-link spatial chain, sage_dynsym vs SymPy.
+
+Link k turns about z by psi<k>, then about the new x by theta<k> (as in
+Example 1); its joint is at the end of the previous link, (0, 0, l<k-1>) in
+the parent's axes; mass centre (0, 0, c<k>); inertia diag(A<k>, A<k>, C<k>)
+about the joint; symbolic masses m<k>; gravity (0, 0, -g). The model is the
+plain-data ``spatial_chain(N)`` of ``tests/reference/chains.py``, built by
+sage_dynsym and by ``sympy.physics.mechanics`` (``tests/reference/
+sympy_chain.py``, ``LagrangesMethod``).
+
+Each (tool, N) runs in a fresh subprocess with a timeout; the time covers
+building the model and deriving the equations (not importing the library).
+Output size: total length of the equations' text without spaces, both in
+plain symbols (psi1, dpsi1, ddpsi1, ...) and with ``^`` for powers. Both
+sides also evaluate their equations at the same random point and the
+largest relative difference is printed (a correctness guard).
+
+Usage: ``python bench/bench_chain.py [--quick] [--max-n N] [--timeout S]``
+(``--quick``: N = 1..3, 60 s timeout). Once SymPy times out at some N it is
+not run for larger N (its cost only grows).
+"""
+import argparse
+import json
+import os
+import random
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
+
+from reference.chains import spatial_chain  # noqa: E402
+
+
+def _point(desc, seed=1):
+    """A random numerical point for every symbol of the equations."""
+    rng = random.Random(seed)
+    point = {}
+    for q in desc['coordinates']:
+        point[q] = rng.uniform(-3, 3)
+        point['d' + q] = rng.uniform(-2, 2)
+        point['dd' + q] = rng.uniform(-2, 2)
+    for p in desc['parameters']:
+        point[p] = rng.uniform(0.5, 2)
+    return point
+
+
+def _size(exprs):
+    return sum(len(str(e).replace(' ', '').replace('**', '^')) for e in exprs)
+
+
+def worker_sage(n):
+    import sympy
+    from sage.all import SR, fast_callable, RDF
+    from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+    desc = spatial_chain(n)
+    names = {s: sympy.Symbol(s) for s in desc['coordinates'] + desc['parameters']}
+
+    def conv(x):
+        return SR(sympy.parse_expr(x, local_dict=dict(names))) if isinstance(x, str) else SR(x)
+
+    bodies_data = [dict(name=f'link{k}', parent=b['parent'],
+                        rotations=[(a, conv(q)) for a, q in b['rotations']],
+                        joint=[conv(x) for x in b['joint']],
+                        mass_center=[conv(x) for x in b['mass_center']], mass=conv(b['mass']),
+                        inertia=[[conv(x) for x in row] for row in b['inertia']])
+                   for k, b in enumerate(desc['bodies'], start=1)]
+    coordinates = [SR.var(q) for q in desc['coordinates']]
+    parameters = [SR.var(p) for p in desc['parameters']]
+    gravity = [conv(x) for x in desc['gravity']]
+    start = time.perf_counter()
+    bodies = [RigidBody(d.pop('name'), velocity=None, **d) for d in bodies_data]
+    S = MechanicalSystem(bodies, coordinates=coordinates, parameters=parameters,
+                         force_function=UniformGravity(gravity))
+    E = S.lagrangian().lagrange_equations()
+    elapsed = time.perf_counter() - start
+    point = _point(desc)
+    order = sorted(point)
+    values = [float(fast_callable(SR(e), vars=[SR.var(s) for s in order], domain=RDF)(
+        *[point[s] for s in order])) for e in E]
+    return dict(time=elapsed, size=_size(E), values=values)
+
+
+def worker_sympy(n):
+    import sympy
+    from reference.sympy_chain import SympyChain
+    desc = spatial_chain(n)
+    start = time.perf_counter()
+    chain = SympyChain(desc['bodies'], desc['coordinates'], desc['gravity'], desc['parameters'])
+    eom = chain.lagrange_equations(plain=False)
+    elapsed = time.perf_counter() - start
+    E = [chain.to_plain(e) for e in eom]
+    point = _point(desc)
+    order = sorted(point)
+    f = sympy.lambdify([sympy.Symbol(s) for s in order], E, modules='math', cse=True)
+    values = [float(v) for v in f(*[point[s] for s in order])]
+    return dict(time=elapsed, size=_size(E), values=values)
+
+
+def run(tool, n, timeout):
+    """Run one worker in a fresh interpreter; its result dict or 'timeout'."""
+    cmd = [sys.executable, os.path.abspath(__file__), '--worker', tool, str(n)]
+    try:
+        out = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return 'timeout'
+    if out.returncode != 0:
+        return 'error: ' + (out.stderr.strip().splitlines() or ['?'])[-1]
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def _relative_difference(a, b):
+    scale = max(1.0, max(abs(x) for x in b))
+    return max(abs(x - y) for x, y in zip(a, b)) / scale
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
+    parser.add_argument('--quick', action='store_true', help='N = 1..3, 60 s timeout')
+    parser.add_argument('--max-n', type=int, default=None)
+    parser.add_argument('--timeout', type=float, default=None)
+    parser.add_argument('--worker', nargs=2, help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.worker:
+        tool, n = args.worker
+        result = (worker_sage if tool == 'sage' else worker_sympy)(int(n))
+        print(json.dumps(result))
+        return
+    max_n = args.max_n or (3 if args.quick else 6)
+    timeout = args.timeout or (60 if args.quick else 300)
+    print(f"N-link spatial chain, Lagrange equations; timeout {timeout:g} s per run")
+    print(f"{'N':>2} {'sage_dynsym s':>14} {'SymPy s':>10} {'speed-up':>9} "
+          f"{'sage size':>10} {'SymPy size':>11} {'size ratio':>10} {'max rel diff':>12}")
+    sympy_gave_up = None
+    for n in range(1, max_n + 1):
+        sage = run('sage', n, timeout)
+        sym = 'timeout (not run: timed out at N = %d)' % sympy_gave_up if sympy_gave_up \
+            else run('sympy', n, timeout)
+        if sym == 'timeout':
+            sympy_gave_up = n
+        cells = [f"{n:>2}"]
+        cells.append(f"{sage['time']:>14.2f}" if isinstance(sage, dict) else f"{sage:>14}")
+        cells.append(f"{sym['time']:>10.2f}" if isinstance(sym, dict) else f"{'timeout':>10}")
+        both = isinstance(sage, dict) and isinstance(sym, dict)
+        if both:
+            cells.append(f"{sym['time'] / sage['time']:>8.1f}x")
+        elif isinstance(sage, dict) and str(sym).startswith('timeout'):
+            cells.append(f"{'>' + format(timeout / sage['time'], '.0f') + 'x':>9}")
+        else:
+            cells.append(f"{'-':>9}")
+        cells.append(f"{sage['size']:>10}" if isinstance(sage, dict) else f"{'-':>10}")
+        cells.append(f"{sym['size']:>11}" if isinstance(sym, dict) else f"{'-':>11}")
+        cells.append(f"{sage['size'] / sym['size']:>10.3f}" if both else f"{'-':>10}")
+        cells.append(f"{_relative_difference(sage['values'], sym['values']):>12.1e}"
+                     if both else f"{'-':>12}")
+        print(" ".join(cells), flush=True)
+        for tool, r in (('sage_dynsym', sage), ('SymPy', sym)):
+            if isinstance(r, str) and r.startswith('error'):
+                print(f"   {tool} failed at N = {n}: {r}", flush=True)
+
+
+if __name__ == '__main__':
+    main()
