@@ -15,3 +15,4 @@ from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
 from .linear import LinearSystem, linearize
 from .quadratic_forms import (sylvester_conditions, form_matrix, restrict_to_subspace,
                               simultaneous_reduction)
+from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
