@@ -55,6 +55,7 @@ from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import velocity, acceleration, time_derivative, t
+from .natural_equations import natural_equations, SymbolicCalculus
 
 
 def _symbol_list(symbols, what):
@@ -109,6 +110,9 @@ class Lagrangian(SageObject):
       Lagrangian of the form (4) already known in that form (as computed
       by a mechanical system); then ``expr`` may be ``None``, and the
       structure is kept instead of being recovered by differentiation
+    - ``equation_builder`` -- (optional, with ``decomposition``) a function
+      without arguments returning the equations (5) without dissipation and
+      forces, computed in a faster arithmetic by the caller
 
     EXAMPLES::
 
@@ -139,7 +143,7 @@ class Lagrangian(SageObject):
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
-                 forces=None, name=None, decomposition=None):
+                 forces=None, name=None, decomposition=None, equation_builder=None):
         self._coordinates = _symbol_list(coordinates, "coordinates")
         if velocities is None:
             velocities = [velocity(q) for q in self._coordinates]
@@ -148,6 +152,7 @@ class Lagrangian(SageObject):
             raise ModelError("expected one velocity per coordinate")
         self._accelerations = [acceleration(q) for q in self._coordinates]
         self._structure = None
+        self._equation_builder = equation_builder
         if decomposition is not None:
             A, A1, A0 = decomposition
             self._structure = (A, A1, SR(A0))
@@ -516,49 +521,15 @@ class Lagrangian(SageObject):
 
     def _structured_equations(self):
         r"""
-        Equations (5) from `A, A_1, A_0`, with the velocity products
-        collected (Christoffel symbols of the first kind).
+        Equations (5) from `A, A_1, A_0`, see
+        :mod:`~sage_dynsym.natural_equations`.
         """
+        if self._equation_builder is not None:
+            return self._equation_builder()
         A, A1, A0 = self.decomposition()
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        n = len(q)
-        position = {v: k for k, v in enumerate(q)}
-        # dA[i, j] = {k: dA_ij/dq_k}, only for the coordinates A_ij depends on;
-        # zero tests are structural (is_trivial_zero): a full test would
-        # simplify large expressions
-        dA = {}
-        for i in range(n):
-            for j in range(i, n):
-                dA[i, j] = {position[v]: A[i, j].diff(v) for v in A[i, j].variables()
-                            if v in position}
-        zero = SR(0)
-
-        def dA_(k, i, j):
-            return dA[min(i, j), max(i, j)].get(k, zero)
-
-        dA1 = [{position[v]: A1[i].diff(v) for v in SR(A1[i]).variables() if v in position}
-               for i in range(n)]
-        equations = []
-        for i in range(n):
-            terms = [A[i, r] * ddq[r] for r in range(n) if not A[i, r].is_trivial_zero()]
-            for r in range(n):
-                # diagonal Christoffel coefficient, then the off-diagonal pairs
-                c = dA_(r, i, r) - dA_(i, r, r) / 2
-                if not c.is_trivial_zero():
-                    terms.append(c * dq[r] ** 2)
-                for j in range(r + 1, n):
-                    c = dA_(j, i, r) + dA_(r, i, j) - dA_(i, r, j)
-                    if not c.is_trivial_zero():
-                        terms.append(c * dq[r] * dq[j])
-            for j in range(n):  # gyroscopic terms
-                c = dA1[i].get(j, zero) - dA1[j].get(i, zero)
-                if not c.is_trivial_zero():
-                    terms.append(c * dq[j])
-            terms.extend(A[i, r].diff(t) * dq[r] for r in range(n) if A[i, r].has(t))
-            terms.append(SR(A1[i]).diff(t))
-            terms.append(-A0.diff(q[i]))
-            equations.append(sum(terms, zero))
-        return equations
+        return natural_equations([list(row) for row in A.rows()], list(A1), A0,
+                                 self._coordinates, self._velocities, self._accelerations,
+                                 SymbolicCalculus(self._coordinates))
 
     def accelerations_solved(self):
         r"""

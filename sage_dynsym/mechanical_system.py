@@ -42,7 +42,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from .errors import ModelError
-from .expressions import velocity, time_derivative, t
+from .expressions import velocity, acceleration, t
+from .natural_equations import natural_equations
 from .frames import FrameVector
 from .kinematics import Kinematics
 from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial
@@ -573,22 +574,44 @@ class MechanicalSystem(SageObject):
             [                 0              l^2*m], -g*l*m*cos(theta)
             )
         """
-        n = len(self._coordinates)
-        kinematics = self._polynomial_kinematics()
-        if kinematics is None:
+        data = self._polynomial_decomposition()
+        if data is None:
+            n = len(self._coordinates)
             parts = [self.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
             A = sum((p[0] for p in parts), matrix(SR, n, n))
             A1 = sum((p[1] for p in parts), vector(SR, n))
-            A0 = sum((p[2] for p in parts), SR(0))
+            A0 = sum((p[2] for p in parts), SR(0)) + self.force_function()
         else:
-            # sum the polynomials first: contributions of the bodies combine
-            parts = [kinematics.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
-            to_symbolic = kinematics._backend.to_symbolic
-            A = matrix(SR, n, n, lambda i, j: to_symbolic(sum(p[0][i][j] for p in parts)))
-            A1 = vector(SR, [to_symbolic(sum(p[1][i] for p in parts)) for i in range(n)])
-            A0 = to_symbolic(sum(p[2] for p in parts))
+            to_symbolic = data[0].symbolic
+            A = matrix(SR, [[to_symbolic(e) for e in row] for row in data[1]])
+            A1 = vector(SR, [to_symbolic(e) for e in data[2]])
+            A0 = to_symbolic(data[3])
         A.set_immutable()
-        return A, A1, A0 + self.force_function()
+        return A, A1, A0
+
+    @cached_method
+    def _polynomial_decomposition(self):
+        r"""
+        ``(calculus, A, A1, A0)`` of the whole system (force function
+        included) in the polynomial ring of :meth:`_polynomial_kinematics`,
+        or ``None`` when the model is not polynomial there.
+        """
+        kinematics = self._polynomial_kinematics()
+        if kinematics is None:
+            return None
+        try:
+            calculus = kinematics._backend.calculus(self._coordinates)
+            U = kinematics._backend.convert(self.force_function())
+        except NotPolynomial:
+            return None
+        # sum the polynomials first: contributions of the bodies combine
+        n = len(self._coordinates)
+        parts = [kinematics.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
+        zero = calculus.zero
+        A = [[sum((p[0][i][j] for p in parts), zero) for j in range(n)] for i in range(n)]
+        A1 = [sum((p[1][i] for p in parts), zero) for i in range(n)]
+        A0 = sum((p[2] for p in parts), zero) + U
+        return calculus, A, A1, A0
 
     @cached_method
     def kinetic_energy(self, k=None):
@@ -648,9 +671,16 @@ class MechanicalSystem(SageObject):
             sage: S.lagrangian().lagrange_equations()
             [c*dx + ddx*m + k*x]
         """
+        data = self._polynomial_decomposition()
+        builder = None
+        if data is not None:
+            def builder():
+                return natural_equations(data[1], data[2], data[3], self._coordinates,
+                                         self._velocities,
+                                         [acceleration(q) for q in self._coordinates], data[0])
         return Lagrangian(None, self._coordinates, self._velocities,
                           decomposition=self.decomposition(), dissipation=self._dissipation,
-                          forces=self._forces, name=self._name)
+                          forces=self._forces, name=self._name, equation_builder=builder)
 
 
 def _quadratic_form(A, x):

@@ -119,6 +119,21 @@ class TrigPolynomialRing:
         self._backward.update({SR.var(n): a.sin() for n, a in zip(self._sin_names, self._angles)})
         self._ideal = self.ring.ideal([c ** 2 + s ** 2 - 1 for c, s in self._pairs.values()])
         self.zero = self.ring.zero()
+        # the symbolic value of every generator, for the conversion back
+        self._values = [self._backward.get(SR.var(name), SR.var(name))
+                        for name in self.ring.variable_names()]
+
+    def angles(self):
+        r"""
+        The angles whose cosine and sine are generators of the ring.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: TrigPolynomialRing([var('a'), 1, var('a')], []).angles()
+            [a]
+        """
+        return list(self._angles)
 
     def convert(self, expr):
         expr = SR(expr)
@@ -141,5 +156,118 @@ class TrigPolynomialRing:
         return element.subs({self.ring(str(v)): 0 for v in symbols})
 
     def to_symbolic(self, element):
+        r"""
+        The symbolic expression of ``element`` after reduction modulo
+        `\cos^2+\sin^2 = 1`, built as one n-ary sum of products (much
+        faster than converting term by term).
+        """
         reduced = self._ideal.reduce(element) if self._pairs else element
-        return SR(reduced).subs(self._backward) if self._backward else SR(reduced)
+        powers, terms = {}, []
+        for exponents, coefficient in reduced.dict().items():
+            factors = [SR(coefficient)]
+            for index, e in exponents.sparse_iter():
+                key = (index, e)
+                if key not in powers:
+                    powers[key] = self._values[index] ** e
+                factors.append(powers[key])
+            terms.append(SR(1).mul(*factors))
+        return SR(0).add(*terms) if terms else SR(0)
+
+    def calculus(self, coordinates):
+        r"""
+        The :class:`RingCalculus` of this ring for the given coordinates.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: a, l = var('a l')
+            sage: C = TrigPolynomialRing([a], [l]).calculus([a])
+            sage: c, s = C.ring.trig(a)
+            sage: C.symbolic(C.derivative(c^2*C.convert(l), 0))
+            -2*l*cos(a)*sin(a)
+        """
+        return RingCalculus(self, coordinates)
+
+
+class RingCalculus:
+    r"""
+    Derivatives in a :class:`TrigPolynomialRing` with respect to the
+    coordinates and time: the chain rule through every angle,
+    `\partial_q \cos\theta = -\sin\theta\, \partial_q\theta`,
+    `\partial_q \sin\theta = \cos\theta\, \partial_q\theta`, plus
+    the direct dependence of coordinates used as polynomial variables (e.g. a
+    sliding coordinate). The interface is that of
+    :class:`~sage_dynsym.natural_equations.SymbolicCalculus`.
+
+    Raises :class:`NotPolynomial` if an angle's derivative is not polynomial.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.trig import TrigPolynomialRing
+        sage: x, z, w, t = var('x z w t')
+        sage: R = TrigPolynomialRing([x + w*t], [z, w, t])
+        sage: C = R.calculus([x, z])
+        sage: c, s = R.trig(x + w*t)
+        sage: p = c * R.convert(z^2)
+        sage: sorted(C.dependencies(p)), C.depends_on_time(p)
+        ([0, 1], True)
+        sage: C.symbolic(C.derivative(p, 0)), C.symbolic(C.derivative(p, None))
+        (-z^2*sin(t*w + x), -w*z^2*sin(t*w + x))
+    """
+
+    def __init__(self, ring, coordinates):
+        from .expressions import t
+        self.ring = ring
+        self.zero = ring.zero
+        P = ring.ring
+        names = set(P.variable_names())
+        self._direct = [P(str(q)) if str(q) in names else None for q in coordinates]
+        self._time = P(str(t)) if str(t) in names else None
+        # per angle: its ring pair and the ring derivatives of the angle
+        self._chains = []
+        for angle in ring.angles():
+            c, s = ring.trig(angle)
+            by_coordinate = {k: ring.convert(angle.diff(q)) for k, q in enumerate(coordinates)
+                             if angle.has(q)}
+            rate = ring.convert(angle.diff(t)) if angle.has(t) else None
+            self._chains.append((c, s, by_coordinate, rate))
+
+    def convert(self, expr):
+        return self.ring.convert(expr)
+
+    def _through_angles(self, element, select):
+        result = self.zero
+        for c, s, by_coordinate, rate in self._chains:
+            factor = select(by_coordinate, rate)
+            if factor is not None:
+                result += factor * (-s * element.derivative(c) + c * element.derivative(s))
+        return result
+
+    def derivative(self, element, k):
+        if k is None:
+            direct = element.derivative(self._time) if self._time is not None else self.zero
+            return direct + self._through_angles(element, lambda by, rate: rate)
+        direct = element.derivative(self._direct[k]) if self._direct[k] is not None else self.zero
+        return direct + self._through_angles(element, lambda by, rate: by.get(k))
+
+    def _uses(self, element):
+        return set(element.variables())
+
+    def dependencies(self, element):
+        used = self._uses(element)
+        found = {k for k, v in enumerate(self._direct) if v is not None and v in used}
+        for c, s, by_coordinate, _ in self._chains:
+            if c in used or s in used:
+                found.update(by_coordinate)
+        return found
+
+    def depends_on_time(self, element):
+        used = self._uses(element)
+        return (self._time is not None and self._time in used) or any(
+            rate is not None and (c in used or s in used) for c, s, _, rate in self._chains)
+
+    def is_zero(self, element):
+        return element.is_zero()
+
+    def symbolic(self, element):
+        return self.ring.to_symbolic(element)
