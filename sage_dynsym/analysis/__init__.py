@@ -16,3 +16,5 @@ from .linear import LinearSystem, linearize
 from .quadratic_forms import (sylvester_conditions, form_matrix, restrict_to_subspace,
                               simultaneous_reduction)
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
+from .stationary import (stationary_solutions, stationary_motions, check_integral,
+                         StationarySolution, StationarySolutions, ModifiedRouthLyapunov)

@@ -78,6 +78,7 @@ REFERENCES:
   ch. 5 (Hurwitz and Liénard--Chipart criteria, conservative systems).
 """
 from sage.matrix.constructor import matrix
+from sage.misc.misc_c import prod
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.polynomial_ring import PolynomialRing_generic
 from sage.rings.polynomial.multi_polynomial_ring_base import MPolynomialRing_base
@@ -392,6 +393,8 @@ def _simplify_one(f, positive):
             sign = sign * (-1) ** e
             continue
         if e % 2:
+            if g.lc() < 0:      # canonical sign, so that equal factors match
+                g, sign = -g, -sign
             kept.append(g)
     if not kept:
         return (None, None) if sign > 0 else (f.parent()(-1), None)
@@ -423,33 +426,38 @@ def simplify_conditions(conditions, positive=()):
         sage: from sage_dynsym.analysis.hurwitz import simplify_conditions
         sage: a, b, m = var('a b m')
         sage: simplify_conditions([m^2*(a - b), 2*m*a, a - b, a*b], positive=[m])
-        [a - b, a, a*b]
+        [a - b, a, b]
         sage: simplify_conditions([a, -3*m, a*b], positive=[m])
         [-1]
         sage: simplify_conditions([a, b, 4*a*b], positive=[m])
         [a, b]
     """
-    result, seen = [], []
-    polys = []
+    result, polys = [], []
+    native = lambda f: isinstance(f, _Unexpanded) or (
+        isinstance(f, Element) and _is_polynomial_ring(f.parent()))
+    symbols = set()
     for f in conditions:
-        if isinstance(f, _Unexpanded) or (isinstance(f, Element) and
-                                          _is_polynomial_ring(f.parent())):
-            polys.append(f)
-        else:
-            expr = SR(f)
-            ring = parameter_ring(expr.variables())
-            polys.append(to_ring(expr, ring, "condition"))
+        if not native(f):
+            symbols |= set(SR(f).variables())
+    ring = parameter_ring(symbols)
+    for f in conditions:
+        polys.append(f if native(f) else to_ring(SR(f), ring, "condition"))
     positive = _positive_names(positive)
-    reduced = [_simplify_one(f, positive) for f in polys]
-    singles = {next(iter(fs)) for g, fs in reduced if fs is not None and len(fs) == 1}
-    for g, fs in reduced:
+    known = []          # single factors already required to be positive
+    for f in polys:
+        g, fs = _simplify_one(f, positive)
         if g is None:
             continue
-        if fs is not None:
-            if fs in seen or (len(fs) > 1 and fs <= singles):
-                continue
-            seen.append(fs)
-        result.append(SR(g))
+        if fs is None:
+            result.append(SR(g))
+            continue
+        rest = [h for h in fs if h not in known]
+        if not rest:
+            continue
+        if len(rest) == 1:
+            known.append(rest[0])
+        result.append(prod(SR(h) for h in sorted(rest, key=str)) if len(rest) > 1
+                      else SR(rest[0]))
     impossible = [g for g in result if g.is_constant()]
     return impossible[:1] if impossible else result
 
@@ -496,7 +504,7 @@ def hurwitz_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
 
         sage: a = var('a')
         sage: hurwitz_conditions(expand((lam + 1)*(lam + 2)*(lam^2 + a*lam + 1)), lam)
-        [a + 3, 3*a^2 + 10*a + 6, 2*a^3 + 9*a^2 + 10*a]
+        [a + 3, 3*a^2 + 10*a + 6, (2*a + 5)*(a + 2)*a]
         sage: hurwitz_conditions(expand((lam + 1)*(lam + 2)*(lam^2 + a*lam + 1)), lam,
         ....:                    positive=[a])
         []
