@@ -1,0 +1,11 @@
+r"""
+Interactive pages for Jupyter worksheets (SageMath kernel)
+
+System builder, equations explorer and stability explorer; see
+:mod:`sage_dynsym.interact.pages`, :mod:`sage_dynsym.interact.builder`,
+:mod:`sage_dynsym.interact.forms` and :mod:`sage_dynsym.interact.stability`.
+"""
+from .forms import available_forms, derive, derivation_latex
+from .builder import SystemBuilder
+from .stability import StabilityStudy
+from .pages import equations_explorer, system_builder

@@ -1,0 +1,89 @@
+r"""
+The interactive pages of the worksheets
+
+- :func:`system_builder` -- enter a model in form fields, see its
+  equations, save it (:class:`~sage_dynsym.interact.builder.SystemBuilder`);
+- :func:`equations_explorer` -- choose the form of the equations (Lagrange,
+  Routh with chosen cyclic coordinates, Hamilton; Brayton--Moser and the
+  loop / node Lagrangians for circuits) and see it as LaTeX;
+- the stability explorer is
+  :meth:`~sage_dynsym.interact.stability.StabilityStudy.explorer`.
+
+All are built on Sage's ``@interact`` (``sage_interactive``) and ipywidgets;
+in a Jupyter notebook with the SageMath kernel, display the returned widget
+(or make it the last expression of a cell).
+
+EXAMPLES::
+
+    sage: from sage_dynsym import load
+    sage: from sage_dynsym.description import example_path
+    sage: from sage_dynsym.interact.pages import equations_explorer
+    sage: w = equations_explorer(load(example_path('spherical_pendulum.yaml')))
+    ...Lagrange equations of spherical pendulum
+    <IPython.core.display.Math object>
+    sage: [c.description for c in w.kwargs_widgets]
+    ['form', 'cyclic']
+    sage: w.kwargs_widgets[0].value = 'Routh'   # the page is redrawn
+    ...Routh equations of spherical pendulum
+    <IPython.core.display.Math object>
+"""
+from ..errors import DynSymError
+
+
+def equations_explorer(model):
+    r"""
+    The equations-explorer page for ``model`` (a mechanical system, a
+    circuit or a Lagrangian): a choice of form and of the cyclic
+    coordinates for Routh's form.
+
+    OUTPUT: the interactive widget
+    """
+    import ipywidgets as W
+    from IPython.display import display, Math
+    from sage.repl.ipython_kernel.interact import sage_interactive
+    from .forms import available_forms, derive, derivation_latex
+    from ..lagrangian import Lagrangian
+    from ..circuits import Circuit
+    forms = available_forms(model) if not isinstance(model, Lagrangian) \
+        else ['Lagrange', 'Routh', 'Hamilton']
+    if isinstance(model, Circuit):
+        coordinates = []
+    else:
+        L = model if isinstance(model, Lagrangian) else model.lagrangian()
+        coordinates = [str(q) for q in L.coordinates()]
+        cyclic = [str(q) for q in L.cyclic_coordinates()]
+    name = getattr(model, 'name', lambda: None)() or 'the model'
+    controls = {'form': W.ToggleButtons(options=forms, value=forms[0], description='form')}
+    if coordinates:
+        controls['cyclic'] = W.SelectMultiple(options=coordinates, value=cyclic,
+                                              description='cyclic', rows=min(4, len(coordinates)))
+
+    def page(form, cyclic=()):
+        print(f"{form} equations of {name}")
+        try:
+            d = derive(model, form, cyclic=cyclic)
+        except DynSymError as err:
+            print(f"not available: {err}")
+            return
+        if d.note:
+            print(d.note)
+        display(Math(derivation_latex(d)))
+
+    return sage_interactive(page, **controls)
+
+
+def system_builder():
+    r"""
+    The system-builder page (a new
+    :class:`~sage_dynsym.interact.builder.SystemBuilder`'s widget).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.interact.pages import system_builder
+        sage: system_builder()
+        VBox(children=(ToggleButtons(...
+    """
+    from .builder import SystemBuilder
+    builder = SystemBuilder()
+    builder.derive()
+    return builder.widget
