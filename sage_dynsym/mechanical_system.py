@@ -585,23 +585,23 @@ class MechanicalSystem(SageObject):
             to_symbolic = data[0].symbolic
             A = matrix(SR, [[to_symbolic(e) for e in row] for row in data[1]])
             A1 = vector(SR, [to_symbolic(e) for e in data[2]])
-            A0 = to_symbolic(data[3])
+            A0 = to_symbolic(data[3]) + self.force_function()
         A.set_immutable()
         return A, A1, A0
 
     @cached_method
     def _polynomial_decomposition(self):
         r"""
-        ``(calculus, A, A1, A0)`` of the whole system (force function
-        included) in the polynomial ring of :meth:`_polynomial_kinematics`,
-        or ``None`` when the model is not polynomial there.
+        ``(calculus, A, A1, T0)`` of the kinetic energy of the whole system
+        in the polynomial ring of :meth:`_polynomial_kinematics`, or ``None``
+        when the model is not polynomial there. (The force function stays
+        symbolic: it may hold any expression, e.g. `1/r^3`.)
         """
         kinematics = self._polynomial_kinematics()
         if kinematics is None:
             return None
         try:
             calculus = kinematics._backend.calculus(self._coordinates)
-            U = kinematics._backend.convert(self.force_function())
         except NotPolynomial:
             return None
         # sum the polynomials first: contributions of the bodies combine
@@ -610,8 +610,8 @@ class MechanicalSystem(SageObject):
         zero = calculus.zero
         A = [[sum((p[0][i][j] for p in parts), zero) for j in range(n)] for i in range(n)]
         A1 = [sum((p[1][i] for p in parts), zero) for i in range(n)]
-        A0 = sum((p[2] for p in parts), zero) + U
-        return calculus, A, A1, A0
+        T0 = sum((p[2] for p in parts), zero)
+        return calculus, A, A1, T0
 
     @cached_method
     def kinetic_energy(self, k=None):
@@ -675,9 +675,12 @@ class MechanicalSystem(SageObject):
         builder = None
         if data is not None:
             def builder():
-                return natural_equations(data[1], data[2], data[3], self._coordinates,
-                                         self._velocities,
-                                         [acceleration(q) for q in self._coordinates], data[0])
+                kinetic = natural_equations(data[1], data[2], data[3], self._coordinates,
+                                            self._velocities,
+                                            [acceleration(q) for q in self._coordinates],
+                                            data[0])
+                U = self.force_function()
+                return [e - U.diff(q) for e, q in zip(kinetic, self._coordinates)]
         return Lagrangian(None, self._coordinates, self._velocities,
                           decomposition=self.decomposition(), dissipation=self._dissipation,
                           forces=self._forces, name=self._name, equation_builder=builder)

@@ -24,8 +24,11 @@ EXAMPLES::
     sage: R.to_symbolic(M*ca^2 + M*sa^2*cb^2 + M*sa^2*sb^2)
     m
     sage: R.to_symbolic(ca^3)
-    -cos(a)*sin(a)^2 + cos(a)
+    -(sin(a)^2 - 1)*cos(a)
 """
+from collections import Counter
+from itertools import chain
+
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
@@ -158,20 +161,51 @@ class TrigPolynomialRing:
     def to_symbolic(self, element):
         r"""
         The symbolic expression of ``element`` after reduction modulo
-        `\cos^2+\sin^2 = 1`, built as one n-ary sum of products (much
-        faster than converting term by term).
+        `\cos^2+\sin^2 = 1`, in *recursive* form: the variable occurring
+        in most terms is factored out, then recursively in each group
+        (a multivariate Horner scheme). Typically half the size of the
+        expanded form and smaller than nested kinematic expressions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: a, m, l = var('a m l')
+            sage: R = TrigPolynomialRing([a], [m, l])
+            sage: c, s = R.trig(a)
+            sage: M, L = R.convert(m), R.convert(l)
+            sage: R.to_symbolic(M*L^2*c^2 + M*L*s + M*c^2)
+            -((l^2 + 1)*sin(a)^2 - l^2 - l*sin(a) - 1)*m
         """
         reduced = self._ideal.reduce(element) if self._pairs else element
-        powers, terms = {}, []
-        for exponents, coefficient in reduced.dict().items():
-            factors = [SR(coefficient)]
-            for index, e in exponents.sparse_iter():
-                key = (index, e)
-                if key not in powers:
-                    powers[key] = self._values[index] ** e
-                factors.append(powers[key])
-            terms.append(SR(1).mul(*factors))
-        return SR(0).add(*terms) if terms else SR(0)
+        terms = [(dict(exponents.sparse_iter()), coefficient)
+                 for exponents, coefficient in reduced.dict().items()]
+        return self._recursive(terms, {}) if terms else SR(0)
+
+    def _recursive(self, terms, powers):
+        def power(index, e):
+            if (index, e) not in powers:
+                powers[index, e] = self._values[index] ** e
+            return powers[index, e]
+
+        def monomial(exponents, coefficient):
+            return SR(1).mul(SR(coefficient), *[power(i, e) for i, e in exponents.items()])
+
+        if len(terms) == 1:
+            return monomial(*terms[0])
+        counts = Counter(chain.from_iterable(exponents.keys() for exponents, _ in terms))
+        if not counts or max(counts.values()) == 1:
+            return SR(0).add(*[monomial(*term) for term in terms])
+        variable = max(counts, key=lambda i: (counts[i], -i))
+        groups = {}
+        for exponents, coefficient in terms:
+            e = exponents.get(variable, 0)
+            if e:
+                exponents = dict(exponents)
+                del exponents[variable]
+            groups.setdefault(e, []).append((exponents, coefficient))
+        return SR(0).add(*[self._recursive(group, powers) * power(variable, e) if e
+                           else self._recursive(group, powers)
+                           for e, group in groups.items()])
 
     def calculus(self, coordinates):
         r"""
