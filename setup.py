@@ -1,4 +1,6 @@
 """Installation script of sage_dynsym (also usable as ``sage -pip install .``)."""
+import glob
+
 from setuptools import setup, find_packages
 
 setup(
@@ -18,5 +20,7 @@ setup(
         "passagemath": ["passagemath-standard~=10.8"],
         "test": ["pytest", "sympy", "scipy"],
     },
+    # the bundled description files, also for a non-editable install
+    data_files=[("share/sage_dynsym/examples", sorted(glob.glob("examples/*.yaml")))],
     entry_points={"console_scripts": ["sage-dynsym = sage_dynsym.__main__:main"]},
 )

@@ -53,6 +53,7 @@ EXAMPLES::
     True
 """
 import os
+import sys
 
 import yaml
 
@@ -79,7 +80,11 @@ def example_path(name):
         'spherical_pendulum.yaml'
     """
     here = os.path.dirname(os.path.abspath(__file__))
-    return os.path.join(os.path.dirname(here), 'examples', name)
+    in_source = os.path.join(os.path.dirname(here), 'examples', name)
+    if os.path.exists(in_source):
+        return in_source
+    # installed with pip: setup.py puts the examples under <prefix>/share
+    return os.path.join(sys.prefix, 'share', 'sage_dynsym', 'examples', name)
 
 
 def read_yaml(path):
