@@ -20,6 +20,7 @@ EXAMPLES::
     (dtheta, dpsi*sin(theta), dpsi*cos(theta))
 """
 from sage.misc.cachefunc import cached_method
+from sage.misc.verbose import verbose
 from sage.rings.rational_field import QQ
 
 from .expressions import time_derivative
@@ -133,6 +134,7 @@ class Kinematics:
         n = len(self._coordinates)
         zero = backend.zero
         body = self._bodies[k - 1]
+        verbose(f"kinetic energy of body {k} ({body.name()})", level=1)
         if body.is_massless():
             return [[zero] * n for _ in range(n)], [zero] * n, zero
         frame = self._frames[k]

@@ -35,6 +35,7 @@ EXAMPLES::
     ....:                   SymbolicCalculus([r, phi]))
     [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
 """
+from sage.misc.verbose import verbose
 from sage.symbolic.ring import SR
 
 from .expressions import t
@@ -97,9 +98,19 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
 
     OUTPUT: a list of symbolic expressions `E_i`
 
-    TESTS::
+    Progress is reported through Sage's ``verbose`` at level 1::
 
         sage: from sage_dynsym.natural_equations import natural_equations, SymbolicCalculus
+        sage: x = var('x')
+        sage: set_verbose(1)
+        sage: natural_equations([[1]], [0], -x^2/2, [x], [var('dx')], [var('ddx')],
+        ....:                   SymbolicCalculus([x]))
+        verbose 1 (...) Lagrange equation 1 of 1 (x)
+        [ddx + x]
+        sage: set_verbose(0)
+
+    TESTS::
+
         sage: natural_equations([], [], 0, [], [], [], SymbolicCalculus([]))
         []
     """
@@ -119,6 +130,8 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
 
     equations = []
     for i in range(n):
+        # progress of long derivations: set_verbose(1) to see it
+        verbose(f"Lagrange equation {i + 1} of {n} ({coordinates[i]})", level=1)
         terms = [term(A[i][r], accelerations[r]) for r in range(n)]
         for r in range(n):
             terms.append(term(dA_(r, i, r) - dA_(i, r, r) / 2, velocities[r] ** 2))
