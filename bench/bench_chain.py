@@ -18,7 +18,9 @@ largest relative difference is printed (a correctness guard).
 
 Usage: ``python bench/bench_chain.py [--quick] [--max-n N] [--timeout S]``
 (``--quick``: N = 1..3, 60 s timeout). Once SymPy times out at some N it is
-not run for larger N (its cost only grows).
+not run for larger N (its cost only grows). The timeout covers the whole
+worker; the derivation time is reported even when only the untimed size or
+evaluation step overran it.
 """
 import argparse
 import json
@@ -51,6 +53,15 @@ def _size(exprs):
     return sum(len(str(e).replace(' ', '').replace('**', '^')) for e in exprs)
 
 
+def _report(result=None, **new):
+    """Print the results so far (one JSON line each time, the last is the
+    most complete) so that a timeout in the untimed size / evaluation steps
+    still leaves the derivation time."""
+    result = dict(result or {}, **new)
+    print(json.dumps(result), flush=True)
+    return result
+
+
 def worker_sage(n):
     import sympy
     from sage.all import SR, fast_callable, RDF
@@ -75,12 +86,13 @@ def worker_sage(n):
     S = MechanicalSystem(bodies, coordinates=coordinates, parameters=parameters,
                          force_function=UniformGravity(gravity))
     E = S.lagrangian().lagrange_equations()
-    elapsed = time.perf_counter() - start
+    result = _report(time=time.perf_counter() - start)
+    result = _report(result, size=_size(E))
     point = _point(desc)
     order = sorted(point)
     values = [float(fast_callable(SR(e), vars=[SR.var(s) for s in order], domain=RDF)(
         *[point[s] for s in order])) for e in E]
-    return dict(time=elapsed, size=_size(E), values=values)
+    _report(result, values=values)
 
 
 def worker_sympy(n):
@@ -90,25 +102,35 @@ def worker_sympy(n):
     start = time.perf_counter()
     chain = SympyChain(desc['bodies'], desc['coordinates'], desc['gravity'], desc['parameters'])
     eom = chain.lagrange_equations(plain=False)
-    elapsed = time.perf_counter() - start
+    result = _report(time=time.perf_counter() - start)
     E = [chain.to_plain(e) for e in eom]
+    result = _report(result, size=_size(E))
     point = _point(desc)
     order = sorted(point)
     f = sympy.lambdify([sympy.Symbol(s) for s in order], E, modules='math', cse=True)
-    values = [float(v) for v in f(*[point[s] for s in order])]
-    return dict(time=elapsed, size=_size(E), values=values)
+    _report(result, values=[float(v) for v in f(*[point[s] for s in order])])
 
 
 def run(tool, n, timeout):
-    """Run one worker in a fresh interpreter; its result dict or 'timeout'."""
+    """
+    Run one worker in a fresh interpreter. Return its result dict (it may lack
+    ``size`` / ``values`` if the timeout came after the derivation),
+    ``'timeout'`` if the derivation itself did not finish, or ``'error: ...'``.
+    """
     cmd = [sys.executable, os.path.abspath(__file__), '--worker', tool, str(n)]
     try:
         out = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        return 'timeout'
-    if out.returncode != 0:
+        stdout, failed = out.stdout, out.returncode != 0
+    except subprocess.TimeoutExpired as timeout_error:
+        stdout, failed = timeout_error.stdout or '', False
+        if isinstance(stdout, bytes):
+            stdout = stdout.decode()
+    lines = [line for line in stdout.splitlines() if line.startswith('{')]
+    if lines:
+        return json.loads(lines[-1])
+    if failed:
         return 'error: ' + (out.stderr.strip().splitlines() or ['?'])[-1]
-    return json.loads(out.stdout.strip().splitlines()[-1])
+    return 'timeout'
 
 
 def _relative_difference(a, b):
@@ -125,8 +147,7 @@ def main():
     args = parser.parse_args()
     if args.worker:
         tool, n = args.worker
-        result = (worker_sage if tool == 'sage' else worker_sympy)(int(n))
-        print(json.dumps(result))
+        (worker_sage if tool == 'sage' else worker_sympy)(int(n))
         return
     max_n = args.max_n or (3 if args.quick else 6)
     timeout = args.timeout or (60 if args.quick else 300)
@@ -136,29 +157,34 @@ def main():
     sympy_gave_up = None
     for n in range(1, max_n + 1):
         sage = run('sage', n, timeout)
-        sym = 'timeout (not run: timed out at N = %d)' % sympy_gave_up if sympy_gave_up \
-            else run('sympy', n, timeout)
+        sym = 'skipped' if sympy_gave_up else run('sympy', n, timeout)
         if sym == 'timeout':
             sympy_gave_up = n
+        done = [isinstance(r, dict) for r in (sage, sym)]
         cells = [f"{n:>2}"]
-        cells.append(f"{sage['time']:>14.2f}" if isinstance(sage, dict) else f"{sage:>14}")
-        cells.append(f"{sym['time']:>10.2f}" if isinstance(sym, dict) else f"{'timeout':>10}")
-        both = isinstance(sage, dict) and isinstance(sym, dict)
-        if both:
+        cells.append(f"{sage['time']:>14.2f}" if done[0] else f"{sage:>14.14}")
+        cells.append(f"{sym['time']:>10.2f}" if done[1] else f"{sym:>10.10}")
+        if all(done):
             cells.append(f"{sym['time'] / sage['time']:>8.1f}x")
-        elif isinstance(sage, dict) and str(sym).startswith('timeout'):
+        elif done[0] and str(sym).startswith('timeout'):
             cells.append(f"{'>' + format(timeout / sage['time'], '.0f') + 'x':>9}")
         else:
             cells.append(f"{'-':>9}")
-        cells.append(f"{sage['size']:>10}" if isinstance(sage, dict) else f"{'-':>10}")
-        cells.append(f"{sym['size']:>11}" if isinstance(sym, dict) else f"{'-':>11}")
-        cells.append(f"{sage['size'] / sym['size']:>10.3f}" if both else f"{'-':>10}")
-        cells.append(f"{_relative_difference(sage['values'], sym['values']):>12.1e}"
-                     if both else f"{'-':>12}")
+        sizes = [r.get('size') if isinstance(r, dict) else None for r in (sage, sym)]
+        cells += [f"{sizes[0] or 'n/a':>10}", f"{sizes[1] or 'n/a':>11}"]
+        cells.append(f"{sizes[0] / sizes[1]:>10.3f}" if all(sizes) else f"{'-':>10}")
+        values = [r.get('values') if isinstance(r, dict) else None for r in (sage, sym)]
+        cells.append(f"{_relative_difference(*values):>12.1e}" if all(values) else f"{'-':>12}")
         print(" ".join(cells), flush=True)
         for tool, r in (('sage_dynsym', sage), ('SymPy', sym)):
             if isinstance(r, str) and r.startswith('error'):
                 print(f"   {tool} failed at N = {n}: {r}", flush=True)
+            if isinstance(r, dict) and 'values' not in r:
+                print(f"   {tool} at N = {n}: derived in {r['time']:.1f} s; output size / "
+                      "numerical evaluation did not finish within the timeout", flush=True)
+    if sympy_gave_up:
+        print(f"SymPy timed out at N = {sympy_gave_up}; 'skipped' = not run for larger N "
+              "(its cost only grows).")
 
 
 if __name__ == '__main__':
