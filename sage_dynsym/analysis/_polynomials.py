@@ -83,14 +83,32 @@ def to_sr(poly):
     r"""
     Convert a polynomial (or a constant) back to ``SR``.
 
+    Builds the sum in one step: ``SR(poly)`` adds the terms one by one,
+    which is quadratic in the number of terms (18 s instead of 0.8 s for
+    20000 terms).
+
     EXAMPLES::
 
         sage: from sage_dynsym.analysis._polynomials import to_sr
         sage: R.<x,y> = QQ[]
-        sage: to_sr(x*y - 1/2).parent()
-        Symbolic Ring
+        sage: e = to_sr(x*y^2 - 1/2); e, e.parent()
+        (x*y^2 - 1/2, Symbolic Ring)
+        sage: to_sr(QQ(3))
+        3
     """
-    return SR(poly)
+    parent = poly.parent() if hasattr(poly, 'parent') else None
+    if parent is None or not hasattr(parent, 'gens') or parent is QQ or \
+            not hasattr(poly, 'dict') or parent.ngens() == 1:
+        return SR(poly)
+    gens = [SR.var(str(v)) for v in parent.gens()]
+    terms = []
+    for exps, c in poly.dict().items():
+        term = SR(c)
+        for i, e in enumerate(exps):
+            if e:
+                term = term * gens[i] ** e
+        terms.append(term)
+    return SR.sum(terms) if terms else SR(0)
 
 
 def positive_polynomial(f, positive):

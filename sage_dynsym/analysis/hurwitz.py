@@ -87,7 +87,7 @@ from sage.symbolic.ring import SR
 from sage.structure.element import Element
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_ring, positive_polynomial
+from ._polynomials import parameter_ring, to_ring, to_sr, positive_polynomial
 
 #: Default limit on the term multiplications of one product in the
 #: fraction-free Routh scheme before determinants are left unexpanded.
@@ -339,7 +339,7 @@ def hurwitz_determinants(poly, var, upto=None, budget=DEFAULT_BUDGET):
         [0, -1, -1]
     """
     a = _normalized_coefficients(poly, var)
-    return [SR(d) if not isinstance(d, _Unexpanded) else d.expr
+    return [to_sr(d) if not isinstance(d, _Unexpanded) else d.expr
             for d in _determinants(a, upto or len(a) - 1, budget)[1:]]
 
 
@@ -355,7 +355,7 @@ def _determinants(a, upto, budget):
             deltas += [H[:k, :k].det() for k in range(reached + 1, upto + 1)]
         else:
             hring, generic = _generic_determinants(n, upto)
-            subs = {SR.var('h%d' % i): SR(c) for i, c in enumerate(a)}
+            subs = {SR.var("h%d" % i): to_sr(c) for i, c in enumerate(a)}
             deltas += [_Unexpanded(SR(generic[k]).subs(subs))
                        for k in range(reached + 1, upto + 1)]
     return deltas
@@ -380,9 +380,12 @@ def _simplify_one(f, positive):
     if _is_constant(f):
         c = _constant(f)
         return (None, None) if c > 0 else (f.parent()(c.sign()), None)
+    if positive_polynomial(f, positive):
+        return None, None
+    if positive_polynomial(-f, positive):
+        return f.parent()(-1), None
     if len(f.dict()) > FACTOR_LIMIT:
-        c = f.content() if hasattr(f, 'content') else 1
-        return f / abs(c) if c else f, frozenset([f / abs(c)])
+        return f, frozenset([f])
     F = f.factor()
     sign = QQ(F.unit()).sign()
     kept = []
@@ -398,13 +401,13 @@ def _simplify_one(f, positive):
             kept.append(g)
     if not kept:
         return (None, None) if sign > 0 else (f.parent()(-1), None)
-    prod = sign
+    product = sign
     for g in kept:
-        prod *= g
+        product *= g
     if len(kept) == 1 and sign < 0:
         kept = [-kept[0]]
         sign = 1
-    return prod, (frozenset(kept) if sign > 0 else frozenset([prod]))
+    return product, (frozenset(kept) if sign > 0 else frozenset([product]))
 
 
 def simplify_conditions(conditions, positive=()):
@@ -432,7 +435,6 @@ def simplify_conditions(conditions, positive=()):
         sage: simplify_conditions([a, b, 4*a*b], positive=[m])
         [a, b]
     """
-    result, polys = [], []
     native = lambda f: isinstance(f, _Unexpanded) or (
         isinstance(f, Element) and _is_polynomial_ring(f.parent()))
     symbols = set()
@@ -440,26 +442,45 @@ def simplify_conditions(conditions, positive=()):
         if not native(f):
             symbols |= set(SR(f).variables())
     ring = parameter_ring(symbols)
-    for f in conditions:
-        polys.append(f if native(f) else to_ring(SR(f), ring, "condition"))
+    polys = [f if native(f) else to_ring(SR(f), ring, "condition") for f in conditions]
+    return _to_sr(_reduce(polys, positive))
+
+
+def _reduce(polys, positive):
+    r"""
+    Simplified conditions as a list of entries: a tuple of factors (a
+    product of polynomials, all required ``> 0`` together), or an
+    :class:`_Unexpanded`. Stays in the polynomial rings.
+    """
     positive = _positive_names(positive)
+    result = []
     known = []          # single factors already required to be positive
     for f in polys:
         g, fs = _simplify_one(f, positive)
         if g is None:
             continue
         if fs is None:
-            result.append(SR(g))
+            result.append(_Unexpanded(g) if isinstance(f, _Unexpanded) else (g,))
             continue
         rest = [h for h in fs if h not in known]
         if not rest:
             continue
         if len(rest) == 1:
             known.append(rest[0])
-        result.append(prod(SR(h) for h in sorted(rest, key=str)) if len(rest) > 1
-                      else SR(rest[0]))
-    impossible = [g for g in result if g.is_constant()]
+        result.append(tuple(sorted(rest, key=_order_key)))
+    impossible = [e for e in result if not isinstance(e, _Unexpanded)
+                  and len(e) == 1 and _is_constant(e[0])]
     return impossible[:1] if impossible else result
+
+
+def _order_key(f):
+    n = len(f.dict())
+    return (n, str(f) if n < 1000 else '')
+
+
+def _to_sr(entries):
+    return [e.expr if isinstance(e, _Unexpanded) else prod(to_sr(h) for h in e)
+            for e in entries]
 
 
 # ---------------------------------------------------------------------------
@@ -523,7 +544,7 @@ def hurwitz_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     n = len(a) - 1
     deltas = _determinants(a, n - 1, budget)
     conds = [a[0]] + deltas[1:n] + [a[n]]
-    return simplify_conditions(conds, positive)
+    return _to_sr(_reduce(conds, positive))
 
 
 def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
@@ -570,10 +591,8 @@ def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     deltas = _determinants(a, n - 1, budget) if det_idx else [None]
     first = [a[i] for i in range(n, -1, -2)]
     second = [a[n]] + [a[i] for i in range(n - 1, -1, -2)]
-    firsts = [simplify_conditions([a[0]] + cs, positive) for cs in (first, second)]
-    coeff_conds = min(firsts, key=len)
-    dets = simplify_conditions([deltas[k] for k in det_idx], positive)
-    return simplify_conditions(coeff_conds + dets, positive) if dets else coeff_conds
+    coeffs = min((first, second), key=lambda cs: len(_reduce([a[0]] + cs, positive)))
+    return _to_sr(_reduce([a[0]] + coeffs + [deltas[k] for k in det_idx], positive))
 
 
 # ---------------------------------------------------------------------------

@@ -50,7 +50,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring
+from ._polynomials import parameter_ring, to_sr
 
 
 def _at(expr, point):
@@ -85,9 +85,10 @@ def _check_equilibrium(values, point):
                                 entry="linearize")
 
 
-def _fraction_free_det(A):
+def _fraction_free_det(A, as_polynomial=False):
     r"""``det(A)`` with each row multiplied by the lcm of its denominators,
-    over a polynomial ring when the entries are rational in their symbols."""
+    over a polynomial ring when the entries are rational in their symbols
+    (returned as a polynomial if ``as_polynomial``, else in ``SR``)."""
     symbols = set()
     for e in A.list():
         symbols |= set(SR(e).variables())
@@ -96,6 +97,9 @@ def _fraction_free_det(A):
         F = R.fraction_field() if R is not QQ else QQ
         AF = matrix(F, [[F(SR(e)) for e in row] for row in A.rows()])
     except (TypeError, ValueError, ZeroDivisionError):
+        if as_polynomial:
+            raise AnalysisError("the characteristic matrix is not rational in its "
+                                "symbols; use as_polynomial=False", entry="linearize")
         return _symbolic_fraction_free_det(A)
     rows = []
     for row in AF.rows():
@@ -105,7 +109,8 @@ def _fraction_free_det(A):
         if (d if R is QQ else d.lc()) < 0:
             d = -d
         rows.append([R(e * d) for e in row])
-    return SR(matrix(R, rows).det())
+    det = matrix(R, rows).det()
+    return det if as_polynomial else to_sr(det)
 
 
 def _symbolic_fraction_free_det(A):
@@ -268,7 +273,7 @@ class LinearSystem(SageObject):
             return self._B * lam - self._J
         return self._M * lam ** 2 + self._S * lam + self._W
 
-    def characteristic_polynomial(self, lam):
+    def characteristic_polynomial(self, lam, as_polynomial=False):
         r"""
         The characteristic polynomial, fraction-free (see the module
         documentation), expanded.
@@ -276,6 +281,9 @@ class LinearSystem(SageObject):
         INPUT:
 
         - ``lam`` -- a symbolic variable
+        - ``as_polynomial`` -- (default: ``False``) return an element of the
+          polynomial ring over `\QQ` in ``lam`` and the parameters instead of
+          a symbolic expression (faster for large systems)
 
         EXAMPLES::
 
@@ -286,7 +294,8 @@ class LinearSystem(SageObject):
             sage: Ls.characteristic_polynomial(var('lam'))
             C1*L1*lam^2 + L1*lam*r + 1
         """
-        return _fraction_free_det(self.characteristic_matrix(SR(lam))).expand()
+        det = _fraction_free_det(self.characteristic_matrix(SR(lam)), as_polynomial)
+        return det if as_polynomial else det.expand()
 
     def force_structure(self):
         r"""
