@@ -17,7 +17,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import sympy
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference.sympy_chain import SympyChain  # noqa: E402
