@@ -236,3 +236,14 @@ def test_reference_reproduces_example_1():
     eq9_psi = ddpsi + 2 * sympy.cot(theta) * dtheta * dpsi
     assert sympy.simplify(E_theta - m * l * eq9_theta) == 0
     assert sympy.simplify(E_psi - m * l**2 * sympy.sin(theta)**2 * eq9_psi) == 0
+
+
+def test_reference_does_not_use_sage_dynsym():
+    """The reference package stays independent of the code under test."""
+    for path in (Path(__file__).resolve().parent / 'reference').glob('*.py'):
+        for line in path.read_text().splitlines():
+            words = line.split()
+            assert not (words[:1] in (['import'], ['from']) and 'sage_dynsym' in line), (
+                f"{path.name} imports sage_dynsym: {line}")
+            assert not (words[:1] in (['import'], ['from']) and words[1].startswith('sage')), (
+                f"{path.name} imports Sage: {line}")
