@@ -150,12 +150,14 @@ def polynomial_coefficients(poly, var):
             return coeffs, parent.base_ring().one()
         ring = parameter_ring([v for v in names if v != name])
         idx = names.index(name)
+        gens = [None if v == name else ring(v) for v in names]
         by_power = {}
         for exps, c in poly.dict().items():
-            exps = tuple(exps)
-            rest = tuple(exps[:idx]) + tuple(exps[idx + 1:])
-            mono = ring.monomial(*rest) if ring is not QQ else QQ(1)
-            by_power[exps[idx]] = by_power.get(exps[idx], 0) + QQ(c) * mono
+            mono = QQ(c)
+            for g, e in zip(gens, exps):
+                if g is not None and e:
+                    mono *= g ** e
+            by_power[exps[idx]] = by_power.get(exps[idx], 0) + mono
         den = ring(1)
     else:
         expr = SR(poly)
