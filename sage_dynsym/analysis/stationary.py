@@ -414,12 +414,17 @@ class ModifiedRouthLyapunov(SageObject):
         r"""
         The ODE for `f`: the equation `\partial\tilde R/\partial q = 0` with
         `\dot q` from :meth:`velocity_on_manifold` must hold for every `q`.
-        Returned as an expression (``== 0``), normalized to
-        `f f' = \dots`-form divided by its coefficient.
+        Returned solved for the derivative, ``diff(f(q), q) == ...``.
         """
         dRq = self.stationarity_equations()[0]
         e = dRq.subs({self._dq: self.velocity_on_manifold()})
-        return _simplify(e)
+        fq = self._f(self._q)
+        fp = fq.diff(self._q)
+        tmp = SR.var('fprime_')
+        sol = solve(e.subs({fp: tmp}) == 0, tmp, solution_dict=True)
+        if len(sol) != 1:
+            return _simplify(e) == 0
+        return fp == _simplify(sol[0][tmp])
 
     def solve_degeneracy(self):
         r"""
@@ -431,7 +436,7 @@ class ModifiedRouthLyapunov(SageObject):
         fq = self._f(self._q)
         sol = desolve(self.degeneracy_condition(), fq, ivar=self._q)
         explicit = solve(sol, fq)
-        return explicit if explicit else [sol]
+        return [fq == _simplify(e.rhs()) for e in explicit] if explicit else [sol]
 
     def invariant_manifolds(self):
         r"""
