@@ -91,7 +91,7 @@ from ._polynomials import parameter_ring, to_ring, to_sr, positive_polynomial
 
 #: Default limit on the term multiplications of one product in the
 #: fraction-free Routh scheme before determinants are left unexpanded.
-DEFAULT_BUDGET = 2 * 10**7
+DEFAULT_BUDGET = 5 * 10**6
 
 #: Polynomials with more terms than this are not factored.
 FACTOR_LIMIT = 3000
@@ -307,7 +307,7 @@ def hurwitz_determinants(poly, var, upto=None, budget=DEFAULT_BUDGET):
 
     - ``poly``, ``var`` -- as in :func:`hurwitz_matrix`
     - ``upto`` -- (default: `n`) the last determinant wanted
-    - ``budget`` -- (default: ``2*10^7``) the largest number of term
+    - ``budget`` -- (default: ``5*10^6``) the largest number of term
       multiplications of one product in the fraction-free Routh scheme;
       determinants beyond it are returned unexpanded (see the module
       documentation); ``None`` -- always expand
