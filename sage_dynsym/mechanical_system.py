@@ -607,10 +607,13 @@ class MechanicalSystem(SageObject):
         # sum the polynomials first: contributions of the bodies combine
         n = len(self._coordinates)
         parts = [kinematics.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
-        zero = calculus.zero
-        A = [[sum((p[0][i][j] for p in parts), zero) for j in range(n)] for i in range(n)]
-        A1 = [sum((p[1][i] for p in parts), zero) for i in range(n)]
-        T0 = sum((p[2] for p in parts), zero)
+        zero, reduce = calculus.zero, kinematics._backend.reduce
+        A = [[None] * n for _ in range(n)]
+        for i in range(n):
+            for j in range(i, n):
+                A[i][j] = A[j][i] = reduce(sum((p[0][i][j] for p in parts), zero))
+        A1 = [reduce(sum((p[1][i] for p in parts), zero)) for i in range(n)]
+        T0 = reduce(sum((p[2] for p in parts), zero))
         return calculus, A, A1, T0
 
     @cached_method

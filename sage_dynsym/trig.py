@@ -158,10 +158,26 @@ class TrigPolynomialRing:
     def at_zero(self, element, symbols):
         return element.subs({self.ring(str(v)): 0 for v in symbols})
 
-    def to_symbolic(self, element):
+    def reduce(self, element):
+        r"""
+        The normal form of ``element`` modulo `\cos^2+\sin^2 = 1`: no
+        monomial divisible by the square of a cosine.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: R = TrigPolynomialRing([var('a')], [])
+            sage: c, s = R.trig(var('a'))
+            sage: R.reduce(c^3)
+            -dynsymcos0*dynsymsin0^2 + dynsymcos0
+        """
+        return self._ideal.reduce(element) if self._pairs else element
+
+    def to_symbolic(self, element, reduced=False):
         r"""
         The symbolic expression of ``element`` after reduction modulo
-        `\cos^2+\sin^2 = 1`, in *recursive* form: the variable occurring
+        `\cos^2+\sin^2 = 1` (skipped if ``reduced`` says it is already
+        reduced, see :meth:`reduce`), in *recursive* form: the variable occurring
         in most terms is factored out, then recursively in each group
         (a multivariate Horner scheme). Typically half the size of the
         expanded form and smaller than nested kinematic expressions.
@@ -176,9 +192,10 @@ class TrigPolynomialRing:
             sage: R.to_symbolic(M*L^2*c^2 + M*L*s + M*c^2)
             -((l^2 + 1)*sin(a)^2 - l^2 - l*sin(a) - 1)*m
         """
-        reduced = self._ideal.reduce(element) if self._pairs else element
+        if not reduced:
+            element = self.reduce(element)
         terms = [(dict(exponents.sparse_iter()), coefficient)
-                 for exponents, coefficient in reduced.dict().items()]
+                 for exponents, coefficient in element.dict().items()]
         return self._recursive(terms, {}) if terms else SR(0)
 
     def _recursive(self, terms, powers):
@@ -231,7 +248,8 @@ class RingCalculus:
     `\partial_q \sin\theta = \cos\theta\, \partial_q\theta`, plus
     the direct dependence of coordinates used as polynomial variables (e.g. a
     sliding coordinate). The interface is that of
-    :class:`~sage_dynsym.natural_equations.SymbolicCalculus`.
+    :class:`~sage_dynsym.natural_equations.SymbolicCalculus`. Elements must
+    be reduced (:meth:`TrigPolynomialRing.reduce`); derivatives stay reduced.
 
     Raises :class:`NotPolynomial` if an angle's derivative is not polynomial.
 
@@ -270,11 +288,17 @@ class RingCalculus:
         return self.ring.convert(expr)
 
     def _through_angles(self, element, select):
+        # element = p0 + c p1 is reduced (no c^2); its derivative
+        # -s p1 + c dp0/ds + c^2 dp1/ds is kept reduced with c^2 = 1 - s^2,
+        # so that no Groebner reduction is ever needed afterwards
         result = self.zero
         for c, s, by_coordinate, rate in self._chains:
             factor = select(by_coordinate, rate)
             if factor is not None:
-                result += factor * (-s * element.derivative(c) + c * element.derivative(s))
+                p1 = element.derivative(c)
+                p0 = element - c * p1
+                result += factor * (-s * p1 + c * p0.derivative(s)
+                                    + (1 - s ** 2) * p1.derivative(s))
         return result
 
     def derivative(self, element, k):
@@ -304,4 +328,4 @@ class RingCalculus:
         return element.is_zero()
 
     def symbolic(self, element):
-        return self.ring.to_symbolic(element)
+        return self.ring.to_symbolic(element, reduced=True)
