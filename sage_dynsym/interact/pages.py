@@ -26,6 +26,11 @@ EXAMPLES::
     sage: w.kwargs_widgets[0].value = 'Routh'   # the page is redrawn
     ...Routh equations of spherical pendulum
     <IPython.core.display.Math object>
+    sage: w = equations_explorer(load(example_path('rlc_ladder.yaml')))
+    ...Brayton-Moser equations of RLC ladder with three sections
+    <IPython.core.display.Math object>
+    sage: [c.description for c in w.kwargs_widgets]
+    ['form']
 """
 from ..errors import DynSymError
 
@@ -58,7 +63,8 @@ def equations_explorer(model):
         controls['cyclic'] = W.SelectMultiple(options=coordinates, value=cyclic,
                                               description='cyclic', rows=min(4, len(coordinates)))
 
-    def page(form, cyclic=()):
+    def page(form, **cyclic_choice):     # no cyclic control for circuits
+        cyclic = cyclic_choice.get('cyclic', ())
         print(f"{form} equations of {name}")
         try:
             d = derive(model, form, cyclic=cyclic)
