@@ -66,7 +66,7 @@ def run_sympy(n, timeout):
 
 
 def chain(n):
-    from sage.all import PolynomialRing, QQ, matrix, SR
+    from sage.all import matrix, SR
     from sage_dynsym.analysis.linear import LinearSystem
     m = [SR.var('m%d' % i) for i in range(1, n + 1)]
     k = [SR.var('k%d' % i) for i in range(1, n + 2)]

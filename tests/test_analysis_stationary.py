@@ -5,7 +5,7 @@ import random
 
 import numpy as np
 import pytest
-from sage.all import SR, QQ, RDF, var, sin, cos, matrix, function
+from sage.all import SR, QQ, RDF, var, cos, matrix, function
 
 from sage_dynsym import load
 from sage_dynsym.analysis import (stationary_solutions, stationary_motions,

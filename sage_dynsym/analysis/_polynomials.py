@@ -6,8 +6,6 @@ over polynomial rings with rational coefficients (Singular), and only the
 results are converted back to ``SR``.
 """
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
-from sage.rings.polynomial.polynomial_ring import PolynomialRing_generic
-from sage.rings.polynomial.multi_polynomial_ring_base import MPolynomialRing_base
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 from sage.structure.element import Element
@@ -56,27 +54,6 @@ def to_ring(expr, ring, what="expression"):
         gens = ', '.join(map(str, ring.gens())) if ring is not QQ else 'constants'
         raise AnalysisError(f"expected a polynomial in {gens} with rational "
                             f"coefficients, got {expr}", entry=what) from None
-
-
-def to_fraction(expr, symbols, what="expression"):
-    r"""
-    Write ``expr`` as ``numerator / denominator`` with both in the
-    polynomial ring of ``symbols``.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis._polynomials import to_fraction, parameter_ring
-        sage: a, b = var('a b')
-        sage: to_fraction(a/b + 1, [a, b])
-        (a + b, b)
-    """
-    ring = parameter_ring(symbols)
-    expr = SR(expr)
-    try:
-        num, den = expr.numerator_denominator(normalize=True)
-    except (TypeError, ValueError, AttributeError):
-        num, den = expr, SR(1)
-    return to_ring(num, ring, what), to_ring(den, ring, what)
 
 
 def to_sr(poly):
