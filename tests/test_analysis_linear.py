@@ -154,3 +154,19 @@ def test_bad_points():
         linearize(L, {})
     with pytest.raises(AnalysisError):
         linearize([y], {x: 0, y: 0}, [x, y])
+
+
+def test_hamiltonian_linearization_matches_lagrangian():
+    th, dth, m, l, g = var('theta dtheta m l g')
+    L = Lagrangian(m * l**2 * dth**2 / 2 + m * g * l * cos(th), [th])
+    H = L.hamiltonian()
+    (p,) = H.momenta()
+    lin_h = linearize(H, {th: 0, p: 0})
+    lin_l = linearize(L, {th: 0})
+    lam = var('lam')
+    ph = lin_h.characteristic_polynomial(lam)
+    pl = lin_l.characteristic_polynomial(lam)
+    # same roots: the polynomials are proportional
+    assert (ph * pl.coefficient(lam, 2) - pl * ph.coefficient(lam, 2)).expand() == 0
+    with pytest.raises(AnalysisError, match="not an equilibrium"):
+        linearize(H, {th: 0, p: 1})
