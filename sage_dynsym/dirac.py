@@ -3,7 +3,7 @@ Dirac's scheme for singular Lagrangians
 
 When the Hessian `W = \partial^2 L/\partial \dot q^2` is degenerate, the
 momenta `p = \partial L/\partial \dot q` are not independent: the
-*primary constraints* `\varphi_a(q, p) = 0` hold. Dirac's algorithm:
+*primary constraints* `\varphi_a(q, p) = 0` hold. Dirac's algorithm [Dir1964]_:
 
 1. canonical Hamiltonian `H_c = p\cdot\dot q - L` (well defined on the
    primary constraint surface) and total Hamiltonian
@@ -29,10 +29,10 @@ Lagrangians, Lagrange multipliers, gauge-type degeneracies).
 
 REFERENCES:
 
-- [Dir1964]_ P. A. M. Dirac, *Lectures on Quantum Mechanics*, Yeshiva
-  University, 1964.
-- [HT1992]_ M. Henneaux, C. Teitelboim, *Quantization of Gauge Systems*,
-  Princeton University Press, 1992, ch. 1.
+.. [Dir1964] P. A. M. Dirac, *Lectures on Quantum Mechanics*, Yeshiva
+   University, 1964.
+.. [HT1992] M. Henneaux, C. Teitelboim, *Quantization of Gauge Systems*,
+   Princeton University Press, 1992, ch. 1.
 
 EXAMPLES:
 

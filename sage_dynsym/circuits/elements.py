@@ -16,16 +16,16 @@ as ``[a, b, X]`` is oriented from node ``a`` to node ``b``:
 
 With these branch variables the element laws read
 
-=========================  ======================================
-kind (short-form prefix)   law
-=========================  ======================================
-resistor (``R``)           `u_b = -R\, i_b`
-inductor (``L``)           `u_b = -L(i_b)\, di_b/dt`
-capacitor (``C``)          `i_b = -C(u_b)\, du_b/dt`
-voltage_source (``E``)     `u_b = E`  (the source raises the potential from ``a`` to ``b`` by `E`)
-current_source (``I``)     `i_b = I`  (the source drives `I` from ``a`` to ``b``)
-nonlinear_resistor (``f``) `i_b = f(u_b)`
-=========================  ======================================
+============================  ==========================================================================
+kind (short-form prefix)      law
+============================  ==========================================================================
+resistor (``R``)              `u_b = -R\, i_b`
+inductor (``L``)              `u_b = -L(i_b)\, di_b/dt`
+capacitor (``C``)             `i_b = -C(u_b)\, du_b/dt`
+voltage_source (``E``)        `u_b = E`  (the source raises the potential from ``a`` to ``b`` by `E`)
+current_source (``I``)        `i_b = I`  (the source drives `I` from ``a`` to ``b``)
+nonlinear_resistor (``f``)    `i_b = f(u_b)`
+============================  ==========================================================================
 
 i.e. passive elements obey the usual laws for the voltage *drop*
 `\varphi(a) - \varphi(b) = -u_b` in the direction of the current, while
