@@ -80,19 +80,51 @@ class StabilityVerdict(SageObject):
         self._cases = list(cases)
 
     def verdict(self):
-        r"""The verdict (a string)."""
+        r"""The verdict (a string).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
+            sage: v.verdict()
+            'unstable'
+        """
         return self._verdict
 
     def reason(self):
-        r"""Why, in plain language, with the theorem used."""
+        r"""Why, in plain language, with the theorem used.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
+            sage: v.reason()
+            'the potential energy has an odd degree of instability (1): no gyroscopic or dissipative forces can stabilize it (Kelvin-Chetaev, 3rd theorem)'
+        """
         return self._reason
 
     def conditions(self):
-        r"""Conditions (expressions ``> 0``) under which the verdict holds."""
+        r"""Conditions (expressions ``> 0``) under which the verdict holds.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
+            sage: v.conditions()
+            []
+        """
         return list(self._conditions)
 
     def cases(self):
-        r"""The possible cases (each a :class:`StabilityVerdict`)."""
+        r"""The possible cases (each a :class:`StabilityVerdict`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
+            sage: len(v.cases())
+            1
+        """
         return list(self._cases) if self._cases else [self]
 
     def _repr_(self):

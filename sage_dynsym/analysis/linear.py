@@ -176,11 +176,31 @@ class LinearSystem(SageObject):
         return f"Linear system M z'' + (D + 2G) z' + (K + P) z = 0 in ({vs})"
 
     def variables(self):
-        r"""The unknowns, in order."""
+        r"""The unknowns, in order.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.variables()
+            [x, y]
+        """
         return list(self._variables)
 
     def order(self):
-        r"""1 for `B\dot x = Jx`, 2 for the second-order form."""
+        r"""1 for `B\dot x = Jx`, 2 for the second-order form.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.order()
+            2
+        """
         return self._order
 
     def _second(self):
@@ -190,34 +210,111 @@ class LinearSystem(SageObject):
                                 "function)", entry="LinearSystem")
 
     def M(self):
-        r"""The kinetic (mass) matrix `M`."""
+        r"""The kinetic (mass) matrix `M`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.M()
+            [1 0]
+            [0 1]
+        """
         self._second()
         return self._M
 
     def S(self):
-        r"""The matrix of velocity terms `S = D + 2G`."""
+        r"""The matrix of velocity terms `S = D + 2G`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.S()
+            [   d  2*g]
+            [-2*g    d]
+        """
         self._second()
         return self._S
 
     def W(self):
-        r"""The matrix of positional terms `W = K + P`."""
+        r"""The matrix of positional terms `W = K + P`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.W()
+            [ k  q]
+            [-q  k]
+        """
         self._second()
         return self._W
 
     def D(self):
-        r"""The dissipative matrix, symmetric part of `S`."""
+        r"""The dissipative matrix, symmetric part of `S`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.D()
+            [d 0]
+            [0 d]
+        """
         return ((self.S() + self.S().transpose()) / 2).apply_map(_tidy)
 
     def G(self):
-        r"""The gyroscopic matrix `G = (S - S^T)/4` (so that `S = D + 2G`)."""
+        r"""The gyroscopic matrix `G = (S - S^T)/4` (so that `S = D + 2G`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.G()
+            [ 0  g]
+            [-g  0]
+        """
         return ((self.S() - self.S().transpose()) / 4).apply_map(_tidy)
 
     def K(self):
-        r"""The potential matrix, symmetric part of `W`."""
+        r"""The potential matrix, symmetric part of `W`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.K()
+            [k 0]
+            [0 k]
+        """
         return ((self.W() + self.W().transpose()) / 2).apply_map(_tidy)
 
     def P(self):
-        r"""The non-conservative positional matrix, skew part of `W`."""
+        r"""The non-conservative positional matrix, skew part of `W`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.P()
+            [ 0  q]
+            [-q  0]
+        """
         return ((self.W() - self.W().transpose()) / 2).apply_map(_tidy)
 
     def jacobian(self):
@@ -242,7 +339,17 @@ class LinearSystem(SageObject):
         return top.stack(bottom).apply_map(_tidy)
 
     def lhs_matrix(self):
-        r"""The matrix `B` of a first-order system `B\dot x = Jx`."""
+        r"""The matrix `B` of a first-order system `B\dot x = Jx`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: LinearSystem([x], J=[[k]], B=[[d]]).lhs_matrix()
+            [d]
+        """
         return self._B if self._order == 1 else None
 
     def equations(self):
@@ -268,7 +375,18 @@ class LinearSystem(SageObject):
         return [e.expand() for e in E.column(0)]
 
     def characteristic_matrix(self, lam):
-        r"""`M\lambda^2 + S\lambda + W`, resp. `B\lambda - J`."""
+        r"""`M\lambda^2 + S\lambda + W`, resp. `B\lambda - J`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, y, d, g, k, q = var('x y d g k q')
+            sage: Ls = LinearSystem([x, y], M=identity_matrix(2),
+            ....:                   S=matrix([[d, 2*g], [-2*g, d]]), W=matrix([[k, q], [-q, k]]))
+            sage: Ls.characteristic_matrix(var('lam'))
+            [d*lam + lam^2 + k       2*g*lam + q]
+            [     -2*g*lam - q d*lam + lam^2 + k]
+        """
         if self._order == 1:
             return self._B * lam - self._J
         return self._M * lam ** 2 + self._S * lam + self._W
@@ -322,6 +440,14 @@ class LinearSystem(SageObject):
         r"""
         The verdict of the Kelvin--Chetaev theorems, see
         :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: m, c, k = var('m c k')
+            sage: LinearSystem([var('x')], M=[[m]], S=[[c]], W=[[k]]).kelvin_chetaev(
+            ....:     positive=[m, c, k]).verdict()
+            'asymptotically stable'
         """
         from .kelvin_chetaev import kelvin_chetaev
         self._second()
