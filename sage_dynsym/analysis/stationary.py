@@ -128,11 +128,33 @@ class StationarySolution(SageObject):
 
     def point(self):
         r"""The solution as a dict ``{variable: value}`` (may contain free
-        parameters ``r1, r2, ...`` of a family)."""
+        parameters ``r1, r2, ...`` of a family).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: s.point()
+            {x: r2, y: 0}
+        """
         return dict(self._point)
 
     def multipliers(self):
-        r"""The values of the multipliers `\lambda_j`, a dict."""
+        r"""The values of the multipliers `\lambda_j`, a dict.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: s.multipliers()
+            {lambda1: -1/2}
+        """
         return dict(self._multipliers)
 
     def _subs(self):
@@ -141,16 +163,50 @@ class StationarySolution(SageObject):
         return d
 
     def hessian(self):
-        r"""The Hessian matrix of `K` at the solution."""
+        r"""The Hessian matrix of `K` at the solution.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: s.hessian()
+            [    0     0]
+            [    0 a - 1]
+        """
         F = self._family
         return F.hessian().apply_map(lambda e: _simplify(e.subs(self._subs())))
 
     def is_degenerate(self):
-        r"""Whether the Hessian of `K` is singular at the solution."""
+        r"""Whether the Hessian of `K` is singular at the solution.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: s.is_degenerate()
+            True
+        """
         return _simplify(self.hessian().det()).is_zero()
 
     def deviations(self):
-        r"""The deviation variables `\xi` (``xi_<x>``), in order."""
+        r"""The deviation variables `\xi` (``xi_<x>``), in order.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: s.deviations()
+            [xi_x, xi_y]
+        """
         return [SR.var('xi_' + str(x), latex_name=r'\xi_{%s}' % latex(x))
                 for x in self._family.variables()]
 
@@ -165,6 +221,14 @@ class StationarySolution(SageObject):
           space of the level set of the integrals with multipliers
           (`dV_j \cdot \xi = 0`, `j \ge 1`): the result is a form in the
           remaining deviations
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: s = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1]
+            sage: s.second_variation(), s.second_variation(restricted=True)
+            (1/2*(a - 1)*xi_y^2, 1/2*(a - 1)*xi_y^2)
         """
         xi = self.deviations()
         x = matrix(SR, [xi]).transpose()
@@ -176,7 +240,18 @@ class StationarySolution(SageObject):
         return _simplify(restricted_form)
 
     def tangent_constraints(self):
-        r"""The linear forms `dV_j|_{x^0}\cdot\xi` (`j \ge 1`)."""
+        r"""The linear forms `dV_j|_{x^0}\cdot\xi` (`j \ge 1`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: s.tangent_constraints()
+            [2*r2*xi_x]
+        """
         F = self._family
         xi = self.deviations()
         return [_simplify(sum(SR(V).diff(x).subs(self._subs()) * d
@@ -190,6 +265,14 @@ class StationarySolution(SageObject):
         negative (``'negative'``) definite; Sylvester's criterion.
 
         OUTPUT: list of expressions ``> 0``
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: s = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1]
+            sage: s.stability_conditions()
+            [a - 1]
         """
         form = self.second_variation(restricted=True)
         xi = [v for v in self.deviations() if form.has(v)]
@@ -249,23 +332,79 @@ class StationarySolutions(SageObject):
         return self._solutions[i]
 
     def integrals(self):
-        r"""The integrals `V_0, \dots, V_k`."""
+        r"""The integrals `V_0, \dots, V_k`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: sols.integrals()
+            [1/2*a*y^2 + 1/2*x^2, x^2 + y^2]
+        """
         return list(self._integrals)
 
     def variables(self):
-        r"""The phase variables `x`."""
+        r"""The phase variables `x`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: sols.variables()
+            [x, y]
+        """
         return list(self._variables)
 
     def K(self):
-        r"""`K = V_0 + \sum_{j\ge1}\lambda_j V_j`."""
+        r"""`K = V_0 + \sum_{j\ge1}\lambda_j V_j`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: sols.K()
+            1/2*a*y^2 + (x^2 + y^2)*lambda1 + 1/2*x^2
+        """
         return self._K
 
     def stationarity_equations(self):
-        r"""The expressions `\partial K/\partial x_i` (each ``== 0``)."""
+        r"""The expressions `\partial K/\partial x_i` (each ``== 0``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: sols.stationarity_equations()
+            [2*lambda1*x + x, a*y + 2*lambda1*y]
+        """
         return [self._K.diff(x).expand() for x in self._variables]
 
     def hessian(self):
-        r"""The Hessian matrix of `K` (symbolic)."""
+        r"""The Hessian matrix of `K` (symbolic).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: s = sols[1]; s
+            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
+            sage: sols.hessian()
+            [2*lambda1 + 1             0]
+            [            0 a + 2*lambda1]
+        """
         return matrix(SR, [[self._K.diff(x).diff(y) for y in self._variables]
                            for x in self._variables])
 
