@@ -139,6 +139,16 @@ class EquilibriumFamily:
         The eliminated unknowns as functions of the others, a dict
         ``{unknown: expression}`` (fully back-substituted; unknowns eliminated
         by Gröbner bases are not in it).
+
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.elimination import equilibrium_family
+            sage: x, y, z, a = var('x y z a')
+            sage: fam = equilibrium_family([y - x^2, z - y - a, z*x - 1], [x, y, z],
+            ....:                          eliminate=[y, z])
+            sage: fam.substitutions()
+            {y: x^2, z: x^2 + a}
         """
         result = {}
         for v, value in reversed(self._subs):
@@ -149,6 +159,16 @@ class EquilibriumFamily:
         r"""
         The remaining polynomial equations (expressions ``== 0``) in the
         unknowns not eliminated and the parameters.
+
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.elimination import equilibrium_family
+            sage: x, y, z, a = var('x y z a')
+            sage: fam = equilibrium_family([y - x^2, z - y - a, z*x - 1], [x, y, z],
+            ....:                          eliminate=[y, z])
+            sage: fam.equations()
+            [(x^2 + a)*x - 1]
         """
         return list(self._equations)
 
@@ -190,6 +210,16 @@ class EquilibriumFamily:
 
         - ``values`` -- dict giving the unknowns left
         - ``parameters`` -- (optional) dict of parameter values to use
+
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.elimination import equilibrium_family
+            sage: x, y, z, a = var('x y z a')
+            sage: fam = equilibrium_family([y - x^2, z - y - a, z*x - 1], [x, y, z],
+            ....:                          eliminate=[y, z])
+            sage: fam.point({x: 1}, parameters={a: 0})
+            {x: 1, y: 1, z: 1}
         """
         values = {SR(k): SR(v) for k, v in values.items()}
         subs = dict(values)
@@ -215,6 +245,16 @@ class EquilibriumFamily:
 
         Raises :class:`AnalysisError` if the equations do not determine them
         uniquely (then see :meth:`equations`).
+
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.elimination import equilibrium_family
+            sage: x, y, z, a = var('x y z a')
+            sage: fam = equilibrium_family([y - x^2, z - y - a, z*x - 1], [x, y, z],
+            ....:                          eliminate=[y, z])
+            sage: fam.parameters_for({x: 2}, [a])
+            {a: -7/2}
         """
         eqs = [p.subs({SR(k): SR(v) for k, v in values.items()}) for p in self._equations]
         eqs = [e for e in eqs if not bool(e.expand() == 0)]
