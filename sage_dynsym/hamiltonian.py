@@ -21,10 +21,10 @@ A charged particle in a uniform magnetic field (vector potential
     sage: x, y, dx, dy, m, e, B = var('x y dx dy m e B')
     sage: L = Lagrangian(m*(dx^2 + dy^2)/2 + e*B/2*(x*dy - y*dx), [x, y])
     sage: H = L.hamiltonian(); H
-    Hamiltonian in coordinates (x, y) and momenta (p_x, p_y) : 1/8*B^2*e^2*x^2/m + 1/8*B^2*e^2*y^2/m - 1/2*B*e*p_y*x/m + 1/2*B*e*p_x*y/m + 1/2*p_x^2/m + 1/2*p_y^2/m
+    Hamiltonian in coordinates (x, y) and momenta (p_x, p_y) : 1/8*(B*e*x - 2*p_y)^2/m + 1/8*(B*e*y + 2*p_x)^2/m
     sage: H.equations()
-    [(1/2*B*e*y/m + p_x/m, -1/4*B^2*e^2*x/m + 1/2*B*e*p_y/m),
-     (-1/2*B*e*x/m + p_y/m, -1/4*B^2*e^2*y/m - 1/2*B*e*p_x/m)]
+    [(1/2*(B*e*y + 2*p_x)/m, -1/4*(B*e*x - 2*p_y)*B*e/m),
+     (-1/2*(B*e*x - 2*p_y)/m, -1/4*(B*e*y + 2*p_x)*B*e/m)]
 """
 from sage.matrix.constructor import matrix, vector
 from sage.misc.cachefunc import cached_method
@@ -106,13 +106,22 @@ class Hamiltonian(SageObject):
             self._legendre_general()
 
     def _legendre_natural(self):
+        # dq = A^{-1} (p - A1) with A^{-1} = adj(A)/det(A), each entry
+        # normalized by GiNaC (cancelling common factors): no Gaussian
+        # elimination with symbolic pivots, no Maxima
         A, A1, A0 = self._lagrangian.decomposition()
-        shifted = vector(SR, self._momenta) - A1
-        dq = A.solve_right(shifted)
-        self._velocity_map = dict(zip(self._lagrangian.velocities(),
-                                      [v.simplify_rational() for v in dq]))
-        self._expr = (sum(s * v for s, v in zip(shifted, self._velocity_map.values())) / 2
-                      - A0).expand()
+        n = A.nrows()
+        shifted = [p - a for p, a in zip(self._momenta, A1)]
+        if A.is_diagonal():
+            inverse = matrix(SR, n, n, {(i, i): 1 / A[i, i] for i in range(n)})
+        else:
+            det = A.det()
+            inverse = A.adjugate().apply_map(lambda e: (e / det).normalize())
+        self._velocity_map = {v: sum(inverse[i, j] * shifted[j] for j in range(n))
+                              for i, v in enumerate(self._lagrangian.velocities())}
+        quadratic = sum(inverse[i, i] * shifted[i] ** 2 for i in range(n)) / 2 + sum(
+            inverse[i, j] * shifted[i] * shifted[j] for i in range(n) for j in range(i + 1, n))
+        self._expr = quadratic - A0
 
     def _legendre_general(self):
         from sage.symbolic.relation import solve
