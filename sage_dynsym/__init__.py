@@ -18,3 +18,9 @@ from .hamiltonian import Hamiltonian
 from .dirac import DiracConstraints
 from .description import load, save
 from .circuits import Circuit
+from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLyapunov,
+                       linearize, LinearSystem, hurwitz_matrix, hurwitz_determinants,
+                       hurwitz_conditions, lienard_chipart_conditions,
+                       real_negative_roots_conditions, conservative_stability_conditions,
+                       sylvester_conditions, restrict_to_subspace, simultaneous_reduction,
+                       kelvin_chetaev, StabilityVerdict, equilibrium_family)
