@@ -213,17 +213,34 @@ class StabilityStudy(SageObject):
             sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
             sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 2), (-1, 2))
             Graphics object consisting of 3 graphics primitives
+
+        TESTS:
+
+        Conditions free of the plane's parameters (here: none at all)::
+
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0}, positive=[k, c])
+            sage: St.conditions()
+            []
+            sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (0, 2), (0, 2))
+            Graphics object consisting of 2 graphics primitives
         """
         from sage.plot.contour_plot import region_plot
         from sage.plot.point import point
+        from sage.plot.polygon import polygon
         X, Y = SR.var(x), SR.var(y)
         others = {p: v for p, v in self._values(values).items() if p not in (X, Y)}
         if self._conditions is not None:
-            conds = [SR(c).subs(others) > 0 for c in self._conditions]
-            if not conds:           # stable whatever x and y
-                conds = [X == X]
-            G = region_plot(conds, (X, *xrange), (Y, *yrange), plot_points=plot_points,
-                            incol='lightgreen', bordercol='darkgreen')
+            conds = [SR(c).subs(others) for c in self._conditions]
+            constant = [c for c in conds if not (set(c.variables()) & {X, Y})]
+            conds = [c > 0 for c in conds if c not in constant]
+            if any(N(c) <= 0 for c in constant):      # unstable whatever x and y
+                G = Graphics()
+            elif not conds:                           # stable whatever x and y
+                (x0, x1), (y0, y1) = xrange, yrange
+                G = polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)], color='lightgreen')
+            else:
+                G = region_plot(conds, (X, *xrange), (Y, *yrange), plot_points=plot_points,
+                                incol='lightgreen', bordercol='darkgreen')
         else:
             def stable(a, b):
                 return self.spectral_abscissa(dict(values, **{x: a, y: b})) < 0
