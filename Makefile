@@ -1,12 +1,16 @@
 # Two entry points (see README):  `make run`  and  `make test`.
-# Both create the project .venv with passagemath on first use.
+# Both create the project .venv with passagemath on first use; `make test`
+# also registers the SageMath Jupyter kernel in the .venv and installs
+# Debian's chromium for the browser test (idempotent).
 PYTHON ?= python3.11
 VENV   := .venv
 PY     := $(VENV)/bin/python
 SAGE   := $(VENV)/bin/sage
 STAMP  := $(VENV)/.installed
+KERNEL := $(VENV)/share/jupyter/kernels/sagemath/kernel.json
+CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: run test doctest pytest bench venv clean
+.PHONY: run test doctest pytest worksheets docs browser kernel chromium bench venv clean
 
 venv: $(STAMP)
 
@@ -20,17 +24,39 @@ $(STAMP): setup.py requirements-dev.txt
 run: $(STAMP)
 	$(PY) -m sage_dynsym examples/*.yaml
 
+# the SageMath kernel spec (passagemath installs it; re-created if missing)
+kernel: $(KERNEL)
+
+$(KERNEL): | $(STAMP)
+	$(PY) -c "from sage.repl.ipython_kernel.install import SageKernelSpec; SageKernelSpec.update(prefix='$(abspath $(VENV))')"
+	test -f $(KERNEL)
+
+chromium:
+	@command -v chromium >/dev/null 2>&1 || test -x $(CHROMIUM) || { \
+	  SUDO=$$(test "$$(id -u)" = 0 || echo sudo); \
+	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium; }
+
 doctest: $(STAMP)
 	$(SAGE) -t --force-lib -p 2 sage_dynsym doc
 
-pytest: $(STAMP)
-	$(PY) -m pytest -q tests
+pytest: $(STAMP) kernel
+	$(PY) -m pytest -q tests --ignore=tests/browser
 
-test: doctest pytest
+worksheets: $(STAMP) kernel
+	$(PY) -m pytest -q tests/test_worksheets.py
+
+docs: $(STAMP)
+	rm -rf doc/_build
+	$(PY) -m sphinx -W -q -b html doc doc/_build/html
+
+browser: $(STAMP) kernel chromium
+	CHROMIUM=$$(command -v chromium || echo $(CHROMIUM)) $(PY) -m pytest -q tests/browser
+
+test: doctest pytest docs browser
 
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -r requirements-bench.txt
 	for b in bench/bench_*.py; do $(PY) $$b || exit 1; done
 
 clean:
-	rm -rf $(VENV) build *.egg-info
+	rm -rf $(VENV) build *.egg-info doc/_build

@@ -248,6 +248,7 @@ class StabilityStudy(SageObject):
                             incol='lightgreen', bordercol='darkgreen')
         G += point((values[x], values[y]), color='red', size=40, zorder=5)
         G.axes_labels([f"${x}$", f"${y}$"])
+        G.set_aspect_ratio('automatic')
         return G
 
     def roots_plot(self, values):
