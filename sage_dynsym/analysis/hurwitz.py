@@ -436,6 +436,12 @@ def simplify_conditions(conditions, positive=()):
         [-1]
         sage: simplify_conditions([a, b, 4*a*b], positive=[m])
         [a, b]
+
+    A condition implied by another one (their difference is positive on
+    the positive variables) is removed::
+
+        sage: simplify_conditions([a^2 - 2*m*b, a^2 - 4*m*b, b], positive=[m, b])
+        [a^2 - 4*b*m]
     """
     native = lambda f: isinstance(f, _Unexpanded) or (
         isinstance(f, Element) and _is_polynomial_ring(f.parent()))
@@ -472,7 +478,37 @@ def _reduce(polys, positive):
         result.append(tuple(sorted(rest, key=_order_key)))
     impossible = [e for e in result if not isinstance(e, _Unexpanded)
                   and len(e) == 1 and _is_constant(e[0])]
-    return impossible[:1] if impossible else result
+    return impossible[:1] if impossible else _drop_implied(result, positive)
+
+
+def _drop_implied(entries, positive):
+    r"""
+    Remove single-factor conditions `f > 0` implied by another one
+    `g > 0`: when `f - c g` (for some `c > 0`) has only positive
+    coefficients and only variables known to be positive.
+    """
+    single = [e[0] for e in entries if not isinstance(e, _Unexpanded) and len(e) == 1]
+
+    def implied_by(f, g):
+        if f.parent() is not g.parent() or len(g.dict()) > 50:
+            return False
+        # the multiple c of g must cancel every term of f outside the
+        # positive variables: try the ratios of common coefficients
+        for monomial, coefficient in g.dict().items():
+            c = f.dict().get(monomial, 0) / coefficient
+            if c <= 0:
+                continue
+            d = f - c * g
+            if (not d.is_zero() and all(str(v) in positive for v in d.variables())
+                    and all(a > 0 for a in d.coefficients())):
+                return True
+        return False
+
+    dropped = {i for i, f in enumerate(single)
+               if any(j != i and implied_by(f, g) for j, g in enumerate(single))}
+    drop = [single[i] for i in dropped]
+    return [e for e in entries if isinstance(e, _Unexpanded) or len(e) != 1
+            or e[0] not in drop]
 
 
 def _order_key(f):
