@@ -23,6 +23,9 @@ EXAMPLES::
       ...
     Routh function for the cyclic coordinates psi (momenta p_psi):
       ...
+    Stationary motions (Routh function at rest, cyclic momenta constant):
+      0 = -(g*l^3*m^2*sin(theta)^4 + p_psi^2*cos(theta))/(l^2*m*sin(theta)^3)
+      ...
     Hamiltonian:
       ...
 """
@@ -54,6 +57,7 @@ def _mechanical(system, lines):
         lines.append("Routh equations (E_i = 0):")
         for q, e in zip(R.coordinates(), R.equations()):
             _formula(lines, f"[{q}] ", e)
+    _stationary(L, cyclic, lines)
     H = L.hamiltonian()
     if H.is_singular():
         D = H.constraints()
@@ -62,6 +66,55 @@ def _mechanical(system, lines):
             _formula(lines, "constraint ", c)
     lines.append("Hamiltonian:")
     _formula(lines, "H = ", H.expr())
+
+
+def _stationary(L, cyclic, lines):
+    from .analysis import stationary_motions
+    reduced = L.routh(cyclic) if cyclic and len(cyclic) < len(L.coordinates()) else L
+    what = ("Stationary motions (Routh function at rest, cyclic momenta constant)"
+            if reduced is not L else "Equilibria (equations at rest)")
+    try:
+        unknowns = reduced.momenta() if reduced is not L else None
+        equations, solutions = stationary_motions(reduced, solve_for=unknowns)
+    except DynSymError as err:
+        lines.append(f"{what}: not available ({err})")
+        return
+    lines.append(f"{what}:")
+    for e in equations:
+        _formula(lines, "0 = ", e)
+    for solution in solutions:
+        lines.append("  solution: " + ", ".join(f"{k} = {v}" for k, v in solution.items()))
+
+
+def _linear_circuit_stability(circuit, L, lines):
+    from sage.symbolic.ring import SR
+    from .analysis import linearize, lienard_chipart_conditions
+    sources = {SR.var(b.name): 0 for b in circuit.branches()
+               if b.kind in ('voltage_source', 'current_source')}
+    values = sorted({v for b in circuit.branches() if b.value is not None
+                     for v in SR(b.value).variables()} - set(sources), key=str)
+    lam = SR.var('lambda_')
+    try:
+        free = L.subs(sources) if sources else L
+        system = linearize(free, {q: 0 for q in free.coordinates()})
+        poly = system.characteristic_polynomial(lam)
+        conditions = lienard_chipart_conditions(poly, lam, positive=values)
+    except DynSymError as err:
+        lines.append(f"Stability of the free circuit: not available ({err})")
+        return
+    lines.append("Stability of the free circuit (sources off), loop method:")
+    _formula(lines, "characteristic polynomial: ", poly)
+    if poly.subs({lam: 0}).is_zero():
+        lines.append("  lambda = 0 is a root: some loop charge is not fixed by a capacitor, "
+                     "so the zero solution in loop charges is not asymptotically stable "
+                     "(the currents may still decay)")
+    elif conditions:
+        lines.append("  Lienard-Chipart conditions (each > 0), element values positive:")
+        for c in conditions:
+            _formula(lines, "", c, indent="    ")
+    else:
+        lines.append("  asymptotically stable for all positive element values "
+                     "(Lienard-Chipart conditions hold identically)")
 
 
 def _lagrangian_equations(L, lines):
@@ -84,6 +137,8 @@ def _circuit(circuit, lines):
         lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du):")
         for (v, element), e in zip(circuit.state_variables(), equations):
             _formula(lines, f"[{element} d{v}/dt] ", e)
+        lines.append("Time derivative of P along the state equations (Lyapunov analogue):")
+        _formula(lines, "dP/dt = ", circuit.brayton_moser().time_derivative())
     try:
         L = circuit.lagrangian(method="loop")
     except CircuitError as err:
@@ -92,6 +147,7 @@ def _circuit(circuit, lines):
         lines.append("Lagrangian (loop-current method):")
         _formula(lines, "L = ", L.expr())
         _lagrangian_equations(L, lines)
+        _linear_circuit_stability(circuit, L, lines)
 
 
 def report(model):
