@@ -1,0 +1,41 @@
+"""The command line produces a report for every bundled description file,
+with the equations and the analysis sections, and a clean error otherwise."""
+import glob
+import os
+import subprocess
+import sys
+
+import pytest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+EXAMPLES = sorted(glob.glob(os.path.join(ROOT, "examples", "*.yaml")))
+
+
+def run(*args):
+    return subprocess.run([sys.executable, "-m", "sage_dynsym", *args],
+                          capture_output=True, text=True, timeout=600)
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=os.path.basename)
+def test_report_for_every_example(path):
+    result = run(path)
+    assert result.returncode == 0, result.stderr
+    assert "Traceback" not in result.stderr
+    text = result.stdout
+    assert text.startswith("== ")
+    assert "LaTeX: " in text
+    # every report carries equations and an analysis section
+    assert "equations" in text
+    assert any(section in text for section in (
+        "Stationary motions", "Equilibria", "Stability of the free circuit", "dP/dt"))
+
+
+def test_report_file_and_bad_file(tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("kind: mechanical\ncoordinates: [x]\nbodies: 3\n")
+    out = tmp_path / "report.txt"
+    result = run(EXAMPLES[0], str(bad), "-o", str(out))
+    assert result.returncode == 1
+    assert "Traceback" not in result.stderr
+    assert "bad.yaml: bodies: expected a list of bodies" in result.stderr
+    assert out.read_text().startswith("== ")
