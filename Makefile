@@ -37,7 +37,7 @@ chromium:
 	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium; }
 
 doctest: $(STAMP)
-	$(SAGE) -t --force-lib -p 2 sage_dynsym doc
+	$(SAGE) -t --force-lib -p 2 sage_dynsym doc/*.rst
 
 pytest: $(STAMP) kernel
 	$(PY) -m pytest -q tests --ignore=tests/browser

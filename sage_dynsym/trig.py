@@ -210,9 +210,9 @@ class TrigPolynomialRing:
         if len(terms) == 1:
             return monomial(*terms[0])
         counts = Counter(chain.from_iterable(exponents.keys() for exponents, _ in terms))
-        if not counts or max(counts.values()) == 1:
+        (variable, top), = counts.most_common(1)
+        if top == 1:
             return SR(0).add(*[monomial(*term) for term in terms])
-        variable = max(counts, key=lambda i: (counts[i], -i))
         groups = {}
         for exponents, coefficient in terms:
             e = exponents.get(variable, 0)
