@@ -27,7 +27,7 @@ def test_worksheet_runs(path, tmp_path):
     except NoSuchKernel:
         pytest.fail("the SageMath kernel spec is not installed (make kernel)")
     nb = nbformat.read(path, as_version=4)
-    client = nbclient.NotebookClient(nb, kernel_name=KERNEL, timeout=900,
+    client = nbclient.NotebookClient(nb, kernel_name=KERNEL, timeout=600,
                                      resources={"metadata": {"path": str(tmp_path)}})
     client.execute()
     errors = [out for cell in nb.cells if cell.cell_type == "code"
