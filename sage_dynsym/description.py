@@ -257,7 +257,6 @@ def mechanical_system_from_dict(data, source=None):
     if not isinstance(bodies_data, list):
         raise DescriptionError(f"expected a list of bodies, got {bodies_data!r}",
                                entry='bodies', source=source)
-    from .rigid_body import RigidBody
     from .mechanical_system import MechanicalSystem
     try:
         bodies = [_body(b, i, parser, source) for i, b in enumerate(bodies_data)]

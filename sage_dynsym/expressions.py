@@ -34,7 +34,7 @@ import numbers
 from fractions import Fraction
 
 from sage.misc.latex import latex
-from sage.misc.parser import Parser, LookupNameMaker
+from sage.misc.parser import Parser
 from sage.symbolic.ring import SR
 from sage.symbolic.function_factory import function as symbolic_function
 from sage.rings.integer import Integer

@@ -26,7 +26,7 @@ A charged particle in a uniform magnetic field (vector potential
     [(1/2*(B*e*y + 2*p_x)/m, -1/4*(B*e*x - 2*p_y)*B*e/m),
      (-1/2*(B*e*x - 2*p_y)/m, -1/4*(B*e*y + 2*p_x)*B*e/m)]
 """
-from sage.matrix.constructor import matrix, vector
+from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject

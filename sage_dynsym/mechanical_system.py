@@ -44,10 +44,9 @@ from sage.symbolic.ring import SR
 from .errors import ModelError
 from .expressions import velocity, acceleration, t
 from .natural_equations import natural_equations
-from .frames import FrameVector
 from .kinematics import Kinematics
 from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial
-from .lagrangian import Lagrangian
+from .lagrangian import Lagrangian, _natural_form
 from .rigid_body import RigidBody
 
 
@@ -637,8 +636,7 @@ class MechanicalSystem(SageObject):
         else:
             self._check_index(k)
             A, A1, A0 = self.body_decomposition(k)
-        dq = vector(SR, self._velocities)
-        return _quadratic_form(A, dq) / 2 + A1 * dq + A0
+        return _natural_form(A, A1, A0, self._velocities)
 
     @cached_method
     def force_function(self):
@@ -675,24 +673,16 @@ class MechanicalSystem(SageObject):
             [c*dx + ddx*m + k*x]
         """
         data = self._polynomial_decomposition()
-        builder = None
-        if data is not None:
-            def builder():
-                kinetic = natural_equations(data[1], data[2], data[3], self._coordinates,
-                                            self._velocities,
-                                            [acceleration(q) for q in self._coordinates],
-                                            data[0])
-                U = self.force_function()
-                return [e - U.diff(q) for e, q in zip(kinetic, self._coordinates)]
+
+        def ring_equations():
+            kinetic = natural_equations(data[1], data[2], data[3], self._coordinates,
+                                        self._velocities,
+                                        [acceleration(q) for q in self._coordinates], data[0])
+            U = self.force_function()
+            return [e - U.diff(q) for e, q in zip(kinetic, self._coordinates)]
+
         return Lagrangian(None, self._coordinates, self._velocities,
                           decomposition=self.decomposition(), dissipation=self._dissipation,
-                          forces=self._forces, name=self._name, equation_builder=builder)
+                          forces=self._forces, name=self._name,
+                          equation_builder=ring_equations if data is not None else None)
 
-
-def _quadratic_form(A, x):
-    r"""
-    `x^T A x` for a symmetric matrix, each off-diagonal pair once.
-    """
-    n = A.nrows()
-    return sum((A[i, i] * x[i] ** 2 for i in range(n)), SR(0)) + sum(
-        (2 * A[i, j] * x[i] * x[j] for i in range(n) for j in range(i + 1, n)), SR(0))

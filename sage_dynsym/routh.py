@@ -29,7 +29,7 @@ The Kepler problem in polar coordinates::
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
 """
-from sage.matrix.constructor import matrix, vector
+from sage.matrix.constructor import vector
 from sage.misc.cachefunc import cached_method
 from sage.symbolic.ring import SR
 

@@ -178,7 +178,6 @@ def polynomial_coefficients(poly, var):
                 f"expected a polynomial in {name} (no {name} in a denominator), "
                 f"got {expr}", entry=what)
         base = parameter_ring(params)
-        lamv = ring.gen(ring.ngens() - 1)
         by_power = {}
         for exps, c in num.dict().items():
             exps = tuple(exps)

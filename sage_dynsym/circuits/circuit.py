@@ -43,10 +43,9 @@ import re
 
 from sage.misc.cachefunc import cached_method
 from sage.structure.sage_object import SageObject
-from sage.symbolic.ring import SR
 
 from ..errors import CircuitError
-from .elements import parse_entries, Branch, Coupling
+from .elements import parse_entries
 from .graph import CircuitGraph
 
 RESERVED = re.compile(r'^([iut]|[iuq]\d+|phi\w*)$')

@@ -46,7 +46,7 @@ from sage.symbolic.integration.integral import definite_integral
 
 from ..errors import CircuitError
 from ..expressions import velocity, t
-from .graph import UnionFind, node_key
+from .graph import UnionFind
 
 
 def source_integral(value):
