@@ -658,10 +658,32 @@ class MechanicalSystem(SageObject):
         return SR(self._force)
 
     @cached_method
-    def lagrangian(self):
+    def lagrangian(self, christoffel='auto'):
         r"""
         The Lagrangian `L = T + U`, with the system's dissipation function and
         generalized forces.
+
+        INPUT:
+
+        - ``christoffel`` -- how the equations (5) of the Lagrangian get their
+          Christoffel coefficients `\Gamma_{i,rj}` (see
+          :mod:`~sage_dynsym.natural_equations`):
+
+          - ``'polynomial'`` -- combine the three derivatives of the mass
+            matrix as polynomials in the sines and cosines, where they
+            cancel, and convert each coefficient to its canonical recursive
+            form: the most compact equations, but the conversion back to
+            symbolic expressions costs time in proportion to the number of
+            terms (about 100 s for a chain of 6 spatial links);
+          - ``'symbolic'`` -- differentiate the (already compact) symbolic
+            mass matrix: fast even for large systems, but the equations are
+            larger since the three derivatives do not cancel;
+          - ``'auto'`` (default) -- ``'polynomial'`` unless the mass matrix
+            has more than 10,000 polynomial terms (for the spatial chains of
+            ``bench/``: up to 4 links), then ``'symbolic'``.
+
+          Models that are not polynomial in the sines and cosines of their
+          angles always use ``'symbolic'``.
 
         EXAMPLES::
 
@@ -671,18 +693,49 @@ class MechanicalSystem(SageObject):
             ....:                      force_function=-k*x^2/2, dissipation=c*var('dx')^2/2)
             sage: S.lagrangian().lagrange_equations()
             [c*dx + ddx*m + k*x]
+
+        Both ways of forming the Christoffel coefficients give the equations
+        (9) of the spherical pendulum of Example 1, multiplied by
+        `m l^2 \sin^2\theta` and `m l`:
+        `\ddot\psi + 2\cot\theta\,\dot\theta\dot\psi = 0` and
+        `l\ddot\theta - l\cos\theta\sin\theta\,\dot\psi^2
+        - g\sin\theta = 0`::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: E = S.lagrangian('polynomial').lagrange_equations(); E
+            [2*dpsi*dtheta*l^2*m*cos(theta)*sin(theta) + ddpsi*l^2*m*sin(theta)^2,
+             -dpsi^2*l^2*m*cos(theta)*sin(theta) + ddtheta*l^2*m - g*l*m*sin(theta)]
+            sage: S.lagrangian('symbolic').lagrange_equations() == E
+            True
+
+        TESTS::
+
+            sage: S.lagrangian('fast')
+            Traceback (most recent call last):
+            ...
+            ModelError: christoffel must be 'auto', 'polynomial' or 'symbolic', got 'fast'
         """
+        if christoffel not in ('auto', 'polynomial', 'symbolic'):
+            raise ModelError("christoffel must be 'auto', 'polynomial' or 'symbolic', "
+                             f"got {christoffel!r}")
         data = self._polynomial_decomposition()
+        if data is not None and christoffel == 'auto':
+            terms = sum(e.number_of_terms() for i, row in enumerate(data[1]) for e in row[i:])
+            christoffel = 'polynomial' if terms <= 10000 else 'symbolic'
 
         def ring_equations():
             kinetic = natural_equations(data[1], data[2], data[3], self._coordinates,
                                         self._velocities,
-                                        [acceleration(q) for q in self._coordinates], data[0])
+                                        [acceleration(q) for q in self._coordinates], data[0],
+                                        mass_matrix=self.decomposition()[0])
             U = self.force_function()
             return [e - U.diff(q) for e, q in zip(kinetic, self._coordinates)]
 
+        use_ring = data is not None and christoffel == 'polynomial'
         return Lagrangian(None, self._coordinates, self._velocities,
                           decomposition=self.decomposition(), dissipation=self._dissipation,
                           forces=self._forces, name=self._name,
-                          equation_builder=ring_equations if data is not None else None)
+                          equation_builder=ring_equations if use_ring else None)
 

@@ -83,7 +83,8 @@ class SymbolicCalculus:
         return SR(element)
 
 
-def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculus):
+def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculus,
+                      mass_matrix=None):
     r"""
     The equations (5) (without dissipation and generalized forces) from the
     decomposition of a natural Lagrangian, see the module documentation.
@@ -95,6 +96,8 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
     - ``coordinates``, ``velocities``, ``accelerations`` -- symbols
     - ``calculus`` -- a :class:`SymbolicCalculus` or
       :class:`~sage_dynsym.trig.RingCalculus`
+    - ``mass_matrix`` -- (optional) the symbolic form of ``A``, if the
+      caller has it already (it saves converting every entry again)
 
     OUTPUT: a list of symbolic expressions `E_i`
 
@@ -128,11 +131,15 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
     def term(coefficient, factor):
         return None if C.is_zero(coefficient) else C.symbolic(coefficient) * factor
 
+    if mass_matrix is None:
+        symbolic = {(i, j): C.symbolic(A[i][j]) for i in range(n) for j in range(i, n)}
+        mass_matrix = [[symbolic[min(i, j), max(i, j)] for j in range(n)] for i in range(n)]
     equations = []
     for i in range(n):
         # progress of long derivations: set_verbose(1) to see it
         verbose(f"Lagrange equation {i + 1} of {n} ({coordinates[i]})", level=1)
-        terms = [term(A[i][r], accelerations[r]) for r in range(n)]
+        terms = [None if C.is_zero(A[i][r]) else mass_matrix[i][r] * accelerations[r]
+                 for r in range(n)]
         for r in range(n):
             terms.append(term(dA_(r, i, r) - dA_(i, r, r) / 2, velocities[r] ** 2))
             for j in range(r + 1, n):

@@ -28,11 +28,15 @@ EXAMPLES::
 """
 from collections import Counter
 from itertools import chain
+from operator import itemgetter
 
 from sage.arith.misc import factorial
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
+
+
+_ZERO, _ONE = SR(0), SR(1)
 
 
 class NotPolynomial(ValueError):
@@ -224,35 +228,40 @@ class TrigPolynomialRing:
         """
         if not reduced:
             element = self.reduce(element)
-        terms = [(dict(exponents.sparse_iter()), coefficient)
+        terms = [(dict(exponents.sparse_iter()), SR(coefficient))
                  for exponents, coefficient in element.dict().items()]
-        return self._recursive(terms, {}) if terms else SR(0)
+        return self._recursive(terms, frozenset(), {}) if terms else SR(0)
 
-    def _recursive(self, terms, powers):
+    def _recursive(self, terms, factored, powers):
+        # ``factored``: variables already taken out by the callers (they stay
+        # in the exponent dictionaries: copying those costs more than skipping)
         def power(index, e):
-            if (index, e) not in powers:
-                powers[index, e] = self._values[index] ** e
-            return powers[index, e]
+            try:
+                return powers[index, e]
+            except KeyError:
+                value = powers[index, e] = self._values[index] ** e
+                return value
 
         def monomial(exponents, coefficient):
-            return SR(1).mul(SR(coefficient), *[power(i, e) for i, e in exponents.items()])
+            return _ONE.mul(coefficient, *[power(i, e) for i, e in exponents.items()
+                                           if i not in factored])
 
         if len(terms) == 1:
             return monomial(*terms[0])
-        counts = Counter(chain.from_iterable(exponents.keys() for exponents, _ in terms))
-        (variable, top), = counts.most_common(1)
+        counts = Counter(chain.from_iterable(map(itemgetter(0), terms)))
+        for index in factored:
+            del counts[index]
+        variable, top = max(counts.items(), key=itemgetter(1), default=(None, 1))
         if top == 1:
-            return SR(0).add(*[monomial(*term) for term in terms])
+            return _ZERO.add(*[monomial(*term) for term in terms])
         groups = {}
-        for exponents, coefficient in terms:
-            e = exponents.get(variable, 0)
-            if e:
-                exponents = dict(exponents)
-                del exponents[variable]
-            groups.setdefault(e, []).append((exponents, coefficient))
-        return SR(0).add(*[self._recursive(group, powers) * power(variable, e) if e
-                           else self._recursive(group, powers)
-                           for e, group in groups.items()])
+        for term in terms:
+            groups.setdefault(term[0].get(variable, 0), []).append(term)
+        inner = factored | {variable}
+        parts = [self._recursive(group, inner, powers) * power(variable, e) if e
+                 else self._recursive(group, factored, powers)
+                 for e, group in groups.items()]
+        return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
 
     def calculus(self, coordinates):
         r"""
