@@ -16,8 +16,15 @@ plain symbols (psi1, dpsi1, ddpsi1, ...) and with ``^`` for powers. Both
 sides also evaluate their equations at the same random point and the
 largest relative difference is printed (a correctness guard).
 
-Usage: ``python bench/bench_chain.py [--quick] [--max-n N] [--timeout S]``
-(``--quick``: N = 1..3, 60 s timeout). Once SymPy times out at some N it is
+sage_dynsym runs ``MechanicalSystem.lagrangian()`` with its default
+``christoffel='auto'``: Christoffel coefficients cancelled in the
+polynomial ring (most compact) while the mass matrix has at most 10,000
+terms (here N <= 4), differentiated symbolically beyond (fast, larger);
+``--christoffel polynomial`` or ``symbolic`` forces one of them.
+
+Usage: ``python bench/bench_chain.py [--quick] [--max-n N] [--timeout S]
+[--christoffel auto|polynomial|symbolic]`` (``--quick``: N = 1..3, 60 s
+timeout). Once SymPy times out at some N it is
 not run for larger N (its cost only grows). The timeout covers the whole
 worker; the derivation time is reported even when only the untimed size or
 evaluation step overran it.
@@ -62,7 +69,7 @@ def _report(result=None, **new):
     return result
 
 
-def worker_sage(n):
+def worker_sage(n, christoffel='auto'):
     import sympy
     from sage.all import SR, fast_callable, RDF
     from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
@@ -85,7 +92,7 @@ def worker_sage(n):
     bodies = [RigidBody(d.pop('name'), velocity=None, **d) for d in bodies_data]
     S = MechanicalSystem(bodies, coordinates=coordinates, parameters=parameters,
                          force_function=UniformGravity(gravity))
-    E = S.lagrangian().lagrange_equations()
+    E = S.lagrangian(christoffel).lagrange_equations()
     result = _report(time=time.perf_counter() - start)
     result = _report(result, size=_size(E))
     point = _point(desc)
@@ -111,13 +118,14 @@ def worker_sympy(n):
     _report(result, values=[float(v) for v in f(*[point[s] for s in order])])
 
 
-def run(tool, n, timeout):
+def run(tool, n, timeout, christoffel='auto'):
     """
     Run one worker in a fresh interpreter. Return its result dict (it may lack
     ``size`` / ``values`` if the timeout came after the derivation),
     ``'timeout'`` if the derivation itself did not finish, or ``'error: ...'``.
     """
-    cmd = [sys.executable, os.path.abspath(__file__), '--worker', tool, str(n)]
+    cmd = [sys.executable, os.path.abspath(__file__), '--worker', tool, str(n),
+           '--christoffel', christoffel]
     try:
         out = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
         stdout, failed = out.stdout, out.returncode != 0
@@ -143,20 +151,26 @@ def main():
     parser.add_argument('--quick', action='store_true', help='N = 1..3, 60 s timeout')
     parser.add_argument('--max-n', type=int, default=None)
     parser.add_argument('--timeout', type=float, default=None)
+    parser.add_argument('--christoffel', choices=['auto', 'polynomial', 'symbolic'],
+                        default='auto')
     parser.add_argument('--worker', nargs=2, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.worker:
         tool, n = args.worker
-        (worker_sage if tool == 'sage' else worker_sympy)(int(n))
+        if tool == 'sage':
+            worker_sage(int(n), args.christoffel)
+        else:
+            worker_sympy(int(n))
         return
     max_n = args.max_n or (3 if args.quick else 6)
     timeout = args.timeout or (60 if args.quick else 300)
-    print(f"N-link spatial chain, Lagrange equations; timeout {timeout:g} s per run")
+    print(f"N-link spatial chain, Lagrange equations; timeout {timeout:g} s per run; "
+          f"sage_dynsym with christoffel={args.christoffel!r}")
     print(f"{'N':>2} {'sage_dynsym s':>14} {'SymPy s':>10} {'speed-up':>9} "
           f"{'sage size':>10} {'SymPy size':>11} {'size ratio':>10} {'max rel diff':>12}")
     sympy_gave_up = None
     for n in range(1, max_n + 1):
-        sage = run('sage', n, timeout)
+        sage = run('sage', n, timeout, args.christoffel)
         sym = 'skipped' if sympy_gave_up else run('sympy', n, timeout)
         if sym == 'timeout':
             sympy_gave_up = n
