@@ -37,6 +37,7 @@ import numbers
 
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
+from sage.misc.verbose import verbose
 from sage.modules.free_module_element import vector
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
@@ -582,7 +583,12 @@ class MechanicalSystem(SageObject):
             A0 = sum((p[2] for p in parts), SR(0)) + self.force_function()
         else:
             to_symbolic = data[0].symbolic
-            A = matrix(SR, [[to_symbolic(e) for e in row] for row in data[1]])
+            n = len(data[1])
+            A = matrix(SR, n, n)
+            for i in range(n):
+                verbose(f"mass matrix row {i + 1} of {n}", level=1)
+                for j in range(i, n):
+                    A[i, j] = A[j, i] = to_symbolic(data[1][i][j])
             A1 = vector(SR, [to_symbolic(e) for e in data[2]])
             A0 = to_symbolic(data[3]) + self.force_function()
         A.set_immutable()
