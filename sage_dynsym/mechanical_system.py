@@ -680,7 +680,7 @@ class MechanicalSystem(SageObject):
             cancel, and convert each coefficient to its canonical recursive
             form: the most compact equations, but the conversion back to
             symbolic expressions costs time in proportion to the number of
-            terms (2.6 million, over two minutes, for the chain of 6
+            terms (2.6 million, about two minutes, for the chain of 6
             spatial links of ``bench/bench_chain.py``);
           - ``'symbolic'`` -- differentiate the (already compact) symbolic
             mass matrix: fast even for large systems (under 30 s for that
