@@ -50,6 +50,11 @@ from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial
 from .lagrangian import Lagrangian, _natural_form
 from .rigid_body import RigidBody
 
+# Above this many terms in the mass matrix, converting the polynomial
+# Christoffel coefficients back to symbolic expressions dominates the
+# derivation (15 s at 16,000 terms, two minutes at 110,000); see lagrangian().
+_POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
+
 
 class MechanicalSystem(SageObject):
     r"""
@@ -731,7 +736,7 @@ class MechanicalSystem(SageObject):
         data = self._polynomial_decomposition()
         if data is not None and christoffel == 'auto':
             terms = sum(e.number_of_terms() for i, row in enumerate(data[1]) for e in row[i:])
-            christoffel = 'polynomial' if terms <= 10000 else 'symbolic'
+            christoffel = 'polynomial' if terms <= _POLYNOMIAL_CHRISTOFFEL_TERMS else 'symbolic'
 
         def ring_equations():
             kinetic = natural_equations(data[1], data[2], data[3], self._coordinates,
