@@ -91,8 +91,9 @@ def to_sr(poly):
 def positive_polynomial(f, positive):
     r"""
     Whether the polynomial ``f`` is positive for all positive values of the
-    variables named in ``positive``: ``f`` is nonzero, uses only those
-    variables and has positive coefficients only.
+    variables named in ``positive`` and all real values of the others:
+    every coefficient is positive, every other variable occurs only to even
+    powers, and some term (e.g. a constant) uses positive variables only.
 
     EXAMPLES::
 
@@ -100,11 +101,22 @@ def positive_polynomial(f, positive):
         sage: R.<a,b> = QQ[]
         sage: positive_polynomial(a*b + 2, {'a', 'b'}), positive_polynomial(a - b, {'a', 'b'})
         (True, False)
+        sage: positive_polynomial(a^2 + 1, set()), positive_polynomial(a^2*b, {'b'})
+        (True, False)
     """
     if f == 0:
         return False
     if f.parent() is QQ or f.is_constant():
         return QQ(f) > 0
-    if not {str(v) for v in f.variables()} <= positive:
+    if any(c <= 0 for c in f.coefficients()):
         return False
-    return all(c > 0 for c in f.coefficients())
+    names = [str(v) for v in f.parent().gens()]
+    free = [k for k, n in enumerate(names) if n not in positive]
+    strict = False
+    for exps in f.exponents():
+        exps = (exps,) if isinstance(exps, int) else exps
+        if any(exps[k] % 2 for k in free):
+            return False
+        if not any(exps[k] for k in free):
+            strict = True
+    return strict

@@ -1,0 +1,211 @@
+r"""
+Conditions on parameters, as Sage relationals
+
+A *condition* is a relational such as ``R*w^2 - g > 0`` or ``A1 != 0``.
+The helpers here turn "this expression must be positive / nonzero" into a
+short list of factored relationals, using what is declared positive:
+
+- constant positive factors and factors that are positive because all their
+  coefficients are positive in variables declared positive are dropped;
+- factors of even multiplicity are dropped (only their zero set, a
+  boundary, is lost), so ``m^2*(a - b) > 0`` becomes ``a - b > 0``;
+- a condition that can never hold is reported as such (``None``), one that
+  always holds gives ``[]``.
+
+Non-polynomial parts (``cos(alpha)``, ``sqrt(g*l)``, derivatives of
+unspecified functions) are kept as atoms; square roots count as positive
+(they are taken where they are real).
+
+EXAMPLES::
+
+    sage: from sage_dynsym.analysis.conditions import positive_conditions, nonzero_conditions
+    sage: R, w, g, m = var('R w g m')
+    sage: positive_conditions(R^2*w^4 - g^2, positive=[R, w, g])
+    [R*w^2 - g > 0]
+    sage: positive_conditions(-m^2*g, positive=[g]) is None
+    True
+    sage: positive_conditions(m^2 + 1)
+    []
+    sage: positive_conditions(-cos(R))
+    [cos(R) < 0]
+    sage: nonzero_conditions(2*m*(R - g)^2, positive=[m])
+    [R - g != 0]
+"""
+from sage.misc.misc_c import prod
+from sage.rings.rational_field import QQ
+from sage.symbolic.ring import SR
+
+from .hurwitz import _reduce, _is_constant, _constant
+from .translation import Translation
+
+
+def _translate(expressions):
+    T = Translation([], [], extra=expressions)
+    return T, [T.fraction(e) for e in expressions]
+
+
+def _relational(T, factors, op):
+    r"""``prod(factors) op 0``, factored, with a positive leading
+    coefficient on the left when possible (``-f > 0`` is written
+    ``f < 0``)."""
+    flip = {'>': '<', '<': '>', '!=': '!=', '==': '=='}
+    factors = list(factors)
+    if len(factors) == 1 and not _is_constant(factors[0]) and factors[0].lc() < 0:
+        factors, op = [-factors[0]], flip[op]
+    e = prod((T.symbolic(f) for f in factors), SR(1))
+    return {'>': e > 0, '<': e < 0, '!=': e != 0, '==': e == 0}[op]
+
+
+def positive_conditions(expr, positive=()):
+    r"""
+    The condition ``expr > 0`` as a list of relationals (all must hold),
+    ``[]`` if it always holds, ``None`` if it never holds.
+
+    INPUT:
+
+    - ``expr`` -- a symbolic expression, rational in its symbols (other
+      parts are atoms)
+    - ``positive`` -- symbols declared positive
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import positive_conditions
+        sage: a, b = var('a b')
+        sage: positive_conditions((a - b)/b^3)
+        [(a - b)*b > 0]
+        sage: positive_conditions((a - b)/b^3, positive=[b])
+        [a - b > 0]
+    """
+    return positive_conditions_all([expr], positive)
+
+
+def positive_conditions_all(expressions, positive=()):
+    r"""
+    The conjunction of ``e > 0`` for every ``e`` in ``expressions``:
+    simplified relationals, ``[]`` if they always hold, ``None`` if they
+    cannot all hold. Conditions implied by others are dropped.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import positive_conditions_all
+        sage: a, b, m = var('a b m')
+        sage: positive_conditions_all([a, a*b, m*b], positive=[m])
+        [a > 0, b > 0]
+        sage: positive_conditions_all([a, -a^2 - 1]) is None
+        True
+    """
+    if not expressions:
+        return []
+    T, fractions = _translate(expressions)
+    polys = [f.numerator() * f.denominator() for f in fractions]
+    flat = T.flat_ring()
+    if flat is None:
+        return [] if all(QQ(p) > 0 for p in polys) else None
+    polys = [flat(p) for p in polys]
+    entries = _reduce(polys, T.positive_names(positive))
+    if len(entries) == 1 and len(entries[0]) == 1 and _is_constant(entries[0][0]):
+        return None if _constant(entries[0][0]) <= 0 else []
+    return [_relational(T, entry, '>') for entry in entries]
+
+
+def nonzero_conditions(expr, positive=()):
+    r"""
+    The condition ``expr != 0`` as relationals ``factor != 0`` (one per
+    distinct factor not known to be nonzero); ``[]`` if it always holds,
+    ``None`` if ``expr`` is zero.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import nonzero_conditions
+        sage: a, b = var('a b')
+        sage: nonzero_conditions(a^2*b/(a + 1))
+        [b != 0, a != 0]
+        sage: nonzero_conditions(SR(0)) is None, nonzero_conditions(3)
+        (True, [])
+    """
+    T, (f,) = _translate([expr])
+    num = f.numerator()
+    if num == 0:
+        return None
+    flat = T.flat_ring()
+    if flat is None or _is_constant(flat(num)):
+        return []
+    names = T.positive_names(positive)
+    from ._polynomials import positive_polynomial
+    result = []
+    for factor, _ in flat(num).factor():
+        if positive_polynomial(factor, names) or positive_polynomial(-factor, names):
+            continue
+        result.append(_relational(T, [factor], '!='))
+    return result
+
+
+def conjunction(*lists):
+    r"""
+    Join condition lists (``None`` -- impossible -- absorbs), removing
+    duplicates.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import conjunction
+        sage: a = var('a')
+        sage: conjunction([a > 0], [a > 0, a != 1]), conjunction([a > 0], None)
+        ([a > 0, a != 1], None)
+    """
+    result, seen = [], set()
+    for conds in lists:
+        if conds is None:
+            return None
+        for c in conds:
+            key = str(c)
+            if key not in seen:
+                seen.add(key)
+                result.append(c)
+    return result
+
+
+def holds(condition, values):
+    r"""
+    Whether a relational holds at numerical ``values`` (a dict); used to
+    test regions at sample points.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import holds
+        sage: a, b = var('a b')
+        sage: holds(a - b > 0, {a: 2, b: 1}), holds(a != 1, {a: 1})
+        (True, False)
+    """
+    lhs = float((condition.lhs() - condition.rhs()).subs(values))
+    op = condition.operator()
+    return bool(op(lhs, 0))
+
+
+def region_holds(alternatives, values):
+    r"""
+    Whether a disjunction of conjunctions of relationals holds at ``values``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import region_holds
+        sage: a = var('a')
+        sage: region_holds([[a > 1], [a < -1]], {a: -2}), region_holds([], {a: 0})
+        (True, False)
+    """
+    return any(all(holds(c, values) for c in alt) for alt in alternatives)
+
+
+def as_relational(expr):
+    r"""
+    An expression ``e`` (meaning ``e > 0``, the convention of the criteria)
+    as the relational ``e > 0``; relationals pass unchanged.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import as_relational
+        sage: a = var('a')
+        sage: as_relational(a - 1), as_relational(a != 0)
+        (a - 1 > 0, a != 0)
+    """
+    e = SR(expr)
+    return e if e.is_relational() else e > 0

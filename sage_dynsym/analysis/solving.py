@@ -1,0 +1,760 @@
+r"""
+The exact solving core: complete real solution sets of polynomial systems
+
+Every polynomial system met in the analysis -- stationarity equations,
+equilibria, stationary motions -- is solved here, exactly:
+
+1. the equations are translated into polynomials (:mod:`.translation`):
+   `\cos q, \sin q` become `c_q, s_q` with `c_q^2 + s_q^2 = 1`, the
+   parameters form the coefficient field `\QQ(\text{parameters})` (the
+   *generic* case), denominators containing unknowns are recorded;
+2. the ideal is saturated by those denominators (and by expressions the
+   caller requires to be nonzero) and decomposed into its minimal
+   associated primes (Singular, ``minAssGTZ``) -- the irreducible
+   components of the solution set;
+3. each component gets its dimension (the number of unknowns it leaves
+   free, multipliers not counted when the caller says so), and its points
+   are written explicitly where possible:
+
+   - a zero-dimensional component is solved along a triangular set
+     (Singular, ``triangL``); steps of degree 1 give rational values, steps
+     of degree 2 give the two conjugate branches `\pm\sqrt{D}`, which are
+     reported as *separate* solutions, each with the condition `D > 0`
+     under which it is real; an angle is written ``arccos(c)``,
+     ``-arccos(c)`` or ``arctan2(s, c)``. Without parameters the real
+     points are computed exactly in the real algebraic numbers;
+   - a component of positive dimension is parametrised by a maximal set of
+     its own unknowns that it leaves free; the other unknowns are written
+     as rational functions of them where a Gröbner basis (block order)
+     contains a linear equation for them, and the remaining relations are
+     returned as equations;
+   - a component that cannot be written explicitly (a step of degree 3 or
+     more) is returned *implicitly*: its equations, and says so;
+
+4. only real components are kept: branches whose radicand can never be
+   positive, and components over `\QQ` with no real point, are dropped.
+
+An unsolved equation is never presented as a solution: every solution is
+either explicit (values), or implicit with its defining equations.
+
+EXAMPLES:
+
+A bead on a hoop of radius `R` turning at the rate `w` about its vertical
+diameter: besides the bottom and the top, the equilibria
+`\cos\theta = g/(R w^2)` exist only when `R w^2 > g` (Goldstein, *Classical
+Mechanics*, 3rd ed., §2.6, exercise; Arnold, *Mathematical Methods*, §25)::
+
+    sage: from sage_dynsym.analysis.solving import solve_exactly
+    sage: theta, R, w, g = var('theta R w g')
+    sage: sols = solve_exactly([R*w^2*sin(theta)*cos(theta) - g*sin(theta)], [theta],
+    ....:                      positive=[R, w, g])
+    sage: for s in sols: print(s.values(), s.conditions())
+    {theta: 0} []
+    {theta: pi} []
+    {theta: arccos(g/(R*w^2))} [R*w^2 - g > 0]
+    {theta: -arccos(g/(R*w^2))} [R*w^2 - g > 0]
+
+A curve of solutions (dimension 1), parametrised by its first unknown::
+
+    sage: x, y = var('x y')
+    sage: sols = solve_exactly([(x^2 + y^2 - 1)*x, (x^2 + y^2 - 1)*y], [x, y])
+    sage: [(s.dimension(), s.values(), s.equations()) for s in sols]
+    [(0, {x: 0, y: 0}, []), (1, {x: x, y: y}, [x^2 + y^2 - 1])]
+
+An inconsistent system has no solutions::
+
+    sage: sols = solve_exactly([x - 1, x - 2], [x]); len(sols), sols.is_empty()
+    (0, True)
+
+TESTS::
+
+    sage: len(solve_exactly([x^2 + 1], [x]))
+    0
+    sage: [s.values() for s in solve_exactly([x^2 - 2], [x])]
+    [{x: -sqrt(2)}, {x: sqrt(2)}]
+"""
+from sage.functions.trig import arccos, arcsin, arctan2
+from sage.misc.misc_c import prod
+from sage.misc.verbose import verbose
+from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.polynomial.term_order import TermOrder
+from sage.rings.qqbar import AA
+from sage.rings.rational_field import QQ
+from sage.structure.sage_object import SageObject
+from sage.symbolic.constants import pi
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from .conditions import positive_conditions, nonzero_conditions, conjunction
+from .translation import Translation, NotAlgebraic
+
+
+def normalize(expr):
+    r"""
+    A canonical form of a rational expression (rational-function
+    normalization in Singular; non-polynomial parts are atoms): no Maxima,
+    no assumption questions.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import normalize
+        sage: a, b = var('a b')
+        sage: normalize((a^2 - b^2)/(a + b) + sqrt(a)^3/sqrt(a))
+        2*a - b
+    """
+    expr = SR(expr)
+    if not expr.variables() and expr.is_numeric():
+        return expr
+    try:
+        T = Translation([], [], extra=[expr])
+        return T.symbolic(T.fraction(expr))
+    except AnalysisError:
+        return expr
+
+
+class SolutionSet(SageObject):
+    r"""
+    The real solutions of a polynomial system: a list of
+    :class:`AlgebraicSolution` (iterable), created by :func:`solve_exactly`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import solve_exactly
+        sage: x, y = var('x y')
+        sage: S = solve_exactly([x*y], [x, y]); S
+        2 solution components of 1 equation in x, y
+        sage: S[0].values(), S[1].values()
+        ({x: x, y: 0}, {x: 0, y: y})
+    """
+
+    def __init__(self, translation, solutions, n_equations):
+        self._translation = translation
+        self._solutions = solutions
+        self._n = n_equations
+
+    def _repr_(self):
+        what = ', '.join(map(str, self._translation.unknowns()))
+        eq = f"{self._n} equation{'s' if self._n != 1 else ''}"
+        if not self._solutions:
+            return f"No real solutions of {eq} in {what}"
+        return f"{len(self._solutions)} solution components of {eq} in {what}"
+
+    def __iter__(self):
+        return iter(self._solutions)
+
+    def __len__(self):
+        return len(self._solutions)
+
+    def __getitem__(self, i):
+        return self._solutions[i]
+
+    def is_empty(self):
+        r"""Whether there is no real solution (for generic parameters).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: solve_exactly([x^2 + 1], [x]).is_empty()
+            True
+        """
+        return not self._solutions
+
+    def translation(self):
+        r"""The :class:`~sage_dynsym.analysis.translation.Translation` used.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x, a = var('x a')
+            sage: solve_exactly([x - a], [x]).translation().parameters()
+            [a]
+        """
+        return self._translation
+
+
+class AlgebraicSolution(SageObject):
+    r"""
+    One real solution (a branch of an irreducible component) of a
+    polynomial system; created by :func:`solve_exactly`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import solve_exactly
+        sage: x, a = var('x a')
+        sage: s = solve_exactly([x^2 - a], [x])[0]; s
+        Solution {x: sqrt(a)} (dimension 0, if a > 0)
+        sage: s.is_explicit(), s.dimension(), s.conditions()
+        (True, 0, [a > 0])
+    """
+
+    def __init__(self, translation, prime, free, counted, values, ring_values,
+                 relations, conditions, real_points=None, reality_known=True):
+        self._T = translation
+        self._prime = prime
+        self._free = free                  # unknown indices left free
+        self._counted = counted            # indices counted in the dimension
+        self._values = values              # unknown index -> SR value (explicit)
+        self._ring_values = ring_values    # ring variable name -> SR value
+        self._relations = relations        # ring polynomials (implicit part)
+        self._conditions = conditions
+        self._real_points = real_points
+        self._reality_known = reality_known
+
+    def _repr_(self):
+        kind = "" if self.is_explicit() else ", implicit: given by its equations"
+        cond = f", if {' and '.join(map(str, self._conditions))}" if self._conditions else ""
+        return f"Solution {self.values()} (dimension {self.dimension()}{kind}{cond})"
+
+    def values(self):
+        r"""
+        Dict ``{unknown: value}`` over all unknowns: the value where the
+        solution fixes it (possibly in terms of the free unknowns), the
+        unknown itself where it does not.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x, y = var('x y')
+            sage: solve_exactly([y - x^2], [x, y])[0].values()
+            {x: x, y: x^2}
+        """
+        unknowns = self._T.unknowns()
+        return {u: self._values.get(i, u) for i, u in enumerate(unknowns)}
+
+    def free_unknowns(self):
+        r"""The unknowns the solution leaves free (its parameters).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x, y = var('x y')
+            sage: solve_exactly([y - x^2], [x, y])[0].free_unknowns()
+            [x]
+        """
+        unknowns = self._T.unknowns()
+        return [unknowns[i] for i in self._free]
+
+    def dimension(self):
+        r"""The number of free unknowns among the counted ones.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x, y, l = var('x y l')
+            sage: S = solve_exactly([x*l, y], [x, y, l], counted=[x, y])
+            sage: [(s.values(), s.dimension()) for s in S]
+            [({x: 0, y: 0, l: l}, 0), ({x: x, y: 0, l: 0}, 1)]
+        """
+        return sum(1 for i in self._free if i in self._counted)
+
+    def equations(self):
+        r"""
+        The relations (expressions ``== 0``) that remain between the
+        unknowns not given explicitly; empty for an explicit solution.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: s = solve_exactly([x^5 - x - 1], [x])[0]
+            sage: s.is_explicit(), s.equations()
+            (False, [x^5 - x - 1])
+        """
+        subs = {k: v for k, v in self._ring_values.items()}
+        return [normalize(self._T.symbolic(r, subs)) for r in self._relations]
+
+    def is_explicit(self):
+        r"""Whether every unknown is given explicitly (or is free).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: solve_exactly([x - 1], [x])[0].is_explicit()
+            True
+        """
+        return not self._relations
+
+    def conditions(self):
+        r"""
+        Conditions on the parameters (and the free unknowns) for this
+        solution to exist and be real, a list of relationals; ``[]`` when it
+        exists for all admissible values.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x, a, b = var('x a b')
+            sage: solve_exactly([a*x - b], [x])[0].conditions()
+            [a != 0]
+        """
+        if not self._reality_known:
+            raise AnalysisError(
+                "the conditions under which this implicit solution is real could "
+                f"not be decided; its equations are {self.equations()}",
+                entry="conditions")
+        return list(self._conditions)
+
+    def real_points(self):
+        r"""
+        For an implicit solution without parameters: its real points, exact
+        (dicts of real algebraic numbers); ``None`` otherwise.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: solve_exactly([x^5 - x - 1], [x])[0].real_points()
+            [{x: 1.167303978261419?}]
+        """
+        return None if self._real_points is None else [dict(p) for p in self._real_points]
+
+    def ideal(self):
+        r"""The prime ideal of the component this solution belongs to.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: solve_exactly([x^2 - 2], [x])[0].ideal()
+            Ideal (x0^2 - 2) of Multivariate Polynomial Ring in x0 over Rational Field
+        """
+        return self._prime
+
+    def translation(self):
+        r"""The translation between the unknowns and the ring.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: solve_exactly([x^2 - 2], [x])[0].translation().unknowns()
+            [x]
+        """
+        return self._T
+
+    def substitutions(self):
+        r"""
+        A dict to substitute into symbolic expressions in the unknowns:
+        values of the explicit unknowns, and `\cos q`, `\sin q` of angles
+        whose cosine and sine are known.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: q, a = var('q a')
+            sage: s = solve_exactly([cos(q) - a], [q])[0]
+            sage: s.substitutions()
+            {sin(q): sqrt(-a^2 + 1), cos(q): a, q: arccos(a)}
+        """
+        subs = {}
+        gens = self._T.symbolic_generators()
+        for k, g in enumerate(gens):
+            name = f"x{k}"
+            if name in self._ring_values and not g.is_symbol():
+                subs[g] = self._ring_values[name]
+        for i, v in self._values.items():
+            subs[self._T.unknowns()[i]] = v
+        return subs
+
+    def evaluate(self, expr):
+        r"""
+        The value of a symbolic expression at this solution: trigonometric
+        functions of angles are expanded to `\cos q, \sin q` first, then the
+        known values substituted and the result normalized.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: q, a = var('q a')
+            sage: s = solve_exactly([cos(q) - a], [q])[0]
+            sage: s.evaluate(sin(2*q) + cos(q)^2)
+            a^2 + 2*sqrt(-a^2 + 1)*a
+        """
+        from .translation import expand_angles
+        angles = [u for u in self._T.unknowns() if self._T.is_angle(u)]
+        e = expand_angles(SR(expr), angles)
+        subs = self.substitutions()
+        trig = {k: v for k, v in subs.items() if not k.is_symbol()}
+        plain = {k: v for k, v in subs.items() if k.is_symbol() and not
+                 (self._T.is_angle(k))}
+        e = e.subs(trig).subs(plain)
+        return normalize(e)
+
+    def contains(self, expr):
+        r"""
+        Whether ``expr`` (rational in the unknowns, its symbols among those
+        of the system) vanishes on the whole component.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x, y = var('x y')
+            sage: s = solve_exactly([x^2 + y^2 - 1], [x, y])[0]
+            sage: s.contains((x^2 + y^2 - 1)*x), s.contains(x)
+            (True, False)
+        """
+        num, _ = self._T.numerator(expr)
+        return self._prime.reduce(num) == 0
+
+
+def _log(message):
+    verbose(message, level=1, caller_name="solve_exactly")
+
+
+def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
+                  extra=()):
+    r"""
+    The real solutions of a polynomial system, exactly: its irreducible
+    components with their dimensions, explicit values where they can be
+    written, and existence conditions (see the module documentation).
+
+    INPUT:
+
+    - ``equations`` -- symbolic expressions (each ``== 0``) or relationals;
+      rational in the unknowns after `\cos q, \sin q` of angles are replaced
+      by `c_q, s_q`
+    - ``unknowns`` -- the unknowns (symbols, or applications such as
+      ``f(q)``); every other symbol is a parameter
+    - ``counted`` -- (default: all) the unknowns counted in the dimension
+      (e.g. not the Lagrange multipliers)
+    - ``nonzero`` -- expressions that must not vanish (components inside
+      their zero set are removed)
+    - ``positive`` -- parameters declared positive (used in the conditions)
+    - ``extra`` -- expressions to be evaluated or tested later (their
+      symbols are registered as parameters)
+
+    OUTPUT: a :class:`SolutionSet`
+
+    Progress is reported through Sage's ``verbose`` (level 1); the
+    computation can be interrupted.
+
+    Raises :class:`~sage_dynsym.analysis.translation.NotAlgebraic` (an
+    :class:`~sage_dynsym.errors.AnalysisError`) if the equations are not
+    algebraic in the unknowns.
+
+    EXAMPLES: see the module documentation. Two conjugate branches of one
+    component are separate solutions::
+
+        sage: from sage_dynsym.analysis.solving import solve_exactly
+        sage: x, y, c = var('x y c')
+        sage: for s in solve_exactly([x^2 + y^2 - c, x - y], [x, y], positive=[c]):
+        ....:     print(s)
+        Solution {x: sqrt(1/2)*sqrt(c), y: sqrt(1/2)*sqrt(c)} (dimension 0)
+        Solution {x: -sqrt(1/2)*sqrt(c), y: -sqrt(1/2)*sqrt(c)} (dimension 0)
+    """
+    unknowns = [SR(u) for u in unknowns]
+    equations = [SR(e) for e in equations]
+    nonzero = [SR(e) for e in nonzero]
+    _log(f"translating {len(equations)} equations in {len(unknowns)} unknowns")
+    T = Translation(equations, unknowns, extra=list(nonzero) + [SR(e) for e in extra])
+    counted_set = set(range(len(unknowns))) if counted is None else \
+        {[str(u) for u in unknowns].index(str(SR(c))) for c in counted}
+    if T.ring() is None:
+        raise AnalysisError("no unknowns to solve for", entry="solve_exactly")
+    P = T.ring()
+    gens = T.equations()
+    I = P.ideal(gens) if gens else P.ideal([P(0)])
+    saturate = list(T.denominators())
+    for e in nonzero:
+        num, dens = T.numerator(e)
+        if num == 0:
+            raise AnalysisError(f"{e} is required nonzero but is zero", entry="nonzero")
+        saturate.append(num)
+    for f in saturate:
+        if f.degree() > 0:
+            I = I.saturation(f)[0]
+    n_eq = len(equations)
+    if I.is_one():
+        _log("the equations are inconsistent")
+        return SolutionSet(T, [], n_eq)
+    _log("decomposing into irreducible components")
+    primes = I.minimal_associated_primes() if I != P.ideal([P(0)]) else [I]
+    _log(f"{len(primes)} components")
+    solutions = []
+    for prime in primes:
+        solutions += _solve_component(T, prime, counted_set, positive)
+    solutions.sort(key=_sort_key)
+    return SolutionSet(T, solutions, n_eq)
+
+
+def _sort_key(s):
+    # numerical points in increasing order; conjugate branches stay
+    # together, in the order they were made
+    numeric = []
+    for v in s._values.values():
+        try:
+            numeric.append(float(v))
+        except (TypeError, ValueError):
+            numeric = []
+            break
+    return (s.dimension(), len(s._free), not s.is_explicit(), bool(s._conditions),
+            numeric, str(s._prime.gens()))
+
+
+# ---------------------------------------------------------------------------
+# one component
+# ---------------------------------------------------------------------------
+
+def _unit_generators(T, i):
+    return T.generators_of(T.unknowns()[i])
+
+
+def _projection_dimension(prime, keep):
+    P = prime.ring()
+    others = [v for v in P.gens() if v not in keep]
+    if not others:
+        return prime.dimension()
+    return prime.elimination_ideal(others).dimension() - len(others)
+
+
+def _free_unknowns(T, prime, counted):
+    r"""A maximal set of unknowns that the component leaves free, chosen
+    among the counted unknowns first (so their number is the dimension of
+    the projection to them)."""
+    n = len(T.unknowns())
+    total = prime.dimension()
+    order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
+    free, keep = [], []
+    for i in order:
+        if len(free) == total:
+            break
+        trial = keep + list(_unit_generators(T, i))
+        if _projection_dimension(prime, trial) == len(free) + 1:
+            free.append(i)
+            keep = trial
+    return free
+
+
+def _solve_component(T, prime, counted, positive):
+    free = _free_unknowns(T, prime, counted)
+    if free:
+        return [_family(T, prime, free, counted, positive)]
+    if T.field() is QQ:
+        return _rational_points(T, prime, counted)
+    return _parametric_points(T, prime, counted, positive)
+
+
+def _angle_value(c, s, c_sign=None, s_sign=None):
+    r"""The angle with cosine ``c`` and sine ``s``; ``s_sign`` is the sign
+    of the square root when ``s = \pm\sqrt{1 - c^2}`` (likewise ``c_sign``)."""
+    if s_sign is not None:
+        return arccos(c) if s_sign > 0 else -arccos(c)
+    if c_sign is not None:
+        return arcsin(s) if c_sign > 0 else pi - arcsin(s)
+    return arctan2(s, c)
+
+
+def _assemble(T, ring_values, signs):
+    r"""Values of the unknowns from values of the ring variables."""
+    values = {}
+    for i, u in enumerate(T.unknowns()):
+        gens = _unit_generators(T, i)
+        names = [str(g) for g in gens]
+        if not all(n in ring_values for n in names):
+            continue
+        if len(gens) == 1:
+            values[i] = ring_values[names[0]]
+        else:
+            c, s = ring_values[names[0]], ring_values[names[1]]
+            values[i] = _angle_value(c, s, signs.get(names[0]), signs.get(names[1]))
+    return values
+
+
+def _rational_points(T, prime, counted):
+    r"""Real points of a zero-dimensional component over `\QQ`, exactly."""
+    points = prime.variety(AA)
+    if not points:
+        return []
+    if all(a.minpoly().degree() <= 2 for p in points for a in p.values()):
+        result = []
+        for p in points:
+            ring_values, signs = {}, {}
+            for g, a in p.items():
+                ring_values[str(g)] = SR(a.radical_expression()) if a.minpoly().degree() == 2 \
+                    else SR(QQ(a))
+            for i, u in enumerate(T.unknowns()):
+                if T.is_angle(u):
+                    c, s = _unit_generators(T, i)
+                    sv = p[s]
+                    if sv != 0 and sv.minpoly().degree() <= 2:
+                        signs[str(s)] = 1 if sv > 0 else -1
+            values = _assemble(T, ring_values, signs)
+            result.append(AlgebraicSolution(T, prime, [], counted, values, ring_values,
+                                            [], []))
+        return result
+    symbolic = T.symbolic_generators()
+    real = [{symbolic[k]: p[g] for k, g in enumerate(prime.ring().gens())} for p in points]
+    return [AlgebraicSolution(T, prime, [], counted, {}, {}, list(prime.gens()), [],
+                              real_points=real)]
+
+
+def _lex_ring(P):
+    return PolynomialRing(P.base_ring(), [str(g) for g in P.gens()], P.ngens(), order='lex')
+
+
+def _parametric_points(T, prime, counted, positive):
+    r"""Zero-dimensional component over `\QQ(\text{parameters})`: along
+    triangular sets, with radicals for steps of degree 2."""
+    P = prime.ring()
+    Pl = _lex_ring(P)
+    _log(f"triangular decomposition of a component of degree {prime.vector_space_dimension()}")
+    sets = Pl.ideal([Pl(g) for g in prime.gens()]).triangular_decomposition()
+    result = []
+    for tri in sets:
+        branches = _solve_triangular(T, Pl, list(tri.gens()), positive)
+        if branches is None:
+            return [_implicit(T, prime, counted, positive)]
+        for ring_values, signs, conditions in branches:
+            values = _assemble(T, ring_values, signs)
+            result.append(AlgebraicSolution(T, prime, [], counted, values, ring_values,
+                                            [], conditions))
+    return result
+
+
+def _solve_triangular(T, Pl, triangular, positive):
+    r"""Branches ``(ring values, radical signs, conditions)`` of a
+    triangular set, or ``None`` if a step has degree above 2."""
+    gens = Pl.gens()
+    index = {str(g): k for k, g in enumerate(gens)}
+
+    def main(t):        # the leading variable in the lexicographic order
+        return min(index[str(v)] for v in t.variables())
+
+    branches = [({}, {}, [])]
+    for t in sorted(triangular, key=main, reverse=True):
+        v = gens[main(t)]
+        d = t.degree(v)
+        if d > 2:
+            return None
+        coefficients = t.polynomial(v)
+        new = []
+        for values, signs, conds in branches:
+            cs = [normalize(T.symbolic(coefficients[k], values)) for k in range(d + 1)]
+            for value, sign, extra in _roots(cs, positive):
+                c = conjunction(conds, extra)
+                if c is None:
+                    continue
+                vals = dict(values)
+                vals[str(v)] = value
+                sg = dict(signs)
+                if sign is not None:
+                    sg[str(v)] = sign
+                new.append((vals, sg, c))
+        branches = new
+    return branches
+
+
+def _roots(cs, positive):
+    r"""Real roots of ``cs[0] + cs[1] v (+ cs[2] v^2)``: triples
+    ``(value, sign of the square root or None, conditions)``."""
+    if len(cs) == 2:
+        c0, c1 = cs
+        value = normalize(-c0 / c1)
+        cond = conjunction(nonzero_conditions(c1, positive),
+                           nonzero_conditions(value.denominator(), positive))
+        return [] if cond is None else [(value, None, cond)]
+    c0, c1, c2 = cs
+    lead = nonzero_conditions(c2, positive)
+    if lead is None:
+        return []
+    if c1.is_zero():
+        D = normalize(-c0 / c2)
+        base = SR(0)
+    else:
+        D = normalize((c1 ** 2 - 4 * c0 * c2) / (4 * c2 ** 2))
+        base = normalize(-c1 / (2 * c2))
+    if D.is_numeric():
+        if D < 0:
+            return []
+        if D == 0:
+            return [(base, None, lead)]
+        real = []
+    else:
+        real = positive_conditions(D, positive)
+        if real is None:
+            return []
+    root = _square_root(D, positive)
+    cond = conjunction(lead, real)
+    if c1.is_zero():      # v = +-sqrt(D): the sign of each branch is known
+        return [(root, 1, cond), (-root, -1, cond)]
+    return [(normalize(base + root), None, cond), (normalize(base - root), None, cond)]
+
+
+def _square_root(D, positive):
+    r"""`\sqrt D` with the square factors known to be positive taken out."""
+    from .conditions import _translate
+    from ._polynomials import positive_polynomial
+    T, (f,) = _translate([D])
+    names = T.positive_names(positive)
+    flat = T.flat_ring()
+    if flat is None:
+        return SR(D).sqrt()
+    outside, inside, extracted = SR(1), SR(1), False
+    for part, sign in ((f.numerator(), 1), (f.denominator(), -1)):
+        part = flat(part)
+        if part.is_constant():
+            inside *= SR(QQ(part.constant_coefficient())) ** sign
+            continue
+        F = part.factor()
+        inside *= SR(QQ(F.unit())) ** sign
+        for g, e in F:
+            g_sr = T.symbolic(g)
+            if positive_polynomial(g, names) and e > 1:
+                extracted = True
+                outside *= g_sr ** (sign * (e // 2))
+                inside *= g_sr ** (sign * (e % 2))
+            else:
+                inside *= g_sr ** (sign * e)
+    return outside * inside.sqrt() if extracted else SR(D).sqrt()
+
+
+def _implicit(T, prime, counted, positive):
+    r"""A zero-dimensional component that is not written explicitly; its
+    reality is decided by quantifier elimination where possible."""
+    from .quantifier_elimination import exists_real_solution
+    try:
+        conditions = exists_real_solution(T, prime, positive)
+        known = True
+    except AnalysisError:
+        conditions, known = [], False
+    if conditions is None:
+        return []
+    return AlgebraicSolution(T, prime, [], counted, {}, {}, list(prime.gens()), conditions,
+                             reality_known=known)
+
+
+def _family(T, prime, free, counted, positive):
+    r"""A component of positive dimension, parametrised by the unknowns
+    ``free``: other unknowns as rational functions of them where a Gröbner
+    basis in a block order has a linear equation for them."""
+    P = prime.ring()
+    free_gens = [g for i in free for g in _unit_generators(T, i)]
+    bound = [g for g in P.gens() if g not in free_gens]
+    if not bound:
+        return AlgebraicSolution(T, prime, free, counted, {}, {}, [], [])
+    order = TermOrder('degrevlex', len(bound)) + TermOrder('degrevlex', len(free_gens))
+    names = [str(g) for g in bound + free_gens]
+    Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
+    basis = Pb.ideal([Pb(g) for g in prime.gens()]).groebner_basis()
+    bound_b = [Pb(str(g)) for g in bound]
+    ring_values, relations, conditions = {}, [], []
+    for g in basis:
+        present = [v for v in bound_b if g.degree(v) > 0]
+        if len(present) == 1 and g.degree(present[0]) == 1 and \
+                all(sum(m.degree(v) for v in bound_b) <= 1 for m in g.monomials()) and \
+                str(present[0]) not in ring_values:
+            v = present[0]
+            a = g.coefficient({v: 1})
+            b = g - a * v
+            a_sr, b_sr = T.symbolic(P(a)), T.symbolic(P(b))
+            ring_values[str(v)] = normalize(-b_sr / a_sr)
+            conditions = conjunction(conditions, nonzero_conditions(a_sr, positive)) or []
+        else:
+            relations.append(P(g))
+    circle = {str(r) for r in T.circle_relations()}
+    relations = [r for r in relations if str(r) not in circle]
+    values = _assemble(T, ring_values, {})
+    return AlgebraicSolution(T, prime, free, counted, values, ring_values,
+                             relations, conditions)

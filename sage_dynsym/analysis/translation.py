@@ -1,0 +1,729 @@
+r"""
+Symbolic expressions as polynomials: the translation under the exact algebra
+
+The exact algebra of the analysis (decomposition of solution sets,
+definiteness, quantifier elimination) works over polynomial rings. This
+module translates symbolic expressions into them and back:
+
+- the *unknowns* become polynomial variables; an unknown `q` that occurs in
+  trigonometric functions becomes the pair `(c_q, s_q) = (\cos q, \sin q)`
+  with the relation `c_q^2 + s_q^2 = 1` (multiple angles `\sin(2q)`, sums
+  `\cos(q_1 - q_2)` and `\tan q` are expanded first);
+- every other symbol is a *parameter*, and so is every subexpression free of
+  the unknowns that is not polynomial -- a derivative `D[0](f)(u)` of an
+  unspecified function, `\cos\alpha` of a parameter, `\sqrt{g l}`, `\pi`.
+  Such *atoms* are treated as independent parameters, which is right for
+  generic values of them;
+- floating-point numbers become the simplest rational number that rounds
+  to them (`0.1` becomes `1/10`); complex numbers are refused;
+- a rational function `N/D` gives the equation `N = 0` and records the
+  factors of `D` that contain unknowns (the solution set is taken where
+  they do not vanish).
+
+An expression in which an unknown occurs otherwise (`\exp q`, `q \sin q`,
+`\sin(q/2)`) is *not algebraic*: :class:`NotAlgebraic` names the
+subexpression.
+
+The ring variables and parameters get internal names (``x0, x1, ...``,
+``a0, a1, ...``), mapped back by position, so no user name can clash with
+them.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.analysis.translation import Translation
+    sage: theta, g, R, w = var('theta g R w')
+    sage: T = Translation([R*w^2*sin(theta)*cos(theta) - g*sin(theta)], [theta])
+    sage: T.ring()
+    Multivariate Polynomial Ring in x0, x1 over Fraction Field of Multivariate Polynomial Ring in a0, a1, a2 over Rational Field
+    sage: T.parameters()
+    [R, g, w]
+    sage: T.symbolic_generators()
+    [sin(theta), cos(theta)]
+    sage: T.equations()
+    [(a0*a2^2)*x0*x1 + (-a1)*x0, x0^2 + x1^2 - 1]
+    sage: [T.symbolic(f) for f in T.equations()]
+    [R*w^2*cos(theta)*sin(theta) - g*sin(theta), cos(theta)^2 + sin(theta)^2 - 1]
+
+Unspecified functions and their derivatives are parameters; denominators
+in the unknowns are recorded::
+
+    sage: u, v = var('u v'); f = function('f')
+    sage: T = Translation([diff(f(u), u)*v - 1/v], [v])
+    sage: T.parameters()
+    [diff(f(u), u)]
+    sage: T.equations(), T.denominators()
+    ([a0*x0^2 - 1], [x0])
+
+TESTS::
+
+    sage: Translation([exp(u) - 1], [u])
+    Traceback (most recent call last):
+    ...
+    NotAlgebraic: e^u
+    sage: Translation([u*sin(u)], [u])
+    Traceback (most recent call last):
+    ...
+    NotAlgebraic: u occurs both inside and outside trigonometric functions
+    sage: Translation([I*u], [u])
+    Traceback (most recent call last):
+    ...
+    AnalysisError: equations: complex numbers are not supported (got I)
+    sage: Translation([0.1*u - 1/5], [u]).equations()
+    [1/10*x0 - 1/5]
+"""
+import operator
+
+from sage.functions.trig import sin, cos, tan, cot, sec, csc
+from sage.misc.misc_c import prod
+from sage.rings.fraction_field import FractionField
+from sage.rings.integer_ring import ZZ
+from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.rational_field import QQ
+from sage.rings.real_mpfr import RR
+from sage.symbolic.operators import add_vararg, mul_vararg
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+
+#: The largest integer multiple `k q` of an unknown angle that is expanded
+#: by the multiple-angle formulas (higher multiples are refused as not
+#: algebraic rather than producing huge polynomials).
+MAX_ANGLE_MULTIPLE = 24
+
+_TRIG = (sin, cos, tan, cot, sec, csc)
+
+
+class NotAlgebraic(AnalysisError):
+    r"""
+    An expression that is not polynomial (or rational) in the unknowns,
+    after trigonometric functions of the unknowns are replaced by `(c, s)`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.translation import NotAlgebraic
+        sage: print(NotAlgebraic("log(x)"))
+        log(x)
+    """
+
+
+def exact_rational(number, what="equations"):
+    r"""
+    The rational number for a numeric constant: exact for integers and
+    rationals, the simplest rational that rounds to a floating-point number.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.translation import exact_rational
+        sage: exact_rational(0.1), exact_rational(SR(3/4)), exact_rational(float(2.5))
+        (1/10, 3/4, 5/2)
+        sage: exact_rational(float('nan'))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: equations: not a finite real number: nan
+    """
+    value = number.pyobject() if hasattr(number, 'pyobject') else number
+    try:
+        return QQ(value)
+    except (TypeError, ValueError, ArithmeticError):
+        pass
+    if isinstance(value, float):
+        value = RR(value)
+    if hasattr(value, 'imag') and not hasattr(value, 'simplest_rational'):
+        try:
+            imaginary = value.imag()
+        except (TypeError, AttributeError):
+            imaginary = 0
+        if imaginary:
+            raise AnalysisError(f"complex numbers are not supported (got {number})",
+                                entry=what)
+        value = value.real()
+    if not hasattr(value, 'simplest_rational') or not value.is_real() or \
+            value.is_infinity() or value.is_NaN():
+        raise AnalysisError(f"not a finite real number: {number}", entry=what)
+    return value.simplest_rational()
+
+
+class Translation:
+    r"""
+    The translation of a list of symbolic expressions into polynomials over
+    the field of rational functions of the parameters (see the module
+    documentation).
+
+    INPUT:
+
+    - ``expressions`` -- symbolic expressions (equations ``== 0``); a
+      relational ``a == b`` stands for ``a - b``
+    - ``unknowns`` -- the unknowns: symbols, or function applications such
+      as ``f(q)`` (they are replaced by symbols first)
+    - ``extra`` -- (optional) further expressions whose symbols and atoms
+      are registered as parameters without becoming equations (e.g. the
+      expressions to be evaluated later at the solutions)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.translation import Translation
+        sage: x, y, a = var('x y a')
+        sage: T = Translation([x^2 + y^2 - a, x - y], [x, y]); T
+        Translation of 2 equations in x, y (parameters a)
+        sage: T.equations()
+        [x0^2 + x1^2 + (-a0), -x0 + x1]
+    """
+
+    def __init__(self, expressions, unknowns, extra=()):
+        self._unknowns = [SR(u) for u in unknowns]
+        # unknowns that are not symbols (f(q)) become fresh symbols
+        self._stand_ins = {}
+        symbols = []
+        for u in self._unknowns:
+            if u.is_symbol():
+                symbols.append(u)
+            else:
+                s = SR.symbol()
+                self._stand_ins[u] = s
+                symbols.append(s)
+        self._symbols = symbols
+        self._index = {str(s): i for i, s in enumerate(symbols)}
+        if len(self._index) != len(symbols):
+            raise AnalysisError(f"the unknowns {self._unknowns} are not distinct",
+                                entry="unknowns")
+        expressions = [self._prepare(e) for e in expressions]
+        extra = [self._prepare(e) for e in extra]
+        # first pass: which unknowns are angles, which parameters and atoms occur
+        self._angles, self._plain = set(), set()
+        self._parameter_names, self._atoms = {}, {}
+        self._FF = None
+        for e in expressions + extra:
+            self._walk(e)
+        mixed = self._angles & self._plain
+        if mixed:
+            u = self._unknowns[min(mixed)]
+            raise NotAlgebraic(f"{u} occurs both inside and outside trigonometric "
+                               f"functions")
+        self._build_rings()
+        self._equations, self._denominators = [], []
+        for e in expressions:
+            num, dens = self.numerator(e)
+            if num != 0:
+                self._equations.append(num)
+            for d in dens:
+                if d not in self._denominators:
+                    self._denominators.append(d)
+        self._equations += self.circle_relations()
+
+    # -- preparation and the walk ------------------------------------------
+
+    def _prepare(self, e):
+        e = SR(e)
+        if e.is_relational():
+            e = e.lhs() - e.rhs()
+        return e.subs(self._stand_ins) if self._stand_ins else e
+
+    def _unknown_index(self, e):
+        return self._index.get(str(e)) if e.is_symbol() else None
+
+    def _has_unknown(self, e):
+        return any(str(v) in self._index for v in e.variables())
+
+    def _walk(self, e):
+        r"""First pass (``self._FF is None``): register; second pass: the
+        element of the flat fraction field."""
+        if e.is_symbol():
+            i = self._unknown_index(e)
+            if i is not None:
+                if self._FF is None:
+                    self._plain.add(i)
+                    return None
+                return self._FF(self._ring_gen(i, 'x'))
+            return self._parameter(e)
+        if e.is_numeric():
+            q = exact_rational(e)
+            return None if self._FF is None else self._FF(q)
+        op = e.operator()
+        if op is add_vararg or op is mul_vararg:
+            parts = [self._walk(a) for a in e.operands()]
+            if self._FF is None:
+                return None
+            return sum(parts, self._FF(0)) if op is add_vararg else prod(parts, self._FF(1))
+        if op is operator.pow:
+            base, exponent = e.operands()
+            if exponent.is_numeric() and exponent.pyobject() in ZZ:
+                b = self._walk(base)
+                return None if self._FF is None else b ** ZZ(exponent.pyobject())
+            if self._has_unknown(e):
+                raise NotAlgebraic(str(e))
+            return self._atom(e)
+        if op in _TRIG and self._has_unknown(e):
+            return self._trig(op, e.operands()[0])
+        if op is None and not e.variables():      # pi, e, ...
+            return self._atom(e)
+        if self._has_unknown(e):
+            raise NotAlgebraic(str(e))
+        return self._atom(e)
+
+    def _parameter(self, e):
+        name = str(e)
+        if self._FF is None:
+            self._parameter_names.setdefault(name, e)
+            return None
+        return self._FF(self._param_gen[name])
+
+    def _atom(self, e):
+        key = str(e)
+        if self._FF is None:
+            self._atoms.setdefault(key, e)
+            return None
+        return self._FF(self._param_gen[key])
+
+    def _trig(self, op, argument):
+        # argument = sum k_j u_j + rest, k_j integers, rest free of unknowns
+        multiples = {}
+        rest = argument
+        for v in argument.variables():
+            i = self._index.get(str(v))
+            if i is None:
+                continue
+            k = argument.diff(v)
+            if not k.is_numeric() or k.pyobject() not in ZZ:
+                raise NotAlgebraic(str(op(argument)))
+            k = ZZ(k.pyobject())
+            if abs(k) > MAX_ANGLE_MULTIPLE:
+                raise NotAlgebraic(f"{op(argument)} (multiples of an angle above "
+                                   f"{MAX_ANGLE_MULTIPLE} are not expanded)")
+            multiples[i] = k
+            rest = rest - k * v
+        rest = rest.expand()
+        if self._has_unknown(rest):
+            raise NotAlgebraic(str(op(argument)))
+        if self._FF is None:
+            self._angles.update(multiples)
+            if not rest.is_zero():
+                self._atom(cos(rest))
+                self._atom(sin(rest))
+            return None
+        one, zero = self._FF(1), self._FF(0)
+        C, S = (one, zero) if rest.is_zero() else (self._atom(cos(rest)), self._atom(sin(rest)))
+        for i, k in multiples.items():
+            c, s = self._FF(self._ring_gen(i, 'c')), self._FF(self._ring_gen(i, 's'))
+            if k < 0:
+                s, k = -s, -k
+            for _ in range(k):
+                C, S = C * c - S * s, S * c + C * s
+        return {sin: S, cos: C, tan: S / C, cot: C / S, sec: 1 / C, csc: 1 / S}[op]
+
+    # -- rings -----------------------------------------------------------
+
+    def _build_rings(self):
+        params = sorted(self._parameter_names) + sorted(self._atoms)
+        self._params = [self._parameter_names.get(p, self._atoms.get(p)) for p in params]
+        self._is_atom = [p not in self._parameter_names for p in params]
+        # ring variables: the last unknown first, so that a lexicographic
+        # order solves the first unknown first; an angle gives (s, c)
+        gens, self._generator_of = [], {}
+        for i in reversed(range(len(self._symbols))):
+            kinds = ('s', 'c') if i in self._angles else ('x',)
+            for kind in kinds:
+                self._generator_of[(i, kind)] = len(gens)
+                gens.append((i, kind))
+        self._gens = gens
+        pnames = [f"a{k}" for k in range(len(params))]
+        vnames = [f"x{k}" for k in range(len(gens))]
+        self._field = QQ if not pnames else FractionField(PolynomialRing(QQ, pnames, len(pnames)))
+        self._ring = (PolynomialRing(self._field, vnames, len(vnames), order="degrevlex")
+                      if vnames else None)
+        names = pnames + vnames
+        self._flat = PolynomialRing(QQ, names, len(names)) if names else None
+        self._FF = self._flat.fraction_field() if self._flat is not None else QQ
+        self._param_gen = {p: self._flat.gen(k) for k, p in enumerate(params)}
+        self._nparams = len(params)
+
+    def _ring_gen(self, i, kind):
+        return self._flat.gen(self._nparams + self._generator_of[(i, kind)])
+
+    # -- accessors ---------------------------------------------------------
+
+    def __repr__(self):
+        unknowns = ', '.join(map(str, self._unknowns))
+        params = ', '.join(map(str, self._params))
+        return (f"Translation of {len(self._equations) - len(self.circle_relations())} "
+                f"equations in {unknowns}" + (f" (parameters {params})" if params else ""))
+
+    def unknowns(self):
+        r"""The unknowns, as given.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: Translation([a*x], [x]).unknowns()
+            [x]
+        """
+        return list(self._unknowns)
+
+    def ring(self):
+        r"""The polynomial ring of the unknowns over the parameters' field
+        (``None`` without unknowns).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: Translation([a*x], [x]).ring()
+            Multivariate Polynomial Ring in x0 over Fraction Field of Multivariate Polynomial Ring in a0 over Rational Field
+        """
+        return self._ring
+
+    def field(self):
+        r"""The field of the parameters: `\QQ`, or rational functions in them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x = var('x')
+            sage: Translation([x^2 - 2], [x]).field()
+            Rational Field
+        """
+        return self._field
+
+    def flat_ring(self):
+        r"""The polynomial ring over `\QQ` in the parameters and the ring
+        variables together (parameters first).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: Translation([a*x], [x]).flat_ring()
+            Multivariate Polynomial Ring in a0, x0 over Rational Field
+        """
+        return self._flat
+
+    def parameters(self):
+        r"""The parameters (symbols and atoms), in the order of the field's
+        generators.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, b, a = var('x b a')
+            sage: Translation([b*x - cos(a)], [x]).parameters()
+            [b, cos(a)]
+        """
+        return list(self._params)
+
+    def symbolic_generators(self):
+        r"""What each ring variable stands for: an unknown, or `\cos`/`\sin`
+        of an unknown angle.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, q = var('x q')
+            sage: Translation([x - cos(q)], [x, q]).symbolic_generators()
+            [sin(q), cos(q), x]
+        """
+        return [self._symbolic_gen(i, kind) for i, kind in self._gens]
+
+    def _symbolic_gen(self, i, kind):
+        u = self._unknowns[i]
+        return {'x': u, 'c': cos(u), 's': sin(u)}[kind]
+
+    def generators_of(self, unknown):
+        r"""The ring variables of one unknown: ``(x,)`` or ``(c, s)``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, q = var('x q')
+            sage: T = Translation([x - cos(q)], [x, q])
+            sage: T.generators_of(q), T.generators_of(x)
+            ((x1, x0), (x2,))
+        """
+        i = [str(u) for u in self._unknowns].index(str(SR(unknown)))
+        kinds = ('c', 's') if i in self._angles else ('x',)
+        return tuple(self._ring.gen(self._generator_of[(i, k)]) for k in kinds)
+
+    def is_angle(self, unknown):
+        r"""Whether the unknown occurs in trigonometric functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, q = var('x q')
+            sage: T = Translation([x - cos(q)], [x, q]); T.is_angle(q), T.is_angle(x)
+            (True, False)
+        """
+        return [str(u) for u in self._unknowns].index(str(SR(unknown))) in self._angles
+
+    def equations(self):
+        r"""The polynomial equations (numerators, and the circle relations
+        `c^2 + s^2 - 1` of the angles), elements of :meth:`ring`.
+
+        EXAMPLES: see the module documentation.
+        """
+        return list(self._equations)
+
+    def denominators(self):
+        r"""The distinct irreducible factors of the denominators that
+        contain unknowns (where the equations are not defined).
+
+        EXAMPLES: see the module documentation.
+        """
+        return list(self._denominators)
+
+    def circle_relations(self):
+        r"""`c^2 + s^2 - 1` for every angle.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: q = var('q')
+            sage: Translation([sin(2*q)], [q]).circle_relations()
+            [x0^2 + x1^2 - 1]
+        """
+        rels = []
+        for i in sorted(self._angles):
+            c = self._ring.gen(self._generator_of[(i, 'c')])
+            s = self._ring.gen(self._generator_of[(i, 's')])
+            rels.append(c ** 2 + s ** 2 - 1)
+        return rels
+
+    def positive_names(self, positive=()):
+        r"""The names (in :meth:`flat_ring`) of the parameters known to be
+        positive: those declared in ``positive``, atoms that are positive
+        constants, and square roots (taken where they are real).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a, b = var('x a b')
+            sage: T = Translation([a*x - pi*sqrt(b)], [x])
+            sage: T.parameters(), sorted(T.positive_names([a]))
+            ([a, pi, sqrt(b)], ['a0', 'a1', 'a2'])
+        """
+        declared = {str(SR(p)) for p in positive}
+        names = set()
+        for k, (p, atom) in enumerate(zip(self._params, self._is_atom)):
+            if str(p) in declared:
+                names.add(f"a{k}")
+            elif atom and not p.variables():
+                try:
+                    if float(p.n()) > 0:
+                        names.add(f"a{k}")
+                except (TypeError, ValueError):
+                    pass
+            elif atom and p.operator() is operator.pow and \
+                    p.operands()[1].is_numeric() and p.operands()[1].pyobject() == QQ((1, 2)):
+                names.add(f"a{k}")
+        return names
+
+    # -- translation -------------------------------------------------------
+
+    def fraction(self, expr):
+        r"""``expr`` as an element of the fraction field of
+        :meth:`flat_ring` (its symbols must have been registered).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: T = Translation([a*x - 1], [x])
+            sage: T.fraction(x/a + 1)
+            (a0 + x0)/a0
+        """
+        e = self._prepare(expr)
+        try:
+            return self._walk(e)
+        except KeyError as err:
+            raise AnalysisError(f"{expr} contains {err.args[0]}, which is not "
+                                f"among the registered symbols", entry="translation") from None
+
+    def numerator(self, expr):
+        r"""The numerator of ``expr`` in :meth:`ring` and the list of the
+        irreducible factors of its denominator that contain unknowns.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: T = Translation([a*x - 1/x], [x])
+            sage: T.numerator(a*x - 1/x)
+            (a0*x0^2 - 1, [x0])
+        """
+        f = self.fraction(expr)
+        num = self.to_ring(f.numerator())
+        dens = []
+        if self._ring is not None:
+            den = self.to_ring(f.denominator())
+            if den.degree() > 0:
+                for factor, _ in den.factor():
+                    if factor.degree() > 0:
+                        dens.append(factor * ~factor.lc())
+        return num, dens
+
+    def to_ring(self, flat):
+        r"""A polynomial of :meth:`flat_ring` as an element of :meth:`ring`
+        (parameters into the coefficients).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: T = Translation([a*x - 1], [x])
+            sage: T.to_ring(T.flat_ring()('a0^2*x0 + a0'))
+            (a0^2)*x0 + a0
+        """
+        if self._ring is None:
+            return self._field(flat)
+        flat = self._flat(flat)
+        n = self._nparams
+        params = self._field.gens() if n else ()
+        result = self._ring(0)
+        vars_ = self._ring.gens()
+        for exps, c in flat.dict().items():
+            coefficient = self._field(c) * prod((params[k] ** e for k, e in
+                                                 enumerate(exps[:n]) if e), self._field(1))
+            result += coefficient * prod((vars_[k] ** e for k, e in enumerate(exps[n:]) if e),
+                                         self._ring(1))
+        return result
+
+    def to_flat(self, element):
+        r"""An element of :meth:`ring` or :meth:`field` as a pair
+        ``(numerator, denominator)`` of :meth:`flat_ring` polynomials.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, a = var('x a')
+            sage: T = Translation([a*x - 1], [x])
+            sage: T.to_flat(T.ring()('x0/a0 + 1'))
+            (a0 + x0, a0)
+        """
+        F = self._FF
+        if self._flat is None:
+            q = QQ(element)
+            return q.numerator(), q.denominator()
+        n = self._nparams
+        params = [F(g) for g in self._flat.gens()[:n]]
+        variables = [F(g) for g in self._flat.gens()[n:]]
+
+        def coefficient(c):
+            if self._field is QQ:
+                return F(c)
+            return F(_evaluate(c.numerator(), params)) / F(_evaluate(c.denominator(), params))
+
+        parent = element.parent() if hasattr(element, 'parent') else None
+        if self._ring is None or parent is self._field or parent is QQ or parent is ZZ:
+            value = coefficient(self._field(element))
+        else:
+            value = F(0)
+            for exps, c in self._ring(element).dict().items():
+                value += coefficient(c) * prod((variables[k] ** e for k, e in enumerate(exps) if e),
+                                               F(1))
+        return self._flat(value.numerator()), self._flat(value.denominator())
+
+    def symbolic(self, element, substitutions=None):
+        r"""Back to the symbolic ring: an element of :meth:`ring`,
+        :meth:`field`, :meth:`flat_ring` or its fraction field.
+
+        INPUT:
+
+        - ``substitutions`` -- (optional) dict mapping ring variables of
+          :meth:`ring` to symbolic values (instead of what they stand for)
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: q, k = var('q k')
+            sage: T = Translation([k*sin(2*q)], [q])
+            sage: T.symbolic(T.equations()[0])
+            2*k*cos(q)*sin(q)
+            sage: c, s = T.generators_of(q)
+            sage: T.symbolic(T.equations()[0], {c: 1/2, s: sqrt(3)/2})
+            1/2*sqrt(3)*k
+        """
+        images = [SR(p) for p in self._params]
+        gens = self.symbolic_generators()
+        if substitutions:
+            by_name = {str(k): SR(v) for k, v in substitutions.items()}
+            gens = [by_name.get(f"x{k}", g) for k, g in enumerate(gens)]
+        parent = element.parent() if hasattr(element, 'parent') else None
+        if self._flat is not None and parent in (self._FF, self._flat):
+            element = self._FF(element)
+            return (_poly_to_sr(self._flat(element.numerator()), images + gens) /
+                    _poly_to_sr(self._flat(element.denominator()), images + gens))
+        num, den = self.to_flat(element)
+        return _poly_to_sr(num, images + gens) / _poly_to_sr(den, images + gens)
+
+
+def _evaluate(poly, values):
+    r"""``poly`` (in the generators of its ring) at ``values``."""
+    return poly(*values) if poly.parent().ngens() > 1 else poly(values[0])
+
+
+def _poly_to_sr(poly, images):
+    r"""A polynomial over `\QQ` as a symbolic expression, its generators
+    replaced by ``images``, built in one sum."""
+    if poly.parent() is QQ or not hasattr(poly, 'dict'):
+        return SR(poly)
+    terms = []
+    for exps, c in poly.dict().items():
+        term = SR(c)
+        for k, e in enumerate((exps,) if isinstance(exps, int) else exps):
+            if e:
+                term = term * images[k] ** e
+        terms.append(term)
+    return SR.sum(terms) if terms else SR(0)
+
+
+def expand_angles(expr, angles):
+    r"""
+    Rewrite trigonometric functions of integer combinations of the
+    ``angles`` (plus a part free of them) in terms of `\cos q, \sin q` of
+    each angle: `\sin 2q = 2\sin q\cos q`, `\tan q = \sin q/\cos q`, ...
+    Other parts of ``expr`` are left as they are.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.translation import expand_angles
+        sage: q, r, a = var('q r a')
+        sage: expand_angles(sin(2*q) + tan(q - r) + cos(a), [q, r])
+        2*cos(q)*sin(q) + (cos(r)*sin(q) - cos(q)*sin(r))/(cos(q)*cos(r) + sin(q)*sin(r)) + cos(a)
+        sage: expand_angles(cos(q + a), [q])
+        cos(a)*cos(q) - sin(a)*sin(q)
+    """
+    names = {str(SR(a)): SR(a) for a in angles}
+    if not names:
+        return SR(expr)
+
+    def walk(e):
+        op = e.operator()
+        if op is None:
+            return e
+        args = [walk(a) for a in e.operands()]
+        if op in _TRIG and any(str(v) in names for v in args[0].variables()):
+            argument = args[0]
+            multiples, rest = [], argument
+            for v in argument.variables():
+                if str(v) not in names:
+                    continue
+                k = argument.diff(v)
+                if not k.is_numeric() or k.pyobject() not in ZZ or \
+                        abs(ZZ(k.pyobject())) > MAX_ANGLE_MULTIPLE:
+                    return op(*args)
+                multiples.append((v, ZZ(k.pyobject())))
+                rest = rest - k * v
+            rest = rest.expand()
+            if any(str(v) in names for v in rest.variables()):
+                return op(*args)
+            C, S = (SR(1), SR(0)) if rest.is_zero() else (cos(rest), sin(rest))
+            for v, k in multiples:
+                c, s = cos(v), sin(v)
+                if k < 0:
+                    s, k = -s, -k
+                for _ in range(k):
+                    C, S = C * c - S * s, S * c + C * s
+            C, S = C.expand(), S.expand()
+            return {sin: S, cos: C, tan: S / C, cot: C / S, sec: 1 / C, csc: 1 / S}[op]
+        return op(*args)
+
+    return walk(SR(expr))
