@@ -43,10 +43,10 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from .errors import ModelError
-from .expressions import velocity, acceleration, t
+from .expressions import velocity, acceleration, t, time_derivative
 from .natural_equations import natural_equations
 from .kinematics import Kinematics
-from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial
+from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial, trig_rational_simplify
 from .lagrangian import Lagrangian, _natural_form
 from .rigid_body import RigidBody
 
@@ -530,8 +530,11 @@ class MechanicalSystem(SageObject):
             [             0          l^2*m]
         """
         self._check_index(k)
-        kinematics = self._polynomial_kinematics() or self._symbolic
-        to_symbolic = kinematics._backend.to_symbolic
+        kinematics = self._polynomial_kinematics()
+        if kinematics is None:
+            kinematics, to_symbolic = self._symbolic, trig_rational_simplify
+        else:
+            to_symbolic = kinematics._backend.simplest_fraction
         A, A1, A0 = kinematics.body_decomposition(k)
         A = matrix(SR, [[to_symbolic(e) for e in row] for row in A])
         A.set_immutable()
@@ -544,17 +547,23 @@ class MechanicalSystem(SageObject):
         when the model is polynomial in the sines and cosines of its angles
         and in its parameters (the usual case), else ``None``.
         """
-        symbols = set(self._coordinates) | set(self._velocities) | {t}
-        angles = []
+        dynamic = self._coordinates + self._velocities + [t]
+        data = list(dynamic)
         for body in self._bodies:
-            data = [angle for _, angle in body.rotations()] + list(body.joint())
+            for _, angle in body.rotations():
+                # the sines and cosines of constant angles may be numbers
+                # (sqrt(3)/2 at pi/6: an atom of the ring); rates enter W_k
+                data += [SR(angle).cos(), SR(angle).sin(),
+                         time_derivative(angle, self._coordinates, self._velocities)]
+            data += list(body.joint()) + [time_derivative(c, self._coordinates,
+                                                          self._velocities)
+                                          for c in body.joint()]
             data += list(body.velocity() or ()) + list(body.mass_center())
             data += [body.mass()] + body.inertia().list()
-            for expr in data:
-                symbols.update(SR(expr).variables())
-            angles += [angle for _, angle in body.rotations()]
         try:
-            ring = TrigPolynomialRing(angles, symbols)
+            # sines and cosines of every angle, including known functions of
+            # time and parameters, are generators: their squares reduce
+            ring = TrigPolynomialRing.for_expressions(data, dynamic)
             kinematics = Kinematics(self, ring)
             for k in range(1, len(self._bodies) + 1):
                 kinematics.body_decomposition(k)
@@ -583,11 +592,13 @@ class MechanicalSystem(SageObject):
         if data is None:
             n = len(self._coordinates)
             parts = [self.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
-            A = sum((p[0] for p in parts), matrix(SR, n, n))
-            A1 = sum((p[1] for p in parts), vector(SR, n))
-            A0 = sum((p[2] for p in parts), SR(0)) + self.force_function()
+            A = sum((p[0] for p in parts), matrix(SR, n, n)).apply_map(trig_rational_simplify)
+            A1 = sum((p[1] for p in parts), vector(SR, n)).apply_map(trig_rational_simplify)
+            A0 = trig_rational_simplify(sum((p[2] for p in parts), SR(0))) + self.force_function()
         else:
-            to_symbolic = data[0].symbolic
+            # the shortest of the reduced forms (entries of a big mass matrix
+            # just get the canonical recursive form, see simplest_fraction)
+            to_symbolic = data[0].ring.simplest_fraction
             n = len(data[1])
             A = matrix(SR, n, n)
             for i in range(n):
@@ -665,7 +676,7 @@ class MechanicalSystem(SageObject):
         if self._force is None:
             return SR(0)
         if hasattr(self._force, 'evaluate'):
-            return self._force.evaluate(self).expand()
+            return trig_rational_simplify(self._force.evaluate(self).expand())
         return SR(self._force)
 
     @cached_method

@@ -28,11 +28,17 @@ EXAMPLES::
 """
 from collections import Counter
 from itertools import chain
+import operator
 from operator import itemgetter
 
-from sage.arith.misc import factorial
+from sage.arith.functions import lcm
+from sage.arith.misc import factorial, gcd
+from sage.functions.trig import cos, sin
+from sage.rings.integer import Integer
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.rational import Rational
 from sage.rings.rational_field import QQ
+from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
 
@@ -44,6 +50,104 @@ class NotPolynomial(ValueError):
     Raised when an expression cannot be written in a
     :class:`TrigPolynomialRing`; callers then work in the symbolic ring.
     """
+
+
+def _is_rational(number):
+    return isinstance(number.pyobject(), (Integer, Rational))
+
+
+def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
+    r"""
+    Record what a polynomial ring needs to hold ``expr``: the arguments of
+    its sines and cosines in ``angles``, its non-polynomial parts
+    (constants such as `\pi` or `\sqrt 2`, powers of parameters with
+    fractional or negative exponents, other functions) in ``atoms`` (dicts
+    used as ordered sets) and its symbols in the set ``symbols``. With
+    ``fractions``, negative integer powers are allowed (rational functions).
+
+    A non-polynomial part containing a symbol of ``dynamic`` (coordinates,
+    velocities, time: it would not be differentiated) raises
+    :class:`NotPolynomial`, as does an inexact number.
+    """
+    stack = [SR(expr)]
+    while stack:
+        e = stack.pop()
+        op = e.operator()
+        if op is None:
+            if e.is_symbol():
+                symbols.add(e)
+                continue
+            if e.is_numeric():
+                if not _is_rational(e):
+                    raise NotPolynomial(f"{e} is not a rational number")
+                continue
+        elif op is add_vararg or op is mul_vararg:
+            stack.extend(e.operands())
+            continue
+        elif op is operator.pow:
+            base, exponent = e.operands()
+            if exponent.is_numeric() and isinstance(exponent.pyobject(), Integer) and (
+                    fractions or exponent > 0):
+                stack.append(base)
+                continue
+        elif op is cos or op is sin:
+            angles.setdefault(e.operands()[0])
+            continue
+        if any(e.has(v) for v in dynamic):
+            raise NotPolynomial(f"{e} is not polynomial in the rotation variables and "
+                                "parameters")
+        atoms.setdefault(e)
+
+
+# Fractions whose numerator and denominator have at most this many terms
+# together are also tried in factored form (Singular's factorization is fast
+# there; the reduced form of a product rarely shows its factors).
+_FACTOR_TERMS = 40
+# Beyond this many terms only the first normal form is written (see
+# TrigPolynomialRing.simplest_fraction).
+_SHAPE_TERMS = 300
+
+
+def _content(element):
+    r"""
+    The rational `c` such that ``element / c`` has coprime integer
+    coefficients and a positive leading coefficient.
+    """
+    coefficients = element.coefficients()
+    if not coefficients:
+        return QQ.one()
+    numerators = gcd([c.numerator() for c in coefficients])
+    denominators = lcm([c.denominator() for c in coefficients])
+    content = QQ((numerators, denominators))
+    return content if element.lc() > 0 else -content
+
+
+def _circle_reduce(element, pairs, zero):
+    r"""
+    ``element`` with `c^2` replaced by `1 - s^2` for every pair ``(c, s)``:
+    a linear-time normal form modulo the ideal `(c^2 + s^2 - 1)`.
+    """
+    # Singular's normal form (and its division) is quadratic in the length
+    # of the polynomial: minutes for the 50,000-term entries of a 6-link
+    # chain. Here each angle costs a few linear passes: the Taylor
+    # coefficients p_k of element = sum_k c^k p_k, then c^2 = 1 - s^2.
+    for c, s in pairs:
+        degree = element.degree(c)
+        if degree < 2:
+            continue
+        parts, derivative = [], element
+        for k in range(degree + 1):
+            parts.append(derivative.subs({c: 0}) / factorial(k))
+            derivative = derivative.derivative(c)
+        one_minus_s2 = 1 - s ** 2
+        even = odd = zero
+        for k in reversed(range(degree + 1)):
+            if k % 2:
+                odd = odd * one_minus_s2 + parts[k]
+            else:
+                even = even * one_minus_s2 + parts[k]
+        element = even + c * odd
+    return element
 
 
 class SymbolicBackend:
@@ -105,30 +209,88 @@ class TrigPolynomialRing:
         NotPolynomial: 1/a is not polynomial in the rotation variables and parameters
     """
 
-    def __init__(self, angles, symbols):
+    def __init__(self, angles, symbols, atoms=()):
         self._angles = []
         for angle in angles:
             angle = SR(angle)
-            if not angle.is_constant() and angle not in self._angles:
+            # no pair for a constant angle whose sine and cosine evaluate
+            # (pi/6: sqrt(3) is an atom)
+            if angle not in self._angles and (angle.cos().operator() is cos
+                                              or angle.sin().operator() is sin):
                 self._angles.append(angle)
+        self._atoms = [SR(a) for a in atoms]
         k = len(self._angles)
         self._cos_names = [f'dynsymcos{i}' for i in range(k)]
         self._sin_names = [f'dynsymsin{i}' for i in range(k)]
+        atom_names = [f'dynsymatom{i}' for i in range(len(self._atoms))]
         others = sorted({str(v) for v in symbols}, key=str)
-        self.ring = PolynomialRing(QQ, self._cos_names + self._sin_names + others,
+        self.ring = PolynomialRing(QQ, self._cos_names + self._sin_names + others + atom_names,
                                    order='degrevlex')
         gens = self.ring.gens()
         self._pairs = {angle: (gens[i], gens[k + i]) for i, angle in enumerate(self._angles)}
         self._forward = {}
-        for angle, (i, _) in zip(self._angles, enumerate(self._angles)):
+        for i, angle in enumerate(self._angles):
             self._forward[angle.cos()] = SR.var(self._cos_names[i])
             self._forward[angle.sin()] = SR.var(self._sin_names[i])
         self._backward = {SR.var(n): a.cos() for n, a in zip(self._cos_names, self._angles)}
         self._backward.update({SR.var(n): a.sin() for n, a in zip(self._sin_names, self._angles)})
+        for name, atom in zip(atom_names, self._atoms):
+            self._forward[atom] = SR.var(name)
+            self._backward[SR.var(name)] = atom
         self.zero = self.ring.zero()
         # the symbolic value of every generator, for the conversion back
         self._values = [self._backward.get(SR.var(name), SR.var(name))
                         for name in self.ring.variable_names()]
+        # the ring element of every symbol, atom, cosine and sine (fraction())
+        self._elements = {value: gen for value, gen in zip(self._values, gens)}
+
+    @classmethod
+    def for_expressions(cls, expressions, dynamic=(), fractions=False):
+        r"""
+        The ring holding ``expressions``: a pair for every argument of a
+        sine or cosine in them, a generator for every symbol and for every
+        other non-polynomial part ("atom": `\pi`, `\sqrt 2`, `1/m`,
+        `e^{k}`, ...), treated as an independent variable.
+
+        INPUT:
+
+        - ``expressions`` -- symbolic expressions
+        - ``dynamic`` -- (default: none) symbols that must not occur in an
+          atom (coordinates, velocities, time), since derivatives with
+          respect to them treat atoms as constants
+        - ``fractions`` -- (default: ``False``) whether negative integer
+          powers are allowed (for :meth:`fraction`) instead of being atoms
+
+        Raises :class:`NotPolynomial` if an atom contains a ``dynamic``
+        symbol or a number is inexact.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: x, w, t, a, m = var('x w t a m')
+            sage: R = TrigPolynomialRing.for_expressions([a*cos(w*t)*x + sqrt(2)/m], [x, t])
+            sage: R.angles(), R.atoms()
+            ([t*w], [1/m, sqrt(2)])
+            sage: c, s = R.trig(w*t)
+            sage: R.to_symbolic(R.convert(x^2*cos(w*t)^2 + x^2*sin(w*t)^2 + sqrt(2)))
+            x^2 + sqrt(2)
+
+        TESTS::
+
+            sage: TrigPolynomialRing.for_expressions([sqrt(x)], [x])
+            Traceback (most recent call last):
+            ...
+            NotPolynomial: sqrt(x) is not polynomial in the rotation variables and parameters
+        """
+        angles, atoms, symbols = {}, {}, set()
+        for expr in expressions:
+            _scan(expr, dynamic, angles, atoms, symbols, fractions)
+        for angle in list(angles):
+            # the derivatives of an angle are converted as well
+            for v in SR(angle).variables():
+                _scan(SR(angle).diff(v), dynamic, angles, atoms, symbols, fractions)
+            symbols.update(SR(angle).variables())
+        return cls(angles, symbols, atoms)
 
     def angles(self):
         r"""
@@ -137,10 +299,25 @@ class TrigPolynomialRing:
         EXAMPLES::
 
             sage: from sage_dynsym.trig import TrigPolynomialRing
-            sage: TrigPolynomialRing([var('a'), 1, var('a')], []).angles()
-            [a]
+            sage: TrigPolynomialRing([var('a'), pi/2, var('a'), 1], []).angles()
+            [a, 1]
+
+        (`\cos(\pi/2)` and `\sin(\pi/2)` are numbers, so `\pi/2` has no pair.)
         """
         return list(self._angles)
+
+    def atoms(self):
+        r"""
+        The non-polynomial parts held as generators of the ring (see
+        :meth:`for_expressions`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: TrigPolynomialRing([], [], [pi]).atoms()
+            [pi]
+        """
+        return list(self._atoms)
 
     def convert(self, expr):
         expr = SR(expr)
@@ -185,27 +362,7 @@ class TrigPolynomialRing:
             ....:     f = R.ring.random_element(degree=7, terms=30)
             ....:     assert R.reduce(f) == I.reduce(f), f
         """
-        # Singular's normal form (and its division) is quadratic in the length
-        # of the polynomial: minutes for the 50,000-term entries of a 6-link
-        # chain. Here each angle costs a few linear passes: the Taylor
-        # coefficients p_k of element = sum_k c^k p_k, then c^2 = 1 - s^2.
-        for c, s in self._pairs.values():
-            degree = element.degree(c)
-            if degree < 2:
-                continue
-            parts, derivative = [], element
-            for k in range(degree + 1):
-                parts.append(derivative.subs({c: 0}) / factorial(k))
-                derivative = derivative.derivative(c)
-            one_minus_s2 = 1 - s ** 2
-            even = odd = self.zero
-            for k in reversed(range(degree + 1)):
-                if k % 2:
-                    odd = odd * one_minus_s2 + parts[k]
-                else:
-                    even = even * one_minus_s2 + parts[k]
-            element = even + c * odd
-        return element
+        return _circle_reduce(element, self._pairs.values(), self.zero)
 
     def to_symbolic(self, element, reduced=False):
         r"""
@@ -262,6 +419,139 @@ class TrigPolynomialRing:
                  else self._recursive(group, factored, powers)
                  for e, group in groups.items()]
         return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
+
+    def fraction(self, expr):
+        r"""
+        ``expr``, a rational function of the generators of the ring (see
+        :meth:`for_expressions` with ``fractions=True``), as a pair
+        ``(numerator, denominator)`` of ring elements.
+
+        Raises :class:`NotPolynomial` if ``expr`` is not such a function.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: a, m = var('a m')
+            sage: e = m/sin(a) + cos(a)/(m*sin(a))
+            sage: R = TrigPolynomialRing.for_expressions([e], fractions=True)
+            sage: [R.to_symbolic(p) for p in R.fraction(e)]
+            [m^2 + cos(a), m*sin(a)]
+        """
+        one, zero = self.ring.one(), self.zero
+        elements = self._elements
+
+        def walk(e):
+            element = elements.get(e)
+            if element is not None:
+                return element, one
+            op = e.operator()
+            if op is None and e.is_numeric() and _is_rational(e):
+                return self.ring(e.pyobject()), one
+            if op is add_vararg:
+                # terms over the same denominator are added first
+                groups = {}
+                for x in e.operands():
+                    n, d = walk(x)
+                    groups[d] = groups.get(d, zero) + n
+                denominator = one
+                for d in groups:
+                    denominator = denominator.lcm(d)
+                return sum((n * (denominator // d) for d, n in groups.items()), zero), denominator
+            if op is mul_vararg:
+                n, d = one, one
+                for x in e.operands():
+                    xn, xd = walk(x)
+                    n, d = n * xn, d * xd
+                return n, d
+            if op is operator.pow:
+                base, exponent = e.operands()
+                if exponent.is_numeric() and isinstance(exponent.pyobject(), Integer):
+                    n, d = walk(base)
+                    k = int(exponent)
+                    return (n ** k, d ** k) if k >= 0 else (d ** -k, n ** -k)
+            raise NotPolynomial(f"{e} is not a rational function of the generators")
+
+        return walk(SR(expr))
+
+    def simplest_fraction(self, numerator, denominator=1):
+        r"""
+        The shortest symbolic form found for ``numerator/denominator`` (ring
+        elements) modulo `\cos^2+\sin^2 = 1`.
+
+        Both are first reduced with `\cos^2 = 1 - \sin^2` (a normal form:
+        zero is recognised), their greatest common divisor is cancelled and
+        they are written in recursive (Horner) form, see
+        :meth:`to_symbolic`. Then, angle by angle, the reduction
+        `\sin^2 = 1 - \cos^2` is tried instead and kept when the result is
+        shorter, and finally the factored form of numerator and denominator
+        is tried. Fractions with more than 300 terms only get the first form
+        (the comparisons would cost more than the derivation).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: a, b, m = var('a b m')
+            sage: R = TrigPolynomialRing([a, b], [m])
+            sage: (c, s), (cb, sb) = R.trig(a), R.trig(b)
+            sage: M = R.convert(m)
+            sage: R.simplest_fraction(M*c^2 + M*s^2, M^2), R.simplest_fraction(s^2, 1 - c)
+            (1/m, cos(a) + 1)
+            sage: R.simplest_fraction(M*s^2 - M + M*c^2, M)
+            0
+            sage: R.to_symbolic(M*c^2*sb^2 + M*c)
+            -((sin(a)^2 - 1)*sin(b)^2 - cos(a))*m
+            sage: R.simplest_fraction(M*c^2*sb^2 + M*c)
+            m*cos(a)^2*sin(b)^2 + m*cos(a)
+        """
+        numerator, denominator = self.ring(numerator), self.ring(denominator)
+        pairs = list(self._pairs.values())
+
+        def form(flips):
+            rule = [(s, c) if flip else (c, s) for (c, s), flip in zip(pairs, flips)]
+            n = _circle_reduce(numerator, rule, self.zero)
+            if n.is_zero():
+                return SR(0), n, n.parent().one(), QQ.one()
+            d = _circle_reduce(denominator, rule, self.zero)
+            if not d.is_constant():
+                g = n.gcd(d)
+                n, d = n // g, d // g
+            # integer, coprime coefficients; the denominator's leading one positive
+            cn, cd = _content(n), _content(d)
+            n, d = n / cn, d / cd
+            factor = cn / cd
+            expr = SR(factor) * self.to_symbolic(n, reduced=True)
+            if not d.is_one():
+                expr = expr / self.to_symbolic(d, reduced=True)
+            return expr, n, d, factor
+
+        flips = [False] * len(pairs)
+        best = form(flips)
+        if best[0].is_trivial_zero() or (numerator.number_of_terms()
+                                         + denominator.number_of_terms() > _SHAPE_TERMS):
+            return best[0]
+        length = len(str(best[0]))
+        for i, (c, s) in enumerate(pairs):
+            if best[1].degree(s) < 2 and best[2].degree(s) < 2 and not (
+                    best[1].degree(c) or best[2].degree(c)):
+                continue   # nothing to rewrite for this angle
+            flips[i] = True
+            trial = form(flips)
+            if len(str(trial[0])) < length:
+                best, length = trial, len(str(trial[0]))
+            else:
+                flips[i] = False
+        expr, n, d, factor = best
+        if n.number_of_terms() + d.number_of_terms() <= _FACTOR_TERMS:
+            factored = SR(factor) * self._factored(n) / self._factored(d)
+            if len(str(factored)) < length:
+                return factored
+        return expr
+
+    def _factored(self, element):
+        if element.is_constant():
+            return SR(element.constant_coefficient())
+        F = element.factor()
+        return SR(F.unit()) * _ONE.mul(*[self.to_symbolic(f, reduced=True) ** e for f, e in F])
 
     def calculus(self, coordinates):
         r"""
@@ -368,3 +658,53 @@ class RingCalculus:
 
     def symbolic(self, element):
         return self.ring.to_symbolic(element, reduced=True)
+
+
+def trig_rational_simplify(expr):
+    r"""
+    Simplify a rational function of sines, cosines and other symbols
+    modulo `\cos^2 + \sin^2 = 1`, whatever the angles: coordinates,
+    known functions of time (`\omega t`), parameters or constants.
+
+    The sines and cosines are polynomial variables (one pair per
+    argument); any other non-rational part (`\sqrt 2`, `\pi`,
+    `e^{x}`, ...) is an independent variable, after simplifying its own
+    arguments. See :meth:`TrigPolynomialRing.simplest_fraction`: the result
+    is the shortest of several normal forms, or ``expr`` itself if that is
+    shorter; it is zero if ``expr`` is zero modulo the identity. No Maxima.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.trig import trig_rational_simplify
+        sage: w, t, x, m = var('w t x m')
+        sage: trig_rational_simplify(cos(w*t)^4 + 2*cos(w*t)^2*sin(w*t)^2 + sin(w*t)^4)
+        1
+        sage: trig_rational_simplify(m*x^2*sin(x)^2/(1 - cos(x)^2) + sqrt(2)*cos(x)^2 + sqrt(2)*sin(x)^2)
+        m*x^2 + sqrt(2)
+        sage: trig_rational_simplify((m*cos(x)^2 - m)/(sin(x)*cos(x)))
+        -m*sin(x)/cos(x)
+        sage: trig_rational_simplify(sqrt(cos(x)^2 + sin(x)^2 + m) + exp(cos(w*t)^2 + sin(w*t)^2))
+        sqrt(m + 1) + e
+
+    TESTS::
+
+        sage: trig_rational_simplify(SR(0)), trig_rational_simplify(0.5*sin(x)^2 + 0.5*cos(x)^2)
+        (0, 0.500000000000000*cos(x)^2 + 0.500000000000000*sin(x)^2)
+    """
+    expr = SR(expr)
+    try:
+        ring = TrigPolynomialRing.for_expressions([expr], fractions=True)
+        inner = {}
+        for atom in ring.atoms():
+            # the arguments of sqrt(...), exp(...), ... are simplified too
+            if atom.operator() is not None:
+                rebuilt = atom.operator()(*[trig_rational_simplify(x) for x in atom.operands()])
+                if not (rebuilt - atom).is_trivial_zero():
+                    inner[atom] = rebuilt
+        if inner:
+            expr = expr.subs(inner)
+            ring = TrigPolynomialRing.for_expressions([expr], fractions=True)
+        simplest = ring.simplest_fraction(*ring.fraction(expr))
+    except NotPolynomial:
+        return expr
+    return simplest if len(str(simplest)) <= len(str(expr)) else expr
