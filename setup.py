@@ -17,7 +17,7 @@ setup(
     # there, and the project .venv installs passagemath-standard (Makefile).
     install_requires=["pyyaml"],
     extras_require={
-        "passagemath": ["passagemath-standard~=10.8"],
+        "passagemath": ["passagemath-standard~=10.8", "passagemath-qepcad~=10.8"],
         "test": ["pytest", "sympy", "scipy"],
     },
     # the bundled description files, also for a non-editable install
