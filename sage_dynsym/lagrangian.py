@@ -56,6 +56,7 @@ from sage.symbolic.ring import SR
 from .errors import ModelError
 from .expressions import velocity, acceleration, time_derivative, t
 from .natural_equations import natural_equations, SymbolicCalculus
+from .trig import trig_rational_simplify
 
 
 def _symbol_list(symbols, what):
@@ -89,6 +90,130 @@ def _natural_form(A, A1, A0, velocities):
     quadratic = sum((A[i, i] * v[i] ** 2 / 2 for i in range(n)), SR(0)) + sum(
         (A[i, j] * v[i] * v[j] for i in range(n) for j in range(i + 1, n)), SR(0))
     return quadratic + sum((A1[i] * v[i] for i in range(n)), SR(0)) + SR(A0)
+
+
+def _linear_collected(expr, symbols):
+    r"""
+    ``expr``, linear in ``symbols``, as `\sum_s c_s s + c_0` with every
+    coefficient simplified by
+    :func:`~sage_dynsym.trig.trig_rational_simplify`.
+    """
+    expr = SR(expr)
+    rest = trig_rational_simplify(expr.subs({s: 0 for s in symbols}))
+    return SR(0).add(*[trig_rational_simplify(expr.diff(s)) * s for s in symbols], rest)
+
+
+class _Elimination:
+    r"""
+    Symmetric Gaussian elimination `P A P^T = L D L^T` of a symmetric
+    invertible matrix `A`, with diagonal pivots (the shortest nonzero
+    one first) and every entry simplified modulo `\cos^2+\sin^2 = 1`.
+
+    It writes the quadratic form of `A^{-1}` as a sum of squares
+    (Lagrange's reduction), `u^T A^{-1} u = \sum_k y_k^2 / D_k` with
+    `L y = P u`: for the heavy symmetric top,
+    `p_\varphi^2/C + (p_\psi - p_\varphi\cos\theta)^2/(A\sin^2\theta)`.
+    If only zero diagonal entries remain, the rest of the matrix is
+    inverted as a block (adjugate over determinant).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lagrangian import _Elimination
+        sage: from sage_dynsym.trig import trig_rational_simplify
+        sage: a, A, C, p, q = var('a A C p q')
+        sage: E = _Elimination(matrix([[A*sin(a)^2 + C*cos(a)^2, C*cos(a)], [C*cos(a), C]]))
+        sage: E.squares([p, q])
+        [q^2/C, (q*cos(a) - p)^2/(A*sin(a)^2)]
+        sage: [trig_rational_simplify(x) for x in E.solve([p, q])]
+        [-(q*cos(a) - p)/(A*sin(a)^2), ...]
+
+    TESTS::
+
+        sage: E = _Elimination(matrix([[0, 1], [1, 0]]))
+        sage: E.squares([p, q]), E.solve([p, q])
+        ([2*p*q], [q, p])
+    """
+
+    def __init__(self, A):
+        n = A.nrows()
+        self._n = n
+        S = {(i, j): trig_rational_simplify(A[i, j]) for i in range(n) for j in range(i, n)}
+
+        def entry(i, j):
+            return S[min(i, j), max(i, j)]
+
+        remaining = list(range(n))
+        self._order, self._pivots, self._multipliers = [], [], {}
+        self._block, self._block_inverse = [], None
+        while remaining:
+            nonzero = [i for i in remaining if not entry(i, i).is_trivial_zero()]
+            if not nonzero:
+                block = matrix(SR, [[entry(i, j) for j in remaining] for i in remaining])
+                det = trig_rational_simplify(block.det())
+                self._block = remaining
+                self._block_inverse = block.adjugate().apply_map(
+                    lambda e: trig_rational_simplify(e / det))
+                break
+            k = min(nonzero, key=lambda i: len(str(entry(i, i))))
+            remaining.remove(k)
+            d = entry(k, k)
+            self._order.append(k)
+            self._pivots.append(d)
+            for i in remaining:
+                self._multipliers[i, k] = trig_rational_simplify(entry(i, k) / d)
+            for a, i in enumerate(remaining):
+                for j in remaining[a:]:
+                    key = min(i, j), max(i, j)
+                    S[key] = trig_rational_simplify(S[key] - self._multipliers[i, k] * entry(k, j))
+
+    def _reduced(self, u):
+        # forward substitution L y = P u (the block indices last)
+        y = {}
+        for i in self._order + self._block:
+            y[i] = u[i] - SR(0).add(*[self._multipliers[i, m] * y[m] for m in self._order
+                                      if (i, m) in self._multipliers])
+        return y
+
+    def products(self, u, w):
+        r"""
+        The terms of `u^T A^{-1} w`.
+        """
+        yu, yw = self._reduced(u), self._reduced(w)
+        terms = [yu[k] * yw[k] / d for k, d in zip(self._order, self._pivots)]
+        for a, i in enumerate(self._block):
+            for b, j in enumerate(self._block):
+                terms.append(yu[i] * self._block_inverse[a, b] * yw[j])
+        return terms
+
+    def squares(self, u, collect=()):
+        r"""
+        The terms of `u^T A^{-1} u`: `y_k^2/D_k`, with each `y_k` collected
+        in the symbols ``collect`` (in which ``u`` is linear).
+        """
+        y = {i: _linear_collected(v, collect) for i, v in self._reduced(u).items()}
+        terms = [y[k] ** 2 / d for k, d in zip(self._order, self._pivots)]
+        if self._block:
+            quadratic = SR(0).add(*[y[i] * self._block_inverse[a, b] * y[j]
+                                    for a, i in enumerate(self._block)
+                                    for b, j in enumerate(self._block)])
+            terms.append(trig_rational_simplify(quadratic))
+        return terms
+
+    def solve(self, u):
+        r"""
+        `A^{-1} u` (unsimplified).
+        """
+        y = self._reduced(u)
+        x = {}
+        for a, i in enumerate(self._block):
+            x[i] = SR(0).add(*[self._block_inverse[a, b] * y[j]
+                               for b, j in enumerate(self._block)])
+        for a in reversed(range(len(self._order))):
+            k = self._order[a]
+            later = self._order[a + 1:] + self._block
+            x[k] = y[k] / self._pivots[a] - SR(0).add(*[self._multipliers[m, k] * x[m]
+                                                         for m in later])
+        return [x[i] for i in range(self._n)]
 
 
 class Lagrangian(SageObject):

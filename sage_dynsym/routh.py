@@ -29,13 +29,15 @@ The Kepler problem in polar coordinates::
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
 """
-from sage.matrix.constructor import vector
+from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
+from sage.modules.free_module_element import vector
 from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import momentum
-from .lagrangian import Lagrangian
+from .lagrangian import Lagrangian, _Elimination, _linear_collected
+from .trig import trig_rational_simplify
 
 
 class RouthFunction(Lagrangian):
@@ -96,30 +98,43 @@ class RouthFunction(Lagrangian):
         self._momenta = [SR(c) for c in momenta]
         self._lagrangian = lagrangian
 
-        A, A1, _ = lagrangian.decomposition()
-        cyclic_velocities = [dq_all[i] for i in index]
-        # p_cyc = A_cc dq_c + A_cp dq_p + A1_c = c  ->  dq_c
+        A, A1, A0 = lagrangian.decomposition()
+        # p_cyc = A_cc dq_c + A_cp dq_p + A1_c = c; with u = c - A1_c - A_cp dq_p,
+        # dq_c = A_cc^{-1} u and R = L - c.dq_c = 1/2 dq_p A_pp dq_p + A1_p.dq_p
+        # + A0 - 1/2 u A_cc^{-1} u, collected by the positional velocities:
+        # each coefficient simplified, the momentum part as a sum of squares
         A_cc = A.matrix_from_rows_and_columns(index, index)
         if A_cc.rank() < len(index):
             raise ModelError("the momentum equations cannot be solved for the cyclic "
                              "velocities (the block of the mass matrix is singular)",
                              entry="cyclic")
-        A_cp = A.matrix_from_rows_and_columns(index, positional)
-        dq_p = vector(SR, [dq_all[i] for i in positional])
-        rhs = vector(SR, self._momenta) - A_cp * dq_p - vector(SR, [A1[i] for i in index])
-        solved = A_cc.solve_right(rhs)
-        self._solved_velocities = [s.simplify_rational() for s in solved]
-        elimination = dict(zip(cyclic_velocities, self._solved_velocities))
-
-        routh = lagrangian.expr().subs(elimination) - sum(
-            c * v for c, v in zip(self._momenta, self._solved_velocities))
-        dissipation = lagrangian.dissipation().subs(elimination)
-        forces = [lagrangian.generalized_forces()[i].subs(elimination) for i in positional]
-        Lagrangian.__init__(self, _tidy(routh, [dq_all[i] for i in positional]),
-                            [q_all[i] for i in positional],
-                            [dq_all[i] for i in positional],
-                            dissipation=dissipation, forces=forces,
-                            name=lagrangian.name())
+        elimination = _Elimination(A_cc)
+        dq_p = [dq_all[j] for j in positional]
+        v = [c - A1[i] for c, i in zip(self._momenta, index)]
+        X = {j: [A[i, j] for i in index] for j in positional}
+        n = len(positional)
+        M = matrix(SR, n, n)
+        for a, j in enumerate(positional):
+            for b in range(a, n):
+                k = positional[b]
+                M[a, b] = M[b, a] = trig_rational_simplify(
+                    A[j, k] - SR(0).add(*elimination.products(X[j], X[k])))
+        M.set_immutable()
+        B = vector(SR, [_linear_collected(A1[j] + SR(0).add(*elimination.products(X[j], v)),
+                                          self._momenta) for j in positional])
+        R0 = trig_rational_simplify(A0) - SR(0).add(
+            *elimination.squares(v, self._momenta)) / 2
+        u = [vi - SR(0).add(*[X[j][a] * dq for j, dq in zip(positional, dq_p)])
+             for a, vi in enumerate(v)]
+        self._solved_velocities = [_linear_collected(x, self._momenta + dq_p)
+                                   for x in elimination.solve(u)]
+        cyclic_velocities = [dq_all[i] for i in index]
+        substitution = dict(zip(cyclic_velocities, self._solved_velocities))
+        dissipation = lagrangian.dissipation().subs(substitution)
+        forces = [lagrangian.generalized_forces()[i].subs(substitution) for i in positional]
+        Lagrangian.__init__(self, None, [q_all[i] for i in positional], dq_p,
+                            dissipation=dissipation, forces=forces, name=lagrangian.name(),
+                            decomposition=(M, B, R0))
 
     @staticmethod
     def _check_cyclic(lagrangian, cyclic):
@@ -236,13 +251,3 @@ class RouthFunction(Lagrangian):
         """
         return self.lagrange_equations()
 
-
-def _tidy(expr, velocities):
-    r"""
-    Collect ``expr`` by degree in the velocities (the natural form (4)),
-    so that the terms from `L` and from `-c \cdot \dot q` combine.
-    """
-    s = SR.symbol()
-    scaled = expr.subs({v: s * v for v in velocities}).expand()
-    return sum(scaled.coefficient(s, k) * s ** k
-               for k in range(3)).subs({s: 1})

@@ -224,8 +224,9 @@ class TrigPolynomialRing:
         self._sin_names = [f'dynsymsin{i}' for i in range(k)]
         atom_names = [f'dynsymatom{i}' for i in range(len(self._atoms))]
         others = sorted({str(v) for v in symbols}, key=str)
-        self.ring = PolynomialRing(QQ, self._cos_names + self._sin_names + others + atom_names,
-                                   order='degrevlex')
+        names = self._cos_names + self._sin_names + others + atom_names
+        # always multivariate (one variable would give a univariate ring)
+        self.ring = PolynomialRing(QQ, names, len(names), order='degrevlex')
         gens = self.ring.gens()
         self._pairs = {angle: (gens[i], gens[k + i]) for i, angle in enumerate(self._angles)}
         self._forward = {}
