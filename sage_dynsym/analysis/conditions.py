@@ -35,7 +35,7 @@ from sage.misc.misc_c import prod
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
-from .hurwitz import _reduce, _is_constant, _constant
+from .hurwitz import _reduce, _is_constant, _constant, FACTOR_LIMIT
 from .translation import Translation
 
 
@@ -46,14 +46,20 @@ def _translate(expressions):
 
 def _relational(T, factors, op):
     r"""``prod(factors) op 0``, factored, with a positive leading
-    coefficient on the left when possible (``-f > 0`` is written
-    ``f < 0``)."""
+    coefficient on the left (``-f > 0`` is written ``f < 0``)."""
     flip = {'>': '<', '<': '>', '!=': '!=', '==': '=='}
-    factors = list(factors)
-    if len(factors) == 1 and not _is_constant(factors[0]) and factors[0].lc() < 0:
-        factors, op = [-factors[0]], flip[op]
-    e = prod((T.symbolic(f) for f in factors), SR(1))
+    p = prod(factors)
+    if not _is_constant(p) and p.lc() < 0:
+        p, op = -p, flip[op]
+    e = _factored_symbolic(T, p)
     return {'>': e > 0, '<': e < 0, '!=': e != 0, '==': e == 0}[op]
+
+
+def _factored_symbolic(T, p):
+    if _is_constant(p) or len(p.dict()) > FACTOR_LIMIT:
+        return T.symbolic(p)
+    F = p.factor()
+    return SR(F.unit()) * prod((T.symbolic(f) ** e for f, e in F), SR(1))
 
 
 def positive_conditions(expr, positive=()):

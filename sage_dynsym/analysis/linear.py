@@ -18,8 +18,13 @@ Jacobian `J`.
 
 The characteristic polynomial is `\det(M\lambda^2 + S\lambda + W)`, resp.
 `\det(B\lambda - J)`, computed fraction-free: each row is first multiplied
-by the least common denominator of its entries (taken positive), then the
-determinant is taken over a polynomial ring in the parameters.
+by the least common denominator of its entries, the determinant is taken
+over a polynomial ring in the parameters, and the product of the
+denominators is multiplied back in (common factors cancelled), so that the
+result has the sign of the determinant whatever the signs of the
+denominators. Non-polynomial parts of the entries (derivatives of
+unspecified functions such as a diode characteristic, functions of
+parameters) are treated as symbols.
 
 EXAMPLES:
 
@@ -50,7 +55,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_sr
+from ._polynomials import parameter_ring, to_ring
+from .translation import Translation
 
 
 def _at(expr, point):
@@ -85,46 +91,66 @@ def _check_equilibrium(values, point):
                                 entry="linearize")
 
 
-def _fraction_free_det(A, as_polynomial=False):
-    r"""``det(A)`` with each row multiplied by the lcm of its denominators,
-    over a polynomial ring when the entries are rational in their symbols
-    (returned as a polynomial if ``as_polynomial``, else in ``SR``)."""
-    symbols = set()
-    for e in A.list():
-        symbols |= set(SR(e).variables())
-    R = parameter_ring(symbols)
-    try:
-        F = R.fraction_field() if R is not QQ else QQ
-        AF = matrix(F, [[F(SR(e)) for e in row] for row in A.rows()])
-    except (TypeError, ValueError, ZeroDivisionError):
-        if as_polynomial:
-            raise AnalysisError("the characteristic matrix is not rational in its "
-                                "symbols; use as_polynomial=False", entry="linearize")
-        return _symbolic_fraction_free_det(A)
-    rows = []
-    for row in AF.rows():
-        d = R(1)
-        for e in row:
-            d = d.lcm(R(e.denominator()))
-        if (d if R is QQ else d.lc()) < 0:
-            d = -d
-        rows.append([R(e * d) for e in row])
-    det = matrix(R, rows).det()
-    return det if as_polynomial else to_sr(det)
+def _fraction_free_det(A, as_polynomial=False, positive=()):
+    r"""
+    A polynomial with the sign (and the zeros) of ``det(A)``.
 
+    Each row is multiplied by the least common multiple `d_i` of its
+    denominators and the determinant is taken over a polynomial ring
+    (Singular); then `\det A = N/D` with `N = \det(\mathrm{diag}(d) A)`,
+    `D = \prod d_i`, and the result is `N D` with common factors cancelled:
+    no denominator is assumed positive unless its factors are declared in
+    ``positive``. Non-polynomial parts of the entries (unspecified
+    functions and their derivatives, ``cos(alpha)``) are atoms.
 
-def _symbolic_fraction_free_det(A):
-    rows = []
+    OUTPUT: a symbolic expression, or with ``as_polynomial`` an element of a
+    polynomial ring over `\QQ` in the symbols (sorted by name)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.linear import _fraction_free_det
+        sage: a, g, lam = var('a g lam'); f = function('f')
+        sage: _fraction_free_det(matrix([[lam, 1], [-a/g, lam]]))
+        g^2*lam^2 + a*g
+        sage: _fraction_free_det(matrix([[lam, 1], [-a/g, lam]]), positive=[g])
+        g*lam^2 + a
+        sage: _fraction_free_det(matrix([[lam - diff(f(a), a)]]))
+        lam - diff(f(a), a)
+    """
+    T = Translation([], [], extra=A.list())
+    R = T.flat_ring()
+    if R is None:
+        det = SR(matrix(QQ, [[QQ(e) for e in row] for row in A.rows()]).det())
+        return to_ring(det, QQ) if as_polynomial else det
+    rows, D = [], R(1)
     for row in A.rows():
-        d = SR(1)
-        for e in row:
-            den = SR(e).denominator()
-            try:
-                d = d * den / d.gcd(den)
-            except (TypeError, ValueError, AttributeError):
-                d = d * den
-        rows.append([(SR(e) * d).simplify_rational() for e in row])
-    return matrix(SR, rows).det()
+        fractions = [T.fraction(e) for e in row]
+        d = R(1)
+        for f in fractions:
+            d = d.lcm(R(f.denominator()))
+        D *= d
+        rows.append([R(f * d) for f in fractions])
+    N = matrix(R, rows).det()
+    if not D.is_constant() and not N.is_zero():
+        g = N.gcd(D)
+        N, D = N // g, D // g
+    names = T.positive_names(positive)
+    from ._polynomials import positive_polynomial
+    if D.is_constant():
+        scale = R(QQ(D.constant_coefficient()).sign())
+    else:
+        F = D.factor()
+        scale = R(QQ(F.unit()).sign())
+        for factor, e in F:
+            if e % 2 and not positive_polynomial(factor, names):
+                scale *= factor
+    det = T.symbolic(N * scale)
+    if not as_polynomial:
+        return det
+    if any(not p.is_symbol() for p in T.parameters()):
+        raise AnalysisError("the characteristic matrix is not rational in its "
+                            "symbols; use as_polynomial=False", entry="linearize")
+    return to_ring(det, parameter_ring(det.variables()), "characteristic polynomial")
 
 
 class LinearSystem(SageObject):
@@ -391,7 +417,7 @@ class LinearSystem(SageObject):
             return self._B * lam - self._J
         return self._M * lam ** 2 + self._S * lam + self._W
 
-    def characteristic_polynomial(self, lam, as_polynomial=False):
+    def characteristic_polynomial(self, lam, as_polynomial=False, positive=()):
         r"""
         The characteristic polynomial, fraction-free (see the module
         documentation), expanded.
@@ -402,6 +428,11 @@ class LinearSystem(SageObject):
         - ``as_polynomial`` -- (default: ``False``) return an element of the
           polynomial ring over `\QQ` in ``lam`` and the parameters instead of
           a symbolic expression (faster for large systems)
+        - ``positive`` -- (optional) symbols declared positive: factors of
+          denominators positive by these declarations are not multiplied in
+
+        OUTPUT: a polynomial with the same roots as, and a positive multiple
+        of, the determinant
 
         EXAMPLES::
 
@@ -411,8 +442,18 @@ class LinearSystem(SageObject):
             ....:                   B=diagonal_matrix([L1, C1]))
             sage: Ls.characteristic_polynomial(var('lam'))
             C1*L1*lam^2 + L1*lam*r + 1
+
+        A generic diode characteristic `f` linearized at `v_0`: its
+        derivative is a parameter of the polynomial::
+
+            sage: v, v0, C = var('v v0 C'); f = function('f')
+            sage: Ls = LinearSystem([v], J=[[-diff(f(v), v).subs(v=v0)/C]])
+            sage: Ls.characteristic_polynomial(var('lam'))
+            C^2*lam + C*diff(f(v0), v0)
+            sage: Ls.characteristic_polynomial(var('lam'), positive=[C])
+            C*lam + diff(f(v0), v0)
         """
-        det = _fraction_free_det(self.characteristic_matrix(SR(lam)), as_polynomial)
+        det = _fraction_free_det(self.characteristic_matrix(SR(lam)), as_polynomial, positive)
         return det if as_polynomial else det.expand()
 
     def force_structure(self):

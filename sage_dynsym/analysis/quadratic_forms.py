@@ -25,7 +25,9 @@ from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .hurwitz import simplify_conditions
+from .conditions import positive_conditions_all, nonzero_conditions, conjunction
+from .solving import normalize
+from .translation import Translation
 
 
 def form_matrix(form, variables):
@@ -73,6 +75,59 @@ def _symmetric(form_or_matrix, variables):
     return form_matrix(form_or_matrix, variables)
 
 
+def definiteness_conditions(quadratic_form_or_matrix, variables=None, sign='positive',
+                            positive=()):
+    r"""
+    Conditions for a quadratic form to be positive (or negative) definite,
+    as relationals: Sylvester's criterion with the signs of denominators
+    taken into account.
+
+    Each leading principal minor `\Delta_k` is computed exactly as a
+    rational function `N_k/D_k`; the condition `\Delta_k > 0` is `N_k D_k >
+    0` (the same sign), so no denominator is assumed positive unless its
+    factors are declared positive.
+
+    INPUT: as :func:`sylvester_conditions`
+
+    OUTPUT: a list of relationals that must all hold; ``[]`` if the form is
+    definite for all admissible values; ``None`` if it never is
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.quadratic_forms import definiteness_conditions
+        sage: x, y, a, b, g = var('x y a b g')
+        sage: definiteness_conditions(x^2/g, [x])
+        [g > 0]
+        sage: definiteness_conditions(matrix([[1, b], [b, -(a + b^2)/g]]))
+        [(b^2*g + b^2 + a)*g < 0]
+        sage: definiteness_conditions(matrix([[1, 0], [0, -1]])) is None
+        True
+    """
+    if sign not in ('positive', 'negative'):
+        raise AnalysisError(f"sign must be 'positive' or 'negative', got {sign!r}",
+                            entry="sylvester_conditions")
+    A = _symmetric(quadratic_form_or_matrix, variables)
+    return positive_conditions_all(_signed_minors(A, sign), positive)
+
+
+def _signed_minors(A, sign):
+    r"""Expressions with the signs of the leading principal minors
+    (times `(-1)^k` for negative definiteness)."""
+    n = A.nrows()
+    if not n:
+        return []
+    T = Translation([], [], extra=A.list())
+    F = T.fraction(SR(1)).parent()
+    AF = matrix(F, [[T.fraction(e) for e in row] for row in A.rows()])
+    result = []
+    for k in range(1, n + 1):
+        d = AF[:k, :k].det()
+        if sign == 'negative' and k % 2:
+            d = -d
+        result.append(T.symbolic(F(d.numerator() * d.denominator())))
+    return result
+
+
 def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positive',
                          positive=()):
     r"""
@@ -80,7 +135,9 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
 
     Sylvester's criterion: a symmetric matrix is positive definite iff its
     leading principal minors `\Delta_1, \dots, \Delta_n` are positive;
-    negative definite iff `(-1)^k \Delta_k > 0`.
+    negative definite iff `(-1)^k \Delta_k > 0`. The sign of a denominator
+    is never assumed: a minor `N/D` gives the condition `N D > 0` (see
+    :func:`definiteness_conditions`, which returns relationals).
 
     INPUT:
 
@@ -88,10 +145,11 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
       form (expression) in ``variables``
     - ``variables`` -- the variables of the form (needed for an expression)
     - ``sign`` -- ``'positive'`` (default) or ``'negative'``
-    - ``positive`` -- parameters known to be positive (used to simplify)
+    - ``positive`` -- parameters declared positive (used to simplify)
 
-    OUTPUT: a list of expressions which must all be ``> 0``, simplified
-    as in :func:`~sage_dynsym.analysis.hurwitz.simplify_conditions`
+    OUTPUT: a list of expressions which must all be ``> 0``, factored and
+    free of conditions implied by the others; ``[]`` if the form is
+    definite for all admissible values, ``[-1]`` if it never is
 
     EXAMPLES:
 
@@ -107,6 +165,12 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
         sage: sylvester_conditions(-K, sign='negative', positive=[m1, m2, l1, l2, g])
         []
 
+    A denominator of unknown sign is a condition, not an assumption::
+
+        sage: x = var('x')
+        sage: sylvester_conditions(x^2/g, [x]), sylvester_conditions(x^2/g, [x], positive=[g])
+        ([g], [])
+
     TESTS::
 
         sage: sylvester_conditions(matrix([[1, 2], [0, 1]]))
@@ -119,23 +183,26 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
         sage: sylvester_conditions(matrix([[1, 2], [2, 1]]))
         [-1]
     """
-    if sign not in ('positive', 'negative'):
-        raise AnalysisError(f"sign must be 'positive' or 'negative', got {sign!r}",
-                            entry="sylvester_conditions")
-    A = _symmetric(quadratic_form_or_matrix, variables)
-    n = A.nrows()
-    minors = [_det(A[:k, :k]) for k in range(1, n + 1)]
-    if sign == 'negative':
-        minors = [(-1) ** k * m for k, m in enumerate(minors, 1)]
-    return simplify_conditions([m.expand() for m in minors], positive)
+    conditions = definiteness_conditions(quadratic_form_or_matrix, variables, sign, positive)
+    if conditions is None:
+        return [SR(-1)]
+    return [c.lhs() - c.rhs() if c.operator().__name__ == 'gt' else c.rhs() - c.lhs()
+            for c in conditions]
 
 
 def _det(A):
-    from .linear import _fraction_free_det
-    return _fraction_free_det(A) if A.nrows() else SR(1)
+    r"""An expression with the sign of `\det A` (the numerator times the
+    denominator of the exact determinant), `1` for an empty matrix."""
+    if not A.nrows():
+        return SR(1)
+    T = Translation([], [], extra=A.list())
+    F = T.fraction(SR(1)).parent()
+    d = matrix(F, [[T.fraction(e) for e in row] for row in A.rows()]).det()
+    return T.symbolic(F(d.numerator() * d.denominator()))
 
 
-def restrict_to_subspace(quadratic_form_or_matrix, constraints, variables):
+def restrict_to_subspace(quadratic_form_or_matrix, constraints, variables,
+                         with_conditions=False):
     r"""
     The restriction of a quadratic form to the linear subspace
     `\{\xi : C\xi = 0\}`.
@@ -150,37 +217,80 @@ def restrict_to_subspace(quadratic_form_or_matrix, constraints, variables):
     - ``constraints`` -- list of linear forms in ``variables`` (or a matrix
       `C`, one row per constraint)
     - ``variables`` -- the variables `\xi`
+    - ``with_conditions`` -- (default: ``False``) also return the
+      conditions (relationals ``p != 0``) under which the elimination is
+      valid: the pivots divided by
 
     OUTPUT: a pair ``(form, free)``: the restricted quadratic form as an
     expression in the free variables ``free`` (the constraints are solved
-    for the other variables)
+    for the other variables); with ``with_conditions``, a triple
+    ``(form, free, conditions)``
 
     EXAMPLES: `x^2 - y^2 + z^2` is positive on the plane `y = 0`::
 
         sage: from sage_dynsym.analysis.quadratic_forms import restrict_to_subspace
-        sage: x, y, z = var('x y z')
+        sage: x, y, z, a = var('x y z a')
         sage: restrict_to_subspace(x^2 - y^2 + z^2, [y], [x, y, z])
         (x^2 + z^2, [x, z])
         sage: restrict_to_subspace(x^2 + y^2, [x + y], [x, y])
         (2*y^2, [y])
+        sage: restrict_to_subspace(x^2 + y^2, [a*x + y], [x, y], with_conditions=True)
+        ((a^2 + 1)*x^2, [x], [])
+        sage: restrict_to_subspace(x^2 + y^2, [a*x], [x, y], with_conditions=True)
+        (y^2, [y], [a != 0])
     """
     variables = [SR(v) for v in variables]
     A = _symmetric(quadratic_form_or_matrix, variables)
     if hasattr(constraints, 'nrows'):
-        C = matrix(SR, constraints)
+        rows = [list(r) for r in matrix(SR, constraints).rows()]
     else:
-        C = matrix(SR, [[SR(c).diff(v) for v in variables] for c in constraints])
-    sol = {}
-    if C.nrows():
-        E = C.echelon_form()
-        pivots = E.pivots()
-        for r, pc in enumerate(pivots):
-            sol[variables[pc]] = -sum(E[r, j] * variables[j] for j in range(len(variables))
-                                      if j != pc) / E[r, pc]
+        rows = [[SR(c).diff(v) for v in variables] for c in constraints]
+    sol, conditions = {}, []
+    rows = [[normalize(e) for e in r] for r in rows]
+    for r in range(len(rows)):
+        row = rows[r]
+        candidates = [j for j, e in enumerate(row) if not e.is_zero()
+                      and variables[j] not in sol]
+        if not candidates:
+            continue
+        # a numerical pivot needs no condition; else the shortest
+        j = min(candidates, key=lambda j: (not row[j].is_numeric(), len(str(row[j]))))
+        pivot = row[j]
+        if not pivot.is_numeric():
+            conditions = conjunction(conditions, nonzero_conditions(pivot)) or []
+        value = -sum(row[k] * variables[k] for k in range(len(variables)) if k != j) / pivot
+        sol = {v: e.subs({variables[j]: value}) for v, e in sol.items()}
+        sol[variables[j]] = value
+        for later in rows[r + 1:]:
+            c = later[j]
+            if not c.is_zero():
+                for k in range(len(variables)):
+                    later[k] = normalize(later[k] - c * row[k] / pivot)
     free = [v for v in variables if v not in sol]
     x = matrix(SR, [variables]).transpose()
     form = (x.transpose() * A * x)[0, 0].subs(sol)
-    return form.simplify_rational().expand(), free
+    form = _collect_quadratic(form, free)
+    return (form, free, conditions) if with_conditions else (form, free)
+
+
+def _collect_quadratic(form, variables):
+    r"""A quadratic form with normalized, factored coefficients."""
+    form = SR(form).expand()
+    terms = []
+    for i, u in enumerate(variables):
+        for v in variables[i:]:
+            c = form.diff(u).diff(v) / (2 if u is v or str(u) == str(v) else 1)
+            c = normalize(c.subs({w: 0 for w in variables}))
+            if not c.is_zero():
+                terms.append(_factored(c) * u * v)
+    return sum(terms, SR(0))
+
+
+def _factored(expr):
+    try:
+        return expr.factor()
+    except (TypeError, ValueError, ArithmeticError):
+        return expr
 
 
 def simultaneous_reduction(A, B):
