@@ -62,12 +62,15 @@ def test_double_pendulum_equilibria_from_routh_free_lagrangian():
     # equal masses and lengths (Merkin ch. 3)
     L = Lagrangian(m * l**2 * (d1**2 + d2**2 / 2 + d1 * d2 * cos(t1 - t2))
                    + m * g * l * (2 * cos(t1) + cos(t2)), [t1, t2])
-    eqs, sols = stationary_motions(L)
-    # every equilibrium annuls the equations at rest
+    sols = stationary_motions(L)
+    eqs = sols.equations()
+    # exactly the four equilibria, each annulling the equations at rest
     from sage.all import pi
-    for q0 in [(0, 0), (0, pi), (pi, 0), (pi, pi)]:
-        assert [SR(e).subs({t1: q0[0], t2: q0[1]}) for e in eqs] == [0, 0]
-        linearize(L, {t1: q0[0], t2: q0[1]})
+    assert sorted(str(s.point()) for s in sols) == sorted(
+        str({t1: a, t2: b}) for a in (0, pi) for b in (0, pi))
+    for s in sols:
+        assert [SR(e).subs(s.point()) for e in eqs] == [0, 0]
+        linearize(L, s.point())
 
 
 def test_example3_invariant_manifolds_are_invariant():

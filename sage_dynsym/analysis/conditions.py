@@ -107,11 +107,119 @@ def positive_conditions_all(expressions, positive=()):
     flat = T.flat_ring()
     if flat is None:
         return [] if all(QQ(p) > 0 for p in polys) else None
-    polys = [flat(p) for p in polys]
-    entries = _reduce(polys, T.positive_names(positive))
+    names = T.positive_names(positive)
+    odd, nonzero = [], []
+    for p in map(flat, polys):
+        part, even = _split_even_factors(p, names)
+        odd.append(part)
+        for g in even:
+            if all(g != h for h in nonzero):
+                nonzero.append(g)
+    entries = _reduce(odd, names)
     if len(entries) == 1 and len(entries[0]) == 1 and _is_constant(entries[0][0]):
-        return None if _constant(entries[0][0]) <= 0 else []
-    return [_relational(T, entry, '>') for entry in entries]
+        if _constant(entries[0][0]) <= 0:
+            return None
+        entries = []
+    entries = _propagate_signs(entries, nonzero, names)
+    if entries is None:
+        return None
+    return [_relational(T, [sign * prod(factors)], '>') for sign, factors in entries] + \
+        [_relational(T, [g], '!=') for g in nonzero]
+
+
+def _propagate_signs(entries, nonzero, names):
+    r"""
+    Simplify a conjunction of conditions ``product > 0`` (``entries`` from
+    :func:`~sage_dynsym.analysis.hurwitz._reduce`) with the signs that
+    single-factor conditions fix: in ``a < 0, a*b > 0`` the second becomes
+    ``b < 0``; a factor that is a sum of even powers with positive
+    coefficients is positive once one of its terms is known nonzero.
+    Returns a list of ``(sign, factors)``, or ``None`` if impossible.
+    """
+    from ._polynomials import positive_polynomial
+    work = []
+    for entry in entries:
+        p = prod(entry)
+        F = p.factor()
+        work.append([QQ(F.unit()).sign(), [g if g.lc() > 0 else -g for g, _ in F],
+                     ])
+        if any(g.lc() < 0 for g, _ in F):
+            work[-1][0] *= (-1) ** sum(1 for g, _ in F if g.lc() < 0)
+    known = {}
+    changed = True
+    while changed:
+        changed = False
+        for w in work:
+            if len(w[1]) == 1 and w[1][0] not in known:
+                known[w[1][0]] = w[0]
+        nonzero_vars = {str(g) for g in list(known) + list(nonzero) if g.is_gen()}
+        for w in work:
+            if len(w[1]) <= 1 and not (w[1] and _nonnegative(w[1][0], names, nonzero_vars)):
+                continue
+            kept = []
+            for g in w[1]:
+                if g in known and len(w[1]) > 1:
+                    w[0] *= known[g]
+                elif _nonnegative(g, names, nonzero_vars):
+                    pass
+                else:
+                    kept.append(g)
+            if kept != w[1]:
+                w[1] = kept
+                changed = True
+    result, seen = [], set()
+    for sign, factors in work:
+        if not factors:
+            if sign <= 0:
+                return None
+            continue
+        key = (sign, tuple(str(g) for g in factors))
+        if key not in seen:
+            seen.add(key)
+            result.append((sign, factors))
+    # a single factor with both signs required is impossible
+    singles = {}
+    for sign, factors in result:
+        if len(factors) == 1:
+            if singles.get(factors[0], sign) != sign:
+                return None
+            singles[factors[0]] = sign
+    return result
+
+
+def _nonnegative(f, names, nonzero_vars):
+    r"""Whether ``f`` is positive: positive coefficients, even powers of the
+    variables not declared positive, and a term whose variables are all
+    positive or known nonzero."""
+    if any(c <= 0 for c in f.coefficients()):
+        return False
+    gens = [str(g) for g in f.parent().gens()]
+    strict = False
+    for exps in f.exponents():
+        exps = (exps,) if isinstance(exps, int) else exps
+        if any(e % 2 for k, e in enumerate(exps) if gens[k] not in names):
+            return False
+        if all(gens[k] in names or gens[k] in nonzero_vars for k, e in enumerate(exps) if e):
+            strict = True
+    return strict
+
+
+def _split_even_factors(p, names):
+    r"""``p`` without its factors of even multiplicity (that are not
+    positive by the declarations), and those factors: `f^2 g > 0` iff
+    `g > 0` and `f \ne 0`."""
+    from ._polynomials import positive_polynomial
+    if _is_constant(p) or len(p.dict()) > FACTOR_LIMIT:
+        return p, []
+    F = p.factor()
+    rest, even = p.parent()(F.unit()), []
+    for g, e in F:
+        if e % 2 == 0 and not positive_polynomial(g, names) and \
+                not positive_polynomial(-g, names):
+            even.append(g if g.lc() > 0 else -g)
+        else:
+            rest *= g ** e
+    return rest, even
 
 
 def nonzero_conditions(expr, positive=()):
@@ -144,6 +252,55 @@ def nonzero_conditions(expr, positive=()):
             continue
         result.append(_relational(T, [factor], '!='))
     return result
+
+
+def simplify_conjunction(conditions, positive=()):
+    r"""
+    Simplify a conjunction of relationals together (signs fixed by one
+    condition are used in the others, implied conditions dropped):
+    ``[]`` if it always holds, ``None`` if it never does.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.conditions import simplify_conjunction
+        sage: a, b = var('a b')
+        sage: simplify_conjunction([a < 0, a*b > 0, b != 1])
+        [a < 0, b < 0, b - 1 != 0]
+        sage: simplify_conjunction([a > 0, a < 0]) is None
+        True
+    """
+    strict, others = [], []
+    for c in conditions:
+        c = as_relational(c)
+        e = c.lhs() - c.rhs()
+        op = c.operator().__name__
+        if op == 'gt':
+            strict.append(e)
+        elif op == 'lt':
+            strict.append(-e)
+        else:
+            others.append(c)
+    kept = positive_conditions_all(strict, positive)
+    if kept is None:
+        return None
+    rest = []
+    for c in others:
+        e = c.lhs() - c.rhs()
+        op = c.operator().__name__
+        if op == 'ne':
+            nz = nonzero_conditions(e, positive)
+            if nz is None:
+                return None
+            rest += nz
+        elif op == 'eq' and e.is_numeric():
+            if not e.is_zero():
+                return None
+        elif op in ('ge', 'le') and e.is_numeric():
+            if not (e >= 0 if op == 'ge' else e <= 0):
+                return None
+        else:
+            rest.append(c)
+    return conjunction(kept, rest)
 
 
 def conjunction(*lists):

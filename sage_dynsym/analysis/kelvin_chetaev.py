@@ -69,15 +69,46 @@ class StabilityVerdict(SageObject):
     ``verdict()`` is one of ``'asymptotically stable'``, ``'stable'``,
     ``'unstable'``, ``'gyroscopic stabilization possible'``, ``'destroyed
     by dissipation'``, ``'undecided'``. When several cases are possible for
-    different parameter values, the verdict is ``'undecided'`` and
-    :meth:`cases` lists them.
+    different parameter values, the verdict is ``'undecided'`` (or
+    ``'depends on the parameters'``) and :meth:`cases` lists them.
+
+    A verdict may also carry the method that decided it (:meth:`method`)
+    and a *region* (:meth:`region`): a list of alternatives, each a list of
+    relationals, under which it holds.
     """
 
-    def __init__(self, verdict, reason, conditions=(), cases=()):
+    def __init__(self, verdict, reason, conditions=(), cases=(), method=None,
+                 region=None):
         self._verdict = verdict
         self._reason = reason
         self._conditions = list(conditions)
         self._cases = list(cases)
+        self._method = method
+        self._region = region
+
+    def method(self):
+        r"""The method that decided the verdict (``None`` if not recorded).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import StabilityVerdict
+            sage: StabilityVerdict('stable', 'K > 0', method='Routh-Lyapunov').method()
+            'Routh-Lyapunov'
+        """
+        return self._method
+
+    def region(self):
+        r"""Where the verdict holds: a list of alternatives, each a list of
+        relationals (``[[]]``: everywhere); ``None`` if not recorded.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import StabilityVerdict
+            sage: a = var('a')
+            sage: StabilityVerdict('stable', 'K > 0', region=[[a > 0]]).region()
+            [[a > 0]]
+        """
+        return None if self._region is None else [list(alt) for alt in self._region]
 
     def verdict(self):
         r"""The verdict (a string).
@@ -129,6 +160,9 @@ class StabilityVerdict(SageObject):
 
     def _repr_(self):
         cond = f" if {self._conditions}" if self._conditions else ""
+        if self._region is not None and self._region != [[]]:
+            cond = " where " + " or ".join(
+                "[" + ", ".join(map(str, alt)) + "]" for alt in self._region)
         return f"{self._verdict}{cond}: {self._reason}"
 
 

@@ -51,7 +51,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .conditions import positive_conditions_all, conjunction
+from .conditions import simplify_conjunction
 from .translation import Translation
 
 #: Time limit (seconds) of one QEPCAD run.
@@ -144,7 +144,7 @@ def _simplified_alternatives(alternatives, positive):
     always holds."""
     result = []
     for alt in alternatives:
-        simple = _simplify_conjunction(alt, positive)
+        simple = simplify_conjunction(alt, positive)
         if simple is None:
             continue
         if not simple:
@@ -152,50 +152,6 @@ def _simplified_alternatives(alternatives, positive):
         if simple not in result:
             result.append(simple)
     return result
-
-
-def _simplify_conjunction(alt, positive):
-    strict, others = [], []
-    for c in alt:
-        e, op = _relation_parts(c)
-        if op == '>':
-            strict.append(e)
-        elif op == '<':
-            strict.append(-e)
-        else:
-            others.append((e, op))
-    kept = positive_conditions_all(strict, positive)
-    if kept is None:
-        return None
-    rest = []
-    for e, op in others:
-        verdict = _constant_truth(e, op, positive)
-        if verdict is False:
-            return None
-        if verdict is None:
-            rest.append(_relational(e, op))
-    return conjunction(kept, rest)
-
-
-def _constant_truth(e, op, positive):
-    r"""True/False when ``e op 0`` is decided by the sign of ``e`` alone
-    (constants, or expressions positive by the declarations), else ``None``."""
-    from .conditions import positive_conditions
-    e = SR(e)
-    if e.is_numeric() or not e.variables():
-        return bool(_relational(e, op))
-    if op in ('==', '!='):
-        pos = positive_conditions(e, positive) == [] or positive_conditions(-e, positive) == []
-        if pos:
-            return op == '!='
-        if e.expand().is_zero():
-            return op == '=='
-        return None
-    sign = 1 if positive_conditions(e, positive) == [] else \
-        (-1 if positive_conditions(-e, positive) == [] else 0)
-    if sign == 0:
-        return None
-    return {'>=': sign > 0, '<=': sign < 0}.get(op)
 
 
 # ---------------------------------------------------------------------------

@@ -89,27 +89,78 @@ from .conditions import positive_conditions, nonzero_conditions, conjunction
 from .translation import Translation, NotAlgebraic
 
 
-def normalize(expr):
+def normalize(expr, angles=(), factor=False):
     r"""
     A canonical form of a rational expression (rational-function
     normalization in Singular; non-polynomial parts are atoms): no Maxima,
     no assumption questions.
 
+    INPUT:
+
+    - ``expr`` -- a symbolic expression
+    - ``angles`` -- (optional) symbols whose trigonometric functions are
+      expanded (multiple angles, sums) and reduced modulo
+      `\cos^2 + \sin^2 = 1`
+    - ``factor`` -- (default: ``False``) return numerator and denominator
+      factored
+
     EXAMPLES::
 
         sage: from sage_dynsym.analysis.solving import normalize
-        sage: a, b = var('a b')
+        sage: a, b, q, r = var('a b q r')
         sage: normalize((a^2 - b^2)/(a + b) + sqrt(a)^3/sqrt(a))
         2*a - b
+        sage: e = a*(cos(r - q)*sin(q) + cos(q)*sin(r - q)) + b*a*sin(r)
+        sage: normalize(e, angles=[q, r], factor=True)
+        a*(b + 1)*sin(r)
     """
     expr = SR(expr)
     if not expr.variables() and expr.is_numeric():
         return expr
     try:
+        if angles:
+            return _shortest_trigonometric(expr, angles, factor)
         T = Translation([], [], extra=[expr])
-        return T.symbolic(T.fraction(expr))
+        f = T.fraction(expr)
+        if not factor or T.flat_ring() is None:
+            return T.symbolic(f)
+        from .conditions import _factored_symbolic
+        flat = T.flat_ring()
+        return _factored_symbolic(T, flat(f.numerator())) / \
+            _factored_symbolic(T, flat(f.denominator()))
     except AnalysisError:
         return expr
+
+
+def _shortest_trigonometric(expr, angles, factor):
+    r"""``expr`` reduced modulo `\cos^2 + \sin^2 = 1` of the ``angles``:
+    the shortest of the forms without reduction, with the powers of sines
+    reduced, and with the powers of cosines reduced."""
+    T = Translation([], [SR(a) for a in angles], extra=[expr])
+    f = T.fraction(expr)
+    P = T.ring()
+    num, den = T.to_ring(f.numerator()), T.to_ring(f.denominator())
+    FF = f.parent()
+    candidates = [f]
+    relations = T.circle_relations()
+    if relations:
+        names = [str(g) for g in P.gens()]
+        for order in (names, names[::-1]):
+            Q = PolynomialRing(P.base_ring(), order, len(order), order='degrevlex')
+            ideal = Q.ideal([Q(r) for r in relations])
+            n, d = ideal.reduce(Q(num)), ideal.reduce(Q(den))
+            (n1, n2), (d1, d2) = T.to_flat(P(n)), T.to_flat(P(d))
+            candidates.append(FF(n1 * d2) / FF(n2 * d1))
+    forms = []
+    for c in candidates:
+        if factor and T.flat_ring() is not None:
+            from .conditions import _factored_symbolic
+            flat = T.flat_ring()
+            forms.append(_factored_symbolic(T, flat(c.numerator())) /
+                         _factored_symbolic(T, flat(c.denominator())))
+        else:
+            forms.append(T.symbolic(c))
+    return min(forms, key=lambda e: len(str(e)))
 
 
 class SolutionSet(SageObject):
@@ -148,6 +199,18 @@ class SolutionSet(SageObject):
     def __getitem__(self, i):
         return self._solutions[i]
 
+    def is_complete(self):
+        r"""Whether the list is complete: ``True`` for exact decompositions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: x = var('x')
+            sage: solve_exactly([x^2 - 1], [x]).is_complete()
+            True
+        """
+        return True
+
     def is_empty(self):
         r"""Whether there is no real solution (for generic parameters).
 
@@ -171,6 +234,45 @@ class SolutionSet(SageObject):
             [a]
         """
         return self._translation
+
+
+class SolutionSet_transcendental(SolutionSet):
+    r"""
+    Solutions found by the transcendental fallback (:func:`solve_transcendental`):
+    verified, isolated and explicit, but possibly not all of them.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import solve_transcendental
+        sage: x = var('x')
+        sage: S = solve_transcendental([exp(x) - 2], [x]); S
+        1 solution of 1 transcendental equation in x, found by Maxima's solve (the list may be incomplete)
+        sage: S.is_complete()
+        False
+    """
+
+    def __init__(self, unknowns, solutions, n_equations):
+        self._unknowns = unknowns
+        SolutionSet.__init__(self, None, solutions, n_equations)
+
+    def _repr_(self):
+        what = ', '.join(map(str, self._unknowns))
+        n = len(self._solutions)
+        eq = f"{self._n} transcendental equation{'s' if self._n != 1 else ''}"
+        return (f"{n} solution{'s' if n != 1 else ''} of {eq} in {what}, found by "
+                "Maxima's solve (the list may be incomplete)")
+
+    def is_complete(self):
+        r"""Always ``False``: Maxima's ``solve`` may miss solutions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.solving import solve_transcendental
+            sage: x = var('x')
+            sage: solve_transcendental([exp(x) - 2], [x]).is_complete()
+            False
+        """
+        return False
 
 
 class AlgebraicSolution(SageObject):
@@ -346,7 +448,7 @@ class AlgebraicSolution(SageObject):
             sage: q, a = var('q a')
             sage: s = solve_exactly([cos(q) - a], [q])[0]
             sage: s.substitutions()
-            {sin(q): sqrt(-a^2 + 1), cos(q): a, q: arccos(a)}
+            {sin(q): sqrt(-(a + 1)*(a - 1)), cos(q): a, q: arccos(a)}
         """
         subs = {}
         gens = self._T.symbolic_generators()
@@ -370,7 +472,7 @@ class AlgebraicSolution(SageObject):
             sage: q, a = var('q a')
             sage: s = solve_exactly([cos(q) - a], [q])[0]
             sage: s.evaluate(sin(2*q) + cos(q)^2)
-            a^2 + 2*sqrt(-a^2 + 1)*a
+            a^2 + 2*sqrt(-(a + 1)*(a - 1))*a
         """
         from .translation import expand_angles
         angles = [u for u in self._T.unknowns() if self._T.is_angle(u)]
@@ -404,7 +506,7 @@ def _log(message):
 
 
 def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
-                  extra=()):
+                  extra=(), transcendental=False):
     r"""
     The real solutions of a polynomial system, exactly: its irreducible
     components with their dimensions, explicit values where they can be
@@ -424,6 +526,9 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     - ``positive`` -- parameters declared positive (used in the conditions)
     - ``extra`` -- expressions to be evaluated or tested later (their
       symbols are registered as parameters)
+    - ``transcendental`` -- (default: ``False``) if the equations are not
+      algebraic, try the documented fallback :func:`solve_transcendental`
+      instead of raising :class:`~sage_dynsym.analysis.translation.NotAlgebraic`
 
     OUTPUT: a :class:`SolutionSet`
 
@@ -448,7 +553,12 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     equations = [SR(e) for e in equations]
     nonzero = [SR(e) for e in nonzero]
     _log(f"translating {len(equations)} equations in {len(unknowns)} unknowns")
-    T = Translation(equations, unknowns, extra=list(nonzero) + [SR(e) for e in extra])
+    try:
+        T = Translation(equations, unknowns, extra=list(nonzero) + [SR(e) for e in extra])
+    except NotAlgebraic as err:
+        if not transcendental:
+            raise
+        return solve_transcendental(equations, unknowns, reason=err)
     counted_set = set(range(len(unknowns))) if counted is None else \
         {[str(u) for u in unknowns].index(str(SR(c))) for c in counted}
     if T.ring() is None:
@@ -480,9 +590,13 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
 
 
 def _sort_key(s):
-    # numerical points in increasing order; conjugate branches stay
-    # together, in the order they were made
-    numeric = []
+    # isolated before families; solutions off the first axes first (the
+    # pattern of zero values); numerical points in increasing order;
+    # conjugate branches stay together, in the order they were made
+    pattern, numeric = [], []
+    for i in sorted(s._counted):
+        v = s._values.get(i)
+        pattern.append(0 if v is not None and SR(v).is_zero() else -1)
     for v in s._values.values():
         try:
             numeric.append(float(v))
@@ -490,7 +604,8 @@ def _sort_key(s):
             numeric = []
             break
     return (s.dimension(), len(s._free), not s.is_explicit(), bool(s._conditions),
-            numeric, str(s._prime.gens()))
+            pattern if s._free else [], numeric, pattern,
+            str(s._prime.gens()) if s._prime is not None else '')
 
 
 # ---------------------------------------------------------------------------
@@ -622,6 +737,9 @@ def _solve_triangular(T, Pl, triangular, positive):
     def main(t):        # the leading variable in the lexicographic order
         return min(index[str(v)] for v in t.variables())
 
+    # the cosine or sine of an angle keeps the sign of its square root
+    # (its angle is written with arccos / arcsin)
+    angular = {str(g): T.is_trigonometric(k) for k, g in enumerate(gens)}
     branches = [({}, {}, [])]
     for t in sorted(triangular, key=main, reverse=True):
         v = gens[main(t)]
@@ -632,7 +750,7 @@ def _solve_triangular(T, Pl, triangular, positive):
         new = []
         for values, signs, conds in branches:
             cs = [normalize(T.symbolic(coefficients[k], values)) for k in range(d + 1)]
-            for value, sign, extra in _roots(cs, positive):
+            for value, sign, extra in _roots(cs, positive, angular[str(v)]):
                 c = conjunction(conds, extra)
                 if c is None:
                     continue
@@ -646,7 +764,7 @@ def _solve_triangular(T, Pl, triangular, positive):
     return branches
 
 
-def _roots(cs, positive):
+def _roots(cs, positive, keep_sign):
     r"""Real roots of ``cs[0] + cs[1] v (+ cs[2] v^2)``: triples
     ``(value, sign of the square root or None, conditions)``."""
     if len(cs) == 2:
@@ -675,15 +793,18 @@ def _roots(cs, positive):
         real = positive_conditions(D, positive)
         if real is None:
             return []
-    root = _square_root(D, positive)
+    root = _square_root(D, positive, keep_sign)
     cond = conjunction(lead, real)
     if c1.is_zero():      # v = +-sqrt(D): the sign of each branch is known
         return [(root, 1, cond), (-root, -1, cond)]
     return [(normalize(base + root), None, cond), (normalize(base - root), None, cond)]
 
 
-def _square_root(D, positive):
-    r"""`\sqrt D` with the square factors known to be positive taken out."""
+def _square_root(D, positive, keep_sign=True):
+    r"""`\sqrt D`, factored, with square factors taken out: only those
+    known to be positive (or even powers of squares) when ``keep_sign``,
+    so that the sign of the result is that of the root; all of them
+    otherwise (the pair `\pm\sqrt D` is the same either way)."""
     from .conditions import _translate
     from ._polynomials import positive_polynomial
     T, (f,) = _translate([D])
@@ -691,7 +812,7 @@ def _square_root(D, positive):
     flat = T.flat_ring()
     if flat is None:
         return SR(D).sqrt()
-    outside, inside, extracted = SR(1), SR(1), False
+    outside, inside = SR(1), SR(1)
     for part, sign in ((f.numerator(), 1), (f.denominator(), -1)):
         part = flat(part)
         if part.is_constant():
@@ -701,13 +822,12 @@ def _square_root(D, positive):
         inside *= SR(QQ(F.unit())) ** sign
         for g, e in F:
             g_sr = T.symbolic(g)
-            if positive_polynomial(g, names) and e > 1:
-                extracted = True
-                outside *= g_sr ** (sign * (e // 2))
-                inside *= g_sr ** (sign * (e % 2))
-            else:
-                inside *= g_sr ** (sign * e)
-    return outside * inside.sqrt() if extracted else SR(D).sqrt()
+            # sqrt(g^e) = |g|^(e/2): g^(e/2) when g > 0 (or when the sign
+            # of the root does not matter), else only the even part of e/2
+            out = e // 2 if positive_polynomial(g, names) or not keep_sign else 2 * (e // 4)
+            outside *= g_sr ** (sign * out)
+            inside *= g_sr ** (sign * (e - 2 * out))
+    return outside * inside.sqrt()
 
 
 def _implicit(T, prime, counted, positive):
@@ -758,3 +878,94 @@ def _family(T, prime, free, counted, positive):
     values = _assemble(T, ring_values, {})
     return AlgebraicSolution(T, prime, free, counted, values, ring_values,
                              relations, conditions)
+
+
+class TranscendentalSolution(AlgebraicSolution):
+    r"""
+    An isolated explicit solution found by :func:`solve_transcendental`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import solve_transcendental
+        sage: x = var('x')
+        sage: s = solve_transcendental([exp(x) - 2], [x])[0]; s
+        Solution {x: log(2)} (dimension 0)
+        sage: s.evaluate(exp(2*x)), s.contains(exp(x) - 2)
+        (4, True)
+    """
+
+    def __init__(self, unknowns, values):
+        self._unknowns = unknowns
+        AlgebraicSolution.__init__(self, None, None, [], set(range(len(unknowns))),
+                                   dict(enumerate(values)), {}, [], [])
+
+    def values(self):
+        return dict(zip(self._unknowns, [self._values[i] for i in range(len(self._unknowns))]))
+
+    def free_unknowns(self):
+        return []
+
+    def substitutions(self):
+        return self.values()
+
+    def evaluate(self, expr):
+        return normalize(SR(expr).subs(self.values()))
+
+    def contains(self, expr):
+        return self.evaluate(expr).is_zero()
+
+
+def solve_transcendental(equations, unknowns, reason=None):
+    r"""
+    The documented fallback for equations that are not algebraic in the
+    unknowns (``exp``, ``log``, an angle also outside trigonometric
+    functions, ...): Maxima's ``solve``, accepted only where every solution
+    it returns is explicit and verified by substitution.
+
+    The result is marked incomplete (:meth:`SolutionSet.is_complete` is
+    ``False``): Maxima may miss solutions. When it returns an unsolved
+    equation, a parametric family or nothing, an
+    :class:`~sage_dynsym.errors.AnalysisError` says so -- an unsolved
+    equation is never reported as a solution.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import solve_transcendental
+        sage: x, a = var('x a')
+        sage: [s.values() for s in solve_transcendental([exp(x) - a], [x])]
+        [{x: log(a)}]
+        sage: solve_transcendental([x - cos(x)], [x])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_exactly: the equations are not algebraic in x and Maxima's solve could not solve them: [x - cos(x)]
+    """
+    from sage.symbolic.relation import solve
+    unknowns = [SR(u) for u in unknowns]
+    equations = [SR(e) for e in equations]
+    equations = [e.lhs() - e.rhs() if e.is_relational() else e for e in equations]
+    why = f" ({reason})" if reason else ""
+    failure = AnalysisError(
+        f"the equations are not algebraic in {', '.join(map(str, unknowns))}{why} and "
+        f"Maxima's solve could not solve them: {equations}", entry="solve_exactly")
+    _log("transcendental equations: trying Maxima's solve")
+    try:
+        found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
+    except (TypeError, ValueError, NotImplementedError, RuntimeError):
+        raise failure from None
+    solutions = []
+    for sol in found:
+        values = [SR(sol.get(u, u)) for u in unknowns]
+        names = {str(u) for u in unknowns}
+        if any(u not in sol for u in unknowns) or \
+                any(str(v) in names for val in values for v in val.variables()):
+            raise failure       # an unsolved equation echoed back
+        known = set().union(*(set(map(str, e.variables())) for e in equations))
+        if any(str(v) not in known for val in values for v in val.variables()):
+            raise failure       # a free parameter r<N> / z<N> of Maxima: not isolated
+        s = TranscendentalSolution(unknowns, values)
+        if not all(s.contains(e) for e in equations):
+            raise failure
+        solutions.append(s)
+    if not solutions:
+        raise failure
+    return SolutionSet_transcendental(unknowns, solutions, len(equations))

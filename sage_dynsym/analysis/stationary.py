@@ -3,46 +3,75 @@ Stationary solutions and invariant manifolds (Routh--Lyapunov method)
 
 For `\dot x = X(x)` with first integrals `V_0, \dots, V_k`, stationary
 solutions are conditional extrema of the integrals: the stationarity
-equations `\partial K/\partial x_i = 0` of `K = \sum_j \lambda_j V_j`
-(`\lambda_0 = 1`). Where the Hessian of `K` is nondegenerate the solutions
-are isolated stationary solutions; degenerate solution sets are
-*stationary invariant manifolds* (IM). The same `K` is a Lyapunov
-function: the second variation `\delta^2 K` on the tangent space of the
-level set of the integrals gives sufficient stability conditions (14).
+equations `\partial K/\partial x_i = 0` of `K = V_0 + \sum_{j\ge1}
+\lambda_j V_j`, together with the levels `V_j = c_j` that are prescribed.
+Their solution set is computed exactly (:mod:`.solving`): it is decomposed
+into irreducible components, each with its dimension -- `0` for an
+isolated solution, `k > 0` for a `k`-parameter family of stationary
+solutions, a candidate *stationary invariant manifold* --, explicit values
+where they can be written, the values of the multipliers, and the
+conditions on the parameters under which it exists and is real.
+
+The same `K` is a Lyapunov function: if its second variation `\delta^2 K`
+on the tangent space of the level set of the integrals is definite, the
+solution is stable (equation (14) of :doc:`/method`). When some multipliers
+are not fixed by the stationarity equations, stability follows if *some*
+choice of them makes `\delta^2 K` definite: :meth:`StationarySolution.stability_region`
+eliminates them (quantifier elimination). :meth:`StationarySolution.stability`
+combines this with the first approximation.
 
 For a Lagrangian system with cyclic coordinates the stationary motions
 come from the Routh function: `\partial R/\partial q = 0`, `\dot q = 0`
-(:func:`stationary_motions`). The *modified* method
-(:class:`ModifiedRouthLyapunov`) adds `c\, f(q)\dot q` to `R`: the
-equations of motion do not change (it is a total derivative), but the
-stationarity equations of `R + c f(q)\dot q` become degenerate exactly when
-`f` solves an ODE; its solutions give families of IM.
+(:func:`stationary_motions`); their stability follows from the amended
+potential `W = -R|_{\dot q = 0}` (Routh's theorem). The *modified* method
+(:class:`ModifiedRouthLyapunov`) adds `c\, f(q)\dot q` to `R`.
 
 EXAMPLES:
 
 Permanent rotations of a free rigid body (Euler equations) from the energy
-and the squared angular momentum; rotation about the axis of the largest
-moment of inertia is stable (Merkin, ch. 5; Rumyantsev)::
+and the squared angular momentum (Merkin, *Introduction to the Theory of
+Stability*, ch. 5; Arnold, *Mathematical Methods of Classical Mechanics*,
+§29): the rest point, and a line of permanent rotations about each
+principal axis::
 
     sage: from sage_dynsym.analysis.stationary import stationary_solutions
     sage: M1, M2, M3 = var('M1 M2 M3'); A1, A2, A3 = var('A1 A2 A3')
     sage: X = [(A2 - A3)/(A2*A3)*M2*M3, (A3 - A1)/(A3*A1)*M3*M1, (A1 - A2)/(A1*A2)*M1*M2]
     sage: H = (M1^2/A1 + M2^2/A2 + M3^2/A3)/2; V = M1^2 + M2^2 + M3^2
-    sage: sols = stationary_solutions([H, V], [M1, M2, M3], equations=X)
+    sage: sols = stationary_solutions([H, V], [M1, M2, M3], equations=X, positive=[A1, A2, A3])
     sage: sols.stationarity_equations()
     [2*M1*lambda1 + M1/A1, 2*M2*lambda1 + M2/A2, 2*M3*lambda1 + M3/A3]
     sage: for s in sols: print(s)
-    Stationary solution {M1: 0, M2: 0, M3: 0}, lambda1 = r1 (isolated)
-    Stationary solution {M1: r2, M2: 0, M3: 0}, lambda1 = -1/2/A1 (family, degenerate Hessian: invariant manifold)
-    Stationary solution {M1: 0, M2: r3, M3: 0}, lambda1 = -1/2/A2 (family, degenerate Hessian: invariant manifold)
-    Stationary solution {M1: 0, M2: 0, M3: r4}, lambda1 = -1/2/A3 (family, degenerate Hessian: invariant manifold)
+    Stationary solution {M1: 0, M2: 0, M3: 0}, lambda1 free (isolated)
+    Stationary solution {M1: M1, M2: 0, M3: 0}, lambda1 = -1/2/A1 (1-parameter family)
+    Stationary solution {M1: 0, M2: M2, M3: 0}, lambda1 = -1/2/A2 (1-parameter family)
+    Stationary solution {M1: 0, M2: 0, M3: M3}, lambda1 = -1/2/A3 (1-parameter family)
+
+The rotation about the first axis: the second variation on the tangent
+space of the sphere `V = M_1^2` is definite iff `A_1` is the largest or the
+smallest moment of inertia; at the middle axis the first approximation has
+a root with positive real part::
+
     sage: s = sols[1]
     sage: s.second_variation(restricted=True)
-    1/2*((A1 - A2)*A3*xi_M2^2 + (A1*A2 - A2*A3)*xi_M3^2)/(A1*A2*A3)
-    sage: s.stability_conditions(positive=[A1, A2, A3])
-    [A1 - A2, A1 - A3]
+    1/2*(A1 - A2)*xi_M2^2/(A1*A2) + 1/2*(A1 - A3)*xi_M3^2/(A1*A3)
+    sage: s.stability_region()
+    [[A1 - A2 > 0, A1 - A3 > 0, M1 != 0]]
+    sage: s.stability_region(sign='negative')
+    [[A1 - A2 < 0, A1 - A3 < 0, M1 != 0]]
+    sage: s.stability()
+    depends on the parameters: see cases()
+    sage: for case in s.stability().cases(): print(case.verdict(), case.method(), case.region())
+    stable Routh-Lyapunov [[A1 - A2 > 0, A1 - A3 > 0, M1 != 0], [A1 - A2 < 0, A1 - A3 < 0, M1 != 0]]
+    unstable first approximation [[(A1 - A2)*(A1 - A3) < 0, M1 != 0]]
 
-(the free parameters of families are renamed ``r1, r2, ...`` in order).
+With a prescribed level of `V` the families become isolated points, two
+conjugate branches each::
+
+    sage: c = var('c')
+    sage: sols = stationary_solutions([H, V], [M1, M2, M3], levels=[c], positive=[A1, A2, A3])
+    sage: [s.point() for s in sols][:2], sols[0].conditions()
+    ([{M1: sqrt(c), M2: 0, M3: 0}, {M1: -sqrt(c), M2: 0, M3: 0}], [c > 0])
 
 TESTS::
 
@@ -50,24 +79,36 @@ TESTS::
     Traceback (most recent call last):
     ...
     AnalysisError: stationary_solutions: integral 1, M1, is not conserved: its derivative along the equations is (A2 - A3)*M2*M3/(A2*A3)
+    sage: stationary_solutions([H, V], [M1, M2, M3], levels=[1, 2])
+    Traceback (most recent call last):
+    ...
+    AnalysisError: stationary_solutions: levels has 2 entries; it needs one per integral after the first (1)
+    sage: stationary_solutions([H, V, M1^2 + M2^2 + M3^2], [M1, M2, M3], levels=[1, 2])
+    No stationary solutions: the equations are inconsistent (for generic parameter values)
+
+REFERENCES:
+
+- A. M. Lyapunov, *The General Problem of the Stability of Motion*,
+  Taylor & Francis, 1992.
+- V. V. Rumyantsev, *On the stability of steady motions*, J. Appl. Math.
+  Mech. 30 (1966) 1090--1103.
+- D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997.
 """
 from sage.matrix.constructor import matrix
 from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.function_factory import function as symbolic_function
-from sage.symbolic.relation import solve
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..expressions import velocity
-from .quadratic_forms import restrict_to_subspace, sylvester_conditions
-
-
-def _simplify(e):
-    try:
-        return SR(e).simplify_full()
-    except (TypeError, ValueError):
-        return SR(e)
+from .conditions import (positive_conditions, positive_conditions_all, conjunction,
+                         simplify_conjunction)
+from .kelvin_chetaev import StabilityVerdict
+from .linear import LinearSystem
+from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
+                              _signed_minors)
+from .solving import solve_exactly, normalize
 
 
 def check_integral(V, variables, equations, index=0):
@@ -85,114 +126,184 @@ def check_integral(V, variables, equations, index=0):
         ...
         AnalysisError: stationary_solutions: integral 0, x, is not conserved: its derivative along the equations is -y
     """
-    dV = sum(SR(V).diff(x) * SR(X) for x, X in zip(variables, equations))
-    dV = _simplify(dV)
+    dV = normalize(sum(SR(V).diff(x) * SR(X) for x, X in zip(variables, equations)))
     if not dV.is_zero():
+        dV = dV.factor()
         raise AnalysisError(f"integral {index}, {V}, is not conserved: its "
                             f"derivative along the equations is {dV}",
                             entry="stationary_solutions")
 
 
-def _rename_free_parameters(sols, known):
-    r"""Rename the free parameters ``r<N>`` that Maxima introduces (a
-    global counter) to ``r1, r2, ...`` in order of appearance."""
-    rename, count = {}, 0
-    result = []
-    for sol in sols:
-        for v in sol.values():
-            for s in SR(v).variables():
-                if s not in known and s not in rename and str(s).startswith('r'):
-                    count += 1
-                    rename[s] = SR.var('r%d' % count)
-        result.append({k: SR(v).subs(rename) for k, v in sol.items()})
-    return result
-
-
 class StationarySolution(SageObject):
     r"""
-    One solution of the stationarity equations of `K = \sum\lambda_j V_j`.
-    Created by :func:`stationary_solutions`.
+    One stationary solution: a real branch of an irreducible component of
+    the stationary set. Created by :func:`stationary_solutions` and
+    :func:`stationary_motions`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: x, y, a = var('x y a')
+        sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+        sage: s = sols[1]; s
+        Stationary solution {x: x, y: 0}, lambda1 = -1/2 (1-parameter family)
+        sage: TestSuite(s).run(skip=['_test_pickling'])
     """
 
-    def __init__(self, family, point, multipliers):
-        self._family = family
-        self._point = point
-        self._multipliers = multipliers
+    def __init__(self, problem, solution):
+        self._problem = problem
+        self._solution = solution
+
+    def _positive(self, positive):
+        return self._problem._positive if positive is None else positive
 
     def _repr_(self):
-        mult = ', '.join(f"{k} = {v}" for k, v in self._multipliers.items())
-        kind = ("family, degenerate Hessian: invariant manifold" if self.is_degenerate()
-                else "isolated")
-        return f"Stationary solution {self._point}" + (f", {mult}" if mult else "") + \
+        mult = ', '.join(f"{k} free" if v is k or str(v) == str(k) else f"{k} = {v}"
+                         for k, v in self.multipliers().items())
+        d = self.dimension()
+        kind = "isolated" if d == 0 else f"{d}-parameter family"
+        if not self.is_explicit():
+            kind += ", implicit: see equations()"
+        conds = self._solution._conditions
+        if conds:
+            kind += ", if " + " and ".join(map(str, conds))
+        return f"Stationary solution {self.point()}" + (f", {mult}" if mult else "") + \
             f" ({kind})"
 
+    def _latex_(self):
+        return latex(self.point())
+
+    def __iter__(self):
+        # the old stationary_motions returned a pair (equations, solutions):
+        # unpacking the new result into two names must not go unnoticed
+        raise TypeError("a StationarySolution is not a sequence: stationary_motions and "
+                        "stationary_solutions return StationarySolutions (use "
+                        ".equations() for the equations, iterate for the solutions, "
+                        "s.point() for a solution's values)")
+
+    # -- the solution ------------------------------------------------------
+
     def point(self):
-        r"""The solution as a dict ``{variable: value}`` (may contain free
-        parameters ``r1, r2, ...`` of a family).
+        r"""
+        The solution as a dict ``{variable: value}`` over all variables:
+        the value where the solution fixes it, the variable itself where it
+        does not (a family is parametrised by some of its own variables;
+        :meth:`equations` holds the relations between them).
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: s.point()
-            {x: r2, y: 0}
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1].point()
+            {x: x, y: 0}
         """
-        return dict(self._point)
+        values = self._solution.values()
+        return {x: values[x] for x in self._problem._solved_variables()}
 
     def multipliers(self):
-        r"""The values of the multipliers `\lambda_j`, a dict.
+        r"""
+        The values of the multipliers `\lambda_j`, a dict; a multiplier
+        the solution leaves free maps to itself.
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
             sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: s.multipliers()
-            {lambda1: -1/2}
+            sage: sols[0].multipliers(), sols[1].multipliers()
+            ({lambda1: lambda1}, {lambda1: -1/2})
         """
-        return dict(self._multipliers)
+        values = self._solution.values()
+        return {l: values.get(l, l) for l in self._problem._multipliers}
 
-    def _subs(self):
-        d = dict(self._point)
-        d.update(self._multipliers)
-        return d
-
-    def hessian(self):
-        r"""The Hessian matrix of `K` at the solution.
+    def free_multipliers(self):
+        r"""The multipliers that the stationarity equations leave free.
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: s.hessian()
-            [    0     0]
-            [    0 a - 1]
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[0].free_multipliers()
+            [lambda1]
         """
-        F = self._family
-        return F.hessian().apply_map(lambda e: _simplify(e.subs(self._subs())))
+        return [l for l, v in self.multipliers().items() if str(v) == str(l)]
 
-    def is_degenerate(self):
-        r"""Whether the Hessian of `K` is singular at the solution.
+    def equations(self):
+        r"""
+        The relations (expressions ``== 0``) that remain between the
+        variables left free; empty for an explicit solution.
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: s.is_degenerate()
-            True
+            sage: x, y = var('x y')
+            sage: s = stationary_solutions([(x^2 + y^2 - 1)^2], [x, y])[1]
+            sage: s.dimension(), s.equations()
+            (1, [x^2 + y^2 - 1])
         """
-        return _simplify(self.hessian().det()).is_zero()
+        return self._solution.equations()
+
+    def dimension(self):
+        r"""
+        `0` for an isolated solution, `k > 0` for a `k`-parameter family
+        (the variables only: multipliers are not counted).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: [s.dimension() for s in stationary_solutions([(x^2 + y^2 - 1)^2], [x, y])]
+            [0, 1]
+        """
+        return self._solution.dimension()
+
+    def is_explicit(self):
+        r"""Whether every variable is given explicitly (or left free).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: stationary_solutions([x^6/6 - x^2/2 - x], [x])[0].is_explicit()
+            False
+        """
+        return self._solution.is_explicit()
+
+    def conditions(self):
+        r"""
+        Conditions on the parameters (relationals) for this solution to
+        exist and be real; ``[]`` when it exists for all admissible values.
+
+        EXAMPLES: a bead on a hoop turning about its vertical diameter::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: th, m, R, w, g = var('theta m R w g')
+            sage: W = -m*R^2*w^2*sin(th)^2/2 - m*g*R*cos(th)
+            sage: sols = stationary_solutions([W], [th], positive=[m, R, w, g])
+            sage: [(s.point(), s.conditions()) for s in sols]
+            [({theta: 0}, []),
+             ({theta: pi}, []),
+             ({theta: arccos(g/(R*w^2))}, [R*w^2 - g > 0]),
+             ({theta: -arccos(g/(R*w^2))}, [R*w^2 - g > 0])]
+        """
+        return self._solution.conditions()
+
+    def solution(self):
+        r"""The underlying :class:`~sage_dynsym.analysis.solving.AlgebraicSolution`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: stationary_solutions([x^2], [x])[0].solution()
+            Solution {x: 0} (dimension 0)
+        """
+        return self._solution
+
+    def _at(self, expr):
+        return self._solution.evaluate(expr)
+
+    # -- second variation ----------------------------------------------------
 
     def deviations(self):
         r"""The deviation variables `\xi` (``xi_<x>``), in order.
@@ -201,26 +312,66 @@ class StationarySolution(SageObject):
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: s.deviations()
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1].deviations()
             [xi_x, xi_y]
         """
         return [SR.var('xi_' + str(x), latex_name=r'\xi_{%s}' % latex(x))
-                for x in self._family.variables()]
+                for x in self._problem._hessian_variables]
+
+    def hessian(self):
+        r"""
+        The Hessian matrix at the solution of `K` (or, for stationary
+        motions, of the amended potential `W = -R|_{\dot q=0}`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1].hessian()
+            [    0     0]
+            [    0 a - 1]
+        """
+        return self._problem.hessian().apply_map(self._at)
+
+    def is_degenerate(self):
+        r"""Whether the Hessian is singular on the solution.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: [s.is_degenerate() for s in stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])]
+            [False, True, True]
+        """
+        return normalize(self.hessian().det()).is_zero()
+
+    def tangent_constraints(self):
+        r"""The linear forms `dV_j|_{x^0}\cdot\xi` (`j \ge 1`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1].tangent_constraints()
+            [2*x*xi_x]
+        """
+        xi = self.deviations()
+        variables = self._problem._hessian_variables
+        return [sum(self._at(SR(V).diff(x)) * d for x, d in zip(variables, xi))
+                for V in self._problem._constraint_integrals]
+
+    def _restricted(self):
+        r"""The restricted second variation, its free deviations and the
+        conditions of the elimination."""
+        xi = self.deviations()
+        x = matrix(SR, [xi]).transpose()
+        form = (x.transpose() * self.hessian() * x)[0, 0] / 2
+        return restrict_to_subspace(form, self.tangent_constraints(), xi, with_conditions=True)
 
     def second_variation(self, restricted=False):
         r"""
-        The second variation `\delta^2 K = \frac12 \xi^T (\partial^2 K)\xi`
-        at the solution, as a quadratic form in :meth:`deviations`.
-
-        INPUT:
-
-        - ``restricted`` -- (default: ``False``) restrict to the tangent
-          space of the level set of the integrals with multipliers
-          (`dV_j \cdot \xi = 0`, `j \ge 1`): the result is a form in the
-          remaining deviations
+        The second variation `\delta^2 K = \frac12 \xi^T H \xi`, optionally
+        restricted to the tangent space of the level set of the integrals.
 
         EXAMPLES::
 
@@ -230,41 +381,29 @@ class StationarySolution(SageObject):
             sage: s.second_variation(), s.second_variation(restricted=True)
             (1/2*(a - 1)*xi_y^2, 1/2*(a - 1)*xi_y^2)
         """
+        if restricted:
+            return self._restricted()[0]
         xi = self.deviations()
         x = matrix(SR, [xi]).transpose()
-        form = ((x.transpose() * self.hessian() * x)[0, 0] / 2)
-        if not restricted:
-            return _simplify(form)
-        cons = self.tangent_constraints()
-        restricted_form, _ = restrict_to_subspace(form, cons, xi)
-        return _simplify(restricted_form)
+        form = (x.transpose() * self.hessian() * x)[0, 0] / 2
+        return restrict_to_subspace(form, [], xi)[0]
 
-    def tangent_constraints(self):
-        r"""The linear forms `dV_j|_{x^0}\cdot\xi` (`j \ge 1`).
+    def _check_sign(self, sign):
+        if sign not in self._problem._signs:
+            raise AnalysisError(f"sign must be one of {self._problem._signs}, got {sign!r}"
+                                + (" (the kinetic energy is positive: only a positive "
+                                   "definite amended potential gives stability)"
+                                   if self._problem._kinetic is not None else ""),
+                                entry="stability")
 
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: s.tangent_constraints()
-            [2*r2*xi_x]
-        """
-        F = self._family
-        xi = self.deviations()
-        return [_simplify(sum(SR(V).diff(x).subs(self._subs()) * d
-                              for x, d in zip(F.variables(), xi)))
-                for V in F.integrals()[1:]]
-
-    def stability_conditions(self, positive=(), sign='positive'):
+    def stability_conditions(self, positive=None, sign='positive'):
         r"""
         Sufficient conditions for stability (Routh--Lyapunov): the
         restricted second variation is positive (``sign='positive'``) or
-        negative (``'negative'``) definite; Sylvester's criterion.
+        negative (``'negative'``) definite, by Sylvester's criterion. Free
+        multipliers may occur (see :meth:`stability_region`).
 
-        OUTPUT: list of expressions ``> 0``
+        OUTPUT: list of expressions ``> 0`` (``[-1]`` if they cannot hold)
 
         EXAMPLES::
 
@@ -274,53 +413,270 @@ class StationarySolution(SageObject):
             sage: s.stability_conditions()
             [a - 1]
         """
-        form = self.second_variation(restricted=True)
-        xi = [v for v in self.deviations() if form.has(v)]
-        if not xi:
-            return []
-        return sylvester_conditions(form, xi, sign=sign, positive=positive)
+        self._check_sign(sign)
+        positive = self._positive(positive)
+        form, free, _ = self._restricted()
+        conds = sylvester_conditions(form, free, sign=sign, positive=positive) if free else []
+        if self._problem._kinetic is not None:
+            conds = conds + sylvester_conditions(self._kinetic_at(), positive=positive)
+        return conds
+
+    def _kinetic_at(self):
+        return self._problem._kinetic.apply_map(self._at)
+
+    def _definiteness_region(self, positive, sign):
+        r"""Alternatives (without the existence conditions) where some
+        choice of the free multipliers makes the restricted second
+        variation definite."""
+        from .quantifier_elimination import exists
+        form, free, pivots = self._restricted()
+        exprs = _signed_minors(form_matrix(form, free), sign) if free else []
+        if self._problem._kinetic is not None:
+            exprs += _signed_minors(self._kinetic_at(), 'positive')
+        multipliers = [l for l in self.free_multipliers()
+                       if any(e.has(l) for e in exprs)]
+        if multipliers:
+            return exists(multipliers, [e > 0 for e in exprs] + pivots, positive)
+        kept = positive_conditions_all(exprs, positive)
+        return [] if kept is None else [conjunction(kept, pivots)]
+
+    def stability_region(self, positive=None, sign='positive'):
+        r"""
+        Where the solution is stable by the Routh--Lyapunov method: the
+        region of the parameters (and of the family's own variables) where
+        some choice of the free multipliers makes the restricted second
+        variation definite of the given ``sign``.
+
+        OUTPUT: a list of alternatives (a disjunction), each a list of
+        relationals (a conjunction); the conditions the solution itself
+        needs are included; ``[]`` if there is no such region
+
+        The free multipliers are eliminated in closed form where they occur
+        quadratically in a single condition, by QEPCAD otherwise.
+
+        EXAMPLES: the rest point of the Euler top, where the multiplier of
+        `V = |M|^2` is free, is stable for all positive moments of inertia
+        (a large enough multiplier makes `K` positive definite)::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: M1, M2, M3, A1, A2, A3 = var('M1 M2 M3 A1 A2 A3')
+            sage: H = (M1^2/A1 + M2^2/A2 + M3^2/A3)/2; V = M1^2 + M2^2 + M3^2
+            sage: s = stationary_solutions([H, V], [M1, M2, M3])[0]; s.free_multipliers()
+            [lambda1]
+            sage: s.stability_conditions()
+            [(2*A1*lambda1 + 1)*A1,
+             (2*A1*lambda1 + 1)*(2*A2*lambda1 + 1)*A1*A2,
+             (2*A1*lambda1 + 1)*(2*A2*lambda1 + 1)*(2*A3*lambda1 + 1)*A1*A2*A3]
+            sage: s.stability_region(positive=[A1, A2, A3])
+            [[]]
+        """
+        self._check_sign(sign)
+        positive = self._positive(positive)
+        existence = self.conditions()
+        result = []
+        for alt in self._definiteness_region(positive, sign):
+            joined = simplify_conjunction(existence + alt, positive)
+            if joined is not None and joined not in result:
+                result.append(joined)
+        return result
+
+    # -- first approximation -------------------------------------------------
+
+    def linear_system(self):
+        r"""
+        The first-approximation system at the solution (a
+        :class:`~sage_dynsym.analysis.linear.LinearSystem`), or ``None``
+        when the equations of motion are not known.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: s = stationary_solutions([(x^2 + y^2)/2], [x, y], equations=[y, -x])[0]
+            sage: s.linear_system().jacobian()
+            [ 0  1]
+            [-1  0]
+        """
+        return self._problem._linear_system(self)
+
+    def stability(self, positive=None):
+        r"""
+        A stability verdict combining the Routh--Lyapunov method (a definite
+        second variation: :meth:`stability_region`) with the first
+        approximation (the Liénard--Chipart conditions for asymptotic
+        stability; a root with positive real part -- a coefficient of the
+        characteristic polynomial of the sign opposite to the leading one,
+        or, for a polynomial in `\lambda^2`, of its polynomial in `\mu =
+        \lambda^2` -- for instability).
+
+        OUTPUT: a :class:`~sage_dynsym.analysis.kelvin_chetaev.StabilityVerdict`;
+        its :meth:`~sage_dynsym.analysis.kelvin_chetaev.StabilityVerdict.method`
+        says which method decided, its ``region()`` where; with several
+        possible verdicts, ``'depends on the parameters'`` and the cases
+
+        EXAMPLES: the double pendulum's lower equilibrium is stable::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import stationary_motions
+            sage: t1, t2, d1, d2, m, l, g = var('theta1 theta2 dtheta1 dtheta2 m l g')
+            sage: L = Lagrangian(m*l^2*(d1^2 + d2^2/2 + d1*d2*cos(t1 - t2))
+            ....:                + m*g*l*(2*cos(t1) + cos(t2)), [t1, t2])
+            sage: [(s.point(), s.stability(positive=[m, l, g]).verdict())
+            ....:  for s in stationary_motions(L)]
+            [({theta1: 0, theta2: 0}, 'stable'),
+             ({theta1: 0, theta2: pi}, 'unstable'),
+             ({theta1: pi, theta2: 0}, 'unstable'),
+             ({theta1: pi, theta2: pi}, 'unstable')]
+            sage: stationary_motions(L)[3].stability(positive=[m, l, g]).method()
+            'first approximation'
+        """
+        positive = self._positive(positive)
+        cases = []
+        signs = self._problem._signs
+        region = []
+        for sign in signs:
+            for alt in self.stability_region(positive, sign):
+                if alt not in region:
+                    region.append(alt)
+        existence = self.conditions()
+        if region:
+            cases.append(StabilityVerdict(
+                'stable', "the second variation of the Lyapunov function is definite "
+                "(Routh-Lyapunov)", method='Routh-Lyapunov', region=region))
+        lin = self.linear_system() if self.is_explicit() else None
+        if lin is not None:
+            asymptotic, unstable = _first_approximation(lin, positive)
+            for verdict, alts, why in (
+                    ('asymptotically stable', asymptotic,
+                     "all roots of the characteristic polynomial have negative real "
+                     "parts (Liénard-Chipart)"),
+                    ('unstable', unstable, "the characteristic polynomial has a root "
+                     "with positive real part (Lyapunov's theorem on the first "
+                     "approximation)")):
+                alts = [a for a in (simplify_conjunction(existence + alt, positive)
+                                    for alt in alts) if a is not None]
+                if alts:
+                    cases.append(StabilityVerdict(verdict, why, method='first approximation',
+                                                  region=alts))
+        for case in cases:
+            if any(set(map(str, alt)) <= set(map(str, existence)) for alt in case.region()):
+                return case
+        if not cases:
+            return StabilityVerdict('undecided', "neither the second variation nor the "
+                                    "first approximation decides (critical case)")
+        return StabilityVerdict('depends on the parameters', "see cases()", cases=cases)
 
     def check(self, equations):
         r"""
-        Verify that the solution annuls the right-hand sides ``equations``;
-        returns the list of residuals (all zero).
+        Verify that the solution annuls the right-hand sides ``equations``
+        (exactly, on the whole component); returns ``True`` or raises
+        :class:`AnalysisError`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: s = stationary_solutions([(x^2 + y^2)/2], [x, y])[0]
+            sage: s.check([y, -x])
+            True
+            sage: s.check([y + 1, -x])
+            Traceback (most recent call last):
+            ...
+            AnalysisError: stationary_solutions: {x: 0, y: 0} does not annul the right-hand side 0, y + 1
         """
-        res = [_simplify(SR(X).subs(self._point)) for X in equations]
-        if not all(r.is_zero() for r in res):
-            raise AnalysisError(f"{self._point} does not annul the right-hand "
-                                f"sides: residuals {res}", entry="stationary_solutions")
-        return res
+        for k, X in enumerate(equations):
+            if not normalize(self._at(X)).is_zero():
+                raise AnalysisError(f"{self.point()} does not annul the right-hand "
+                                    f"side {k}, {X}", entry="stationary_solutions")
+        return True
+
+
+def _first_approximation(lin, positive):
+    r"""Regions (alternatives) of asymptotic stability and of instability
+    from the characteristic polynomial of ``lin``."""
+    from .hurwitz import lienard_chipart_conditions
+    from .translation import Translation
+    lam = SR.var('lambda_')
+    p = lin.characteristic_polynomial(lam, positive=positive)
+    T = Translation([], [], extra=[p])
+    f = T.flat_ring()(T.fraction(p))
+    gen = T.flat_ring()(T.fraction(lam))
+    coefficients = [T.symbolic(f.coefficient({gen: k})) if k else T.symbolic(f.subs({gen: 0}))
+                    for k in range(f.degree(gen), -1, -1)]
+    zero_roots = 0
+    while len(coefficients) > 1 and coefficients[-1].is_zero():
+        coefficients.pop()
+        zero_roots += 1
+    a0 = coefficients[0]
+    even = all(c.is_zero() for c in coefficients[1::2])
+    tested = coefficients[0::2] if even else coefficients
+    unstable = []
+    for c in tested[1:]:
+        cond = positive_conditions(-a0 * c, positive)
+        if cond is not None and cond not in unstable:
+            unstable.append(cond)
+    asymptotic = []
+    if not zero_roots and not even:
+        reduced = sum(c * lam ** k for k, c in enumerate(reversed(coefficients)))
+        lc = lienard_chipart_conditions((a0 * reduced).expand(), lam, positive=positive)
+        cond = positive_conditions_all(lc, positive) if lc else []
+        if cond is not None:
+            asymptotic.append(cond)
+    return asymptotic, unstable
 
 
 class StationarySolutions(SageObject):
     r"""
-    The stationarity equations of `K = \sum \lambda_j V_j` and their
-    solutions (iterable). Created by :func:`stationary_solutions`.
+    The stationary solutions of a problem (iterable): created by
+    :func:`stationary_solutions` (conditional extrema of first integrals)
+    or :func:`stationary_motions` (a Lagrangian or Routh function at rest).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: x, y, a = var('x y a')
+        sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]); sols
+        3 stationary solutions of K = 1/2*a*y^2 + (x^2 + y^2)*lambda1 + 1/2*x^2
+        sage: TestSuite(sols).run(skip=['_test_pickling'])
     """
 
-    def __init__(self, integrals, variables, multipliers, equations, solve_for):
-        self._integrals = [SR(V) for V in integrals]
-        self._variables = [SR(x) for x in variables]
-        self._multipliers = multipliers
-        self._equations = equations
-        self._K = self._integrals[0] + sum(l * V for l, V in
-                                           zip(multipliers, self._integrals[1:]))
-        unknowns = list(self._variables) + list(multipliers) if solve_for is None \
-            else [SR(u) for u in solve_for]
-        self._solutions = []
-        eqs = self.stationarity_equations()
-        known = set().union(*(set(V.variables()) for V in self._integrals)) | set(unknowns)
-        sols = solve([e == 0 for e in eqs], *unknowns, solution_dict=True)
-        for sol in _rename_free_parameters(sols, known):
-            point = {x: sol.get(x, x) for x in self._variables}
-            mult = {l: sol[l] for l in multipliers if l in sol}
-            s = StationarySolution(self, point, mult)
-            if equations is not None:
-                s.check(equations)
-            self._solutions.append(s)
+    def __init__(self, function, hessian_variables, solved, multipliers, equations,
+                 constraint_integrals=(), kinetic=None, signs=('positive', 'negative'),
+                 linear=None, rhs=None, positive=(), description=None, shown=None):
+        self._function = SR(function)
+        self._hessian_variables = [SR(x) for x in hessian_variables]
+        self._solved = [SR(u) for u in solved]
+        self._multipliers = [SR(l) for l in multipliers]
+        self._equations = [SR(e) for e in equations]
+        self._constraint_integrals = [SR(V) for V in constraint_integrals]
+        self._kinetic = kinetic
+        self._signs = tuple(signs)
+        self._linear = linear
+        self._rhs = rhs
+        self._description = description
+        self._shown = shown
+        self._positive = list(positive)
+        counted = [u for u in self._solved if all(str(u) != str(l) for l in self._multipliers)]
+        extra = [self._function] + list(rhs or [])
+        self._set = solve_exactly(self._equations, self._solved, counted=counted,
+                                  positive=positive, extra=extra, transcendental=True)
+        self._solutions = [StationarySolution(self, s) for s in self._set]
+        if rhs is not None:
+            for s in self._solutions:
+                s.check(rhs)
+
+    def _solved_variables(self):
+        return [u for u in self._solved if all(str(u) != str(l) for l in self._multipliers)]
 
     def _repr_(self):
-        return (f"{len(self._solutions)} stationary solutions of K = {self._K}")
+        what = self._description or f"K = {self._function}"
+        if not self._solutions:
+            return ("No stationary solutions: the equations are inconsistent (for "
+                    "generic parameter values)")
+        n = len(self._solutions)
+        note = "" if self._set.is_complete() else \
+            " (transcendental equations: found by Maxima's solve, possibly not all)"
+        return f"{n} stationary solution{'s' if n != 1 else ''} of {what}{note}"
 
     def __iter__(self):
         return iter(self._solutions)
@@ -331,50 +687,106 @@ class StationarySolutions(SageObject):
     def __getitem__(self, i):
         return self._solutions[i]
 
-    def integrals(self):
-        r"""The integrals `V_0, \dots, V_k`.
+    def __eq__(self, other):
+        return isinstance(other, StationarySolutions) and \
+            str(self._equations) == str(other._equations) and \
+            str(self._solved) == str(other._solved)
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash((str(self._equations), str(self._solved)))
+
+    def is_complete(self):
+        r"""Whether the list is known to be complete (always, unless the
+        transcendental fallback was used).
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: sols.integrals()
-            [1/2*a*y^2 + 1/2*x^2, x^2 + y^2]
+            sage: x = var('x')
+            sage: stationary_solutions([x^2], [x]).is_complete()
+            True
         """
-        return list(self._integrals)
+        return self._set.is_complete()
+
+    def is_empty(self):
+        r"""Whether there is no stationary solution.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: stationary_solutions([x^2, x, x^3], [x], levels=[1, 2]).is_empty()
+            True
+        """
+        return not self._solutions
+
+    def equations(self):
+        r"""
+        The equations solved (expressions ``== 0``): the stationarity
+        equations and the prescribed levels; for stationary motions, the
+        equations of motion at rest.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, c = var('x y c')
+            sage: stationary_solutions([x^2 + y^2, x], [x, y], levels=[c]).equations()
+            [lambda1 + 2*x, 2*y, -c + x]
+        """
+        return list(self._shown if self._shown is not None else self._equations)
+
+    def integrals(self):
+        r"""The integrals `V_0, \dots, V_k` (``[]`` for stationary motions).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: stationary_solutions([x^2 + y^2, x], [x, y]).integrals()
+            [x^2 + y^2, x]
+        """
+        return [self._function.subs({l: 0 for l in self._multipliers})] * 0 + \
+            list(self._integrals) if hasattr(self, '_integrals') else []
 
     def variables(self):
-        r"""The phase variables `x`.
+        r"""The variables of the stationary set (without the multipliers).
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: sols.variables()
+            sage: x, y = var('x y')
+            sage: stationary_solutions([x^2 + y^2], [x, y]).variables()
             [x, y]
         """
-        return list(self._variables)
+        return self._solved_variables()
+
+    def multipliers(self):
+        r"""The multipliers `\lambda_1, \dots`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: stationary_solutions([x^2 + y^2, x], [x, y]).multipliers()
+            [lambda1]
+        """
+        return list(self._multipliers)
 
     def K(self):
-        r"""`K = V_0 + \sum_{j\ge1}\lambda_j V_j`.
+        r"""`K = V_0 + \sum_{j\ge1}\lambda_j V_j` (for stationary motions,
+        the amended potential `W`).
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: sols.K()
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]).K()
             1/2*a*y^2 + (x^2 + y^2)*lambda1 + 1/2*x^2
         """
-        return self._K
+        return self._function
 
     def stationarity_equations(self):
         r"""The expressions `\partial K/\partial x_i` (each ``== 0``).
@@ -383,13 +795,10 @@ class StationarySolutions(SageObject):
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: sols.stationarity_equations()
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]).stationarity_equations()
             [2*lambda1*x + x, a*y + 2*lambda1*y]
         """
-        return [self._K.diff(x).expand() for x in self._variables]
+        return [self._function.diff(x).expand() for x in self._hessian_variables]
 
     def hessian(self):
         r"""The Hessian matrix of `K` (symbolic).
@@ -398,22 +807,22 @@ class StationarySolutions(SageObject):
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
-            sage: s = sols[1]; s
-            Stationary solution {x: r2, y: 0}, lambda1 = -1/2 (family, degenerate Hessian: invariant manifold)
-            sage: sols.hessian()
+            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]).hessian()
             [2*lambda1 + 1             0]
             [            0 a + 2*lambda1]
         """
-        return matrix(SR, [[self._K.diff(x).diff(y) for y in self._variables]
-                           for x in self._variables])
+        v = self._hessian_variables
+        return matrix(SR, [[self._function.diff(x).diff(y) for y in v] for x in v])
+
+    def _linear_system(self, solution):
+        return None if self._linear is None else self._linear(solution)
 
 
 def stationary_solutions(integrals, variables, equations=None, multipliers=None,
-                         solve_for=None):
+                         levels=None, positive=(), solve_for=None):
     r"""
     Routh--Lyapunov: stationary solutions as conditional extrema of the
-    first integrals.
+    first integrals, computed exactly (see the module documentation).
 
     INPUT:
 
@@ -421,17 +830,40 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
       `K = V_0 + \lambda_1 V_1 + \dots + \lambda_k V_k`
     - ``variables`` -- the phase variables `x`
     - ``equations`` -- (optional) the right-hand sides `X(x)`; if given,
-      every integral is checked to be conserved and every solution to annul
-      `X` (:class:`AnalysisError` otherwise)
+      every integral is checked to be conserved, every solution to annul
+      `X`, and the first approximation is available for the stability
+      verdict
     - ``multipliers`` -- (optional) names or symbols for `\lambda_1, \dots`
       (default ``lambda1, lambda2, ...``)
-    - ``solve_for`` -- (optional) the unknowns to solve the stationarity
-      equations for (default: the variables and the multipliers)
+    - ``levels`` -- (optional) one entry per integral after the first: its
+      prescribed value `V_j = c_j`, or ``None`` (free)
+    - ``positive`` -- parameters declared positive (used in the conditions)
+    - ``solve_for`` -- (optional) the unknowns (default: the variables and
+      the multipliers)
 
     OUTPUT: a :class:`StationarySolutions`; iterate over it for the
     :class:`StationarySolution` objects
 
-    EXAMPLES: see the module documentation.
+    Progress is reported through Sage's ``verbose``.
+
+    EXAMPLES: see the module documentation. A conservative system whose
+    equilibria form a curve (one component of dimension 1) besides the
+    origin::
+
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: x, y = var('x y')
+        sage: sols = stationary_solutions([(x^2 + y^2 - 1)^2/4], [x, y])
+        sage: [(s.dimension(), s.point(), s.equations()) for s in sols]
+        [(0, {x: 0, y: 0}, []), (1, {x: x, y: y}, [x^2 + y^2 - 1])]
+
+    TESTS::
+
+        sage: stationary_solutions([exp(x) - x], [x])
+        1 stationary solution of K = -x + e^x (transcendental equations: found by Maxima's solve, possibly not all)
+        sage: stationary_solutions([x*cos(x)], [x])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_exactly: the equations are not algebraic in x (x occurs both inside and outside trigonometric functions) and Maxima's solve could not solve them: [-x*sin(x) + cos(x)]
     """
     integrals = [SR(V) for V in integrals]
     variables = [SR(x) for x in variables]
@@ -445,57 +877,124 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
             check_integral(V, variables, equations, j)
     if multipliers is None:
         multipliers = [SR.var('lambda%d' % j) for j in range(1, len(integrals))]
-    multipliers = [SR(l) if not isinstance(l, str) else SR.var(l) for l in multipliers]
-    return StationarySolutions(integrals, variables, multipliers, equations, solve_for)
+    multipliers = [SR.var(l) if isinstance(l, str) else SR(l) for l in multipliers]
+    if len(multipliers) != len(integrals) - 1:
+        raise AnalysisError(f"{len(multipliers)} multipliers for {len(integrals) - 1} "
+                            "integrals after the first", entry="stationary_solutions")
+    if levels is not None and len(levels) != len(integrals) - 1:
+        raise AnalysisError(f"levels has {len(levels)} entries; it needs one per integral "
+                            f"after the first ({len(integrals) - 1})",
+                            entry="stationary_solutions")
+    K = integrals[0] + sum(l * V for l, V in zip(multipliers, integrals[1:]))
+    system = [K.diff(x).expand() for x in variables]
+    for V, c in zip(integrals[1:], levels or []):
+        if c is not None:
+            system.append((V - SR(c)).expand())
+    unknowns = variables + multipliers if solve_for is None else [SR(u) for u in solve_for]
+    rhs = [SR(X) for X in equations] if equations is not None else None
+
+    def linear(s):
+        if rhs is None:
+            return None
+        J = matrix(SR, [[s._at(X.diff(x)) for x in variables] for X in rhs])
+        return LinearSystem(variables, J=J)
+
+    result = StationarySolutions(K, variables, unknowns, multipliers, system,
+                                 constraint_integrals=integrals[1:], linear=linear,
+                                 rhs=rhs, positive=positive)
+    result._integrals = integrals
+    return result
 
 
-def stationary_motions(routh, solve_for=None):
+def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     r"""
     Stationary motions of a system with cyclic coordinates: the positional
     velocities vanish and `\partial R/\partial q = 0` for the Routh
-    function `R` (cyclic momenta constant).
+    function `R` (cyclic momenta constant); for a Lagrangian, its
+    equilibria.
 
     INPUT:
 
-    - ``routh`` -- a :class:`~sage_dynsym.routh.RouthFunction` (any
-      Lagrangian object works: then these are its equilibria)
-    - ``solve_for`` -- (optional) unknowns to solve for, e.g. the cyclic
-      momenta when the equations are transcendental in the coordinates;
-      default: the positional coordinates
+    - ``routh_or_lagrangian`` -- a :class:`~sage_dynsym.routh.RouthFunction`
+      or a :class:`~sage_dynsym.lagrangian.Lagrangian`
+    - ``solve_for`` -- (optional) the unknowns, e.g. the cyclic momenta
+      (then the coordinates are parameters: a family of motions
+      parametrised by them); default: the positional coordinates
+    - ``positive`` -- parameters declared positive
 
-    OUTPUT: a pair ``(equations, solutions)``: the equations of motion at
-    rest, `-\partial R/\partial q_i` at `\dot q = 0` (each ``== 0``), and
-    the list of solution dicts
+    OUTPUT: a :class:`StationarySolutions` (the same kind of object as
+    :func:`stationary_solutions`); its ``equations()`` are the equations of
+    motion at rest. The stability of each solution follows from the amended
+    potential `W = -R|_{\dot q = 0}` (Routh's theorem: stable where `W` has
+    a nondegenerate minimum and the kinetic matrix is positive definite)
+    and from the first approximation.
 
-    EXAMPLES: the conical motions of the spherical pendulum
-    (Example 1 of the method)::
+    EXAMPLES: the conical motions of the spherical pendulum (Example 1 of
+    :doc:`/method`): the momentum is `p^2 = -g l^3 m^2\sin^4\theta/\cos\theta`,
+    real only where `\cos\theta < 0` (the bob below the suspension point;
+    Goldstein, *Classical Mechanics*, §3.11)::
 
         sage: from sage_dynsym import load
         sage: from sage_dynsym.analysis.stationary import stationary_motions
         sage: L = load('examples/spherical_pendulum.yaml').lagrangian()
         sage: psi, theta = L.coordinates()
         sage: R = L.routh([psi]); p = R.momenta()[0]
-        sage: eqs, sols = stationary_motions(R, solve_for=[p])
-        sage: eqs
+        sage: sols = stationary_motions(R, solve_for=[p], positive=var('m l g'))
+        sage: sols.equations()
         [-(g*l^3*m^2*sin(theta)^4 + p_psi^2*cos(theta))/(l^2*m*sin(theta)^3)]
-        sage: sols
-        [{p_psi: -l*m*sqrt(-g*l/cos(theta))*sin(theta)^2},
-         {p_psi: l*m*sqrt(-g*l/cos(theta))*sin(theta)^2}]
+        sage: [(s.point(), s.conditions()) for s in sols]
+        [({p_psi: l*m*sqrt(-g*l/cos(theta))*sin(theta)^2},
+          [cos(theta) < 0, sin(theta) != 0]),
+         ({p_psi: -l*m*sqrt(-g*l/cos(theta))*sin(theta)^2},
+          [cos(theta) < 0, sin(theta) != 0])]
+        sage: sols[0].stability(positive=var('m l g')).verdict()
+        'stable'
     """
-    q = routh.coordinates()
-    rest = {v: 0 for v in list(routh.velocities()) + list(routh.accelerations())}
-    # the equations of motion at rest: -dR/dq (plus forces depending on q only)
-    eqs = [_simplify(SR(E).subs(rest)) for E in routh.lagrange_equations()]
+    from ..lagrangian import Lagrangian
+    system = routh_or_lagrangian
+    if not isinstance(system, Lagrangian):
+        raise AnalysisError(f"expected a Lagrangian or Routh function, got "
+                            f"{type(system).__name__}", entry="stationary_motions")
+    q = list(system.coordinates())
+    rest = {v: 0 for v in list(system.velocities()) + list(system.accelerations())}
+    E = [SR(e) for e in system.lagrange_equations()]
+    at_rest = [normalize(e.subs(rest)) for e in E]
     unknowns = list(q) if solve_for is None else [SR(u) for u in solve_for]
-    sols = solve([e == 0 for e in eqs], *unknowns, solution_dict=True)
-    return eqs, sols
+    W = -SR(system.expr()).subs({v: 0 for v in system.velocities()})
+    A = system.mass_matrix() if hasattr(system, 'mass_matrix') else None
+    kinetic = matrix(SR, A) if A is not None else None
+
+    def linear(s):
+        dq, ddq = system.velocities(), system.accelerations()
+        E0 = [e for e in E]
+        def mat(xs, at_rest_first=True):
+            return matrix(SR, [[s._at(e.diff(x).subs(rest)) for x in xs] for e in E0])
+        return LinearSystem(q, M=mat(ddq), S=mat(dq), W=mat(q))
+
+    what = "equations at rest of " + ("the Routh function" if hasattr(system, 'momenta')
+                                      else "the Lagrangian")
+    shown = [normalize(e, angles=q, factor=True) for e in at_rest]
+    return StationarySolutions(W, q, unknowns, [], at_rest, kinetic=kinetic,
+                               signs=('positive',), linear=linear, positive=positive,
+                               description=what, shown=shown)
+
+
+def _solve_linear(expr, v, what):
+    r"""``v`` from ``expr == 0`` when ``expr`` is linear in ``v``."""
+    expr = SR(expr)
+    a = expr.diff(v)
+    if a.has(v) or a.is_zero():
+        raise AnalysisError(f"cannot solve {expr} == 0 for {v}: it is not linear in it",
+                            entry=what)
+    return normalize(-(expr - a * v).subs({v: 0}) / a) if False else \
+        normalize(-expr.subs({v: 0}) / a)
 
 
 class ModifiedRouthLyapunov(SageObject):
     r"""
     The modified Routh--Lyapunov method for families of invariant manifolds
     of a system with one positional coordinate `q` and a cyclic momentum
-    `c` (Example 3 of the method).
+    `c` (Example 3 of :doc:`/method`).
 
     The extended Routh function `\tilde R = R + c\, f(q)\,\dot q` (unknown
     `f`) has the same equations of motion as `R`. Its stationarity
@@ -514,7 +1013,15 @@ class ModifiedRouthLyapunov(SageObject):
     - ``momentum`` -- (default: the first cyclic momentum) the constant `c`
     - ``f`` -- (default: ``function('f')``) the unknown function
 
-    EXAMPLES: see :mod:`sage_dynsym.analysis.tutorial` (Example 3).
+    EXAMPLES: see :mod:`sage_dynsym.analysis.tutorial` (Example 3). ::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+        sage: r, phi, dr, dphi = var('r phi dr dphi')
+        sage: MR = ModifiedRouthLyapunov(Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).routh([phi]))
+        sage: MR.velocity_on_manifold()
+        -p_phi*f(r)
+        sage: TestSuite(MR).run(skip=['_test_pickling'])
     """
 
     def __init__(self, routh, momentum=None, f=None):
@@ -529,62 +1036,116 @@ class ModifiedRouthLyapunov(SageObject):
         self._f = f if f is not None else symbolic_function('f')
         self._Rt = SR(routh.expr()) + self._c * self._f(self._q) * self._dq
 
+    def _repr_(self):
+        return f"Modified Routh-Lyapunov method for {self._Rt}"
+
     def extended_function(self):
-        r"""`\tilde R = R + c f(q)\dot q`."""
+        r"""`\tilde R = R + c f(q)\dot q`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
+            sage: ModifiedRouthLyapunov(L.routh([phi])).extended_function()
+            dr*p_phi*f(r) + 1/2*dr^2 - 1/2*p_phi^2/r^2 + 1/r
+        """
         return self._Rt
 
     def stationarity_equations(self):
         r"""
         `[\partial\tilde R/\partial q, \partial\tilde R/\partial\dot q]`
         (each ``== 0``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
+            sage: ModifiedRouthLyapunov(L.routh([phi])).stationarity_equations()
+            [dr*p_phi*diff(f(r), r) + p_phi^2/r^3 - 1/r^2, p_phi*f(r) + dr]
         """
         return [self._Rt.diff(self._q), self._Rt.diff(self._dq)]
 
     def velocity_on_manifold(self):
-        r"""`\dot q` from `\partial\tilde R/\partial \dot q = 0`, in terms of `f`."""
-        dRq, dRdq = self.stationarity_equations()
-        sol = solve(dRdq == 0, self._dq, solution_dict=True)
-        if len(sol) != 1:
-            raise AnalysisError("cannot solve the velocity equation "
-                                f"{dRdq} == 0 uniquely", entry="ModifiedRouthLyapunov")
-        return sol[0][self._dq]
+        r"""`\dot q` from `\partial\tilde R/\partial \dot q = 0`, in terms of `f`.
+
+        EXAMPLES: see the class documentation.
+        """
+        return _solve_linear(self.stationarity_equations()[1], self._dq,
+                             "ModifiedRouthLyapunov")
 
     def degeneracy_condition(self):
         r"""
         The ODE for `f`: the equation `\partial\tilde R/\partial q = 0` with
         `\dot q` from :meth:`velocity_on_manifold` must hold for every `q`.
         Returned solved for the derivative, ``diff(f(q), q) == ...``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
+            sage: ModifiedRouthLyapunov(L.routh([phi])).degeneracy_condition()
+            diff(f(r), r) == (p_phi^2 - r)/(p_phi^2*r^3*f(r))
         """
         dRq = self.stationarity_equations()[0]
         e = dRq.subs({self._dq: self.velocity_on_manifold()})
         fq = self._f(self._q)
         fp = fq.diff(self._q)
-        tmp = SR.var('fprime_')
-        sol = solve(e.subs({fp: tmp}) == 0, tmp, solution_dict=True)
-        if len(sol) != 1:
-            return _simplify(e) == 0
-        return fp == _simplify(sol[0][tmp])
+        tmp = SR.symbol('fprime_')
+        e = e.subs({fp: tmp})
+        try:
+            return fp == _solve_linear(e, tmp, "ModifiedRouthLyapunov").subs({tmp: fp})
+        except AnalysisError:
+            return normalize(e.subs({tmp: fp})) == 0
 
     def solve_degeneracy(self):
         r"""
         The general solution of the degeneracy ODE (``desolve``), as a list
         of explicit solutions ``f(q) == ...`` (with the integration constant
-        ``_C``), or the implicit one if it cannot be solved for `f`.
+        ``_C``; the implicit solution is solved for `f` exactly), or the
+        implicit one if it cannot be solved for `f`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
+            sage: sols = ModifiedRouthLyapunov(L.routh([phi])).solve_degeneracy(); len(sols)
+            2
         """
         from sage.calculus.desolvers import desolve
         fq = self._f(self._q)
         sol = desolve(self.degeneracy_condition(), fq, ivar=self._q)
-        explicit = solve(sol, fq)
-        return [fq == _simplify(e.rhs()) for e in explicit] if explicit else [sol]
+        try:
+            found = solve_exactly([sol], [fq])
+        except AnalysisError:
+            return [sol]
+        explicit = [s for s in found if s.is_explicit() and s.dimension() == 0]
+        return [fq == normalize(s.values()[fq]) for s in explicit] if explicit else [sol]
 
     def invariant_manifolds(self):
         r"""
         The families of IM in explicit form: equations
         ``dq == phi(q, _C)`` in the phase plane of the Routh system.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
+            sage: [im.lhs() for im in ModifiedRouthLyapunov(L.routh([phi])).invariant_manifolds()]
+            [dr, dr]
         """
         v = self.velocity_on_manifold()
         fq = self._f(self._q)
-        return [self._dq == _simplify(v.subs({fq: s.rhs()})) for s in self.solve_degeneracy()]
+        return [self._dq == normalize(v.subs({fq: s.rhs()})) for s in self.solve_degeneracy()]
 
     def lifted_manifolds(self, lagrangian=None):
         r"""
@@ -596,17 +1157,25 @@ class ModifiedRouthLyapunov(SageObject):
 
         - ``lagrangian`` -- (default: the Lagrangian the Routh function was
           made from) the full Lagrangian
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
+            sage: ModifiedRouthLyapunov(L.routh([phi])).lifted_manifolds()[0][1]
+            dphi == p_phi/r^2
         """
         L = lagrangian if lagrangian is not None else self._routh.lagrangian()
-        lifted = []
         cyc = self._routh.cyclic_coordinates()
         momenta = self._routh.momenta()
         integrals = []
         for qc, c in zip(cyc, momenta):
             dqc = velocity(qc)
-            eq = SR(L.expr()).diff(dqc) == c
-            s = solve(eq, dqc, solution_dict=True)
-            integrals.append(dqc == _simplify(s[0][dqc]) if len(s) == 1 else eq)
-        for im in self.invariant_manifolds():
-            lifted.append([im] + integrals)
-        return lifted
+            eq = SR(L.expr()).diff(dqc) - c
+            try:
+                integrals.append(dqc == _solve_linear(eq, dqc, "ModifiedRouthLyapunov"))
+            except AnalysisError:
+                integrals.append(eq == 0)
+        return [[im] + integrals for im in self.invariant_manifolds()]

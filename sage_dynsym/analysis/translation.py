@@ -427,6 +427,20 @@ class Translation:
         u = self._unknowns[i]
         return {'x': u, 'c': cos(u), 's': sin(u)}[kind]
 
+    def is_trigonometric(self, k):
+        r"""Whether the ``k``-th ring variable is the cosine or sine of an
+        angle.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.translation import Translation
+            sage: x, q = var('x q')
+            sage: T = Translation([x - cos(q)], [x, q])
+            sage: [T.is_trigonometric(k) for k in range(3)]
+            [True, True, False]
+        """
+        return self._gens[k][1] in ('c', 's')
+
     def generators_of(self, unknown):
         r"""The ring variables of one unknown: ``(x,)`` or ``(c, s)``.
 

@@ -20,10 +20,16 @@ angle `\psi` (equation (10))::
 
 Its stationary motions (`\dot\theta = 0`, `\partial R/\partial\theta = 0`)
 are the conical motions, `p^2 = -g l^3 m^2 \sin^4\theta/\cos\theta`
-(`\theta > \pi/2` here: `\theta` is measured from the upward vertical)::
+(`\theta > \pi/2` here: `\theta` is measured from the upward vertical),
+all of them stable (Routh's theorem: the amended potential has a minimum)::
 
-    sage: eqs, sols = stationary_motions(R, solve_for=[p]); eqs
+    sage: m, l, g = var('m l g')
+    sage: sols = stationary_motions(R, solve_for=[p], positive=[m, l, g])
+    sage: sols.equations()
     [-(g*l^3*m^2*sin(theta)^4 + p_psi^2*cos(theta))/(l^2*m*sin(theta)^3)]
+    sage: for s in sols: print(s.point(), s.conditions(), s.stability().verdict())
+    {p_psi: l*m*sqrt(-g*l/cos(theta))*sin(theta)^2} [cos(theta) < 0, sin(theta) != 0] stable
+    {p_psi: -l*m*sqrt(-g*l/cos(theta))*sin(theta)^2} [cos(theta) < 0, sin(theta) != 0] stable
 
 The modified Routh--Lyapunov method: the extended Routh function
 `\tilde R = R + p f(\theta)\dot\theta` and its stationarity equations
@@ -47,18 +53,18 @@ the first holds for every `\theta` -- the degeneracy condition, an ODE for
     diff(f(theta), theta) == (g*l^3*m^2*sin(theta)^4 + p_psi^2*cos(theta))/(p_psi^2*f(theta)*sin(theta)^3)
 
 Its general solution (Maxima's ``ode2`` through ``desolve``; ``_C`` is the
-constant of integration)::
+constant of integration), solved for `f` exactly -- two branches::
 
     sage: MR.solve_degeneracy()
-    [f(theta) == -sqrt(-(2*(g*l^3*m^2*cos(theta) - _C)*sin(theta)^2 + p_psi^2)/sin(theta)^2)/p_psi,
-     f(theta) == sqrt(-(2*(g*l^3*m^2*cos(theta) - _C)*sin(theta)^2 + p_psi^2)/sin(theta)^2)/p_psi]
+    [f(theta) == sqrt(-(2*g*l^3*m^2*cos(theta)^3 - 2*g*l^3*m^2*cos(theta) - 2*_C*cos(theta)^2 - p_psi^2 + 2*_C)/((cos(theta) + 1)*(cos(theta) - 1)))/p_psi,
+     f(theta) == -sqrt(-(2*g*l^3*m^2*cos(theta)^3 - 2*g*l^3*m^2*cos(theta) - 2*_C*cos(theta)^2 - p_psi^2 + 2*_C)/((cos(theta) + 1)*(cos(theta) - 1)))/p_psi]
 
 The families of invariant manifolds in explicit form, in the phase plane
 `(\theta, \dot\theta)` of the Routh system::
 
     sage: ims = MR.invariant_manifolds(); ims
-    [dtheta == sqrt(-(2*(g*l^3*m^2*cos(theta) - _C)*sin(theta)^2 + p_psi^2)/sin(theta)^2)/(l^2*m),
-     dtheta == -sqrt(-(2*(g*l^3*m^2*cos(theta) - _C)*sin(theta)^2 + p_psi^2)/sin(theta)^2)/(l^2*m)]
+    [dtheta == -sqrt(-(2*g*l^3*m^2*cos(theta)^3 - 2*g*l^3*m^2*cos(theta) - 2*_C*cos(theta)^2 - p_psi^2 + 2*_C)/((cos(theta) + 1)*(cos(theta) - 1)))/(l^2*m),
+     dtheta == sqrt(-(2*g*l^3*m^2*cos(theta)^3 - 2*g*l^3*m^2*cos(theta) - 2*_C*cos(theta)^2 - p_psi^2 + 2*_C)/((cos(theta) + 1)*(cos(theta) - 1)))/(l^2*m)]
 
 Each is a level set of the energy integral: with `\dot\theta` from an IM,
 `(m l^2\dot\theta)^2 + p^2/\sin^2\theta + 2 m^2 g l^3\cos\theta` is the
@@ -73,7 +79,7 @@ Lifted to the phase space of (9) with the cyclic integral
 `m l^2\sin^2\theta\,\dot\psi = p`::
 
     sage: MR.lifted_manifolds()[0]
-    [dtheta == sqrt(-(2*(g*l^3*m^2*cos(theta) - _C)*sin(theta)^2 + p_psi^2)/sin(theta)^2)/(l^2*m),
+    [dtheta == -sqrt(-(2*g*l^3*m^2*cos(theta)^3 - 2*g*l^3*m^2*cos(theta) - 2*_C*cos(theta)^2 - p_psi^2 + 2*_C)/((cos(theta) + 1)*(cos(theta) - 1)))/(l^2*m),
      dpsi == p_psi/(l^2*m*sin(theta)^2)]
 
 Example 4: equilibria of the nonlinear circuit and their stability
@@ -190,8 +196,13 @@ others have a degree of instability 1 or 2 (Kelvin--Chetaev)::
     ....:                inertia=diagonal_matrix([m2*l2^2, m2*l2^2, 0]))
     sage: dp = MechanicalSystem([b1, b2], [th1, th2], parameters=[m1, m2, l1, l2, g],
     ....:                       force_function=UniformGravity([0, 0, -g])).lagrangian()
-    sage: stationary_motions(dp)[0]
-    [(g*l1*m1 + g*l1*m2)*sin(theta1), g*l2*m2*sin(theta2)]
+    sage: eq = stationary_motions(dp, positive=[m1, m2, l1, l2, g]); eq.equations()
+    [g*l1*(m1 + m2)*sin(theta1), g*l2*m2*sin(theta2)]
+    sage: for s in eq: print(s.point(), s.stability().verdict(), s.stability().method())
+    {theta1: 0, theta2: 0} stable Routh-Lyapunov
+    {theta1: 0, theta2: pi} unstable first approximation
+    {theta1: pi, theta2: 0} unstable first approximation
+    {theta1: pi, theta2: pi} unstable first approximation
     sage: for q0 in [(0, 0), (0, pi), (pi, 0), (pi, pi)]:
     ....:     lin = linearize(dp, {th1: q0[0], th2: q0[1]})
     ....:     print(q0, lin.kelvin_chetaev(positive=[m1, m2, l1, l2, g]).verdict())
