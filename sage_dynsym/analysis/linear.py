@@ -56,16 +56,46 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ._polynomials import parameter_ring, to_ring
+from .solving import normalize
 from .translation import Translation
 
 
 def _at(expr, point):
-    return SR(expr).subs(point)
+    try:
+        return SR(expr).subs(point)
+    except (ValueError, ZeroDivisionError, RuntimeError) as err:
+        if not isinstance(err, ZeroDivisionError) and 'division by zero' not in str(err):
+            raise
+        raise _singularity(expr, point) from None
+
+
+def _shown(point):
+    return {k: point[k] for k in point if not str(k).startswith('dd')
+            and not (str(k).startswith('d') and SR(point[k]).is_zero())}
+
+
+def _singularity(expr, point, what="a denominator of the equations vanishes"):
+    r"""The error for a point where the coordinates are singular: names the
+    coordinates whose value alone makes ``expr`` singular."""
+    culprits = []
+    for k, v in point.items():
+        try:
+            e = SR(expr).subs({k: v})
+            if what != "a denominator of the equations vanishes" and normalize(e).is_zero():
+                culprits.append(k)
+        except (ValueError, ZeroDivisionError, RuntimeError):
+            culprits.append(k)
+    names = ', '.join(f"{k} = {point[k]}" for k in culprits) or str(_shown(point))
+    return AnalysisError(
+        f"the point {_shown(point)} is a singularity of the coordinates: "
+        f"{what} at {names} (the chart degenerates there, as Euler "
+        "angles do at theta = 0); linearize in a regular chart instead (e.g. "
+        "other angles for the axis)", entry="linearize")
 
 
 def _is_zero(expr):
     expr = SR(expr)
-    if expr.is_zero():
+    if expr.is_zero() or normalize(expr).is_zero():
         return True
     try:
         return bool(expr.simplify_full().is_zero())
@@ -84,9 +114,7 @@ def _tidy(expr):
 def _check_equilibrium(values, point):
     for i, v in enumerate(values):
         if not _is_zero(v):
-            shown = {k: point[k] for k in point if not str(k).startswith('dd')
-                     and not (str(k).startswith('d') and SR(point[k]).is_zero())}
-            raise AnalysisError(f"the point {shown} is not an equilibrium: "
+            raise AnalysisError(f"the point {_shown(point)} is not an equilibrium: "
                                 f"equation {i} gives {_tidy(v)} != 0",
                                 entry="linearize")
 
@@ -613,6 +641,22 @@ def linearize(system, at, variables=None, lhs_matrix=None):
         Traceback (most recent call last):
         ...
         AnalysisError: linearize: no value given for y (the point must give every variable)
+
+    A coordinate singularity is named (a heavy top in Euler angles, whose
+    chart degenerates at `\theta = 0`)::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: psi, th, phi, dpsi, dth, dphi, A, C = var('psi theta phi dpsi dtheta dphi A C')
+        sage: L = Lagrangian(A/2*(dth^2 + sin(th)^2*dpsi^2) + C/2*(dphi + cos(th)*dpsi)^2,
+        ....:                [psi, th, phi])
+        sage: linearize(L, {psi: 0, th: 0, phi: 0})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: the point {psi: 0, theta: 0, phi: 0} is a singularity of the coordinates: the kinetic matrix is singular at theta = 0 (the chart degenerates there, as Euler angles do at theta = 0); linearize in a regular chart instead (e.g. other angles for the axis)
+        sage: linearize(L.routh([psi, phi]), {th: 0})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: the point {theta: 0} is a singularity of the coordinates: a denominator of the equations vanishes at theta = 0 (the chart degenerates there, as Euler angles do at theta = 0); linearize in a regular chart instead (e.g. other angles for the axis)
     """
     from ..lagrangian import Lagrangian
     from ..hamiltonian import Hamiltonian
@@ -677,4 +721,8 @@ def _linearize_lagrangian(L, at):
     E = [SR(e) for e in L.lagrange_equations()]
     _check_equilibrium([_at(e, point) for e in E], point)
     mat = lambda xs: matrix(SR, [[_tidy(_at(e.diff(x), point)) for x in xs] for e in E])
-    return LinearSystem(q, M=mat(ddq), S=mat(dq), W=mat(q))
+    M = mat(ddq)
+    if _is_zero(_fraction_free_det(M)):
+        kinetic = matrix(SR, [[e.diff(x) for x in ddq] for e in E]).det()
+        raise _singularity(kinetic, point, what="the kinetic matrix is singular")
+    return LinearSystem(q, M=M, S=mat(dq), W=mat(q))

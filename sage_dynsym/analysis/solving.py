@@ -89,6 +89,14 @@ from .conditions import positive_conditions, nonzero_conditions, conjunction
 from .translation import Translation, NotAlgebraic
 
 
+#: Implicit components are tested for real points by quantifier elimination
+#: only up to this many variables (parameters and unknowns together) ...
+REALITY_QE_VARIABLES = 5
+
+#: ... and for at most this many seconds.
+REALITY_QE_TIMEOUT = 10
+
+
 def normalize(expr, angles=(), factor=False):
     r"""
     A canonical form of a rational expression (rational-function
@@ -834,11 +842,15 @@ def _implicit(T, prime, counted, positive):
     r"""A zero-dimensional component that is not written explicitly; its
     reality is decided by quantifier elimination where possible."""
     from .quantifier_elimination import exists_real_solution
-    try:
-        conditions = exists_real_solution(T, prime, positive)
-        known = True
-    except AnalysisError:
-        conditions, known = [], False
+    conditions, known = [], False
+    # cylindrical algebraic decomposition is doubly exponential in the
+    # number of variables: only small problems are tried, briefly
+    if len(T.parameters()) + prime.ring().ngens() <= REALITY_QE_VARIABLES:
+        try:
+            conditions = exists_real_solution(T, prime, positive, timeout=REALITY_QE_TIMEOUT)
+            known = True
+        except AnalysisError:
+            pass
     if conditions is None:
         return []
     return AlgebraicSolution(T, prime, [], counted, {}, {}, list(prime.gens()), conditions,
