@@ -16,6 +16,30 @@ EXAMPLES::
     sage: isinstance(err, DynSymError), isinstance(err, ValueError)
     (True, True)
 """
+import reprlib
+
+_BRIEF = reprlib.Repr()
+_BRIEF.maxlevel, _BRIEF.maxstring, _BRIEF.maxother = 3, 60, 60
+_BRIEF.maxlist = _BRIEF.maxdict = _BRIEF.maxtuple = _BRIEF.maxset = 6
+
+
+def brief(value):
+    r"""
+    A short ``repr`` of ``value`` for error messages: long texts, deep or
+    long lists and mappings (such as YAML alias bombs) are abbreviated with
+    ``...``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import brief
+        sage: brief([1, 2, 3]), brief({'a': [[[[1]]]]})
+        ('[1, 2, 3]', "{'a': [[[...]]]}")
+        sage: brief(list(range(100)))
+        '[0, 1, 2, 3, 4, 5, ...]'
+        sage: len(brief("x" * 10**6)) < 100
+        True
+    """
+    return _BRIEF.repr(value)
 
 
 class DynSymError(Exception):
@@ -131,3 +155,49 @@ class AnalysisError(DynSymError, ValueError):
         sage: issubclass(AnalysisError, ValueError)
         True
     """
+
+
+class BudgetError(DynSymError):
+    r"""
+    A computation whose estimated size exceeds its budget (a number of
+    polynomial terms): raised *before* the expensive step, so nothing is
+    lost but the result of that step.
+
+    INPUT: as for :class:`DynSymError`, and
+
+    - ``estimate`` -- the estimated size
+    - ``budget`` -- the budget it exceeds
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import BudgetError
+        sage: err = BudgetError("the characteristic polynomial", estimate=10**9, budget=10**5)
+        sage: print(err)
+        the characteristic polynomial: about 1e+09 polynomial terms, over the budget of 100000
+        sage: err.estimate, err.budget
+        (1000000000, 100000)
+    """
+
+    def __init__(self, message, entry=None, source=None, estimate=None, budget=None):
+        self.estimate, self.budget = estimate, budget
+        if estimate is not None and not message.endswith(f"budget of {budget}"):
+            message = (f"{message}: about {float(estimate):.3g} polynomial terms, over the "
+                       f"budget of {budget}")
+        super().__init__(message, entry=entry, source=source)
+
+    def with_context(self, entry=None, source=None):
+        r"""
+        As :meth:`DynSymError.with_context`, keeping the estimate.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.errors import BudgetError
+            sage: e = BudgetError("expansion", estimate=5, budget=2).with_context(source='f.yaml')
+            sage: print(e); e.estimate
+            f.yaml: expansion: about 5 polynomial terms, over the budget of 2
+            5
+        """
+        if entry and self.entry:
+            entry = f"{entry}.{self.entry}"
+        return type(self)(self.message, entry=entry or self.entry, source=source or self.source,
+                          estimate=self.estimate, budget=self.budget)
