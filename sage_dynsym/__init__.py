@@ -22,5 +22,7 @@ from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLy
                        linearize, LinearSystem, hurwitz_matrix, hurwitz_determinants,
                        hurwitz_conditions, lienard_chipart_conditions,
                        real_negative_roots_conditions, conservative_stability_conditions,
-                       sylvester_conditions, restrict_to_subspace, simultaneous_reduction,
-                       kelvin_chetaev, StabilityVerdict, equilibrium_family)
+                       sylvester_conditions, definiteness_conditions, restrict_to_subspace,
+                       simultaneous_reduction, kelvin_chetaev, StabilityVerdict,
+                       equilibrium_family, StationarySolution, StationarySolutions,
+                       solve_exactly, exists)

@@ -69,21 +69,57 @@ def _mechanical(system, lines):
 
 
 def _stationary(L, cyclic, lines):
+    r"""The stationary motions (Routh function at rest, solved for the cyclic
+    momenta) or equilibria, each with its existence conditions and a
+    stability verdict (Routh--Lyapunov, then first approximation)."""
     from .analysis import stationary_motions
     reduced = L.routh(cyclic) if cyclic and len(cyclic) < len(L.coordinates()) else L
+    routh = reduced is not L
     what = ("Stationary motions (Routh function at rest, cyclic momenta constant)"
-            if reduced is not L else "Equilibria (equations at rest)")
+            if routh else "Equilibria (equations at rest)")
+    positive = getattr(L, 'positive_parameters', lambda: [])()
     try:
-        unknowns = reduced.momenta() if reduced is not L else None
-        equations, solutions = stationary_motions(reduced, solve_for=unknowns)
+        solutions = stationary_motions(reduced, solve_for=reduced.momenta() if routh else None,
+                                       positive=positive)
     except DynSymError as err:
         lines.append(f"{what}: not available ({err})")
         return
     lines.append(f"{what}:")
-    for e in equations:
+    for e in solutions.equations():
         _formula(lines, "0 = ", e)
-    for solution in solutions:
-        lines.append("  solution: " + ", ".join(f"{k} = {v}" for k, v in solution.items()))
+    if solutions.is_empty():
+        lines.append("  no real solutions (for generic parameter values)")
+    if not solutions.is_complete():
+        lines.append("  (transcendental equations: solutions found by Maxima's solve, "
+                     "possibly not all)")
+    for k, s in enumerate(solutions, 1):
+        values = ", ".join(f"{v} = {e}" for v, e in s.point().items() if str(v) != str(e))
+        kind = "isolated" if s.dimension() == 0 else f"{s.dimension()}-parameter family"
+        if not s.is_explicit():
+            kind += ", implicit"
+        lines.append(f"  solution {k} ({kind}): {values or 'given by its equations'}")
+        for e in s.equations():
+            _formula(lines, "0 = ", e, indent="    ")
+        try:
+            conditions = s.conditions()
+            if conditions:
+                lines.append("    exists if: " + ", ".join(map(str, conditions)))
+            verdict = s.stability()
+        except DynSymError as err:
+            lines.append(f"    stability: not decided ({err})")
+            continue
+        _verdict(verdict, lines)
+
+
+def _verdict(verdict, lines):
+    if verdict.verdict() != 'depends on the parameters':
+        method = f" ({verdict.method()})" if verdict.method() else ""
+        lines.append(f"    stability: {verdict.verdict()}{method}: {verdict.reason()}")
+        return
+    lines.append("    stability depends on the parameters:")
+    for v in verdict.cases():
+        where = " or ".join("[" + ", ".join(map(str, alt)) + "]" for alt in v.region())
+        lines.append(f"      {v.verdict()} ({v.method()}) where {where}")
 
 
 def _linear_circuit_stability(circuit, L, lines):

@@ -13,8 +13,10 @@ from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
                       conservative_stability_conditions, simplify_conditions)
 from .linear import LinearSystem, linearize
-from .quadratic_forms import (sylvester_conditions, form_matrix, restrict_to_subspace,
-                              simultaneous_reduction)
+from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
+                              restrict_to_subspace, simultaneous_reduction)
+from .solving import solve_exactly, normalize
+from .quantifier_elimination import exists
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, ModifiedRouthLyapunov)

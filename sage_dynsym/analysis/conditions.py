@@ -36,6 +36,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from .hurwitz import _reduce, _is_constant, _constant, FACTOR_LIMIT
+from ._polynomials import positive_polynomial
 from .translation import Translation
 
 
@@ -85,11 +86,12 @@ def positive_conditions(expr, positive=()):
     return positive_conditions_all([expr], positive)
 
 
-def positive_conditions_all(expressions, positive=()):
+def positive_conditions_all(expressions, positive=(), nonzero=()):
     r"""
-    The conjunction of ``e > 0`` for every ``e`` in ``expressions``:
-    simplified relationals, ``[]`` if they always hold, ``None`` if they
-    cannot all hold. Conditions implied by others are dropped.
+    The conjunction of ``e > 0`` for every ``e`` in ``expressions`` (and of
+    ``e != 0`` for every ``e`` in ``nonzero``): simplified relationals,
+    ``[]`` if they always hold, ``None`` if they cannot all hold.
+    Conditions implied by others are dropped.
 
     EXAMPLES::
 
@@ -100,22 +102,34 @@ def positive_conditions_all(expressions, positive=()):
         sage: positive_conditions_all([a, -a^2 - 1]) is None
         True
     """
-    if not expressions:
+    if not expressions and not nonzero:
         return []
-    T, fractions = _translate(expressions)
+    T, fractions = _translate(list(expressions) + list(nonzero))
+    required = fractions[len(expressions):]
+    fractions = fractions[:len(expressions)]
     polys = [f.numerator() * f.denominator() for f in fractions]
     flat = T.flat_ring()
     if flat is None:
-        return [] if all(QQ(p) > 0 for p in polys) else None
+        return [] if all(QQ(p) > 0 for p in polys) and all(f != 0 for f in required) \
+            else None
     names = T.positive_names(positive)
     odd, nonzero = [], []
+    for f in required:
+        num = flat(f.numerator())
+        if num == 0:
+            return None
+        if not _is_constant(num):
+            for g, _ in num.factor():
+                g = g if g.lc() > 0 else -g
+                if not positive_polynomial(g, names) and all(g != h for h in nonzero):
+                    nonzero.append(g)
     for p in map(flat, polys):
         part, even = _split_even_factors(p, names)
         odd.append(part)
         for g in even:
             if all(g != h for h in nonzero):
                 nonzero.append(g)
-    entries = _reduce(odd, names)
+    entries = _reduce(odd, names) if odd else []
     if len(entries) == 1 and len(entries[0]) == 1 and _is_constant(entries[0][0]):
         if _constant(entries[0][0]) <= 0:
             return None
@@ -131,59 +145,57 @@ def _propagate_signs(entries, nonzero, names):
     r"""
     Simplify a conjunction of conditions ``product > 0`` (``entries`` from
     :func:`~sage_dynsym.analysis.hurwitz._reduce`) with the signs that
-    single-factor conditions fix: in ``a < 0, a*b > 0`` the second becomes
-    ``b < 0``; a factor that is a sum of even powers with positive
+    other conditions fix: in ``a < 0, a*b > 0`` the second becomes
+    ``b < 0`` (likewise for a product of several factors whose sign is
+    known); a factor that is a sum of even powers with positive
     coefficients is positive once one of its terms is known nonzero.
-    Returns a list of ``(sign, factors)``, or ``None`` if impossible.
+    Returns a list of ``(sign, factors)``, or ``None`` if impossible; the
+    factors of even multiplicity in ``nonzero`` that occur in a strict
+    condition are removed from it (they are nonzero anyway).
     """
-    from ._polynomials import positive_polynomial
     work = []
     for entry in entries:
-        p = prod(entry)
-        F = p.factor()
-        work.append([QQ(F.unit()).sign(), [g if g.lc() > 0 else -g for g, _ in F],
-                     ])
-        if any(g.lc() < 0 for g, _ in F):
-            work[-1][0] *= (-1) ** sum(1 for g, _ in F if g.lc() < 0)
-    known = {}
+        F = prod(entry).factor()
+        sign = QQ(F.unit()).sign()
+        factors = []
+        for g, _ in F:
+            if g.lc() < 0:
+                g, sign = -g, -sign
+            factors.append(g)
+        work.append([sign, factors])
     changed = True
     while changed:
         changed = False
+        known = [(w[0], set(map(str, w[1]))) for w in work if w[1]]
+        in_conditions = {str(g) for w in work for g in w[1]}
+        nonzero_vars = {str(g) for g in list(nonzero) if g.is_gen()} | \
+            {str(g) for w in work for g in w[1] if g.is_gen()}
         for w in work:
-            if len(w[1]) == 1 and w[1][0] not in known:
-                known[w[1][0]] = w[0]
-        nonzero_vars = {str(g) for g in list(known) + list(nonzero) if g.is_gen()}
-        for w in work:
-            if len(w[1]) <= 1 and not (w[1] and _nonnegative(w[1][0], names, nonzero_vars)):
-                continue
-            kept = []
-            for g in w[1]:
-                if g in known and len(w[1]) > 1:
-                    w[0] *= known[g]
-                elif _nonnegative(g, names, nonzero_vars):
-                    pass
-                else:
-                    kept.append(g)
-            if kept != w[1]:
+            names_w = set(map(str, w[1]))
+            for sign, k in known:
+                if k and k < names_w:
+                    w[1] = [g for g in w[1] if str(g) not in k]
+                    w[0] *= sign
+                    names_w -= k
+                    changed = True
+            kept = [g for g in w[1] if not _nonnegative(g, names, nonzero_vars)]
+            if kept != w[1] and (kept or len(w[1]) > 0):
                 w[1] = kept
                 changed = True
-    result, seen = [], set()
+        nonzero[:] = [g for g in nonzero if str(g) not in in_conditions]
+    result, seen = [], {}
     for sign, factors in work:
         if not factors:
             if sign <= 0:
                 return None
             continue
-        key = (sign, tuple(str(g) for g in factors))
-        if key not in seen:
-            seen.add(key)
-            result.append((sign, factors))
-    # a single factor with both signs required is impossible
-    singles = {}
-    for sign, factors in result:
-        if len(factors) == 1:
-            if singles.get(factors[0], sign) != sign:
+        key = tuple(sorted(str(g) for g in factors))
+        if key in seen:
+            if seen[key] != sign:
                 return None
-            singles[factors[0]] = sign
+            continue
+        seen[key] = sign
+        result.append((sign, factors))
     return result
 
 
@@ -269,7 +281,7 @@ def simplify_conjunction(conditions, positive=()):
         sage: simplify_conjunction([a > 0, a < 0]) is None
         True
     """
-    strict, others = [], []
+    strict, nonzero, others = [], [], []
     for c in conditions:
         c = as_relational(c)
         e = c.lhs() - c.rhs()
@@ -278,21 +290,18 @@ def simplify_conjunction(conditions, positive=()):
             strict.append(e)
         elif op == 'lt':
             strict.append(-e)
+        elif op == 'ne':
+            nonzero.append(e)
         else:
             others.append(c)
-    kept = positive_conditions_all(strict, positive)
+    kept = positive_conditions_all(strict, positive, nonzero)
     if kept is None:
         return None
     rest = []
     for c in others:
         e = c.lhs() - c.rhs()
         op = c.operator().__name__
-        if op == 'ne':
-            nz = nonzero_conditions(e, positive)
-            if nz is None:
-                return None
-            rest += nz
-        elif op == 'eq' and e.is_numeric():
+        if op == 'eq' and e.is_numeric():
             if not e.is_zero():
                 return None
         elif op in ('ge', 'le') and e.is_numeric():

@@ -464,9 +464,7 @@ class StationarySolution(SageObject):
             sage: s = stationary_solutions([H, V], [M1, M2, M3])[0]; s.free_multipliers()
             [lambda1]
             sage: s.stability_conditions()
-            [(2*A1*lambda1 + 1)*A1,
-             (2*A1*lambda1 + 1)*(2*A2*lambda1 + 1)*A1*A2,
-             (2*A1*lambda1 + 1)*(2*A2*lambda1 + 1)*(2*A3*lambda1 + 1)*A1*A2*A3]
+            [(2*A1*lambda1 + 1)*A1, (2*A2*lambda1 + 1)*A2, (2*A3*lambda1 + 1)*A3]
             sage: s.stability_region(positive=[A1, A2, A3])
             [[]]
         """
