@@ -31,11 +31,15 @@ EXAMPLES::
     ...
     CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
 """
-from ..errors import CircuitError, DescriptionError
+from ..errors import CircuitError, DescriptionError, brief
+from ..names import check_name
 from .circuit import Circuit
 from .elements import PREFIXES
 
 KEYS = {'kind', 'name', 'branches', 'parameters', 'results'}
+
+#: Most branches (entries of ``branches``) of a circuit description.
+MAX_BRANCHES = 2000
 
 
 def circuit_from_dict(data, source=None):
@@ -73,32 +77,53 @@ def circuit_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         CircuitError: x.yaml: branches[1]: self-loop: branch C1 joins node 2 to itself
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1'], [2, 1, 'C1']],
+        ....:                    'parameters': ['q1']}, 'x.yaml')
+        Traceback (most recent call last):
+        ...
+        CircuitError: x.yaml: parameters[0]: the name 'q1' is reserved: a loop charge, a coordinate of the loop method (q<k>); choose another name
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1'],
+        ....:     {'from': 2, 'to': 1, 'kind': 'capacitor', 'name': 'C1', 'value': 0}]}, 'x.yaml')
+        Traceback (most recent call last):
+        ...
+        CircuitError: x.yaml: branches[1].value: a capacitance of 0 is an open circuit: remove the branch instead
     """
+    from ..description import title, MAX_PARAMETERS
     if not isinstance(data, dict):
         raise DescriptionError(f"a circuit description is a mapping, got {type(data).__name__}",
                                source=source)
     for key in data:
         if key not in KEYS:
             raise DescriptionError("unknown key; a circuit description has keys "
-                                   f"{', '.join(sorted(KEYS))}", entry=str(key), source=source)
+                                   f"{', '.join(sorted(KEYS))}", entry=str(key)[:60],
+                                   source=source)
     if data.get('kind') != 'circuit':
-        raise DescriptionError(f"expected 'circuit', got {data.get('kind')!r}",
+        raise DescriptionError(f"expected 'circuit', got {brief(data.get('kind'))}",
                                entry='kind', source=source)
     if 'branches' not in data:
         raise DescriptionError("missing key 'branches' (a list of [from, to, element])",
                                entry='branches', source=source)
     branches = data['branches']
     if not isinstance(branches, list) or not branches:
-        raise DescriptionError(f"expected a non-empty list of branches, got {branches!r}",
+        raise DescriptionError(f"expected a non-empty list of branches, got {brief(branches)}",
                                entry='branches', source=source)
+    if len(branches) > MAX_BRANCHES:
+        raise DescriptionError(f"{len(branches)} branches; a description file has at most "
+                               f"{MAX_BRANCHES} (MAX_BRANCHES)", entry='branches', source=source)
     name = data.get('name')
     if name is not None and not isinstance(name, str):
-        raise DescriptionError(f"expected a text, got {name!r}", entry='name', source=source)
+        raise DescriptionError(f"expected a text, got {brief(name)}", entry='name', source=source)
+    name = title(data, 'name', source)
     parameters = data.get('parameters', [])
-    if not isinstance(parameters, list) or not all(
-            isinstance(p, str) and p.isidentifier() for p in parameters):
-        raise DescriptionError(f"expected a list of symbol names, got {parameters!r}",
+    if not isinstance(parameters, list):
+        raise DescriptionError(f"expected a list of symbol names, got {brief(parameters)}",
                                entry='parameters', source=source)
+    if len(parameters) > MAX_PARAMETERS:
+        raise DescriptionError(f"{len(parameters)} names; a description file has at most "
+                               f"{MAX_PARAMETERS} (MAX_PARAMETERS)", entry='parameters',
+                               source=source)
+    for i, p in enumerate(parameters):
+        check_name(p, f"parameters[{i}]", source=source)
     try:
         return Circuit(branches, name=name, parameters=parameters)
     except CircuitError as err:

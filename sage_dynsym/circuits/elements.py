@@ -56,8 +56,9 @@ from collections import namedtuple
 from sage.symbolic.ring import SR
 from sage.rings.integer import Integer
 
-from ..errors import CircuitError, ExpressionError
+from ..errors import CircuitError, ExpressionError, brief
 from ..expressions import ExpressionParser
+from ..names import check_names, check_name, MAX_NAME_LENGTH
 
 #: element kinds, keyed by the first letter of a short-form name
 PREFIXES = {'R': 'resistor', 'L': 'inductor', 'C': 'capacitor',
@@ -67,6 +68,16 @@ KIND_PREFIX = {kind: prefix for prefix, kind in PREFIXES.items()}
 BRANCH_KINDS = tuple(PREFIXES.values())
 #: the symbol standing for an element's own variable inside its value
 OWN_VARIABLE = {'inductor': 'i', 'capacitor': 'u', 'nonlinear_resistor': 'u'}
+
+#: Largest node number.
+MAX_NODE = 10**9
+
+#: what to do instead of a zero element value
+_ZERO_VALUE = {
+    'resistor': "a resistance of 0 is a short circuit: join its two nodes into one instead",
+    'inductor': "an inductance of 0 is a short circuit: join its two nodes into one instead",
+    'capacitor': "a capacitance of 0 is an open circuit: remove the branch instead",
+}
 
 LONG_KEYS = {'from', 'to', 'kind', 'name', 'value'}
 MUTUAL_KEYS = {'kind', 'name', 'between', 'value'}
@@ -100,20 +111,98 @@ def own_variable(kind):
 
 
 def _check_node(node, entry):
+    r"""
+    A node: a number `0 \le n \le` :data:`MAX_NODE` or a name (an
+    identifier of at most :data:`~sage_dynsym.names.MAX_NAME_LENGTH`
+    characters); the node potential of the node method is ``phi<n>``.
+
+    TESTS::
+
+        sage: from sage_dynsym.circuits.elements import _check_node
+        sage: _check_node(3, 'b'), _check_node('out', 'b')
+        (3, 'out')
+        sage: _check_node(-1, 'branches[0]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[0]: a node number is an integer from 0 to 1000000000, got -1
+        sage: _check_node(float(1.5), 'branches[0]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[0]: a node must be an integer or a name, got 1.5
+    """
     if isinstance(node, bool) or not isinstance(node, (int, Integer, str)):
-        raise CircuitError(f"a node must be an integer or a name, got {node!r}",
+        raise CircuitError(f"a node must be an integer or a name, got {brief(node)}",
                            entry=entry)
-    if isinstance(node, str) and not node.isidentifier():
-        raise CircuitError(f"a node name must be an identifier, got {node!r}",
-                           entry=entry)
-    return int(node) if not isinstance(node, str) else node
+    if isinstance(node, str):
+        if not node.isidentifier() or len(node) > MAX_NAME_LENGTH:
+            raise CircuitError("a node name must be an identifier of at most "
+                               f"{MAX_NAME_LENGTH} characters, got {brief(node)}", entry=entry)
+        return node
+    if not 0 <= node <= MAX_NODE:
+        raise CircuitError(f"a node number is an integer from 0 to {MAX_NODE}, got "
+                           f"{brief(node)}", entry=entry)
+    return int(node)
 
 
 def _check_name(name, entry):
     if not isinstance(name, str) or not name.isidentifier():
         raise CircuitError(f"an element name must be an identifier such as "
-                           f"'L1', got {name!r}", entry=entry)
-    return name
+                           f"'L1', got {brief(name)}", entry=entry)
+    return check_name(name, entry, CircuitError)
+
+
+def check_value(kind, value, entry):
+    r"""
+    Check the physical sense of an element value: real (no ``I``); a
+    *numeric* resistance, inductance or capacitance positive (a zero one is
+    refused with what to do instead). Symbolic values are not assumed to
+    have any sign.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.elements import check_value
+        sage: check_value('resistor', SR(2), 'b'); check_value('resistor', var('R0'), 'b')
+        sage: check_value('resistor', SR(0), 'branches[1]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1].value: a resistance of 0 is a short circuit: join its two nodes into one instead
+        sage: check_value('capacitor', SR(0), 'branches[1]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1].value: a capacitance of 0 is an open circuit: remove the branch instead
+        sage: check_value('inductor', SR(-1), 'branches[1]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1].value: the inductance must be positive, got -1
+        sage: check_value('resistor', SR(-1), 'branches[1]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1].value: the resistance must be positive, got -1; an active element is a nonlinear resistor (kind: nonlinear_resistor) with its characteristic
+        sage: check_value('voltage_source', I*var('E0'), 'branches[1]')
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[1].value: the value must be real, got I*E0
+    """
+    if value is None:
+        return
+    value = SR(value)
+    if value.has(SR.I()) or (value.is_numeric() and not value.is_real()):
+        raise CircuitError(f"the value must be real, got {brief(value)}", entry=f"{entry}.value")
+    if kind not in _ZERO_VALUE or value.variables():
+        return
+    if value.is_zero():
+        raise CircuitError(_ZERO_VALUE[kind], entry=f"{entry}.value")
+    try:
+        negative = bool(value < 0)
+    except (TypeError, ValueError):
+        return
+    if negative:
+        what = {'resistor': 'resistance', 'inductor': 'inductance',
+                'capacitor': 'capacitance'}[kind]
+        hint = ("; an active element is a nonlinear resistor (kind: nonlinear_resistor) with "
+                "its characteristic" if kind == 'resistor' else "")
+        raise CircuitError(f"the {what} must be positive, got {brief(value)}{hint}",
+                           entry=f"{entry}.value")
 
 
 def _kind_of_name(name, entry):
@@ -197,6 +286,7 @@ def _long(data, index, entry, parser):
     if extra:
         raise CircuitError(f"the value of a {kind} cannot depend on "
                            f"{', '.join(sorted(extra))}", entry=f"{entry}.value")
+    check_value(kind, value, entry)
     return Branch(index, name, kind, _check_node(data['from'], entry),
                   _check_node(data['to'], entry), value)
 
@@ -216,6 +306,7 @@ def _mutual(data, entry, parser):
         raise CircuitError("a mutual inductance needs a 'value'", entry=entry)
     raw = data.get('value', data.get('name'))
     value = _value(raw, parser, entry)
+    check_value('mutual', value, entry)
     return Coupling(between[0], between[1], value)
 
 
@@ -266,6 +357,7 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
         CircuitError: branches[0]: unknown key(s) ['colour']; ...
     """
     entries = list(entries)
+    _check_declared(entries, parameters, entry_prefix)
     names = set(str(p) for p in parameters)
     for item in entries:    # element names are symbols usable in values
         if isinstance(item, (list, tuple)) and len(item) == 3 and isinstance(item[2], str):
@@ -288,3 +380,29 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
                                f"{{from, to, kind, value}}, got {item!r}", entry=entry)
         (couplings if isinstance(result, Coupling) else branches).append(result)
     return tuple(branches), tuple(couplings)
+
+
+def _check_declared(entries, parameters, entry_prefix):
+    # parameters and element names against the reserved names and each
+    # other; element names of the circuit's own variables (i1, q1, phi2)
+    # are left to Circuit, which says so in its words
+    from .circuit import RESERVED
+    declared = [(check_name(str(p), f"parameters[{i}]", CircuitError), 'parameter',
+                 f"parameters[{i}]") for i, p in enumerate(parameters)]
+    for k, item in enumerate(entries):
+        name = None
+        if isinstance(item, (list, tuple)) and len(item) == 3:
+            name = item[2]
+        elif isinstance(item, dict) and item.get('kind') != 'mutual':
+            name = item.get('name')
+            if name is None and isinstance(item.get('value'), str) and \
+                    item['value'].isidentifier():
+                name = item['value']
+        if isinstance(name, str) and name.isidentifier() and not RESERVED.match(name):
+            declared.append((name, 'element', f"{entry_prefix}[{k}]"))
+    elements = {}
+    for name, use, entry in declared:
+        if use == 'element' and name in elements:
+            raise CircuitError(f"duplicate element name {name!r}", entry=entry)
+        elements.setdefault(name, entry)
+    check_names(declared, 'circuit', CircuitError)
