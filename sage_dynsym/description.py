@@ -604,8 +604,8 @@ def _body(data, index, parsers, source):
                                    entry=sub)
         axis = rotation[0]
         if isinstance(axis, bool) or axis not in (1, 2, 3):
-            raise DescriptionError(f"rotation axis must be 1, 2 or 3 (x, y, z), got "
-                                   f"{brief(axis)}", entry=sub)
+            raise ModelError(f"rotation axis must be 1, 2 or 3 (x, y, z), got {brief(axis)}",
+                             entry=sub)
         rotations.append((int(axis), geometry.parse(rotation[1], entry=sub)))
     inertia = data.get('inertia')
     if inertia is not None:

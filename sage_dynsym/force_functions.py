@@ -178,3 +178,65 @@ class NewtonianField(SageObject):
                                   for i in range(3) for j in range(3)))
             U += nu * m / r - nu * m / r ** 2 * (ea + ec) + nu / (2 * r ** 3) * gradient
         return U
+
+
+def check_force_function(force_function, coordinates, entry="force_function"):
+    r"""
+    Refuse a force function that depends on velocities or accelerations.
+
+    The force function `U(q, t)` enters the Lagrangian as a potential:
+    a velocity in it (``k*dx^2``) would silently become a term of the
+    kinetic energy. Velocity-dependent forces belong in the Rayleigh
+    dissipation function or the generalized forces.
+
+    INPUT:
+
+    - ``force_function`` -- ``None``, a
+      :class:`UniformGravity`, a :class:`NewtonianField`, an expression, or
+      a list of those (terms added together)
+    - ``coordinates`` -- the generalized coordinates
+    - ``entry`` -- (default: ``"force_function"``) for the message
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.force_functions import check_force_function, UniformGravity
+        sage: x, k, g = var('x k g')
+        sage: check_force_function(-k*x^2/2, [x])
+        sage: check_force_function(-k*var('dx')^2, [x])
+        Traceback (most recent call last):
+        ...
+        ModelError: force_function: the force function U(q, t) cannot depend on the velocity dx; velocity-dependent forces belong in the dissipation function or the generalized forces
+        sage: check_force_function([UniformGravity([0, 0, -g*var('ddx')])], [x])
+        Traceback (most recent call last):
+        ...
+        ModelError: force_function[0]: the force function U(q, t) cannot depend on the acceleration ddx; velocity-dependent forces belong in the dissipation function or the generalized forces
+    """
+    from .errors import ModelError
+    from .expressions import velocity, acceleration
+    if force_function is None:
+        return
+    if isinstance(force_function, (list, tuple)):
+        for i, term in enumerate(force_function):
+            check_force_function(term, coordinates, f"{entry}[{i}]")
+        return
+    forbidden = {}
+    for q in coordinates:
+        forbidden[velocity(q)] = f"the velocity {velocity(q)}"
+        forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
+    if isinstance(force_function, UniformGravity):
+        parts = list(force_function.acceleration())
+    elif isinstance(force_function, NewtonianField):
+        nu, r, e = force_function.parameters()
+        parts = [nu, r] + list(e)
+    else:
+        try:
+            parts = [SR(force_function)]
+        except (TypeError, ValueError):
+            raise ModelError("expected a force field or an expression U(q, t), got "
+                             f"{force_function!r}", entry=entry) from None
+    for part in parts:
+        for v in SR(part).variables():
+            if v in forbidden:
+                raise ModelError(f"the force function U(q, t) cannot depend on {forbidden[v]}; "
+                                 "velocity-dependent forces belong in the dissipation function "
+                                 "or the generalized forces", entry=entry)

@@ -33,7 +33,11 @@ Bad input is rejected with the offending entry named::
     ...
     ModelError: b.inertia: the inertia tensor must be symmetric; entry (0, 1) is 2 but entry (1, 0) is 0
 """
+from itertools import combinations
+
 from sage.matrix.constructor import matrix
+from sage.matrix.special import identity_matrix
+from sage.rings.real_mpfi import RealIntervalField
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
@@ -59,9 +63,72 @@ def _scalar(value, entry):
         raise ModelError(f"expected a symbolic expression, got {value!r}", entry=entry) from None
 
 
+_RIF = RealIntervalField(128)
+
+
+def _interval(value):
+    # an enclosure of a numeric real constant (sqrt(2), pi/3, 1/7), else None
+    if value.variables():
+        return None
+    try:
+        return _RIF(value)
+    except (TypeError, ValueError, ArithmeticError):
+        return None
+
+
+def _check_real(value, entry, what):
+    if value.has(SR.I()) or (value.is_numeric() and not value.is_real()):
+        raise ModelError(f"{what} must be real, got {value}", entry=entry)
+    if not value.variables() and (value.is_infinity() or str(value) in ('NaN', 'nan')):
+        raise ModelError(f"{what} must be a finite number, got {value}", entry=entry)
+
+
 def _check_nonnegative(value, entry, what):
-    if value.is_numeric() and value.is_real() and value < 0:
+    _check_real(value, entry, what)
+    x = _interval(value)
+    if x is not None and x.upper() < 0:
         raise ModelError(f"{what} must be non-negative, got {value}", entry=entry)
+
+
+def _check_positive_semidefinite(tensor, entry):
+    r"""
+    The numeric principal minors of ``tensor`` (symmetric 3x3) and of
+    `\tfrac12 \operatorname{tr}(J)\, E - J` must not be negative: the
+    first says that the tensor is positive semi-definite, the second that
+    its principal moments satisfy the triangle inequality
+    `J_i \le J_j + J_k` (the eigenvalues of the second matrix are
+    `\tfrac12(J_j + J_k - J_i)`). Minors with a symbol in them are not
+    judged: symbolic tensors are accepted without assuming signs.
+    """
+    for i in range(3):
+        _check_real(tensor[i, i], entry, "the moments of inertia")
+        for j in range(i + 1, 3):
+            _check_real(tensor[i, j], entry, "the products of inertia")
+    triangle = tensor.trace() / 2 * identity_matrix(SR, 3) - tensor
+    for what, M in (("positive semi-definite", tensor), ("triangle", triangle)):
+        for size in (1, 2, 3):
+            for rows in combinations(range(3), size):
+                block = M.matrix_from_rows_and_columns(rows, rows)
+                if any(e.variables() for e in block.list()):
+                    continue
+                x = _interval(SR(block.det()))
+                if x is None or not x.upper() < 0:
+                    continue
+                if what == "triangle":
+                    import numpy
+                    moments = numpy.linalg.eigvalsh([[float(e) for e in row]
+                                                     for row in tensor.rows()])
+                    raise ModelError("the principal moments of inertia must satisfy the "
+                                     "triangle inequality (none larger than the sum of the "
+                                     "other two), got about "
+                                     f"{', '.join(f'{m:.6g}' for m in sorted(moments))}",
+                                     entry=entry)
+                if size == 1:
+                    raise ModelError(f"the moments of inertia must be non-negative, got "
+                                     f"{M[rows[0], rows[0]]}", entry=entry)
+                raise ModelError("the inertia tensor must be positive semi-definite; the "
+                                 f"principal minor of rows {', '.join(str(r + 1) for r in rows)}"
+                                 f" is {block.det()} < 0", entry=entry)
 
 
 class RigidBody(SageObject):
@@ -119,6 +186,39 @@ class RigidBody(SageObject):
         Traceback (most recent call last):
         ...
         ModelError: b.rotations[0]: expected a pair (axis, angle), got 3
+        sage: RigidBody('b', mass=I*var('m'))
+        Traceback (most recent call last):
+        ...
+        ModelError: b.mass: the mass must be real, got I*m
+        sage: RigidBody('b', mass=1 - pi)
+        Traceback (most recent call last):
+        ...
+        ModelError: b.mass: the mass must be non-negative, got -pi + 1
+        sage: RigidBody('b', mass=float('nan'))
+        Traceback (most recent call last):
+        ...
+        ModelError: b.mass: the mass must be a finite number, got NaN
+        sage: RigidBody('b', inertia=[[1, 2, 0], [2, 1, 0], [0, 0, 1]])
+        Traceback (most recent call last):
+        ...
+        ModelError: b.inertia: the inertia tensor must be positive semi-definite; the principal minor of rows 1, 2 is -3 < 0
+        sage: RigidBody('b', inertia=diagonal_matrix([1, 1, 3]))
+        Traceback (most recent call last):
+        ...
+        ModelError: b.inertia: the principal moments of inertia must satisfy the triangle inequality (none larger than the sum of the other two), got about 1, 1, 3
+
+    A massless carrier, a thin rod (`A = B`, `C = 0`) and symbolic tensors
+    with products of inertia of any sign are accepted::
+
+        sage: A, B, C, D = var('A B C D')
+        sage: RigidBody('carrier', mass=0).is_massless()
+        True
+        sage: RigidBody('rod', mass=1, inertia=diagonal_matrix([1/3, 1/3, 0])).inertia()[2, 2]
+        0
+        sage: RigidBody('b', inertia=[[A, -D, 0], [-D, B, 0], [0, 0, C]]).inertia()[0, 1]
+        -D
+        sage: RigidBody('b', inertia=[[2, sqrt(2), 0], [sqrt(2), 1, 0], [0, 0, 3]]).name()
+        'b'
         sage: RigidBody('')
         Traceback (most recent call last):
         ...
@@ -164,7 +264,7 @@ class RigidBody(SageObject):
                     raise ModelError(
                         f"the inertia tensor must be symmetric; entry ({i}, {j}) is "
                         f"{tensor[i, j]} but entry ({j}, {i}) is {tensor[j, i]}", entry=entry)
-            _check_nonnegative(tensor[i, i], entry, "the moments of inertia")
+        _check_positive_semidefinite(tensor, entry)
         tensor.set_immutable()
         return tensor
 
