@@ -2,11 +2,45 @@ r"""
 Command line: ``python -m sage_dynsym FILE [FILE ...]`` (or ``sage-dynsym``).
 
 Loads each description file and prints its report (characteristic
-function and equations, as text and LaTeX). A bad file gives a one-line
-error on standard error and exit status 1, never a traceback.
+function and equations, as text and LaTeX, and the analysis). A bad file
+gives a one-line error on standard error and exit status 1, never a
+traceback; the other files are still reported.
+
+Options:
+
+- ``--sections LIST`` -- comma-separated report sections (see
+  :data:`sage_dynsym.report.SECTIONS`), e.g. ``lagrangian,equations``;
+- ``--no-analysis`` -- leave out the analysis sections (stationary motions,
+  stability, dP/dt);
+- ``--budget N`` -- the size budget of each section in polynomial terms
+  (default :data:`sage_dynsym.report.DEFAULT_BUDGET`): a section whose
+  estimated size is larger is replaced by one line saying so;
+- ``--time-limit S`` -- give up on a file after ``S`` seconds (one error
+  line, then the next file);
+- ``-o FILE`` -- also write the reports to ``FILE`` (replaced atomically).
 """
 import argparse
 import sys
+
+
+def _positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def _sections(text):
+    from .report import SECTIONS
+    keys = [k.strip() for k in text.split(",") if k.strip()]
+    for key in keys:
+        if key not in SECTIONS:
+            raise argparse.ArgumentTypeError(f"unknown section {key!r}; the sections are: "
+                                             f"{', '.join(SECTIONS)}")
+    return keys
 
 
 def main(argv=None):
@@ -22,35 +56,88 @@ def main(argv=None):
         0
         sage: main(['/no/such/file.yaml'])   # the message goes to standard error
         1
+        sage: main([example_path('rlc_ladder.yaml'), '--sections', 'lagrangian', '--budget', '5'])
+        == RLC ladder with three sections (circuit: 11 branches on 8 nodes) ==
+        Lagrangian (loop-current method):
+        ...
+        0
+        sage: main([example_path('spherical_pendulum.yaml'), '--no-analysis', '--budget', '10'])
+        == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
+        Lagrangian: skipped, the Lagrangian (...): about 16 polynomial terms, over the budget of 10 (raise it with --budget)
+        0
     """
+    from .report import DEFAULT_BUDGET
     parser = argparse.ArgumentParser(
         prog="sage-dynsym",
         description="Derive the equations of the models in description files "
-                    "(YAML) and print them as text and LaTeX.")
+                    "(YAML) and print them as text and LaTeX, with their analysis.")
     parser.add_argument("files", nargs="+", metavar="FILE", help="description files")
     parser.add_argument("-o", "--output", help="also write the reports to this file")
+    parser.add_argument("--sections", type=_sections, metavar="LIST",
+                        help="comma-separated sections to print: lagrangian, equations, "
+                             "routh, stationary, hamiltonian, mixed_potential, "
+                             "state_equations, lyapunov, stability (default: all)")
+    parser.add_argument("--no-analysis", action="store_true",
+                        help="leave out the analysis sections (stationary, lyapunov, "
+                             "stability)")
+    parser.add_argument("--budget", type=_positive_int, default=DEFAULT_BUDGET, metavar="N",
+                        help="size budget of each section, in polynomial terms "
+                             f"(default: {DEFAULT_BUDGET})")
+    parser.add_argument("--time-limit", type=_positive_int, metavar="S",
+                        help="give up on a file after S seconds")
     args = parser.parse_args(argv)
 
-    from .description import load
-    from .errors import DynSymError
+    from .description import load, write_atomically
+    from .errors import DynSymError, brief
     from .report import report
     reports, status = [], 0
+
+    def fail(path, message):
+        print(f"sage-dynsym: error: {message}", file=sys.stderr, flush=True)
+        return 1
+
     for path in args.files:
         try:
-            text = report(load(path))
+            text = _with_time_limit(args.time_limit, lambda: report(
+                load(path), sections=args.sections, budget=args.budget,
+                analysis=not args.no_analysis))
         except DynSymError as err:
-            print(f"sage-dynsym: error: {err}", file=sys.stderr)
-            status = 1
+            status = fail(path, err)
+            continue
+        except _TimeLimit:
+            status = fail(path, f"{path}: gave up after {args.time_limit} s (--time-limit)")
             continue
         except KeyboardInterrupt:
             print("sage-dynsym: interrupted", file=sys.stderr)
             return 130
+        except Exception as err:    # a bug or a failure inside Sage: still one line
+            status = fail(path, f"{path}: unexpected {type(err).__name__}: {brief(str(err))}")
+            continue
         print(text, end="\n\n", flush=True)
         reports.append(text)
     if args.output:
-        with open(args.output, "w", encoding="utf-8") as stream:
-            stream.write("\n\n".join(reports) + "\n")
+        try:
+            write_atomically(args.output, lambda s: s.write("\n\n".join(reports) + "\n"))
+        except DynSymError as err:
+            status = fail(args.output, err)
     return status
+
+
+class _TimeLimit(Exception):
+    pass
+
+
+def _with_time_limit(seconds, compute):
+    if not seconds:
+        return compute()
+    from cysignals.alarm import alarm, cancel_alarm, AlarmInterrupt
+    alarm(seconds)
+    try:
+        return compute()
+    except AlarmInterrupt:
+        raise _TimeLimit() from None
+    finally:
+        cancel_alarm()
 
 
 if __name__ == "__main__":

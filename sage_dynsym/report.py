@@ -29,9 +29,190 @@ EXAMPLES::
     Hamiltonian:
       ...
 """
-from sage.misc.latex import latex
+import operator
 
-from .errors import DynSymError
+from sage.misc.latex import latex
+from sage.symbolic.operators import add_vararg, mul_vararg
+from sage.symbolic.ring import SR
+
+from .errors import DynSymError, BudgetError
+
+#: Default size budget of one report section: the largest number of
+#: polynomial terms a section may create (estimated before it does).
+DEFAULT_BUDGET = 100_000
+
+#: The sections of a report, in the order they are printed.
+SECTIONS = {
+    'lagrangian': "the Lagrangian (mechanical systems; linear circuits, loop method)",
+    'equations': "the Lagrange equations",
+    'routh': "the Routh function and equations for the cyclic coordinates",
+    'stationary': "stationary motions or equilibria with their stability",
+    'hamiltonian': "the Hamiltonian (Dirac's scheme for a singular Lagrangian)",
+    'mixed_potential': "the Brayton-Moser mixed potential of a circuit",
+    'state_equations': "the state equations of a circuit",
+    'lyapunov': "dP/dt along the state equations of a circuit",
+    'stability': "stability of the free linear circuit (characteristic polynomial, "
+                 "Lienard-Chipart conditions)",
+}
+
+#: The sections that are analysis (left out by ``analysis=False``, the
+#: command line's ``--no-analysis``).
+ANALYSIS_SECTIONS = ('stationary', 'lyapunov', 'stability')
+
+#: Term counts beyond this are reported as this (they are over any budget).
+_TERMS_CAP = 10**30
+#: Largest number of partial states of the permanent bound before the
+#: cruder product bound is used.
+_PERMANENT_STATES = 20_000
+
+
+def polynomial_terms(expr):
+    r"""
+    An upper bound of the number of terms of ``expr`` once expanded, from
+    its tree alone (nothing is expanded): sums add, products multiply, a
+    power `a^n` with a positive integer `n` counts the monomials of degree
+    `n` in the terms of `a`; functions and other powers are single atoms.
+    Capped at `10^{30}`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.report import polynomial_terms
+        sage: x, y, z = var('x y z')
+        sage: polynomial_terms((x + y)*(x + z + 1)), ((x + y)*(x + z + 1)).expand().number_of_operands()
+        (6, 6)
+        sage: polynomial_terms((x + y + z)^10), len(((x + y + z)^10).expand().operands())
+        (66, 66)
+        sage: polynomial_terms(sin(x + y)/(x + y)), polynomial_terms(SR(0))
+        (1, 0)
+    """
+    try:
+        return min(_terms(SR(expr)), _TERMS_CAP)
+    except RecursionError:
+        return _TERMS_CAP
+
+
+def _terms(e):
+    op = e.operator()
+    if op is None:
+        return 0 if e.is_zero() else 1
+    if op is add_vararg:
+        return min(sum(_terms(x) for x in e.operands()), _TERMS_CAP)
+    if op is mul_vararg:
+        count = 1
+        for x in e.operands():
+            count = min(count * _terms(x), _TERMS_CAP)
+        return count
+    if op is operator.pow:
+        base, exponent = e.operands()
+        if exponent.is_integer() and exponent > 0:
+            from sage.arith.misc import binomial
+            k, n = _terms(base), int(min(exponent, 10**6))
+            return min(binomial(k + n - 1, n), _TERMS_CAP) if k > 1 else k
+    return 1
+
+
+def determinant_terms(counts):
+    r"""
+    An upper bound of the number of terms of the expanded determinant of a
+    matrix whose entries have ``counts[i][j]`` terms: the permanent of the
+    counts (each permutation contributes the product of its entries' term
+    counts), computed row by row over the open columns; when that needs
+    too many partial states, the smaller of the products of the row sums
+    and of the column sums.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.report import determinant_terms
+        sage: determinant_terms([[2, 1], [1, 3]])
+        7
+        sage: determinant_terms([[1, 1, 0], [1, 1, 1], [0, 1, 1]])   # tridiagonal
+        3
+        sage: determinant_terms([[1] * 8 for _ in range(8)]) == factorial(8)
+        True
+        sage: determinant_terms([[1] * 40 for _ in range(40)])   # the product bound, capped
+        1000000000000000000000000000000
+        sage: determinant_terms([[1, 0], [1, 0]])
+        0
+    """
+    n = len(counts)
+    last = {}
+    for j in range(n):
+        rows = [i for i in range(n) if counts[i][j]]
+        if not rows:
+            return 0
+        last[j] = rows[-1]
+    states = {frozenset(): 1}
+    for i in range(n):
+        closing = {j for j in range(n) if last[j] == i}
+        new = {}
+        for used, value in states.items():
+            for j in range(n):
+                c = counts[i][j]
+                if c and j not in used:
+                    key = used | {j}
+                    if closing <= key:
+                        key -= closing
+                        new[key] = new.get(key, 0) + value * c
+        states = new
+        if len(states) > _PERMANENT_STATES:
+            rows = 1
+            for row in counts:
+                rows = min(rows * sum(row), _TERMS_CAP)
+            cols = 1
+            for j in range(n):
+                cols = min(cols * sum(counts[i][j] for i in range(n)), _TERMS_CAP)
+            return min(rows, cols)
+    return min(sum(states.values()), _TERMS_CAP)
+
+
+def _matrix_terms(M):
+    return [[polynomial_terms(e) for e in row] for row in M.rows()]
+
+
+class _Report:
+    r"""
+    The lines of a report and its sections: which are wanted, their budget,
+    and :meth:`run`, which turns any failure of a section into one line.
+    """
+
+    def __init__(self, sections, budget):
+        self.lines, self.wanted, self.budget = [], set(sections), budget
+
+    def want(self, *keys):
+        return any(k in self.wanted for k in keys)
+
+    def check(self, what, estimate):
+        if estimate > self.budget:
+            raise BudgetError(what, estimate=estimate, budget=self.budget)
+
+    def run(self, title, body):
+        r"""
+        Run ``body(lines)``; its lines are kept if it succeeds, else one line
+        says why the section is missing: over the budget, not available
+        (the package's error), or failed (any other error, with its class).
+        Returns the body's value, or ``None``. ``KeyboardInterrupt`` is not
+        caught.
+        """
+        lines = []
+        try:
+            value = body(lines)
+        except BudgetError as err:
+            self.lines.append(f"{title}: skipped, {err.message} (raise it with --budget)")
+            return None
+        except DynSymError as err:
+            self.lines.append(f"{title}: not available ({_clip(str(err))})")
+            return None
+        except Exception as err:    # Sage, Maxima, memory, recursion: one line, no traceback
+            self.lines.append(f"{title}: section failed: {type(err).__name__}: "
+                              f"{_clip(str(err))}")
+            return None
+        self.lines.extend(lines)
+        return value
+
+
+def _clip(text, limit=300):
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _formula(lines, label, expr, indent="  "):
@@ -39,25 +220,91 @@ def _formula(lines, label, expr, indent="  "):
     lines.append(f"{indent}  LaTeX: {latex(expr)}")
 
 
-def _mechanical(system, lines):
+def lagrangian_estimate(system):
+    r"""
+    The size estimate of a mechanical system's Lagrangian, checked before it
+    is derived: `n^2 2^r` polynomial terms for `n` coordinates (the entries
+    of the mass matrix) and `r` the most angles that vary along one chain of
+    bodies from the inertial frame (each such rotation at most doubles the
+    terms of a direction cosine).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: from sage_dynsym.report import lagrangian_estimate
+        sage: lagrangian_estimate(load(example_path('spherical_pendulum.yaml')))
+        16
+    """
+    depth = [0]
+    for k, body in enumerate(system.bodies(), 1):
+        turning = sum(1 for _, angle in body.rotations() if SR(angle).variables())
+        depth.append(depth[system.parent_index(k)] + turning)
+    n = len(system.coordinates())
+    return n ** 2 * 2 ** max(depth)
+
+
+def _mechanical(system, out):
     coordinates = ", ".join(map(str, system.coordinates()))
     n = len(system.bodies())
-    lines.append(f"== {system.name() or 'mechanical system'} (mechanical system: {n} "
-                 f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
-    L = system.lagrangian()
-    lines.append("Lagrangian L = T + U:")
-    _formula(lines, "", L.expr())
-    _lagrangian_equations(L, lines)
+    out.lines.append(f"== {system.name() or 'mechanical system'} (mechanical system: {n} "
+                     f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
+
+    def lagrangian(lines):
+        out.check("the Lagrangian (n^2 2^r: coordinates and varying angles along a chain)",
+                  lagrangian_estimate(system))
+        L = system.lagrangian()
+        if out.want('lagrangian'):
+            lines.append("Lagrangian L = T + U:")
+            _formula(lines, "", L.expr())
+        return L
+
+    L = out.run("Lagrangian", lagrangian)
+    if L is None:
+        return
+    if out.want('equations'):
+        out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
     cyclic = L.cyclic_coordinates()
-    if cyclic and len(cyclic) < len(L.coordinates()):
-        R = L.routh(cyclic)
+    partial = bool(cyclic) and len(cyclic) < len(L.coordinates())
+    R = None
+    if partial and out.want('routh', 'stationary'):
+        R = out.run("Routh function", lambda lines: _routh(L, cyclic, lines, out))
+    if out.want('stationary'):
+        if partial and R is None:
+            out.lines.append("Stationary motions: not available (the Routh function is not)")
+        else:
+            def stationary(lines):
+                out.check("the stationary motions (terms of the function at rest)",
+                          polynomial_terms((R or L).expr()))
+                _stationary(L, cyclic, lines)
+            out.run("Stationary motions" if partial else "Equilibria", stationary)
+    if out.want('hamiltonian'):
+        out.run("Hamiltonian", lambda lines: _hamiltonian(L, lines, out))
+
+
+def _routh(L, cyclic, lines, out):
+    A = L.mass_matrix()
+    index = [L.coordinates().index(q) for q in cyclic]
+    block = A.matrix_from_rows_and_columns(index, index)
+    out.check("the Routh function (determinant of the cyclic block of the mass matrix, "
+              "times the terms of L)",
+              determinant_terms(_matrix_terms(block)) * polynomial_terms(L.expr()))
+    R = L.routh(cyclic)
+    if out.want('routh'):
         lines.append(f"Routh function for the cyclic coordinates {', '.join(map(str, cyclic))} "
                      f"(momenta {', '.join(map(str, R.momenta()))}):")
         _formula(lines, "R = ", R.expr())
+        out.check("the Routh equations", equations_estimate(R))
         lines.append("Routh equations (E_i = 0):")
         for q, e in zip(R.coordinates(), R.equations()):
             _formula(lines, f"[{q}] ", e)
-    _stationary(L, cyclic, lines)
+    return R
+
+
+def _hamiltonian(L, lines, out):
+    n = len(L.coordinates())
+    out.check("the Hamiltonian (n^2 times the determinant of the mass matrix)",
+              n ** 2 * determinant_terms(_matrix_terms(L.mass_matrix())))
     H = L.hamiltonian()
     if H.is_singular():
         D = H.constraints()
@@ -122,29 +369,28 @@ def _verdict(verdict, lines):
         lines.append(f"      {v.verdict()} ({v.method()}) where {where}")
 
 
-def _linear_circuit_stability(circuit, L, lines):
-    from sage.symbolic.ring import SR
+def _linear_circuit_stability(circuit, L, lines, out):
     from .analysis import linearize, lienard_chipart_conditions
     sources = {SR.var(b.name): 0 for b in circuit.branches()
                if b.kind in ('voltage_source', 'current_source')}
     values = sorted({v for b in circuit.branches() if b.value is not None
                      for v in SR(b.value).variables()} - set(sources), key=str)
     lam = SR.var('lambda_')
-    try:
-        free = L.subs(sources) if sources else L
-        system = linearize(free, {q: 0 for q in free.coordinates()})
-        poly = system.characteristic_polynomial(lam)
-        conditions = lienard_chipart_conditions(poly, lam, positive=values)
-    except DynSymError as err:
-        lines.append(f"Stability of the free circuit: not available ({err})")
-        return
+    free = L.subs(sources) if sources else L
+    out.check("the characteristic polynomial (permanent bound of the determinant)",
+              characteristic_estimate(free))
+    system = linearize(free, {q: 0 for q in free.coordinates()})
+    poly = system.characteristic_polynomial(lam)
     lines.append("Stability of the free circuit (sources off), loop method:")
     _formula(lines, "characteristic polynomial: ", poly)
     if poly.subs({lam: 0}).is_zero():
         lines.append("  lambda = 0 is a root: some loop charge is not fixed by a capacitor, "
                      "so the zero solution in loop charges is not asymptotically stable "
                      "(the currents may still decay)")
-    elif conditions:
+        return
+    _check_routh_scheme(poly, lam, out.budget)
+    conditions = lienard_chipart_conditions(poly, lam, positive=values, budget=out.budget)
+    if conditions:
         lines.append("  Lienard-Chipart conditions (each > 0), element values positive:")
         for c in conditions:
             _formula(lines, "", c, indent="    ")
@@ -153,40 +399,134 @@ def _linear_circuit_stability(circuit, L, lines):
                      "(Lienard-Chipart conditions hold identically)")
 
 
-def _lagrangian_equations(L, lines):
+def _check_routh_scheme(poly, lam, budget):
+    # the Hurwitz determinants come from the fraction-free Routh scheme,
+    # which stops before a product of more than ``budget`` pairs of terms:
+    # run it with the budget first (the costly products are not made)
+    from sage.rings.rational_field import QQ
+    from .analysis.hurwitz import _normalized_coefficients, _routh_scheme
+    a = _normalized_coefficients(poly, lam)
+    n = len(a) - 1
+    if n < 2 or a[0].parent() is QQ:
+        return
+    deltas, reached = _routh_scheme(a, n - 1, budget)
+    if reached < n - 1 and deltas[reached] != 0:
+        raise BudgetError(f"the Lienard-Chipart conditions: a product of the Routh scheme "
+                          f"would multiply more than {budget} pairs of terms, over the budget "
+                          f"of {budget}")
+
+
+def equations_estimate(L):
+    r"""
+    The size estimate of the Lagrange equations of ``L``, checked before
+    they are derived: for each coordinate, the terms of `\partial L/\partial
+    \dot q_i` times `2n + 1` (the total time derivative differentiates each
+    factor in `q, \dot q, t`), plus those of `\partial L/\partial q_i`, of
+    the dissipation and of the generalized force.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.report import equations_estimate
+        sage: x, dx, m, k = var('x dx m k')
+        sage: equations_estimate(Lagrangian(m*dx^2/2 - k*x^2/2, [x]))
+        4
+    """
+    q, dq = L.coordinates(), L.velocities()
+    expr, R = SR(L.expr()), SR(L.dissipation())
+    n, total = len(q), 0
+    for x, v, Q in zip(q, dq, L.generalized_forces()):
+        total += (polynomial_terms(expr.diff(v)) * (2 * n + 1) + polynomial_terms(expr.diff(x))
+                  + polynomial_terms(R.diff(v)) + polynomial_terms(Q))
+    return total
+
+
+def characteristic_estimate(L):
+    r"""
+    The size estimate of the characteristic polynomial
+    `\det(M\lambda^2 + (D + G)\lambda + K)` of ``L`` linearized at the
+    origin, checked before the linearization: the permanent bound
+    (:func:`determinant_terms`) of the term counts of the second
+    derivatives of `L` and of the dissipation that make up the matrix.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: from sage_dynsym.report import characteristic_estimate
+        sage: C = Circuit([[0, 1, 'R1'], [1, 2, 'L1'], [2, 0, 'C1']])
+        sage: characteristic_estimate(C.lagrangian())   # L1*lambda^2 + R1*lambda + 1/C1
+        3
+    """
+    q, dq = L.coordinates(), L.velocities()
+    expr, R = SR(L.expr()), SR(L.dissipation())
+    by_velocity = [expr.diff(v) for v in dq]
+    by_coordinate = [expr.diff(x) for x in q]
+    damping = [R.diff(v) for v in dq]
+    counts = [[polynomial_terms(by_velocity[i].diff(dq[j])) + polynomial_terms(damping[i].diff(dq[j]))
+               + polynomial_terms(by_velocity[i].diff(q[j]))
+               + polynomial_terms(by_coordinate[i].diff(q[j])) for j in range(len(q))]
+              for i in range(len(q))]
+    return determinant_terms(counts)
+
+
+def _lagrangian_equations(L, lines, out):
+    out.check("the Lagrange equations (terms of dL/d(dq_i) times 2n + 1, and of dL/dq_i)",
+              equations_estimate(L))
     lines.append("Lagrange equations (E_i = 0):")
     for q, e in zip(L.coordinates(), L.lagrange_equations()):
         _formula(lines, f"[{q}] ", e)
 
 
-def _circuit(circuit, lines):
+def _circuit(circuit, out):
     from .errors import CircuitError
-    lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
-                 f"branches on {len(circuit.nodes())} nodes) ==")
-    try:
-        equations = circuit.state_equations()
-    except CircuitError as err:
-        lines.append(f"No Brayton-Moser form: {err}")
-    else:
-        lines.append("Mixed potential P(i, u):")
-        _formula(lines, "P = ", circuit.mixed_potential())
-        lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du):")
-        for (v, element), e in zip(circuit.state_variables(), equations):
-            _formula(lines, f"[{element} d{v}/dt] ", e)
-        lines.append("Time derivative of P along the state equations (Lyapunov analogue):")
-        _formula(lines, "dP/dt = ", circuit.brayton_moser().time_derivative())
+    out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
+                     f"branches on {len(circuit.nodes())} nodes) ==")
+    if out.want('mixed_potential', 'state_equations', 'lyapunov'):
+        try:
+            equations = circuit.state_equations()
+        except CircuitError as err:
+            out.lines.append(f"No Brayton-Moser form: {err}")
+        else:
+            if out.want('mixed_potential'):
+                def potential(lines):
+                    lines.append("Mixed potential P(i, u):")
+                    _formula(lines, "P = ", circuit.mixed_potential())
+                out.run("Mixed potential", potential)
+            if out.want('state_equations'):
+                def state(lines):
+                    lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du):")
+                    for (v, element), e in zip(circuit.state_variables(), equations):
+                        _formula(lines, f"[{element} d{v}/dt] ", e)
+                out.run("State equations", state)
+            if out.want('lyapunov'):
+                def lyapunov(lines):
+                    # dP/dt = sum of (dP/dx_k) dx_k/dt: each state equation squared
+                    out.check("dP/dt (the squares of the state equations)",
+                              sum(polynomial_terms(e) ** 2 for e in equations))
+                    lines.append("Time derivative of P along the state equations "
+                                 "(Lyapunov analogue):")
+                    _formula(lines, "dP/dt = ", circuit.brayton_moser().time_derivative())
+                out.run("dP/dt", lyapunov)
+    if not out.want('lagrangian', 'equations', 'stability'):
+        return
     try:
         L = circuit.lagrangian(method="loop")
     except CircuitError as err:
-        lines.append(f"No loop Lagrangian: {err}")
-    else:
-        lines.append("Lagrangian (loop-current method):")
-        _formula(lines, "L = ", L.expr())
-        _lagrangian_equations(L, lines)
-        _linear_circuit_stability(circuit, L, lines)
+        out.lines.append(f"No loop Lagrangian: {err}")
+        return
+    if out.want('lagrangian'):
+        def lagrangian(lines):
+            lines.append("Lagrangian (loop-current method):")
+            _formula(lines, "L = ", L.expr())
+        out.run("Lagrangian", lagrangian)
+    if out.want('equations'):
+        out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
+    if out.want('stability'):
+        out.run("Stability of the free circuit",
+                lambda lines: _linear_circuit_stability(circuit, L, lines, out))
 
 
-def report(model):
+def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
     r"""
     A text report of ``model`` (see the module documentation).
 
@@ -194,8 +534,21 @@ def report(model):
 
     - ``model`` -- a :class:`~sage_dynsym.mechanical_system.MechanicalSystem`
       or a :class:`~sage_dynsym.circuits.circuit.Circuit`
+    - ``sections`` -- (default: all) the keys of :data:`SECTIONS` to print
+      (the sections that do not apply to the model are ignored)
+    - ``budget`` -- (default: :data:`DEFAULT_BUDGET`) the size budget of
+      each section, in polynomial terms
+    - ``analysis`` -- (default: ``True``) whether to include the analysis
+      sections (:data:`ANALYSIS_SECTIONS`)
 
     OUTPUT: a string
+
+    Each section estimates the number of polynomial terms it would create
+    *before* its expensive step (expanding a determinant, deriving the
+    Lagrangian of a long chain, ...): over the budget it is replaced by one
+    line saying so, and the rest of the report is still printed. A section
+    that fails for another reason is also one line (the error's class and
+    message), never a traceback.
 
     EXAMPLES::
 
@@ -208,21 +561,56 @@ def report(model):
         sage: 'State equations' in text
         True
 
+    Sections and budget::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+        ....:              [3, 4, 'R2'], [4, 0, 'L2']], name='RLC')
+        sage: print(report(C, sections=['lagrangian']))
+        == RLC (circuit: 6 branches on 5 nodes) ==
+        Lagrangian (loop-current method):
+          L = 1/2*L1*dq1^2 + 1/2*L2*dq2^2 - 1/2*(q1 - q2)^2/C1
+          LaTeX: ...
+        sage: print(report(C, sections=['equations', 'stability'], budget=9))
+        == RLC (circuit: 6 branches on 5 nodes) ==
+        Lagrange equations: skipped, the Lagrange equations (terms of dL/d(dq_i) times 2n + 1, and of dL/dq_i): about 17 polynomial terms, over the budget of 9 (raise it with --budget)
+        Stability of the free circuit: skipped, the characteristic polynomial (permanent bound of the determinant): about 10 polynomial terms, over the budget of 9 (raise it with --budget)
+        sage: pendulum = load(example_path('spherical_pendulum.yaml'))
+        sage: print(report(pendulum, budget=10))
+        == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
+        Lagrangian: skipped, the Lagrangian (n^2 2^r: coordinates and varying angles along a chain): about 16 polynomial terms, over the budget of 10 (raise it with --budget)
+        sage: print(report(pendulum, sections=['hamiltonian', 'stationary'], analysis=False))
+        == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
+        Hamiltonian:
+          H = ...
+          LaTeX: ...
+
     TESTS::
 
         sage: report(42)
         Traceback (most recent call last):
         ...
         DynSymError: cannot report on Integer: expected a mechanical system or a circuit
+        sage: report(C, sections=['colour'])
+        Traceback (most recent call last):
+        ...
+        DynSymError: unknown report section 'colour'; the sections are: lagrangian, equations, routh, stationary, hamiltonian, mixed_potential, state_equations, lyapunov, stability
     """
     from .mechanical_system import MechanicalSystem
     from .circuits import Circuit
-    lines = []
+    wanted = list(SECTIONS) if sections is None else list(sections)
+    for key in wanted:
+        if key not in SECTIONS:
+            raise DynSymError(f"unknown report section {key!r}; the sections are: "
+                              f"{', '.join(SECTIONS)}")
+    if not analysis:
+        wanted = [key for key in wanted if key not in ANALYSIS_SECTIONS]
+    out = _Report(wanted, budget)
     if isinstance(model, MechanicalSystem):
-        _mechanical(model, lines)
+        _mechanical(model, out)
     elif isinstance(model, Circuit):
-        _circuit(model, lines)
+        _circuit(model, out)
     else:
         raise DynSymError(f"cannot report on {type(model).__name__}: expected a mechanical "
                           "system or a circuit")
-    return "\n".join(lines)
+    return "\n".join(out.lines)
