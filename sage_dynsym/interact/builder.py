@@ -236,6 +236,12 @@ class SystemBuilder:
         sage: B.path.value = os.path.join(tempfile.mkdtemp(), 'built.yaml')
         sage: B.save(); os.path.exists(B.path.value)
         True
+        sage: B.save(); B.status.value          # an existing file: ask first
+        '<b>...built.yaml exists.</b> Click <i>overwrite</i> to replace it.'
+        sage: B.confirm.layout.display is None
+        True
+        sage: B.save(overwrite=True); B.status.value
+        'saved to ...built.yaml'
         sage: B.derive(); B.output.value
         '$$\\begin{aligned}\nP &amp;= ...'
         sage: B.branches.value = '1 2 Q1'; B.derive()   # the error is shown, not raised
@@ -273,10 +279,19 @@ class SystemBuilder:
         self.path = W.Text(value='built_system.yaml', description='file')
         save = W.Button(description='save description')
         save.on_click(lambda _: self.save())
+        # shown only while an existing file waits for the user's consent
+        self.confirm = W.Button(description='overwrite', button_style='warning')
+        self.confirm.on_click(lambda _: self.save(overwrite=True))
+        self.confirm.layout.display = 'none'
+        self.path.observe(lambda _: self._hide_confirm(), names='value')
         self.status = W.HTML()
         self.output = W.HTMLMath()
         self.widget = W.VBox([self.kind, self.mechanical, self.circuit,
-                              W.HBox([derive, self.path, save]), self.status, self.output])
+                              W.HBox([derive, self.path, save, self.confirm]), self.status,
+                              self.output])
+
+    def _hide_confirm(self):
+        self.confirm.layout.display = 'none'
 
     def _switch(self, change):
         mech = change['new'] == 'mechanical'
@@ -342,21 +357,37 @@ class SystemBuilder:
         except DynSymError as err:
             self.status.value = f"<b>error:</b> {_escape(err)}"
             return
+        except Exception as err:        # never a traceback in the page
+            self.status.value = f"<b>error:</b> {_escape(type(err).__name__)}: {_escape(err)}"
+            return
         self.status.value = f"{_escape(model)}"
         self.output.value = f"$${_escape(block)}$$"
 
-    def save(self):
+    def save(self, overwrite=False):
         r"""
         Write the description file named in the ``file`` field, with the
-        results section.
+        results section. An existing file is replaced only with
+        ``overwrite=True`` (the *overwrite* button, shown after the first
+        attempt); the file is written atomically.
         """
+        import os
         from ..description import save
+        path = self.path.value
+        if os.path.exists(path) and not overwrite:
+            self.status.value = (f"<b>{_escape(path)} exists.</b> Click <i>overwrite</i> to "
+                                 "replace it.")
+            self.confirm.layout.display = None
+            return
+        self._hide_confirm()
         try:
-            save(self.model(), self.path.value)
+            save(self.model(), path)
         except (DynSymError, OSError) as err:
             self.status.value = f"<b>error:</b> {_escape(err)}"
             return
-        self.status.value = f"saved to {_escape(self.path.value)}"
+        except Exception as err:        # never a traceback in the page
+            self.status.value = f"<b>error:</b> {_escape(type(err).__name__)}: {_escape(err)}"
+            return
+        self.status.value = f"saved to {_escape(path)}"
 
 
 def _escape(obj):
