@@ -93,6 +93,7 @@ def main(argv=None):
     reports, status = [], 0
 
     def fail(path, message):
+        message = " ".join(str(message).split())        # one line, whatever the error
         print(f"sage-dynsym: error: {message}", file=sys.stderr, flush=True)
         return 1
 

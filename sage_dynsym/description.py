@@ -306,12 +306,23 @@ def read_yaml(path):
             raise DescriptionError("the file contains a YAML tag that would construct a Python "
                                    f"object ({err.problem}); description files may only hold "
                                    "plain data", source=source) from None
-        raise DescriptionError(f"not valid YAML: {err}", source=source) from None
+        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from None
     except yaml.YAMLError as err:
-        raise DescriptionError(f"not valid YAML: {err}", source=source) from None
+        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from None
     finally:
         if loader is not None:
             loader.dispose()
+
+
+def _yaml_problem(err):
+    # one line: what is wrong and where (PyYAML's text quotes the line)
+    problem = getattr(err, 'problem', None)
+    if problem is None:
+        return " ".join(str(err).replace('"<unicode string>", ', '').split())
+    context = getattr(err, 'context', None)
+    mark = getattr(err, 'problem_mark', None)
+    where = f" (line {mark.line + 1}, column {mark.column + 1})" if mark else ""
+    return f"{context + ': ' if context else ''}{problem}{where}"
 
 
 def load(path, results=False):

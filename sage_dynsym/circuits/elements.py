@@ -400,9 +400,10 @@ def _check_declared(entries, parameters, entry_prefix):
                 name = item['value']
         if isinstance(name, str) and name.isidentifier() and not RESERVED.match(name):
             declared.append((name, 'element', f"{entry_prefix}[{k}]"))
-    elements = {}
+    elements = set()
     for name, use, entry in declared:
-        if use == 'element' and name in elements:
-            raise CircuitError(f"duplicate element name {name!r}", entry=entry)
-        elements.setdefault(name, entry)
+        if use == 'element':
+            if name in elements:
+                raise CircuitError(f"duplicate element name {name!r}", entry=entry)
+            elements.add(name)
     check_names(declared, 'circuit', CircuitError)
