@@ -410,10 +410,10 @@ def _check_keys(data, allowed, entry, source, what):
 
 
 def _names(data, key, source, required=True, limit=None):
-    value = data.get(key, [] if not required else None)
-    if value is None:
+    if key not in data and required:
         raise DescriptionError(f"missing key {key!r} (a list of symbol names)",
                                entry=key, source=source)
+    value = data.get(key, [])
     if not isinstance(value, list):
         raise DescriptionError(f"expected a list of symbol names, got {brief(value)}",
                                entry=key, source=source)
@@ -581,7 +581,7 @@ def mechanical_system_from_dict(data, source=None):
                                 parameters=[motion.parse(p) for p in parameters],
                                 force_function=field, dissipation=dissipation,
                                 forces=forces, name=name)
-    except ModelError as err:
+    except DynSymError as err:
         raise err.with_context(source=source) from None
 
 

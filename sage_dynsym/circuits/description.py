@@ -31,7 +31,7 @@ EXAMPLES::
     ...
     CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
 """
-from ..errors import CircuitError, DescriptionError, brief
+from ..errors import DescriptionError, DynSymError, brief
 from ..names import check_name
 from .circuit import Circuit
 from .elements import PREFIXES
@@ -126,7 +126,7 @@ def circuit_from_dict(data, source=None):
         check_name(p, f"parameters[{i}]", source=source)
     try:
         return Circuit(branches, name=name, parameters=parameters)
-    except CircuitError as err:
+    except DynSymError as err:
         raise err.with_context(source=source) from None
 
 

@@ -360,7 +360,8 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
     _check_declared(entries, parameters, entry_prefix)
     names = set(str(p) for p in parameters)
     for item in entries:    # element names are symbols usable in values
-        if isinstance(item, (list, tuple)) and len(item) == 3 and isinstance(item[2], str):
+        if isinstance(item, (list, tuple)) and len(item) == 3 and isinstance(item[2], str) \
+                and item[2].isidentifier():
             names.add(item[2])
         elif isinstance(item, dict):
             for key in ('name', 'value'):
