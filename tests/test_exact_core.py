@@ -12,11 +12,12 @@ parabolas, planes).
 import itertools
 import random
 
+import numpy as np
 import pytest
 from sage.all import (SR, QQ, var, sqrt, sin, cos, matrix, function, diff, identity_matrix)
 
 from sage_dynsym import Lagrangian
-from sage_dynsym.analysis.conditions import holds
+from sage_dynsym.analysis.conditions import holds, region_holds
 from sage_dynsym.analysis.linear import LinearSystem, linearize
 from sage_dynsym.analysis.solving import solve_exactly
 from sage_dynsym.analysis.stationary import stationary_solutions
@@ -264,6 +265,20 @@ def test_characteristic_polynomial_with_unspecified_derivative():
     p = LinearSystem([x, y], J=J).characteristic_polynomial(lam)
     ref = (lam * identity_matrix(SR, 2) - J.subs({diff(f(u), u): s})).det()
     assert (p.subs({diff(f(u), u): s}) - ref).expand() == 0
+    # through a stability verdict: x'' + k x = 0 with the stiffness k = f'(c)
+    # of an unspecified characteristic is a centre for k > 0 (energy
+    # y^2/2 + k x^2/2 definite), a saddle for k < 0 (numpy eigenvalues)
+    k = diff(f(u), u)
+    sols = stationary_solutions([y**2 / 2 + k * x**2 / 2], [x, y], equations=[y, -k * x])
+    v = sols[0].stability()
+    cases = v.cases() if v.verdict() == 'depends on the parameters' else [v]
+    for kv in (QQ(3), QQ(-2)):
+        ev = np.linalg.eigvals(np.array([[0.0, 1.0], [-float(kv), 0.0]]))
+        got = [(cs.verdict(), cs.method()) for cs in cases if region_holds(cs.region(), {k: kv})]
+        if max(ev.real) > 1e-9:
+            assert got == [('unstable', 'first approximation')]
+        else:
+            assert got == [('stable', 'Routh-Lyapunov')]
 
 
 def test_heavy_top_in_euler_angles_at_theta_zero_names_theta():
