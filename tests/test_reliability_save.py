@@ -21,7 +21,8 @@ from sage_dynsym.description import example_path
 WRITER = textwrap.dedent("""
     import sys
     from sage_dynsym import save
-        path, n = sys.argv[1], int(sys.argv[2])
+    from sage_dynsym.circuits import Circuit
+    path, n = sys.argv[1], int(sys.argv[2])
     branches = [[0, 1, 'E1']]
     for k in range(1, n + 1):
         branches += [[2*k - 1, 2*k, f'R{k}'], [2*k, 2*k + 1, f'L{k}'], [2*k + 1, 0, f'C{k}']]
