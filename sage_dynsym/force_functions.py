@@ -112,7 +112,7 @@ class NewtonianField(SageObject):
         ....:                  inertia=diagonal_matrix([0, 2*b^2, 2*b^2]))
         sage: S = MechanicalSystem([body], [phi], force_function=NewtonianField(nu, r, [1, 0, 0]))
         sage: U = S.force_function(); U
-        -3*b^2*nu*sin(phi)^2/r^3 + 2*b^2*nu/r^3 + 2*nu/r
+        ((3*cos(phi)^2 - 1)*b^2 + 2*r^2)*nu/r^3
 
     This is the expansion of the exact `\nu/|R_1| + \nu/|R_2|`,
     `|R_{1,2}|^2 = r^2 \pm 2 r b\cos\varphi + b^2`, to order `b^2/r^3`
