@@ -115,7 +115,8 @@ def circuit_from_dict(data, source=None):
         raise DescriptionError(f"expected a text, got {brief(name)}", entry='name', source=source)
     name = title(data, 'name', source)
     parameters = data.get('parameters', [])
-    if not isinstance(parameters, list):
+    if not isinstance(parameters, list) or not all(
+            isinstance(p, str) and p.isidentifier() for p in parameters):
         raise DescriptionError(f"expected a list of symbol names, got {brief(parameters)}",
                                entry='parameters', source=source)
     if len(parameters) > MAX_PARAMETERS:
