@@ -274,8 +274,11 @@ def _mechanical(system, out):
             out.lines.append("Stationary motions: not available (the Routh function is not)")
         else:
             def stationary(lines):
-                out.check("the stationary motions (terms of the function at rest)",
-                          polynomial_terms((R or L).expr()))
+                # the solver splits the system into cases: up to 2^k for k unknowns
+                F = R or L
+                out.check("the stationary motions (terms of the function at rest times 2^k "
+                          "for k unknowns)",
+                          polynomial_terms(F.expr()) * 2 ** len(F.coordinates()))
                 _stationary(L, cyclic, lines)
             out.run("Stationary motions" if partial else "Equilibria", stationary)
     if out.want('hamiltonian'):

@@ -259,6 +259,7 @@ def cases():
         "newtonian_missing_key", "  uniform_gravity: [0, 0, -g]\n",
         "  newtonian: {nu: g, r: l}\n"), "error", "missing key")
     add("long_model_name", pendulum("x" * 5000), "error", "MAX_TITLE_LENGTH")
+    add("ok_coordinates_50", many_coordinates("ok_coordinates_50", 50, chain=False), "ok")
     add("coordinates_60", many_coordinates("coordinates_60", 60), "error", "MAX_COORDINATES")
     add("coordinates_500", many_coordinates("coordinates_500", 500), "error", "MAX_COORDINATES")
     add("bodies_60", many_coordinates("bodies_60", 40).replace(
