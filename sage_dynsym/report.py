@@ -223,10 +223,12 @@ def _formula(lines, label, expr, indent="  "):
 def lagrangian_estimate(system):
     r"""
     The size estimate of a mechanical system's Lagrangian, checked before it
-    is derived: `n^2 2^r` polynomial terms for `n` coordinates (the entries
-    of the mass matrix) and `r` the most angles that vary along one chain of
-    bodies from the inertial frame (each such rotation at most doubles the
-    terms of a direction cosine).
+    is derived: `n^2 2^r T^2` polynomial terms for `n` coordinates (the
+    entries of the mass matrix), `r` the most angles that vary along one
+    chain of bodies from the inertial frame (each such rotation at most
+    doubles the terms of a direction cosine) and `T` the most terms of one
+    datum of the description (a mass, an inertia entry, a vector component,
+    the force function), squared as velocities are.
 
     EXAMPLES::
 
@@ -235,13 +237,54 @@ def lagrangian_estimate(system):
         sage: from sage_dynsym.report import lagrangian_estimate
         sage: lagrangian_estimate(load(example_path('spherical_pendulum.yaml')))
         16
+        sage: from sage_dynsym import MechanicalSystem, RigidBody
+        sage: x, m, k = var('x m k')
+        sage: lagrangian_estimate(MechanicalSystem([RigidBody('b', joint=[x, 0, 0],
+        ....:                                               mass=(m + k)^3)], [x]))
+        16
     """
-    depth = [0]
+    from .force_functions import UniformGravity, NewtonianField
+    depth, data = [0], []
     for k, body in enumerate(system.bodies(), 1):
         turning = sum(1 for _, angle in body.rotations() if SR(angle).variables())
         depth.append(depth[system.parent_index(k)] + turning)
+        data += [body.mass()] + body.inertia().list() + list(body.joint())
+        data += list(body.velocity() or ()) + list(body.mass_center())
+    field = system.force_field()
+    if isinstance(field, UniformGravity):
+        data += list(field.acceleration())
+    elif isinstance(field, NewtonianField):
+        nu, r, e = field.parameters()
+        data += [nu, r] + list(e)
+    elif field is not None:
+        data.append(field)
+    largest = max([polynomial_terms(e) for e in data] + [1])
     n = len(system.coordinates())
-    return n ** 2 * 2 ** max(depth)
+    return min(n ** 2 * 2 ** max(depth) * largest ** 2, _TERMS_CAP)
+
+
+def circuit_estimate(circuit):
+    r"""
+    The size estimate of a circuit's mixed potential and state equations
+    (and of its loop Lagrangian), checked before they are derived: the
+    number of branches times the square of the most terms of one element
+    value (a value is integrated, and multiplied by currents and voltages
+    that are sums over the loops).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: from sage_dynsym.report import circuit_estimate
+        sage: circuit_estimate(Circuit([[1, 2, 'R1'], [2, 1, 'C1']]))
+        2
+        sage: circuit_estimate(Circuit([[1, 2, 'R1'], {'from': 2, 'to': 1, 'kind': 'capacitor',
+        ....:     'name': 'C1', 'value': '(u + C0)^2'}], parameters=['C0']))
+        18
+    """
+    values = [b.value for b in circuit.branches() if b.value is not None]
+    values += [c.value for c in circuit.couplings()]
+    largest = max([polynomial_terms(v) for v in values] + [1])
+    return min(len(circuit.branches()) * largest ** 2, _TERMS_CAP)
 
 
 def _mechanical(system, out):
@@ -251,7 +294,8 @@ def _mechanical(system, out):
                      f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
 
     def lagrangian(lines):
-        out.check("the Lagrangian (n^2 2^r: coordinates and varying angles along a chain)",
+        out.check("the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a chain, "
+                  "terms of the data)",
                   lagrangian_estimate(system))
         L = system.lagrangian()
         if out.want('lagrangian'):
@@ -484,12 +528,18 @@ def _circuit(circuit, out):
     from .errors import CircuitError
     out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
                      f"branches on {len(circuit.nodes())} nodes) ==")
+    estimate = circuit_estimate(circuit)
     if out.want('mixed_potential', 'state_equations', 'lyapunov'):
-        try:
-            equations = circuit.state_equations()
-        except CircuitError as err:
-            out.lines.append(f"No Brayton-Moser form: {err}")
-        else:
+        def brayton_moser(lines):
+            out.check("the Brayton-Moser form (branches times the squared terms of the "
+                      "largest element value)", estimate)
+            try:
+                return circuit.state_equations()
+            except CircuitError as err:
+                lines.append(f"No Brayton-Moser form: {err}")
+                return None
+        equations = out.run("Brayton-Moser form", brayton_moser)
+        if equations is not None:
             if out.want('mixed_potential'):
                 def potential(lines):
                     lines.append("Mixed potential P(i, u):")
@@ -512,10 +562,17 @@ def _circuit(circuit, out):
                 out.run("dP/dt", lyapunov)
     if not out.want('lagrangian', 'equations', 'stability'):
         return
-    try:
-        L = circuit.lagrangian(method="loop")
-    except CircuitError as err:
-        out.lines.append(f"No loop Lagrangian: {err}")
+
+    def loop_lagrangian(lines):
+        out.check("the loop Lagrangian (branches times the squared terms of the largest "
+                  "element value)", estimate)
+        try:
+            return circuit.lagrangian(method="loop")
+        except CircuitError as err:
+            lines.append(f"No loop Lagrangian: {err}")
+            return None
+    L = out.run("Loop Lagrangian", loop_lagrangian)
+    if L is None:
         return
     if out.want('lagrangian'):
         def lagrangian(lines):
@@ -581,7 +638,7 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
         sage: pendulum = load(example_path('spherical_pendulum.yaml'))
         sage: print(report(pendulum, budget=10))
         == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
-        Lagrangian: skipped, the Lagrangian (n^2 2^r: coordinates and varying angles along a chain): about 16 polynomial terms, over the budget of 10 (raise it with --budget)
+        Lagrangian: skipped, the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a chain, terms of the data): about 16 polynomial terms, over the budget of 10 (raise it with --budget)
         sage: print(report(pendulum, sections=['hamiltonian', 'stationary'], analysis=False))
         == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
         Hamiltonian:

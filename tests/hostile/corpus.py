@@ -138,6 +138,12 @@ def cases():
     add("ok_ladder_300", ladder("ok_ladder_300", 300), "ok")
     add("ok_current_source_cut_set", "kind: circuit\nname: ok_current_source_cut_set\n"
         "branches:\n  - [0, 1, I1]\n  - [1, 2, R1]\n  - [2, 0, C1]\n", "ok")
+    add("ok_huge_mass_expansion", slider("ok_huge_mass_expansion", "m, l, g, k",
+                                         mass="(x + m + l + g + k)^1000"), "ok")
+    add("ok_huge_capacitance_expansion", rlc("ok_huge_capacitance_expansion", extra="parameters: "
+        "[C0, L0, M, K]\n", more="  - {from: 3, to: 0, kind: capacitor, name: C2, value: "
+        "'(u + C0 + L0 + M + K)^1000'}\n  - {from: 3, to: 0, kind: nonlinear_resistor, name: f1,"
+        " value: '(u + C0 + L0 + M + K)^1000'}\n"), "ok")
     add("ok_positive_values", rlc("ok_positive_values", more="  - {from: 3, to: 0, kind: "
         "resistor, name: R2, value: 2.5}\n"), "ok")
 
