@@ -451,7 +451,14 @@ def _check_routh_scheme(poly, lam, budget):
     # which stops before a product of more than ``budget`` pairs of terms:
     # run it with the budget first (the costly products are not made)
     from sage.rings.rational_field import QQ
-    from .analysis.hurwitz import _normalized_coefficients, _routh_scheme
+    try:
+        from .analysis.hurwitz import _normalized_coefficients, _routh_scheme
+    except ImportError:     # without the probe: the products of the coefficients
+        if polynomial_terms(poly) ** 2 > budget:
+            raise BudgetError("the Lienard-Chipart conditions (the square of the terms of "
+                              "the characteristic polynomial)",
+                              estimate=polynomial_terms(poly) ** 2, budget=budget) from None
+        return
     a = _normalized_coefficients(poly, lam)
     n = len(a) - 1
     if n < 2 or a[0].parent() is QQ:
