@@ -276,8 +276,14 @@ def read_yaml(path):
         Traceback (most recent call last):
         ...
         DescriptionError: ...: cannot read the file: not a regular file
+        sage: read_yaml(0)
+        Traceback (most recent call last):
+        ...
+        DescriptionError: 0: expected a file name, got 0
     """
     source = str(path)
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise DescriptionError(f"expected a file name, got {brief(path)}", source=brief(path))
     try:
         if not stat.S_ISREG(os.stat(path).st_mode):
             raise DescriptionError("cannot read the file: not a regular file", source=source)
