@@ -19,8 +19,9 @@ like the function). This module lists those names in one place:
   the multipliers ``u<k>``, ``v<k>`` of Dirac's scheme; in circuits the
   state variables ``i<k>`` (inductor currents) and ``u<k>`` (capacitor
   voltages), the loop charges ``q<k>``, the node potentials ``phi<k>`` and
-  their velocities and momenta, and the placeholders ``i``, ``u`` of an
-  element's own current and voltage;
+  their velocities and momenta, the placeholders ``i``, ``u`` of an
+  element's own current and voltage, and ``D``, ``diff``, ``integrate``
+  (printed in derivatives and integrals of the characteristics);
 - names beginning or ending with an underscore and names beginning with
   ``dynsym`` or ``qe_unknown``, kept for the package's internal symbols.
 
@@ -91,6 +92,8 @@ CIRCUIT_PATTERNS = COMMON_PATTERNS + (
     (r'dd(q\d+|phi\w*)', 'the acceleration of a loop charge or node potential'),
     (r'p_(q\d+|phi\w*)', 'the momentum of a loop charge or node potential'),
     (r'v[1-9]\d*', "a gauge multiplier of Dirac's scheme (v<k>)"),
+    (r'D|diff|integrate', "a name Sage prints in derivatives and integrals of the "
+                          "characteristics f<k>"),
 )
 
 _COMPILED = {}
