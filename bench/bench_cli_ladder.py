@@ -76,7 +76,11 @@ def main(argv=None):
     parser.add_argument("--timeout", type=float, default=300, help="seconds per run")
     args = parser.parse_args(argv)
     sizes = [3, 40] if args.quick else [int(n) for n in args.sizes.split(",")]
-    folder = tempfile.mkdtemp(prefix="bench_cli_ladder_")
+    with tempfile.TemporaryDirectory(prefix="bench_cli_ladder_") as folder:
+        return _bench(sizes, args, folder)
+
+
+def _bench(sizes, args, folder):
     print(f"{'load':9} {'N':>4} {'run':10} {'seconds':>8} {'peak MB':>8} {'report chars':>13}"
           "  skipped for the budget / status")
     verdicts = []
