@@ -34,6 +34,8 @@ from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import momentum
+from .lagrangian import _Elimination, _linear_collected
+from .trig import trig_rational_simplify, NotPolynomial
 
 
 def poisson_bracket(f, g, coordinates, momenta):
@@ -106,19 +108,34 @@ class Hamiltonian(SageObject):
             self._legendre_general()
 
     def _legendre_natural(self):
-        # dq = A^{-1} (p - A1) with A^{-1} = adj(A)/det(A), each entry
-        # normalized by GiNaC (cancelling common factors): no Gaussian
-        # elimination with symbolic pivots, no Maxima
         A, A1, A0 = self._lagrangian.decomposition()
         n = A.nrows()
         shifted = [p - a for p, a in zip(self._momenta, A1)]
+        velocities = self._lagrangian.velocities()
+        try:
+            elimination = _Elimination(A)
+        except NotPolynomial:
+            elimination = None
+        if elimination is not None:
+            # H = 1/2 (p - A1) A^{-1} (p - A1) - A0 as a sum of squares over
+            # the pivots of A (textbook form, e.g. the heavy top's
+            # p_theta^2/(2A) + (p_psi - p_phi cos)^2/(2A sin^2) + p_phi^2/(2C))
+            self._velocity_map = {v: _linear_collected(x, self._momenta) for v, x in
+                                  zip(velocities, elimination.solve(shifted))}
+            self._expr = (SR(0).add(*elimination.squares(shifted, self._momenta)) / 2
+                          - trig_rational_simplify(A0))
+            return
+        # mass matrices too large for the simplifications (or with inexact
+        # numbers): dq = A^{-1} (p - A1) with A^{-1} = adj(A)/det(A),
+        # each entry normalized by GiNaC (cancelling common factors): no
+        # Gaussian elimination with symbolic pivots, no Maxima
         if A.is_diagonal():
             inverse = matrix(SR, n, n, {(i, i): 1 / A[i, i] for i in range(n)})
         else:
             det = A.det()
             inverse = A.adjugate().apply_map(lambda e: (e / det).normalize())
         self._velocity_map = {v: sum(inverse[i, j] * shifted[j] for j in range(n))
-                              for i, v in enumerate(self._lagrangian.velocities())}
+                              for i, v in enumerate(velocities)}
         quadratic = sum(inverse[i, i] * shifted[i] ** 2 for i in range(n)) / 2 + sum(
             inverse[i, j] * shifted[i] * shifted[j] for i in range(n) for j in range(i + 1, n))
         self._expr = quadratic - A0

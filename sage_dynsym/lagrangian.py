@@ -116,6 +116,15 @@ class _Elimination:
     If only zero diagonal entries remain, the rest of the matrix is
     inverted as a block (adjugate over determinant).
 
+    INPUT:
+
+    - ``A`` -- a symmetric invertible matrix over ``SR``
+    - ``simplify`` -- (default: :func:`~sage_dynsym.trig.trig_rational_simplify`
+      with ``strict=True``) the simplification of every entry, which must
+      turn zero into zero (the pivots are tested); the default raises
+      :class:`~sage_dynsym.trig.NotPolynomial` where it cannot decide
+      (inexact numbers, too large fractions)
+
     EXAMPLES::
 
         sage: from sage_dynsym.lagrangian import _Elimination
@@ -132,12 +141,22 @@ class _Elimination:
         sage: E = _Elimination(matrix([[0, 1], [1, 0]]))
         sage: E.squares([p, q]), E.solve([p, q])
         ([2*p*q], [q, p])
+        sage: _Elimination(matrix([[0.5*sin(a)^2]]))
+        Traceback (most recent call last):
+        ...
+        NotPolynomial: 0.500000000000000 is not a rational number
+        sage: E = _Elimination(matrix([[0.5*sin(a)^2]]), simplify=lambda e: e.normalize())
+        sage: E.squares([p])
+        [2.00000000000000*p^2/sin(a)^2]
     """
 
-    def __init__(self, A):
+    def __init__(self, A, simplify=None):
+        if simplify is None:
+            def simplify(e):
+                return trig_rational_simplify(e, strict=True)
         n = A.nrows()
         self._n = n
-        S = {(i, j): trig_rational_simplify(A[i, j]) for i in range(n) for j in range(i, n)}
+        S = {(i, j): simplify(A[i, j]) for i in range(n) for j in range(i, n)}
 
         def entry(i, j):
             return S[min(i, j), max(i, j)]
@@ -149,10 +168,9 @@ class _Elimination:
             nonzero = [i for i in remaining if not entry(i, i).is_trivial_zero()]
             if not nonzero:
                 block = matrix(SR, [[entry(i, j) for j in remaining] for i in remaining])
-                det = trig_rational_simplify(block.det())
+                det = simplify(block.det())
                 self._block = remaining
-                self._block_inverse = block.adjugate().apply_map(
-                    lambda e: trig_rational_simplify(e / det))
+                self._block_inverse = block.adjugate().apply_map(lambda e: simplify(e / det))
                 break
             k = min(nonzero, key=lambda i: len(str(entry(i, i))))
             remaining.remove(k)
@@ -160,11 +178,11 @@ class _Elimination:
             self._order.append(k)
             self._pivots.append(d)
             for i in remaining:
-                self._multipliers[i, k] = trig_rational_simplify(entry(i, k) / d)
+                self._multipliers[i, k] = simplify(entry(i, k) / d)
             for a, i in enumerate(remaining):
                 for j in remaining[a:]:
                     key = min(i, j), max(i, j)
-                    S[key] = trig_rational_simplify(S[key] - self._multipliers[i, k] * entry(k, j))
+                    S[key] = simplify(S[key] - self._multipliers[i, k] * entry(k, j))
 
     def _reduced(self, u):
         # forward substitution L y = P u (the block indices last)

@@ -37,7 +37,7 @@ from sage.symbolic.ring import SR
 from .errors import ModelError
 from .expressions import momentum
 from .lagrangian import Lagrangian, _Elimination, _linear_collected
-from .trig import trig_rational_simplify
+from .trig import trig_rational_simplify, NotPolynomial
 
 
 class RouthFunction(Lagrangian):
@@ -108,7 +108,12 @@ class RouthFunction(Lagrangian):
             raise ModelError("the momentum equations cannot be solved for the cyclic "
                              "velocities (the block of the mass matrix is singular)",
                              entry="cyclic")
-        elimination = _Elimination(A_cc)
+        try:
+            elimination = _Elimination(A_cc)
+        except NotPolynomial:
+            # inexact numbers, or entries too large to simplify: GiNaC's
+            # normalization (it may miss zero pivots modulo cos^2+sin^2 = 1)
+            elimination = _Elimination(A_cc, simplify=lambda e: SR(e).normalize())
         dq_p = [dq_all[j] for j in positional]
         v = [c - A1[i] for c, i in zip(self._momenta, index)]
         X = {j: [A[i, j] for i in index] for j in positional}

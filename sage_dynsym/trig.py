@@ -106,6 +106,9 @@ _FACTOR_TERMS = 40
 # Beyond this many terms only the first normal form is written (see
 # TrigPolynomialRing.simplest_fraction).
 _SHAPE_TERMS = 300
+# trig_rational_simplify gives up on fractions with more terms: the
+# greatest common divisors of nested denominators would take minutes.
+_FRACTION_TERMS = 2000
 
 
 def _content(element):
@@ -421,13 +424,16 @@ class TrigPolynomialRing:
                  for e, group in groups.items()]
         return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
 
-    def fraction(self, expr):
+    def fraction(self, expr, limit=None):
         r"""
         ``expr``, a rational function of the generators of the ring (see
         :meth:`for_expressions` with ``fractions=True``), as a pair
         ``(numerator, denominator)`` of ring elements.
 
-        Raises :class:`NotPolynomial` if ``expr`` is not such a function.
+        Raises :class:`NotPolynomial` if ``expr`` is not such a function, or
+        if numerator or denominator of a part get more than ``limit`` terms
+        (common denominators of nested fractions grow fast, and their
+        greatest common divisors take minutes).
 
         EXAMPLES::
 
@@ -440,6 +446,11 @@ class TrigPolynomialRing:
         """
         one, zero = self.ring.one(), self.zero
         elements = self._elements
+
+        def checked(n, d):
+            if limit is not None and n.number_of_terms() + d.number_of_terms() > limit:
+                raise NotPolynomial(f"the fraction has more than {limit} terms")
+            return n, d
 
         def walk(e):
             element = elements.get(e)
@@ -457,19 +468,20 @@ class TrigPolynomialRing:
                 denominator = one
                 for d in groups:
                     denominator = denominator.lcm(d)
-                return sum((n * (denominator // d) for d, n in groups.items()), zero), denominator
+                return checked(sum((n * (denominator // d) for d, n in groups.items()), zero),
+                               denominator)
             if op is mul_vararg:
                 n, d = one, one
                 for x in e.operands():
                     xn, xd = walk(x)
-                    n, d = n * xn, d * xd
+                    n, d = checked(n * xn, d * xd)
                 return n, d
             if op is operator.pow:
                 base, exponent = e.operands()
                 if exponent.is_numeric() and isinstance(exponent.pyobject(), Integer):
                     n, d = walk(base)
                     k = int(exponent)
-                    return (n ** k, d ** k) if k >= 0 else (d ** -k, n ** -k)
+                    return checked(*((n ** k, d ** k) if k >= 0 else (d ** -k, n ** -k)))
             raise NotPolynomial(f"{e} is not a rational function of the generators")
 
         return walk(SR(expr))
@@ -661,7 +673,7 @@ class RingCalculus:
         return self.ring.to_symbolic(element, reduced=True)
 
 
-def trig_rational_simplify(expr):
+def trig_rational_simplify(expr, strict=False):
     r"""
     Simplify a rational function of sines, cosines and other symbols
     modulo `\cos^2 + \sin^2 = 1`, whatever the angles: coordinates,
@@ -673,6 +685,11 @@ def trig_rational_simplify(expr):
     arguments. See :meth:`TrigPolynomialRing.simplest_fraction`: the result
     is the shortest of several normal forms, or ``expr`` itself if that is
     shorter; it is zero if ``expr`` is zero modulo the identity. No Maxima.
+
+    Expressions that are not rational in the generators (inexact numbers),
+    or whose common denominator gets more than 2000 terms, are returned
+    unchanged; with ``strict=True`` they raise :class:`NotPolynomial`
+    instead (for callers that need the zero test).
 
     EXAMPLES::
 
@@ -691,8 +708,21 @@ def trig_rational_simplify(expr):
 
         sage: trig_rational_simplify(SR(0)), trig_rational_simplify(0.5*sin(x)^2 + 0.5*cos(x)^2)
         (0, 0.500000000000000*cos(x)^2 + 0.500000000000000*sin(x)^2)
+        sage: trig_rational_simplify(0.5*sin(x)^2, strict=True)
+        Traceback (most recent call last):
+        ...
+        NotPolynomial: 0.500000000000000 is not a rational number
+        sage: y, z = var('y z')
+        sage: e = sum(1/(x + k*y + k^2*z + 1) for k in range(30))
+        sage: trig_rational_simplify(e) is e
+        True
+        sage: trig_rational_simplify(e, strict=True)
+        Traceback (most recent call last):
+        ...
+        NotPolynomial: the fraction has more than 2000 terms
     """
     expr = SR(expr)
+    original = expr
     try:
         ring = TrigPolynomialRing.for_expressions([expr], fractions=True)
         inner = {}
@@ -705,7 +735,9 @@ def trig_rational_simplify(expr):
         if inner:
             expr = expr.subs(inner)
             ring = TrigPolynomialRing.for_expressions([expr], fractions=True)
-        simplest = ring.simplest_fraction(*ring.fraction(expr))
+        simplest = ring.simplest_fraction(*ring.fraction(expr, limit=_FRACTION_TERMS))
     except NotPolynomial:
-        return expr
-    return simplest if len(str(simplest)) <= len(str(expr)) else expr
+        if strict:
+            raise
+        return original
+    return simplest if len(str(simplest)) <= len(str(original)) else original
