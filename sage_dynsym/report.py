@@ -427,7 +427,7 @@ def _linear_circuit_stability(circuit, L, lines, out):
     out.check("the characteristic polynomial (permanent bound of the determinant)",
               characteristic_estimate(free))
     system = linearize(free, {q: 0 for q in free.coordinates()})
-    poly = system.characteristic_polynomial(lam)
+    poly = system.characteristic_polynomial(lam, positive=values)
     lines.append("Stability of the free circuit (sources off), loop method:")
     _formula(lines, "characteristic polynomial: ", poly)
     if poly.subs({lam: 0}).is_zero():

@@ -118,9 +118,6 @@ def test_definiteness_with_a_declared_positive():
     assert not mismatches, mismatches[:3]
 
 
-@pytest.mark.xfail(strict=True, reason="sylvester_conditions turns a condition "
-                   "'f != 0' of definiteness_conditions into the expression -f "
-                   "(meaning -f > 0)")
 def test_sylvester_conditions_agree_with_eigenvalues():
     # diag(1, a/b^2) is positive definite iff a > 0 and b != 0: at a = b = 1
     # every expression returned must be positive

@@ -204,16 +204,11 @@ def test_irrational_and_complex_points():
         assert all(same_value(s.values()[x]**2, d) for s in sols)
 
 
-@pytest.mark.xfail(strict=True, reason="a component over Q of positive dimension is "
-                   "reported even when it has no real point (x^2 + y^2 + 1 = 0)")
 def test_curve_without_real_points_is_dropped():
     # x^2 + y^2 + 1 > 0 everywhere on R^2: no real solution
     assert solve_exactly([x**2 + y**2 + 1], [x, y]).is_empty()
 
 
-@pytest.mark.xfail(strict=True, reason="the real points of a component are not "
-                   "distinguished from its complex dimension: x^2 + y^2 = 0 is reported "
-                   "as a 1-parameter family, the isolated real equilibrium (0, 0) is lost")
 def test_quartic_well_has_one_isolated_equilibrium():
     # V = (x^2 + y^2)^2 / 4: grad V = (x^2 + y^2)*(x, y) vanishes on R^2 only
     # at the origin (x^2 + y^2 > 0 elsewhere)

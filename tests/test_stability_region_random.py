@@ -262,10 +262,6 @@ def test_symmetric_top_axis_rotation_with_a_free_multiplier(qepcad_calls):
         assert numerically_definite(np.eye(2) / float(vals[A]), [2 * np.eye(2)], 'positive')
 
 
-@pytest.mark.xfail(strict=True, reason="with equations= the degenerate component (every "
-                   "point is a conditional extremum: H is constant on the circles "
-                   "|M|^2 = c, M3 = d, an invariant-manifold family) makes "
-                   "stationary_solutions raise instead of reporting it")
 def test_symmetric_top_with_its_equations_of_motion():
     # spec 3.1: degenerate stationarity equations define invariant manifolds;
     # the rotation about the symmetry axis is still an equilibrium of X
@@ -279,10 +275,6 @@ def test_symmetric_top_with_its_equations_of_motion():
 # treated as free
 # ---------------------------------------------------------------------------
 
-@pytest.mark.xfail(strict=True, reason="free_multipliers() counts a multiplier that an "
-                   "implicit family fixes through its equations as free; stability_region "
-                   "then eliminates it with 'exists' and claims both positive and "
-                   "negative definiteness on the whole family")
 def test_multiplier_fixed_on_an_implicit_family():
     # conditional extrema of H = x^4/4 + y^2/2 + x y on the circles
     # V = (x^2 + y^2)/2 = r^2/2: a curve of stationary points, on which

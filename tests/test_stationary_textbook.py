@@ -391,8 +391,6 @@ def test_mexican_hat_circle_and_origin():
     assert cases_at(rest.stability(), {}) == UNSTABLE_FA
 
 
-@pytest.mark.xfail(strict=True, reason="is_degenerate() evaluates the Hessian at a "
-                   "generic point, not on the implicit component x^2 + y^2 = 1")
 def test_mexican_hat_circle_is_degenerate():
     # spec 3.1: a singular Hessian on the solutions means an invariant
     # manifold; numpy: the Hessian has a zero eigenvalue on the circle
@@ -400,9 +398,6 @@ def test_mexican_hat_circle_is_degenerate():
     assert circle.is_degenerate()
 
 
-@pytest.mark.xfail(strict=True, reason="StationarySolution.check substitutes the free "
-                   "variables without reducing modulo the component's equations, so a "
-                   "correct implicit family is rejected")
 def test_mexican_hat_with_its_equations_of_motion():
     # x' = px, y' = py, p' = -grad V conserve H = |p|^2/2 + V; the
     # stationary set of H is p = 0 with grad V = 0, which annuls the

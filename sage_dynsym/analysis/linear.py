@@ -723,6 +723,9 @@ def _linearize_lagrangian(L, at):
     mat = lambda xs: matrix(SR, [[_tidy(_at(e.diff(x), point)) for x in xs] for e in E])
     M = mat(ddq)
     if _is_zero(_fraction_free_det(M)):
-        kinetic = matrix(SR, [[e.diff(x) for x in ddq] for e in E]).det()
-        raise _singularity(kinetic, point, what="the kinetic matrix is singular")
+        # singular at this point only: a chart singularity (a kinetic matrix
+        # singular everywhere -- loops without inductance -- is structural)
+        kinetic = matrix(SR, [[e.diff(x) for x in ddq] for e in E])
+        if not _is_zero(_fraction_free_det(kinetic)):
+            raise _singularity(kinetic.det(), point, what="the kinetic matrix is singular")
     return LinearSystem(q, M=M, S=mat(dq), W=mat(q))

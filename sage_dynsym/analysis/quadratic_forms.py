@@ -170,6 +170,8 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
         sage: x = var('x')
         sage: sylvester_conditions(x^2/g, [x]), sylvester_conditions(x^2/g, [x], positive=[g])
         ([g], [])
+        sage: a, b = var("a b"); sylvester_conditions(matrix([[1, 0], [0, a/b^2]]))
+        [a, b^2]
 
     TESTS::
 
@@ -186,8 +188,9 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
     conditions = definiteness_conditions(quadratic_form_or_matrix, variables, sign, positive)
     if conditions is None:
         return [SR(-1)]
-    return [c.lhs() - c.rhs() if c.operator().__name__ == 'gt' else c.rhs() - c.lhs()
-            for c in conditions]
+    # as expressions e > 0: f < 0 is -f > 0, f != 0 is f^2 > 0
+    as_positive = {'gt': lambda d: d, 'lt': lambda d: -d, 'ne': lambda d: d ** 2}
+    return [as_positive[c.operator().__name__](c.lhs() - c.rhs()) for c in conditions]
 
 
 def _det(A):

@@ -74,6 +74,7 @@ TESTS::
     [{x: -sqrt(2)}, {x: sqrt(2)}]
 """
 from sage.functions.trig import arccos, arcsin, arctan2
+from sage.matrix.constructor import matrix
 from sage.misc.misc_c import prod
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
@@ -86,8 +87,13 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from .conditions import positive_conditions, nonzero_conditions, conjunction
+from .decomposition import minimal_primes, shape, ShapePrime
 from .translation import Translation, NotAlgebraic
 
+
+#: Zero-dimensional components with parameters of a larger degree are not
+#: solved by radicals (they are returned implicitly).
+MAX_EXPLICIT_DEGREE = 16
 
 #: Implicit components are tested for real points by quantifier elimination
 #: only up to this many variables (parameters and unknowns together) ...
@@ -372,7 +378,8 @@ class AlgebraicSolution(SageObject):
             (False, [x^5 - x - 1])
         """
         subs = {k: v for k, v in self._ring_values.items()}
-        return [normalize(self._T.symbolic(r, subs)) for r in self._relations]
+        return [r if r.parent() is SR else normalize(self._T.symbolic(r, subs))
+                for r in self._relations]
 
     def is_explicit(self):
         r"""Whether every unknown is given explicitly (or is free).
@@ -490,7 +497,26 @@ class AlgebraicSolution(SageObject):
         plain = {k: v for k, v in subs.items() if k.is_symbol() and not
                  (self._T.is_angle(k))}
         e = e.subs(trig).subs(plain)
+        if self._relations and not isinstance(self._prime, ShapePrime):
+            reduced = self._reduce(e)
+            if reduced is not None:
+                return reduced
         return normalize(e)
+
+    def _reduce(self, expr):
+        r"""``expr`` (in the unknowns) in normal form modulo the component,
+        or ``None`` if it cannot be translated or its denominator vanishes
+        on the component."""
+        T = self._T
+        try:
+            f = T.fraction(expr)
+        except AnalysisError:
+            return None
+        num, den = T.to_ring(f.numerator()), T.to_ring(f.denominator())
+        num, den = self._prime.reduce(num), self._prime.reduce(den)
+        if den == 0:
+            return None
+        return normalize(T.symbolic(num) / T.symbolic(den))
 
     def contains(self, expr):
         r"""
@@ -588,11 +614,11 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         _log("the equations are inconsistent")
         return SolutionSet(T, [], n_eq)
     _log("decomposing into irreducible components")
-    primes = I.minimal_associated_primes() if I != P.ideal([P(0)]) else [I]
+    primes = minimal_primes(I, shapes=True)
     _log(f"{len(primes)} components")
     solutions = []
-    for prime in primes:
-        solutions += _solve_component(T, prime, counted_set, positive)
+    for prime, sh in primes:
+        solutions += _solve_component(T, prime, sh, counted_set, positive)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
 
@@ -650,13 +676,39 @@ def _free_unknowns(T, prime, counted):
     return free
 
 
-def _solve_component(T, prime, counted, positive):
-    free = _free_unknowns(T, prime, counted)
+def _solve_component(T, prime, sh, counted, positive):
+    free = [] if sh is not None else _free_unknowns(T, prime, counted)
     if free:
-        return [_family(T, prime, free, counted, positive)]
+        family = _family(T, prime, free, counted, positive)
+        if family is not None:
+            return [family]
+        return _singular_locus_solutions(T, prime, len(free), counted, positive)
     if T.field() is QQ:
-        return _rational_points(T, prime, counted)
+        return _rational_points(T, prime, sh, counted)
+    if sh is not None and sh[1].degree() > MAX_EXPLICIT_DEGREE:
+        return [_implicit(T, prime, counted, positive)]
     return _parametric_points(T, prime, counted, positive)
+
+
+def _singular_locus_solutions(T, prime, dimension, counted, positive):
+    r"""The real points of a component without smooth real points lie in
+    its singular locus: solve that (lower-dimensional) system."""
+    from itertools import combinations
+    P = prime.ring()
+    gens = list(prime.gens())
+    J = matrix(P, [[f.derivative(x) for x in P.gens()] for f in gens])
+    rank = P.ngens() - (dimension + len(T.circle_relations()))
+    minors = [J.matrix_from_rows_and_columns(list(r), list(c)).det()
+              for r in combinations(range(J.nrows()), rank)
+              for c in combinations(range(J.ncols()), rank)]
+    locus = P.ideal(gens + [m for m in minors if m != 0])
+    if locus.is_one():
+        return []
+    result = []
+    for Q, sh in minimal_primes(locus, shapes=True):
+        if Q.dimension() < prime.dimension():
+            result += _solve_component(T, Q, sh, counted, positive)
+    return result
 
 
 def _angle_value(c, s, c_sign=None, s_sign=None):
@@ -685,32 +737,57 @@ def _assemble(T, ring_values, signs):
     return values
 
 
-def _rational_points(T, prime, counted):
-    r"""Real points of a zero-dimensional component over `\QQ`, exactly."""
-    points = prime.variety(AA)
+def _rational_points(T, prime, sh, counted):
+    r"""Real points of a zero-dimensional prime over `\QQ`, exactly: the
+    coordinates as polynomials in a separating linear form (the shape
+    lemma), evaluated at the real roots of its minimal polynomial."""
+    found = sh if sh is not None else shape(prime)
+    if found is None:
+        points = prime.variety(AA)
+    else:
+        _, F, gs = found
+        gens = prime.ring().gens()
+        points = [{g: gi(z) for g, gi in zip(gens, gs)} for z in F.roots(AA, multiplicities=False)]
     if not points:
         return []
-    if all(a.minpoly().degree() <= 2 for p in points for a in p.values()):
+    if found is None or found[1].degree() <= 2:
         result = []
         for p in points:
             ring_values, signs = {}, {}
             for g, a in p.items():
-                ring_values[str(g)] = SR(a.radical_expression()) if a.minpoly().degree() == 2 \
-                    else SR(QQ(a))
+                ring_values[str(g)] = SR(QQ(a)) if a in QQ else SR(a.radical_expression())
             for i, u in enumerate(T.unknowns()):
                 if T.is_angle(u):
                     c, s = _unit_generators(T, i)
-                    sv = p[s]
-                    if sv != 0 and sv.minpoly().degree() <= 2:
-                        signs[str(s)] = 1 if sv > 0 else -1
+                    if p[s] != 0:
+                        signs[str(s)] = 1 if p[s] > 0 else -1
             values = _assemble(T, ring_values, signs)
             result.append(AlgebraicSolution(T, prime, [], counted, values, ring_values,
                                             [], []))
         return result
     symbolic = T.symbolic_generators()
     real = [{symbolic[k]: p[g] for k, g in enumerate(prime.ring().gens())} for p in points]
-    return [AlgebraicSolution(T, prime, [], counted, {}, {}, list(prime.gens()), [],
+    return [AlgebraicSolution(T, prime, [], counted, {}, {}, _defining(T, prime), [],
                               real_points=real)]
+
+
+def _defining(T, prime):
+    r"""Equations of a component: a lexicographic Gröbner basis of a small
+    zero-dimensional one (triangular: the first unknown alone first),
+    without the relations `\cos^2 + \sin^2 = 1`; its generators; or for a
+    :class:`~sage_dynsym.analysis.decomposition.ShapePrime` the radical's
+    generators and `G(u)` with `u` left unexpanded."""
+    if not isinstance(prime, ShapePrime):
+        gens = list(prime.gens())
+        if prime.dimension() == 0 and prime.vector_space_dimension() <= MAX_EXPLICIT_DEGREE:
+            P = prime.ring()
+            Pl = _lex_ring(P)
+            gens = [P(g) for g in Pl.ideal([Pl(g) for g in gens]).groebner_basis('libsingular:stdfglm')]
+            gens.reverse()
+        circle = {str(r) for r in T.circle_relations()}
+        return [g for g in gens if str(g) not in circle]
+    u, G = prime.defining_polynomial()
+    return list(prime.gens()) + [G.change_ring(SR)(T.symbolic(u))]
 
 
 def _lex_ring(P):
@@ -721,8 +798,12 @@ def _parametric_points(T, prime, counted, positive):
     r"""Zero-dimensional component over `\QQ(\text{parameters})`: along
     triangular sets, with radicals for steps of degree 2."""
     P = prime.ring()
+    degree = prime.vector_space_dimension()
+    # explicit values need a tower of quadratic steps: degree a power of 2
+    if degree & (degree - 1) or degree > MAX_EXPLICIT_DEGREE:
+        return [_implicit(T, prime, counted, positive)]
     Pl = _lex_ring(P)
-    _log(f"triangular decomposition of a component of degree {prime.vector_space_dimension()}")
+    _log(f"triangular decomposition of a component of degree {degree}")
     sets = Pl.ideal([Pl(g) for g in prime.gens()]).triangular_decomposition()
     result = []
     for tri in sets:
@@ -853,43 +934,155 @@ def _implicit(T, prime, counted, positive):
             pass
     if conditions is None:
         return []
-    return AlgebraicSolution(T, prime, [], counted, {}, {}, list(prime.gens()), conditions,
+    return AlgebraicSolution(T, prime, [], counted, {}, {}, _defining(T, prime), conditions,
                              reality_known=known)
 
 
 def _family(T, prime, free, counted, positive):
     r"""A component of positive dimension, parametrised by the unknowns
-    ``free``: other unknowns as rational functions of them where a Gröbner
-    basis in a block order has a linear equation for them."""
+    ``free``, or ``None`` if it has no real points of that dimension (then
+    its real points, if any, are found in its singular locus).
+
+    A Gröbner basis in a block order -- the bound unknowns not counted
+    (multipliers) above the bound counted ones above the free ones --
+    gives: multipliers as rational functions of the variables where it has
+    an equation linear in one multiplier; bound variables as rational
+    functions of the free ones where it has an equation linear in them;
+    the remaining equations are the relations of the family."""
     P = prime.ring()
     free_gens = [g for i in free for g in _unit_generators(T, i)]
     bound = [g for g in P.gens() if g not in free_gens]
     if not bound:
         return AlgebraicSolution(T, prime, free, counted, {}, {}, [], [])
-    order = TermOrder('degrevlex', len(bound)) + TermOrder('degrevlex', len(free_gens))
-    names = [str(g) for g in bound + free_gens]
+    index = {str(g): i for i in range(len(T.unknowns())) for g in _unit_generators(T, i)}
+    upper = [g for g in bound if index[str(g)] not in counted]
+    middle = [g for g in bound if index[str(g)] in counted]
+    blocks = [b for b in (upper, middle, free_gens) if b]
+    order = TermOrder('degrevlex', len(blocks[0]))
+    for b in blocks[1:]:
+        order = order + TermOrder('degrevlex', len(b))
+    names = [str(g) for b in blocks for g in b]
     Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
     basis = Pb.ideal([Pb(g) for g in prime.gens()]).groebner_basis()
-    bound_b = [Pb(str(g)) for g in bound]
+    upper_b = [Pb(str(g)) for g in upper]
+    middle_b = [Pb(str(g)) for g in middle]
     ring_values, relations, conditions = {}, [], []
     for g in basis:
-        present = [v for v in bound_b if g.degree(v) > 0]
-        if len(present) == 1 and g.degree(present[0]) == 1 and \
-                all(sum(m.degree(v) for v in bound_b) <= 1 for m in g.monomials()) and \
-                str(present[0]) not in ring_values:
-            v = present[0]
-            a = g.coefficient({v: 1})
-            b = g - a * v
+        multipliers = [v for v in upper_b if g.degree(v) > 0]
+        variables = [v for v in middle_b if g.degree(v) > 0]
+        if multipliers:
+            solved = _linear_in(g, multipliers, upper_b)
+        else:
+            solved = _linear_in(g, variables, middle_b)
+        if solved is not None and str(solved[0]) not in ring_values:
+            v, a, b = solved
             a_sr, b_sr = T.symbolic(P(a)), T.symbolic(P(b))
             ring_values[str(v)] = normalize(-b_sr / a_sr)
             conditions = conjunction(conditions, nonzero_conditions(a_sr, positive)) or []
-        else:
+        elif not multipliers:
             relations.append(P(g))
     circle = {str(r) for r in T.circle_relations()}
     relations = [r for r in relations if str(r) not in circle]
+    if relations:
+        real = _has_smooth_real_point(T, prime, len(free))
+        if real is False:
+            return None
+    # multipliers in terms of the variables: put in the explicit ones
+    for name in [str(g) for g in upper]:
+        if name in ring_values:
+            subs = {k: v for k, v in ring_values.items() if k != name}
+            ring_values[name] = normalize(SR(ring_values[name]).subs(
+                {T.symbolic_generators()[int(k[1:])]: v for k, v in subs.items()
+                 if T.symbolic_generators()[int(k[1:])].is_symbol()}))
     values = _assemble(T, ring_values, {})
     return AlgebraicSolution(T, prime, free, counted, values, ring_values,
-                             relations, conditions)
+                             relations, conditions,
+                             reality_known=not relations or real is True or
+                             T.field() is QQ)
+
+
+def _linear_in(g, candidates, block):
+    r"""``(v, a, b)`` with ``g = a v + b`` when ``g`` contains exactly one of
+    ``candidates``, to degree 1, and no other variable of ``block``."""
+    if len(candidates) != 1 or g.degree(candidates[0]) != 1:
+        return None
+    v = candidates[0]
+    if any(m.degree(v) and any(m.degree(w) for w in block if w != v) for m in g.monomials()):
+        return None
+    a = g.coefficient({v: 1})
+    if any(a.degree(w) for w in block):
+        return None
+    return v, a, g - a * v
+
+
+#: Random fibres tried when looking for a smooth real point of a family.
+REAL_POINT_SAMPLES = 12
+
+
+def _has_smooth_real_point(T, prime, dimension):
+    r"""``True`` if a smooth real point of the component was found (it then
+    has real points of full dimension), ``False`` if it has none (for a
+    system without parameters: exact, by quantifier elimination when the
+    random fibres show none), ``None`` if undecided."""
+    from sage.misc.prandom import randint
+    P = prime.ring()
+    if T.field() is not QQ:
+        return None
+    gens = list(prime.gens())
+    J = matrix(P, [[f.derivative(x) for x in P.gens()] for f in gens])
+    rank = P.ngens() - (dimension + len(T.circle_relations()))
+    free_sets = _free_generator_choice(T, prime, dimension)
+    for attempt in range(REAL_POINT_SAMPLES):
+        values = {}
+        for gs in free_sets:
+            t = QQ(randint(-6, 6)) / randint(1, 4)
+            if len(gs) == 1:
+                values[gs[0]] = t
+            else:               # a rational point of the circle
+                c, s = gs
+                values[c], values[s] = (1 - t ** 2) / (1 + t ** 2), 2 * t / (1 + t ** 2)
+        fibre = P.ideal([f.subs(values) for f in gens] + [g - v for g, v in values.items()])
+        if fibre.dimension() != 0:
+            continue
+        for point in fibre.variety(AA):
+            at = [point[k] for k in sorted(point, key=lambda k: [str(g) for g in P.gens()].index(str(k)))]
+            if matrix(AA, [[f(*at) for f in row] for row in J.rows()]).rank() == rank:
+                return True
+    return None if not _small_for_qe(T, prime) else _qe_smooth_real_point(T, prime, J, rank)
+
+
+def _free_generator_choice(T, prime, dimension):
+    r"""Groups of ring variables (one unknown each) to fix in a fibre."""
+    free = _free_unknowns(T, prime, set(range(len(T.unknowns()))))
+    return [_unit_generators(T, i) for i in free[:dimension]]
+
+
+def _small_for_qe(T, prime):
+    return len(T.parameters()) + prime.ring().ngens() <= REALITY_QE_VARIABLES
+
+
+def _qe_smooth_real_point(T, prime, J, rank):
+    r"""Exact decision, by quantifier elimination, whether the component has
+    a real point where the Jacobian has full rank."""
+    from itertools import combinations
+    from .quantifier_elimination import exists
+    unknowns = [SR.var(f"qe_unknown{k}") for k in range(prime.ring().ngens())]
+    subs = {g: u for g, u in zip(prime.ring().gens(), unknowns)}
+    rows, cols = J.nrows(), J.ncols()
+    minors = [J.matrix_from_rows_and_columns(r, c).det()
+              for r in combinations(range(rows), rank) for c in combinations(range(cols), rank)]
+    minors = [m for m in minors if m != 0]
+    if not minors:
+        return False
+    equations = [T.symbolic(g, subs) == 0 for g in prime.gens()]
+    try:
+        for m in minors:
+            if exists(unknowns, equations + [T.symbolic(m, subs) != 0],
+                      timeout=REALITY_QE_TIMEOUT):
+                return True
+    except AnalysisError:
+        return None
+    return False
 
 
 class TranscendentalSolution(AlgebraicSolution):

@@ -158,10 +158,14 @@ class StationarySolution(SageObject):
         return self._problem._positive if positive is None else positive
 
     def _repr_(self):
-        mult = ', '.join(f"{k} free" if v is k or str(v) == str(k) else f"{k} = {v}"
-                         for k, v in self.multipliers().items())
+        free = {str(l) for l in self.free_multipliers()}
+        mult = ', '.join(f"{k} free" if str(k) in free else f"{k} = {v}"
+                         for k, v in self.multipliers().items() if str(k) != str(v) or
+                         str(k) in free)
         d = self.dimension()
         kind = "isolated" if d == 0 else f"{d}-parameter family"
+        if self.is_equilibrium() is False:
+            kind += ", an invariant manifold of non-equilibrium motions"
         if not self.is_explicit():
             kind += ", implicit: see equations()"
         conds = self._solution._conditions
@@ -226,7 +230,8 @@ class StationarySolution(SageObject):
             sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[0].free_multipliers()
             [lambda1]
         """
-        return [l for l, v in self.multipliers().items() if str(v) == str(l)]
+        free = {str(u) for u in self._solution.free_unknowns()}
+        return [l for l in self._problem._multipliers if str(l) in free]
 
     def equations(self):
         r"""
@@ -288,6 +293,46 @@ class StationarySolution(SageObject):
         """
         return self._solution.conditions()
 
+    def is_equilibrium(self):
+        r"""
+        Whether the right-hand sides vanish on the solution (``None`` when
+        they were not given). A component of the stationary set that is not
+        made of equilibria is an invariant manifold of the motion.
+
+        EXAMPLES: a symmetric free top: with the integrals `H`, `|M|^2` and
+        `M_3` the whole space is stationary -- each level set of the
+        integrals is a circle on which `H` is constant, an invariant
+        manifold --, besides the rotations about the symmetry axis::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: M1, M2, M3, A, C = var('M1 M2 M3 A C')
+            sage: X = [(A - C)/(A*C)*M2*M3, (C - A)/(C*A)*M3*M1, 0]
+            sage: H = (M1^2 + M2^2)/(2*A) + M3^2/(2*C)
+            sage: sols = stationary_solutions([H, M1^2 + M2^2 + M3^2, M3], [M1, M2, M3],
+            ....:                             equations=X, positive=[A, C])
+            sage: [(s.dimension(), s.is_equilibrium()) for s in sols]
+            [(1, True), (3, False)]
+        """
+        rhs = self._problem._rhs
+        if rhs is None:
+            return None
+        return all(normalize(self._at(X)).is_zero() for X in rhs)
+
+    def real_points(self):
+        r"""
+        The real points of an implicit solution without parameters, exact
+        (dicts of real algebraic numbers); ``None`` otherwise.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: s = stationary_solutions([x^6/6 - x^2/2 - x], [x])[0]
+            sage: s.real_points()
+            [{x: 1.167303978261419?}]
+        """
+        return self._solution.real_points()
+
     def solution(self):
         r"""The underlying :class:`~sage_dynsym.analysis.solving.AlgebraicSolution`.
 
@@ -343,7 +388,7 @@ class StationarySolution(SageObject):
             sage: [s.is_degenerate() for s in stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])]
             [False, True, True]
         """
-        return normalize(self.hessian().det()).is_zero()
+        return self._at(self._problem.hessian().det()).is_zero()
 
     def tangent_constraints(self):
         r"""The linear forms `dV_j|_{x^0}\cdot\xi` (`j \ge 1`).
@@ -433,6 +478,7 @@ class StationarySolution(SageObject):
         exprs = _signed_minors(form_matrix(form, free), sign) if free else []
         if self._problem._kinetic is not None:
             exprs += _signed_minors(self._kinetic_at(), 'positive')
+        exprs = [self._at(e) for e in exprs]
         multipliers = [l for l in self.free_multipliers()
                        if any(e.has(l) for e in exprs)]
         if multipliers:
@@ -536,12 +582,13 @@ class StationarySolution(SageObject):
             for alt in self.stability_region(positive, sign):
                 if alt not in region:
                     region.append(alt)
-        existence = self.conditions()
+        existence = simplify_conjunction(self.conditions(), positive) or []
         if region:
             cases.append(StabilityVerdict(
                 'stable', "the second variation of the Lyapunov function is definite "
                 "(Routh-Lyapunov)", method='Routh-Lyapunov', region=region))
-        lin = self.linear_system() if self.is_explicit() else None
+        lin = self.linear_system() if self.is_explicit() and \
+            self.is_equilibrium() is not False else None
         if lin is not None:
             asymptotic, unstable = _first_approximation(lin, positive)
             for verdict, alts, why in (
@@ -561,7 +608,8 @@ class StationarySolution(SageObject):
                 return case
         if not cases:
             return StabilityVerdict('undecided', "neither the second variation nor the "
-                                    "first approximation decides (critical case)")
+                                    "first approximation decides (critical case)",
+                                    region=[[]])
         return StabilityVerdict('depends on the parameters', "see cases()", cases=cases)
 
     def check(self, equations):
@@ -596,6 +644,8 @@ def _first_approximation(lin, positive):
     from .translation import Translation
     lam = SR.var('lambda_')
     p = lin.characteristic_polynomial(lam, positive=positive)
+    if not SR(p).has(lam):          # no dynamics left (e.g. a zero Lagrangian)
+        return [], []
     T = Translation([], [], extra=[p])
     f = T.flat_ring()(T.fraction(p))
     gen = T.flat_ring()(T.fraction(lam))
@@ -659,9 +709,6 @@ class StationarySolutions(SageObject):
         self._set = solve_exactly(self._equations, self._solved, counted=counted,
                                   positive=positive, extra=extra, transcendental=True)
         self._solutions = [StationarySolution(self, s) for s in self._set]
-        if rhs is not None:
-            for s in self._solutions:
-                s.check(rhs)
 
     def _solved_variables(self):
         return [u for u in self._solved if all(str(u) != str(l) for l in self._multipliers)]
@@ -828,9 +875,10 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
       `K = V_0 + \lambda_1 V_1 + \dots + \lambda_k V_k`
     - ``variables`` -- the phase variables `x`
     - ``equations`` -- (optional) the right-hand sides `X(x)`; if given,
-      every integral is checked to be conserved, every solution to annul
-      `X`, and the first approximation is available for the stability
-      verdict
+      every integral is checked to be conserved, each solution says whether
+      it is made of equilibria (:meth:`StationarySolution.is_equilibrium`)
+      or is an invariant manifold of other motions, and the first
+      approximation is available for the stability verdict at equilibria
     - ``multipliers`` -- (optional) names or symbols for `\lambda_1, \dots`
       (default ``lambda1, lambda2, ...``)
     - ``levels`` -- (optional) one entry per integral after the first: its
