@@ -31,7 +31,8 @@ def random_chain(rng, n_bodies):
             rotations.append((a, q))
         m = QQ(rng.randint(1, 5))
         c = [random_rational(rng) for _ in range(3)]
-        diag = [QQ(rng.randint(3, 9)) for _ in range(3)]
+        # principal moments in [6, 9]: the triangle inequality holds
+        diag = [QQ(rng.randint(6, 9)) for _ in range(3)]
         off = [random_rational(rng, -1, 1) / 2 for _ in range(3)]
         inertia = [[diag[0], off[0], off[1]], [off[0], diag[1], off[2]], [off[1], off[2], diag[2]]]
         joint = [0, 0, 0] if k == 1 else [random_rational(rng) for _ in range(3)]

@@ -111,7 +111,8 @@ def _two_roots_and_slider():
     # Body 2 hangs from the inertial frame too (parent 0 is allowed for any
     # body); body 3 slides along body 1's z axis (joint depends on z: the
     # relative velocity is its time derivative); body 3 has no rotation.
-    spd = [[2, Fraction(1, 3), 0], [Fraction(1, 3), 3, Fraction(-1, 4)], [0, Fraction(-1, 4), 1]]
+    # principal moments about 1.93, 2.71, 3.36: a physical tensor (triangle inequality)
+    spd = [[3, Fraction(1, 3), 0], [Fraction(1, 3), 3, Fraction(-1, 4)], [0, Fraction(-1, 4), 2]]
     return dict(bodies=[dict(parent=0, rotations=[(1, 'a')], joint=[0, 0, 0],
                              mass_center=[Fraction(1, 2), 0, 1], mass=2, inertia=spd),
                         dict(parent=0, rotations=[(2, 'b'), (3, 'c')], joint=[1, 2, 3],
