@@ -86,8 +86,9 @@ from sage.symbolic.constants import pi
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .conditions import positive_conditions, nonzero_conditions, conjunction
-from .decomposition import minimal_primes, shape, ShapePrime
+from .conditions import (positive_conditions, nonzero_conditions, conjunction,
+                         simplify_conjunction)
+from .decomposition import minimal_primes, shape, ShapePrime, triangular_sets
 from .translation import Translation, NotAlgebraic
 
 
@@ -614,11 +615,15 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         _log("the equations are inconsistent")
         return SolutionSet(T, [], n_eq)
     _log("decomposing into irreducible components")
-    primes = minimal_primes(I, shapes=True)
+    primes = minimal_primes(I, shapes=True, split_points=T.field() is QQ)
     _log(f"{len(primes)} components")
-    solutions = []
+    solutions, seen = [], set()
     for prime, sh in primes:
-        solutions += _solve_component(T, prime, sh, counted_set, positive)
+        for s in _solve_component(T, prime, sh, counted_set, positive):
+            key = str(s.values()) if s.is_explicit() and not s._free else None
+            if key is None or key not in seen:     # parts of facstd may overlap
+                seen.add(key)
+                solutions.append(s)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
 
@@ -677,6 +682,10 @@ def _free_unknowns(T, prime, counted):
 
 
 def _solve_component(T, prime, sh, counted, positive):
+    if sh == 'points':      # a zero-dimensional part over a field of parameters
+        if prime.vector_space_dimension() > MAX_EXPLICIT_DEGREE:
+            return [_implicit(T, prime, counted, positive)]
+        return _parametric_points(T, prime, counted, positive, split=True)
     free = [] if sh is not None else _free_unknowns(T, prime, counted)
     if free:
         family = _family(T, prime, free, counted, positive)
@@ -794,25 +803,29 @@ def _lex_ring(P):
     return PolynomialRing(P.base_ring(), [str(g) for g in P.gens()], P.ngens(), order='lex')
 
 
-def _parametric_points(T, prime, counted, positive):
-    r"""Zero-dimensional component over `\QQ(\text{parameters})`: along
-    triangular sets, with radicals for steps of degree 2."""
+def _parametric_points(T, prime, counted, positive, split=False):
+    r"""Zero-dimensional component (or, with ``split``, a zero-dimensional
+    part not yet split into primes) over `\QQ(\text{parameters})`: along
+    triangular sets (factorized), with radicals for steps of degree 2."""
     P = prime.ring()
     degree = prime.vector_space_dimension()
-    # explicit values need a tower of quadratic steps: degree a power of 2
-    if degree & (degree - 1) or degree > MAX_EXPLICIT_DEGREE:
+    # explicit values of a prime need a tower of quadratic steps: degree a
+    # power of 2
+    if not split and (degree & (degree - 1) or degree > MAX_EXPLICIT_DEGREE):
         return [_implicit(T, prime, counted, positive)]
-    Pl = _lex_ring(P)
     _log(f"triangular decomposition of a component of degree {degree}")
-    sets = Pl.ideal([Pl(g) for g in prime.gens()]).triangular_decomposition()
+    sets = triangular_sets(prime)
+    Pl = sets[0][0].parent() if sets and sets[0] else _lex_ring(P)
     result = []
     for tri in sets:
-        branches = _solve_triangular(T, Pl, list(tri.gens()), positive)
+        component = P.ideal([P(g) for g in tri]) if split else prime
+        branches = _solve_triangular(T, Pl, list(tri), positive)
         if branches is None:
-            return [_implicit(T, prime, counted, positive)]
+            result.append(_implicit(T, component, counted, positive))
+            continue
         for ring_values, signs, conditions in branches:
             values = _assemble(T, ring_values, signs)
-            result.append(AlgebraicSolution(T, prime, [], counted, values, ring_values,
+            result.append(AlgebraicSolution(T, component, [], counted, values, ring_values,
                                             [], conditions))
     return result
 
@@ -850,7 +863,12 @@ def _solve_triangular(T, Pl, triangular, positive):
                     sg[str(v)] = sign
                 new.append((vals, sg, c))
         branches = new
-    return branches
+    result = []
+    for values, signs, conds in branches:
+        conds = simplify_conjunction(conds, positive)
+        if conds is not None:
+            result.append((values, signs, conds))
+    return result
 
 
 def _roots(cs, positive, keep_sign):
