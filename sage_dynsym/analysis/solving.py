@@ -975,33 +975,41 @@ def _family(T, prime, free, counted, positive):
     index = {str(g): i for i in range(len(T.unknowns())) for g in _unit_generators(T, i)}
     upper = [g for g in bound if index[str(g)] not in counted]
     middle = [g for g in bound if index[str(g)] in counted]
-    blocks = [b for b in (upper, middle, free_gens) if b]
-    order = TermOrder('degrevlex', len(blocks[0]))
-    for b in blocks[1:]:
-        order = order + TermOrder('degrevlex', len(b))
+    blocks = [(b, kind) for b, kind in ((upper, 'lex'), (middle, 'degrevlex'),
+                                         (free_gens, 'degrevlex')) if b]
+    order = TermOrder(blocks[0][1], len(blocks[0][0]))
+    for b, kind in blocks[1:]:
+        order = order + TermOrder(kind, len(b))
+    blocks = [b for b, _ in blocks]
     names = [str(g) for b in blocks for g in b]
     Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
     basis = Pb.ideal([Pb(g) for g in prime.gens()]).groebner_basis()
     upper_b = [Pb(str(g)) for g in upper]
     middle_b = [Pb(str(g)) for g in middle]
     ring_values, relations, conditions = {}, [], []
+    with_multipliers = [g for g in basis if any(g.degree(v) for v in upper_b)]
+    solved = _multipliers_on_family(T, P, prime, with_multipliers, upper_b)
+    if solved is None:
+        relations += [P(g) for g in with_multipliers]
+    else:
+        for v, (value, denominator) in solved.items():
+            ring_values[v] = value
+            conditions = conjunction(conditions, nonzero_conditions(denominator, positive)) or []
     for g in basis:
-        multipliers = [v for v in upper_b if g.degree(v) > 0]
-        variables = [v for v in middle_b if g.degree(v) > 0]
-        if multipliers:
-            solved = _linear_in(g, multipliers, upper_b)
-        else:
-            solved = _linear_in(g, variables, middle_b)
-        if solved is not None and str(solved[0]) not in ring_values:
-            v, a, b = solved
+        if any(g.degree(v) for v in upper_b):
+            continue
+        found = _linear_in(g, [v for v in middle_b if g.degree(v) > 0], middle_b)
+        if found is not None and str(found[0]) not in ring_values:
+            v, a, b = found
             a_sr, b_sr = T.symbolic(P(a)), T.symbolic(P(b))
             ring_values[str(v)] = normalize(-b_sr / a_sr)
             conditions = conjunction(conditions, nonzero_conditions(a_sr, positive)) or []
-        elif not multipliers:
+        else:
             relations.append(P(g))
     circle = {str(r) for r in T.circle_relations()}
     relations = [r for r in relations if str(r) not in circle]
-    if relations:
+    real = None
+    if any(all(not r.degree(v) for v in upper_b) for r in map(Pb, relations)):
         real = _has_smooth_real_point(T, prime, len(free))
         if real is False:
             return None
@@ -1015,8 +1023,74 @@ def _family(T, prime, free, counted, positive):
     values = _assemble(T, ring_values, {})
     return AlgebraicSolution(T, prime, free, counted, values, ring_values,
                              relations, conditions,
-                             reality_known=not relations or real is True or
+                             reality_known=real is not None or not relations or
                              T.field() is QQ)
+
+
+def _multipliers_on_family(T, P, prime, elements, multipliers):
+    r"""
+    The multipliers (the generators ``multipliers`` of a block-order ring)
+    on a family: the stationarity equations are linear in them, so the
+    Gröbner basis elements that contain them are solved by linear algebra
+    over the function field of the component. Returns ``{name: (value,
+    denominator)}`` (symbolic), or ``None`` when they are not determined
+    (or the solution does not hold on the whole component).
+    """
+    if not multipliers:
+        return {}
+    F = T.fraction(SR(0)).parent()
+    linear = [g for g in elements
+              if all(sum(m.degree(v) for v in multipliers) <= 1 for m in g.monomials())]
+
+    def flat(poly):
+        num, den = T.to_flat(P(poly))
+        return F(num) / F(den)
+
+    rows, rhs = [], []
+    for g in linear:
+        coefficients = [g.coefficient({v: 1}) for v in multipliers]
+        rest = g - sum(c * v for c, v in zip(coefficients, multipliers))
+        rows.append([flat(c) for c in coefficients])
+        rhs.append(-flat(rest))
+    A = matrix(F, rows)
+    if A.rank() < len(multipliers):
+        return None
+    # independent rows only: the others agree with them on the component
+    # (its relations), not over the whole function field
+    pivots = list(A.pivot_rows())
+    x = A.matrix_from_rows(pivots).solve_right(
+        matrix(F, [[rhs[k]] for k in pivots])).column(0)
+    result = {}
+    for v, value in zip(multipliers, x):
+        # the value must make sense on the component: its denominator may
+        # not vanish there
+        den = T.to_ring(T.flat_ring()(value.denominator()))
+        if prime.reduce(den) == 0:
+            return None
+        result[str(v)] = (normalize(T.symbolic(value)), T.symbolic(value.denominator()))
+    # and it must solve every equation on the component (not only generically)
+    names = [str(v) for v in multipliers]
+    for g in elements:
+        poly = P(g)
+        at = [x[names.index(str(w))] if str(w) in names else F(T.flat_ring()(
+            T.to_flat(w)[0])) / F(T.flat_ring()(T.to_flat(w)[1])) for w in P.gens()]
+        value = _evaluate_in(T, poly, at)
+        if prime.reduce(T.to_ring(T.flat_ring()(value.numerator()))) != 0:
+            return None
+    return result
+
+
+def _evaluate_in(T, poly, at):
+    r"""A polynomial of ``T.ring()`` at values in the flat fraction field."""
+    F = T.fraction(SR(0)).parent()
+    total = F(0)
+    for exps, c in poly.dict().items():
+        term = F(T.to_flat(c)[0]) / F(T.to_flat(c)[1])
+        for k, e in enumerate(exps):
+            if e:
+                term *= at[k] ** e
+        total += term
+    return total
 
 
 def _linear_in(g, candidates, block):
