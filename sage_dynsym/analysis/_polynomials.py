@@ -10,6 +10,9 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 from sage.structure.element import Element
 
+import re
+from contextlib import contextmanager, nullcontext
+
 from ..errors import AnalysisError
 
 
@@ -120,3 +123,42 @@ def positive_polynomial(f, positive):
         if not any(exps[k] for k in free):
             strict = True
     return strict
+
+
+@contextmanager
+def maxima_without_questions(entry, positive=()):
+    r"""
+    Run Maxima (``desolve``, ``solve``, ``simplify_full``, ...) with the
+    declared signs as assumptions; when Maxima still asks for a sign, raise
+    :class:`AnalysisError` saying which one instead of its raw error.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import maxima_without_questions
+        sage: q, a = var('q a')
+        sage: with maxima_without_questions("integral"):
+        ....:     integrate(1/(q^2 + a), q)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: integral: Maxima needs the sign of a: declare it with positive=[a]
+        sage: with maxima_without_questions("integral", positive=[a]):
+        ....:     integrate(1/(q^2 + a), q)
+        arctan(q/sqrt(a))/sqrt(a)
+    """
+    from sage.symbolic.assumptions import assuming
+    conditions = [SR(p) > 0 for p in positive]
+    try:
+        with assuming(*conditions) if conditions else nullcontext():
+            yield
+    except (TypeError, ValueError) as err:
+        text = str(err)
+        if "Maxima requested additional constraints" not in text:
+            raise
+        found = re.search(r"Is (.+?) (positive|negative|zero|an integer|nonzero)", text) or \
+            re.search(r"assume\((.+?)>0\)", text)
+        what = found.group(1).strip() if found else "an expression"
+        symbol = re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", what)
+        hint = (f"declare it with positive=[{what}]" if symbol else
+                "its sign does not follow from the declarations (substitute values, "
+                "or declare the symbols it is made of)")
+        raise AnalysisError(f"Maxima needs the sign of {what}: {hint}", entry=entry) from None

@@ -296,7 +296,7 @@ def _factored(expr):
         return expr
 
 
-def simultaneous_reduction(A, B):
+def simultaneous_reduction(A, B, positive=()):
     r"""
     Reduce two quadratic forms simultaneously to sums of squares.
 
@@ -309,6 +309,9 @@ def simultaneous_reduction(A, B):
     INPUT:
 
     - ``A``, ``B`` -- symmetric matrices, ``B`` positive definite
+    - ``positive`` -- (optional) symbols declared positive (assumptions for
+      the roots and square roots; a sign still needed is an
+      :class:`~sage_dynsym.errors.AnalysisError` naming it)
 
     OUTPUT: a pair ``(mu, T)``: the list of the `\mu_i` and the matrix `T`
     (when the roots are found explicitly)
@@ -323,8 +326,12 @@ def simultaneous_reduction(A, B):
         sage: T.transpose()*B*T == 1, T.transpose()*A*T == diagonal_matrix(mu)
         (True, True)
     """
-    A = _symmetric(A, None)
-    B = _symmetric(B, None)
+    from ._polynomials import maxima_without_questions
+    with maxima_without_questions("simultaneous_reduction", positive):
+        return _simultaneous_reduction(_symmetric(A, None), _symmetric(B, None))
+
+
+def _simultaneous_reduction(A, B):
     n = A.nrows()
     mu_ = SR.var('mu_')
     roots = (A - mu_ * B).det().roots(mu_, multiplicities=True)

@@ -593,7 +593,7 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     except NotAlgebraic as err:
         if not transcendental:
             raise
-        return solve_transcendental(equations, unknowns, reason=err)
+        return solve_transcendental(equations, unknowns, reason=err, positive=positive)
     counted_set = set(range(len(unknowns))) if counted is None else \
         {[str(u) for u in unknowns].index(str(SR(c))) for c in counted}
     if T.ring() is None:
@@ -1212,7 +1212,7 @@ class TranscendentalSolution(AlgebraicSolution):
         return self.evaluate(expr).is_zero()
 
 
-def solve_transcendental(equations, unknowns, reason=None):
+def solve_transcendental(equations, unknowns, reason=None, positive=()):
     r"""
     The documented fallback for equations that are not algebraic in the
     unknowns (``exp``, ``log``, an angle also outside trigonometric
@@ -1245,8 +1245,12 @@ def solve_transcendental(equations, unknowns, reason=None):
         f"the equations are not algebraic in {', '.join(map(str, unknowns))}{why} and "
         f"Maxima's solve could not solve them: {equations}", entry="solve_exactly")
     _log("transcendental equations: trying Maxima's solve")
+    from ._polynomials import maxima_without_questions
     try:
-        found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
+        with maxima_without_questions("solve_exactly", positive):
+            found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
+    except AnalysisError:
+        raise
     except (TypeError, ValueError, NotImplementedError, RuntimeError):
         raise failure from None
     solutions = []

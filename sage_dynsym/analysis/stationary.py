@@ -1058,6 +1058,9 @@ class ModifiedRouthLyapunov(SageObject):
       positional coordinate
     - ``momentum`` -- (default: the first cyclic momentum) the constant `c`
     - ``f`` -- (default: ``function('f')``) the unknown function
+    - ``positive`` -- (optional) symbols declared positive, used as
+      assumptions when the ODE is integrated (Maxima); a sign it still
+      needs is an :class:`~sage_dynsym.errors.AnalysisError` naming it
 
     EXAMPLES: see :mod:`sage_dynsym.analysis.tutorial` (Example 3). ::
 
@@ -1070,7 +1073,8 @@ class ModifiedRouthLyapunov(SageObject):
         sage: TestSuite(MR).run(skip=['_test_pickling'])
     """
 
-    def __init__(self, routh, momentum=None, f=None):
+    def __init__(self, routh, momentum=None, f=None, positive=()):
+        self._positive = list(positive)
         q = routh.coordinates()
         if len(q) != 1:
             raise AnalysisError("the modified method is implemented for one "
@@ -1164,10 +1168,23 @@ class ModifiedRouthLyapunov(SageObject):
             sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
             sage: sols = ModifiedRouthLyapunov(L.routh([phi])).solve_degeneracy(); len(sols)
             2
+
+        TESTS: a sign the integration needs is asked for, not assumed::
+
+            sage: q, dq, a = var('q dq a')
+            sage: La = Lagrangian(dq^2/2 + (q^2 + 1)*dphi^2/2 + arctan(q/sqrt(a))/sqrt(a), [q, phi])
+            sage: ModifiedRouthLyapunov(La.routh([phi])).solve_degeneracy()
+            Traceback (most recent call last):
+            ...
+            AnalysisError: ModifiedRouthLyapunov: Maxima needs the sign of a: declare it with positive=[a]
+            sage: len(ModifiedRouthLyapunov(La.routh([phi]), positive=[a]).solve_degeneracy())
+            2
         """
         from sage.calculus.desolvers import desolve
+        from ._polynomials import maxima_without_questions
         fq = self._f(self._q)
-        sol = desolve(self.degeneracy_condition(), fq, ivar=self._q)
+        with maxima_without_questions("ModifiedRouthLyapunov", self._positive):
+            sol = desolve(self.degeneracy_condition(), fq, ivar=self._q)
         try:
             found = solve_exactly([sol], [fq])
         except AnalysisError:
