@@ -30,7 +30,9 @@ is a negative resistance::
     sage: i, u, E, R, L, C, g, s = var('i u E R L C g s')
     sage: f = g*u*(u - 3*s)^2
     sage: rhs = [E - R*i - u, i - f]
-    sage: eq = {i: f.subs(u=2*s), u: 2*s, E: 2*s + R*f.subs(u=2*s)}
+    sage: from sage_dynsym.analysis import solve_exactly
+    sage: (eq,) = solve_exactly(rhs + [u - 2*s], [i, u, E]); eq.values()
+    {i: 2*g*s^3, u: 2*s, E: 2*R*g*s^3 + 2*s}
     sage: St = StabilityStudy(rhs, [i, u], eq, lhs_matrix=[L, C], positive=[L, C, R, g, s])
     sage: St.parameters()
     [C, L, R, g, s]
@@ -75,7 +77,9 @@ class StabilityStudy(SageObject):
     - ``variables`` -- the state `x`, in order
     - ``at`` -- the equilibrium, ``{variable: value}``; it may also give
       parameters as functions of others (e.g. a source fixed by the
-      equilibrium), which are then eliminated
+      equilibrium), which are then eliminated; or a solution of
+      :func:`~sage_dynsym.analysis.solving.solve_exactly` (an equilibrium
+      found exactly) or a stationary solution
     - ``lhs_matrix`` -- (optional) `B`, or the list of its diagonal
     - ``positive`` -- parameters known to be positive (simplifies the
       conditions)
@@ -86,6 +90,10 @@ class StabilityStudy(SageObject):
     def __init__(self, rhs, variables, at, lhs_matrix=None, positive=()):
         from sage.matrix.constructor import matrix
         self._variables = [SR(v) for v in variables]
+        if hasattr(at, 'values') and callable(at.values) and hasattr(at, 'conditions'):
+            at = at.values()        # a solution of the exact core (solve_exactly)
+        elif hasattr(at, 'point') and callable(at.point):
+            at = at.point()         # a stationary solution
         at = {SR(k): SR(v) for k, v in at.items()}
         fixed = {k: v for k, v in at.items() if k not in self._variables}
         self._rhs = [SR(f).subs(fixed) for f in rhs]
