@@ -80,13 +80,29 @@ def to_sr(poly):
     if parent is None or not hasattr(parent, 'gens') or parent is QQ or \
             not hasattr(poly, 'dict') or parent.ngens() == 1:
         return SR(poly)
-    gens = [SR.var(str(v)) for v in parent.gens()]
+    return polynomial_to_sr(poly, [SR.var(str(v)) for v in parent.gens()])
+
+
+def polynomial_to_sr(poly, images):
+    r"""
+    A polynomial over `\QQ` as a symbolic expression, its generators
+    replaced by ``images``, built in one sum.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._polynomials import polynomial_to_sr
+        sage: R.<a, b> = QQ[]
+        sage: polynomial_to_sr(a^2*b - 3, [sin(x), 2])
+        2*sin(x)^2 - 3
+    """
+    if poly.parent() is QQ or not hasattr(poly, 'dict'):
+        return SR(poly)
     terms = []
     for exps, c in poly.dict().items():
         term = SR(c)
-        for i, e in enumerate(exps):
+        for k, e in enumerate((exps,) if isinstance(exps, int) else exps):
             if e:
-                term = term * gens[i] ** e
+                term = term * images[k] ** e
         terms.append(term)
     return SR.sum(terms) if terms else SR(0)
 

@@ -178,7 +178,31 @@ def _shortest_trigonometric(expr, angles, factor):
     return min(forms, key=lambda e: len(str(e)))
 
 
-class SolutionSet(SageObject):
+class SolutionList(SageObject):
+    r"""
+    A list of solutions (iterable, indexable): the common behaviour of
+    :class:`SolutionSet` and of the stationary sets of
+    :mod:`~sage_dynsym.analysis.stationary`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.solving import solve_exactly, SolutionList
+        sage: x = var('x')
+        sage: S = solve_exactly([x^2 - 1], [x]); isinstance(S, SolutionList), len(S)
+        (True, 2)
+    """
+
+    def __iter__(self):
+        return iter(self._solutions)
+
+    def __len__(self):
+        return len(self._solutions)
+
+    def __getitem__(self, i):
+        return self._solutions[i]
+
+
+class SolutionSet(SolutionList):
     r"""
     The real solutions of a polynomial system: a list of
     :class:`AlgebraicSolution` (iterable), created by :func:`solve_exactly`.
@@ -204,15 +228,6 @@ class SolutionSet(SageObject):
         if not self._solutions:
             return f"No real solutions of {eq} in {what}"
         return f"{len(self._solutions)} solution components of {eq} in {what}"
-
-    def __iter__(self):
-        return iter(self._solutions)
-
-    def __len__(self):
-        return len(self._solutions)
-
-    def __getitem__(self, i):
-        return self._solutions[i]
 
     def is_complete(self):
         r"""Whether the list is complete: ``True`` for exact decompositions.

@@ -108,7 +108,7 @@ from .kelvin_chetaev import StabilityVerdict
 from .linear import LinearSystem
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
                               _signed_minors)
-from .solving import solve_exactly, normalize
+from .solving import solve_exactly, normalize, SolutionList
 
 
 def check_integral(V, variables, equations, index=0):
@@ -673,7 +673,7 @@ def _first_approximation(lin, positive):
     return asymptotic, unstable
 
 
-class StationarySolutions(SageObject):
+class StationarySolutions(SolutionList):
     r"""
     The stationary solutions of a problem (iterable): created by
     :func:`stationary_solutions` (conditional extrema of first integrals)
@@ -722,15 +722,6 @@ class StationarySolutions(SageObject):
         note = "" if self._set.is_complete() else \
             " (transcendental equations: found by Maxima's solve, possibly not all)"
         return f"{n} stationary solution{'s' if n != 1 else ''} of {what}{note}"
-
-    def __iter__(self):
-        return iter(self._solutions)
-
-    def __len__(self):
-        return len(self._solutions)
-
-    def __getitem__(self, i):
-        return self._solutions[i]
 
     def __eq__(self, other):
         return isinstance(other, StationarySolutions) and \

@@ -84,6 +84,7 @@ from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
+from ._polynomials import polynomial_to_sr
 
 #: The largest integer multiple `k q` of an unknown angle that is expanded
 #: by the multiple-angle formulas (higher multiples are refused as not
@@ -663,30 +664,15 @@ class Translation:
         parent = element.parent() if hasattr(element, 'parent') else None
         if self._flat is not None and parent in (self._FF, self._flat):
             element = self._FF(element)
-            return (_poly_to_sr(self._flat(element.numerator()), images + gens) /
-                    _poly_to_sr(self._flat(element.denominator()), images + gens))
+            return (polynomial_to_sr(self._flat(element.numerator()), images + gens) /
+                    polynomial_to_sr(self._flat(element.denominator()), images + gens))
         num, den = self.to_flat(element)
-        return _poly_to_sr(num, images + gens) / _poly_to_sr(den, images + gens)
+        return polynomial_to_sr(num, images + gens) / polynomial_to_sr(den, images + gens)
 
 
 def _evaluate(poly, values):
     r"""``poly`` (in the generators of its ring) at ``values``."""
     return poly(*values) if poly.parent().ngens() > 1 else poly(values[0])
-
-
-def _poly_to_sr(poly, images):
-    r"""A polynomial over `\QQ` as a symbolic expression, its generators
-    replaced by ``images``, built in one sum."""
-    if poly.parent() is QQ or not hasattr(poly, 'dict'):
-        return SR(poly)
-    terms = []
-    for exps, c in poly.dict().items():
-        term = SR(c)
-        for k, e in enumerate((exps,) if isinstance(exps, int) else exps):
-            if e:
-                term = term * images[k] ** e
-        terms.append(term)
-    return SR.sum(terms) if terms else SR(0)
 
 
 def expand_angles(expr, angles):
