@@ -85,11 +85,18 @@ def graph():
     return {name: imports(name, path, known) for name, path in known.items()}
 
 
+@LAYOUT_PENDING
 def test_every_module_has_a_layer():
     missing = [name for name in modules() if layer_of(name) is None]
     assert not missing, f"modules outside every layer: {missing}"
 
 
+#: Until the layered layout lands the structural checks are expected to fail
+#: (strict: the day they pass this marker must go).
+LAYOUT_PENDING = pytest.mark.xfail(strict=True, reason="layered layout not built yet")
+
+
+@LAYOUT_PENDING
 def test_imports_point_down():
     wrong = []
     for name, targets in graph().items():
@@ -103,6 +110,7 @@ def test_imports_point_down():
     assert not wrong, "imports that do not point down:\n" + "\n".join(sorted(wrong))
 
 
+@LAYOUT_PENDING
 def test_no_cycles():
     g = {k: {t for t in v if t != "sage_dynsym"} for k, v in graph().items()}
     state, stack, cycles = {}, [], []
@@ -124,6 +132,7 @@ def test_no_cycles():
     assert not cycles, "import cycles:\n" + "\n".join(" -> ".join(c) for c in cycles)
 
 
+@LAYOUT_PENDING
 def test_top_level_stays_small():
     # at most six modules beside the packages
     top = [p.name for p in PACKAGE.glob("*.py")]
