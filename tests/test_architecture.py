@@ -48,7 +48,8 @@ def layer_of(name):
     best = None
     for level, (_, prefixes) in enumerate(LAYERS):
         for prefix in prefixes:
-            if name == prefix or name.startswith(prefix + "."):
+            # the package itself (its face) is a layer of its own, not a prefix
+            if name == prefix or (prefix != "sage_dynsym" and name.startswith(prefix + ".")):
                 if best is None or len(prefix) > best[1]:
                     best = (level, len(prefix), prefix)
     return best
