@@ -8,7 +8,7 @@ This module only re-exports the public API; see the submodules.
 import sage.all  # noqa: F401
 
 from .errors import (DynSymError, ModelError, DescriptionError, ExpressionError,
-                     CircuitError, AnalysisError)
+                     CircuitError, AnalysisError, BudgetError)
 from .lagrangian import Lagrangian
 from .rigid_body import RigidBody
 from .force_functions import UniformGravity, NewtonianField
