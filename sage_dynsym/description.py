@@ -1,7 +1,8 @@
 r"""
 Description files: reading and writing models as YAML
 
-A description file is human-editable YAML (contract §1), read with PyYAML's
+A description file is human-editable YAML (format:
+:doc:`/description_files`), read with PyYAML's
 *safe* loader: tags that would construct Python objects are refused, and
 every expression is a string parsed by
 :class:`~sage_dynsym.expressions.ExpressionParser` restricted to the

@@ -2,7 +2,7 @@ r"""
 Force functions of potential fields
 
 The force function `U` (minus the potential energy) enters the Lagrangian
-`L = T + U`. Two fields of the specification are provided:
+`L = T + U`. Two fields of :doc:`the method </method>` are provided:
 
 - :class:`UniformGravity`: `U_k = m_k\, g \cdot r^0_{ck}` (formula (3));
 - :class:`NewtonianField`: the attraction of a distant centre expanded to

@@ -6,8 +6,9 @@ Kinematics of a system of rigid bodies over a choice of arithmetic
 angular velocities `W_k`, the joint velocities
 `V_{0k} = V_{0j} + W_j\times r^j_{0k} + v^j_{0k}`, the positions of joints
 and mass centres, and the decomposition (4) of each body's kinetic energy
-(1), all as :class:`~sage_dynsym.frames.FrameVector` over either the
-symbolic ring or a :class:`~sage_dynsym.trig.TrigPolynomialRing`.
+(1) (formulas of :doc:`the method </method>`), all as
+:class:`~sage_dynsym.frames.FrameVector` over either the symbolic ring or a
+:class:`~sage_dynsym.trig.TrigPolynomialRing`.
 
 EXAMPLES::
 

@@ -18,10 +18,11 @@ energy), and the equations are returned as expressions `E_i`, meaning
           - \frac{\partial L}{\partial q_i}
           + \frac{\partial R}{\partial \dot q_i} - Q_i .
 
-When `L` is quadratic in the velocities (a *natural* Lagrangian, (4) of the
-spec), the equations are assembled from the decomposition
-`L = \tfrac12 \sum A_{ij}\dot q_i \dot q_j + \sum A_i \dot q_i + A_0` in the
-structured form (5): mass-matrix entries times accelerations, Christoffel
+When `L` is quadratic in the velocities (a *natural* Lagrangian, (4) of
+:doc:`the method </method>`), the equations are assembled from the
+decomposition
+`L = \tfrac12 \sum A_{ij}\dot q_i \dot q_j + \sum A_i \dot q_i + A_0`
+in the structured form (5): mass-matrix entries times accelerations, Christoffel
 coefficients times products of velocities, gyroscopic and non-stationary
 terms; nothing is expanded. Any other Lagrangian is differentiated directly.
 

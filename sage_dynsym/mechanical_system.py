@@ -2,7 +2,7 @@ r"""
 Mechanical systems of rigid bodies
 
 A :class:`MechanicalSystem` is the *description* of a system of rigid bodies
-(section 1.1 of the specification): its bodies, generalized coordinates,
+(see :doc:`the method </method>`): its bodies, generalized coordinates,
 parameters, force function and non-potential forces. From it the kinematics
 (direction cosines, angular velocities, joint velocities), the kinetic
 energy (1), the force function ((2) or (3)) and the Lagrangian (4) are
@@ -11,7 +11,7 @@ equations.
 
 EXAMPLES:
 
-Example 1 of the specification, the spherical pendulum::
+Example 1 of the method, the spherical pendulum::
 
     sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
     sage: psi, theta, m, l, g = var('psi theta m l g')

@@ -1,7 +1,8 @@
 r"""
 The Lagrange equations (5) of a natural Lagrangian, over a choice of calculus
 
-For `L = \tfrac12 \sum A_{ij}\dot q_i\dot q_j + \sum A_i\dot q_i + A_0`
+The equations (5) of :doc:`the method </method>`: for
+`L = \tfrac12 \sum A_{ij}\dot q_i\dot q_j + \sum A_i\dot q_i + A_0`
 the equations are assembled term by term,
 
 .. MATH::

@@ -1,13 +1,13 @@
 r"""
 Rigid bodies: the geometric and inertial description of one body
 
-A :class:`RigidBody` holds exactly the fields of section 1.1 of the
-specification: the parent body, the elementary rotations from the parent's
-frame to the body's frame, the joint point `r^j_{0k}` (in the parent's
-axes), its relative velocity `v^j_{0k}`, the mass centre `r^k_{ck}` (in the
-body's axes), the mass and the inertia tensor about the joint point `O_k`
-(in the body's axes). It is a description only; kinematics and energies are
-computed by :class:`~sage_dynsym.mechanical_system.MechanicalSystem`.
+A :class:`RigidBody` holds exactly the fields of the description of a body
+in :doc:`the method </method>`: the parent body, the elementary rotations
+from the parent's frame to the body's frame, the joint point `r^j_{0k}` (in
+the parent's axes), its relative velocity `v^j_{0k}`, the mass centre
+`r^k_{ck}` (in the body's axes), the mass and the inertia tensor about the
+joint point `O_k` (in the body's axes). It is a description only;
+kinematics and energies are computed by :class:`~sage_dynsym.mechanical_system.MechanicalSystem`.
 
 EXAMPLES::
 

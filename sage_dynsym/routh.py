@@ -10,9 +10,9 @@ dissipation function and from the generalized forces) the momenta
     R(q_{m+1..n}, \dot q_{m+1..n}, c) = L - \sum_{l \le m} c_l \dot q_l,
 
 with the cyclic velocities eliminated through `p_l = c_l`, is a Lagrangian
-of the positional coordinates only (sign convention of the spec:
-`R = L - c \cdot \dot q_{cyc}`). Its Lagrange equations are the Routh
-equations; the cyclic velocities are recovered as
+of the positional coordinates only (sign convention of
+:doc:`the method </method>`: `R = L - c \cdot \dot q_{cyc}`). Its Lagrange
+equations are the Routh equations; the cyclic velocities are recovered as
 `\dot q_l = -\partial R/\partial c_l`.
 
 EXAMPLES:

@@ -1,10 +1,11 @@
 r"""
 Qualitative analysis of dynamic systems
 
-Section 3 of the method: stationary solutions and invariant manifolds
-(Routh--Lyapunov, also the modified method with an extended function),
-their stability by the second variation and quadratic-form criteria, first
-approximation (linearization, force structure, characteristic polynomial,
+The qualitative analysis of :doc:`the method </method>`: stationary
+solutions and invariant manifolds (Routh--Lyapunov, also the modified
+method with an extended function), their stability by the second
+variation and quadratic-form criteria, first approximation
+(linearization, force structure, characteristic polynomial,
 Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
 and families of equilibria by elimination.
 """

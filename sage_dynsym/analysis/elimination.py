@@ -20,8 +20,9 @@ milliseconds, a plain elimination ideal of the whole system over 300 s.
 
 EXAMPLES:
 
-Example 4 of the method: equilibria of the circuit's state equations (11),
-first with the resistor characteristics left as unknown functions::
+Example 4 of :doc:`the method </method>`: equilibria of the circuit's
+state equations (11), first with the resistor characteristics left as
+unknown functions::
 
     sage: from sage_dynsym.analysis.elimination import equilibrium_family
     sage: i1, i2, u3, u4, u5, u6 = var('i1 i2 u3 u4 u5 u6')

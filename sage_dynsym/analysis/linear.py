@@ -2,7 +2,7 @@ r"""
 First approximation: linearization and the structure of forces
 
 Around an equilibrium `q = q^0`, `\dot q = 0` the Lagrange equations (5)
-become (15)--(16) of the method,
+become (15)--(16) of :doc:`the method </method>`,
 
 .. MATH::
 
@@ -623,7 +623,7 @@ def linearize(system, at, variables=None, lhs_matrix=None):
     Raises :class:`AnalysisError` if the point is not an equilibrium.
 
     EXAMPLES: see the module documentation, and Example 4 in
-    :mod:`sage_dynsym.analysis.examples`. A first-order system::
+    :mod:`sage_dynsym.analysis.tutorial`. A first-order system::
 
         sage: from sage_dynsym.analysis.linear import linearize
         sage: x, y, a = var('x y a')

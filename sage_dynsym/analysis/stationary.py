@@ -14,11 +14,12 @@ conditions on the parameters under which it exists and is real.
 
 The same `K` is a Lyapunov function: if its second variation `\delta^2 K`
 on the tangent space of the level set of the integrals is definite, the
-solution is stable (equation (14) of :doc:`/method`). When some multipliers
-are not fixed by the stationarity equations, stability follows if *some*
-choice of them makes `\delta^2 K` definite: :meth:`StationarySolution.stability_region`
-eliminates them (quantifier elimination). :meth:`StationarySolution.stability`
-combines this with the first approximation.
+solution is stable (equation (14) of :doc:`the method </method>`). When
+some multipliers are not fixed by the stationarity equations, stability
+follows if *some* choice of them makes `\delta^2 K` definite:
+:meth:`StationarySolution.stability_region` eliminates them (quantifier
+elimination). :meth:`StationarySolution.stability` combines this with the
+first approximation.
 
 For a Lagrangian system with cyclic coordinates the stationary motions
 come from the Routh function: `\partial R/\partial q = 0`, `\dot q = 0`
@@ -967,8 +968,9 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     and from the first approximation.
 
     EXAMPLES: the conical motions of the spherical pendulum (Example 1 of
-    :doc:`/method`): the momentum is `p^2 = -g l^3 m^2\sin^4\theta/\cos\theta`,
-    real only where `\cos\theta < 0` (the bob below the suspension point;
+    :doc:`the method </method>`): the momentum is
+    `p^2 = -g l^3 m^2\sin^4\theta/\cos\theta`, real only where
+    `\cos\theta < 0` (the bob below the suspension point;
     Goldstein, *Classical Mechanics*, §3.11)::
 
         sage: from sage_dynsym import load
@@ -1031,7 +1033,7 @@ class ModifiedRouthLyapunov(SageObject):
     r"""
     The modified Routh--Lyapunov method for families of invariant manifolds
     of a system with one positional coordinate `q` and a cyclic momentum
-    `c` (Example 3 of :doc:`/method`).
+    `c` (Example 3 of :doc:`the method </method>`).
 
     The extended Routh function `\tilde R = R + c\, f(q)\,\dot q` (unknown
     `f`) has the same equations of motion as `R`. Its stationarity

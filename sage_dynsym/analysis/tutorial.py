@@ -2,7 +2,7 @@ r"""
 Tutorial: qualitative analysis, Examples 3 and 4 and textbook results
 
 This module only holds documentation: worked sessions of the analysis part
-(section 3 of the method), doctested.
+(the qualitative analysis of :doc:`the method </method>`), doctested.
 
 Example 3: invariant manifolds of the spherical pendulum
 ========================================================

@@ -1,7 +1,8 @@
 r"""
 Circuit description files
 
-A circuit description (contract §1) is a mapping with the keys
+A circuit description (format: :doc:`/description_files`) is a mapping
+with the keys
 
 - ``kind: circuit`` (required),
 - ``name`` (optional title),

@@ -30,8 +30,9 @@ nonlinear_resistor (``f``)    `i_b = f(u_b)`
 i.e. passive elements obey the usual laws for the voltage *drop*
 `\varphi(a) - \varphi(b) = -u_b` in the direction of the current, while
 sources and the characteristic `f` are written directly in `(u_b, i_b)`.
-This is the convention under which Example 2 of the specification is
-reproduced exactly (there the source ``I0`` is entered as ``[5, 2, I0]``).
+This is the convention under which Example 2 of
+:doc:`the method </method>` is reproduced exactly (there the source
+``I0`` is entered as ``[5, 2, I0]``).
 
 A mutual inductance couples two inductors ``L1, L2`` (long form only,
 ``{kind: mutual, between: [L1, L2], value: M12}``): then

@@ -1,7 +1,8 @@
 r"""
 Lagrangians of linear circuits: loop-current and node-potential methods
 
-Both methods work branch by branch (spec section 2.1), with the branch
+Both methods work branch by branch (formulas (6) and (7) of
+:doc:`the method </method>`), with the branch
 variables and element laws of :mod:`~sage_dynsym.circuits.elements`.
 
 **Loop-current method.** A spanning tree is chosen that avoids the current

@@ -51,11 +51,11 @@ in the order of the branch list; capacitor voltages continue the numbering,
 each tree of it started at its highest node (trees taken from the highest
 such node down) and neighbours visited in increasing node order. For
 Example 2 this gives ``i1, i2`` for ``L1, L2`` and ``u3, u4, u5, u6`` for
-``C3, C2, C4, C1``, exactly the names of the specification.
+``C3, C2, C4, C1``, exactly the names used in :doc:`the method </method>`.
 
 EXAMPLES:
 
-Example 2 of the specification, read from its description file::
+Example 2 of :doc:`the method </method>`, read from its description file::
 
     sage: import os, yaml, sage_dynsym
     sage: from sage_dynsym.circuits import circuit_from_dict
