@@ -11,7 +11,7 @@ equations.
 
 EXAMPLES:
 
-Example 1 of the method, the spherical pendulum::
+Example 1 of :doc:`the method </method>`, the spherical pendulum::
 
     sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
     sage: psi, theta, m, l, g = var('psi theta m l g')
