@@ -12,6 +12,8 @@ sys.path.insert(0, os.path.abspath(os.path.join(os.path.dirname(__file__), "..")
 project = "sage_dynsym"
 author = "the sage_dynsym developers"
 extensions = ["sphinx.ext.autodoc", "sphinx.ext.mathjax"]
+# the macros Sage docstrings use
+mathjax3_config = {"tex": {"macros": {"QQ": r"\mathbb{Q}", "ZZ": r"\mathbb{Z}", "RR": r"\mathbb{R}", "CC": r"\mathbb{C}"}}}
 master_doc = "index"
 exclude_patterns = ["_build"]
 html_theme = "alabaster"

@@ -38,7 +38,7 @@ def test_example4_family_annuls_rhs_at_random_points():
         params = {k: SR(v).subs(vals) for k, v in sol.items()}
         for e in rhs:
             assert SR(e).subs(full).subs(params).subs(vals) == 0
-    # the source currents of the spec: I01 = I0 - f1(u6) - f3(u4 + u6), ...
+    # the source currents of Example 4 (doc/method.rst): I01 = I0 - f1(u6) - f3(u4 + u6), ...
     assert (sol[I01] - (var('I0') - f[0](u60) - f[2](u40 + u60))).expand() == 0
     assert (sol[I02] - (f[0](u60) - f[1](u40) - f[3](u40))).expand() == 0
 

@@ -26,12 +26,12 @@ def load_text(text, source="test.yaml"):
     return circuit_from_dict(yaml.safe_load(text), source=source)
 
 
-def test_example_2_state_equations_as_printed_in_the_spec():
+def test_example_2_state_equations_as_printed_in_the_method():
     C = read("nonlinear_circuit.yaml")
     i1, i2, u3, u4, u5, u6 = var('i1 i2 u3 u4 u5 u6')
     I0, I01, I02 = var('I0 I01 I02')
     f1, f2, f3, f4 = (function(f"f{k}") for k in range(1, 5))
-    expected = {                                   # spec (11)
+    expected = {                                   # (11) of doc/method.rst
         ('L1', i1): u4 + u6 - u3,
         ('L2', i2): u5 - u4,
         ('C3', u3): I01 + i1 + f3(u3),

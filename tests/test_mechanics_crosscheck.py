@@ -232,7 +232,7 @@ def test_lagrange_equations_agree_with_sympy(name, christoffel):
 
 
 def test_reference_reproduces_example_1():
-    """The SymPy reference itself gives equations (9) of the spec (times m l)."""
+    """The SymPy reference itself gives equations (9) of doc/method.rst (times m l)."""
     _, (E_psi, E_theta) = _sympy_results('spherical_pendulum')
     psi, theta, dpsi, dtheta, ddpsi, ddtheta, m, l, g = sympy.symbols(
         'psi theta dpsi dtheta ddpsi ddtheta m l g')

@@ -134,7 +134,7 @@ def test_force_function_error_is_third_order(name):
 
 def test_numpy_rotations_match_sympy():
     """The NumPy orientation used above is the one of the SymPy reference
-    (orient_axis about the new axes), hence the spec's convention."""
+    (orient_axis about the new axes), hence the package's convention (doc/method.rst)."""
     chain, coordinates = CHAINS['two bodies']
     bodies = [dict(b, mass_center=[0, 0, 0], mass=1, inertia=np.eye(3).tolist()) for b in chain]
     ref = SympyChain(bodies, coordinates)

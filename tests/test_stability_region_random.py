@@ -263,7 +263,7 @@ def test_symmetric_top_axis_rotation_with_a_free_multiplier(qepcad_calls):
 
 
 def test_symmetric_top_with_its_equations_of_motion():
-    # spec 3.1: degenerate stationarity equations define invariant manifolds;
+    # doc/method.rst (stationary solutions): degenerate stationarity equations define invariant manifolds;
     # the rotation about the symmetry axis is still an equilibrium of X
     sols = stationary_solutions(SYMMETRIC_INTEGRALS, [M1, M2, M3], equations=SYMMETRIC_X,
                                 positive=[A, C])

@@ -392,7 +392,7 @@ def test_mexican_hat_circle_and_origin():
 
 
 def test_mexican_hat_circle_is_degenerate():
-    # spec 3.1: a singular Hessian on the solutions means an invariant
+    # doc/method.rst (stationary solutions): a singular Hessian on the solutions means an invariant
     # manifold; numpy: the Hessian has a zero eigenvalue on the circle
     circle = [s for s in stationary_solutions([HAT], [x, y]) if s.dimension() == 1][0]
     assert circle.is_degenerate()

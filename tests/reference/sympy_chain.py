@@ -2,7 +2,7 @@
 Reference model of a chain of rigid bodies built with ``sympy.physics.mechanics``.
 
 Independent of sage_dynsym (it must not be imported here). The input is plain
-data, the same fields as section 1.1 of the spec:
+data, the same fields as the rigid-body description of doc/method.rst:
 
 ``bodies`` -- list of dicts (body ``k`` is ``bodies[k-1]``) with keys
 
