@@ -1,0 +1,468 @@
+r"""
+Numerical kernels of the scale-out computations (NumPy only)
+
+These functions run on the Dask workers. They import nothing from Sage nor
+from the rest of the package, and :mod:`sage_dynsym.scale.cluster` ships
+them *by value*: a worker needs NumPy (and SciPy for singular left-hand
+matrices), not Sage.
+
+A *program* is the compiled form of a list of symbolic expressions (see
+:mod:`sage_dynsym.scale.compile`): plain tuples, evaluated here on NumPy
+arrays, one instruction at a time over a whole chunk of points.
+
+A *point specification* describes the points of a map or sweep so that any
+chunk ``[start, stop)`` of them can be generated on its own, identically
+wherever and in whatever order the chunks run:
+
+- ``('grid', axes)`` -- the Cartesian grid of the 1-D arrays ``axes``,
+  flattened in C order (the last axis varies fastest);
+- ``('samples', lows, highs, seed)`` -- uniform random points in the box;
+  point ``i`` comes from block ``i // BLOCK``, whose generator is seeded
+  with ``[seed, block]``, so it does not depend on the chunking.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.scale.kernel import chunk_points, polynomial_abscissa
+    sage: chunk_points(('grid', [[0., 1.], [10., 20., 30.]]), 2, 5)
+    [array([0., 1., 1.]), array([30., 10., 20.])]
+    sage: import numpy as np
+    sage: alpha, rho = polynomial_abscissa(np.array([[1., 3., 2.], [1., 0., 1.]]))
+    sage: alpha, rho       # (lam + 1)(lam + 2), and lam^2 + 1
+    (array([-1.,  0.]), array([2., 1.]))
+"""
+import operator
+
+import numpy as np
+
+BLOCK = 4096            # random points are drawn in blocks of this size
+BATCH = 8192            # points evaluated at once inside a chunk
+_EPS = np.finfo(float).eps
+
+FUNCTIONS = {
+    'sin': np.sin, 'cos': np.cos, 'tan': np.tan, 'exp': np.exp, 'log': np.log,
+    'sinh': np.sinh, 'cosh': np.cosh, 'tanh': np.tanh, 'abs': np.abs,
+    'arcsin': np.arcsin, 'arccos': np.arccos, 'arctan': np.arctan, 'arctan2': np.arctan2,
+    'arcsinh': np.arcsinh, 'arccosh': np.arccosh, 'arctanh': np.arctanh,
+    'sgn': np.sign, 'sec': lambda x: 1 / np.cos(x), 'csc': lambda x: 1 / np.sin(x),
+    'cot': lambda x: 1 / np.tan(x),
+}
+COMPARISONS = {'gt': operator.gt, 'ge': operator.ge, 'lt': operator.lt,
+               'le': operator.le, 'eq': operator.eq, 'ne': operator.ne}
+
+
+# ---------------------------------------------------------------------------
+# programs
+# ---------------------------------------------------------------------------
+
+def run_program(program, inputs, size):
+    r"""
+    Evaluate a compiled program.
+
+    INPUT:
+
+    - ``program`` -- ``(instructions, outputs, releases)``: instruction ``k``
+      is ``('input', i)``, ``('const', c)``, ``('add', r, ...)``,
+      ``('mul', r, ...)``, ``('ipow', r, n)``, ``('pow', r, s)``,
+      ``('call', name, r, ...)`` or ``('cmp', name, r, s)``, where ``r, s``
+      are indices of earlier instructions; ``releases[k]`` lists the
+      results no longer needed after instruction ``k``
+    - ``inputs`` -- list of 1-D arrays (the values of the input symbols)
+    - ``size`` -- the number of points
+
+    OUTPUT: a list of arrays of length ``size``, one per output
+
+    EXAMPLES: `x y + 2` and `x^2 > y`::
+
+        sage: from sage_dynsym.scale.kernel import run_program
+        sage: import numpy as np
+        sage: prog = ([('input', 0), ('input', 1), ('mul', 0, 1), ('const', 2.0),
+        ....:          ('add', 2, 3), ('ipow', 0, 2), ('cmp', 'gt', 5, 1)], [4, 6],
+        ....:         [[], [], [], [], [], [0], [1, 5]])
+        sage: run_program(prog, [np.array([1., 2.]), np.array([3., 3.])], 2)
+        [array([5., 8.]), array([False,  True])]
+    """
+    instructions, outputs, releases = program
+    regs = [None] * len(instructions)
+    with np.errstate(all='ignore'):
+        for k, ins in enumerate(instructions):
+            op = ins[0]
+            if op == 'input':
+                value = inputs[ins[1]]
+            elif op == 'const':
+                value = ins[1]
+            elif op == 'add':
+                value = regs[ins[1]]
+                for r in ins[2:]:
+                    value = value + regs[r]
+            elif op == 'mul':
+                value = regs[ins[1]]
+                for r in ins[2:]:
+                    value = value * regs[r]
+            elif op == 'ipow':
+                value = _integer_power(regs[ins[1]], ins[2])
+            elif op == 'pow':
+                value = np.power(regs[ins[1]], regs[ins[2]])
+            elif op == 'call':
+                value = FUNCTIONS[ins[1]](*(regs[r] for r in ins[2:]))
+            elif op == 'cmp':
+                value = COMPARISONS[ins[1]](regs[ins[2]], regs[ins[3]])
+            else:
+                raise ValueError(f"unknown instruction {op!r}")
+            regs[k] = value
+            for r in releases[k]:
+                regs[r] = None
+    return [np.broadcast_to(np.asarray(regs[k]), (size,)) for k in outputs]
+
+
+def _integer_power(x, n):
+    if n == 1:
+        return x
+    if n == -1:
+        return 1.0 / x
+    if n < 0:
+        return 1.0 / _integer_power(x, -n)
+    if n == 2:
+        return x * x
+    return np.power(x, float(n)) if isinstance(x, np.ndarray) else x ** n
+
+
+# ---------------------------------------------------------------------------
+# points
+# ---------------------------------------------------------------------------
+
+def chunk_points(spec, start, stop):
+    r"""
+    The coordinates of the points ``start, ..., stop - 1`` of a point
+    specification (see the module documentation).
+
+    OUTPUT: a list of 1-D arrays, one per parameter
+
+    EXAMPLES: random points do not depend on how they are chunked::
+
+        sage: from sage_dynsym.scale.kernel import chunk_points
+        sage: import numpy as np
+        sage: spec = ('samples', [0., -1.], [1., 1.], 7)
+        sage: whole = chunk_points(spec, 0, 5000)
+        sage: parts = [chunk_points(spec, a, b) for a, b in ((0, 4095), (4095, 4097), (4097, 5000))]
+        sage: all((np.concatenate([p[k] for p in parts]) == whole[k]).all() for k in (0, 1))
+        True
+    """
+    kind = spec[0]
+    if kind == 'grid':
+        axes = [np.asarray(a, dtype=float) for a in spec[1]]
+        index = np.unravel_index(np.arange(start, stop), tuple(len(a) for a in axes))
+        return [a[i] for a, i in zip(axes, index)]
+    if kind == 'samples':
+        lows, highs, seed = (np.asarray(spec[1], float), np.asarray(spec[2], float), int(spec[3]))
+        start, stop = int(start), int(stop)
+        first, last = start // BLOCK, max(start, stop - 1) // BLOCK
+        blocks = [np.random.default_rng([seed, int(b)]).random((BLOCK, len(lows)))
+                  for b in range(first, last + 1)]
+        u = np.concatenate(blocks)[start - first * BLOCK: stop - first * BLOCK]
+        return [lows[k] + (highs[k] - lows[k]) * u[:, k] for k in range(len(lows))]
+    raise ValueError(f"unknown point specification {kind!r}")
+
+
+# ---------------------------------------------------------------------------
+# spectral abscissa
+# ---------------------------------------------------------------------------
+
+def polynomial_abscissa(coefficients):
+    r"""
+    The largest real part ``alpha`` and the largest modulus ``rho`` of the
+    roots of many real polynomials at once.
+
+    Laguerre's method, vectorised over the polynomials: one root at a
+    time from 0 (so roughly in increasing modulus, which keeps deflation
+    stable), then deflation by `z - r` for a real root or by the real
+    quadratic `z^2 - 2\,\mathrm{Re}(r) z + |r|^2` for a complex one.
+    Polynomials whose leading coefficient vanishes, and the rare ones where
+    the iteration does not converge, are solved one by one with
+    ``numpy.roots``. A polynomial that is a nonzero constant has no roots:
+    ``alpha = -inf``, ``rho = 0``; non-finite or all-zero coefficients give
+    ``nan``.
+
+    INPUT: ``coefficients`` -- array ``(m, n + 1)``, highest degree first
+
+    OUTPUT: two arrays of length ``m``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.kernel import polynomial_abscissa
+        sage: import numpy as np
+        sage: c = np.array([np.poly([-1, -2 + 3j, -2 - 3j, 0.5]).real, [0, 0, 1, 2, 1.]])
+        sage: polynomial_abscissa(c)      # roots -1, -2 +- 3i, 1/2; then -1 (double)
+        (array([ 0.5, -1. ]), array([3.60555128, 1.        ]))
+    """
+    c = np.asarray(coefficients, dtype=float)
+    m, n1 = c.shape
+    alpha, rho = np.full(m, -np.inf), np.zeros(m)
+    finite = np.isfinite(c).all(axis=1)
+    alpha[~finite] = rho[~finite] = np.nan
+    regular = finite & (c[:, 0] != 0)
+    singular = np.flatnonzero(finite & ~regular)
+    idx = np.flatnonzero(regular)
+    groups = [(idx, (c[idx, 1:] / c[idx, :1]).T.copy())] if n1 > 1 else []
+    while groups:
+        idx, a = groups.pop()               # a: monic, rows = coefficients 1..n
+        n = a.shape[0]
+        if n == 0 or len(idx) == 0:
+            continue
+        if n <= 2:
+            re, mod = _small_roots(a)
+        else:
+            x, ok = _laguerre(a)
+            if not ok.all():
+                singular = np.concatenate([singular, idx[~ok]])
+                idx, a, x = idx[ok], a[:, ok], x[ok]
+            re, mod = x.real, np.abs(x)
+            pair = np.abs(x.imag) > 1e-7 * mod
+            for sel, quadratic in ((~pair, False), (pair, True)):
+                if sel.any():
+                    groups.append((idx[sel], _deflate(a[:, sel], x[sel], quadratic)))
+        alpha[idx] = np.maximum(alpha[idx], re)
+        rho[idx] = np.maximum(rho[idx], mod)
+    for i in singular:
+        roots = np.roots(c[i])
+        if not np.isfinite(roots).all():
+            alpha[i] = rho[i] = np.nan
+        elif len(roots):
+            alpha[i], rho[i] = roots.real.max(), np.abs(roots).max()
+        elif not c[i].any():
+            alpha[i] = rho[i] = np.nan
+    return alpha + 0.0, rho         # + 0.0: no negative zeros
+
+
+def _small_roots(a):
+    # degree 1 or 2, monic: largest real part and largest modulus
+    if a.shape[0] == 1:
+        return -a[0], np.abs(a[0])
+    h, q = -a[0] / 2, a[1]
+    disc = h * h - q
+    s = np.sqrt(np.abs(disc))
+    real = disc >= 0
+    # the real roots h +- s, computed as r1 = h + sign(h) s and q / r1
+    r1 = h + np.copysign(s, h)
+    with np.errstate(all='ignore'):
+        r2 = np.where(r1 != 0, q / r1, 0.0)
+    re = np.where(real, np.maximum(r1, r2), h)
+    mod = np.where(real, np.maximum(np.abs(r1), np.abs(r2)), np.sqrt(np.abs(q)))
+    return re, mod
+
+
+def _laguerre(a, maxit=60):
+    r"""One root of each monic polynomial (columns of ``a``, coefficients
+    1..n), and whether the iteration converged."""
+    n, m = a.shape
+    x = np.zeros(m, dtype=complex)
+    ok = np.zeros(m, dtype=bool)
+    act = np.arange(m)
+    xa, aa = x.copy(), a
+    with np.errstate(all='ignore'):
+        for _ in range(maxit):
+            p = xa + aa[0]
+            dp = np.ones_like(p)
+            ddp = np.zeros_like(p)
+            ax = np.abs(xa)
+            bound = ax + np.abs(aa[0])
+            for j in range(1, n):
+                ddp = ddp * xa + dp
+                dp = dp * xa + p
+                p = p * xa + aa[j]
+                bound = bound * ax + np.abs(aa[j])
+            # |p| at the rounding level of Horner's scheme: x is a root
+            done = np.abs(p) <= 8 * _EPS * bound
+            g = dp / p
+            h = g * g - 2 * ddp / p
+            sq = np.sqrt((n - 1) * (n * h - g * g))
+            d1, d2 = g + sq, g - sq
+            step = n / np.where(np.abs(d1) >= np.abs(d2), d1, d2)
+            step[~np.isfinite(step)] = 0.6 + 0.8j      # p' = p'' = 0: move off
+            step[done] = 0
+            xa = xa - step
+            done |= np.abs(step) <= 1e-14 * np.abs(xa)
+            if done.any():
+                x[act[done]] = xa[done]
+                ok[act[done]] = True
+                keep = ~done
+                if not keep.any():
+                    break
+                act, xa, aa = act[keep], xa[keep], aa[:, keep]
+    return x, ok
+
+
+def _deflate(a, x, quadratic):
+    # synthetic division of the monic polynomials by z - r or by the real
+    # quadratic factor of the pair r, conj(r); the quotient is monic
+    n, m = a.shape
+    if quadratic:
+        p, q = -2 * x.real, np.abs(x) ** 2
+        d = np.empty((n - 2, m))
+        prev2, prev = np.zeros(m), np.ones(m)
+        for j in range(n - 2):
+            cur = a[j] - p * prev - q * prev2
+            d[j] = cur
+            prev2, prev = prev, cur
+        return d
+    r = x.real
+    d = np.empty((n - 1, m))
+    prev = np.ones(m)
+    for j in range(n - 1):
+        prev = a[j] + r * prev
+        d[j] = prev
+    return d
+
+
+def pencil_abscissa(J, B=None):
+    r"""
+    The largest real part and the largest modulus of the finite
+    eigenvalues of the pencils `B\lambda - J` (``numpy.linalg.eigvals`` on
+    a stack of matrices).
+
+    Where `B` is well conditioned the eigenvalues are those of `B^{-1}J`;
+    where it is singular (condition number above `10^{12}`), those of the
+    generalized problem (``scipy.linalg.eigvals(J, B)``, one point at a
+    time), infinite eigenvalues left out (no finite eigenvalue: ``-inf``).
+    Non-finite entries and singular pencils (`\det(B\lambda - J) \equiv 0`)
+    give ``nan``.
+
+    INPUT: ``J``, ``B`` -- arrays ``(m, k, k)``; ``B=None`` is the identity
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.kernel import pencil_abscissa
+        sage: import numpy as np
+        sage: J = np.array([[[0., 1.], [-2., -3.]], [[0., 1.], [-1., 0.]]])
+        sage: pencil_abscissa(J)
+        (array([-1.,  0.]), array([2., 1.]))
+        sage: B = np.array([[[1., 0.], [0., 0.]]] * 2)
+        sage: pencil_abscissa(J, B)[0]     # x' = y, 0 = -2x - 3y: x' = -2/3 x; x' = y, 0 = -x
+        array([-0.66666667,        -inf])
+        sage: pencil_abscissa(np.array([[[0., 1.], [0., 0.]]]), B[:1])[0]   # det(B lam - J) = 0
+        array([nan])
+    """
+    m = J.shape[0]
+    alpha, rho = np.full(m, np.nan), np.full(m, np.nan)
+    good = np.isfinite(J).all(axis=(1, 2))
+    if B is not None:
+        good &= np.isfinite(B).all(axis=(1, 2))
+    idx = np.flatnonzero(good)
+    if B is None:
+        easy, hard = idx, idx[:0]
+    else:
+        with np.errstate(all='ignore'):
+            cond = np.linalg.cond(B[idx]) if len(idx) else np.zeros(0)
+        easy, hard = idx[cond < 1e12], idx[~(cond < 1e12)]
+    if len(easy):
+        A = J[easy] if B is None else np.linalg.solve(B[easy], J[easy])
+        w = np.linalg.eigvals(A)
+        alpha[easy], rho[easy] = w.real.max(axis=1), np.abs(w).max(axis=1)
+    if len(hard):
+        from scipy.linalg import eigvals
+        for i in hard:
+            if _singular_pencil(J[i], B[i]):
+                continue
+            w = eigvals(J[i], B[i])
+            w = w[np.isfinite(w)]
+            alpha[i], rho[i] = (w.real.max(), np.abs(w).max()) if len(w) else (-np.inf, 0.0)
+    return alpha + 0.0, rho
+
+
+def _singular_pencil(J, B):
+    # det(B lam - J) vanishes identically: test at an arbitrary complex lam
+    lam = 0.6180339887 + 0.7548776662j
+    scale = (np.abs(J).max() + np.abs(B).max() * abs(lam)) ** len(J)
+    return abs(np.linalg.det(B * lam - J)) <= 1e-12 * scale
+
+
+# ---------------------------------------------------------------------------
+# chunk functions (the Dask tasks)
+# ---------------------------------------------------------------------------
+
+def map_chunk(task, start, stop):
+    r"""
+    The largest real part of the characteristic roots and the verdict at
+    the points ``start .. stop - 1`` of a stability map.
+
+    ``task`` is a dict: ``points`` (a point specification), ``method``
+    (``'polynomial'`` or ``'eigvals'``), ``program`` (the coefficients of
+    the characteristic polynomial, highest degree first; or the entries of
+    `J` then of `B`, row by row), ``size`` (the order `k` of the pencil),
+    ``lhs`` (whether `B` is given) and ``tol``. A point is asymptotically
+    stable when ``alpha < -tol * rho``.
+
+    OUTPUT: ``(alpha, stable)``, arrays of length ``stop - start``
+
+    EXAMPLES: `\lambda^2 + c\lambda + 1` for `c = -1, 0, 1`::
+
+        sage: from sage_dynsym.scale.kernel import map_chunk
+        sage: task = dict(points=('grid', [[-1., 0., 1.]]), method='polynomial', tol=1e-9,
+        ....:             program=([('input', 0), ('const', 1.0)], [1, 0, 1], [[], []]))
+        sage: map_chunk(task, 0, 3)
+        (array([ 0.5,  0. , -0.5]), array([False, False,  True]))
+    """
+    alpha = np.empty(stop - start)
+    stable = np.empty(stop - start, dtype=bool)
+    for a in range(start, stop, BATCH):
+        b = min(stop, a + BATCH)
+        values = run_program(task['program'], chunk_points(task['points'], a, b), b - a)
+        if task['method'] == 'polynomial':
+            al, rh = polynomial_abscissa(np.stack(values, axis=1))
+        else:
+            k = task['size']
+            J = np.stack(values[:k * k], axis=1).reshape(b - a, k, k)
+            B = np.stack(values[k * k:], axis=1).reshape(b - a, k, k) if task['lhs'] else None
+            al, rh = pencil_abscissa(J, B)
+        alpha[a - start:b - start] = al
+        with np.errstate(invalid='ignore'):
+            stable[a - start:b - start] = al < -task['tol'] * rh
+    return alpha, stable
+
+
+def sweep_chunk(task, start, stop):
+    r"""
+    The user's function at the points ``start .. stop - 1`` of a sweep.
+
+    ``task`` is a dict: ``points``, ``names`` (the keyword of each
+    parameter), ``fixed`` (other keyword arguments), ``function`` and
+    ``vectorized`` (call once with arrays instead of once per point).
+
+    OUTPUT: a list of results (one per point), or the function's result on
+    the arrays; a failure at a point is returned as
+    ``('__sweep_failure__', point, error class name, message)``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.kernel import sweep_chunk
+        sage: task = dict(points=('grid', [[1., 2.], [10., 20.]]), names=['a', 'b'],
+        ....:             fixed={'c': 100}, function=lambda a, b, c: a + b + c, vectorized=False)
+        sage: sweep_chunk(task, 1, 4)
+        [121.0, 112.0, 122.0]
+        sage: task['function'] = lambda a, b, c: a / (b - 20)
+        sage: sweep_chunk(task, 0, 4)[1]
+        ('__sweep_failure__', {'a': 1.0, 'b': 20.0}, 'ZeroDivisionError', 'float division by zero')
+    """
+    columns = chunk_points(task['points'], start, stop)
+    names, fixed, function = task['names'], task['fixed'], task['function']
+    if task['vectorized']:
+        return function(**dict(zip(names, columns)), **fixed)
+    results = []
+    for values in zip(*columns):
+        point = {name: float(v) for name, v in zip(names, values)}
+        try:
+            results.append(function(**point, **fixed))
+        except Exception as err:       # reported with the point by the caller
+            results.append(('__sweep_failure__', point, type(err).__name__, str(err)))
+    return results
+
+
+def identity(value):
+    r"""``value`` itself (a Dask task holding the data shared by the chunks).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.kernel import identity
+        sage: identity({'a': 1})
+        {'a': 1}
+    """
+    return value

@@ -1,0 +1,170 @@
+r"""
+The points of a stability map or a sweep
+
+:func:`parse_points` checks the user's ``parameters`` (ranges) and
+``samples`` and returns a :class:`Points`: the parameter keys, the shape of
+the results and the point specification that the kernels expand chunk by
+chunk (see :mod:`sage_dynsym.scale.kernel`).
+
+A range is ``(low, high, n)``: ``n`` equally spaced values from ``low`` to
+``high``, both included (``n = 1``: ``low`` alone, then ``high`` must equal
+``low``). A 1-D NumPy array gives the values of an axis explicitly. With
+``samples=N`` the points are ``N`` uniform random points in the box of the
+ranges (``(low, high)``; an ``n`` is ignored), drawn from ``seed``.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.scale.points import parse_points
+    sage: P = parse_points({'a': (0, 1, 3), 'b': (10, 20, 2)}); P
+    6 points: a grid 3 x 2 in (a, b)
+    sage: P.axes()
+    [array([0. , 0.5, 1. ]), array([10., 20.])]
+    sage: parse_points({'a': (0, 1)}, samples=1000, seed=5)
+    1000 points: random samples in (a)
+"""
+import numbers
+
+import numpy as np
+
+from ..errors import AnalysisError
+
+
+class Points:
+    r"""
+    The points of a computation: ``keys`` (the parameters, in order),
+    ``shape`` (of the result arrays), ``size``, ``spec`` (for the kernels)
+    and whether they form a grid.
+    """
+
+    def __init__(self, keys, spec, shape):
+        self.keys, self.spec, self.shape = list(keys), spec, tuple(shape)
+        self.size = int(np.prod(self.shape, dtype=np.int64))
+
+    def is_grid(self):
+        r"""Whether the points form a grid (else random samples).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.scale.points import parse_points
+            sage: parse_points({'a': (0, 1, 3)}).is_grid(), parse_points({'a': (0, 1)}, 9).is_grid()
+            (True, False)
+        """
+        return self.spec[0] == 'grid'
+
+    def axes(self):
+        r"""The axes of a grid (list of 1-D arrays), ``None`` for samples.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.scale.points import parse_points
+            sage: parse_points({'a': (0, 1, 3)}).axes(), parse_points({'a': (0, 1)}, 9).axes()
+            ([array([0. , 0.5, 1. ])], None)
+        """
+        return list(self.spec[1]) if self.is_grid() else None
+
+    def __repr__(self):
+        names = ', '.join(map(str, self.keys))
+        if self.is_grid():
+            return f"{self.size} points: a grid {' x '.join(map(str, self.shape))} in ({names})"
+        return f"{self.size} points: random samples in ({names})"
+
+
+def parse_points(parameters, samples=None, seed=0, entry="parameters"):
+    r"""
+    Check ``parameters`` (a dict ``{key: range}``) and ``samples`` and
+    return the :class:`Points`.
+
+    TESTS::
+
+        sage: from sage_dynsym.scale.points import parse_points
+        sage: parse_points({'a': (1, 0, 5)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: empty range (1, 0, 5): expected low < high (or low = high with n = 1)
+        sage: parse_points({'a': (0, 1, 0)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: empty range (0, 1, 0): n must be a positive integer
+        sage: parse_points({'a': (0, 'x', 3)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: expected (low, high, n) with real numbers low, high and an integer n, got (0, 'x', 3)
+        sage: parse_points({})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: no parameters: expected a dict {parameter: (low, high, n)}
+        sage: parse_points({'a': (0, 1, 3)}, samples=0)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: samples: expected a positive number of random points, got 0
+        sage: parse_points({'a': (0, float('inf'), 3)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: the bounds must be finite, got (0, inf, 3)
+        sage: import numpy as np
+        sage: parse_points({'a': np.array([])})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: empty range: an array of values must be 1-D, finite and not empty
+    """
+    if not isinstance(parameters, dict) or not parameters:
+        raise AnalysisError("no parameters: expected a dict {parameter: (low, high, n)}",
+                            entry=entry)
+    if samples is not None:
+        if not _is_integer(samples) or int(samples) < 1:
+            raise AnalysisError(f"expected a positive number of random points, got {samples!r}",
+                                entry="samples")
+        lows, highs = [], []
+        for key, spec in parameters.items():
+            low, high, _ = _range(key, spec, entry, samples=True)
+            lows.append(low)
+            highs.append(high)
+        return Points(parameters, ('samples', lows, highs, int(seed)), (int(samples),))
+    axes = []
+    for key, spec in parameters.items():
+        if isinstance(spec, np.ndarray):
+            values = np.asarray(spec, dtype=float)
+            if values.ndim != 1 or not len(values) or not np.isfinite(values).all():
+                raise AnalysisError("empty range: an array of values must be 1-D, finite and "
+                                    "not empty", entry=f"{entry}[{key}]")
+            axes.append(values)
+            continue
+        low, high, n = _range(key, spec, entry)
+        axes.append(np.linspace(low, high, n))
+    return Points(parameters, ('grid', axes), [len(a) for a in axes])
+
+
+def _is_integer(x):
+    return isinstance(x, numbers.Integral) or (hasattr(x, 'is_integer') and not isinstance(x, float)
+                                               and _true(x.is_integer))
+
+
+def _true(method):
+    try:
+        return bool(method())
+    except (TypeError, ValueError):
+        return False
+
+
+def _range(key, spec, entry, samples=False):
+    where = f"{entry}[{key}]"
+    shape = "(low, high)" if samples else "(low, high, n)"
+    ok = isinstance(spec, (tuple, list)) and len(spec) in ((2, 3) if samples else (3,))
+    try:
+        low, high = float(spec[0]), float(spec[1])
+        n = int(spec[2]) if ok and len(spec) == 3 else 2
+        ok = ok and (len(spec) == 2 or _is_integer(spec[2]))
+    except (TypeError, ValueError, IndexError, KeyError):
+        ok = False
+    if not ok:
+        raise AnalysisError(f"expected {shape} with real numbers low, high"
+                            f"{'' if samples else ' and an integer n'}, got {spec!r}", entry=where)
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise AnalysisError(f"the bounds must be finite, got {tuple(spec)!r}", entry=where)
+    if n < 1:
+        raise AnalysisError(f"empty range {tuple(spec)!r}: n must be a positive integer",
+                            entry=where)
+    if not (low < high or (low == high and n == 1 and not samples)):
+        raise AnalysisError(f"empty range {tuple(spec)!r}: expected low < high (or low = high "
+                            "with n = 1)", entry=where)
+    return low, high, n
