@@ -206,7 +206,7 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
         try:
             if progress:
                 _show_progress(distributed, futures)
-            for future in distributed.as_completed(futures):
+            for future in distributed.as_completed(futures, loop=c.loop):
                 try:
                     result = future.result()
                 except distributed.KilledWorker as err:

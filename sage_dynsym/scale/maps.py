@@ -1,0 +1,837 @@
+r"""
+Stability maps: the first approximation at many parameter points
+
+:func:`stability_map` decides the stability of a linear system (from
+:func:`~sage_dynsym.analysis.linear.linearize`) at every point of a grid,
+or of random samples, in a space of parameters: the classical stability
+diagrams of satellite and gyrostat studies, the design chart of a circuit.
+The symbolic work is done once -- the fixed values substituted, the
+characteristic polynomial (or the matrices) compiled into a vectorised
+NumPy program -- and the points are cut into chunks that run as Dask tasks
+(:mod:`sage_dynsym.scale.cluster`: a local cluster by default, any Dask
+scheduler, or ``client=False`` for plain NumPy in this process).
+
+At each point the map holds the largest real part `\alpha` of the
+characteristic roots and the verdict *asymptotically stable in the first
+approximation*, `\alpha < -\mathrm{tol}\cdot\rho` with `\rho` the largest
+modulus of the roots (default ``tol = 1e-9``): rounding errors do not make
+a critical point (`\alpha = 0`) stable. Two methods compute `\alpha`:
+
+- ``'polynomial'`` (the default when the characteristic polynomial is
+  available): its coefficients are compiled and its roots found by a
+  vectorised Laguerre iteration (:func:`~sage_dynsym.scale.kernel.polynomial_abscissa`);
+- ``'eigvals'``: the matrices `J, B` of the pencil `B\dot x = J x` (for a
+  second-order system `x = (z, \dot z)`, `B = \mathrm{diag}(I, M)`) are
+  compiled and ``numpy.linalg.eigvals`` runs on stacks of matrices
+  (:func:`~sage_dynsym.scale.kernel.pencil_abscissa`).
+
+The points and chunks do not depend on the number of workers, and random
+samples are drawn per block from a fixed seed: a map is the same, to the
+last bit, on one worker, on many, or without Dask.
+
+EXAMPLES:
+
+A damped oscillator `m\ddot x + c\dot x + k x = 0` in the plane of `c`
+and `k`, without Dask (``client=False``)::
+
+    sage: from sage_dynsym.analysis import linearize
+    sage: from sage_dynsym.scale import stability_map
+    sage: x, y, m, c, k = var('x y m c k')
+    sage: osc = linearize([y, -(c*y + k*x)/m], {x: 0, y: 0}, [x, y])
+    sage: S = stability_map(osc, {c: (-1, 2, 31), k: (-1, 2, 31)}, fixed={m: 1}, client=False)
+    sage: S
+    Stability map of 31 x 31 points in (c, k): 41.6% asymptotically stable
+    sage: S.axes()[c][:3], S.max_real_part().shape
+    (array([-1. , -0.9, -0.8]), (31, 31))
+
+The Liénard--Chipart conditions of `\lambda^2 + c\lambda + k` are
+`c > 0, k > 0`; the map agrees with them everywhere, the boundary
+included::
+
+    sage: S.agreement([c > 0, k > 0])
+    1.0
+    sage: S.plot([c > 0, k > 0])
+    Graphics object consisting of 3 graphics primitives
+
+The same map on a Dask cluster (here a local one, started and closed for
+the computation) is identical::
+
+    sage: T = stability_map(osc, {c: (-1, 2, 31), k: (-1, 2, 31)}, fixed={m: 1}, workers=1)
+    sage: bool((T.max_real_part() == S.max_real_part()).all())
+    True
+"""
+import os
+
+import numpy as np
+
+from sage.matrix.constructor import matrix, block_matrix, identity_matrix, zero_matrix
+from sage.rings.rational_field import QQ
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
+from .compile import compile_expressions
+from .kernel import map_chunk, chunk_points, run_program
+from .points import parse_points
+
+CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
+MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
+
+
+def stability_map(system, parameters, fixed=None, client=None, samples=None, *, at=None,
+                  variables=None, lhs_matrix=None, seed=0, method='auto', tol=1e-9,
+                  conditions=None, chunk_size=CHUNK, workers=None, timeout=DEFAULT_TIMEOUT,
+                  progress=False):
+    r"""
+    The stability map of a linear system over a grid (or random samples)
+    of parameter values.
+
+    INPUT:
+
+    - ``system`` -- a :class:`~sage_dynsym.analysis.linear.LinearSystem`
+      (from :func:`~sage_dynsym.analysis.linear.linearize`); or what
+      ``linearize`` accepts, with ``at=`` (and ``variables=``,
+      ``lhs_matrix=``); or a model: a circuit (its free state equations,
+      sources off, around the zero state; see :func:`model_linear_system`)
+      or a mechanical system (its Lagrangian around ``at``, default all
+      coordinates 0)
+    - ``parameters`` -- dict ``{symbol: (low, high, n)}`` (symbols or their
+      names); the result arrays are indexed in this order
+    - ``fixed`` -- dict ``{symbol: number}``, the values of the other
+      symbols; a key may also be an expression of the system such as
+      ``diff(f(u), u).subs(u=0)``
+    - ``client`` -- ``None`` (a local Dask cluster, started and closed),
+      a Dask ``Client``, a scheduler address, or ``False`` (no Dask); see
+      :mod:`sage_dynsym.scale.cluster`
+    - ``samples`` -- (optional) a number of uniform random points in the box
+      of the ranges instead of the grid, drawn from ``seed``
+    - ``method`` -- ``'auto'`` (default), ``'polynomial'`` or ``'eigvals'``
+      (see the module documentation)
+    - ``tol`` -- the stability margin relative to the largest modulus of
+      the roots
+    - ``conditions`` -- (optional) the exact stability conditions (see
+      :meth:`StabilityMap.exact`), drawn by :meth:`StabilityMap.plot`; or
+      ``'lienard-chipart'`` to derive them from the characteristic
+      polynomial with :func:`~sage_dynsym.analysis.hurwitz.lienard_chipart_conditions`
+    - ``chunk_size`` -- points per Dask task
+    - ``workers`` -- the number of workers of the local cluster (default:
+      one per core)
+    - ``timeout`` -- seconds to reach a scheduler and get a worker
+    - ``progress`` -- show Dask's progress bar
+
+    OUTPUT: a :class:`StabilityMap`
+
+    EXAMPLES: see the module documentation. A system given as right-hand
+    sides, on 2000 random points::
+
+        sage: from sage_dynsym.scale import stability_map
+        sage: x, y, a, b = var('x y a b')
+        sage: S = stability_map([y, -sin(x) - a*y + b*x], {a: (-1, 1), b: (-1, 1)}, samples=2000,
+        ....:                   at={x: 0, y: 0}, variables=[x, y], client=False)
+        sage: S
+        Stability map of 2000 random points in (a, b): 49.5% asymptotically stable
+        sage: S.agreement([a > 0, 1 - b > 0])
+        1.0
+
+    TESTS::
+
+        sage: S = stability_map([y, -a*x - b*y], {a: (0, 1, 5), var('z'): (0, 1, 5)},
+        ....:                   at={x: 0, y: 0}, variables=[x, y], client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability_map: unknown parameter z: the symbols of the system are a, b
+        sage: S = stability_map([y, -a*x - b*y], {a: (0, 1, 5)}, at={x: 0, y: 0},
+        ....:                   variables=[x, y], client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability_map: no value for b: give it as a parameter or in fixed=
+        sage: S = stability_map([y, -a*x - b*y], {a: (0, 1, 5)}, fixed={'b': 'one'},
+        ....:                   at={x: 0, y: 0}, variables=[x, y], client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability_map: fixed[b]: expected a real number, got 'one'
+        sage: S = stability_map([y, -a*x - b*y], {a: (0, 1, 5)}, fixed={a: 1, b: 1},
+        ....:                   at={x: 0, y: 0}, variables=[x, y], client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability_map: a is both a parameter and fixed
+        sage: stability_map(x, {a: (0, 1, 5)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability_map: expected a linear system (from linearize), or what linearize accepts with at=, or a circuit or mechanical model, got x
+    """
+    entry = "stability_map"
+    linear = _linear_system(system, at, variables, lhs_matrix)
+    if method not in ('auto', 'polynomial', 'eigvals'):
+        raise AnalysisError(f"method must be 'auto', 'polynomial' or 'eigvals', got {method!r}",
+                            entry=entry)
+    symbols = _symbols(linear)
+    names = {str(s): s for s in symbols}
+    keys = [_resolve(k, names, symbols, "unknown parameter") for k in parameters]
+    if len(set(keys)) < len(keys):
+        raise AnalysisError("a parameter is given twice", entry=entry)
+    values = {}
+    for k, v in (fixed or {}).items():
+        key = _resolve(k, names, symbols, "unknown symbol in fixed=", expressions=linear)
+        if key in keys:
+            raise AnalysisError(f"{key} is both a parameter and fixed", entry=entry)
+        values[key] = _exact_number(v, f"fixed[{k}]")
+    points = parse_points(dict(zip(keys, parameters.values())), samples, seed)
+    fixed_system = _substitute(linear, values)
+    missing = sorted(set(_symbols(fixed_system)) - set(keys), key=str)
+    if missing:
+        raise AnalysisError(f"no value for {', '.join(map(str, missing))}: give "
+                            f"{'it' if len(missing) == 1 else 'them'} as a parameter or in "
+                            "fixed=", entry=entry)
+    lam = SR.var('lambda_')
+    poly, note = None, None
+    if method != 'eigvals' or conditions == 'lienard-chipart':
+        poly, note = _characteristic_polynomial(fixed_system, lam, method == 'polynomial')
+    if method == 'auto':
+        method = 'polynomial' if poly is not None else 'eigvals'
+    if method == 'polynomial':
+        coefficients = poly.coefficients(lam, sparse=False)[::-1]
+        task = dict(method='polynomial', program=compile_expressions(coefficients, keys, entry))
+    else:
+        J, B = _pencil(fixed_system)
+        lhs = B != identity_matrix(SR, B.nrows())
+        task = dict(method='eigvals', size=J.nrows(), lhs=lhs,
+                    program=compile_expressions(J.list() + (B.list() if lhs else []), keys, entry))
+    task.update(points=points.spec, tol=float(tol))
+    alpha = np.empty(points.size)
+    stable = np.empty(points.size, dtype=bool)
+
+    def collect(i, result):
+        a, b = ranges[i]
+        alpha[a:b], stable[a:b] = result
+
+    ranges = chunks(points.size, int(chunk_size))
+    run_chunks(map_chunk, task, ranges, collect, client=client, workers=workers,
+               timeout=timeout, progress=progress, label='stability-map')
+    if conditions == 'lienard-chipart':
+        conditions, note = _lienard_chipart(poly, lam, note)
+    return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
+                        values, method, tol, conditions, note)
+
+
+# ---------------------------------------------------------------------------
+# the system
+# ---------------------------------------------------------------------------
+
+def _linear_system(system, at, variables, lhs_matrix):
+    from ..analysis.linear import LinearSystem, linearize
+    from ..lagrangian import Lagrangian
+    from ..hamiltonian import Hamiltonian
+    if isinstance(system, LinearSystem):
+        return system
+    if _is_model(system):
+        return model_linear_system(system, at)
+    if at is None or not (isinstance(system, (Lagrangian, Hamiltonian, list, tuple))):
+        raise AnalysisError("expected a linear system (from linearize), or what linearize "
+                            "accepts with at=, or a circuit or mechanical model, got "
+                            f"{_short(system)}", entry="stability_map")
+    return linearize(system, _point(at), variables, lhs_matrix)
+
+
+def _short(obj):
+    text = str(obj)
+    return text if len(text) < 80 else text[:77] + '...'
+
+
+def _is_model(system):
+    return (hasattr(system, 'branches') and hasattr(system, 'state_equations')) or \
+        (hasattr(system, 'lagrangian') and hasattr(system, 'coordinates')
+         and hasattr(system, 'bodies'))
+
+
+def _point(at):
+    point = {}
+    for k, v in (at or {}).items():
+        if isinstance(k, str):
+            if not k.isidentifier():
+                raise AnalysisError(f"at: {k!r} is not a name", entry="stability_map")
+            k = SR.var(k)
+        if isinstance(v, str):
+            raise AnalysisError(f"at[{k}]: expected a number or an expression, got {v!r}",
+                                entry="stability_map")
+        point[SR(k)] = SR(v)
+    return point
+
+
+def model_linear_system(model, at=None):
+    r"""
+    The linear system whose stability :func:`stability_map` maps for a
+    model (also the ``map`` command line).
+
+    - A circuit: its free state equations `B\dot x = F(x)` (sources set to
+      zero), linearized around the zero state (``at`` may give other state
+      values). `B` is the circuit's ``lhs_matrix()`` when it has one, else
+      the diagonal of the inductances and capacitances; a circuit whose
+      state equations are not available (or with mutual inductances and no
+      ``lhs_matrix()``) is linearized from its loop Lagrangian, as in the
+      report.
+    - A mechanical system: its Lagrangian (dissipation included) linearized
+      around ``at``, by default all coordinates 0.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: from sage_dynsym.scale.maps import model_linear_system
+        sage: model_linear_system(load(example_path('rlc_ladder.yaml'))).lhs_matrix()
+        [L1  0  0  0  0  0]
+        [ 0 L2  0  0  0  0]
+        [ 0  0 L3  0  0  0]
+        [ 0  0  0 C3  0  0]
+        [ 0  0  0  0 C1  0]
+        [ 0  0  0  0  0 C2]
+    """
+    from ..analysis.linear import linearize
+    from ..errors import CircuitError
+    at = _point(at)
+    if hasattr(model, 'branches'):
+        sources = {SR.var(b.name): 0 for b in model.branches()
+                   if b.kind in ('voltage_source', 'current_source')}
+        try:
+            pairs = model.state_variables()
+            rhs = [SR(f).subs(sources) for f in model.state_equations()]
+        except CircuitError:
+            pairs = None
+        if pairs is not None and (hasattr(model, 'lhs_matrix') or not model.couplings()):
+            xs = [s for s, _ in pairs]
+            if hasattr(model, 'lhs_matrix'):
+                B = matrix(SR, model.lhs_matrix()).subs(sources)
+            else:
+                value = {b.name: SR(b.value) for b in model.branches()}
+                B = matrix.diagonal(SR, [value[name] for _, name in pairs])
+            point = {x: SR(0) for x in xs}
+            point.update(at)
+            return linearize(rhs, point, xs, lhs_matrix=B)
+        L = model.lagrangian().subs(sources) if sources else model.lagrangian()
+    else:
+        L = model.lagrangian()
+    point = {q: SR(0) for q in L.coordinates()}
+    point.update(at)
+    return linearize(L, point)
+
+
+def _symbols(linear):
+    entries = []
+    for X in _matrices(linear):
+        entries += X.list()
+    return sorted(set().union(*(set(SR(e).variables()) for e in entries)), key=str)
+
+
+def _matrices(linear):
+    if linear.order() == 1:
+        return [_jacobian(linear), linear.lhs_matrix()]
+    return [linear.M(), linear.S(), linear.W()]
+
+
+def _jacobian(linear):
+    # J of B x' = J x (LinearSystem.jacobian() is B^{-1} J)
+    return -linear.characteristic_matrix(SR(0))
+
+
+def _resolve(key, names, symbols, what, expressions=None):
+    if isinstance(key, str):
+        if key in names:
+            return names[key]
+    else:
+        try:
+            k = SR(key)
+        except (TypeError, ValueError):
+            k = None
+        if k is not None and k in symbols:
+            return k
+        if k is not None and expressions is not None and not k.is_symbol() and \
+                any(SR(e).has(k) for X in _matrices(expressions) for e in X.list()):
+            return k
+    raise AnalysisError(f"{what} {key}: the symbols of the system are "
+                        f"{', '.join(map(str, symbols)) or '(none)'}", entry="stability_map")
+
+
+def _exact_number(value, where, entry="stability_map"):
+    # exact values keep the characteristic polynomial over QQ; a float is
+    # taken as the binary rational it is
+    from sage.rings.integer import Integer
+    from sage.rings.rational import Rational
+    from sage.symbolic.expression import Expression
+    if isinstance(value, str) or isinstance(value, bool):
+        z = None
+    else:
+        try:
+            z = complex(value)
+        except (TypeError, ValueError):
+            z = None
+    if z is None or z.imag != 0 or not np.isfinite(z.real):
+        raise AnalysisError(f"{where}: expected a real number, got {value!r}", entry=entry)
+    if isinstance(value, (int, Integer, Rational)):
+        return SR(QQ(value))
+    if isinstance(value, Expression) and value.is_constant() and not value.variables():
+        return value
+    return SR(QQ(float(z.real)))
+
+
+def _substitute(linear, values):
+    from ..analysis.linear import LinearSystem
+    if not values:
+        return linear
+    sub = lambda X: X.subs(values)
+    if linear.order() == 1:
+        return LinearSystem(linear.variables(), J=sub(_jacobian(linear)),
+                            B=sub(linear.lhs_matrix()))
+    return LinearSystem(linear.variables(), M=sub(linear.M()), S=sub(linear.S()),
+                        W=sub(linear.W()))
+
+
+def _pencil(linear):
+    r"""The matrices `J, B` of the first-order pencil `B\dot x = J x`."""
+    if linear.order() == 1:
+        return _jacobian(linear), linear.lhs_matrix()
+    n = len(linear.variables())
+    I, Z = identity_matrix(SR, n), zero_matrix(SR, n)
+    J = block_matrix(SR, [[Z, I], [-linear.W(), -linear.S()]], subdivide=False)
+    B = block_matrix(SR, [[I, Z], [Z, linear.M()]], subdivide=False)
+    return J, B
+
+
+def _characteristic_polynomial(linear, lam, required):
+    try:
+        poly = SR(linear.characteristic_polynomial(lam))
+        degree = poly.degree(lam)
+        if poly.is_zero():
+            raise AnalysisError("the characteristic polynomial vanishes identically "
+                                "(det(B lambda - J) = 0: a singular pencil)",
+                                entry="stability_map")
+        if degree > MAX_POLYNOMIAL_DEGREE:
+            raise AnalysisError(f"the characteristic polynomial has degree {degree} > "
+                                f"{MAX_POLYNOMIAL_DEGREE}", entry="stability_map")
+        return poly, None
+    except (AnalysisError, TypeError, ValueError, ArithmeticError, RuntimeError) as err:
+        if required or 'vanishes identically' in str(err):
+            raise
+        return None, f"no characteristic polynomial ({err}): eigenvalues of the matrices"
+
+
+def _lienard_chipart(poly, lam, note):
+    from ..analysis.hurwitz import lienard_chipart_conditions
+    if poly is None:
+        return None, note
+    try:
+        return lienard_chipart_conditions(poly, lam), note
+    except (AnalysisError, ArithmeticError, ValueError, TypeError, RuntimeError) as err:
+        return None, f"no Lienard-Chipart conditions ({err})"
+
+
+# ---------------------------------------------------------------------------
+# the result
+# ---------------------------------------------------------------------------
+
+class StabilityMap(SageObject):
+    r"""
+    The result of :func:`stability_map`.
+
+    The arrays (:meth:`max_real_part`, :meth:`stable`) are indexed in the
+    order of the parameters: ``A[i, j]`` is at the ``i``-th value of the
+    first parameter and the ``j``-th of the second. For random samples they
+    are 1-D, and :meth:`axes` gives the coordinates of the samples.
+
+    EXAMPLES: see :func:`stability_map`.
+    """
+
+    def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None):
+        self._points, self._alpha, self._stable = points, alpha, stable
+        self._fixed, self._method, self._tol = dict(fixed), method, tol
+        self._conditions, self._note = conditions, note
+
+    def _repr_(self):
+        names = ', '.join(map(str, self._points.keys))
+        share = 100 * self._stable.mean() if self._stable.size else 0
+        where = (' x '.join(map(str, self._points.shape)) + " points" if self._points.is_grid()
+                 else f"{self._points.size} random points")
+        return f"Stability map of {where} in ({names}): {share:.1f}% asymptotically stable"
+
+    def parameters(self):
+        r"""The parameters (symbols), in the order of the array indices.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a, b = var('a b')
+            sage: S = stability_map(LinearSystem([var('x')], J=[[a - b]]), {b: (0, 1, 3), a: (0, 1, 2)},
+            ....:                   client=False)
+            sage: S.parameters(), S.stable()
+            ([b, a],
+             array([[False, False],
+                    [ True, False],
+                    [ True, False]]))
+        """
+        return list(self._points.keys)
+
+    def axes(self):
+        r"""
+        Dict ``{symbol: 1-D array}``: the values of each parameter along its
+        axis; for random samples, the coordinates of the samples.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: stability_map(LinearSystem([var('x')], J=[[a]]), {a: (-1, 1, 5)}, client=False).axes()
+            {a: array([-1. , -0.5,  0. ,  0.5,  1. ])}
+        """
+        if self._points.is_grid():
+            columns = self._points.axes()
+        else:
+            columns = chunk_points(self._points.spec, 0, self._points.size)
+        return dict(zip(self._points.keys, columns))
+
+    def max_real_part(self):
+        r"""The largest real part of the characteristic roots at each point
+        (``nan`` where the system is not defined).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: S = stability_map(LinearSystem([var('x')], J=[[1/a]]), {a: (-1, 1, 3)}, client=False)
+            sage: S.max_real_part()
+            array([-1., nan,  1.])
+        """
+        return self._alpha
+
+    def stable(self):
+        r"""Boolean array: asymptotically stable in the first approximation.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: stability_map(LinearSystem([var('x')], J=[[a]]), {a: (-1, 1, 3)}, client=False).stable()
+            array([ True, False, False])
+        """
+        return self._stable
+
+    def fixed(self):
+        r"""The values of the other symbols, a dict.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a, b = var('a b')
+            sage: stability_map(LinearSystem([var('x')], J=[[a - b]]), {a: (-1, 1, 3)}, {b: 0.5},
+            ....:               client=False).fixed()
+            {b: 1/2}
+        """
+        return dict(self._fixed)
+
+    def method(self):
+        r"""``'polynomial'`` or ``'eigvals'`` (see :mod:`sage_dynsym.scale.maps`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: stability_map(LinearSystem([var('x')], J=[[a]]), {a: (-1, 1, 3)}, client=False,
+            ....:               method='eigvals').method()
+            'eigvals'
+        """
+        return self._method
+
+    def conditions(self):
+        r"""The exact conditions given to (or derived by) :func:`stability_map`,
+        or ``None``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a, b = var('a b')
+            sage: S = stability_map(LinearSystem([var('x'), var('y')], J=[[0, 1], [-a, -b]]),
+            ....:                   {a: (-1, 1, 3), b: (-1, 1, 3)}, client=False,
+            ....:                   conditions='lienard-chipart')
+            sage: S.conditions()
+            [a, b]
+        """
+        return None if self._conditions is None else list(self._conditions)
+
+    def note(self):
+        r"""A remark on how the map was computed, or ``None``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: print(stability_map(LinearSystem([var('x')], J=[[a]]), {a: (-1, 1, 3)},
+            ....:                     client=False).note())
+            None
+        """
+        return self._note
+
+    def exact(self, conditions=None):
+        r"""
+        The verdict of exact conditions at the points of the map (a boolean
+        array of the map's shape).
+
+        INPUT: ``conditions`` -- (default: those of the map) a list of
+        expressions (each meaning ``> 0``, as returned by
+        :func:`~sage_dynsym.analysis.hurwitz.lienard_chipart_conditions`) or
+        relationals, all to hold (an empty list always holds); or a list of
+        alternatives, each such a list (as returned by
+        ``stability_region``), one of which must hold. The fixed values are
+        substituted; the conditions must not contain other symbols.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: S = stability_map(LinearSystem([var('x')], J=[[a]]), {a: (-1, 1, 3)}, client=False)
+            sage: S.exact([-a]), S.exact([[a < -1/2], [a > 1/2]]), S.exact([])
+            (array([ True, False, False]), array([ True, False,  True]), array([ True,  True,  True]))
+        """
+        from ..analysis.conditions import as_relational
+        if conditions is None:
+            conditions = self._conditions
+        if conditions is None:
+            raise AnalysisError("no conditions: give them (e.g. from "
+                                "lienard_chipart_conditions)", entry="StabilityMap")
+        conditions = list(conditions)
+        if conditions and all(isinstance(c, (list, tuple)) for c in conditions):
+            alternatives = [list(c) for c in conditions]
+        else:
+            alternatives = [conditions]
+        flat = [as_relational(SR(c).subs(self._fixed)) for alt in alternatives for c in alt]
+        program = compile_expressions(flat, self._points.keys, entry="StabilityMap.exact")
+        result = np.empty(self._points.size, dtype=bool)
+        for a, b in chunks(self._points.size, CHUNK):
+            held = iter(run_program(program, chunk_points(self._points.spec, a, b), b - a))
+            verdict = np.zeros(b - a, dtype=bool)
+            for alt in alternatives:
+                ok = np.ones(b - a, dtype=bool)
+                for _ in alt:
+                    ok &= next(held)
+                verdict |= ok
+            result[a:b] = verdict
+        return result.reshape(self._points.shape)
+
+    def agreement(self, conditions=None, band=0):
+        r"""
+        The share of the points where the numerical verdict agrees with
+        exact conditions (see :meth:`exact`), among the points where the
+        system is defined.
+
+        INPUT:
+
+        - ``conditions`` -- as for :meth:`exact`
+        - ``band`` -- (default: 0) for a grid, leave out the points within
+          ``band`` grid steps (along every axis) of a point where the exact
+          verdict changes: a band of that width along the boundary
+
+        EXAMPLES: `\dot x = (a - b^2) x` is stable for `a < b^2`::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a, b = var('a b')
+            sage: S = stability_map(LinearSystem([var('x')], J=[[a - b^2]]),
+            ....:                   {a: (-1, 1, 41), b: (-1, 1, 41)}, client=False)
+            sage: S.agreement([b^2 - a]), S.agreement([b - a])     # the second is wrong
+            (1.0, 0.75...)
+            sage: S.agreement([b - a], band=20)
+            1.0
+        """
+        exact = self.exact(conditions)
+        considered = np.isfinite(self._alpha)
+        if band:
+            if not self._points.is_grid():
+                raise AnalysisError("band= needs a grid (the map has random samples)",
+                                    entry="StabilityMap.agreement")
+            considered &= ~_near_change(exact, int(band))
+        if not considered.any():
+            return float('nan')
+        return float((exact == self._stable)[considered].mean())
+
+    def plot(self, conditions=None, section=None, **options):
+        r"""
+        The map: stable points green, unstable red, undefined grey, with the
+        boundary of the region of exact conditions (given here or to
+        :func:`stability_map`) drawn over it.
+
+        INPUT:
+
+        - ``conditions`` -- as for :meth:`exact` (default: the map's)
+        - ``section`` -- for a map of more than two parameters, a dict
+          ``{symbol: value}`` fixing all but two of them (the nearest grid
+          value is taken)
+        - ``options`` -- passed to the graphics (e.g. ``figsize``)
+
+        OUTPUT: a Sage graphics object (a line of the largest real part
+        for one parameter)
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a, b, c = var('a b c')
+            sage: S = stability_map(LinearSystem([var('x')], J=[[a + b + c]]),
+            ....:                   {a: (-1, 1, 5), b: (-1, 1, 5), c: (-1, 1, 3)}, client=False)
+            sage: S.plot([-a - b - c], section={c: 0.4})
+            Graphics object consisting of 3 graphics primitives
+            sage: S.plot()
+            Traceback (most recent call last):
+            ...
+            AnalysisError: StabilityMap.plot: a map of 3 parameters: give section={...} fixing all but two
+        """
+        from sage.plot.graphics import Graphics
+        conditions = self._conditions if conditions is None else conditions
+        keys = list(self._points.keys)
+        if not self._points.is_grid():
+            return self._plot_samples(keys, options)
+        axes, stable, alpha = self._points.axes(), self._stable, self._alpha
+        section = {SR(k) if not isinstance(k, str) else SR.var(k): v
+                   for k, v in (section or {}).items()}
+        index = [slice(None)] * len(keys)
+        fixed = dict(self._fixed)
+        for k, v in section.items():
+            if k not in keys:
+                raise AnalysisError(f"section: {k} is not a parameter of the map",
+                                    entry="StabilityMap.plot")
+            i = keys.index(k)
+            index[i] = int(np.abs(axes[i] - float(v)).argmin())
+            fixed[k] = SR(QQ(float(axes[i][index[i]])))
+        free = [i for i in range(len(keys)) if not isinstance(index[i], int)]
+        if len(free) > 2:
+            raise AnalysisError(f"a map of {len(keys)} parameters: give section={{...}} fixing "
+                                "all but two", entry="StabilityMap.plot")
+        stable, alpha = stable[tuple(index)], alpha[tuple(index)]
+        G = Graphics()
+        if len(free) == 1:
+            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, stable)
+        else:
+            G += self._plot_plane([keys[i] for i in free], [axes[i] for i in free], alpha, stable)
+            if conditions is not None:
+                G += _exact_boundary(conditions, fixed, [keys[i] for i in free],
+                                     [axes[i] for i in free])
+        G.set_aspect_ratio('automatic')
+        if options:
+            G.SHOW_OPTIONS.update(options)
+        return G
+
+    def _plot_plane(self, keys, axes, alpha, stable):
+        from matplotlib.colors import ListedColormap
+        from sage.plot.matrix_plot import matrix_plot
+        data = np.where(np.isfinite(alpha), np.where(stable, 2.0, 0.0), 1.0)
+        (x, y), (X, Y) = keys, axes
+        G = matrix_plot(data.T, xrange=_extent(X), yrange=_extent(Y), flip_y=False,
+                        cmap=ListedColormap(['#f4cccc', '#dddddd', '#b6e3b6']), vmin=0, vmax=2)
+        G.axes(False)
+        G.axes_labels([f"${x}$", f"${y}$"])
+        return G
+
+    def _plot_line(self, key, axis, alpha, stable):
+        from sage.plot.line import line
+        from sage.plot.point import point
+        G = line([(float(a), float(b)) for a, b in zip(axis, alpha) if np.isfinite(b)],
+                 color='black')
+        G += point([(float(a), float(b)) for a, b, s in zip(axis, alpha, stable)
+                    if s and np.isfinite(b)], color='green', size=10)
+        G.axes_labels([f"${key}$", "max Re lambda"])
+        return G
+
+    def _plot_samples(self, keys, options):
+        from sage.plot.point import point
+        if len(keys) != 2:
+            raise AnalysisError("a map of random samples is drawn in two parameters",
+                                entry="StabilityMap.plot")
+        n = min(self._points.size, 20000)        # enough points to see the regions
+        X, Y = chunk_points(self._points.spec, 0, n)
+        s = self._stable[:n]
+        G = point(list(zip(X[s], Y[s])), color='green', size=4)
+        G += point(list(zip(X[~s], Y[~s])), color='red', size=4)
+        G.axes_labels([f"${keys[0]}$", f"${keys[1]}$"])
+        return G
+
+    def save(self, path):
+        r"""
+        Write the map to a NumPy ``.npz`` file: ``parameters`` (names),
+        ``axis_0, axis_1, ...`` (the axes, or the coordinates of the
+        samples), ``max_real_part``, ``stable``, ``fixed_names``,
+        ``fixed_values``. The file is replaced atomically.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a, b = var('a b')
+            sage: S = stability_map(LinearSystem([var('x')], J=[[a - b]]), {a: (-1, 1, 3)}, {b: 0},
+            ....:                   client=False)
+            sage: path = tmp_filename(ext='.npz'); S.save(path)
+            sage: import numpy as np
+            sage: data = np.load(path); data['parameters'], data['stable'], data['fixed_values']
+            (array(['a'], dtype='<U1'), array([ True, False, False]), array([0.]))
+        """
+        arrays = {f"axis_{i}": a for i, a in enumerate(self.axes().values())}
+        arrays.update(parameters=np.array([str(k) for k in self._points.keys]),
+                      max_real_part=self._alpha, stable=self._stable,
+                      fixed_names=np.array([str(k) for k in self._fixed], dtype=str),
+                      fixed_values=np.array([float(v) for v in self._fixed.values()]))
+        path = str(path)
+        tmp = f"{path}.{os.getpid()}.tmp.npz"
+        try:
+            np.savez_compressed(tmp, **arrays)
+            os.replace(tmp, path)
+        finally:
+            if os.path.exists(tmp):
+                os.remove(tmp)
+
+
+def _extent(axis):
+    step = (axis[-1] - axis[0]) / (len(axis) - 1) if len(axis) > 1 else 1.0
+    return float(axis[0] - step / 2), float(axis[-1] + step / 2)
+
+
+def _near_change(exact, band):
+    r"""Points within ``band`` steps (a box) of a point with the other verdict."""
+    hi, lo = exact.copy(), exact.copy()
+    for axis in range(exact.ndim):
+        for _ in range(band):
+            hi, lo = _shift(hi, axis, np.maximum), _shift(lo, axis, np.minimum)
+    return hi != lo
+
+
+def _shift(a, axis, combine):
+    # one step of a box filter along ``axis``: combine with both neighbours
+    out = a.copy()
+    front = [slice(None)] * a.ndim
+    back = [slice(None)] * a.ndim
+    front[axis], back[axis] = slice(1, None), slice(None, -1)
+    out[tuple(front)] = combine(out[tuple(front)], a[tuple(back)])
+    out[tuple(back)] = combine(out[tuple(back)], a[tuple(front)])
+    return out
+
+
+def _exact_boundary(conditions, fixed, keys, axes):
+    from sage.plot.contour_plot import region_plot
+    from sage.plot.graphics import Graphics
+    from ..analysis.conditions import as_relational
+    conditions = list(conditions)
+    alternatives = ([list(c) for c in conditions] if conditions and
+                    all(isinstance(c, (list, tuple)) for c in conditions) else [conditions])
+    (x, y), (X, Y) = keys, axes
+    G = Graphics()
+    for alt in alternatives:
+        rels = [as_relational(SR(c).subs(fixed)) for c in alt]
+        rels = [r for r in rels if set(r.variables()) & {x, y}]
+        if rels:
+            G += region_plot(rels, (x, float(X[0]), float(X[-1])), (y, float(Y[0]), float(Y[-1])),
+                             incol='darkgreen', alpha=0.0, bordercol='black', plot_points=200)
+    return G
