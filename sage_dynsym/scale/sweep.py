@@ -102,7 +102,7 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
 
         sage: W = sweep(lambda x, y: x^2 + y^2 < 1, {'x': (-1, 1), 'y': (-1, 1)}, samples=10^5,
         ....:           vectorized=True, client=False)
-        sage: abs(4 * W.values().mean() - pi) < 0.01
+        sage: bool(abs(4 * W.values().mean() - pi) < 0.01)
         True
 
     A model, here a stand-in with the calling convention of ``simulate``::
