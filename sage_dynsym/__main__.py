@@ -18,6 +18,9 @@ Options:
 - ``--time-limit S`` -- give up on a file after ``S`` seconds (one error
   line, then the next file);
 - ``-o FILE`` -- also write the reports to ``FILE`` (replaced atomically).
+
+``sage-dynsym map FILE --param NAME=LOW:HIGH:N ...`` computes a stability
+map of the model on Dask instead (see :mod:`sage_dynsym.scale.cli`).
 """
 import argparse
 import sys
@@ -65,12 +68,24 @@ def main(argv=None):
         == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
         Lagrangian: skipped, the Lagrangian (...): about 16 polynomial terms, over the budget of 10 (raise it with --budget)
         0
+
+    The ``map`` subcommand (:mod:`sage_dynsym.scale.cli`)::
+
+        sage: main(['map', example_path('rlc_ladder.yaml'), '--param', 'X=0:1:3', '--numpy'])
+        sage-dynsym: error: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
+        1
     """
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if argv[:1] == ["map"]:
+        from .scale.cli import main as map_main
+        return map_main(argv[1:])
     from .report import DEFAULT_BUDGET
     parser = argparse.ArgumentParser(
         prog="sage-dynsym",
         description="Derive the equations of the models in description files "
-                    "(YAML) and print them as text and LaTeX, with their analysis.")
+                    "(YAML) and print them as text and LaTeX, with their analysis.",
+        epilog="sage-dynsym map FILE --param NAME=LOW:HIGH:N ...: a stability map of the "
+               "model on Dask (sage-dynsym map --help).")
     parser.add_argument("files", nargs="+", metavar="FILE", help="description files")
     parser.add_argument("-o", "--output", help="also write the reports to this file")
     parser.add_argument("--sections", type=_sections, metavar="LIST",

@@ -471,6 +471,20 @@ class StabilityMap(SageObject):
         """
         return list(self._points.keys)
 
+    def is_grid(self):
+        r"""Whether the points form a grid (else random samples).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: a = var('a')
+            sage: stability_map(LinearSystem([var('x')], J=[[a]]), {a: (-1, 1)}, samples=5,
+            ....:               client=False).is_grid()
+            False
+        """
+        return self._points.is_grid()
+
     def axes(self):
         r"""
         Dict ``{symbol: 1-D array}``: the values of each parameter along its
@@ -672,7 +686,7 @@ class StabilityMap(SageObject):
         - ``section`` -- for a map of more than two parameters, a dict
           ``{symbol: value}`` fixing all but two of them (the nearest grid
           value is taken)
-        - ``options`` -- passed to the graphics (e.g. ``figsize``)
+        - ``options`` -- graphics options (e.g. ``figsize``, ``title``)
 
         OUTPUT: a Sage graphics object (a line of the largest real part
         for one parameter)
@@ -715,36 +729,36 @@ class StabilityMap(SageObject):
         stable, alpha = stable[tuple(index)], alpha[tuple(index)]
         G = Graphics()
         if len(free) == 1:
-            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, stable)
+            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, stable, options)
+            G.axes_labels([f"${keys[free[0]]}$", "max Re lambda"])
         else:
-            G += self._plot_plane([keys[i] for i in free], [axes[i] for i in free], alpha, stable)
+            # a frame with ticks, not axes through the origin
+            options = dict(dict(frame=True, axes=False, ticks_integer=False), **options)
+            G += self._plot_plane([keys[i] for i in free], [axes[i] for i in free], alpha,
+                                  stable, options)
             if conditions is not None:
                 G += _exact_boundary(conditions, fixed, [keys[i] for i in free],
-                                     [axes[i] for i in free])
+                                     [axes[i] for i in free], options)
+            G.axes_labels([f"${keys[i]}$" for i in free])
         G.set_aspect_ratio('automatic')
-        if options:
-            G.SHOW_OPTIONS.update(options)
         return G
 
-    def _plot_plane(self, keys, axes, alpha, stable):
+    def _plot_plane(self, keys, axes, alpha, stable, options):
         from matplotlib.colors import ListedColormap
         from sage.plot.matrix_plot import matrix_plot
         data = np.where(np.isfinite(alpha), np.where(stable, 2.0, 0.0), 1.0)
-        (x, y), (X, Y) = keys, axes
-        G = matrix_plot(data.T, xrange=_extent(X), yrange=_extent(Y), flip_y=False,
-                        cmap=ListedColormap(['#f4cccc', '#dddddd', '#b6e3b6']), vmin=0, vmax=2)
-        G.axes(False)
-        G.axes_labels([f"${x}$", f"${y}$"])
-        return G
+        X, Y = axes
+        return matrix_plot(data.T, xrange=_extent(X), yrange=_extent(Y), flip_y=False,
+                           cmap=ListedColormap(['#f4cccc', '#dddddd', '#b6e3b6']), vmin=0,
+                           vmax=2, **options)
 
-    def _plot_line(self, key, axis, alpha, stable):
+    def _plot_line(self, key, axis, alpha, stable, options):
         from sage.plot.line import line
         from sage.plot.point import point
         G = line([(float(a), float(b)) for a, b in zip(axis, alpha) if np.isfinite(b)],
-                 color='black')
+                 color='black', **options)
         G += point([(float(a), float(b)) for a, b, s in zip(axis, alpha, stable)
                     if s and np.isfinite(b)], color='green', size=10)
-        G.axes_labels([f"${key}$", "max Re lambda"])
         return G
 
     def _plot_samples(self, keys, options):
@@ -755,7 +769,7 @@ class StabilityMap(SageObject):
         n = min(self._points.size, 20000)        # enough points to see the regions
         X, Y = chunk_points(self._points.spec, 0, n)
         s = self._stable[:n]
-        G = point(list(zip(X[s], Y[s])), color='green', size=4)
+        G = point(list(zip(X[s], Y[s])), color='green', size=4, **options)
         G += point(list(zip(X[~s], Y[~s])), color='red', size=4)
         G.axes_labels([f"${keys[0]}$", f"${keys[1]}$"])
         return G
@@ -819,7 +833,7 @@ def _shift(a, axis, combine):
     return out
 
 
-def _exact_boundary(conditions, fixed, keys, axes):
+def _exact_boundary(conditions, fixed, keys, axes, options):
     from sage.plot.contour_plot import region_plot
     from sage.plot.graphics import Graphics
     from ..analysis.conditions import as_relational
@@ -833,5 +847,6 @@ def _exact_boundary(conditions, fixed, keys, axes):
         rels = [r for r in rels if set(r.variables()) & {x, y}]
         if rels:
             G += region_plot(rels, (x, float(X[0]), float(X[-1])), (y, float(Y[0]), float(Y[-1])),
-                             incol='darkgreen', alpha=0.0, bordercol='black', plot_points=200)
+                             incol='darkgreen', alpha=0.0, bordercol='black', plot_points=200,
+                             **options)
     return G

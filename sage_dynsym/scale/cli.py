@@ -1,0 +1,194 @@
+r"""
+Command line: ``sage-dynsym map FILE --param NAME=LOW:HIGH:N ...``
+
+Computes the stability map of the model of a description file (see
+:func:`~sage_dynsym.scale.maps.model_linear_system` for the system mapped:
+a circuit's free state equations around the zero state, a mechanical
+model's Lagrangian around ``--at``, by default all coordinates 0) and
+writes it as a picture (``PREFIX.png``) and as arrays (``PREFIX.npz``, see
+:meth:`~sage_dynsym.scale.maps.StabilityMap.save`). The region of the
+Liénard--Chipart conditions of the characteristic polynomial is drawn over
+the map when they can be derived, and their agreement with the map is
+printed.
+
+Options:
+
+- ``--param NAME=LOW:HIGH:N`` -- a parameter of the map and its range
+  (once per parameter; one or two for a picture);
+- ``--value NAME=NUMBER`` -- the value of another symbol (every symbol of
+  the system needs a value);
+- ``--at NAME=NUMBER`` -- the point of linearization (state variables or
+  coordinates; default 0);
+- ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid;
+- ``--method auto|polynomial|eigvals``;
+- ``--scheduler ADDRESS`` -- a Dask scheduler to use (default: a local
+  cluster), ``--workers N`` for the local cluster, ``--numpy`` for no Dask,
+  ``--timeout S`` to reach the scheduler;
+- ``--progress`` -- Dask's progress bar;
+- ``-o PREFIX`` -- the output files (default: the file's name with
+  ``_map``, in the current directory).
+
+Errors are one line on standard error and exit status 1.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.scale.cli import main
+    sage: from sage_dynsym.description import example_path
+    sage: prefix = tmp_filename()
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=-1:2:31', '--param', 'R2=-1:2:31',
+    ....:       '--value', 'R3=1', '--value', 'R4=2', '--value', 'L1=1', '--value', 'L2=1',
+    ....:       '--value', 'L3=1', '--value', 'C1=1', '--value', 'C2=1', '--value', 'C3=1',
+    ....:       '--numpy', '-o', prefix])
+    RLC ladder with three sections: stability map of 31 x 31 points in (R1, R2): 66.6% asymptotically stable (method: polynomial)
+    Lienard-Chipart conditions: agree at 100.0% of the points
+    wrote ....png, ....npz
+    0
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:0', '--numpy'])
+    sage-dynsym: error: parameters[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
+    1
+"""
+import argparse
+import os
+import sys
+
+
+def _assignment(text, what):
+    name, sep, value = text.partition('=')
+    name = name.strip()
+    if not sep or not name.isidentifier():
+        raise argparse.ArgumentTypeError(f"expected NAME={what}, got {text!r}")
+    return name, value.strip()
+
+
+def _number(text):
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    return value
+
+
+def _param(text):
+    name, value = _assignment(text, "LOW:HIGH:N")
+    parts = value.split(':')
+    if len(parts) not in (2, 3):
+        raise argparse.ArgumentTypeError(f"expected NAME=LOW:HIGH:N, got {text!r}")
+    low, high = _number(parts[0]), _number(parts[1])
+    if len(parts) == 2:
+        return name, (low, high)
+    try:
+        n = int(parts[2])
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer number of points in {text!r}") \
+            from None
+    return name, (low, high, n)
+
+
+def _value(text):
+    name, value = _assignment(text, "NUMBER")
+    return name, _number(value)
+
+
+def _positive_int(text):
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
+    return value
+
+
+def parser():
+    r"""The argument parser of ``sage-dynsym map``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.cli import parser
+        sage: parser().parse_args(['f.yaml', '--param', 'R=0:5:400', '--value', 'g=0.5']).param
+        [('R', (0.0, 5.0, 400))]
+    """
+    p = argparse.ArgumentParser(
+        prog="sage-dynsym map",
+        description="Stability map of the model of a description file over a grid of "
+                    "parameter values, on Dask; writes PREFIX.png and PREFIX.npz.")
+    p.add_argument("file", metavar="FILE", help="description file (circuit or mechanical)")
+    p.add_argument("--param", type=_param, action="append", required=True,
+                   metavar="NAME=LOW:HIGH:N", help="a parameter of the map and its range")
+    p.add_argument("--value", type=_value, action="append", default=[], metavar="NAME=NUMBER",
+                   help="the value of another symbol")
+    p.add_argument("--at", type=_value, action="append", default=[], metavar="NAME=NUMBER",
+                   help="the point of linearization (default: 0)")
+    p.add_argument("--samples", type=_positive_int, metavar="N",
+                   help="N random points instead of the grid")
+    p.add_argument("--seed", type=int, default=0, help="seed of the random points")
+    p.add_argument("--method", choices=("auto", "polynomial", "eigvals"), default="auto")
+    where = p.add_mutually_exclusive_group()
+    where.add_argument("--scheduler", metavar="ADDRESS", help="address of a Dask scheduler")
+    where.add_argument("--numpy", action="store_true", help="compute in this process, no Dask")
+    p.add_argument("--workers", type=_positive_int, metavar="N",
+                   help="workers of the local cluster (default: one per core)")
+    p.add_argument("--timeout", type=_positive_int, default=10, metavar="S",
+                   help="seconds to reach the scheduler (default: 10)")
+    p.add_argument("--progress", action="store_true", help="show Dask's progress bar")
+    p.add_argument("-o", "--output", metavar="PREFIX", help="output files PREFIX.png, PREFIX.npz")
+    return p
+
+
+def main(argv=None):
+    r"""
+    Run ``sage-dynsym map``; return the exit status. See the module
+    documentation.
+
+    TESTS::
+
+        sage: from sage_dynsym.scale.cli import main
+        sage: from sage_dynsym.description import example_path
+        sage: main([example_path('rlc_ladder.yaml'), '--param', 'X=0:1:3', '--numpy'])
+        sage-dynsym: error: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
+        1
+    """
+    args = parser().parse_args(argv)
+    from ..errors import DynSymError, brief
+    try:
+        return _run(args)
+    except DynSymError as err:
+        message = str(err)
+    except KeyboardInterrupt:
+        print("sage-dynsym: interrupted", file=sys.stderr)
+        return 130
+    except Exception as err:        # a bug or a failure inside Sage or Dask: one line
+        message = f"{args.file}: unexpected {type(err).__name__}: {brief(str(err))}"
+    print(f"sage-dynsym: error: {' '.join(message.split())}", file=sys.stderr, flush=True)
+    return 1
+
+
+def _run(args):
+    from ..description import load
+    from ..errors import DescriptionError
+    from .maps import stability_map
+    model = load(args.file)
+    parameters = dict(args.param)
+    if len(parameters) < len(args.param):
+        raise DescriptionError("a parameter is given twice", entry="--param")
+    client = False if args.numpy else (args.scheduler or None)
+    S = stability_map(model, parameters, fixed=dict(args.value), client=client,
+                      samples=args.samples, seed=args.seed, at=dict(args.at),
+                      method=args.method, conditions='lienard-chipart', workers=args.workers,
+                      timeout=args.timeout, progress=args.progress)
+    name = model.name() if callable(getattr(model, 'name', None)) else None
+    print(f"{name or args.file}: {str(S)[0].lower()}{str(S)[1:]} (method: {S.method()})")
+    if S.conditions() is not None:
+        print(f"Lienard-Chipart conditions: agree at {100 * S.agreement():.1f}% of the points")
+    elif S.note():
+        print(S.note())
+    prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
+    written = []
+    if len(parameters) <= 2 or not S.is_grid():
+        G = S.plot()
+        G.save(prefix + ".png", figsize=[7, 6])
+        written.append(prefix + ".png")
+    S.save(prefix + ".npz")
+    written.append(prefix + ".npz")
+    print("wrote " + ", ".join(written))
+    return 0
