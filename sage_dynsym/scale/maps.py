@@ -346,10 +346,16 @@ def _resolve(key, names, symbols, what, expressions=None):
         if k is not None and k in symbols:
             return k
         if k is not None and expressions is not None and not k.is_symbol() and \
-                any(SR(e).has(k) for X in _matrices(expressions) for e in X.list()):
+                any(_contains(e, k) for X in _matrices(expressions) for e in X.list()):
             return k
     raise AnalysisError(f"{what} {key}: the symbols of the system are "
                         f"{', '.join(map(str, symbols)) or '(none)'}", entry="stability_map")
+
+
+def _contains(expr, part):
+    # Expression.has does not see D[0](f)(0); a substitution does
+    marker = SR.symbol()
+    return marker in SR(expr).subs({part: marker}).variables()
 
 
 def _exact_number(value, where, entry="stability_map"):
