@@ -56,6 +56,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ._polynomials import parameter_ring, to_ring
+from .motion import SecondOrderEquations, FirstOrderEquations
 from .solving import normalize
 from .translation import Translation
 
@@ -658,27 +659,47 @@ def linearize(system, at, variables=None, lhs_matrix=None):
         ...
         AnalysisError: linearize: the point {theta: 0} is a singularity of the coordinates: a denominator of the equations vanishes at theta = 0 (the chart degenerates there, as Euler angles do at theta = 0); linearize in a regular chart instead (e.g. other angles for the axis)
     """
-    from ..lagrangian import Lagrangian
-    from ..hamiltonian import Hamiltonian
     at = {SR(k): SR(v) for k, v in at.items()}
-    if isinstance(system, Lagrangian):
-        return _linearize_lagrangian(system, at)
-    if isinstance(system, Hamiltonian):
-        if variables is None:
-            variables = list(system.coordinates()) + list(system.momenta())
-        rhs = _hamilton_rhs(system)
-        return _linearize_first_order(rhs, at, variables, None)
+    data = equations_of_motion(system)
+    if isinstance(data, SecondOrderEquations):
+        return _linearize_second_order(data, at)
+    if isinstance(data, FirstOrderEquations):
+        return _linearize_first_order(data.rhs(), at,
+                                      variables if variables is not None else data.variables(),
+                                      data.lhs_matrix())
     if variables is None:
         raise AnalysisError("a list of right-hand sides needs the list of "
                             "variables", entry="linearize")
     return _linearize_first_order(list(system), at, variables, lhs_matrix)
 
 
-def _hamilton_rhs(H):
-    eqs = H.equations()
-    dq = [pair[0] for pair in eqs]
-    dp = [pair[1] for pair in eqs]
-    return dq + dp
+def equations_of_motion(system):
+    r"""
+    The neutral record of a system's equations (see
+    :mod:`~sage_dynsym.analysis.motion`): ``system.to_linearizer()`` when
+    the object has it; ``None`` for a plain list of right-hand sides.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.linear import equations_of_motion
+        sage: x, dx = var('x dx')
+        sage: equations_of_motion(Lagrangian(dx^2/2 - x^2/2, [x]))
+        Second-order equations in (x): [ddx + x] == 0
+        sage: equations_of_motion([x]) is None
+        True
+    """
+    to_linearizer = getattr(system, 'to_linearizer', None)
+    if to_linearizer is not None:
+        return to_linearizer()
+    if hasattr(system, 'lagrange_equations'):
+        return SecondOrderEquations(system.lagrange_equations(), system.coordinates(),
+                                    system.velocities(), system.accelerations())
+    if hasattr(system, 'momenta') and hasattr(system, 'equations'):
+        pairs = system.equations()
+        return FirstOrderEquations([a for a, _ in pairs] + [b for _, b in pairs],
+                                   list(system.coordinates()) + list(system.momenta()))
+    return None
 
 
 def _point_for(variables, at):
@@ -707,7 +728,7 @@ def _linearize_first_order(rhs, at, variables, lhs_matrix):
     return LinearSystem(variables, J=J, B=B)
 
 
-def _linearize_lagrangian(L, at):
+def _linearize_second_order(L, at):
     q, dq, ddq = L.coordinates(), L.velocities(), L.accelerations()
     point = _point_for(q, at)
     for v in list(dq) + list(ddq):
@@ -718,7 +739,7 @@ def _linearize_lagrangian(L, at):
                                 entry="linearize")
         point[v] = SR(0)
     point.update({k: v for k, v in at.items() if k not in point})
-    E = [SR(e) for e in L.lagrange_equations()]
+    E = [SR(e) for e in L.equations()]
     _check_equilibrium([_at(e, point) for e in E], point)
     mat = lambda xs: matrix(SR, [[_tidy(_at(e.diff(x), point)) for x in xs] for e in E])
     M = mat(ddq)

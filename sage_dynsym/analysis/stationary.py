@@ -107,6 +107,7 @@ from .conditions import (positive_conditions, positive_conditions_all, conjuncti
                          simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
 from .linear import LinearSystem
+from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
                               _signed_minors)
 from .solving import solve_exactly, normalize, SolutionList
@@ -989,26 +990,28 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
         sage: sols[0].stability(positive=var('m l g')).verdict()
         'stable'
     """
-    from ..lagrangian import Lagrangian
+    from .linear import equations_of_motion
     system = routh_or_lagrangian
-    if not isinstance(system, Lagrangian):
+    data = equations_of_motion(system)
+    if not isinstance(data, SecondOrderEquations):
         raise AnalysisError(f"expected a Lagrangian or Routh function, got "
                             f"{type(system).__name__}", entry="stationary_motions")
-    q = list(system.coordinates())
-    rest = {v: 0 for v in list(system.velocities()) + list(system.accelerations())}
-    E = [SR(e) for e in system.lagrange_equations()]
+    q = data.coordinates()
+    rest = {v: 0 for v in data.velocities() + data.accelerations()}
+    E = data.equations()
     at_rest = [normalize(e.subs(rest)) for e in E]
     unknowns = list(q) if solve_for is None else [SR(u) for u in solve_for]
-    W = -SR(system.expr()).subs({v: 0 for v in system.velocities()})
-    A = system.mass_matrix() if hasattr(system, 'mass_matrix') else None
-    kinetic = matrix(SR, A) if A is not None else None
+    function = data.function() if data.function() is not None else SR(system.expr())
+    W = -function.subs({v: 0 for v in data.velocities()})
+    kinetic = data.kinetic_matrix()
+    if kinetic is None and hasattr(system, 'mass_matrix'):
+        kinetic = matrix(SR, system.mass_matrix())
 
     def linear(s):
-        dq, ddq = system.velocities(), system.accelerations()
-        E0 = [e for e in E]
-        def mat(xs, at_rest_first=True):
-            return matrix(SR, [[s._at(e.diff(x).subs(rest)) for x in xs] for e in E0])
-        return LinearSystem(q, M=mat(ddq), S=mat(dq), W=mat(q))
+        def mat(xs):
+            return matrix(SR, [[s._at(e.diff(x).subs(rest)) for x in xs] for e in E])
+        return LinearSystem(q, M=mat(data.accelerations()), S=mat(data.velocities()),
+                            W=mat(q))
 
     what = "equations at rest of " + ("the Routh function" if hasattr(system, 'momenta')
                                       else "the Lagrangian")
