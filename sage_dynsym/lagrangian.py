@@ -48,9 +48,13 @@ Dissipation and forces enter the equations::
     sage: L.lagrange_equations()
     [c*dx + ddx*m + k*x - F]
 """
+import random
+
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
+from sage.misc.misc_c import prod
+from sage.rings.real_double import RDF
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
@@ -102,6 +106,42 @@ def _linear_collected(expr, symbols):
     expr = SR(expr)
     rest = trig_rational_simplify(expr.subs({s: 0 for s in symbols}))
     return SR(0).add(*[trig_rational_simplify(expr.diff(s)) * s for s in symbols], rest)
+
+
+def _is_singular(A):
+    r"""
+    Whether the square symbolic matrix ``A`` is singular identically.
+
+    It is regular if its determinant at a random point is clearly nonzero
+    in floating point (relative to Hadamard's bound, the product of the row
+    norms); otherwise Sage's exact rank decides. (The symbolic rank alone
+    can take minutes on the mass matrix of a chain of bodies.)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lagrangian import _is_singular
+        sage: a, m = var('a m')
+        sage: _is_singular(matrix([[m, m*cos(a)], [m*cos(a), m]]))
+        False
+        sage: _is_singular(matrix([[cos(a)^2, cos(a)], [1 - sin(a)^2, cos(a)]]))
+        True
+        sage: _is_singular(matrix(SR, 0, 0))
+        False
+    """
+    n = A.nrows()
+    if n == 0:
+        return False
+    try:
+        variables = sorted(set().union(*(SR(e).variables() for e in A.list())), key=str)
+        rng = random.Random(1)
+        point = {v: rng.uniform(0.3, 1.7) for v in variables}
+        N = A.subs(point).change_ring(RDF)
+        bound = prod(row.norm() for row in N.rows())
+        if bound > 0 and abs(N.det()) > 1e-8 * bound:
+            return False
+    except (TypeError, ValueError, ArithmeticError):
+        pass   # not numerical at the point (unknown functions, poles, ...)
+    return A.rank() < n
 
 
 class _Elimination:
@@ -551,7 +591,7 @@ class Lagrangian(SageObject):
             sage: Lagrangian(dx^2 + dy^2, [x, y]).is_singular()
             False
         """
-        return self.mass_matrix().rank() < len(self._coordinates)
+        return _is_singular(self.mass_matrix())
 
     def generalized_momenta(self):
         r"""
@@ -697,7 +737,7 @@ class Lagrangian(SageObject):
             ModelError: the mass matrix is singular: the accelerations cannot be solved for
         """
         A = self.mass_matrix()
-        if A.rank() < A.nrows():
+        if _is_singular(A):
             raise ModelError("the mass matrix is singular: the accelerations cannot be solved for")
         zero = {a: 0 for a in self._accelerations}
         rest = matrix(SR, [[-e.subs(zero)] for e in self.lagrange_equations()])

@@ -36,7 +36,7 @@ from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import momentum
-from .lagrangian import Lagrangian, _Elimination, _linear_collected
+from .lagrangian import Lagrangian, _Elimination, _is_singular, _linear_collected
 from .trig import trig_rational_simplify, NotPolynomial
 
 
@@ -104,7 +104,7 @@ class RouthFunction(Lagrangian):
         # + A0 - 1/2 u A_cc^{-1} u, collected by the positional velocities:
         # each coefficient simplified, the momentum part as a sum of squares
         A_cc = A.matrix_from_rows_and_columns(index, index)
-        if A_cc.rank() < len(index):
+        if _is_singular(A_cc):
             raise ModelError("the momentum equations cannot be solved for the cyclic "
                              "velocities (the block of the mass matrix is singular)",
                              entry="cyclic")

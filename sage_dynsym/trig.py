@@ -101,7 +101,7 @@ def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
 
 # Fractions whose numerator and denominator have at most this many terms
 # together are also tried in factored form (Singular's factorization is fast
-# there; the reduced form of a product rarely shows its factors).
+# there; the recursive form of a fraction's numerator may hide a factor).
 _FACTOR_TERMS = 40
 # Beyond this many terms only the first normal form is written (see
 # TrigPolynomialRing.simplest_fraction).
@@ -494,11 +494,11 @@ class TrigPolynomialRing:
         Both are first reduced with `\cos^2 = 1 - \sin^2` (a normal form:
         zero is recognised), their greatest common divisor is cancelled and
         they are written in recursive (Horner) form, see
-        :meth:`to_symbolic`. Then, angle by angle, the reduction
-        `\sin^2 = 1 - \cos^2` is tried instead and kept when the result is
-        shorter, and finally the factored form of numerator and denominator
-        is tried. Fractions with more than 300 terms only get the first form
-        (the comparisons would cost more than the derivation).
+        :meth:`to_symbolic`. Before that, angle by angle, the reduction
+        `\sin^2 = 1 - \cos^2` is tried instead and kept when it gives
+        fewer terms (or as many, of lower degrees); finally, for a small
+        fraction with a denominator, the factored form is tried.
+        Fractions with more than 300 terms only get the first form.
 
         EXAMPLES::
 
@@ -522,41 +522,45 @@ class TrigPolynomialRing:
         def form(flips):
             rule = [(s, c) if flip else (c, s) for (c, s), flip in zip(pairs, flips)]
             n = _circle_reduce(numerator, rule, self.zero)
-            if n.is_zero():
-                return SR(0), n, n.parent().one(), QQ.one()
             d = _circle_reduce(denominator, rule, self.zero)
-            if not d.is_constant():
+            if not (n.is_zero() or d.is_constant()):
                 g = n.gcd(d)
                 n, d = n // g, d // g
-            # integer, coprime coefficients; the denominator's leading one positive
-            cn, cd = _content(n), _content(d)
-            n, d = n / cn, d / cd
-            factor = cn / cd
-            expr = SR(factor) * self.to_symbolic(n, reduced=True)
-            if not d.is_one():
-                expr = expr / self.to_symbolic(d, reduced=True)
-            return expr, n, d, factor
+            return n, d
+
+        def cost(n, d):
+            # fewer terms, then lower degrees: a proxy for the printed length
+            # (printing every candidate would cost more than the derivation)
+            return (n.number_of_terms() + d.number_of_terms(),
+                    sum(map(sum, chain(n.exponents(), d.exponents()))))
 
         flips = [False] * len(pairs)
-        best = form(flips)
-        if best[0].is_trivial_zero() or (numerator.number_of_terms()
-                                         + denominator.number_of_terms() > _SHAPE_TERMS):
-            return best[0]
-        length = len(str(best[0]))
-        for i, (c, s) in enumerate(pairs):
-            if best[1].degree(s) < 2 and best[2].degree(s) < 2 and not (
-                    best[1].degree(c) or best[2].degree(c)):
-                continue   # nothing to rewrite for this angle
-            flips[i] = True
-            trial = form(flips)
-            if len(str(trial[0])) < length:
-                best, length = trial, len(str(trial[0]))
-            else:
-                flips[i] = False
-        expr, n, d, factor = best
-        if n.number_of_terms() + d.number_of_terms() <= _FACTOR_TERMS:
-            factored = SR(factor) * self._factored(n) / self._factored(d)
-            if len(str(factored)) < length:
+        n, d = form(flips)
+        if n.is_zero():
+            return SR(0)
+        small = numerator.number_of_terms() + denominator.number_of_terms() <= _SHAPE_TERMS
+        if small:
+            best = cost(n, d)
+            for i, (c, s) in enumerate(pairs):
+                if n.degree(s) < 2 and d.degree(s) < 2:
+                    continue   # no sin^2: the other reduction would change nothing
+                flips[i] = True
+                trial = form(flips)
+                if cost(*trial) < best:
+                    (n, d), best = trial, cost(*trial)
+                else:
+                    flips[i] = False
+        # integer, coprime coefficients; the denominator's leading one positive
+        cn, cd = _content(n), _content(d)
+        n, d = n / cn, d / cd
+        factor = SR(cn / cd)
+        expr = factor * self.to_symbolic(n, reduced=True)
+        if not d.is_one():
+            expr = expr / self.to_symbolic(d, reduced=True)
+        # (polynomials: the recursive form already shows the common factors)
+        if small and not d.is_constant() and n.number_of_terms() + d.number_of_terms() <= _FACTOR_TERMS:
+            factored = factor * self._factored(n) / self._factored(d)
+            if len(str(factored)) < len(str(expr)):
                 return factored
         return expr
 
