@@ -53,6 +53,7 @@ class OscillatorModel:
     trajectory of m x'' + c x' + k x = 0 from x(0) = initial, x'(0) = 0."""
 
     def simulate(self, values, initial, t_end, points=3):
+        values = {str(key): value for key, value in values.items()}    # symbols or names
         times = np.linspace(0, t_end, points)
         xs = [initial * damped_response(values['c'], values['k'], values.get('m', 1.0), t)
               for t in times]

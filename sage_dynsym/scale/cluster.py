@@ -150,8 +150,11 @@ def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
     n = machine_cores() if workers is None else int(workers)
     if n < 1:
         raise AnalysisError(f"workers must be a positive integer, got {workers!r}", entry="scale")
+    # no dashboard; the scheduler's HTTP endpoints on a free port of 127.0.0.1
+    http = dict(dashboard=False, dashboard_address='127.0.0.1:0')
     with distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                  host='127.0.0.1', dashboard_address=None) as cluster, \
+                                  host='127.0.0.1', dashboard_address=None,
+                                  scheduler_kwargs=http) as cluster, \
             distributed.Client(cluster, set_as_default=False) as c:
         yield c
 
