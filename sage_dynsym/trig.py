@@ -11,8 +11,13 @@ the ideal `(c^2 + s^2 - 1)` (whose generators are already a Gröbner basis)
 when converting back: fast arithmetic and a canonical result (equal
 functions give equal expressions, no power of a cosine above one).
 
-Models that are not polynomial in this sense (other functions of the angles,
-parameters in denominators) use :class:`SymbolicBackend`.
+Every angle gets its pair, whatever it is: a coordinate, a known function
+of time (a frame turning as `\omega t`), a parameter or a constant. Other
+non-polynomial parts that do not depend on coordinates, velocities or time
+(`\pi`, `\sqrt 3`, `1/m`) are generators too ("atoms"). Models that are
+still not polynomial (e.g. `\sqrt{x}` of a coordinate) use
+:class:`SymbolicBackend`. :func:`trig_rational_simplify` applies the same
+reduction to symbolic rational expressions (Routh functions, Hamiltonians).
 
 EXAMPLES::
 
@@ -486,7 +491,7 @@ class TrigPolynomialRing:
 
         return walk(SR(expr))
 
-    def simplest_fraction(self, numerator, denominator=1):
+    def simplest_fraction(self, numerator, denominator=1, printed=False):
         r"""
         The shortest symbolic form found for ``numerator/denominator`` (ring
         elements) modulo `\cos^2+\sin^2 = 1`.
@@ -496,8 +501,9 @@ class TrigPolynomialRing:
         they are written in recursive (Horner) form, see
         :meth:`to_symbolic`. Before that, angle by angle, the reduction
         `\sin^2 = 1 - \cos^2` is tried instead and kept when it gives
-        fewer terms (or as many, of lower degrees); finally, for a small
-        fraction with a denominator, the factored form is tried.
+        fewer terms (or as many, of lower degrees), or with ``printed``, a
+        shorter printed form (slower: every candidate is written); finally,
+        for a small fraction with a denominator, the factored form is tried.
         Fractions with more than 300 terms only get the first form.
 
         EXAMPLES::
@@ -528,9 +534,17 @@ class TrigPolynomialRing:
                 n, d = n // g, d // g
             return n, d
 
+        def written(n, d):
+            # integer, coprime coefficients; the denominator's leading one positive
+            cn, cd = _content(n), _content(d)
+            n, d = n / cn, d / cd
+            expr = SR(cn / cd) * self.to_symbolic(n, reduced=True)
+            return expr if d.is_one() else expr / self.to_symbolic(d, reduced=True)
+
         def cost(n, d):
+            if printed:
+                return len(str(written(n, d)))
             # fewer terms, then lower degrees: a proxy for the printed length
-            # (printing every candidate would cost more than the derivation)
             return (n.number_of_terms() + d.number_of_terms(),
                     sum(map(sum, chain(n.exponents(), d.exponents()))))
 
@@ -550,16 +564,11 @@ class TrigPolynomialRing:
                     (n, d), best = trial, cost(*trial)
                 else:
                     flips[i] = False
-        # integer, coprime coefficients; the denominator's leading one positive
-        cn, cd = _content(n), _content(d)
-        n, d = n / cn, d / cd
-        factor = SR(cn / cd)
-        expr = factor * self.to_symbolic(n, reduced=True)
-        if not d.is_one():
-            expr = expr / self.to_symbolic(d, reduced=True)
+        expr = written(n, d)
         # (polynomials: the recursive form already shows the common factors)
         if small and not d.is_constant() and n.number_of_terms() + d.number_of_terms() <= _FACTOR_TERMS:
-            factored = factor * self._factored(n) / self._factored(d)
+            factor = SR(_content(n) / _content(d))
+            factored = factor * self._factored(n / _content(n)) / self._factored(d / _content(d))
             if len(str(factored)) < len(str(expr)):
                 return factored
         return expr
@@ -739,7 +748,8 @@ def trig_rational_simplify(expr, strict=False):
         if inner:
             expr = expr.subs(inner)
             ring = TrigPolynomialRing.for_expressions([expr], fractions=True)
-        simplest = ring.simplest_fraction(*ring.fraction(expr, limit=_FRACTION_TERMS))
+        simplest = ring.simplest_fraction(*ring.fraction(expr, limit=_FRACTION_TERMS),
+                                          printed=True)
     except NotPolynomial:
         if strict:
             raise
