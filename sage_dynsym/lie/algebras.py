@@ -87,8 +87,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..analysis.solving import normalize
-from ..errors import ModelError, brief
-from ._polynomials import PolynomialContext
+from ..errors import AnalysisError, ModelError, brief
+from ._polynomials import PolynomialContext, _sr_monomial
 
 #: The named algebras: name -> (description, block names, block sizes).
 NAMED = {
@@ -405,9 +405,9 @@ class PoissonStructure(SageObject):
         x, J = self._variables, self._J
         dF = [SR(F).diff(v) for v in x]
         dG = [SR(G).diff(v) for v in x]
-        return _normal(sum(dF[i] * J[i, j] * dG[j] for i in range(len(x))
+        return collect(sum(dF[i] * J[i, j] * dG[j] for i in range(len(x))
                            for j in range(len(x)) if J[i, j] != 0 and dF[i] != 0 and
-                           dG[j] != 0))
+                           dG[j] != 0), x)
 
     def vector_field(self, H):
         r"""
@@ -422,7 +422,7 @@ class PoissonStructure(SageObject):
         """
         x, J = self._variables, self._J
         dH = [SR(H).diff(v) for v in x]
-        return [_normal(sum(J[i, j] * dH[j] for j in range(len(x)))) for i in range(len(x))]
+        return [collect(sum(J[i, j] * dH[j] for j in range(len(x))), x) for i in range(len(x))]
 
     def context(self, parameters=()):
         r"""
@@ -436,6 +436,32 @@ class PoissonStructure(SageObject):
 
 def _normal(e):
     return normalize(SR(e))
+
+
+def collect(e, variables):
+    r"""
+    ``e`` as a sum of monomials in ``variables`` with factored
+    coefficients, when it is a polynomial in them; else its normal form.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lie.algebras import collect
+        sage: x, y, a, b = var('x y a b')
+        sage: collect(x*y/a - x*y/b + 2*x, [x, y])
+        2*x - (a - b)*x*y/(a*b)
+        sage: collect(sin(x) - sin(x), [x]), collect(sin(x)*a/a, [x])
+        (0, sin(x))
+    """
+    e = SR(e)
+    names = {str(v) for v in variables}
+    parameters = sorted({a for a in e.variables() if str(a) not in names}, key=str)
+    try:
+        P = PolynomialContext(variables, parameters)
+        f, d = P.element(e, "expression")
+    except AnalysisError:
+        return _normal(e)
+    return sum((SR(c / d).factor() * _sr_monomial(P.variables, m)
+                for m, c in P.split(f).items()), SR(0))
 
 
 def _is_zero(e):

@@ -1,0 +1,459 @@
+r"""
+Lie--Poisson systems
+
+A :class:`LiePoissonSystem` is a Hamiltonian `H(x)` on a Poisson
+structure `J(x)` (:mod:`.algebras`): the equations are
+
+.. MATH::
+
+    \dot x_i = \{x_i, H\} = \sum_j J_{ij}(x)\, \frac{\partial H}{\partial x_j},
+
+with the minus Lie--Poisson bracket `\{x_i, x_j\} = -c_{ij}^k x_k` of the
+body frame. For the rigid body this is the reduction of the canonical
+bracket of the Euler angles and their momenta (a motion of the Lagrange
+equations in Euler angles, mapped to `M = I\omega` and the vertical
+`\gamma` in the body's axes, is a motion of these equations: see
+:func:`~sage_dynsym.lie.builders.euler_poisson`). On `e(3)`:
+
+.. MATH::
+
+    \dot M = M\times\frac{\partial H}{\partial M} + \gamma\times
+    \frac{\partial H}{\partial\gamma},\qquad
+    \dot\gamma = \gamma\times\frac{\partial H}{\partial M}.
+
+EXAMPLES:
+
+The heavy top (Euler--Poisson equations), centre of mass on the third
+axis at the height `z_0` above the fixed point, `\gamma` the upward
+vertical::
+
+    sage: from sage_dynsym.lie.system import LiePoissonSystem
+    sage: M1, M2, M3, g1, g2, g3 = var('M1 M2 M3 gamma1 gamma2 gamma3')
+    sage: A, C, m, g, z0 = var('A C m g z0')
+    sage: H = (M1^2 + M2^2)/(2*A) + M3^2/(2*C) + m*g*z0*g3
+    sage: S = LiePoissonSystem('e3', H); S
+    Lie-Poisson system on e3 (M1, M2, M3, gamma1, gamma2, gamma3) with H = g*gamma3*m*z0 + 1/2*M3^2/C + 1/2*(M1^2 + M2^2)/A
+    sage: S.equations()
+    [g*gamma2*m*z0 + (A - C)*M2*M3/(A*C),
+     -g*gamma1*m*z0 - (A - C)*M1*M3/(A*C),
+     0,
+     M3*gamma2/C - M2*gamma3/A,
+     -M3*gamma1/C + M1*gamma3/A,
+     M2*gamma1/A - M1*gamma2/A]
+    sage: S.casimirs()
+    [M1*gamma1 + M2*gamma2 + M3*gamma3, gamma1^2 + gamma2^2 + gamma3^2]
+    sage: S.polynomial_integrals(2, new_only=True)       # Lagrange's case
+    [M3]
+    sage: S.is_integral(M3), S.is_integral(M1)
+    (True, False)
+
+The sleeping top, `M = (0, 0, M_3)`, `\gamma = (0, 0, 1)`: stable if
+`M_3^2 > 4 A m g z_0` (Maievski's condition; Arnold, *Mathematical
+Methods*, §30)::
+
+    sage: sols = S.stationary_solutions([M3], levels=[None, 1, None],
+    ....:                               positive=[A, C, m, g, z0])
+    sage: s = next(s for s in sols if s.point()[g3] == 1 and s.point()[M1] == 0); s.point()
+    {M1: 0, M2: 0, M3: M3, gamma1: 0, gamma2: 0, gamma3: 1}
+    sage: s.stability_region(positive=[A, C, m, g, z0])
+    [[4*A*g*m*z0 - M3^2 < 0]]
+"""
+import re
+
+from sage.misc.cachefunc import cached_method
+from sage.misc.latex import latex
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..analysis import linearize as _linearize
+from ..analysis.stationary import stationary_solutions as _stationary_solutions
+from ..errors import ModelError, AnalysisError, brief
+from .algebras import NAMED, _default_names, poisson_structure
+from .integrals import casimirs as _casimirs, polynomial_integrals as _polynomial_integrals
+
+#: Names that look like coordinates: a Hamiltonian using one that is not a
+#: variable of the system is refused unless it is declared a parameter.
+_COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
+_DEFAULT_NAMES = {n for name in NAMED for n in _default_names(name)}
+
+
+class LiePoissonSystem(SageObject):
+    r"""
+    A Hamiltonian system `\dot x = J(x)\nabla H` on a Lie algebra (or any
+    Poisson structure).
+
+    INPUT:
+
+    - ``algebra`` -- ``'so3'``, ``'e3'``, ``'so4'``, ``'so31'``, ``'e4'``
+      (:func:`~sage_dynsym.lie.algebras.lie_algebra`), a Poisson matrix
+      `J_{ij} = \{x_i, x_j\}`, structure constants, or a
+      :class:`~sage_dynsym.lie.algebras.PoissonStructure`; a matrix or
+      structure constants are checked for skew-symmetry and the Jacobi
+      identity
+    - ``hamiltonian`` -- `H`, an expression in the variables and parameters
+    - ``variables`` -- (optional for a named algebra) the coordinates: as
+      many symbols or names, or one prefix per block (``['M', 'p']`` on
+      ``'e3'``)
+    - ``parameters`` -- (optional) the parameters; if given, `H` and `J`
+      may use no other symbols. By default every other symbol is a
+      parameter, except names that look like coordinates (``gamma1``,
+      ``M3``, ``p2``, ...), which must then be declared
+    - ``name`` -- (optional) a name
+
+    EXAMPLES: see the module documentation. A user's algebra, the
+    two-dimensional non-abelian one `[e_1, e_2] = e_2`::
+
+        sage: from sage_dynsym.lie.system import LiePoissonSystem
+        sage: x, y = var('x y')
+        sage: S = LiePoissonSystem({(x, y): {y: 1}}, x*y, variables=[x, y])
+        sage: S.poisson_matrix(), S.equations()
+        (
+        [ 0 -y]
+        [ y  0], [-x*y, y^2]
+        )
+        sage: TestSuite(S).run(skip=['_test_pickling'])
+
+    TESTS::
+
+        sage: M1, M2, M3, g1 = var('M1 M2 M3 gamma1')
+        sage: LiePoissonSystem('so3', M1^2 + g1)
+        Traceback (most recent call last):
+        ...
+        ModelError: hamiltonian: the Hamiltonian uses gamma1, which is not a variable of so3 (M1, M2, M3); declare it in parameters= if it is a constant
+        sage: LiePoissonSystem('so3', M1^2 + var('k')*M2, parameters=[])
+        Traceback (most recent call last):
+        ...
+        ModelError: hamiltonian: undeclared symbol k: the Hamiltonian may use the variables M1, M2, M3 and the parameters (none declared)
+        sage: LiePoissonSystem('so5', M1^2)
+        Traceback (most recent call last):
+        ...
+        ModelError: algebra: unknown Lie algebra 'so5'; the named algebras are so3, e3, so4, so31, e4 (or give a Poisson matrix or structure constants)
+        sage: LiePoissonSystem('e3', M1^2, variables=[M1, M2, M3])
+        Traceback (most recent call last):
+        ...
+        ModelError: variables: e3 has 6 coordinates (M1, M2, M3, gamma1, gamma2, gamma3) or 2 prefixes (e.g. ['M', 'gamma']), got 3 variables: ['M1', 'M2', 'M3']
+        sage: LiePoissonSystem([[0, x], [-x, 0], [0, 0]], x, variables=[x, y])
+        Traceback (most recent call last):
+        ...
+        ModelError: algebra: expected a square 2x2 matrix (one row and column per variable x, y), got 3 rows of lengths [2, 2, 2]
+    """
+
+    def __init__(self, algebra, hamiltonian, variables=None, parameters=None, name=None):
+        self._structure = poisson_structure(algebra, variables)
+        x = self._structure.variables()
+        try:
+            self._H = SR(hamiltonian)
+        except (TypeError, ValueError) as err:
+            raise ModelError(f"expected an expression, got {brief(hamiltonian)} ({err})",
+                             entry="hamiltonian") from None
+        self._name = name
+        names = {str(v) for v in x}
+        where = (f"{self._structure.name()} ({', '.join(names_of(x))})"
+                 if self._structure.name() else f"the system ({', '.join(names_of(x))})")
+        others = sorted({a for a in self._H.variables() if str(a) not in names}, key=str)
+        if parameters is not None:
+            self._parameters = [SR(a) for a in parameters]
+            declared = {str(a) for a in self._parameters}
+            for a in others + self._structure.parameters():
+                if str(a) not in declared:
+                    what = "the Hamiltonian" if a in others else "the Poisson matrix"
+                    raise ModelError(
+                        f"undeclared symbol {a}: {what} may use the variables "
+                        f"{', '.join(names_of(x))} and the parameters "
+                        f"{', '.join(sorted(declared)) or '(none declared)'}",
+                        entry="hamiltonian" if a in others else "algebra")
+        else:
+            for a in others:
+                if str(a) in _DEFAULT_NAMES or _COORDINATE_LIKE.fullmatch(str(a)):
+                    raise ModelError(f"the Hamiltonian uses {a}, which is not a variable of "
+                                     f"{where}; declare it in parameters= if it is a constant",
+                                     entry="hamiltonian")
+            self._parameters = sorted(set(others) | set(self._structure.parameters()),
+                                      key=str)
+
+    # -- description ---------------------------------------------------------
+
+    def _repr_(self):
+        what = self._structure.name() or "a Poisson structure"
+        name = f" '{self._name}'" if self._name else ""
+        return (f"Lie-Poisson system{name} on {what} "
+                f"({', '.join(map(str, self.variables()))}) with H = {self._H}")
+
+    def _latex_(self):
+        what = self._structure.name()
+        where = r"\mathfrak{%s}" % what if what else r"\mathbb{R}^{%d}" % len(self.variables())
+        return r"H = %s \text{ on } %s" % (latex(self._H), where)
+
+    def name(self):
+        r"""
+        The name (or ``None``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2, name='top').name()
+            'top'
+        """
+        return self._name
+
+    def structure(self):
+        r"""
+        The :class:`~sage_dynsym.lie.algebras.PoissonStructure`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2).structure()
+            Lie-Poisson structure so3 on (M1, M2, M3)
+        """
+        return self._structure
+
+    def variables(self):
+        r"""
+        The coordinates `x`, in the order of the equations.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('e3', var('M1')^2, variables=['M', 'p']).variables()
+            [M1, M2, M3, p1, p2, p3]
+        """
+        return self._structure.variables()
+
+    def parameters(self):
+        r"""
+        The parameters (declared, or the other symbols of `H` and `J`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2/var('A')).parameters()
+            [A]
+        """
+        return list(self._parameters)
+
+    def hamiltonian(self):
+        r"""
+        The Hamiltonian `H`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2/2).hamiltonian()
+            1/2*M1^2
+        """
+        return self._H
+
+    def poisson_matrix(self):
+        r"""
+        The Poisson matrix `J`, `J_{ij} = \{x_i, x_j\}`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2).poisson_matrix()
+            [  0 -M3  M2]
+            [ M3   0 -M1]
+            [-M2  M1   0]
+        """
+        return self._structure.matrix()
+
+    def poisson_bracket(self, F, G):
+        r"""
+        `\{F, G\} = \nabla F^T J \nabla G`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3')
+            sage: S = LiePoissonSystem('so3', M1^2)
+            sage: S.poisson_bracket(M1, M2), S.poisson_bracket(M1^2 + M2^2 + M3^2, M1)
+            (-M3, 0)
+        """
+        return self._structure.bracket(F, G)
+
+    @cached_method
+    def equations(self):
+        r"""
+        The right-hand sides `\dot x_i = \{x_i, H\}`, in the order of
+        :meth:`variables`.
+
+        EXAMPLES: Euler's equations of the free rigid body::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3'); A1, A2, A3 = var('A1 A2 A3')
+            sage: S = LiePoissonSystem('so3', (M1^2/A1 + M2^2/A2 + M3^2/A3)/2)
+            sage: S.equations()
+            [(A2 - A3)*M2*M3/(A2*A3), -(A1 - A3)*M1*M3/(A1*A3), (A1 - A2)*M1*M2/(A1*A2)]
+        """
+        return self._structure.vector_field(self._H)
+
+    def is_integral(self, F):
+        r"""
+        Whether `\{F, H\} = 0` identically.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3')
+            sage: S = LiePoissonSystem('so3', (M1^2 + M2^2)/2 + M3^2)
+            sage: S.is_integral(M3), S.is_integral(M1), S.is_integral(sin(M3))
+            (True, False, True)
+        """
+        return bool(SR(self.poisson_bracket(F, self._H)).is_zero())
+
+    @cached_method
+    def casimirs(self, degree=4):
+        r"""
+        The independent polynomial Casimirs of the structure up to
+        ``degree``, computed from the Poisson matrix
+        (:func:`~sage_dynsym.lie.integrals.casimirs`), by increasing degree.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so31', var('M1')^2).casimirs()
+            [M1^2 + M2^2 + M3^2 - p1^2 - p2^2 - p3^2, M1*p1 + M2*p2 + M3*p3]
+        """
+        return _casimirs(self._structure, degree, parameters=self._parameters)
+
+    def polynomial_integrals(self, degree, new_only=False, conditions=False):
+        r"""
+        A basis of the polynomial first integrals of degree at most
+        ``degree``, modulo constants (products of integrals count); see
+        :func:`~sage_dynsym.lie.integrals.polynomial_integrals`.
+
+        INPUT:
+
+        - ``degree`` -- the largest degree
+        - ``new_only`` -- (default: ``False``) only the integrals outside
+          the algebra generated by `H`, the Casimirs and the integrals of
+          lower degree
+        - ``conditions`` -- (default: ``False``) also return the families
+          of parameter values on which there are more integrals: a pair
+          ``(basis, jumps)``, see
+          :class:`~sage_dynsym.lie.integrals.IntegralJump`
+
+        EXAMPLES: Kovalevskaya's case, `A = B = 2C`, the centre of mass in
+        the equatorial plane at `(x_0, 0, 0)`: a new integral of degree 4,
+        `16C^4\big[(p^2 - q^2 - c\gamma_1)^2 + (2pq - c\gamma_2)^2\big]`,
+        `M = (2Cp, 2Cq, Cr)`, `c = mgx_0/C` (Kovalevskaya, Acta Math. 12
+        (1889))::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3, g1, g2, g3 = var('M1 M2 M3 gamma1 gamma2 gamma3')
+            sage: C, m, g, x0 = var('C m g x0')
+            sage: S = LiePoissonSystem('e3', (M1^2 + M2^2)/(4*C) + M3^2/(2*C) + m*g*x0*g1)
+            sage: S.polynomial_integrals(3, new_only=True)
+            []
+            sage: K, = S.polynomial_integrals(4, new_only=True); K.factor()
+            16*C^2*g^2*gamma1^2*m^2*x0^2 + 16*C^2*g^2*gamma2^2*m^2*x0^2 - 8*C*M1^2*g*gamma1*m*x0 + 8*C*M2^2*g*gamma1*m*x0 - 16*C*M1*M2*g*gamma2*m*x0 + M1^4 + 2*M1^2*M2^2 + M2^4
+            sage: bool(K == (M1^2 - M2^2 - 4*C*m*g*x0*g1)^2 + (2*M1*M2 - 4*C*m*g*x0*g2)^2)
+            True
+        """
+        return _polynomial_integrals(self._structure, self._H, degree, new_only=new_only,
+                                     conditions=conditions, parameters=self._parameters)
+
+    def stationary_solutions(self, integrals=(), levels=None, positive=(), multipliers=None,
+                             solve_for=None):
+        r"""
+        Stationary solutions by the Routh--Lyapunov method over the
+        integrals `[H] + ` :meth:`casimirs` `+` ``integrals``, through
+        :func:`~sage_dynsym.analysis.stationary.stationary_solutions` (with
+        the equations, so that each solution's first approximation is
+        available).
+
+        INPUT:
+
+        - ``integrals`` -- further first integrals (checked)
+        - ``levels`` -- one entry per integral after `H` (Casimirs first):
+          a prescribed value or ``None``
+        - ``positive``, ``multipliers``, ``solve_for`` -- as for
+          :func:`~sage_dynsym.analysis.stationary.stationary_solutions`
+
+        EXAMPLES: permanent rotations of the Euler top on `e(3)` (no
+        gravity), `\gamma` on the unit sphere, rotation about the first
+        axis: stable when `A_1` is the largest or the smallest moment
+        (Arnold, *Mathematical Methods*, §29)::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3'); A1, A2, A3 = var('A1 A2 A3')
+            sage: S = LiePoissonSystem('so3', (M1^2/A1 + M2^2/A2 + M3^2/A3)/2)
+            sage: sols = S.stationary_solutions(positive=[A1, A2, A3])
+            sage: [s.point() for s in sols]
+            [{M1: 0, M2: 0, M3: 0}, {M1: M1, M2: 0, M3: 0}, {M1: 0, M2: M2, M3: 0}, {M1: 0, M2: 0, M3: M3}]
+            sage: sols[1].stability_region()
+            [[A1 - A2 > 0, A1 - A3 > 0, M1 != 0]]
+
+        TESTS::
+
+            sage: S.stationary_solutions(levels=[1, 2])
+            Traceback (most recent call last):
+            ...
+            AnalysisError: stationary_solutions: levels has 2 entries; it needs one per integral after H (the Casimirs M1^2 + M2^2 + M3^2, then the integrals given): 1
+        """
+        integrals = [SR(f) for f in integrals]
+        all_integrals = [self._H] + self.casimirs() + integrals
+        if levels is not None and len(levels) != len(all_integrals) - 1:
+            raise AnalysisError(
+                f"levels has {len(levels)} entries; it needs one per integral after H (the "
+                f"Casimirs {', '.join(map(str, self.casimirs())) or '(none)'}, then the "
+                f"integrals given): {len(all_integrals) - 1}", entry="stationary_solutions")
+        return _stationary_solutions(all_integrals, self.variables(), equations=self.equations(),
+                                     multipliers=multipliers, levels=levels, positive=positive,
+                                     solve_for=solve_for)
+
+    def linearize(self, at):
+        r"""
+        The first-approximation system at the equilibrium ``at`` (a dict
+        over the variables), see :func:`~sage_dynsym.analysis.linear.linearize`.
+
+        EXAMPLES: the rotation about the middle axis is unstable::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3')
+            sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/3)/2)
+            sage: S.linearize({M1: 0, M2: 1, M3: 0}).characteristic_polynomial(var('lam'))
+            lam^3 - 1/12*lam
+        """
+        return _linearize(self.equations(), at, self.variables())
+
+    def numerical_rhs(self, values):
+        r"""
+        A callable ``f(t, x)`` returning `\dot x` as a NumPy array, with the
+        parameters given by ``values`` (a dict); ``x`` in the order of
+        :meth:`variables`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3, a = var('M1 M2 M3 a')
+            sage: f = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/a)/2).numerical_rhs({a: 3})
+            sage: f(0, [1.0, 2.0, 3.0])
+            array([-1.,  2., -1.])
+
+        TESTS::
+
+            sage: LiePoissonSystem('so3', M1^2/a).numerical_rhs({})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: missing values of the parameters a
+        """
+        import numpy as np
+        from sage.ext.fast_callable import fast_callable
+        from sage.rings.real_double import RDF
+        values = {SR(k): v for k, v in values.items()}
+        missing = [a for a in self._parameters if a not in values]
+        if missing:
+            raise ModelError(f"missing values of the parameters {', '.join(map(str, missing))}",
+                             entry="values")
+        x = self.variables()
+        fs = [fast_callable(SR(e).subs(values), vars=x, domain=RDF) for e in self.equations()]
+
+        def rhs(t, state):
+            return np.array([f(*state) for f in fs], dtype=float)
+        return rhs
+
+
+def names_of(symbols):
+    return [str(s) for s in symbols]
