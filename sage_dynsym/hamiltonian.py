@@ -34,7 +34,7 @@ from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import momentum
-from .lagrangian import _Elimination, _linear_collected
+from .lagrangian import _Elimination
 from .trig import trig_rational_simplify, NotPolynomial
 
 
@@ -120,10 +120,11 @@ class Hamiltonian(SageObject):
             # H = 1/2 (p - A1) A^{-1} (p - A1) - A0 as a sum of squares over
             # the pivots of A (textbook form, e.g. the heavy top's
             # p_theta^2/(2A) + (p_psi - p_phi cos)^2/(2A sin^2) + p_phi^2/(2C))
-            self._velocity_map = {v: _linear_collected(x, self._momenta) for v, x in
-                                  zip(velocities, elimination.solve(shifted))}
             self._expr = (SR(0).add(*elimination.squares(shifted, self._momenta)) / 2
                           - trig_rational_simplify(A0))
+            # dq = A^{-1} (p - A1) = dH/dp, in the (compact) form of H
+            self._velocity_map = {v: self._expr.diff(p) for v, p in
+                                  zip(velocities, self._momenta)}
             return
         # mass matrices too large for the simplifications (or with inexact
         # numbers): dq = A^{-1} (p - A1) with A^{-1} = adj(A)/det(A),

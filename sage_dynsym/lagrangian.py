@@ -174,14 +174,14 @@ class _Elimination:
         sage: E = _Elimination(matrix([[A*sin(a)^2 + C*cos(a)^2, C*cos(a)], [C*cos(a), C]]))
         sage: E.squares([p, q])
         [q^2/C, (q*cos(a) - p)^2/(A*sin(a)^2)]
-        sage: [trig_rational_simplify(x) for x in E.solve([p, q])]
-        [-(q*cos(a) - p)/(A*sin(a)^2), ...]
+        sage: sum(E.products([p, q], [1, 0]))   # first entry of A^{-1} (p, q)
+        -(q*cos(a) - p)/(A*sin(a)^2)
 
     TESTS::
 
         sage: E = _Elimination(matrix([[0, 1], [1, 0]]))
-        sage: E.squares([p, q]), E.solve([p, q])
-        ([2*p*q], [q, p])
+        sage: E.squares([p, q]), sum(E.products([p, q], [1, 0]))
+        ([2*p*q], q)
         sage: _Elimination(matrix([[0.5*sin(a)^2]]))
         Traceback (most recent call last):
         ...
@@ -257,22 +257,6 @@ class _Elimination:
                                     for b, j in enumerate(self._block)])
             terms.append(trig_rational_simplify(quadratic))
         return terms
-
-    def solve(self, u):
-        r"""
-        `A^{-1} u` (unsimplified).
-        """
-        y = self._reduced(u)
-        x = {}
-        for a, i in enumerate(self._block):
-            x[i] = SR(0).add(*[self._block_inverse[a, b] * y[j]
-                               for b, j in enumerate(self._block)])
-        for a in reversed(range(len(self._order))):
-            k = self._order[a]
-            later = self._order[a + 1:] + self._block
-            x[k] = y[k] / self._pivots[a] - SR(0).add(*[self._multipliers[m, k] * x[m]
-                                                         for m in later])
-        return [x[i] for i in range(self._n)]
 
 
 class Lagrangian(SageObject):

@@ -36,7 +36,8 @@ from sage.symbolic.ring import SR
 
 from .errors import ModelError
 from .expressions import momentum
-from .lagrangian import Lagrangian, _Elimination, _is_singular, _linear_collected
+from .lagrangian import (Lagrangian, _Elimination, _is_singular, _linear_collected,
+                         _natural_form)
 from .trig import trig_rational_simplify, NotPolynomial
 
 
@@ -129,10 +130,9 @@ class RouthFunction(Lagrangian):
                                           self._momenta) for j in positional])
         R0 = trig_rational_simplify(A0) - SR(0).add(
             *elimination.squares(v, self._momenta)) / 2
-        u = [vi - SR(0).add(*[X[j][a] * dq for j, dq in zip(positional, dq_p)])
-             for a, vi in enumerate(v)]
-        self._solved_velocities = [_linear_collected(x, self._momenta + dq_p)
-                                   for x in elimination.solve(u)]
+        # dq_c = A_cc^{-1} u = -dR/dc, in the (compact) form of R
+        routh = _natural_form(M, B, R0, dq_p)
+        self._solved_velocities = [-routh.diff(c) for c in self._momenta]
         cyclic_velocities = [dq_all[i] for i in index]
         substitution = dict(zip(cyclic_velocities, self._solved_velocities))
         dissipation = lagrangian.dissipation().subs(substitution)
