@@ -99,6 +99,9 @@ class LiePoissonSystem(SageObject):
       parameter, except names that look like coordinates (``gamma1``,
       ``M3``, ``p2``, ...), which must then be declared
     - ``name`` -- (optional) a name
+    - ``reduction`` -- (optional) a dict giving each variable in terms of
+      the coordinates and velocities of a mechanical model (set by the
+      builders of :mod:`.builders`)
 
     EXAMPLES: see the module documentation. A user's algebra, the
     two-dimensional non-abelian one `[e_1, e_2] = e_2`::
@@ -138,8 +141,10 @@ class LiePoissonSystem(SageObject):
         ModelError: algebra: expected a square 2x2 matrix (one row and column per variable x, y), got 3 rows of lengths [2, 2, 2]
     """
 
-    def __init__(self, algebra, hamiltonian, variables=None, parameters=None, name=None):
+    def __init__(self, algebra, hamiltonian, variables=None, parameters=None, name=None,
+                 reduction=None):
         self._structure = poisson_structure(algebra, variables)
+        self._reduction = None if reduction is None else dict(reduction)
         x = self._structure.variables()
         try:
             self._H = SR(hamiltonian)
@@ -195,6 +200,20 @@ class LiePoissonSystem(SageObject):
             'top'
         """
         return self._name
+
+    def reduction(self):
+        r"""
+        The map from a mechanical model's coordinates and velocities to the
+        variables (a dict), or ``None``; see
+        :func:`~sage_dynsym.lie.builders.euler_poisson`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2).reduction() is None
+            True
+        """
+        return None if self._reduction is None else dict(self._reduction)
 
     def structure(self):
         r"""
