@@ -35,7 +35,7 @@ import operator
 import numpy as np
 
 BLOCK = 4096            # random points are drawn in blocks of this size
-BATCH = 8192            # points evaluated at once inside a chunk
+BATCH = 4096            # points evaluated at once inside a chunk
 _EPS = np.finfo(float).eps
 
 FUNCTIONS = {
@@ -257,19 +257,26 @@ def _laguerre(a, maxit=60):
     x = np.zeros(m, dtype=complex)
     ok = np.zeros(m, dtype=bool)
     act = np.arange(m)
-    xa, aa = x.copy(), a
+    xa, aa, absa = x.copy(), a, np.abs(a)
     with np.errstate(all='ignore'):
         for _ in range(maxit):
             p = xa + aa[0]
             dp = np.ones_like(p)
             ddp = np.zeros_like(p)
             ax = np.abs(xa)
-            bound = ax + np.abs(aa[0])
-            for j in range(1, n):
-                ddp = ddp * xa + dp
-                dp = dp * xa + p
-                p = p * xa + aa[j]
-                bound = bound * ax + np.abs(aa[j])
+            bound = ax + absa[0]
+            for j in range(1, n):       # Horner for p, p', p''/2
+                # the complex products out of place: NumPy's in-place complex
+                # multiplication rounds differently on very short arrays, and
+                # the results must not depend on the chunking
+                ddp = ddp * xa
+                ddp += dp
+                dp = dp * xa
+                dp += p
+                p = p * xa
+                p += aa[j]
+                bound *= ax
+                bound += absa[j]
             # |p| at the rounding level of Horner's scheme: x is a root
             done = np.abs(p) <= 8 * _EPS * bound
             g = dp / p
@@ -287,7 +294,7 @@ def _laguerre(a, maxit=60):
                 keep = ~done
                 if not keep.any():
                     break
-                act, xa, aa = act[keep], xa[keep], aa[:, keep]
+                act, xa, aa, absa = act[keep], xa[keep], aa[:, keep], absa[:, keep]
     return x, ok
 
 
