@@ -566,7 +566,8 @@ class TrigPolynomialRing:
                     flips[i] = False
         expr = written(n, d)
         # (polynomials: the recursive form already shows the common factors)
-        if small and not d.is_constant() and n.number_of_terms() + d.number_of_terms() <= _FACTOR_TERMS:
+        if (small and not d.is_constant()
+                and n.number_of_terms() + d.number_of_terms() <= _FACTOR_TERMS):
             factor = SR(_content(n) / _content(d))
             factored = factor * self._factored(n / _content(n)) / self._factored(d / _content(d))
             if len(str(factored)) < len(str(expr)):
@@ -710,7 +711,8 @@ def trig_rational_simplify(expr, strict=False):
         sage: w, t, x, m = var('w t x m')
         sage: trig_rational_simplify(cos(w*t)^4 + 2*cos(w*t)^2*sin(w*t)^2 + sin(w*t)^4)
         1
-        sage: trig_rational_simplify(m*x^2*sin(x)^2/(1 - cos(x)^2) + sqrt(2)*cos(x)^2 + sqrt(2)*sin(x)^2)
+        sage: trig_rational_simplify(m*x^2*sin(x)^2/(1 - cos(x)^2)
+        ....:                        + sqrt(2)*cos(x)^2 + sqrt(2)*sin(x)^2)
         m*x^2 + sqrt(2)
         sage: trig_rational_simplify((m*cos(x)^2 - m)/(sin(x)*cos(x)))
         -m*sin(x)/cos(x)

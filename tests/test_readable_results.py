@@ -6,17 +6,18 @@ including known functions of time) and compact.
 Expected values come from outside the code under test:
 
 - the heavy symmetric top (Euler angles psi, theta, phi; A, A, C about the
-  fixed point): Landau & Lifshitz, Mechanics, section 35, and Goldstein,
-  Classical Mechanics (3rd ed.), section 5.7. With the package's sign
-  convention R = L - sum c dq_cyc (the textbooks define the negative):
+  fixed point): Goldstein, Classical Mechanics (3rd ed.), section 5.7, and
+  Landau & Lifshitz, Mechanics, section 35. With the package's sign
+  convention R = L - sum c dq_cyc (Goldstein section 8.3 and Landau section
+  41 define the Routhian with the opposite sign):
   R = A/2 dtheta^2 - (p_psi - p_phi cos theta)^2/(2 A sin^2 theta)
       - p_phi^2/(2 C) - m g l cos theta,
   H = p_theta^2/(2A) + (p_psi - p_phi cos theta)^2/(2 A sin^2 theta)
       + p_phi^2/(2C) + m g l cos theta;
-- a bead on a hoop turning at the constant rate w about the vertical
+- a bead on a hoop turning at the constant rate w about its vertical
   diameter (theta from the lowest point): L = m R^2/2 (dtheta^2 +
-  w^2 sin^2 theta) + m g R cos theta (Goldstein, exercise 2.22; Landau
-  section 5, problem 3 for the rotating support);
+  w^2 sin^2 theta) + m g R cos theta (J. R. Taylor, Classical Mechanics,
+  Example 7.6, with U = -V);
 - kinetic energies computed here directly from Cartesian positions
   (1/2 m |d r/dt|^2 by SR differentiation, no trigonometric reduction);
 - Routh functions and Hamiltonians computed here numerically: cyclic
