@@ -16,8 +16,9 @@ interactive page with a slider per parameter.
 
 Where the symbolic conditions are not available (too large, or the
 analysis part cannot produce them) the region is computed from the roots
-themselves (spectral abscissa `< 0`), and :meth:`StabilityStudy.note` says
-so.
+themselves (spectral abscissa `< 0`) -- a stability map
+(:func:`~sage_dynsym.scale.maps.stability_map`, in this process) -- and
+:meth:`StabilityStudy.note` says so.
 
 EXAMPLES:
 
@@ -129,7 +130,9 @@ class StabilityStudy(SageObject):
                                                           positive=positive)
         except AnalysisError as err:
             self._conditions = None
-            self._note = f"no symbolic conditions ({err}): stability from the roots"
+            self._note = (f"no symbolic conditions ({err}): stability from the roots; the "
+                          "region plot is a stability map of the characteristic roots "
+                          "(sage_dynsym.scale.stability_map)")
 
     def _repr_(self):
         vs = ', '.join(map(str, self._variables))
@@ -222,6 +225,15 @@ class StabilityStudy(SageObject):
             sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 2), (-1, 2))
             Graphics object consisting of 3 graphics primitives
 
+        Without symbolic conditions (`\sin k` is not rational in `k`), the
+        region is the stability map of the roots::
+
+            sage: St = StabilityStudy([y, -sin(k)*x - c*y], [x, y], {x: 0, y: 0})
+            sage: print(St.note())
+            no symbolic conditions (...): stability from the roots; the region plot is a stability map of the characteristic roots (sage_dynsym.scale.stability_map)
+            sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 4), (-1, 2))
+            Graphics object consisting of 2 graphics primitives
+
         TESTS:
 
         Conditions free of the plane's parameters (here: none at all)::
@@ -235,6 +247,7 @@ class StabilityStudy(SageObject):
         from sage.plot.contour_plot import region_plot
         from sage.plot.point import point
         from sage.plot.polygon import polygon
+        from ..scale.maps import linear_symbols
         X, Y = SR.var(x), SR.var(y)
         others = {p: v for p, v in self._values(values).items() if p not in (X, Y)}
         if self._conditions is not None:
@@ -249,7 +262,9 @@ class StabilityStudy(SageObject):
             else:
                 G = region_plot(conds, (X, *xrange), (Y, *yrange), plot_points=plot_points,
                                 incol='lightgreen', bordercol='darkgreen')
-        else:
+        elif self._linear is not None and {X, Y} <= set(linear_symbols(self._linear)):
+            G = self._map(X, Y, others, xrange, yrange, plot_points).plot()
+        else:                           # a plane parameter left out of the linear system
             def stable(a, b):
                 return self.spectral_abscissa(dict(values, **{x: a, y: b})) < 0
             G = region_plot(stable, xrange, yrange, plot_points=plot_points // 2,
@@ -258,6 +273,15 @@ class StabilityStudy(SageObject):
         G.axes_labels([f"${x}$", f"${y}$"])
         G.set_aspect_ratio('automatic')
         return G
+
+    def _map(self, X, Y, others, xrange, yrange, n):
+        r"""The stability map of the first approximation in the plane of
+        ``X`` and ``Y`` (``n`` x ``n`` points, in this process)."""
+        from ..scale.maps import stability_map, linear_symbols
+        symbols = set(linear_symbols(self._linear))
+        fixed = {p: v for p, v in others.items() if p in symbols}
+        return stability_map(self._linear, {X: (*xrange, n), Y: (*yrange, n)}, fixed=fixed,
+                             client=False)
 
     def roots_plot(self, values):
         r"""The characteristic roots in the complex plane."""

@@ -316,6 +316,22 @@ def model_linear_system(model, at=None):
     return linearize(L, point)
 
 
+def linear_symbols(linear):
+    r"""
+    The symbols (parameters) of the matrices of a linear system, sorted by
+    name: what :func:`stability_map` needs values for.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: from sage_dynsym.scale.maps import linear_symbols
+        sage: a, b, m = var('a b m')
+        sage: linear_symbols(LinearSystem([var('x')], M=[[m]], S=[[a]], W=[[b^2]]))
+        [a, b, m]
+    """
+    return _symbols(linear)
+
+
 def _symbols(linear):
     entries = []
     for X in _matrices(linear):
