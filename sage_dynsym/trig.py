@@ -72,7 +72,9 @@ def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
 
     A non-polynomial part containing a symbol of ``dynamic`` (coordinates,
     velocities, time: it would not be differentiated) raises
-    :class:`NotPolynomial`, as does an inexact number.
+    :class:`NotPolynomial`, as does an inexact number with ``fractions``
+    (otherwise the ring's conversion takes its rational value, as kinematic
+    data always did).
     """
     stack = [SR(expr)]
     while stack:
@@ -83,7 +85,7 @@ def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
                 symbols.add(e)
                 continue
             if e.is_numeric():
-                if not _is_rational(e):
+                if fractions and not _is_rational(e):
                     raise NotPolynomial(f"{e} is not a rational number")
                 continue
         elif op is add_vararg or op is mul_vararg:
@@ -271,7 +273,7 @@ class TrigPolynomialRing:
           powers are allowed (for :meth:`fraction`) instead of being atoms
 
         Raises :class:`NotPolynomial` if an atom contains a ``dynamic``
-        symbol or a number is inexact.
+        symbol, or with ``fractions`` if a number is inexact.
 
         EXAMPLES::
 

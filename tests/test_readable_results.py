@@ -339,3 +339,17 @@ def test_hamiltonian_not_larger_than_before_on_a_chain():
     assert len(str(Rf.expr())) < 10000
     params = [SR.var(p) for p in desc['parameters']]
     _check_routh_and_hamiltonian_numerically(L, Rf, H, params, random.Random(11), trials=2)
+
+
+def test_inexact_data_still_reduced():
+    # decimal data (as typed in a description file) keep the polynomial
+    # arithmetic: no unreduced 0.5*cos(b)^2 + 1.0*sin(b)^2 pair
+    body = RigidBody('p', rotations=[(3, psi), (1, theta)], mass=0.5,
+                     mass_center=[0, 0, 1.5], inertia=diagonal_matrix([1.25, 1.0, 0.5]))
+    S = MechanicalSystem([body], [psi, theta], force_function=UniformGravity([0, 0, -g]))
+    L = S.lagrangian().expr()
+    assert 'cos(theta)^2' not in str(L) or 'sin(theta)^2' not in str(L), L
+    # T = 1/2 W.Theta W with W = (dtheta, dpsi sin, dpsi cos) (the body's axes)
+    W = [dtheta, dpsi * sin(theta), dpsi * cos(theta)]
+    direct = (1.25 * W[0]**2 + 1.0 * W[1]**2 + 0.5 * W[2]**2) / 2 - 0.5 * g * 1.5 * cos(theta)
+    numerically_equal(L, direct, [theta, dpsi, dtheta, g], random.Random(12), tol=1e-12)
