@@ -19,6 +19,8 @@ setup(
     extras_require={
         "passagemath": ["passagemath-standard~=10.8", "passagemath-qepcad~=10.8"],
         "test": ["pytest", "sympy", "scipy"],
+        # sage_dynsym.scale (stability maps and sweeps on Dask)
+        "scale": ["dask[distributed]>=2024.1,<2027", "scipy"],
     },
     # the bundled description files, also for a non-editable install
     data_files=[("share/sage_dynsym/examples", sorted(glob.glob("examples/*.yaml")))],
