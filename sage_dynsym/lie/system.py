@@ -99,6 +99,8 @@ class LiePoissonSystem(SageObject):
       parameter, except names that look like coordinates (``gamma1``,
       ``M3``, ``p2``, ...), which must then be declared
     - ``name`` -- (optional) a name
+    - ``positive`` -- (optional) parameters known to be positive (masses,
+      moments of inertia): the default of the analysis methods
     - ``reduction`` -- (optional) a dict giving each variable in terms of
       the coordinates and velocities of a mechanical model (set by the
       builders of :mod:`.builders`)
@@ -142,8 +144,9 @@ class LiePoissonSystem(SageObject):
     """
 
     def __init__(self, algebra, hamiltonian, variables=None, parameters=None, name=None,
-                 reduction=None):
+                 positive=(), reduction=None):
         self._structure = poisson_structure(algebra, variables)
+        self._positive = [SR(a) for a in positive]
         self._reduction = None if reduction is None else dict(reduction)
         x = self._structure.variables()
         try:
@@ -175,6 +178,11 @@ class LiePoissonSystem(SageObject):
                                      entry="hamiltonian")
             self._parameters = sorted(set(others) | set(self._structure.parameters()),
                                       key=str)
+        for a in self._positive:
+            if str(a) not in {str(b) for b in self._parameters}:
+                raise ModelError(f"{a} is declared positive but is not a parameter (the "
+                                 f"parameters are {', '.join(map(str, self._parameters))})",
+                                 entry="positive")
 
     # -- description ---------------------------------------------------------
 
@@ -250,6 +258,19 @@ class LiePoissonSystem(SageObject):
             [A]
         """
         return list(self._parameters)
+
+    def positive_parameters(self):
+        r"""
+        The parameters declared positive.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: A = var('A')
+            sage: LiePoissonSystem('so3', var('M1')^2/A, positive=[A]).positive_parameters()
+            [A]
+        """
+        return list(self._positive)
 
     def hamiltonian(self):
         r"""
@@ -373,7 +394,7 @@ class LiePoissonSystem(SageObject):
         return _polynomial_integrals(self._structure, self._H, degree, new_only=new_only,
                                      conditions=conditions, parameters=self._parameters)
 
-    def stationary_solutions(self, integrals=(), levels=None, positive=(), multipliers=None,
+    def stationary_solutions(self, integrals=(), levels=None, positive=None, multipliers=None,
                              solve_for=None):
         r"""
         Stationary solutions by the Routh--Lyapunov method over the
@@ -387,7 +408,9 @@ class LiePoissonSystem(SageObject):
         - ``integrals`` -- further first integrals (checked)
         - ``levels`` -- one entry per integral after `H` (Casimirs first):
           a prescribed value or ``None``
-        - ``positive``, ``multipliers``, ``solve_for`` -- as for
+        - ``positive`` -- (default: :meth:`positive_parameters`) parameters
+          declared positive
+        - ``multipliers``, ``solve_for`` -- as for
           :func:`~sage_dynsym.analysis.stationary.stationary_solutions`
 
         EXAMPLES: permanent rotations of the Euler top on `e(3)` (no
@@ -418,6 +441,7 @@ class LiePoissonSystem(SageObject):
                 f"levels has {len(levels)} entries; it needs one per integral after H (the "
                 f"Casimirs {', '.join(map(str, self.casimirs())) or '(none)'}, then the "
                 f"integrals given): {len(all_integrals) - 1}", entry="stationary_solutions")
+        positive = self._positive if positive is None else positive
         return _stationary_solutions(all_integrals, self.variables(), equations=self.equations(),
                                      multipliers=multipliers, levels=levels, positive=positive,
                                      solve_for=solve_for)
