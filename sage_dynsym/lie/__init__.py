@@ -1,0 +1,16 @@
+r"""
+Systems on Lie algebras
+
+Lie--Poisson systems `\dot x = J(x)\nabla H` on the duals of Lie algebras
+(named ones: `so(3)`, `e(3)`, `so(4)`, `so(3,1)`, `e(4)`, or given by a
+Poisson matrix or structure constants): their equations, Casimirs, the
+search for polynomial first integrals by undetermined coefficients (with
+the parameter values where more integrals exist), stationary motions by
+the Routh--Lyapunov method, and the Euler--Poisson and Kirchhoff systems of
+rigid bodies.
+"""
+from .algebras import PoissonStructure, lie_algebra, poisson_structure
+from .integrals import IntegralJump, casimirs, polynomial_integrals
+from .system import LiePoissonSystem
+from .builders import euler_poisson, kirchhoff
+from .description import lie_poisson_from_dict, lie_report, LIE_SECTIONS
