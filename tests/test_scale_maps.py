@@ -289,3 +289,22 @@ def test_bad_options():
         S.exact([c * var("z") > 0])
     with pytest.raises(AnalysisError, match="no conditions"):
         S.agreement()
+
+
+def test_large_system_uses_eigvals():
+    # a chain of 9 masses (order 18 > 16): the map falls back on the matrices
+    n = 9
+    cc, kk = var('cc kk')
+    T = matrix.identity(n) * 2 - matrix(n, n, lambda i, j: 1 if abs(i - j) == 1 else 0)
+    Ls = LinearSystem(list(var(' '.join(f'q{i}' for i in range(n)))), M=identity_matrix(n),
+                      S=cc * T, W=kk * T)
+    S = stability_map(Ls, {cc: (-0.5, 1, 4), kk: (-0.5, 1, 4)}, client=False)
+    assert S.method() == 'eigvals' and "order 18 > 16" in S.note()
+    Tn = np.array(T, dtype=float)
+    for a, cv in enumerate(S.axes()[cc]):
+        for b, kv in enumerate(S.axes()[kk]):
+            A = np.block([[np.zeros((n, n)), np.eye(n)], [-kv * Tn, -cv * Tn]])
+            w = np.linalg.eigvals(A)
+            assert abs(S.max_real_part()[a, b] - w.real.max()) <= 1e-7 * max(1, abs(w).max())
+    with pytest.raises(AnalysisError, match="order 18 > 16"):
+        stability_map(Ls, {cc: (-0.5, 1, 4), kk: (-0.5, 1, 4)}, client=False, method='polynomial')

@@ -69,7 +69,7 @@ from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, DynSymError
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
@@ -421,6 +421,10 @@ def _pencil(linear):
 
 def _characteristic_polynomial(linear, lam, required):
     try:
+        order = len(linear.variables()) * linear.order()
+        if order > MAX_POLYNOMIAL_DEGREE:       # not even worth computing
+            raise AnalysisError(f"the system has order {order} > {MAX_POLYNOMIAL_DEGREE}",
+                                entry="stability_map")
         poly = SR(linear.characteristic_polynomial(lam))
         degree = poly.degree(lam)
         if poly.is_zero():
@@ -431,7 +435,7 @@ def _characteristic_polynomial(linear, lam, required):
             raise AnalysisError(f"the characteristic polynomial has degree {degree} > "
                                 f"{MAX_POLYNOMIAL_DEGREE}", entry="stability_map")
         return poly, None
-    except (AnalysisError, TypeError, ValueError, ArithmeticError, RuntimeError) as err:
+    except (DynSymError, TypeError, ValueError, ArithmeticError, RuntimeError) as err:
         if required or 'vanishes identically' in str(err):
             raise
         return None, f"no characteristic polynomial ({err}): eigenvalues of the matrices"
@@ -443,7 +447,7 @@ def _lienard_chipart(poly, lam, note):
         return None, note
     try:
         return lienard_chipart_conditions(poly, lam), note
-    except (AnalysisError, ArithmeticError, ValueError, TypeError, RuntimeError) as err:
+    except (DynSymError, ArithmeticError, ValueError, TypeError, RuntimeError) as err:
         return None, f"no Lienard-Chipart conditions ({err})"
 
 
