@@ -185,3 +185,10 @@ def test_scheduler_without_workers(ladder):
         with pytest.raises(AnalysisError, match=f"the scheduler at {address} has no worker"):
             sweep(scale_helpers.product, {'a': (0, 1, 3), 'b': (0, 1, 3)}, client=address,
                   timeout=1)
+
+
+def test_progress_bar(clients, ladder, capsys):
+    S = stability_map(ladder, LADDER_GRID, fixed=LADDER_FIXED, client=clients[2], chunk_size=500,
+                      progress=True)
+    assert "% Completed" in capsys.readouterr().out
+    assert same(S, stability_map(ladder, LADDER_GRID, fixed=LADDER_FIXED, client=False))

@@ -208,7 +208,7 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
         index = {f.key: i for i, f in enumerate(futures)}
         try:
             if progress:
-                _show_progress(distributed, futures)
+                _show_progress(c, futures)
             for future in distributed.as_completed(futures, loop=c.loop):
                 try:
                     result = future.result()
@@ -224,12 +224,13 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
             del futures, data
 
 
-def _show_progress(distributed, futures):
+def _show_progress(client, futures):
     from distributed.diagnostics.progressbar import progress
     from distributed.utils import is_kernel
+    scheduler = client.scheduler.address    # the client need not be the default one
     if is_kernel():             # a widget; the computation goes on meanwhile
-        bar = progress(futures, notebook=True, multi=False)
+        bar = progress(futures, notebook=True, multi=False, scheduler=scheduler)
         from IPython.display import display
         display(bar)
     else:                       # a text bar on the terminal, until all are done
-        progress(futures, notebook=False, multi=False)
+        progress(futures, notebook=False, multi=False, scheduler=scheduler)
