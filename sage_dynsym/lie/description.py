@@ -59,7 +59,7 @@ from sage.misc.latex import latex
 from ..errors import DescriptionError, DynSymError, brief
 from ..expressions import ExpressionParser
 from ..names import check_names
-from .algebras import NAMED, algebra_name, _default_names
+from .algebras import NAMED, lie_algebra
 from .system import LiePoissonSystem
 
 #: The keys of a ``kind: lie_poisson`` description.
@@ -178,11 +178,10 @@ def _from_dict(data, source):
     algebra = data['algebra']
     named = isinstance(algebra, str)
     if named:
-        key = algebra_name(algebra)
-        if key is None:
-            from .algebras import lie_algebra
-            lie_algebra(algebra)            # raises the error naming the algebras
-        variables = _named_variables(key, variables)
+        # the structure first: an unknown name or a wrong number of variables
+        # is reported before the expressions that use them
+        algebra = lie_algebra(algebra, variables)
+        variables = [str(x) for x in algebra.variables()]
     elif variables is None:
         raise DescriptionError("a Poisson matrix or structure constants need the list of "
                                "variables", entry='variables', source=source)
@@ -202,15 +201,6 @@ def _from_dict(data, source):
                             parameters=[parser.parse(a) for a in parameters],
                             positive=[parser.parse(a) for a in positive],
                             name=None if name is None else str(name))
-
-
-def _named_variables(key, variables):
-    if variables is None:
-        return _default_names(key)
-    n, blocks = sum(NAMED[key][2]), len(NAMED[key][1])
-    if len(variables) == blocks and blocks < n:
-        return _default_names(key, variables)
-    return variables
 
 
 def _algebra(spec, variables, parser, source):
