@@ -308,3 +308,12 @@ def test_large_system_uses_eigvals():
             assert abs(S.max_real_part()[a, b] - w.real.max()) <= 1e-7 * max(1, abs(w).max())
     with pytest.raises(AnalysisError, match="order 18 > 16"):
         stability_map(Ls, {cc: (-0.5, 1, 4), kk: (-0.5, 1, 4)}, client=False, method='polynomial')
+
+
+def test_bad_numbers_of_the_computation():
+    with pytest.raises(AnalysisError, match="chunk_size must be a positive integer, got 0"):
+        stability_map(OSC_FIRST, GRID, fixed={m: 1}, client=False, chunk_size=0)
+    with pytest.raises(AnalysisError, match="tol must be a non-negative number"):
+        stability_map(OSC_FIRST, GRID, fixed={m: 1}, client=False, tol=-1)
+    with pytest.raises(AnalysisError, match="no parameters: expected a dict"):
+        stability_map(OSC_FIRST, [(c, 0, 1, 3)], fixed={m: 1}, client=False)

@@ -52,7 +52,18 @@ def chunks(total, size):
         sage: from sage_dynsym.scale.cluster import chunks
         sage: chunks(7, 3), chunks(0, 3)
         ([(0, 3), (3, 6), (6, 7)], [])
+        sage: chunks(7, 0)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: scale: chunk_size must be a positive integer, got 0
     """
+    try:
+        ok = int(size) == size and size >= 1
+    except (TypeError, ValueError):
+        ok = False
+    if not ok:
+        raise AnalysisError(f"chunk_size must be a positive integer, got {size!r}", entry="scale")
+    size = int(size)
     return [(a, min(total, a + size)) for a in range(0, total, size)]
 
 

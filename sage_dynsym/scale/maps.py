@@ -162,10 +162,18 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         AnalysisError: stability_map: expected a linear system (from linearize), or what linearize accepts with at=, or a circuit or mechanical model, got x
     """
     entry = "stability_map"
-    linear = _linear_system(system, at, variables, lhs_matrix)
     if method not in ('auto', 'polynomial', 'eigvals'):
         raise AnalysisError(f"method must be 'auto', 'polynomial' or 'eigvals', got {method!r}",
                             entry=entry)
+    try:
+        tol = float(tol)
+    except (TypeError, ValueError):
+        tol = -1.0
+    if not tol >= 0:
+        raise AnalysisError("tol must be a non-negative number", entry=entry)
+    if not isinstance(parameters, dict) or not parameters:
+        parse_points(parameters)            # the error for a missing or malformed dict
+    linear = _linear_system(system, at, variables, lhs_matrix)
     symbols = _symbols(linear)
     names = {str(s): s for s in symbols}
     keys = [_resolve(k, names, symbols, "unknown parameter") for k in parameters]
@@ -184,7 +192,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         raise AnalysisError(f"no value for {', '.join(map(str, missing))}: give "
                             f"{'it' if len(missing) == 1 else 'them'} as a parameter or in "
                             "fixed=", entry=entry)
-    lam = SR.var('lambda_')
+    lam = SR.symbol()                       # a fresh variable: no clash with the system's
     poly, note = None, None
     if method != 'eigvals' or conditions == 'lienard-chipart':
         poly, note = _characteristic_polynomial(fixed_system, lam, method == 'polynomial')
@@ -198,7 +206,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         lhs = B != identity_matrix(SR, B.nrows())
         task = dict(method='eigvals', size=J.nrows(), lhs=lhs,
                     program=compile_expressions(J.list() + (B.list() if lhs else []), keys, entry))
-    task.update(points=points.spec, tol=float(tol))
+    task.update(points=points.spec, tol=tol)
     alpha = np.empty(points.size)
     stable = np.empty(points.size, dtype=bool)
 
@@ -206,7 +214,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         a, b = ranges[i]
         alpha[a:b], stable[a:b] = result
 
-    ranges = chunks(points.size, int(chunk_size))
+    ranges = chunks(points.size, chunk_size)
     run_chunks(map_chunk, task, ranges, collect, client=client, workers=workers,
                timeout=timeout, progress=progress, label='stability-map')
     if conditions == 'lienard-chipart':

@@ -164,7 +164,7 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
     points = parse_points(dict(zip(names, parameters.values())), samples, seed)
     if chunk_size is None:
         chunk_size = CHUNK if vectorized else max(1, min(1024, math.ceil(points.size / 64)))
-    ranges = chunks(points.size, int(chunk_size))
+    ranges = chunks(points.size, chunk_size)
     task = dict(points=points.spec, names=names, fixed=fixed, function=call,
                 vectorized=bool(vectorized))
     results = [None] * len(ranges)
