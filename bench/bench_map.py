@@ -45,7 +45,6 @@ def main():
     from sage.all import SR, RDF, fast_callable
     from distributed import Client, LocalCluster
     from sage_dynsym import load
-    from sage_dynsym.description import example_path
     from sage_dynsym.scale import stability_map, model_linear_system
 
     fixed = {'R3': 1, 'R4': 2, 'L1': 1, 'L2': 0.5, 'L3': 1, 'C1': 1, 'C2': 2, 'C3': 1}
@@ -55,7 +54,9 @@ def main():
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")
 
     t0 = time.perf_counter()
-    system = model_linear_system(load(example_path('rlc_ladder.yaml')))
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "examples",
+                        "rlc_ladder.yaml")
+    system = model_linear_system(load(path))
     print(f"  linear system from the description: {time.perf_counter() - t0:.2f} s")
 
     # --- references: plain Python loops --------------------------------------

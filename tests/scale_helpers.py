@@ -35,6 +35,12 @@ class KillOnce(WorkerPlugin):
         os.kill(os.getpid(), signal.SIGKILL)
 
 
+def example_path(name):
+    """A description file of the examples/ folder (by path: the package is
+    being reorganised)."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "examples", name)
+
+
 def damped_response(c, k, m=1.0, t=1.0):
     """x(t) of m x'' + c x' + k x = 0, x(0) = 1, x'(0) = 0 (closed form)."""
     mu, disc = -c / (2 * m), c * c - 4 * m * k

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from sage_dynsym.__main__ import main
-from sage_dynsym.description import example_path
+from scale_helpers import example_path
 
 LADDER = example_path('rlc_ladder.yaml')
 LADDER_VALUES = ['--value', 'R3=1', '--value', 'R4=2', '--value', 'L1=1', '--value', 'L2=0.5',

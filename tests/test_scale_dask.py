@@ -15,7 +15,7 @@ import scale_helpers
 from sage.all import var
 
 from sage_dynsym import load
-from sage_dynsym.description import example_path
+from scale_helpers import example_path
 from sage_dynsym.errors import AnalysisError
 from sage_dynsym.scale import stability_map, sweep, model_linear_system
 

@@ -17,8 +17,8 @@ from sage.all import SR, var, matrix, identity_matrix, diagonal_matrix, function
     fast_callable, RDF
 
 from sage_dynsym import load
+from scale_helpers import example_path
 from sage_dynsym.analysis import linearize, LinearSystem, lienard_chipart_conditions
-from sage_dynsym.description import example_path
 from sage_dynsym.errors import AnalysisError
 from sage_dynsym.scale import stability_map, model_linear_system
 

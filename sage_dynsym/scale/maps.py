@@ -228,14 +228,14 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
 # ---------------------------------------------------------------------------
 
 def _linear_system(system, at, variables, lhs_matrix):
-    from ..analysis.linear import LinearSystem, linearize
-    from ..lagrangian import Lagrangian
-    from ..hamiltonian import Hamiltonian
+    from ..analysis import LinearSystem, linearize
     if isinstance(system, LinearSystem):
         return system
     if _is_model(system):
         return model_linear_system(system, at)
-    if at is None or not (isinstance(system, (Lagrangian, Hamiltonian, list, tuple))):
+    # right-hand sides, or a characteristic function (Lagrangian, Routh
+    # function, Hamiltonian: they have coordinates): linearize checks the rest
+    if at is None or not (isinstance(system, (list, tuple)) or hasattr(system, 'coordinates')):
         raise AnalysisError("expected a linear system (from linearize), or what linearize "
                             "accepts with at=, or a circuit or mechanical model, got "
                             f"{_short(system)}", entry="stability_map")
@@ -295,7 +295,7 @@ def model_linear_system(model, at=None):
         [ 0  0  0  0 C1  0]
         [ 0  0  0  0  0 C2]
     """
-    from ..analysis.linear import linearize
+    from ..analysis import linearize
     from ..errors import CircuitError
     at = _point(at)
     if hasattr(model, 'branches'):
@@ -405,7 +405,7 @@ def _exact_number(value, where, entry="stability_map"):
 
 
 def _substitute(linear, values):
-    from ..analysis.linear import LinearSystem
+    from ..analysis import LinearSystem
     if not values:
         return linear
     sub = lambda X: X.subs(values)
@@ -450,7 +450,7 @@ def _characteristic_polynomial(linear, lam, required):
 
 
 def _lienard_chipart(poly, lam, note):
-    from ..analysis.hurwitz import lienard_chipart_conditions
+    from ..analysis import lienard_chipart_conditions
     if poly is None:
         return None, note
     try:
@@ -647,7 +647,6 @@ class StabilityMap(SageObject):
             sage: S.exact([-a]), S.exact([[a < -1/2], [a > 1/2]]), S.exact([])
             (array([ True, False, False]), array([ True, False,  True]), array([ True,  True,  True]))
         """
-        from ..analysis.conditions import as_relational
         if conditions is None:
             conditions = self._conditions
         if conditions is None:
@@ -842,6 +841,21 @@ class StabilityMap(SageObject):
                 os.remove(tmp)
 
 
+def as_relational(condition):
+    r"""A condition as a relational: an expression ``e`` means ``e > 0``
+    (the convention of the stability criteria); relationals pass unchanged.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.maps import as_relational
+        sage: a = var('a')
+        sage: as_relational(a - 1), as_relational(a != 0)
+        (a - 1 > 0, a != 0)
+    """
+    e = SR(condition)
+    return e if e.is_relational() else e > 0
+
+
 def _extent(axis):
     step = (axis[-1] - axis[0]) / (len(axis) - 1) if len(axis) > 1 else 1.0
     return float(axis[0] - step / 2), float(axis[-1] + step / 2)
@@ -870,7 +884,6 @@ def _shift(a, axis, combine):
 def _exact_boundary(conditions, fixed, keys, axes, options):
     from sage.plot.contour_plot import region_plot
     from sage.plot.graphics import Graphics
-    from ..analysis.conditions import as_relational
     conditions = list(conditions)
     alternatives = ([list(c) for c in conditions] if conditions and
                     all(isinstance(c, (list, tuple)) for c in conditions) else [conditions])
