@@ -24,7 +24,7 @@ import time
 
 from sage.all import var
 
-from sage_dynsym.expressions import ExpressionParser
+from sage_dynsym.io.expressions import ExpressionParser
 from sage_dynsym.lie import LiePoissonSystem
 
 NAMES = ['M1', 'M2', 'M3', 'g1', 'g2', 'g3']

@@ -14,9 +14,7 @@ over `\mathbb{Q}(a)`.
 
 Vectors are dictionaries ``{monomial: coefficient}`` (a monomial is the
 exponent tuple over the variables, a coefficient an element of
-`\mathbb{Q}(a)`). Columns are ordered by decreasing total degree, so a
-basis in reduced echelon form is filtered by degree: the vectors whose
-pivot has degree `\le k` span the part of degree `\le k`.
+`\mathbb{Q}(a)`); :class:`Reducer` keeps a basis of a growing span.
 
 EXAMPLES::
 
@@ -111,11 +109,12 @@ class PolynomialContext:
         return self.coefficients({e[:self.np]: c for e, c in f.dict().items()})
 
     def lift(self, c):
-        r"""A coefficient (polynomial in the parameters) as a ring element."""
-        if self.np and c in self.field and not c in self.coefficients:
-            raise ValueError(f"{c} is not a polynomial in the parameters")
-        if self.np and c in self.field:
-            c = self.field(c).numerator() if self.field(c).denominator() == 1 else c
+        r"""A coefficient (a polynomial in the parameters) as a ring element."""
+        if self.np:
+            c = self.field(c)
+            if c.denominator() != 1:
+                raise ValueError(f"{c} is not a polynomial in the parameters")
+            c = c.numerator()
         return self.ring(c)
 
     def split(self, f):
@@ -231,44 +230,8 @@ def primitive(vector, field):
     return {m: c / content for m, c in scaled.items()}
 
 
-def _matrix(vectors, columns, field):
-    index = {m: j for j, m in enumerate(columns)}
-    A = matrix(field, len(vectors), len(columns), sparse=False)
-    for i, v in enumerate(vectors):
-        for m, c in v.items():
-            A[i, index[m]] = c
-    return A
-
-
 def _rows(A, columns):
     return [{columns[j]: c for j, c in enumerate(row) if c} for row in A.rows()]
-
-
-def column_order(vectors):
-    r"""The monomials of ``vectors``, by decreasing degree."""
-    keys = set()
-    for v in vectors:
-        keys.update(v)
-    return sorted(keys, key=lambda m: (degree(m), m), reverse=True)
-
-
-def echelon(vectors, field):
-    r"""
-    A basis of the span of ``vectors`` in reduced echelon form (columns by
-    decreasing degree).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.lie._polynomials import echelon
-        sage: echelon([{(1, 0): 1, (0, 1): 1}, {(1, 0): 2, (0, 1): 2}, {(0, 1): 3}], QQ)
-        [{(1, 0): 1}, {(0, 1): 1}]
-    """
-    vectors = [v for v in vectors if v]
-    if not vectors:
-        return []
-    columns = column_order(vectors)
-    E = _matrix(vectors, columns, field).echelon_form()
-    return [r for r in _rows(E, columns) if r]
 
 
 class Reducer:

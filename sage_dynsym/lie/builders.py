@@ -89,7 +89,7 @@ def euler_poisson(system, names=None):
     INPUT:
 
     - ``system`` -- a mechanical system (see
-      :class:`~sage_dynsym.mechanical_system.MechanicalSystem`) with one
+      :class:`~sage_dynsym.mechanics.system.MechanicalSystem`) with one
       massive body; any other bodies are massless carriers (for Euler
       angles); every joint is at the origin and fixed, so the massive body
       turns about a fixed point `O`. Its force field is a uniform field

@@ -17,7 +17,7 @@ A description with ``kind: lie_poisson``::
 Structure constants are a list of brackets ``[a, b, {c: coefficient,
 ...}]``, `[e_a, e_b] = \sum c\, e_c` (named by the variables); the other
 brackets are zero or follow by skew-symmetry. Expressions are parsed by
-:class:`~sage_dynsym.expressions.ExpressionParser` with the declared
+:class:`~sage_dynsym.io.expressions.ExpressionParser` with the declared
 variables and parameters only.
 
 :func:`lie_poisson_from_dict` builds the system from the parsed YAML
@@ -57,8 +57,8 @@ EXAMPLES::
 from sage.misc.latex import latex
 
 from ..errors import DescriptionError, DynSymError, brief
-from ..expressions import ExpressionParser
-from ..names import check_names
+from ..io.expressions import ExpressionParser
+from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
 from .system import LiePoissonSystem
 
