@@ -19,7 +19,8 @@ from sage.all import SR, var, vector, matrix, diagonal_matrix
 
 from sage_dynsym.description import read_yaml
 from sage_dynsym.errors import DynSymError
-from sage_dynsym.lie import LiePoissonSystem, kirchhoff, lie_poisson_from_dict, lie_report
+from sage_dynsym.lie import (LiePoissonSystem, kirchhoff, lie_poisson_from_dict,
+                             lie_poisson_to_dict, lie_report)
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "examples" / "heavy_top_e3.yaml"
@@ -153,3 +154,14 @@ def test_kirchhoff_with_an_offset_centre_of_mass_matches_the_energy():
         # the inverse Legendre map: dH/d(M, p) = (Omega, V)
         back = [float(S.hamiltonian().diff(x).subs(point).subs(vals)) for x in M + P]
         assert np.allclose(back, u, atol=1e-6)
+
+
+def test_round_trip_and_subs():
+    S = lie_poisson_from_dict(read_yaml(str(EXAMPLE)), str(EXAMPLE))
+    d = lie_poisson_to_dict(S)
+    T = lie_poisson_from_dict(d)
+    assert T.equations() == S.equations() and T.positive_parameters() == [A, C, m, g, l]
+    fast = S.subs({m: 1, g: 10})
+    assert fast.parameters() == [A, C, l] and fast.hamiltonian() == S.hamiltonian().subs(m=1, g=10)
+    with pytest.raises(DynSymError, match="M1 is not a parameter"):
+        S.subs({M[0]: 1})

@@ -13,4 +13,4 @@ from .algebras import PoissonStructure, lie_algebra, poisson_structure
 from .integrals import IntegralJump, casimirs, polynomial_integrals
 from .system import LiePoissonSystem
 from .builders import euler_poisson, kirchhoff
-from .description import lie_poisson_from_dict, lie_report, LIE_SECTIONS
+from .description import lie_poisson_from_dict, lie_poisson_to_dict, lie_report, LIE_SECTIONS

@@ -68,7 +68,7 @@ from sage.symbolic.ring import SR
 from ..analysis import linearize as _linearize
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..errors import ModelError, AnalysisError, brief
-from .algebras import NAMED, _default_names, poisson_structure
+from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
 from .integrals import casimirs as _casimirs, polynomial_integrals as _polynomial_integrals
 
 #: Names that look like coordinates: a Hamiltonian using one that is not a
@@ -460,6 +460,41 @@ class LiePoissonSystem(SageObject):
             lam^3 - 1/12*lam
         """
         return _linearize(self.equations(), at, self.variables())
+
+    def subs(self, values):
+        r"""
+        The system with parameter values substituted (in `H` and in the
+        Poisson matrix); the substituted parameters are no longer
+        parameters.
+
+        EXAMPLES: Kovalevskaya's case from a general heavy body::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3, g1 = var('M1 M2 M3 gamma1'); A, B, C, c = var('A B C c')
+            sage: S = LiePoissonSystem('e3', M1^2/(2*A) + M2^2/(2*B) + M3^2/(2*C) + c*g1,
+            ....:                      positive=[A, B, C])
+            sage: K = S.subs({A: 2*C, B: 2*C}); K.parameters(), K.positive_parameters()
+            ([C, c], [C])
+            sage: len(K.polynomial_integrals(4, new_only=True))
+            1
+        """
+        values = {SR(k): SR(v) for k, v in values.items()}
+        names = {str(k) for k in values}
+        for k in values:
+            if str(k) not in {str(a) for a in self._parameters}:
+                raise ModelError(f"{k} is not a parameter (the parameters are "
+                                 f"{', '.join(map(str, self._parameters))})", entry="values")
+        structure = self._structure
+        if any(str(a) in names for a in structure.parameters()):
+            structure = PoissonStructure(structure.matrix().subs(values),
+                                         structure.variables(), name=structure.name())
+        remaining = sorted({a for v in values.values() for a in v.variables()} |
+                           {a for a in self._parameters if str(a) not in names}, key=str)
+        reduction = None if self._reduction is None else \
+            {k: SR(v).subs(values) for k, v in self._reduction.items()}
+        return LiePoissonSystem(structure, self._H.subs(values), parameters=remaining,
+                                name=self._name, reduction=reduction,
+                                positive=[a for a in self._positive if str(a) not in names])
 
     def numerical_rhs(self, values):
         r"""
