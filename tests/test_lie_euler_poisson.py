@@ -162,3 +162,31 @@ def test_refusals():
                               [psi], dissipation=dpsi**2)
     with pytest.raises(ValueError, match="conservative"):
         euler_poisson(damped)
+
+
+def test_the_map_to_m_and_gamma_is_a_poisson_map():
+    # Lie-Poisson reduction (Marsden & Ratiu, Thm. 13.1.1 / §15.7): with the
+    # canonical bracket of the Euler angles and their momenta, M(q, p) and
+    # gamma(q) have exactly the brackets of e(3) used by the package:
+    # {M_i, M_j} = -eps_ijk M_k, {M_i, gamma_j} = -eps_ijk gamma_k, {gamma_i, gamma_j} = 0
+    from sage_dynsym.lie import lie_algebra
+    R = Rz(psi) * Rx(theta) * Rz(phi)
+    dR = sum((R.apply_map(lambda e: e.diff(q)) * dq for q, dq in zip(Q, DQ)), matrix(SR, 3, 3))
+    W = (R.transpose() * dR).simplify_trig()
+    omega = vector(SR, [W[2, 1], W[0, 2], W[1, 0]])
+    Wq = matrix(SR, [[w.diff(dq) for dq in DQ] for w in omega])     # omega = Wq dq
+    p = vector(SR, var('p_psi p_theta p_phi'))
+    Mq = Wq.transpose().inverse() * p                               # p = Wq^T M
+    gamma = list(R.row(2))
+    funcs = list(Mq) + gamma
+    E = lie_algebra('e3')
+    rng = random.Random(10)
+    for _ in range(3):
+        vals = {s: rng.uniform(0.3, 2.8) for s in Q + list(p)}
+        point = dict(zip(E.variables(), [float(f.subs(vals)) for f in funcs]))
+        for i in range(6):
+            for j in range(6):
+                canonical = sum(funcs[i].diff(q) * funcs[j].diff(pq) -
+                                funcs[i].diff(pq) * funcs[j].diff(q) for q, pq in zip(Q, p))
+                expected = float(SR(E.matrix()[i, j]).subs(point))
+                assert abs(float(canonical.subs(vals)) - expected) < 1e-9, (i, j)
