@@ -78,6 +78,14 @@ A user's Poisson matrix, and structure constants `[e_1, e_2] = e_3`,
     Traceback (most recent call last):
     ...
     ModelError: algebra: the matrix breaks the Jacobi identity: {x, {y, z}} + {y, {z, x}} + {z, {x, y}} = x, not 0
+
+REFERENCES:
+
+- V. I. Arnold, *Mathematical Methods of Classical Mechanics*, 2nd ed.,
+  Springer, 1989, Appendix 2.
+- J. E. Marsden, T. S. Ratiu, *Introduction to Mechanics and Symmetry*,
+  2nd ed., Springer, 1999, ch. 13 and §15.7.
+- A. V. Borisov, I. S. Mamaev, *Rigid Body Dynamics*, De Gruyter, 2018, §1.6.
 """
 import re
 

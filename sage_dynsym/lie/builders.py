@@ -35,6 +35,12 @@ EXAMPLES::
     ....:               added_masses=diagonal_matrix([0, 0, 0, K1, K2, K3]))
     sage: S.hamiltonian()
     1/2*M1^2/I1 + 1/2*M2^2/I2 + 1/2*M3^2/I3 + 1/2*p1^2/(K1 + m) + 1/2*p2^2/(K2 + m) + 1/2*p3^2/(K3 + m)
+
+REFERENCES:
+
+- H. Lamb, *Hydrodynamics*, 6th ed., Cambridge, 1932, §§124--127.
+- A. V. Borisov, I. S. Mamaev, *Rigid Body Dynamics*, De Gruyter, 2018,
+  §§1.2, 1.7.
 """
 from sage.matrix.constructor import matrix, block_matrix, identity_matrix
 from sage.modules.free_module_element import vector

@@ -45,6 +45,15 @@ Euler tops (Borisov & Mamaev, *Rigid Body Dynamics*, §2.1)::
     dimension 1 if A1 - A3 == 0, c == 0: [M2]
     dimension 1 if A2 - A3 == 0, c == 0: [M1]
     dimension 3 if A1 - A3 == 0, A2 - A3 == 0, c == 0: [M1, M2, M3]
+
+REFERENCES:
+
+- A. V. Borisov, I. S. Mamaev, *Rigid Body Dynamics*, De Gruyter, 2018,
+  ch. 2 (the integrable cases of Euler, Lagrange, Kovalevskaya, Clebsch).
+- V. V. Kozlov, *Symmetries, Topology and Resonances in Hamiltonian
+  Mechanics*, Springer, 1996, ch. 2 (polynomial integrals).
+- S. Kovalevskaya, Sur le problème de la rotation d'un corps solide autour
+  d'un point fixe, *Acta Math.* 12 (1889) 177--232.
 """
 from sage.arith.misc import binomial
 from sage.matrix.constructor import matrix
@@ -243,7 +252,23 @@ class IntegralJump(SageObject):
     component of the rank-drop locus of the coefficient matrix. Created by
     :func:`polynomial_integrals` with ``conditions=True``.
 
-    EXAMPLES: see :mod:`sage_dynsym.lie.integrals`.
+    EXAMPLES: Lagrange's case in a family of heavy tops::
+
+        sage: from sage_dynsym.lie.algebras import lie_algebra
+        sage: from sage_dynsym.lie.integrals import polynomial_integrals
+        sage: E = lie_algebra('e3'); M1, M2, M3, g1, g2, g3 = E.variables()
+        sage: A1, A2, A3, c = var('A1 A2 A3 c')
+        sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3) + c*g3
+        sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True)
+        sage: j = jumps[0]; j
+        dimension 1 if A1 - A2 == 0: [M3]
+        sage: j.conditions(), j.dimension(), j.generic_dimension()
+        ([A1 - A2 == 0], 1, 0)
+        sage: j.ideal()
+        Ideal (A1 - A2) of Multivariate Polynomial Ring in A1, A2, A3, c over Rational Field
+        sage: j.substitution(), j.integrals()
+        ({A1: A2}, [M3])
+        sage: TestSuite(j).run(skip=['_test_pickling'])
     """
 
     def __init__(self, search, prime, dimension, degree, new_only, generic):
@@ -262,7 +287,7 @@ class IntegralJump(SageObject):
         return f"dimension {self._dimension} if {conds}{tail}"
 
     def ideal(self):
-        r"""The prime ideal of the family, in the ring of the parameters."""
+        r"""The prime ideal of the family (lexicographic order), in the ring of the parameters."""
         return self._prime
 
     def conditions(self):

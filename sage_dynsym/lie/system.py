@@ -57,6 +57,13 @@ Methods*, §30)::
     {M1: 0, M2: 0, M3: M3, gamma1: 0, gamma2: 0, gamma3: 1}
     sage: s.stability_region(positive=[A, C, m, g, z0])
     [[4*A*g*m*z0 - M3^2 < 0]]
+
+REFERENCES:
+
+- V. I. Arnold, *Mathematical Methods of Classical Mechanics*, 2nd ed.,
+  Springer, 1989, §§28--30 and Appendix 2.
+- D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997,
+  ch. 5.
 """
 import re
 
@@ -156,8 +163,8 @@ class LiePoissonSystem(SageObject):
                              entry="hamiltonian") from None
         self._name = name
         names = {str(v) for v in x}
-        where = (f"{self._structure.name()} ({', '.join(names_of(x))})"
-                 if self._structure.name() else f"the system ({', '.join(names_of(x))})")
+        where = (f"{self._structure.name()} ({', '.join(_names_of(x))})"
+                 if self._structure.name() else f"the system ({', '.join(_names_of(x))})")
         others = sorted({a for a in self._H.variables() if str(a) not in names}, key=str)
         if parameters is not None:
             self._parameters = [SR(a) for a in parameters]
@@ -167,7 +174,7 @@ class LiePoissonSystem(SageObject):
                     what = "the Hamiltonian" if a in others else "the Poisson matrix"
                     raise ModelError(
                         f"undeclared symbol {a}: {what} may use the variables "
-                        f"{', '.join(names_of(x))} and the parameters "
+                        f"{', '.join(_names_of(x))} and the parameters "
                         f"{', '.join(sorted(declared)) or '(none declared)'}",
                         entry="hamiltonian" if a in others else "algebra")
         else:
@@ -533,5 +540,5 @@ class LiePoissonSystem(SageObject):
         return rhs
 
 
-def names_of(symbols):
+def _names_of(symbols):
     return [str(s) for s in symbols]
