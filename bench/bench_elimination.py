@@ -62,7 +62,7 @@ def in_subprocess(job, timeout):
 
 def run_sage():
     from sage.all import SR
-    from sage_dynsym.expressions import ExpressionParser
+    from sage_dynsym.io.expressions import ExpressionParser
     from sage_dynsym.analysis.elimination import equilibrium_family
     P = ExpressionParser(NAMES.split())
     rhs = [P.parse(e.replace('**', '^')) for e in system_strings()]

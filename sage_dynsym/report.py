@@ -53,11 +53,13 @@ SECTIONS = {
     'lyapunov': "dP/dt along the state equations of a circuit",
     'stability': "stability of the free linear circuit (characteristic polynomial, "
                  "Lienard-Chipart conditions)",
+    'casimirs': "the Casimir functions of a Lie-Poisson system",
+    'integrals': "polynomial first integrals of degree <= 2 of a Lie-Poisson system",
 }
 
 #: The sections that are analysis (left out by ``analysis=False``, the
 #: command line's ``--no-analysis``).
-ANALYSIS_SECTIONS = ('stationary', 'lyapunov', 'stability')
+ANALYSIS_SECTIONS = ('stationary', 'lyapunov', 'stability', 'integrals')
 
 #: Term counts beyond this are reported as this (they are over any budget).
 _TERMS_CAP = 10**30
@@ -243,7 +245,7 @@ def lagrangian_estimate(system):
         ....:                                               mass=(m + k)^3)], [x]))
         16
     """
-    from .force_functions import UniformGravity, NewtonianField
+    from .mechanics.force_functions import UniformGravity, NewtonianField
     depth, data = [0], []
     for k, body in enumerate(system.bodies(), 1):
         turning = sum(1 for _, angle in body.rotations() if SR(angle).variables())
@@ -599,7 +601,7 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
 
     INPUT:
 
-    - ``model`` -- a :class:`~sage_dynsym.mechanical_system.MechanicalSystem`
+    - ``model`` -- a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`
       or a :class:`~sage_dynsym.circuits.circuit.Circuit`
     - ``sections`` -- (default: all) the keys of :data:`SECTIONS` to print
       (the sections that do not apply to the model are ignored)
@@ -657,14 +659,12 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
         sage: report(42)
         Traceback (most recent call last):
         ...
-        DynSymError: cannot report on Integer: expected a mechanical system or a circuit
+        DynSymError: cannot report on Integer: expected a model (a mechanical system or a circuit)
         sage: report(C, sections=['colour'])
         Traceback (most recent call last):
         ...
-        DynSymError: unknown report section 'colour'; the sections are: lagrangian, equations, routh, stationary, hamiltonian, mixed_potential, state_equations, lyapunov, stability
+        DynSymError: unknown report section 'colour'; the sections are: lagrangian, equations, routh, stationary, hamiltonian, mixed_potential, state_equations, lyapunov, stability, casimirs, integrals
     """
-    from .mechanical_system import MechanicalSystem
-    from .circuits import Circuit
     wanted = list(SECTIONS) if sections is None else list(sections)
     for key in wanted:
         if key not in SECTIONS:
@@ -673,11 +673,18 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
     if not analysis:
         wanted = [key for key in wanted if key not in ANALYSIS_SECTIONS]
     out = _Report(wanted, budget)
-    if isinstance(model, MechanicalSystem):
-        _mechanical(model, out)
-    elif isinstance(model, Circuit):
-        _circuit(model, out)
-    else:
-        raise DynSymError(f"cannot report on {type(model).__name__}: expected a mechanical "
-                          "system or a circuit")
+    renderer = _RENDERERS.get(getattr(model, 'kind', None))
+    if renderer is None:
+        raise DynSymError(f"cannot report on {type(model).__name__}: expected a model "
+                          "(a mechanical system or a circuit)")
+    renderer(model, out)
     return "\n".join(out.lines)
+
+
+def _lie_poisson(system, out):
+    from .lie.description import lie_report
+    out.lines.extend(lie_report(system, sections=out.wanted).split("\n"))
+
+
+#: How each kind of model is reported (by :attr:`~sage_dynsym.dynamics.model.Model.kind`).
+_RENDERERS = {'mechanical': _mechanical, 'circuit': _circuit, 'lie_poisson': _lie_poisson}

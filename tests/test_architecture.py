@@ -16,21 +16,18 @@ PACKAGE = Path(__file__).resolve().parent.parent / "sage_dynsym"
 
 #: From the bottom up. The first matching prefix gives a module's layer.
 LAYERS = [
-    ("foundation", ["sage_dynsym.errors", "sage_dynsym.symbols"]),
+    ("errors", ["sage_dynsym.errors"]),
+    ("symbols", ["sage_dynsym.symbols"]),
     ("input", ["sage_dynsym.io"]),
     ("algebra and analysis", ["sage_dynsym.analysis"]),
     ("characteristic functions and equations", ["sage_dynsym.dynamics"]),
     ("systems on Lie algebras", ["sage_dynsym.lie"]),
     ("models", ["sage_dynsym.mechanics", "sage_dynsym.circuits"]),
-    ("files and numerics at scale", ["sage_dynsym.description", "sage_dynsym.scale"]),
+    ("description files", ["sage_dynsym.description"]),
+    ("numerics at scale", ["sage_dynsym.scale"]),
     ("presentation", ["sage_dynsym.report", "sage_dynsym.interact"]),
     ("entry points", ["sage_dynsym.__main__", "sage_dynsym"]),
 ]
-
-
-#: Until the layered layout lands the structural checks are expected to fail
-#: (strict: the day they pass this marker must go).
-LAYOUT_PENDING = pytest.mark.xfail(strict=True, reason="layered layout not built yet")
 
 
 def module_name(path):
@@ -61,29 +58,31 @@ def package_of(name):
 
 
 def imports(name, path, known):
-    r"""The package modules that ``name`` imports (resolved)."""
+    r"""The package modules that ``name`` imports (resolved): ``from P
+    import x`` depends on the module ``P.x`` where there is one, else on
+    ``P`` itself (a package's face included)."""
     is_package = path.name == "__init__.py"
     base = name.split(".") if is_package else name.split(".")[:-1]
+
+    def resolve(t):
+        while t and t not in known:
+            t = t.rpartition(".")[0]
+        return t
+
     found = set()
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-        targets = []
         if isinstance(node, ast.Import):
-            targets = [a.name for a in node.names]
+            found |= {resolve(a.name) for a in node.names}
         elif isinstance(node, ast.ImportFrom):
             if node.level:
                 parent = base[:len(base) - node.level + 1] if node.level > 1 else base
                 stem = ".".join(parent + ([node.module] if node.module else []))
             else:
                 stem = node.module or ""
-            targets = [f"{stem}.{a.name}" for a in node.names] + [stem]
-        for t in targets:
-            while t and t not in known:
-                t = t.rpartition(".")[0]
-            if t and t.startswith("sage_dynsym") and t != name:
-                found.add(t)
-    # importing a.b.c implies a and a.b (their __init__ run): only the
-    # deepest module named counts as the dependency
-    return {t for t in found if not any(u != t and u.startswith(t + ".") for u in found)}
+            for a in node.names:
+                candidate = f"{stem}.{a.name}"
+                found.add(candidate if candidate in known else resolve(stem))
+    return {t for t in found if t and t.startswith("sage_dynsym") and t != name}
 
 
 def graph():
@@ -91,13 +90,11 @@ def graph():
     return {name: imports(name, path, known) for name, path in known.items()}
 
 
-@LAYOUT_PENDING
 def test_every_module_has_a_layer():
     missing = [name for name in modules() if layer_of(name) is None]
     assert not missing, f"modules outside every layer: {missing}"
 
 
-@LAYOUT_PENDING
 def test_imports_point_down():
     wrong = []
     for name, targets in graph().items():
@@ -111,7 +108,6 @@ def test_imports_point_down():
     assert not wrong, "imports that do not point down:\n" + "\n".join(sorted(wrong))
 
 
-@LAYOUT_PENDING
 def test_no_cycles():
     g = {k: {t for t in v if t != "sage_dynsym"} for k, v in graph().items()}
     state, stack, cycles = {}, [], []
@@ -133,7 +129,6 @@ def test_no_cycles():
     assert not cycles, "import cycles:\n" + "\n".join(" -> ".join(c) for c in cycles)
 
 
-@LAYOUT_PENDING
 def test_top_level_stays_small():
     # at most six modules beside the packages
     top = [p.name for p in PACKAGE.glob("*.py")]

@@ -24,7 +24,7 @@ from scipy.linalg import eig, null_space
 from sage.all import SR, Graph
 from sage_dynsym.circuits import Circuit
 from sage_dynsym.errors import CircuitError
-from sage_dynsym.expressions import velocity, acceleration, t
+from sage_dynsym.symbols import velocity, acceleration, t
 
 
 # ----------------------------------------------------------------------------

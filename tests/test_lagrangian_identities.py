@@ -7,7 +7,7 @@ import pytest
 from sage.all import SR, var, QQ, vector
 
 from sage_dynsym import Lagrangian, MechanicalSystem, RigidBody, UniformGravity
-from sage_dynsym.expressions import velocity
+from sage_dynsym.symbols import velocity
 
 
 def numeric(expr, values):

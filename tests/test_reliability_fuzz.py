@@ -22,7 +22,7 @@ from hypothesis import HealthCheck, event, given, settings, strategies as st
 
 from sage.all import SR
 from sage_dynsym import load, DynSymError
-from sage_dynsym.expressions import ExpressionParser
+from sage_dynsym.io.expressions import ExpressionParser
 from sage_dynsym.description import mechanical_system_from_dict
 from sage_dynsym.circuits.description import circuit_from_dict
 

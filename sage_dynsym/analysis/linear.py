@@ -419,7 +419,7 @@ class LinearSystem(SageObject):
             sage: LinearSystem([x], J=[[a]]).equations()
             [-a*x + dx]
         """
-        from ..expressions import velocity, acceleration
+        from ..symbols import velocity, acceleration
         z = matrix(SR, [[v] for v in self._variables])
         dz = matrix(SR, [[velocity(v)] for v in self._variables])
         if self._order == 1:
@@ -542,7 +542,7 @@ class LinearSystem(SageObject):
             sage: Ls.linear_integrals()
             [dx + dy]
         """
-        from ..expressions import velocity
+        from ..symbols import velocity
         A = self.jacobian()
         xs = list(self._variables)
         if self._order == 2:
@@ -566,7 +566,7 @@ class LinearSystem(SageObject):
             sage: LinearSystem([x], M=[[m]], S=[[0]], W=[[k]]).quadratic_integrals()
             [dx^2*m/k + x^2]
         """
-        from ..expressions import velocity
+        from ..symbols import velocity
         A = self.jacobian()
         N = A.nrows()
         xs = list(self._variables)
@@ -607,9 +607,9 @@ def linearize(system, at, variables=None, lhs_matrix=None):
 
     - ``system`` -- either a list of right-hand sides `F` of a first-order
       system `B\dot x = F(x)`, or a characteristic-function object: a
-      :class:`~sage_dynsym.lagrangian.Lagrangian` (also a Routh function:
+      :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian` (also a Routh function:
       linearization in the positional coordinates, cyclic momenta are
-      parameters) or a :class:`~sage_dynsym.hamiltonian.Hamiltonian`
+      parameters) or a :class:`~sage_dynsym.dynamics.hamiltonian.Hamiltonian`
     - ``at`` -- dict ``{variable: value}`` giving the point (coordinates for
       a Lagrangian; velocities are zero; missing coordinates are an error)
     - ``variables`` -- the list `x` (first-order systems; for a Hamiltonian

@@ -102,7 +102,7 @@ from sage.symbolic.function_factory import function as symbolic_function
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..expressions import velocity
+from ..symbols import velocity
 from .conditions import (positive_conditions, positive_conditions_all, conjunction,
                          simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
@@ -954,8 +954,8 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
 
     INPUT:
 
-    - ``routh_or_lagrangian`` -- a :class:`~sage_dynsym.routh.RouthFunction`
-      or a :class:`~sage_dynsym.lagrangian.Lagrangian`
+    - ``routh_or_lagrangian`` -- a :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`
+      or a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
     - ``solve_for`` -- (optional) the unknowns, e.g. the cyclic momenta
       (then the coordinates are parameters: a family of motions
       parametrised by them); default: the positional coordinates
@@ -1050,7 +1050,7 @@ class ModifiedRouthLyapunov(SageObject):
 
     INPUT:
 
-    - ``routh`` -- a :class:`~sage_dynsym.routh.RouthFunction` with one
+    - ``routh`` -- a :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` with one
       positional coordinate
     - ``momentum`` -- (default: the first cyclic momentum) the constant `c`
     - ``f`` -- (default: ``function('f')``) the unknown function

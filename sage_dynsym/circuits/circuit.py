@@ -39,19 +39,17 @@ The node-potential method gives Kirchhoff's current law instead::
     sage: Ln.lagrange_equations()
     [-(E1 - dphi2)/R1 + (phi2 - phi3)/L1, C1*ddphi3 - (phi2 - phi3)/L1]
 """
-import re
 
 from sage.misc.cachefunc import cached_method
 from sage.structure.sage_object import SageObject
 
 from ..errors import CircuitError
+from ..symbols import CIRCUIT_VARIABLES
+from ..dynamics.model import Model
 from .elements import parse_entries
 from .graph import CircuitGraph
 
-RESERVED = re.compile(r'^([iut]|[iuq]\d+|phi\w*)$')
-
-
-class Circuit(SageObject):
+class Circuit(Model):
     r"""
     An electrical circuit given as a list of branches.
 
@@ -106,7 +104,7 @@ class Circuit(SageObject):
             if b.name in seen:
                 raise CircuitError(f"duplicate element name {b.name!r}",
                                    entry=f"branches[{b.index}]")
-            if RESERVED.match(b.name):
+            if CIRCUIT_VARIABLES.match(b.name):
                 raise CircuitError(f"the name {b.name!r} is reserved for variables "
                                    "(i, u, t, i<k>, u<k>, q<k>, phi...)",
                                    entry=f"branches[{b.index}]")
@@ -140,6 +138,159 @@ class Circuit(SageObject):
 
     def __hash__(self):
         return hash((self._branches, self._couplings))
+
+    # ------------------------------------------------------------------
+    # the model interface
+
+    kind = 'circuit'
+
+    def equations(self):
+        r"""
+        The equations of motion: the state equations (8) (raises
+        :class:`~sage_dynsym.errors.CircuitError` for a circuit that has
+        no Brayton--Moser form).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('nonlinear_circuit.yaml')).equations()[0]
+            -u3 + u4 + u6
+        """
+        return self.state_equations()
+
+    def _is_linear(self):
+        return not self.elements('nonlinear_resistor')
+
+    def characteristic_functions(self):
+        r"""
+        The characteristic functions of the circuit: the mixed potential,
+        and for a linear circuit its loop and node Lagrangians (builders of
+        no argument).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: sorted(load(example_path('rlc_ladder.yaml')).characteristic_functions())
+            ['lagrangian', 'mixed_potential', 'node_lagrangian']
+        """
+        functions = {'mixed_potential': self.mixed_potential}
+        if self._is_linear():
+            functions['lagrangian'] = lambda: self.lagrangian(method="loop")
+            functions['node_lagrangian'] = lambda: self.lagrangian(method="node")
+        return functions
+
+    def to_dict(self):
+        r"""
+        The description mapping of the circuit (short form wherever the
+        element's value is its own symbol), the inverse of
+        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'L2'], [1, 2, 'f1'],
+            ....:     {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:     parameters=['M']).to_dict()
+            {'branches': [[1, 2, 'L1'],
+                          [2, 1, 'L2'],
+                          [1, 2, 'f1'],
+                          {'between': ['L1', 'L2'], 'kind': 'mutual', 'value': 'M'}],
+             'kind': 'circuit',
+             'parameters': ['M']}
+        """
+        from .elements import PREFIXES
+        out = {'kind': 'circuit'}
+        if self.name():
+            out['name'] = self.name()
+        if self.parameters():
+            out['parameters'] = list(self.parameters())
+        branches = []
+        for b in self.branches():
+            short = PREFIXES.get(b.name[0]) == b.kind and (
+                b.value is None if b.kind == 'nonlinear_resistor'
+                else b.value.is_symbol() and str(b.value) == b.name)
+            if short:
+                branches.append([b.tail, b.head, b.name])
+            else:
+                entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}
+                if b.value is not None:
+                    entry['value'] = str(b.value)
+                branches.append(entry)
+        for c in self.couplings():
+            branches.append({'kind': 'mutual', 'between': [c.first, c.second],
+                             'value': str(c.value)})
+        out['branches'] = branches
+        return out
+
+    def results(self):
+        r"""
+        The ``results:`` section of a saved description: the state
+        equations and the mixed potential (where the circuit has them) and
+        the loop Lagrangian of a linear circuit, as text and LaTeX.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: sorted(load(example_path('nonlinear_circuit.yaml')).results())
+            ['mixed_potential_latex', 'mixed_potential_text', 'state_equations',
+             'state_equations_latex', 'state_variables']
+        """
+        from sage.misc.latex import latex
+        results = {}
+        try:
+            equations = self.state_equations()
+        except CircuitError:
+            pass
+        else:
+            results['state_variables'] = [str(v) for v, _ in self.state_variables()]
+            results['state_equations'] = [str(e) for e in equations]
+            results['state_equations_latex'] = [str(latex(e)) for e in equations]
+            results['mixed_potential_text'] = str(self.mixed_potential())
+            results['mixed_potential_latex'] = str(latex(self.mixed_potential()))
+        if self._is_linear():
+            try:
+                L = self.lagrangian(method="loop")
+            except CircuitError:
+                pass
+            else:
+                results['lagrangian'] = str(L.expr())
+                results['lagrangian_latex'] = str(latex(L.expr()))
+                results['lagrange_equations'] = [str(e) for e in L.lagrange_equations()]
+        return results
+
+    def result_symbols(self, results):
+        r"""
+        The names a ``results:`` section of this circuit may use: the
+        parameters, element values, state variables, and the loop
+        coordinates with their derivatives; the characteristics of nonlinear
+        resistors as functions. The section's state variables must be the
+        circuit's.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: C = load(example_path('nonlinear_circuit.yaml'))
+            sage: symbols, functions = C.result_symbols({})
+            sage: 'L1' in symbols, functions
+            (True, ['f1', 'f4', 'f2', 'f3'])
+        """
+        from ..errors import DescriptionError, brief
+        from ..symbols import velocity, acceleration, momentum
+        q = [str(v) for v in self.lagrangian().coordinates()] if 'lagrangian' in results else []
+        states = results.get('state_variables', [])
+        expected = [str(v) for v, _ in self.state_variables()] if states else []
+        if states != expected:
+            raise DescriptionError(f"expected the state variables {expected} of the circuit, "
+                                   f"got {brief(states)}", entry='results.state_variables')
+        symbols = list(self.parameters()) + states
+        symbols += [b.name for b in self.branches() if b.kind != 'nonlinear_resistor']
+        symbols += q + [str(velocity(v)) for v in q] + [str(acceleration(v)) for v in q]
+        symbols += [str(momentum(v)) for v in q]
+        return symbols, self.elements('nonlinear_resistor')
 
     def _graph(self):
         return self._cgraph
@@ -273,7 +424,7 @@ class Circuit(SageObject):
           ``"node"`` (node flux linkages ``phi<node>``)
         - ``ground`` -- (node method) the grounded node
 
-        OUTPUT: a :class:`~sage_dynsym.lagrangian.Lagrangian`
+        OUTPUT: a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
 
         EXAMPLES:
 
@@ -299,7 +450,7 @@ class Circuit(SageObject):
             ...
             CircuitError: unknown method 'mesh'; expected "loop" or "node"
         """
-        from ..lagrangian import Lagrangian
+        from ..dynamics.lagrangian import Lagrangian
         if method == "loop":
             A = self.loop_analysis()
         elif method == "node":

@@ -14,7 +14,7 @@ with the keys
 The generic ``sage_dynsym.load`` reads the YAML file safely and hands the
 mapping to :func:`circuit_from_dict`; ``save`` writes
 :func:`circuit_to_dict` plus a ``results:`` section. Expressions are parsed
-by :class:`~sage_dynsym.expressions.ExpressionParser`, never evaluated.
+by :class:`~sage_dynsym.io.expressions.ExpressionParser`, never evaluated.
 
 EXAMPLES::
 
@@ -33,7 +33,8 @@ EXAMPLES::
     CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
 """
 from ..errors import DescriptionError, DynSymError, brief
-from ..names import check_name
+from ..io.fields import title, MAX_PARAMETERS
+from ..symbols import check_name
 from .circuit import Circuit
 from .elements import PREFIXES
 
@@ -89,7 +90,6 @@ def circuit_from_dict(data, source=None):
         ...
         CircuitError: x.yaml: branches[1].value: a capacitance of 0 is an open circuit: remove the branch instead
     """
-    from ..description import title, MAX_PARAMETERS
     if not isinstance(data, dict):
         raise DescriptionError(f"a circuit description is a mapping, got {type(data).__name__}",
                                source=source)
@@ -134,41 +134,15 @@ def circuit_from_dict(data, source=None):
 
 def circuit_to_dict(circuit):
     r"""
-    The description mapping of ``circuit`` (short form wherever the
-    element's value is its own symbol), inverse of :func:`circuit_from_dict`.
+    The description mapping of ``circuit`` (inverse of
+    :func:`circuit_from_dict`): :meth:`Circuit.to_dict
+    <sage_dynsym.circuits.circuit.Circuit.to_dict>`.
 
     EXAMPLES::
 
         sage: from sage_dynsym.circuits import Circuit
         sage: from sage_dynsym.circuits.description import circuit_to_dict
-        sage: circuit_to_dict(Circuit([[1, 2, 'L1'], [2, 1, 'L2'], [1, 2, 'f1'],
-        ....:     {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}], parameters=['M']))
-        {'branches': [[1, 2, 'L1'],
-                      [2, 1, 'L2'],
-                      [1, 2, 'f1'],
-                      {'between': ['L1', 'L2'], 'kind': 'mutual', 'value': 'M'}],
-         'kind': 'circuit',
-         'parameters': ['M']}
+        sage: circuit_to_dict(Circuit([[1, 2, 'L1'], [2, 1, 'R1']]))
+        {'branches': [[1, 2, 'L1'], [2, 1, 'R1']], 'kind': 'circuit'}
     """
-    out = {'kind': 'circuit'}
-    if circuit.name():
-        out['name'] = circuit.name()
-    if circuit.parameters():
-        out['parameters'] = list(circuit.parameters())
-    branches = []
-    for b in circuit.branches():
-        short = PREFIXES.get(b.name[0]) == b.kind and (
-            b.value is None if b.kind == 'nonlinear_resistor'
-            else b.value.is_symbol() and str(b.value) == b.name)
-        if short:
-            branches.append([b.tail, b.head, b.name])
-        else:
-            entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}
-            if b.value is not None:
-                entry['value'] = str(b.value)
-            branches.append(entry)
-    for c in circuit.couplings():
-        branches.append({'kind': 'mutual', 'between': [c.first, c.second],
-                         'value': str(c.value)})
-    out['branches'] = branches
-    return out
+    return circuit.to_dict()

@@ -58,8 +58,9 @@ from sage.symbolic.ring import SR
 from sage.rings.integer import Integer
 
 from ..errors import CircuitError, ExpressionError, brief
-from ..expressions import ExpressionParser
-from ..names import check_names, check_name, MAX_NAME_LENGTH
+from ..symbols import CIRCUIT_VARIABLES
+from ..io.expressions import ExpressionParser
+from ..symbols import check_names, check_name, MAX_NAME_LENGTH
 
 #: element kinds, keyed by the first letter of a short-form name
 PREFIXES = {'R': 'resistor', 'L': 'inductor', 'C': 'capacitor',
@@ -114,7 +115,7 @@ def own_variable(kind):
 def _check_node(node, entry):
     r"""
     A node: a number `0 \le n \le` :data:`MAX_NODE` or a name (an
-    identifier of at most :data:`~sage_dynsym.names.MAX_NAME_LENGTH`
+    identifier of at most :data:`~sage_dynsym.symbols.MAX_NAME_LENGTH`
     characters); the node potential of the node method is ``phi<n>``.
 
     TESTS::
@@ -388,7 +389,6 @@ def _check_declared(entries, parameters, entry_prefix):
     # parameters and element names against the reserved names and each
     # other; element names of the circuit's own variables (i1, q1, phi2)
     # are left to Circuit, which says so in its words
-    from .circuit import RESERVED
     declared = [(check_name(str(p), f"parameters[{i}]", CircuitError), 'parameter',
                  f"parameters[{i}]") for i, p in enumerate(parameters)]
     for k, item in enumerate(entries):
@@ -400,7 +400,7 @@ def _check_declared(entries, parameters, entry_prefix):
             if name is None and isinstance(item.get('value'), str) and \
                     item['value'].isidentifier():
                 name = item['value']
-        if isinstance(name, str) and name.isidentifier() and not RESERVED.match(name):
+        if isinstance(name, str) and name.isidentifier() and not CIRCUIT_VARIABLES.match(name):
             declared.append((name, 'element', f"{entry_prefix}[{k}]"))
     elements = set()
     for name, use, entry in declared:

@@ -46,7 +46,7 @@ from sage.symbolic.ring import SR
 from sage.symbolic.integration.integral import definite_integral
 
 from ..errors import CircuitError
-from ..expressions import velocity, t
+from ..symbols import velocity, t
 from .graph import UnionFind
 
 
@@ -57,7 +57,7 @@ def source_integral(value):
     EXAMPLES::
 
         sage: from sage_dynsym.circuits.linear import source_integral
-        sage: from sage_dynsym.expressions import t
+        sage: from sage_dynsym.symbols import t
         sage: E, w = var('E w')
         sage: source_integral(E), source_integral(E*cos(w*t))
         (E*t, E*sin(t*w)/w)
@@ -96,7 +96,92 @@ def _quadratic(rows, values, n, weight):
     return M.dense_matrix()
 
 
-class LoopAnalysis:
+class _BranchAnalysis:
+    r"""
+    What the loop and the node descriptions of a linear circuit share: the
+    coordinates, the branch-to-coordinate incidence ``_rows`` (one dict
+    ``{coordinate index: sign}`` per branch), the energies and the
+    generalized forces, assembled branch by branch by the subclasses.
+    """
+
+    def coordinates(self):
+        r"""The coordinates: loop charges ``q1, q2, ...`` (loop method) or
+        node flux linkages ``phi<node>`` (node method, one per node group,
+        ground excluded).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']])
+            sage: C.loop_analysis().coordinates(), C.node_analysis().coordinates()
+            ([q1, q2], [phi2, phi3])
+        """
+        return list(self._coordinates)
+
+    def _matrix(self, kind, weight):
+        sel = [p for p, k in enumerate(self._kinds) if k == kind]
+        return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
+                          len(self._coordinates), weight)
+
+    def source_vector(self):
+        r"""The generalized forces of the sources: loop electromotive forces
+        `Q_k = \sum \pm E` (loop method), or the source currents injected
+        into each node group (node method).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']])
+            sage: C.loop_analysis().source_vector(), C.node_analysis().source_vector()
+            ([E1, 0], [0, I1])
+        """
+        return list(self._forces)
+
+    def kinetic_energy(self):
+        r"""The kinetic energy `T`: magnetic (loop method) or electric
+        (node method).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']])
+            sage: C.loop_analysis().kinetic_energy(), C.node_analysis().kinetic_energy()
+            (1/2*L1*dq1^2, 1/2*C1*dphi3^2)
+        """
+        return self._T
+
+    def potential_energy(self):
+        r"""The potential energy `\Pi`: electric (loop method) or magnetic
+        (node method).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']])
+            sage: C.loop_analysis().potential_energy(), C.node_analysis().potential_energy()
+            (1/2*(I1*t + q1 - q2)^2/C1, 1/2*(phi2 - phi3)^2/L1)
+        """
+        return self._Pi
+
+    def dissipation(self):
+        r"""The Rayleigh function `R`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'R2'], [0, 3, 'I1']])
+            sage: C.loop_analysis().dissipation(), C.node_analysis().dissipation()
+            (1/2*R1*dq1^2 + 1/2*R2*dq2^2, 1/2*(E1 - dphi2)^2/R1 + 1/2*dphi3^2/R2)
+        """
+        return self._R
+
+
+class LoopAnalysis(_BranchAnalysis):
     r"""
     Loop-current description of a linear circuit (see the module
     documentation). Built by
@@ -156,19 +241,6 @@ class LoopAnalysis:
         self._br, self._kinds, self._circuit = br, kinds, circuit
         self._pos_of = pos_of
 
-    def coordinates(self):
-        r"""The loop charges ``q1, q2, ...``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
-            sage: A.coordinates()
-            [q1, q2]
-        """
-        return list(self._coordinates)
-
     def loops(self):
         r"""
         The loops of the coordinates, each a list of triples
@@ -184,11 +256,6 @@ class LoopAnalysis:
         """
         return [[(b.tail, b.head, b.name) if s > 0 else (b.head, b.tail, b.name)
                  for b, s in loop] for loop in self._loops]
-
-    def _matrix(self, kind, weight):
-        sel = [p for p, k in enumerate(self._kinds) if k == kind]
-        return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
-                          len(self._coordinates), weight)
 
     def inductance_matrix(self):
         r"""The loop inductance matrix `L_{ij}` (mutual inductances included).
@@ -239,60 +306,7 @@ class LoopAnalysis:
         """
         return self._matrix('resistor', lambda v: v)
 
-    def source_vector(self):
-        r"""The loop electromotive forces `Q_k = \sum \pm E` (generalized forces).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
-            sage: A.source_vector()
-            [E1, 0]
-        """
-        return list(self._forces)
-
-    def kinetic_energy(self):
-        r"""The magnetic energy `T`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
-            sage: A.kinetic_energy()
-            1/2*L1*dq1^2
-        """
-        return self._T
-
-    def potential_energy(self):
-        r"""The electric energy `\Pi`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
-            sage: A.potential_energy()
-            1/2*(I1*t + q1 - q2)^2/C1
-        """
-        return self._Pi
-
-    def dissipation(self):
-        r"""The Rayleigh function `R`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).loop_analysis()
-            sage: A.dissipation()
-            1/2*R1*dq1^2 + 1/2*R2*dq2^2
-        """
-        return self._R
-
-
-class NodeAnalysis:
+class NodeAnalysis(_BranchAnalysis):
     r"""
     Node-potential description of a linear circuit (see the module
     documentation). Built by
@@ -410,19 +424,6 @@ class NodeAnalysis:
         """
         return self._ground
 
-    def coordinates(self):
-        r"""The node flux linkages ``phi<node>`` (one per node group, ground excluded).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
-            sage: A.coordinates()
-            [phi2, phi3]
-        """
-        return list(self._coordinates)
-
     def nodes(self):
         r"""The nodes whose flux linkages are the coordinates, in the same order.
 
@@ -435,11 +436,6 @@ class NodeAnalysis:
             [2, 3]
         """
         return list(self._reps)
-
-    def _matrix(self, kind, weight):
-        sel = [p for p, k in enumerate(self._kinds) if k == kind]
-        return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
-                          len(self._coordinates), weight)
 
     def capacitance_matrix(self):
         r"""The node capacitance matrix `C_{ij}`.
@@ -491,54 +487,3 @@ class NodeAnalysis:
                             M[k, l] += sk * sl * G[a, b]
         return M
 
-    def source_vector(self):
-        r"""The source currents injected into each node group (generalized forces).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
-            sage: A.source_vector()
-            [0, I1]
-        """
-        return list(self._forces)
-
-    def kinetic_energy(self):
-        r"""The electric energy `T` (in the node potentials).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
-            sage: A.kinetic_energy()
-            1/2*C1*dphi3^2
-        """
-        return self._T
-
-    def potential_energy(self):
-        r"""The magnetic energy `\Pi` (in the node flux linkages).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
-            sage: A.potential_energy()
-            1/2*(phi2 - phi3)^2/L1
-        """
-        return self._Pi
-
-    def dissipation(self):
-        r"""The Rayleigh function `R`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
-            ....:              [3, 0, 'R2'], [0, 3, 'I1']]).node_analysis()
-            sage: A.dissipation()
-            1/2*(E1 - dphi2)^2/R1 + 1/2*dphi3^2/R2
-        """
-        return self._R

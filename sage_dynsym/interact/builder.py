@@ -195,11 +195,8 @@ def model_from_description(data, source="system builder"):
         sage: model_from_description({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
         Circuit with 2 branches on 2 nodes
     """
-    if data.get('kind') == 'circuit':
-        from ..circuits.description import circuit_from_dict
-        return circuit_from_dict(data, source=source)
-    from ..description import mechanical_system_from_dict
-    return mechanical_system_from_dict(data, source=source)
+    from ..description import model_from_dict
+    return model_from_dict(dict(data, kind=data.get('kind', 'mechanical')), source=source)
 
 
 _BODY_FIELDS = [('name', 'name'), ('parent', 'parent'), ('rotations', 'rotations'),

@@ -44,8 +44,12 @@ CIRCUIT_FORMS = ['Brayton-Moser', 'Lagrange (loop)', 'Lagrange (node)', 'Hamilto
 
 
 def _is_circuit(model):
-    from ..circuits import Circuit
-    return isinstance(model, Circuit)
+    return getattr(model, 'kind', None) == 'circuit'
+
+
+def _is_characteristic_function(model):
+    # a Lagrangian (or Routh function) given directly, not a model
+    return getattr(model, 'kind', None) is None and hasattr(model, 'lagrange_equations')
 
 
 def available_forms(model):
@@ -80,7 +84,7 @@ def derive(model, form, cyclic=()):
     INPUT:
 
     - ``model`` -- a mechanical system, a circuit or a
-      :class:`~sage_dynsym.lagrangian.Lagrangian`
+      :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
     - ``form`` -- one of :func:`available_forms` (a Lagrangian accepts the
       mechanical forms)
     - ``cyclic`` -- (default: ``()``) the cyclic coordinates for the Routh
@@ -114,15 +118,14 @@ def derive(model, form, cyclic=()):
         ...
         ModelError: unknown form 'Routh': expected one of Brayton-Moser, Lagrange (loop), Lagrange (node), Hamilton (loop)
     """
-    from ..lagrangian import Lagrangian
-    forms = MECHANICAL_FORMS if isinstance(model, Lagrangian) else available_forms(model)
+    forms = MECHANICAL_FORMS if _is_characteristic_function(model) else available_forms(model)
     if form not in forms:
         raise ModelError(f"unknown form {form!r}: expected one of {', '.join(forms)}")
     if form == 'Brayton-Moser':
         rows = [(f"{latex(SR.var(element))} \\frac{{d {latex(v)}}}{{dt}}", e)
                 for (v, element), e in zip(model.state_variables(), model.state_equations())]
         return Derivation(form, ('P', model.mixed_potential()), rows, None)
-    L = model if isinstance(model, Lagrangian) else _lagrangian(model, form)
+    L = model if _is_characteristic_function(model) else _lagrangian(model, form)
     if form.startswith('Lagrange'):
         return Derivation(form, ('L', L.expr()),
                           _zero_equations(L.coordinates(), L.lagrange_equations()), None)
@@ -158,7 +161,7 @@ def derivation_latex(derivation):
 
         sage: from sage_dynsym import Lagrangian
         sage: from sage_dynsym.interact.forms import derive, derivation_latex
-        sage: from sage_dynsym.expressions import velocity
+        sage: from sage_dynsym.symbols import velocity
         sage: x, m, k = var('x m k'); dx = velocity(x)
         sage: print(derivation_latex(derive(Lagrangian(m*dx^2/2 - k*x^2/2, [x]), 'Lagrange')))
         \begin{aligned}

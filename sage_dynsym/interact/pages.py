@@ -46,15 +46,14 @@ def equations_explorer(model):
     import ipywidgets as W
     from IPython.display import display, Math
     from sage.repl.ipython_kernel.interact import sage_interactive
-    from .forms import available_forms, derive, derivation_latex
-    from ..lagrangian import Lagrangian
-    from ..circuits import Circuit
-    forms = available_forms(model) if not isinstance(model, Lagrangian) \
-        else ['Lagrange', 'Routh', 'Hamilton']
-    if isinstance(model, Circuit):
+    from .forms import (available_forms, derive, derivation_latex, _is_circuit,
+                        _is_characteristic_function, MECHANICAL_FORMS)
+    direct = _is_characteristic_function(model)
+    forms = MECHANICAL_FORMS if direct else available_forms(model)
+    if _is_circuit(model):
         coordinates = []
     else:
-        L = model if isinstance(model, Lagrangian) else model.lagrangian()
+        L = model if direct else model.lagrangian()
         coordinates = [str(q) for q in L.coordinates()]
         cyclic = [str(q) for q in L.cyclic_coordinates()]
     name = getattr(model, 'name', lambda: None)() or 'the model'

@@ -206,39 +206,22 @@ def _from_dict(data, source):
 def lie_poisson_to_dict(system):
     r"""
     The description mapping of a Lie--Poisson system (inverse of
-    :func:`lie_poisson_from_dict`; expressions as text).
+    :func:`lie_poisson_from_dict`): :meth:`LiePoissonSystem.to_dict
+    <sage_dynsym.lie.system.LiePoissonSystem.to_dict>`.
 
     EXAMPLES::
 
         sage: from sage_dynsym.lie.description import lie_poisson_to_dict, lie_poisson_from_dict
         sage: from sage_dynsym.lie.system import LiePoissonSystem
         sage: M1, A = var('M1 A')
-        sage: d = lie_poisson_to_dict(LiePoissonSystem('so3', M1^2/A, positive=[A], name='top')); d
-        {'algebra': 'so3',
-         'hamiltonian': 'M1^2/A',
-         'kind': 'lie_poisson',
-         'name': 'top',
-         'parameters': ['A'],
-         'positive': ['A'],
-         'variables': ['M1', 'M2', 'M3']}
+        sage: d = lie_poisson_to_dict(LiePoissonSystem('so3', M1^2/A, positive=[A], name='top'))
         sage: lie_poisson_from_dict(d)
         Lie-Poisson system 'top' on so3 (M1, M2, M3) with H = M1^2/A
         sage: x, y = var('x y')
         sage: lie_poisson_to_dict(LiePoissonSystem([[0, x], [-x, 0]], y, variables=[x, y]))['algebra']
         {'poisson_matrix': [['0', 'x'], ['-x', '0']]}
     """
-    structure = system.structure()
-    algebra = structure.name() or {'poisson_matrix': [[str(c) for c in row]
-                                                      for row in structure.matrix().rows()]}
-    data = {'kind': 'lie_poisson'}
-    if system.name():
-        data['name'] = system.name()
-    data.update({'algebra': algebra, 'variables': [str(x) for x in system.variables()],
-                 'parameters': [str(a) for a in system.parameters()]})
-    if system.positive_parameters():
-        data['positive'] = [str(a) for a in system.positive_parameters()]
-    data['hamiltonian'] = str(system.hamiltonian())
-    return data
+    return system.to_dict()
 
 
 def _algebra(spec, variables, parser, source):

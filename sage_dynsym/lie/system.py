@@ -74,6 +74,7 @@ from sage.symbolic.ring import SR
 
 from ..analysis import linearize as _linearize
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
+from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
 from .integrals import casimirs as _casimirs, polynomial_integrals as _polynomial_integrals
@@ -84,7 +85,7 @@ _COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
 _DEFAULT_NAMES = {n for name in NAMED for n in _default_names(name)}
 
 
-class LiePoissonSystem(SageObject):
+class LiePoissonSystem(Model):
     r"""
     A Hamiltonian system `\dot x = J(x)\nabla H` on a Lie algebra (or any
     Poisson structure).
@@ -538,6 +539,91 @@ class LiePoissonSystem(SageObject):
         def rhs(t, state):
             return np.array([f(*state) for f in fs], dtype=float)
         return rhs
+
+    # ------------------------------------------------------------------
+    # the model interface
+
+    kind = 'lie_poisson'
+
+    def characteristic_functions(self):
+        r"""
+        The characteristic function of the system: its Hamiltonian (a
+        Lie--Poisson system has no Lagrangian).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: LiePoissonSystem('so3', M1^2/A).characteristic_functions()['hamiltonian']()
+            M1^2/A
+        """
+        return {'hamiltonian': self.hamiltonian}
+
+    def to_dict(self):
+        r"""
+        The description mapping of the system (``kind: lie_poisson``;
+        expressions as text), the inverse of
+        :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: LiePoissonSystem('so3', M1^2/A, positive=[A], name='top').to_dict()
+            {'algebra': 'so3',
+             'hamiltonian': 'M1^2/A',
+             'kind': 'lie_poisson',
+             'name': 'top',
+             'parameters': ['A'],
+             'positive': ['A'],
+             'variables': ['M1', 'M2', 'M3']}
+        """
+        structure = self.structure()
+        algebra = structure.name() or {'poisson_matrix': [[str(c) for c in row]
+                                                          for row in structure.matrix().rows()]}
+        data = {'kind': 'lie_poisson'}
+        if self.name():
+            data['name'] = self.name()
+        data.update({'algebra': algebra, 'variables': [str(x) for x in self.variables()],
+                     'parameters': [str(a) for a in self.parameters()]})
+        if self.positive_parameters():
+            data['positive'] = [str(a) for a in self.positive_parameters()]
+        data['hamiltonian'] = str(self.hamiltonian())
+        return data
+
+    def results(self):
+        r"""
+        The ``results:`` section of a saved description: the equations and
+        the Casimirs (of degree at most 2), as text and LaTeX.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: R = LiePoissonSystem('so3', M1^2/A).results(); R['casimirs']
+            ['M1^2 + M2^2 + M3^2']
+        """
+        from sage.misc.latex import latex
+        equations = self.equations()
+        casimirs = self.casimirs(degree=2)
+        return {'equations': [str(e) for e in equations],
+                'equations_latex': [str(latex(e)) for e in equations],
+                'casimirs': [str(c) for c in casimirs],
+                'casimirs_latex': [str(latex(c)) for c in casimirs]}
+
+    def result_symbols(self, results):
+        r"""
+        The names a ``results:`` section of this system may use: its
+        variables and parameters; no functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: LiePoissonSystem('so3', M1^2/A).result_symbols({})
+            (['M1', 'M2', 'M3', 'A'], ())
+        """
+        return [str(x) for x in self.variables()] + [str(a) for a in self.parameters()], ()
 
 
 def _names_of(symbols):

@@ -164,7 +164,7 @@ def main(argv=None):
 
 
 def _run(args):
-    from .. import load
+    from ..description import load
     from ..errors import DescriptionError
     from .maps import stability_map
     model = load(args.file)

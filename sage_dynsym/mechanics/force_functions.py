@@ -10,7 +10,7 @@ The force function `U` (minus the potential energy) enters the Lagrangian
   the gravity-gradient torques of satellite dynamics.
 
 A force function object is a description; the system evaluates it with its
-kinematics through :meth:`~sage_dynsym.mechanical_system.MechanicalSystem.force_function`.
+kinematics through :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.force_function`.
 
 EXAMPLES::
 
@@ -23,7 +23,7 @@ EXAMPLES::
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from .rigid_body import _vector3, _scalar
+from .rigid_body import as_vector3, as_scalar
 
 
 class UniformGravity(SageObject):
@@ -41,7 +41,7 @@ class UniformGravity(SageObject):
     """
 
     def __init__(self, acceleration):
-        self._g = _vector3(acceleration, "uniform_gravity")
+        self._g = as_vector3(acceleration, "uniform_gravity")
 
     def _repr_(self):
         return "uniform gravity field g = ({})".format(", ".join(map(str, self._g)))
@@ -125,9 +125,9 @@ class NewtonianField(SageObject):
     """
 
     def __init__(self, nu, distance, direction):
-        self._nu = _scalar(nu, "newtonian.nu")
-        self._r = _scalar(distance, "newtonian.r")
-        self._e = _vector3(direction, "newtonian.direction")
+        self._nu = as_scalar(nu, "newtonian.nu")
+        self._r = as_scalar(distance, "newtonian.r")
+        self._e = as_vector3(direction, "newtonian.direction")
 
     def _repr_(self):
         return "Newtonian central field nu = {}, distance {}, direction ({})".format(
@@ -199,7 +199,7 @@ def check_force_function(force_function, coordinates, entry="force_function"):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.force_functions import check_force_function, UniformGravity
+        sage: from sage_dynsym.mechanics.force_functions import check_force_function, UniformGravity
         sage: x, k, g = var('x k g')
         sage: check_force_function(-k*x^2/2, [x])
         sage: check_force_function(-k*var('dx')^2, [x])
@@ -211,8 +211,8 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         ...
         ModelError: force_function[0]: the force function U(q, t) cannot depend on the acceleration ddx; velocity-dependent forces belong in the dissipation function or the generalized forces
     """
-    from .errors import ModelError
-    from .expressions import velocity, acceleration
+    from ..errors import ModelError
+    from ..symbols import velocity, acceleration
     if force_function is None:
         return
     if isinstance(force_function, (list, tuple)):

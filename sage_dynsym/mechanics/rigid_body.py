@@ -7,7 +7,7 @@ from the parent's frame to the body's frame, the joint point `r^j_{0k}` (in
 the parent's axes), its relative velocity `v^j_{0k}`, the mass centre
 `r^k_{ck}` (in the body's axes), the mass and the inertia tensor about the
 joint point `O_k` (in the body's axes). It is a description only;
-kinematics and energies are computed by :class:`~sage_dynsym.mechanical_system.MechanicalSystem`.
+kinematics and energies are computed by :class:`~sage_dynsym.mechanics.system.MechanicalSystem`.
 
 EXAMPLES::
 
@@ -41,10 +41,24 @@ from sage.rings.real_mpfi import RealIntervalField
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from .errors import ModelError
+from ..errors import ModelError
 
 
-def _vector3(value, entry):
+def as_vector3(value, entry):
+    r"""
+    Three components as symbolic expressions (``None`` stays ``None``);
+    :class:`~sage_dynsym.errors.ModelError` naming ``entry`` otherwise.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.rigid_body import as_vector3
+        sage: as_vector3([0, 0, var('l')], 'mass_center')
+        (0, 0, l)
+        sage: as_vector3([1, 2], 'joint')
+        Traceback (most recent call last):
+        ...
+        ModelError: joint: expected a list of 3 components, got 2
+    """
     if value is None:
         return None
     try:
@@ -53,10 +67,20 @@ def _vector3(value, entry):
         raise ModelError(f"expected a list of 3 components, got {value!r}", entry=entry) from None
     if len(components) != 3:
         raise ModelError(f"expected a list of 3 components, got {len(components)}", entry=entry)
-    return tuple(_scalar(c, f"{entry}[{i}]") for i, c in enumerate(components))
+    return tuple(as_scalar(c, f"{entry}[{i}]") for i, c in enumerate(components))
 
 
-def _scalar(value, entry):
+def as_scalar(value, entry):
+    r"""
+    One component as a symbolic expression; :class:`~sage_dynsym.errors.ModelError`
+    naming ``entry`` otherwise.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.rigid_body import as_scalar
+        sage: as_scalar(1/2, 'mass')
+        1/2
+    """
     try:
         return SR(value)
     except (TypeError, ValueError):
@@ -240,11 +264,11 @@ class RigidBody(SageObject):
             if axis not in (1, 2, 3) or isinstance(axis, bool):
                 raise ModelError(f"rotation axis must be 1, 2 or 3 (x, y, z), got {axis!r}",
                                  entry=entry)
-            self._rotations.append((int(axis), _scalar(angle, entry)))
-        self._joint = _vector3(joint, f"{name}.joint")
-        self._velocity = _vector3(velocity, f"{name}.velocity")
-        self._mass_center = _vector3(mass_center, f"{name}.mass_center")
-        self._mass = _scalar(mass, f"{name}.mass")
+            self._rotations.append((int(axis), as_scalar(angle, entry)))
+        self._joint = as_vector3(joint, f"{name}.joint")
+        self._velocity = as_vector3(velocity, f"{name}.velocity")
+        self._mass_center = as_vector3(mass_center, f"{name}.mass_center")
+        self._mass = as_scalar(mass, f"{name}.mass")
         _check_nonnegative(self._mass, f"{name}.mass", "the mass")
         self._inertia = self._make_inertia(inertia, f"{name}.inertia")
 

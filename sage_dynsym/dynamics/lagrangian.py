@@ -1,11 +1,11 @@
 r"""
-Lagrangians and the Lagrange equations of the second kind
+Lagrangians, Routh functions and the Lagrange equations of the second kind
 
 A :class:`Lagrangian` is an immutable snapshot of a characteristic function
 `L(q, \dot q, t)` together with the non-potential forces of the model: a
 Rayleigh dissipation function `R(q, \dot q)` and generalized forces `Q_i`.
 It comes from a mechanical system (:meth:`MechanicalSystem.lagrangian
-<sage_dynsym.mechanical_system.MechanicalSystem.lagrangian>`), a linear
+<sage_dynsym.mechanics.system.MechanicalSystem.lagrangian>`), a linear
 circuit, or directly from an expression, e.g. one copied from a paper.
 
 Convention: `L = T + U` with `U` the force function (minus the potential
@@ -47,216 +47,52 @@ Dissipation and forces enter the equations::
     sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=c*dx^2/2, forces=[F])
     sage: L.lagrange_equations()
     [c*dx + ddx*m + k*x - F]
-"""
-import random
 
+Routh functions
+---------------
+
+For cyclic coordinates `q_1, \dots, q_m` (absent from `L`, from the
+dissipation function and from the generalized forces) the momenta
+`p_l = \partial L/\partial \dot q_l` are constants `c_l`. The Routh function
+
+.. MATH::
+
+    R(q_{m+1..n}, \dot q_{m+1..n}, c) = L - \sum_{l \le m} c_l \dot q_l,
+
+with the cyclic velocities eliminated through `p_l = c_l`, is a Lagrangian
+of the positional coordinates only (sign convention of
+:doc:`the method </method>`: `R = L - c \cdot \dot q_{cyc}`). Its Lagrange
+equations are the Routh equations; the cyclic velocities are recovered as
+`\dot q_l = -\partial R/\partial c_l`.
+
+EXAMPLES:
+
+The Kepler problem in polar coordinates::
+
+    sage: from sage_dynsym import Lagrangian
+    sage: r, phi, dr, dphi, m, mu = var('r phi dr dphi m mu')
+    sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 + m*mu/r, [r, phi])
+    sage: R = L.routh([phi]); R
+    Routh function in coordinates (r) with cyclic momenta (p_phi) : 1/2*dr^2*m + m*mu/r - 1/2*p_phi^2/(m*r^2)
+    sage: R.equations()
+    [ddr*m + m*mu/r^2 - p_phi^2/(m*r^3)]
+    sage: R.cyclic_velocities()
+    [p_phi/(m*r^2)]
+"""
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
-from sage.misc.misc_c import prod
-from sage.rings.real_double import RDF
+from sage.modules.free_module_element import vector
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from .errors import ModelError
-from .expressions import velocity, acceleration, time_derivative, t
+from ..errors import ModelError
+from ..symbols import velocity, acceleration, momentum, time_derivative, t
+from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
+from ..analysis.motion import SecondOrderEquations
 from .natural_equations import natural_equations, SymbolicCalculus
-from .trig import trig_rational_simplify
-
-
-def _symbol_list(symbols, what):
-    symbols = [SR(s) for s in symbols]
-    for s in symbols:
-        if not s.is_symbol():
-            raise ModelError(f"{what} must be symbolic variables, got {s}")
-    if len(set(symbols)) != len(symbols):
-        raise ModelError(f"{what} must be distinct, got {symbols}")
-    return symbols
-
-
-def _is_at_most_quadratic(expr, velocities):
-    r"""
-    Whether ``expr`` is a polynomial of total degree at most 2 in ``velocities``.
-    """
-    if not velocities:
-        return True
-    s = SR.symbol()
-    scaled = expr.subs({v: s * v for v in velocities})
-    return bool(scaled.is_polynomial(s)) and bool(scaled.degree(s) <= 2)
-
-
-def _natural_form(A, A1, A0, velocities):
-    r"""
-    `\tfrac12 \dot q^T A \dot q + A_1\cdot\dot q + A_0`, each
-    off-diagonal pair written once.
-    """
-    n = len(velocities)
-    v = velocities
-    quadratic = sum((A[i, i] * v[i] ** 2 / 2 for i in range(n)), SR(0)) + sum(
-        (A[i, j] * v[i] * v[j] for i in range(n) for j in range(i + 1, n)), SR(0))
-    return quadratic + sum((A1[i] * v[i] for i in range(n)), SR(0)) + SR(A0)
-
-
-def _linear_collected(expr, symbols):
-    r"""
-    ``expr``, linear in ``symbols``, as `\sum_s c_s s + c_0` with every
-    coefficient simplified by
-    :func:`~sage_dynsym.trig.trig_rational_simplify`.
-    """
-    expr = SR(expr)
-    rest = trig_rational_simplify(expr.subs({s: 0 for s in symbols}))
-    return SR(0).add(*[trig_rational_simplify(expr.diff(s)) * s for s in symbols], rest)
-
-
-def _is_singular(A):
-    r"""
-    Whether the square symbolic matrix ``A`` is singular identically.
-
-    It is regular if its determinant at a random point is clearly nonzero
-    in floating point (relative to Hadamard's bound, the product of the row
-    norms); otherwise Sage's exact rank decides. (The symbolic rank alone
-    can take minutes on the mass matrix of a chain of bodies.)
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.lagrangian import _is_singular
-        sage: a, m = var('a m')
-        sage: _is_singular(matrix([[m, m*cos(a)], [m*cos(a), m]]))
-        False
-        sage: _is_singular(matrix([[cos(a)^2, cos(a)], [1 - sin(a)^2, cos(a)]]))
-        True
-        sage: _is_singular(matrix(SR, 0, 0))
-        False
-    """
-    n = A.nrows()
-    if n == 0:
-        return False
-    try:
-        variables = sorted(set().union(*(SR(e).variables() for e in A.list())), key=str)
-        rng = random.Random(1)
-        point = {v: rng.uniform(0.3, 1.7) for v in variables}
-        N = A.subs(point).change_ring(RDF)
-        bound = prod(row.norm() for row in N.rows())
-        if bound > 0 and abs(N.det()) > 1e-8 * bound:
-            return False
-    except (TypeError, ValueError, ArithmeticError):
-        pass   # not numerical at the point (unknown functions, poles, ...)
-    return A.rank() < n
-
-
-class _Elimination:
-    r"""
-    Symmetric Gaussian elimination `P A P^T = L D L^T` of a symmetric
-    invertible matrix `A`, with diagonal pivots (the shortest nonzero
-    one first) and every entry simplified modulo `\cos^2+\sin^2 = 1`.
-
-    It writes the quadratic form of `A^{-1}` as a sum of squares
-    (Lagrange's reduction), `u^T A^{-1} u = \sum_k y_k^2 / D_k` with
-    `L y = P u`: for the heavy symmetric top,
-    `p_\varphi^2/C + (p_\psi - p_\varphi\cos\theta)^2/(A\sin^2\theta)`.
-    If only zero diagonal entries remain, the rest of the matrix is
-    inverted as a block (adjugate over determinant).
-
-    INPUT:
-
-    - ``A`` -- a symmetric invertible matrix over ``SR``
-    - ``simplify`` -- (default: :func:`~sage_dynsym.trig.trig_rational_simplify`
-      with ``strict=True``) the simplification of every entry, which must
-      turn zero into zero (the pivots are tested); the default raises
-      :class:`~sage_dynsym.trig.NotPolynomial` where it cannot decide
-      (inexact numbers, too large fractions)
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.lagrangian import _Elimination
-        sage: from sage_dynsym.trig import trig_rational_simplify
-        sage: a, A, C, p, q = var('a A C p q')
-        sage: E = _Elimination(matrix([[A*sin(a)^2 + C*cos(a)^2, C*cos(a)], [C*cos(a), C]]))
-        sage: E.squares([p, q])
-        [q^2/C, (q*cos(a) - p)^2/(A*sin(a)^2)]
-        sage: sum(E.products([p, q], [1, 0]))   # first entry of A^{-1} (p, q)
-        -(q*cos(a) - p)/(A*sin(a)^2)
-
-    TESTS::
-
-        sage: E = _Elimination(matrix([[0, 1], [1, 0]]))
-        sage: E.squares([p, q]), sum(E.products([p, q], [1, 0]))
-        ([2*p*q], q)
-        sage: _Elimination(matrix([[0.5*sin(a)^2]]))
-        Traceback (most recent call last):
-        ...
-        NotPolynomial: 0.500000000000000 is not a rational number
-        sage: E = _Elimination(matrix([[0.5*sin(a)^2]]), simplify=lambda e: e.normalize())
-        sage: E.squares([p])
-        [2.00000000000000*p^2/sin(a)^2]
-    """
-
-    def __init__(self, A, simplify=None):
-        if simplify is None:
-            def simplify(e):
-                return trig_rational_simplify(e, strict=True)
-        n = A.nrows()
-        self._n = n
-        S = {(i, j): simplify(A[i, j]) for i in range(n) for j in range(i, n)}
-
-        def entry(i, j):
-            return S[min(i, j), max(i, j)]
-
-        remaining = list(range(n))
-        self._order, self._pivots, self._multipliers = [], [], {}
-        self._block, self._block_inverse = [], None
-        while remaining:
-            nonzero = [i for i in remaining if not entry(i, i).is_trivial_zero()]
-            if not nonzero:
-                block = matrix(SR, [[entry(i, j) for j in remaining] for i in remaining])
-                det = simplify(block.det())
-                self._block = remaining
-                self._block_inverse = block.adjugate().apply_map(lambda e: simplify(e / det))
-                break
-            k = min(nonzero, key=lambda i: len(str(entry(i, i))))
-            remaining.remove(k)
-            d = entry(k, k)
-            self._order.append(k)
-            self._pivots.append(d)
-            for i in remaining:
-                self._multipliers[i, k] = simplify(entry(i, k) / d)
-            for a, i in enumerate(remaining):
-                for j in remaining[a:]:
-                    key = min(i, j), max(i, j)
-                    S[key] = simplify(S[key] - self._multipliers[i, k] * entry(k, j))
-
-    def _reduced(self, u):
-        # forward substitution L y = P u (the block indices last)
-        y = {}
-        for i in self._order + self._block:
-            y[i] = u[i] - SR(0).add(*[self._multipliers[i, m] * y[m] for m in self._order
-                                      if (i, m) in self._multipliers])
-        return y
-
-    def products(self, u, w):
-        r"""
-        The terms of `u^T A^{-1} w`.
-        """
-        yu, yw = self._reduced(u), self._reduced(w)
-        terms = [yu[k] * yw[k] / d for k, d in zip(self._order, self._pivots)]
-        for a, i in enumerate(self._block):
-            for b, j in enumerate(self._block):
-                terms.append(yu[i] * self._block_inverse[a, b] * yw[j])
-        return terms
-
-    def squares(self, u, collect=()):
-        r"""
-        The terms of `u^T A^{-1} u`: `y_k^2/D_k`, with each `y_k` collected
-        in the symbols ``collect`` (in which ``u`` is linear).
-        """
-        y = {i: _linear_collected(v, collect) for i, v in self._reduced(u).items()}
-        terms = [y[k] ** 2 / d for k, d in zip(self._order, self._pivots)]
-        if self._block:
-            quadratic = SR(0).add(*[y[i] * self._block_inverse[a, b] * y[j]
-                                    for a, i in enumerate(self._block)
-                                    for b, j in enumerate(self._block)])
-            terms.append(trig_rational_simplify(quadratic))
-        return terms
+from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
+                           is_singular, Elimination)
 
 
 class Lagrangian(SageObject):
@@ -312,10 +148,10 @@ class Lagrangian(SageObject):
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
                  forces=None, name=None, decomposition=None, equation_builder=None):
-        self._coordinates = _symbol_list(coordinates, "coordinates")
+        self._coordinates = symbol_list(coordinates, "coordinates")
         if velocities is None:
             velocities = [velocity(q) for q in self._coordinates]
-        self._velocities = _symbol_list(velocities, "velocities")
+        self._velocities = symbol_list(velocities, "velocities")
         if len(self._velocities) != len(self._coordinates):
             raise ModelError("expected one velocity per coordinate")
         self._accelerations = [acceleration(q) for q in self._coordinates]
@@ -325,7 +161,7 @@ class Lagrangian(SageObject):
             A, A1, A0 = decomposition
             self._structure = (A, A1, SR(A0))
             if expr is None:
-                expr = _natural_form(A, A1, A0, self._velocities)
+                expr = natural_form(A, A1, A0, self._velocities)
         self._expr = SR(expr)
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
@@ -428,6 +264,66 @@ class Lagrangian(SageObject):
         """
         return self._name
 
+    # ------------------------------------------------------------------
+    # value semantics
+
+    def _content(self):
+        return (type(self).__name__, self._expr, tuple(self._coordinates),
+                tuple(self._velocities), self._dissipation, tuple(self._forces))
+
+    def __eq__(self, other):
+        r"""
+        Lagrangians are values: equal when their expressions, coordinates,
+        velocities, dissipation and forces are (structurally) the same.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]) == Lagrangian(dx^2/2 - x^2/2, [x])
+            True
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]) == Lagrangian(dx^2/2 - x^2, [x])
+            False
+        """
+        if type(self) is not type(other):
+            return False
+        return all(_same(a, b) for a, b in zip(self._content(), other._content()))
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        r"""
+        A hash consistent with ``==`` (structural hashes of the expressions).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: len({Lagrangian(dx^2/2, [x]), Lagrangian(dx^2/2, [x])})
+            1
+        """
+        return hash(tuple(_hashable(a) for a in self._content()))
+
+    def __reduce__(self):
+        r"""
+        Pickling: by content (a structured form of the equations, where one
+        was attached, is recomputed after unpickling).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=var('c')*dx^2/2)
+            sage: loads(dumps(L)) == L
+            True
+            sage: TestSuite(L).run()
+        """
+        return (_rebuild_lagrangian,
+                (self._expr, self._coordinates, self._velocities,
+                 {'dissipation': self._dissipation, 'forces': self._forces,
+                  'name': self._name, 'decomposition': self._structure}))
+
     def _repr_(self):
         coords = ", ".join(str(q) for q in self._coordinates)
         of = f" of {self._name}" if self._name else ""
@@ -495,7 +391,7 @@ class Lagrangian(SageObject):
         """
         if self._structure is not None:
             return True
-        return _is_at_most_quadratic(self._expr, self._velocities)
+        return is_at_most_quadratic(self._expr, self._velocities)
 
     @cached_method
     def decomposition(self):
@@ -575,7 +471,7 @@ class Lagrangian(SageObject):
             sage: Lagrangian(dx^2 + dy^2, [x, y]).is_singular()
             False
         """
-        return _is_singular(self.mass_matrix())
+        return is_singular(self.mass_matrix())
 
     def generalized_momenta(self):
         r"""
@@ -682,6 +578,38 @@ class Lagrangian(SageObject):
             raise ValueError(f"form must be 'structured' or 'direct', got {form!r}")
         return [e + extra for e, extra in zip(equations, self._nonpotential_terms())]
 
+    def equations(self):
+        r"""
+        The equations of motion: :meth:`lagrange_equations` (the name every
+        model and characteristic function of the package shares).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations()
+            [ddx + x]
+        """
+        return self.lagrange_equations()
+
+    def to_linearizer(self):
+        r"""
+        The equations as neutral data for the analysis
+        (:class:`~sage_dynsym.analysis.motion.SecondOrderEquations`, with
+        the Lagrangian and its kinetic matrix).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).to_linearizer()
+            Second-order equations in (x): [ddx + x] == 0
+        """
+        kinetic = self.mass_matrix() if self.is_natural() else None
+        return SecondOrderEquations(self.lagrange_equations(), self._coordinates,
+                                    self._velocities, self._accelerations,
+                                    function=self._expr, kinetic=kinetic)
+
     def _direct_equations(self):
         q, dq, ddq = self._coordinates, self._velocities, self._accelerations
         return [time_derivative(p, q, dq, ddq) - self._expr.diff(qi)
@@ -690,7 +618,7 @@ class Lagrangian(SageObject):
     def _structured_equations(self):
         r"""
         Equations (5) from `A, A_1, A_0`, see
-        :mod:`~sage_dynsym.natural_equations`.
+        :mod:`~sage_dynsym.dynamics.natural_equations`.
         """
         if self._equation_builder is not None:
             return self._equation_builder()
@@ -721,7 +649,7 @@ class Lagrangian(SageObject):
             ModelError: the mass matrix is singular: the accelerations cannot be solved for
         """
         A = self.mass_matrix()
-        if _is_singular(A):
+        if is_singular(A):
             raise ModelError("the mass matrix is singular: the accelerations cannot be solved for")
         zero = {a: 0 for a in self._accelerations}
         rest = matrix(SR, [[-e.subs(zero)] for e in self.lagrange_equations()])
@@ -752,7 +680,7 @@ class Lagrangian(SageObject):
         r"""
         The Routh function for the given cyclic coordinates.
 
-        See :class:`~sage_dynsym.routh.RouthFunction`.
+        See :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`.
 
         EXAMPLES::
 
@@ -762,7 +690,6 @@ class Lagrangian(SageObject):
             sage: R = L.routh([phi]); R.expr()
             1/2*dr^2*m - 1/2*k*r^2 - 1/2*p_phi^2/(m*r^2)
         """
-        from .routh import RouthFunction
         return RouthFunction(self, cyclic)
 
     def hamiltonian(self):
@@ -770,7 +697,7 @@ class Lagrangian(SageObject):
         The Hamiltonian by the Legendre transform; for a singular Lagrangian
         the result carries Dirac's constraint analysis.
 
-        See :class:`~sage_dynsym.hamiltonian.Hamiltonian`.
+        See :class:`~sage_dynsym.dynamics.hamiltonian.Hamiltonian`.
 
         EXAMPLES::
 
@@ -781,3 +708,256 @@ class Lagrangian(SageObject):
         """
         from .hamiltonian import Hamiltonian
         return Hamiltonian(self)
+
+
+class RouthFunction(Lagrangian):
+    r"""
+    The Routh function of a Lagrangian for given cyclic coordinates.
+
+    Being itself a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian` of the
+    positional coordinates (with the cyclic momenta as constant parameters),
+    it supports everything a Lagrangian does: equations, Hamiltonian,
+    linearization, further reduction.
+
+    INPUT:
+
+    - ``lagrangian`` -- a natural :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
+    - ``cyclic`` -- list of coordinates of ``lagrangian`` that are cyclic
+    - ``momenta`` -- (default: ``p_<q>``) symbols for the constant cyclic
+      momenta
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.lagrangian import RouthFunction
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: R = RouthFunction(Lagrangian((dx^2 + dy^2)/2 - x^2/2, [x, y]), [y])
+        sage: R.expr(), R.momenta(), R.coordinates(), R.cyclic_coordinates()
+        (1/2*dx^2 - 1/2*p_y^2 - 1/2*x^2, [p_y], [x], [y])
+
+    TESTS::
+
+        sage: RouthFunction(Lagrangian((dx^2 + dy^2)/2 - x*y, [x, y]), [y])
+        Traceback (most recent call last):
+        ...
+        ModelError: cyclic: y is not cyclic: the Lagrangian depends on it
+        sage: RouthFunction(Lagrangian((dx^2 + dy^2)/2, [x, y], dissipation=dy^2), [y])
+        Traceback (most recent call last):
+        ...
+        ModelError: cyclic: y is not cyclic: the dissipation function depends on its velocity, so its momentum is not conserved
+        sage: RouthFunction(Lagrangian((dx^2 + dy^2)/2, [x, y]), [var('z')])
+        Traceback (most recent call last):
+        ...
+        ModelError: cyclic: z is not a coordinate of the Lagrangian; coordinates are [x, y]
+        sage: RouthFunction(Lagrangian((dx + dy)^2, [x, y]), [x, y])
+        Traceback (most recent call last):
+        ...
+        ModelError: cyclic: the momentum equations cannot be solved for the cyclic velocities (the block of the mass matrix is singular)
+    """
+
+    def __init__(self, lagrangian, cyclic, momenta=None):
+        if not isinstance(lagrangian, Lagrangian):
+            raise ModelError("expected a Lagrangian object", entry="lagrangian")
+        self._check_cyclic(lagrangian, cyclic)
+        q_all, dq_all = lagrangian.coordinates(), lagrangian.velocities()
+        self._cyclic = [SR(c) for c in cyclic]
+        index = [q_all.index(c) for c in self._cyclic]
+        positional = [i for i in range(len(q_all)) if i not in index]
+        if momenta is None:
+            momenta = [momentum(c) for c in self._cyclic]
+        self._momenta = [SR(c) for c in momenta]
+        self._lagrangian = lagrangian
+
+        A, A1, A0 = lagrangian.decomposition()
+        # p_cyc = A_cc dq_c + A_cp dq_p + A1_c = c; with u = c - A1_c - A_cp dq_p,
+        # dq_c = A_cc^{-1} u and R = L - c.dq_c = 1/2 dq_p A_pp dq_p + A1_p.dq_p
+        # + A0 - 1/2 u A_cc^{-1} u, collected by the positional velocities:
+        # each coefficient simplified, the momentum part as a sum of squares
+        A_cc = A.matrix_from_rows_and_columns(index, index)
+        if is_singular(A_cc):
+            raise ModelError("the momentum equations cannot be solved for the cyclic "
+                             "velocities (the block of the mass matrix is singular)",
+                             entry="cyclic")
+        try:
+            elimination = Elimination(A_cc)
+        except NotPolynomial:
+            # inexact numbers, or entries too large to simplify: GiNaC's
+            # normalization (it may miss zero pivots modulo cos^2+sin^2 = 1)
+            elimination = Elimination(A_cc, simplify=lambda e: SR(e).normalize())
+        dq_p = [dq_all[j] for j in positional]
+        v = [c - A1[i] for c, i in zip(self._momenta, index)]
+        X = {j: [A[i, j] for i in index] for j in positional}
+        n = len(positional)
+        M = matrix(SR, n, n)
+        for a, j in enumerate(positional):
+            for b in range(a, n):
+                k = positional[b]
+                M[a, b] = M[b, a] = trig_rational_simplify(
+                    A[j, k] - SR(0).add(*elimination.products(X[j], X[k])))
+        M.set_immutable()
+        B = vector(SR, [linear_collected(A1[j] + SR(0).add(*elimination.products(X[j], v)),
+                                          self._momenta) for j in positional])
+        R0 = trig_rational_simplify(A0) - SR(0).add(
+            *elimination.squares(v, self._momenta)) / 2
+        # dq_c = A_cc^{-1} u = -dR/dc, in the (compact) form of R
+        routh = natural_form(M, B, R0, dq_p)
+        self._solved_velocities = [-routh.diff(c) for c in self._momenta]
+        cyclic_velocities = [dq_all[i] for i in index]
+        substitution = dict(zip(cyclic_velocities, self._solved_velocities))
+        dissipation = lagrangian.dissipation().subs(substitution)
+        forces = [lagrangian.generalized_forces()[i].subs(substitution) for i in positional]
+        Lagrangian.__init__(self, None, [q_all[i] for i in positional], dq_p,
+                            dissipation=dissipation, forces=forces, name=lagrangian.name(),
+                            decomposition=(M, B, R0))
+
+    @staticmethod
+    def _check_cyclic(lagrangian, cyclic):
+        coordinates = lagrangian.coordinates()
+        velocities = dict(zip(coordinates, lagrangian.velocities()))
+        for c in cyclic:
+            c = SR(c)
+            if c not in velocities:
+                raise ModelError(f"{c} is not a coordinate of the Lagrangian; "
+                                 f"coordinates are {coordinates}", entry="cyclic")
+            if lagrangian.expr().has(c):
+                raise ModelError(f"{c} is not cyclic: the Lagrangian depends on it",
+                                 entry="cyclic")
+            if lagrangian.dissipation().diff(velocities[c]) != 0:
+                raise ModelError(f"{c} is not cyclic: the dissipation function depends "
+                                 "on its velocity, so its momentum is not conserved",
+                                 entry="cyclic")
+            if lagrangian.generalized_forces()[coordinates.index(c)] != 0:
+                raise ModelError(f"{c} is not cyclic: a generalized force acts on it",
+                                 entry="cyclic")
+            if not lagrangian.is_natural():
+                raise ModelError("Routh reduction needs a Lagrangian quadratic in the "
+                                 "velocities", entry="lagrangian")
+
+    def _repr_(self):
+        coords = ", ".join(map(str, self.coordinates()))
+        momenta = ", ".join(map(str, self._momenta))
+        return (f"Routh function in coordinates ({coords}) with cyclic momenta "
+                f"({momenta}) : {self.expr()}")
+
+    def _content(self):
+        return ('RouthFunction', self._lagrangian, tuple(self._cyclic), tuple(self._momenta))
+
+    def __reduce__(self):
+        r"""
+        Pickling: the Lagrangian and the cyclic coordinates.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: R = Lagrangian((dr^2 + r^2*dphi^2)/2, [r, phi]).routh([phi])
+            sage: loads(dumps(R)) == R
+            True
+            sage: TestSuite(R).run()
+        """
+        return (RouthFunction, (self._lagrangian, self._cyclic, self._momenta))
+
+    def _latex_(self):
+        from sage.misc.latex import latex
+        return "R = " + latex(self.expr())
+
+    def _derived(self, expr, **changes):
+        # substitution etc. give a plain Lagrangian of the positional coordinates
+        return Lagrangian(expr, changes.pop('coordinates', self.coordinates()),
+                          **{'velocities': self.velocities(),
+                             'dissipation': self.dissipation(),
+                             'forces': self.generalized_forces(),
+                             'name': self.name(), **changes})
+
+    def momenta(self):
+        r"""
+        The symbols of the constant cyclic momenta, in the order of
+        :meth:`cyclic_coordinates`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y]).routh([y]).momenta()
+            [p_y]
+        """
+        return list(self._momenta)
+
+    def cyclic_coordinates(self):
+        r"""
+        The cyclic coordinates that were eliminated.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y]).routh([y]).cyclic_coordinates()
+            [y]
+        """
+        return list(self._cyclic)
+
+    def lagrangian(self):
+        r"""
+        The Lagrangian this Routh function was obtained from.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: L = Lagrangian((dx^2 + dy^2)/2, [x, y])
+            sage: L.routh([y]).lagrangian() is L
+            True
+        """
+        return self._lagrangian
+
+    def cyclic_velocities(self):
+        r"""
+        The cyclic velocities as functions of the positional variables and
+        the cyclic momenta (equal to `-\partial R/\partial c_l`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: R = Lagrangian((dr^2 + r^2*dphi^2)/2, [r, phi]).routh([phi])
+            sage: R.cyclic_velocities()
+            [p_phi/r^2]
+            sage: [-R.expr().diff(c) for c in R.momenta()]
+            [p_phi/r^2]
+        """
+        return list(self._solved_velocities)
+
+    @cached_method
+    def equations(self):
+        r"""
+        The Routh equations: the Lagrange equations of `R` in the positional
+        coordinates (a list of expressions `E_i`, meaning `E_i = 0`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: R = Lagrangian((dr^2 + r^2*dphi^2)/2, [r, phi]).routh([phi])
+            sage: R.equations()
+            [ddr - p_phi^2/r^3]
+        """
+        return self.lagrange_equations()
+
+
+
+def _same(a, b):
+    if isinstance(a, tuple):
+        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b))
+    if hasattr(a, 'is_trivially_equal'):
+        return a.is_trivially_equal(b)
+    return a == b
+
+
+def _hashable(a):
+    if isinstance(a, tuple):
+        return tuple(_hashable(x) for x in a)
+    return hash(a)
+
+
+def _rebuild_lagrangian(expr, coordinates, velocities, keywords):
+    return Lagrangian(expr, coordinates, velocities, **keywords)

@@ -23,13 +23,13 @@ multiplied by its velocity monomial, so the result keeps the structure of
 products of velocities. Nothing is expanded.
 
 The coefficients live in the ring of a *calculus*: :class:`SymbolicCalculus`
-(any expressions), or :class:`~sage_dynsym.trig.RingCalculus` (polynomials
+(any expressions), or :class:`~sage_dynsym.analysis.trigonometric.RingCalculus` (polynomials
 in the sines and cosines of the angles, where the combination of the three
 derivatives in `\Gamma` cancels exactly).
 
 EXAMPLES::
 
-    sage: from sage_dynsym.natural_equations import natural_equations, SymbolicCalculus
+    sage: from sage_dynsym.dynamics.natural_equations import natural_equations, SymbolicCalculus
     sage: r, phi, m, k = var('r phi m k')
     sage: A = [[m, 0], [0, m*r^2]]
     sage: natural_equations(A, [0, 0], -k*r^2/2, [r, phi], var('dr dphi'), var('ddr ddphi'),
@@ -39,7 +39,7 @@ EXAMPLES::
 from sage.misc.verbose import verbose
 from sage.symbolic.ring import SR
 
-from .expressions import t
+from ..symbols import t
 
 
 class SymbolicCalculus:
@@ -50,7 +50,7 @@ class SymbolicCalculus:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.natural_equations import SymbolicCalculus
+        sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
         sage: x, y, t = var('x y t')
         sage: C = SymbolicCalculus([x, y])
         sage: C.dependencies(x*t + 1), C.derivative(x*t, 0), C.derivative(x*t, None)
@@ -96,7 +96,7 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
       list and an element of the calculus' ring
     - ``coordinates``, ``velocities``, ``accelerations`` -- symbols
     - ``calculus`` -- a :class:`SymbolicCalculus` or
-      :class:`~sage_dynsym.trig.RingCalculus`
+      :class:`~sage_dynsym.analysis.trigonometric.RingCalculus`
     - ``mass_matrix`` -- (optional) the symbolic form of ``A``, if the
       caller has it already (it saves converting every entry again)
 
@@ -104,7 +104,7 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
 
     Progress is reported through Sage's ``verbose`` at level 1::
 
-        sage: from sage_dynsym.natural_equations import natural_equations, SymbolicCalculus
+        sage: from sage_dynsym.dynamics.natural_equations import natural_equations, SymbolicCalculus
         sage: x = var('x')
         sage: set_verbose(1)
         sage: natural_equations([[1]], [0], -x^2/2, [x], [var('dx')], [var('ddx')],

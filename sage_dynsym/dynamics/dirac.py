@@ -67,8 +67,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
-from .errors import ModelError
-from .hamiltonian import poisson_bracket
+from ..errors import ModelError
+from .brackets import poisson_bracket
 
 
 class DiracConstraints(SageObject):
@@ -76,7 +76,7 @@ class DiracConstraints(SageObject):
     Dirac's constraint analysis of a singular Lagrangian.
 
     Built by :meth:`Lagrangian.hamiltonian()
-    <sage_dynsym.lagrangian.Lagrangian.hamiltonian>`; see the module
+    <sage_dynsym.dynamics.lagrangian.Lagrangian.hamiltonian>`; see the module
     documentation for the algorithm.
 
     INPUT:

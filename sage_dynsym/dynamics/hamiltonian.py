@@ -8,7 +8,7 @@ are solved for the velocities and `H = p \cdot \dot q - L` is expressed in
 non-potential forces written in phase variables).
 
 When `\det(\partial^2 L/\partial \dot q^2) = 0` the Hamiltonian carries a
-:class:`~sage_dynsym.dirac.DiracConstraints` analysis instead: primary
+:class:`~sage_dynsym.dynamics.dirac.DiracConstraints` analysis instead: primary
 constraints, the canonical Hamiltonian `H_c`, secondary constraints, their
 first/second-class split and Dirac brackets.
 
@@ -32,32 +32,17 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from .errors import ModelError
-from .expressions import momentum
-from .lagrangian import _Elimination
-from .trig import trig_rational_simplify, NotPolynomial
-
-
-def poisson_bracket(f, g, coordinates, momenta):
-    r"""
-    The canonical Poisson bracket
-    `\{f, g\} = \sum_i \partial_{q_i} f\, \partial_{p_i} g - \partial_{p_i} f\, \partial_{q_i} g`.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.hamiltonian import poisson_bracket
-        sage: q, p = var('q p')
-        sage: poisson_bracket(q, p, [q], [p]), poisson_bracket(q^2, p^2, [q], [p])
-        (1, 4*p*q)
-    """
-    f, g = SR(f), SR(g)
-    return sum(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q)
-               for q, p in zip(coordinates, momenta))
+from ..errors import ModelError
+from ..symbols import momentum
+from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
+from ..analysis.motion import FirstOrderEquations
+from .brackets import poisson_bracket
+from .natural_form import Elimination
 
 
 class Hamiltonian(SageObject):
     r"""
-    The Hamiltonian of a :class:`~sage_dynsym.lagrangian.Lagrangian`.
+    The Hamiltonian of a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`.
 
     INPUT:
 
@@ -113,7 +98,7 @@ class Hamiltonian(SageObject):
         shifted = [p - a for p, a in zip(self._momenta, A1)]
         velocities = self._lagrangian.velocities()
         try:
-            elimination = _Elimination(A)
+            elimination = Elimination(A)
         except NotPolynomial:
             elimination = None
         if elimination is not None:
@@ -156,6 +141,60 @@ class Hamiltonian(SageObject):
         self._velocity_map = {v: solutions[0][v] for v in velocities}
         H = sum(p * v for p, v in zip(self._momenta, velocities)) - self._lagrangian.expr()
         self._expr = H.subs(self._velocity_map).simplify_full()
+
+    def __eq__(self, other):
+        r"""
+        Hamiltonians are values: equal when made from equal Lagrangians with
+        the same momenta.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: L = Lagrangian(dx^2/2 - x^2/2, [x])
+            sage: L.hamiltonian() == Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian()
+            True
+        """
+        return isinstance(other, Hamiltonian) and self._lagrangian == other._lagrangian and \
+            all(a.is_trivially_equal(b) for a, b in zip(self._momenta, other._momenta))
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash((hash(self._lagrangian), tuple(hash(p) for p in self._momenta)))
+
+    def __reduce__(self):
+        r"""
+        Pickling: the Lagrangian and the momenta.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: H = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian()
+            sage: loads(dumps(H)) == H
+            True
+            sage: TestSuite(H).run()
+        """
+        return (Hamiltonian, (self._lagrangian, self._momenta))
+
+    def to_linearizer(self):
+        r"""
+        Hamilton's equations as neutral data for the analysis
+        (:class:`~sage_dynsym.analysis.motion.FirstOrderEquations` in the
+        coordinates, then the momenta).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian().to_linearizer().rhs()
+            [p_x, -x]
+        """
+        pairs = self.equations()
+        return FirstOrderEquations([a for a, _ in pairs] + [b for _, b in pairs],
+                                   list(self._coordinates) + list(self._momenta))
 
     def _repr_(self):
         kind = "Hamiltonian" if self._dirac is None else "Canonical Hamiltonian (singular Lagrangian)"
@@ -248,7 +287,7 @@ class Hamiltonian(SageObject):
         r"""
         Dirac's constraint analysis (``None`` for a regular Lagrangian).
 
-        See :class:`~sage_dynsym.dirac.DiracConstraints`.
+        See :class:`~sage_dynsym.dynamics.dirac.DiracConstraints`.
 
         EXAMPLES::
 

@@ -42,12 +42,16 @@ from sage.modules.free_module_element import vector
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from .errors import ModelError
-from .expressions import velocity, acceleration, t, time_derivative
-from .natural_equations import natural_equations
+from ..errors import ModelError
+from ..symbols import velocity, acceleration, t, time_derivative
+from ..io.fields import text as _text
+from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
+                                      trig_rational_simplify)
+from ..dynamics.lagrangian import Lagrangian
+from ..dynamics.model import Model
+from ..dynamics.natural_equations import natural_equations
+from ..dynamics.natural_form import natural_form
 from .kinematics import Kinematics
-from .trig import SymbolicBackend, TrigPolynomialRing, NotPolynomial, trig_rational_simplify
-from .lagrangian import Lagrangian, _natural_form
 from .rigid_body import RigidBody
 
 # Above this many terms in the mass matrix, converting the polynomial
@@ -56,13 +60,13 @@ from .rigid_body import RigidBody
 _POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
 
 
-class MechanicalSystem(SageObject):
+class MechanicalSystem(Model):
     r"""
     A system of rigid bodies.
 
     INPUT:
 
-    - ``bodies`` -- list of :class:`~sage_dynsym.rigid_body.RigidBody`
+    - ``bodies`` -- list of :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`
       (any order: parents are resolved by name, index or object)
     - ``coordinates`` -- list of symbolic variables, the generalized
       coordinates
@@ -70,8 +74,8 @@ class MechanicalSystem(SageObject):
       given, every symbol of the model must be a coordinate, a velocity
       ``d<q>``, a parameter or ``t``
     - ``force_function`` -- (optional)
-      :class:`~sage_dynsym.force_functions.UniformGravity`,
-      :class:`~sage_dynsym.force_functions.NewtonianField`, or any
+      :class:`~sage_dynsym.mechanics.force_functions.UniformGravity`,
+      :class:`~sage_dynsym.mechanics.force_functions.NewtonianField`, or any
       expression `U(q, t)`
     - ``dissipation`` -- (default: 0) Rayleigh function `R(q, \dot q)`
     - ``forces`` -- (optional) generalized forces, one per coordinate
@@ -138,6 +142,149 @@ class MechanicalSystem(SageObject):
             self._check_symbols()
         self._symbolic = Kinematics(self, SymbolicBackend())
         self._tree = self._symbolic.tree
+
+
+    # ------------------------------------------------------------------
+    # the model interface
+
+    kind = 'mechanical'
+
+    def equations(self):
+        r"""
+        The equations of motion: the Lagrange equations of :meth:`lagrangian`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).equations()[1]
+            -dpsi^2*l^2*m*cos(theta)*sin(theta) + ddtheta*l^2*m - g*l*m*sin(theta)
+        """
+        return self.lagrangian().lagrange_equations()
+
+    def characteristic_functions(self):
+        r"""
+        The characteristic functions of the system: its Lagrangian and
+        Hamiltonian (builders of no argument).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: S.characteristic_functions()['hamiltonian']().expr()
+            g*l*m*cos(theta) + 1/2*p_theta^2/(l^2*m) + 1/2*p_psi^2/(l^2*m*sin(theta)^2)
+        """
+        return {'lagrangian': self.lagrangian,
+                'hamiltonian': lambda: self.lagrangian().hamiltonian()}
+
+    def to_dict(self):
+        r"""
+        The description mapping of the system (the inverse of
+        :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: d = load(example_path('spherical_pendulum.yaml')).to_dict()
+            sage: d['bodies'][0]['rotations'], d['force_function']
+            ([[3, 'psi'], [1, 'theta']], {'uniform_gravity': ['0', '0', '-g']})
+        """
+        from .force_functions import UniformGravity, NewtonianField
+        out = {'kind': 'mechanical'}
+        if self.name():
+            out['name'] = self.name()
+        if self.parameters() is not None:
+            out['parameters'] = [str(p) for p in self.parameters()]
+        out['coordinates'] = [str(q) for q in self.coordinates()]
+        field = self.force_field()
+        if isinstance(field, UniformGravity):
+            out['force_function'] = {'uniform_gravity': [_text(c) for c in field.acceleration()]}
+        elif isinstance(field, NewtonianField):
+            nu, r, e = field.parameters()
+            out['force_function'] = {'newtonian': {'nu': _text(nu), 'r': _text(r),
+                                                   'direction': [_text(c) for c in e]}}
+        elif field is not None:
+            out['force_function'] = {'expression': _text(field)}
+        if not self.dissipation().is_zero():
+            out['dissipation'] = _text(self.dissipation())
+        if any(not f.is_zero() for f in self.generalized_forces()):
+            out['forces'] = [_text(f) for f in self.generalized_forces()]
+        bodies = []
+        for k, body in enumerate(self.bodies(), 1):
+            entry = {'name': body.name(), 'parent': self.parent_index(k),
+                     'rotations': [[axis, _text(angle)] for axis, angle in body.rotations()],
+                     'joint': [_text(c) for c in body.joint()],
+                     'mass_center': [_text(c) for c in body.mass_center()],
+                     'mass': _text(body.mass()),
+                     'inertia': [[_text(c) for c in row] for row in body.inertia().rows()]}
+            if body.velocity() is not None:
+                entry['velocity'] = [_text(c) for c in body.velocity()]
+            bodies.append(entry)
+        out['bodies'] = bodies
+        return out
+
+    def results(self):
+        r"""
+        The ``results:`` section of a saved description: the Lagrangian and
+        the Lagrange equations, as text and LaTeX.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: sorted(load(example_path('spherical_pendulum.yaml')).results())
+            ['lagrange_equations', 'lagrange_equations_latex', 'lagrangian', 'lagrangian_latex']
+        """
+        from sage.misc.latex import latex
+        L = self.lagrangian()
+        equations = L.lagrange_equations()
+        return {'lagrangian': _text(L.expr()), 'lagrangian_latex': str(latex(L.expr())),
+                'lagrange_equations': [_text(e) for e in equations],
+                'lagrange_equations_latex': [str(latex(e)) for e in equations]}
+
+    def result_symbols(self, results):
+        r"""
+        The names a ``results:`` section of this system may use: the
+        parameters (or the symbols of the Lagrangian), the coordinates,
+        their velocities, accelerations and momenta; no functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: symbols, functions = load(example_path('spherical_pendulum.yaml')).result_symbols({})
+            sage: sorted(symbols)[:6], functions
+            (['ddpsi', 'ddtheta', 'dpsi', 'dtheta', 'g', 'l'], ())
+        """
+        from ..symbols import momentum
+        q = [str(v) for v in self.coordinates()]
+        symbols = [str(p) for p in self.parameters() or []]
+        if self.parameters() is None:
+            symbols += sorted({str(v) for v in self.lagrangian().expr().variables()})
+        symbols += q + [str(velocity(SR(v))) for v in q] + [str(acceleration(SR(v))) for v in q]
+        symbols += [str(momentum(SR(v))) for v in q]
+        return symbols, ()
+
+    def euler_poisson(self, names=None):
+        r"""
+        The Euler--Poisson system of a heavy body with a fixed point: the
+        angular momentum and the vertical in the body's axes on e(3), see
+        :func:`~sage_dynsym.lie.builders.euler_poisson`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+            sage: psi, theta, phi, A, C, m, g, l = var('psi theta phi A C m g l')
+            sage: top = RigidBody('top', rotations=[(3, psi), (1, theta), (3, phi)],
+            ....:                 mass_center=[0, 0, l], mass=m, inertia=diagonal_matrix([A, A, C]))
+            sage: S = MechanicalSystem([top], [psi, theta, phi], force_function=UniformGravity([0, 0, -g]))
+            sage: S.euler_poisson().hamiltonian()
+            g*gamma3*l*m + 1/2*M1^2/A + 1/2*M2^2/A + 1/2*M3^2/C
+        """
+        from ..lie.builders import euler_poisson
+        return euler_poisson(self, names)
 
     # ------------------------------------------------------------------
     # construction helpers
@@ -329,7 +476,7 @@ class MechanicalSystem(SageObject):
 
     def frame_tree(self):
         r"""
-        The :class:`~sage_dynsym.frames.FrameTree` of all elementary
+        The :class:`~sage_dynsym.mechanics.frames.FrameTree` of all elementary
         rotations.
 
         EXAMPLES::
@@ -392,7 +539,7 @@ class MechanicalSystem(SageObject):
     def angular_velocity_vector(self, k):
         r"""
         The absolute angular velocity `W_k` as a
-        :class:`~sage_dynsym.frames.FrameVector` (each rotation rate about its
+        :class:`~sage_dynsym.mechanics.frames.FrameVector` (each rotation rate about its
         own axis, in its own frame).
 
         EXAMPLES::
@@ -442,7 +589,7 @@ class MechanicalSystem(SageObject):
         r"""
         The absolute velocity `V_{0k} = V_{0j} + W_j \times r^j_{0k} +
         v^j_{0k}` of the joint point of body ``k``, as a
-        :class:`~sage_dynsym.frames.FrameVector`.
+        :class:`~sage_dynsym.mechanics.frames.FrameVector`.
 
         EXAMPLES::
 
@@ -472,7 +619,7 @@ class MechanicalSystem(SageObject):
     def joint_position(self, k):
         r"""
         The position of the joint point `O_k` relative to the inertial origin,
-        as a :class:`~sage_dynsym.frames.FrameVector`.
+        as a :class:`~sage_dynsym.mechanics.frames.FrameVector`.
 
         EXAMPLES::
 
@@ -488,7 +635,7 @@ class MechanicalSystem(SageObject):
     def mass_center_position(self, k):
         r"""
         The position of the mass centre `C_k` relative to the inertial
-        origin, as a :class:`~sage_dynsym.frames.FrameVector`.
+        origin, as a :class:`~sage_dynsym.mechanics.frames.FrameVector`.
 
         EXAMPLES::
 
@@ -534,7 +681,7 @@ class MechanicalSystem(SageObject):
         if kinematics is None:
             kinematics, to_symbolic = self._symbolic, trig_rational_simplify
         else:
-            to_symbolic = kinematics._backend.simplest_fraction
+            to_symbolic = kinematics.backend().simplest_fraction
         A, A1, A0 = kinematics.body_decomposition(k)
         A = matrix(SR, [[to_symbolic(e) for e in row] for row in A])
         A.set_immutable()
@@ -543,7 +690,7 @@ class MechanicalSystem(SageObject):
     @cached_method
     def _polynomial_kinematics(self):
         r"""
-        The kinematics over a :class:`~sage_dynsym.trig.TrigPolynomialRing`
+        The kinematics over a :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`
         when the model is polynomial in the sines and cosines of its angles
         and in its parameters (the usual case), else ``None``.
         """
@@ -622,13 +769,13 @@ class MechanicalSystem(SageObject):
         if kinematics is None:
             return None
         try:
-            calculus = kinematics._backend.calculus(self._coordinates)
+            calculus = kinematics.backend().calculus(self._coordinates)
         except NotPolynomial:
             return None
         # sum the polynomials first: contributions of the bodies combine
         n = len(self._coordinates)
         parts = [kinematics.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
-        zero, reduce = calculus.zero, kinematics._backend.reduce
+        zero, reduce = calculus.zero, kinematics.backend().reduce
         A = [[None] * n for _ in range(n)]
         for i in range(n):
             for j in range(i, n):
@@ -658,7 +805,7 @@ class MechanicalSystem(SageObject):
         else:
             self._check_index(k)
             A, A1, A0 = self.body_decomposition(k)
-        return _natural_form(A, A1, A0, self._velocities)
+        return natural_form(A, A1, A0, self._velocities)
 
     @cached_method
     def force_function(self):
@@ -689,7 +836,7 @@ class MechanicalSystem(SageObject):
 
         - ``christoffel`` -- how the equations (5) of the Lagrangian get their
           Christoffel coefficients `\Gamma_{i,rj}` (see
-          :mod:`~sage_dynsym.natural_equations`):
+          :mod:`~sage_dynsym.dynamics.natural_equations`):
 
           - ``'polynomial'`` -- combine the three derivatives of the mass
             matrix as polynomials in the sines and cosines, where they

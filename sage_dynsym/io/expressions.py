@@ -1,27 +1,16 @@
 r"""
-Symbols, safe parsing and time derivatives
-
-sage_dynsym works with plain symbolic variables: a generalized coordinate
-``q`` has the velocity symbol ``dq`` and the acceleration symbol ``ddq``;
-time is the variable ``t``. Total time derivatives of expressions in
-``q, dq, t`` are taken with :func:`time_derivative`.
+The safe expression parser
 
 Expressions given as text (description files, widgets) are parsed with
-Sage's symbolic-expression parser restricted to declared names and a fixed
-list of mathematical functions: nothing is ever evaluated as Python.
+Sage's symbolic-expression parser restricted to declared names and the
+fixed list of mathematical functions of :mod:`sage_dynsym.symbols`:
+nothing is ever evaluated as Python. Before Sage sees the text, its size is
+checked against documented limits (length, nesting depth, digits, exponents
+and towers of powers), so hostile input cannot exhaust time or memory.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.expressions import (velocity, acceleration,
-    ....:     time_derivative, ExpressionParser)
-    sage: theta = var('theta')
-    sage: velocity(theta), acceleration(theta)
-    (dtheta, ddtheta)
-    sage: latex(velocity(theta))
-    {\dot{\theta}}
-    sage: time_derivative(sin(theta), [theta])
-    dtheta*cos(theta)
-
+    sage: from sage_dynsym.io.expressions import ExpressionParser
     sage: P = ExpressionParser(['m', 'l', 'theta'])
     sage: P.parse("m*l^2*sin(theta)^2")
     l^2*m*sin(theta)^2
@@ -44,115 +33,11 @@ from sage.rings.rational_field import QQ
 from sage.functions import all as sage_functions
 from sage.symbolic.constants import pi, e as euler_e, I as imaginary_unit
 
-from .errors import ExpressionError, brief
-
-#: The time variable shared by every model.
-t = SR.var('t')
-
-ALLOWED_FUNCTIONS = {
-    name: getattr(sage_functions, name)
-    for name in ('sin', 'cos', 'tan', 'cot', 'sec', 'csc',
-                 'arcsin', 'arccos', 'arctan', 'arctan2',
-                 'sinh', 'cosh', 'tanh', 'exp', 'log', 'sqrt', 'abs_symbolic')
-}
-ALLOWED_FUNCTIONS.update(asin=ALLOWED_FUNCTIONS['arcsin'],
-                         acos=ALLOWED_FUNCTIONS['arccos'],
-                         atan=ALLOWED_FUNCTIONS['arctan'],
-                         atan2=ALLOWED_FUNCTIONS['arctan2'],
-                         abs=ALLOWED_FUNCTIONS['abs_symbolic'])
-del ALLOWED_FUNCTIONS['abs_symbolic']
-
-CONSTANTS = {'pi': pi, 'e': euler_e, 'I': imaginary_unit}
-
+from ..errors import ExpressionError, brief
+from ..symbols import t, ALLOWED_FUNCTIONS, CONSTANTS
 
 def _exact_decimal(text):
     return QQ(Fraction(text))
-
-
-def _latex_base(name):
-    return latex(SR.var(name))
-
-
-def velocity(q):
-    r"""
-    Return the velocity symbol ``d<q>`` of the coordinate ``q``.
-
-    INPUT:
-
-    - ``q`` -- a symbolic variable (or its name)
-
-    OUTPUT: a symbolic variable whose LaTeX form is `\dot q`
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.expressions import velocity
-        sage: velocity(var('psi')), latex(velocity('psi'))
-        (dpsi, {\dot{\psi}})
-    """
-    name = str(q)
-    return SR.var('d' + name, latex_name=r'\dot{%s}' % _latex_base(name))
-
-
-def acceleration(q):
-    r"""
-    Return the acceleration symbol ``dd<q>`` of the coordinate ``q``.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.expressions import acceleration
-        sage: acceleration(var('x')), latex(acceleration('x'))
-        (ddx, {\ddot{x}})
-    """
-    name = str(q)
-    return SR.var('dd' + name, latex_name=r'\ddot{%s}' % _latex_base(name))
-
-
-def momentum(q):
-    r"""
-    Return the momentum symbol ``p_<q>`` conjugate to ``q``.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.expressions import momentum
-        sage: momentum(var('theta')), latex(momentum('theta'))
-        (p_theta, {p_{\theta}})
-    """
-    name = str(q)
-    return SR.var('p_' + name, latex_name=r'p_{%s}' % _latex_base(name))
-
-
-def time_derivative(expr, coordinates, velocities=None, accelerations=None):
-    r"""
-    Total time derivative of ``expr`` along a motion.
-
-    ``expr`` is an expression in the coordinates ``q``, their velocities
-    ``dq`` and time ``t``; the result is
-    `\partial_t f + \sum_i (\partial_{q_i} f)\, dq_i + \sum_i
-    (\partial_{dq_i} f)\, ddq_i`.
-
-    INPUT:
-
-    - ``expr`` -- a symbolic expression
-    - ``coordinates`` -- list of coordinate symbols
-    - ``velocities``, ``accelerations`` -- (default: the ``d``/``dd``
-      symbols of the coordinates)
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.expressions import time_derivative
-        sage: x, dx, t = var('x dx t')
-        sage: time_derivative(x^2*dx + t*x, [x])
-        ddx*x^2 + (2*dx*x + t)*dx + x
-    """
-    if velocities is None:
-        velocities = [velocity(q) for q in coordinates]
-    if accelerations is None:
-        accelerations = [acceleration(q) for q in coordinates]
-    expr = SR(expr)
-    result = expr.diff(t)
-    for q, dq, ddq in zip(coordinates, velocities, accelerations):
-        result += expr.diff(q) * dq + expr.diff(dq) * ddq
-    return result
 
 
 # ----------------------------------------------------------------------
@@ -196,7 +81,7 @@ def _quote(text, limit=80):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.expressions import _quote
+        sage: from sage_dynsym.io.expressions import _quote
         sage: _quote("m*l^2"), _quote("x" * 1000)
         ("'m*l^2'", "'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx...' (1000 characters)")
     """
@@ -450,7 +335,7 @@ def check_expression_text(text, parser, max_length=MAX_EXPRESSION_LENGTH):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.expressions import ExpressionParser, check_expression_text
+        sage: from sage_dynsym.io.expressions import ExpressionParser, check_expression_text
         sage: P = ExpressionParser(['m', 'x'])
         sage: check_expression_text("m*x^2 + 3^(10^10)*m", P)
         Traceback (most recent call last):
@@ -562,7 +447,7 @@ class ExpressionParser:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.expressions import ExpressionParser
+        sage: from sage_dynsym.io.expressions import ExpressionParser
         sage: P = ExpressionParser(['g', 'u'], functions=['f1'])
         sage: P.parse("0.5*g*u^2 + f1(u)")
         1/2*g*u^2 + f1(u)
@@ -638,7 +523,7 @@ class ExpressionParser:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.expressions import ExpressionParser
+            sage: from sage_dynsym.io.expressions import ExpressionParser
             sage: ExpressionParser(['b', 'a']).symbols()
             ['a', 'b', 't']
         """
@@ -687,7 +572,7 @@ class ExpressionParser:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.expressions import ExpressionParser
+            sage: from sage_dynsym.io.expressions import ExpressionParser
             sage: ExpressionParser(['m']).parse("m/2 + 1e-1")
             1/2*m + 1/10
             sage: ExpressionParser(['m']).parse("m +* 2", entry="mass")

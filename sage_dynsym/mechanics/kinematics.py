@@ -2,20 +2,20 @@ r"""
 Kinematics of a system of rigid bodies over a choice of arithmetic
 
 :class:`Kinematics` computes, for the bodies of a
-:class:`~sage_dynsym.mechanical_system.MechanicalSystem`, the absolute
+:class:`~sage_dynsym.mechanics.system.MechanicalSystem`, the absolute
 angular velocities `W_k`, the joint velocities
 `V_{0k} = V_{0j} + W_j\times r^j_{0k} + v^j_{0k}`, the positions of joints
 and mass centres, and the decomposition (4) of each body's kinetic energy
 (1) (formulas of :doc:`the method </method>`), all as
-:class:`~sage_dynsym.frames.FrameVector` over either the symbolic ring or a
-:class:`~sage_dynsym.trig.TrigPolynomialRing`.
+:class:`~sage_dynsym.mechanics.frames.FrameVector` over either the symbolic ring or a
+:class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`.
 
 EXAMPLES::
 
     sage: from sage_dynsym import load
     sage: from sage_dynsym.description import example_path
-    sage: from sage_dynsym.kinematics import Kinematics
-    sage: from sage_dynsym.trig import SymbolicBackend
+    sage: from sage_dynsym.mechanics.kinematics import Kinematics
+    sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
     sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
     sage: K.angular_velocity(1).components(K.body_frame(1))
     (dtheta, dpsi*sin(theta), dpsi*cos(theta))
@@ -24,23 +24,23 @@ from sage.misc.cachefunc import cached_method
 from sage.misc.verbose import verbose
 from sage.rings.rational_field import QQ
 
-from .expressions import time_derivative
-from .frames import FrameTree, FrameVector
+from ..symbols import time_derivative
+from .frames import FrameTree, FrameVector, cross
 
 
 class Kinematics:
     r"""
     Velocities, positions and kinetic-energy decompositions of the bodies of
     ``system``, with the arithmetic of ``backend``
-    (:class:`~sage_dynsym.trig.SymbolicBackend` or
-    :class:`~sage_dynsym.trig.TrigPolynomialRing`).
+    (:class:`~sage_dynsym.analysis.trigonometric.SymbolicBackend` or
+    :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`).
 
     EXAMPLES::
 
         sage: from sage_dynsym import load
         sage: from sage_dynsym.description import example_path
-        sage: from sage_dynsym.kinematics import Kinematics
-        sage: from sage_dynsym.trig import TrigPolynomialRing
+        sage: from sage_dynsym.mechanics.kinematics import Kinematics
+        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
         sage: S = load(example_path('spherical_pendulum.yaml'))
         sage: R = TrigPolynomialRing([var('psi'), var('theta')],
         ....:                        [var(n) for n in 'm l g dpsi dtheta psi theta t'.split()])
@@ -61,6 +61,22 @@ class Kinematics:
         for k, body in enumerate(self._bodies, 1):
             self._frames.append(self.tree.add_rotations(self._frames[self._parents[k]],
                                                         body.rotations()))
+
+    def backend(self):
+        r"""The arithmetic backend (:class:`~sage_dynsym.analysis.trigonometric.SymbolicBackend`
+        or :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: Kinematics(S, SymbolicBackend()).backend()
+            <sage_dynsym.analysis.trigonometric.SymbolicBackend object at 0x...>
+        """
+        return self._backend
 
     def body_frame(self, k):
         return self._frames[k]
@@ -129,7 +145,7 @@ class Kinematics:
         r"""
         ``(A, A1, A0)`` of body ``k`` as nested lists of backend elements;
         see :meth:`MechanicalSystem.body_decomposition
-        <sage_dynsym.mechanical_system.MechanicalSystem.body_decomposition>`.
+        <sage_dynsym.mechanics.system.MechanicalSystem.body_decomposition>`.
         """
         backend = self._backend
         n = len(self._coordinates)
@@ -153,9 +169,7 @@ class Kinematics:
 
         def cross_c(w):
             # w x c, in the body's axes
-            return FrameVector(self.tree, {frame: (w[1] * c[2] - w[2] * c[1],
-                                                   w[2] * c[0] - w[0] * c[2],
-                                                   w[0] * c[1] - w[1] * c[0])})
+            return FrameVector(self.tree, {frame: cross(w, c)})
 
         def bilinear(V1, W1, V2, W2):
             # the symmetric bilinear form whose quadratic form is 2 T_k, see (1)

@@ -21,7 +21,7 @@ reduction to symbolic rational expressions (Routh functions, Hamiltonians).
 
 EXAMPLES::
 
-    sage: from sage_dynsym.trig import TrigPolynomialRing
+    sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
     sage: a, b, m = var('a b m')
     sage: R = TrigPolynomialRing([a, b], [m])
     sage: (ca, sa), (cb, sb) = R.trig(a), R.trig(b)
@@ -160,6 +160,19 @@ def _circle_reduce(element, pairs, zero):
     return element
 
 
+def symbolic_trig(angle):
+    r"""
+    The pair `(\cos, \sin)` of ``angle`` in the symbolic ring.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.trigonometric import symbolic_trig
+        sage: symbolic_trig(var('a'))
+        (cos(a), sin(a))
+    """
+    return SR(angle).cos(), SR(angle).sin()
+
+
 class SymbolicBackend:
     r"""
     Arithmetic of kinematic quantities in the symbolic ring (the general
@@ -167,7 +180,7 @@ class SymbolicBackend:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.trig import SymbolicBackend
+        sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
         sage: B = SymbolicBackend(); x, dx = var('x dx')
         sage: B.diff(B.convert(x*dx), dx), B.at_zero(x*dx + x, [dx]), B.trig(x)
         (x, x, (cos(x), sin(x)))
@@ -177,8 +190,7 @@ class SymbolicBackend:
     def convert(self, expr):
         return SR(expr)
 
-    def trig(self, angle):
-        return SR(angle).cos(), SR(angle).sin()
+    trig = staticmethod(lambda angle: symbolic_trig(angle))
 
     def diff(self, element, symbol):
         return element.diff(symbol)
@@ -207,7 +219,7 @@ class TrigPolynomialRing:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.trig import TrigPolynomialRing
+        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
         sage: a, l, da = var('a l da')
         sage: R = TrigPolynomialRing([a], [l, da])
         sage: c, s = R.trig(a)
@@ -277,7 +289,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: x, w, t, a, m = var('x w t a m')
             sage: R = TrigPolynomialRing.for_expressions([a*cos(w*t)*x + sqrt(2)/m], [x, t])
             sage: R.angles(), R.atoms()
@@ -309,7 +321,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: TrigPolynomialRing([var('a'), pi/2, var('a'), 1], []).angles()
             [a, 1]
 
@@ -324,7 +336,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: TrigPolynomialRing([], [], [pi]).atoms()
             [pi]
         """
@@ -357,7 +369,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: R = TrigPolynomialRing([var('a')], [])
             sage: c, s = R.trig(var('a'))
             sage: R.reduce(c^3)
@@ -386,7 +398,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: a, m, l = var('a m l')
             sage: R = TrigPolynomialRing([a], [m, l])
             sage: c, s = R.trig(a)
@@ -444,7 +456,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: a, m = var('a m')
             sage: e = m/sin(a) + cos(a)/(m*sin(a))
             sage: R = TrigPolynomialRing.for_expressions([e], fractions=True)
@@ -510,7 +522,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: a, b, m = var('a b m')
             sage: R = TrigPolynomialRing([a, b], [m])
             sage: (c, s), (cb, sb) = R.trig(a), R.trig(b)
@@ -588,7 +600,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.trig import TrigPolynomialRing
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
             sage: a, l = var('a l')
             sage: C = TrigPolynomialRing([a], [l]).calculus([a])
             sage: c, s = C.ring.trig(a)
@@ -606,14 +618,14 @@ class RingCalculus:
     `\partial_q \sin\theta = \cos\theta\, \partial_q\theta`, plus
     the direct dependence of coordinates used as polynomial variables (e.g. a
     sliding coordinate). The interface is that of
-    :class:`~sage_dynsym.natural_equations.SymbolicCalculus`. Elements must
+    :class:`~sage_dynsym.dynamics.natural_equations.SymbolicCalculus`. Elements must
     be reduced (:meth:`TrigPolynomialRing.reduce`); derivatives stay reduced.
 
     Raises :class:`NotPolynomial` if an angle's derivative is not polynomial.
 
     EXAMPLES::
 
-        sage: from sage_dynsym.trig import TrigPolynomialRing
+        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
         sage: x, z, w, t = var('x z w t')
         sage: R = TrigPolynomialRing([x + w*t], [z, w, t])
         sage: C = R.calculus([x, z])
@@ -626,7 +638,7 @@ class RingCalculus:
     """
 
     def __init__(self, ring, coordinates):
-        from .expressions import t
+        from ..symbols import t
         self.ring = ring
         self.zero = ring.zero
         P = ring.ring
@@ -709,7 +721,7 @@ def trig_rational_simplify(expr, strict=False):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.trig import trig_rational_simplify
+        sage: from sage_dynsym.analysis.trigonometric import trig_rational_simplify
         sage: w, t, x, m = var('w t x m')
         sage: trig_rational_simplify(cos(w*t)^4 + 2*cos(w*t)^2*sin(w*t)^2 + sin(w*t)^4)
         1

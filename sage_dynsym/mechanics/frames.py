@@ -15,7 +15,7 @@ the absolute orientation.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.frames import FrameTree, FrameVector, rotation_matrix
+    sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector, rotation_matrix
     sage: psi, theta = var('psi theta')
     sage: rotation_matrix(3, psi)
     [ cos(psi) -sin(psi)         0]
@@ -35,6 +35,8 @@ EXAMPLES::
 from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
+from ..analysis.trigonometric import symbolic_trig
+
 
 def rotation_matrix(axis, angle):
     r"""
@@ -44,7 +46,7 @@ def rotation_matrix(axis, angle):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.frames import rotation_matrix
+        sage: from sage_dynsym.mechanics.frames import rotation_matrix
         sage: rotation_matrix(1, var('a'))
         [      1       0       0]
         [      0  cos(a) -sin(a)]
@@ -60,17 +62,17 @@ def rotation_matrix(axis, angle):
     return matrix(SR, rows)
 
 
-def symbolic_trig(angle):
+def cross(u, w):
     r"""
-    The pair `(\cos, \sin)` of ``angle`` in the symbolic ring.
+    The vector product of two triples of components in the same axes.
 
     EXAMPLES::
 
-        sage: from sage_dynsym.frames import symbolic_trig
-        sage: symbolic_trig(var('a'))
-        (cos(a), sin(a))
+        sage: from sage_dynsym.mechanics.frames import cross
+        sage: cross((1, 0, 0), (0, 1, 0))
+        (0, 0, 1)
     """
-    return SR(angle).cos(), SR(angle).sin()
+    return (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
 
 
 def _rotate(components, axis, trig, inverse=False):
@@ -96,14 +98,15 @@ class FrameTree:
 
     INPUT:
 
-    - ``trig`` -- (default: :func:`symbolic_trig`) a function giving the
+    - ``trig`` -- (default:
+      :func:`~sage_dynsym.analysis.trigonometric.symbolic_trig`) a function giving the
       pair `(\cos\theta, \sin\theta)` of an angle, as elements of the
       ring the components live in
     - ``zero`` -- (default: ``SR(0)``) the zero of that ring
 
     EXAMPLES::
 
-        sage: from sage_dynsym.frames import FrameTree
+        sage: from sage_dynsym.mechanics.frames import FrameTree
         sage: T = FrameTree()
         sage: a = T.add_rotations(0, [(3, var('u'))])
         sage: b = T.add_rotations(a, [(1, var('v'))])
@@ -128,7 +131,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: FrameTree().add_rotations(0, [])
             0
         """
@@ -147,7 +150,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: T = FrameTree(); T.parent(T.add_rotations(0, [(2, 1)]))
             0
         """
@@ -159,7 +162,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: T = FrameTree(); T.axis(T.add_rotations(0, [(2, 1)]))
             2
         """
@@ -171,7 +174,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: T = FrameTree(); T.angle(T.add_rotations(0, [(2, var('b'))]))
             b
         """
@@ -183,7 +186,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: FrameTree().path_to_root(0)
             [0]
         """
@@ -198,7 +201,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: T = FrameTree()
             sage: a = T.add_rotations(0, [(3, 1), (1, 2)]); b = T.add_rotations(1, [(2, 3)])
             sage: T.common_ancestor(a, b)
@@ -219,7 +222,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: T = FrameTree(); f = T.add_rotations(0, [(3, var('a'))])
             sage: T.express((1, 0, 0), f, 0)
             (cos(a), sin(a), 0)
@@ -246,7 +249,7 @@ class FrameTree:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree
+            sage: from sage_dynsym.mechanics.frames import FrameTree
             sage: T = FrameTree(); f = T.add_rotations(0, [(1, var('a'))])
             sage: T.direction_cosines(f) * T.direction_cosines(0, f)
             [                  1                   0                   0]
@@ -270,7 +273,7 @@ class FrameVector:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.frames import FrameTree, FrameVector
+        sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
         sage: T = FrameTree(); f = T.add_rotations(0, [(3, var('a'))])
         sage: u = FrameVector(T, {0: (1, 0, 0)}); w = FrameVector(T, {f: (1, 0, 0)})
         sage: u.dot(w), (u + w).components(0)
@@ -301,7 +304,7 @@ class FrameVector:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
             sage: FrameVector(FrameTree(), {0: (1, 2, 0)}).parts()
             {0: (1, 2, 0)}
         """
@@ -327,7 +330,7 @@ class FrameVector:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
             sage: x = var('x')
             sage: FrameVector(FrameTree(), {0: (x^2, x, 1)}).map_components(lambda c: c.diff(x)).parts()
             {0: (2*x, 1, 0)}
@@ -341,7 +344,7 @@ class FrameVector:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
             sage: FrameVector(FrameTree(), {0: (0, 0, 0)}).is_zero()
             True
         """
@@ -353,7 +356,7 @@ class FrameVector:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
             sage: FrameVector(FrameTree(), {}).components(0)
             (0, 0, 0)
         """
@@ -369,7 +372,7 @@ class FrameVector:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
             sage: T = FrameTree(); f = T.add_rotations(0, [(1, var('a'))])
             sage: FrameVector(T, {f: (0, 0, 1)}).dot(FrameVector(T, {0: (0, 0, 1)}))
             cos(a)
@@ -388,10 +391,9 @@ class FrameVector:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.frames import FrameTree, FrameVector
+            sage: from sage_dynsym.mechanics.frames import FrameTree, FrameVector
             sage: T = FrameTree()
             sage: FrameVector(T, {0: (1, 0, 0)}).cross(FrameVector(T, {0: (0, 1, 0)}), 0)
             (0, 0, 1)
         """
-        u, w = self.components(frame), other.components(frame)
-        return (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
+        return cross(self.components(frame), other.components(frame))

@@ -1,6 +1,15 @@
 r"""
-Reserved names: one registry of the names a model may not declare
+Symbols: the names the package gives a meaning to
 
+sage_dynsym works with plain symbolic variables: a generalized coordinate
+``q`` has the velocity symbol ``dq`` (:func:`velocity`), the acceleration
+symbol ``ddq`` (:func:`acceleration`) and the momentum symbol ``p_q``
+(:func:`momentum`); time is the variable :data:`t`, and total time
+derivatives are taken with :func:`time_derivative`. The functions and
+constants that expressions given as text may use are
+:data:`ALLOWED_FUNCTIONS` and :data:`CONSTANTS`.
+
+This module is also the one registry of the names a model may not declare.
 Every name declared in a model -- a parameter, a coordinate, a circuit
 element -- becomes a Sage symbolic variable and is printed as itself. A
 declared name that is also a name the package gives a meaning to would make
@@ -9,7 +18,7 @@ coordinate ``x``) or its results unreadable (a parameter ``sin`` prints
 like the function). This module lists those names in one place:
 
 - the functions of the expression parser (:data:`PARSER_FUNCTIONS`) and its
-  constants ``pi``, ``e``, ``I`` (:data:`CONSTANTS`);
+  constants ``pi``, ``e``, ``I`` (:data:`CONSTANTS`, :data:`CONSTANT_MEANINGS`);
 - the time ``t``;
 - the names derived from every coordinate ``q`` (:data:`COORDINATE_DERIVED`):
   ``d<q>`` (velocity), ``dd<q>`` (acceleration), ``p_<q>`` (momentum);
@@ -33,7 +42,7 @@ with a clear message.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.names import check_mechanical_names
+    sage: from sage_dynsym.symbols import check_mechanical_names
     sage: check_mechanical_names(['x', 'theta'], ['m', 'gamma', 'E'])
     sage: check_mechanical_names(['x'], ['m', 'dx'])
     Traceback (most recent call last):
@@ -51,17 +60,128 @@ EXAMPLES::
 import keyword
 import re
 
+from sage.functions import all as sage_functions
+from sage.misc.latex import latex
+from sage.symbolic.constants import pi, e as euler_e, I as imaginary_unit
+from sage.symbolic.ring import SR
+
 from .errors import ModelError, DescriptionError, brief
+
+#: The time variable shared by every model.
+t = SR.var('t')
+
+ALLOWED_FUNCTIONS = {
+    name: getattr(sage_functions, name)
+    for name in ('sin', 'cos', 'tan', 'cot', 'sec', 'csc',
+                 'arcsin', 'arccos', 'arctan', 'arctan2',
+                 'sinh', 'cosh', 'tanh', 'exp', 'log', 'sqrt', 'abs_symbolic')
+}
+ALLOWED_FUNCTIONS.update(asin=ALLOWED_FUNCTIONS['arcsin'],
+                         acos=ALLOWED_FUNCTIONS['arccos'],
+                         atan=ALLOWED_FUNCTIONS['arctan'],
+                         atan2=ALLOWED_FUNCTIONS['arctan2'],
+                         abs=ALLOWED_FUNCTIONS['abs_symbolic'])
+del ALLOWED_FUNCTIONS['abs_symbolic']
+
+CONSTANTS = {'pi': pi, 'e': euler_e, 'I': imaginary_unit}
+
+
+def _latex_base(name):
+    return latex(SR.var(name))
+
+
+def velocity(q):
+    r"""
+    Return the velocity symbol ``d<q>`` of the coordinate ``q``.
+
+    INPUT:
+
+    - ``q`` -- a symbolic variable (or its name)
+
+    OUTPUT: a symbolic variable whose LaTeX form is `\dot q`
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import velocity
+        sage: velocity(var('psi')), latex(velocity('psi'))
+        (dpsi, {\dot{\psi}})
+    """
+    name = str(q)
+    return SR.var('d' + name, latex_name=r'\dot{%s}' % _latex_base(name))
+
+
+def acceleration(q):
+    r"""
+    Return the acceleration symbol ``dd<q>`` of the coordinate ``q``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import acceleration
+        sage: acceleration(var('x')), latex(acceleration('x'))
+        (ddx, {\ddot{x}})
+    """
+    name = str(q)
+    return SR.var('dd' + name, latex_name=r'\ddot{%s}' % _latex_base(name))
+
+
+def momentum(q):
+    r"""
+    Return the momentum symbol ``p_<q>`` conjugate to ``q``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import momentum
+        sage: momentum(var('theta')), latex(momentum('theta'))
+        (p_theta, {p_{\theta}})
+    """
+    name = str(q)
+    return SR.var('p_' + name, latex_name=r'p_{%s}' % _latex_base(name))
+
+
+def time_derivative(expr, coordinates, velocities=None, accelerations=None):
+    r"""
+    Total time derivative of ``expr`` along a motion.
+
+    ``expr`` is an expression in the coordinates ``q``, their velocities
+    ``dq`` and time ``t``; the result is
+    `\partial_t f + \sum_i (\partial_{q_i} f)\, dq_i + \sum_i
+    (\partial_{dq_i} f)\, ddq_i`.
+
+    INPUT:
+
+    - ``expr`` -- a symbolic expression
+    - ``coordinates`` -- list of coordinate symbols
+    - ``velocities``, ``accelerations`` -- (default: the ``d``/``dd``
+      symbols of the coordinates)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import time_derivative
+        sage: x, dx, t = var('x dx t')
+        sage: time_derivative(x^2*dx + t*x, [x])
+        ddx*x^2 + (2*dx*x + t)*dx + x
+    """
+    if velocities is None:
+        velocities = [velocity(q) for q in coordinates]
+    if accelerations is None:
+        accelerations = [acceleration(q) for q in coordinates]
+    expr = SR(expr)
+    result = expr.diff(t)
+    for q, dq, ddq in zip(coordinates, velocities, accelerations):
+        result += expr.diff(q) * dq + expr.diff(dq) * ddq
+    return result
+
+
 
 #: Longest declared name.
 MAX_NAME_LENGTH = 64
 
-#: The time variable.
+#: The name of the time variable.
 TIME = 't'
 
-#: Constants of the expression parser.
-CONSTANTS = {'pi': 'the constant pi', 'e': "the constant e (Euler's number)",
-             'I': 'the imaginary unit I'}
+#: What the constants of the expression parser are.
+CONSTANT_MEANINGS = {'pi': 'the constant pi', 'e': "the constant e (Euler's number)",
+                     'I': 'the imaginary unit I'}
 
 #: Names derived from a coordinate ``q``: prefix -> meaning.
 COORDINATE_DERIVED = (('d', 'the velocity'), ('dd', 'the acceleration'), ('p_', 'the momentum'))
@@ -96,6 +216,10 @@ CIRCUIT_PATTERNS = COMMON_PATTERNS + (
                           "characteristics f<k>"),
 )
 
+#: The names of a circuit's own variables: an element's current and voltage
+#: placeholders, state variables, loop charges and node potentials.
+CIRCUIT_VARIABLES = re.compile(r'^([iut]|[iuq]\d+|phi\w*)$')
+
 _COMPILED = {}
 
 
@@ -112,11 +236,10 @@ def parser_functions():
 
     EXAMPLES::
 
-        sage: from sage_dynsym.names import parser_functions
+        sage: from sage_dynsym.symbols import parser_functions
         sage: 'sin' in parser_functions(), 'atan2' in parser_functions(), 'gamma' in parser_functions()
         (True, True, False)
     """
-    from .expressions import ALLOWED_FUNCTIONS
     return frozenset(ALLOWED_FUNCTIONS)
 
 
@@ -131,7 +254,7 @@ def reserved_meaning(name, kind='mechanical'):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.names import reserved_meaning
+        sage: from sage_dynsym.symbols import reserved_meaning
         sage: reserved_meaning('t'), reserved_meaning('sin'), reserved_meaning('lambda2')
         ('the time', 'the function sin of the expression parser', 'a multiplier of the Routh-Lyapunov method (lambda<j>)')
         sage: reserved_meaning('q1', 'circuit'), reserved_meaning('q1'), reserved_meaning('psi')
@@ -139,8 +262,8 @@ def reserved_meaning(name, kind='mechanical'):
     """
     if name == TIME:
         return 'the time'
-    if name in CONSTANTS:
-        return f'{CONSTANTS[name]} of the expression parser'
+    if name in CONSTANT_MEANINGS:
+        return f'{CONSTANT_MEANINGS[name]} of the expression parser'
     if name in parser_functions():
         return f'the function {name} of the expression parser'
     for pattern, what in _patterns(kind):
@@ -157,7 +280,7 @@ def check_name(name, entry=None, error=DescriptionError, source=None):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.names import check_name
+        sage: from sage_dynsym.symbols import check_name
         sage: check_name('theta'), check_name('λ')
         ('theta', 'λ')
         sage: check_name('None', entry='parameters[0]')
@@ -217,7 +340,7 @@ def check_names(declared, kind='mechanical', error=DescriptionError, source=None
 
     EXAMPLES::
 
-        sage: from sage_dynsym.names import check_names
+        sage: from sage_dynsym.symbols import check_names
         sage: check_names([('x', 'coordinate', 'coordinates[0]'),
         ....:              ('dx', 'coordinate', 'coordinates[1]')])
         Traceback (most recent call last):
@@ -263,12 +386,12 @@ def check_mechanical_names(coordinates, parameters=(), error=ModelError, source=
     r"""
     Check the names of a mechanical system: the coordinates and parameters
     (symbols or strings) against the registry and each other (see
-    :func:`check_names`). For :class:`~sage_dynsym.mechanical_system.MechanicalSystem`
+    :func:`check_names`). For :class:`~sage_dynsym.mechanics.system.MechanicalSystem`
     and the description-file reader.
 
     EXAMPLES::
 
-        sage: from sage_dynsym.names import check_mechanical_names
+        sage: from sage_dynsym.symbols import check_mechanical_names
         sage: check_mechanical_names(var('psi theta'), var('m l g'))
         sage: check_mechanical_names([var('x')], [var('p_x')])
         Traceback (most recent call last):

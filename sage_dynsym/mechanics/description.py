@@ -1,0 +1,309 @@
+r"""
+The description format of mechanical systems
+
+A description file is human-editable YAML (format:
+:doc:`/description_files`), read with PyYAML's
+*safe* loader: tags that would construct Python objects are refused, and
+every expression is a string parsed by
+:class:`~sage_dynsym.io.expressions.ExpressionParser` restricted to the
+declared symbols (never ``eval``). Errors name the file, the entry and what
+was expected.
+
+A mechanical system::
+
+    kind: mechanical
+    name: spherical pendulum
+    parameters: [m, l, g]
+    coordinates: [psi, theta]
+    force_function:
+      uniform_gravity: [0, 0, -g]    # or newtonian: {nu: .., r: .., direction: [..]}
+                                     # or expression: "U(q, t)"
+    dissipation: "c*dtheta^2/2"      # optional Rayleigh function (velocities d<name>)
+    forces: ["0", "M0*sin(w*t)"]     # optional, one per coordinate
+    bodies:
+      - name: pendulum
+        parent: 0                    # 0, a body name or a 1-based body index
+        rotations: [[3, psi], [1, theta]]
+        joint: [0, 0, 0]
+        velocity: [0, 0, 0]          # optional; default: time derivative of joint
+        mass_center: [0, 0, l]
+        mass: m
+        inertia: [[m*l^2, 0, 0], [0, m*l^2, 0], [0, 0, 0]]
+
+A circuit (``kind: circuit``) is handled by
+:mod:`sage_dynsym.circuits.description`.
+
+:func:`save` writes the description back with a ``results:`` section (the
+Lagrangian and the equations, as text and LaTeX); :func:`load` with
+``results=True`` parses that section again so that a later session can
+reuse it.
+
+EXAMPLES::
+
+    sage: import os, tempfile
+    sage: from sage_dynsym import load, save
+    sage: from sage_dynsym.description import example_path
+    sage: S = load(example_path('spherical_pendulum.yaml')); S
+    Mechanical system 'spherical pendulum': 1 body, coordinates (psi, theta)
+    sage: path = os.path.join(tempfile.mkdtemp(), 'pendulum.yaml')
+    sage: save(S, path)
+    sage: S2, results = load(path, results=True)
+    sage: bool(results['lagrangian'] == S.lagrangian().expr())
+    True
+    sage: results['lagrange_equations'] == S.lagrangian().lagrange_equations()
+    True
+"""
+from ..errors import DescriptionError, DynSymError, ModelError, brief
+from ..io.expressions import ExpressionParser
+from ..io.fields import check_keys, declared_names, title, MAX_PARAMETERS
+from ..symbols import velocity, acceleration, momentum, check_mechanical_names
+
+MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'coordinates', 'force_function',
+                   'dissipation', 'forces', 'bodies', 'results'}
+REQUIRED_MECHANICAL = ('coordinates', 'bodies')
+BODY_KEYS = {'name', 'parent', 'rotations', 'joint', 'velocity', 'mass_center', 'mass',
+             'inertia'}
+FIELD_KEYS = {'uniform_gravity', 'newtonian', 'expression'}
+NEWTONIAN_KEYS = {'nu', 'r', 'direction'}
+#: Most generalized coordinates of a mechanical description.
+MAX_COORDINATES = 50
+#: Most bodies of a mechanical description.
+MAX_BODIES = 50
+
+
+def _refusals(coordinates, velocities_allowed, where):
+    # names that are declared in no description but mean something: a
+    # velocity in a position, an acceleration or momentum anywhere
+    refused = {}
+    for q in coordinates:
+        if not velocities_allowed:
+            refused[str(velocity(q))] = (f"{velocity(q)} is the velocity of the coordinate "
+                                         f"{q}, which {where}")
+        refused[str(acceleration(q))] = (f"{acceleration(q)} is the acceleration of the "
+                                         f"coordinate {q}; a description holds no accelerations")
+        refused[str(momentum(q))] = (f"{momentum(q)} is the momentum of the coordinate {q}; "
+                                     "a description holds no momenta")
+    return refused
+
+
+def mechanical_system_from_dict(data, source=None):
+    r"""
+    Build a :class:`~sage_dynsym.mechanics.system.MechanicalSystem` from a
+    description mapping.
+
+    INPUT:
+
+    - ``data`` -- the mapping of a ``kind: mechanical`` description
+    - ``source`` -- (optional) file name for error messages
+
+    Names are checked against the reserved names (see
+    :mod:`sage_dynsym.symbols`) and each other. Positions, angles, masses,
+    inertia tensors and the force function depend on the coordinates, the
+    parameters and ``t`` only; velocities ``d<q>`` may appear in the joint
+    velocities, the dissipation function and the generalized forces.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.description import mechanical_system_from_dict
+        sage: d = {'kind': 'mechanical', 'parameters': ['m', 'k'], 'coordinates': ['x'],
+        ....:      'force_function': {'expression': '-k*x^2/2'},
+        ....:      'bodies': [{'name': 'b', 'joint': ['x', 0, 0], 'mass': 'm'}]}
+        sage: mechanical_system_from_dict(d).lagrangian()
+        Lagrangian in coordinates (x) : 1/2*dx^2*m - 1/2*k*x^2
+
+    TESTS::
+
+        sage: d['bodies'][0]['mass'] = 'm*q'
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: bodies[0].mass: undeclared symbol 'q' in 'm*q'; declared symbols are: k, m, t, x
+        sage: d['bodies'][0]['mass'] = '-m'; d['bodies'][0]['colour'] = 'red'
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: f.yaml: bodies[0]: unknown key 'colour'; a body has the keys inertia, joint, mass, mass_center, name, parent, rotations, velocity
+        sage: del d['bodies'][0]['colour']; d['bodies'][0]['mass'] = -1
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ModelError: f.yaml: bodies[0].mass: the mass must be non-negative, got -1
+        sage: d['bodies'][0]['mass'] = 'm'; d['force_function'] = {'expression': '-k*dx^2'}
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: force_function.expression: dx is the velocity of the coordinate x, which the force function U(q, t) cannot depend on: velocity-dependent forces belong in 'dissipation' or 'forces' (in '-k*dx^2')
+        sage: d['force_function'] = None; d['bodies'][0]['joint'] = ['x + dx', 0, 0]
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: bodies[0].joint[0]: dx is the velocity of the coordinate x, which cannot appear in positions, angles, masses or inertia (in 'x + dx')
+        sage: d['bodies'][0]['joint'] = ['x', 0, 0]; d['parameters'] = ['m', 'dx']
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: f.yaml: parameters[1]: the name 'dx' is the velocity of the coordinate 'x' (coordinates[0]); choose another name
+        sage: mechanical_system_from_dict({'kind': 'mechanical', 'bodies': []}, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: f.yaml: coordinates: missing key 'coordinates' (a list of symbol names)
+        sage: d = {'kind': 'mechanical', 'coordinates': ['x'], 'bodies': [{'name': 'b',
+        ....:      'rotations': [[3, 'x', 1]]}]}
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: f.yaml: bodies[0].rotations[0]: expected a pair [axis, angle], got [3, 'x', 1]
+    """
+    check_keys(data, MECHANICAL_KEYS, None, source, "a mechanical description")
+    for key in REQUIRED_MECHANICAL:
+        if key not in data:
+            raise DescriptionError(f"missing key {key!r} (a list of "
+                                   f"{'symbol names' if key == 'coordinates' else 'bodies'})",
+                                   entry=key, source=source)
+    name = title(data, 'name', source)
+    parameters = declared_names(data, 'parameters', source, required=False, limit=MAX_PARAMETERS)
+    coordinates = declared_names(data, 'coordinates', source, limit=MAX_COORDINATES)
+    check_mechanical_names(coordinates, parameters, DescriptionError, source)
+    velocities = [str(velocity(q)) for q in coordinates]
+    parsers = {
+        'geometry': ExpressionParser(parameters + coordinates, refused=_refusals(
+            coordinates, False, "cannot appear in positions, angles, masses or inertia")),
+        'force': ExpressionParser(parameters + coordinates, refused=_refusals(
+            coordinates, False, "the force function U(q, t) cannot depend on: "
+            "velocity-dependent forces belong in 'dissipation' or 'forces'")),
+        'motion': ExpressionParser(parameters + coordinates + velocities,
+                                   refused=_refusals(coordinates, True, "")),
+    }
+    bodies_data = data['bodies']
+    if not isinstance(bodies_data, list):
+        raise DescriptionError(f"expected a list of bodies, got {brief(bodies_data)}",
+                               entry='bodies', source=source)
+    if len(bodies_data) > MAX_BODIES:
+        raise DescriptionError(f"{len(bodies_data)} bodies; a description file has at most "
+                               f"{MAX_BODIES} (MAX_BODIES)", entry='bodies', source=source)
+    from .system import MechanicalSystem
+    motion = parsers['motion']
+    try:
+        bodies = [_body(b, i, parsers, source) for i, b in enumerate(bodies_data)]
+        n = len(coordinates)
+        forces = data.get('forces')
+        if forces is not None:
+            if not isinstance(forces, list) or len(forces) != n:
+                raise DescriptionError(f"expected a list of {n} expressions, one per "
+                                       f"coordinate, got {brief(forces)}", entry='forces')
+            forces = [motion.parse(f, entry=f'forces[{i}]') for i, f in enumerate(forces)]
+        dissipation = motion.parse(data.get('dissipation', 0), entry='dissipation')
+        field = _force_field(data.get('force_function'), parsers['force'])
+        symbols = [motion.parse(q) for q in coordinates]
+        return MechanicalSystem(bodies, symbols,
+                                parameters=[motion.parse(p) for p in parameters],
+                                force_function=field, dissipation=dissipation,
+                                forces=forces, name=name)
+    except DynSymError as err:
+        raise err.with_context(source=source) from None
+
+
+def _body(data, index, parsers, source):
+    from .rigid_body import RigidBody
+    entry = f"bodies[{index}]"
+    check_keys(data, BODY_KEYS, entry, source, "a body")
+    if 'name' not in data:
+        raise DescriptionError("missing key 'name'", entry=entry, source=source)
+    name = title(data, f"{entry}.name", source)
+    geometry, motion = parsers['geometry'], parsers['motion']
+
+    def vector(key, default, parser=geometry):
+        value = data.get(key, default)
+        if value is None:
+            return None
+        if not isinstance(value, list) or len(value) != 3:
+            raise DescriptionError(f"expected a list of 3 expressions, got {brief(value)}",
+                                   entry=f"{entry}.{key}")
+        return [parser.parse(c, entry=f"{entry}.{key}[{i}]") for i, c in enumerate(value)]
+
+    rotations_data = data.get('rotations') or []
+    if not isinstance(rotations_data, list):
+        raise DescriptionError(f"expected a list of pairs [axis, angle], got "
+                               f"{brief(rotations_data)}", entry=f"{entry}.rotations")
+    rotations = []
+    for i, rotation in enumerate(rotations_data):
+        sub = f"{entry}.rotations[{i}]"
+        if not isinstance(rotation, list) or len(rotation) != 2:
+            raise DescriptionError(f"expected a pair [axis, angle], got {brief(rotation)}",
+                                   entry=sub)
+        axis = rotation[0]
+        if isinstance(axis, bool) or axis not in (1, 2, 3):
+            raise ModelError(f"rotation axis must be 1, 2 or 3 (x, y, z), got {brief(axis)}",
+                             entry=sub)
+        rotations.append((int(axis), geometry.parse(rotation[1], entry=sub)))
+    inertia = data.get('inertia')
+    if inertia is not None:
+        if not (isinstance(inertia, list) and len(inertia) == 3 and
+                all(isinstance(row, list) and len(row) == 3 for row in inertia)):
+            raise DescriptionError(f"expected a 3x3 matrix (3 rows of 3 expressions), got "
+                                   f"{brief(inertia)}", entry=f"{entry}.inertia")
+        inertia = [[geometry.parse(c, entry=f"{entry}.inertia[{i}][{j}]")
+                    for j, c in enumerate(row)] for i, row in enumerate(inertia)]
+    parent = data.get('parent', 0)
+    if not isinstance(parent, (int, str)) or isinstance(parent, bool):
+        raise DescriptionError(f"expected 0, a body name or a body index, got {brief(parent)}",
+                               entry=f"{entry}.parent")
+    try:
+        return RigidBody(name, parent=parent, rotations=rotations,
+                         joint=vector('joint', [0, 0, 0]),
+                         velocity=vector('velocity', None, motion),
+                         mass_center=vector('mass_center', [0, 0, 0]),
+                         mass=geometry.parse(data.get('mass', 0), entry=f"{entry}.mass"),
+                         inertia=inertia)
+    except ModelError as err:
+        # the body reports "<name>.<field>"; the file reader speaks of bodies[i]
+        field = err.entry.split('.', 1)[1] if err.entry and '.' in err.entry else None
+        raise type(err)(err.message, entry=f"{entry}.{field}" if field else entry) from None
+
+
+def _force_field(data, parser):
+    from .force_functions import UniformGravity, NewtonianField
+    if data is None:
+        return None
+    check_keys(data, FIELD_KEYS, 'force_function', None, "a force function")
+    if len(data) != 1:
+        raise DescriptionError("give exactly one of uniform_gravity, newtonian, expression",
+                               entry='force_function')
+    (key, value), = data.items()
+    entry = f"force_function.{key}"
+    if key == 'expression':
+        return parser.parse(value, entry=entry)
+    if key == 'uniform_gravity':
+        if not isinstance(value, list) or len(value) != 3:
+            raise DescriptionError(f"expected a list of 3 expressions, got {brief(value)}",
+                                   entry=entry)
+        return UniformGravity([parser.parse(c, entry=f"{entry}[{i}]") for i, c in enumerate(value)])
+    check_keys(value, NEWTONIAN_KEYS, entry, None, "a Newtonian field")
+    missing = NEWTONIAN_KEYS - set(value)
+    if missing:
+        raise DescriptionError(f"missing key(s) {', '.join(sorted(missing))}", entry=entry)
+    direction = value['direction']
+    if not isinstance(direction, list) or len(direction) != 3:
+        raise DescriptionError(f"expected a list of 3 expressions, got {brief(direction)}",
+                               entry=f"{entry}.direction")
+    return NewtonianField(parser.parse(value['nu'], entry=f"{entry}.nu"),
+                          parser.parse(value['r'], entry=f"{entry}.r"),
+                          [parser.parse(c, entry=f"{entry}.direction[{i}]")
+                           for i, c in enumerate(direction)])
+
+
+def mechanical_system_to_dict(system):
+    r"""
+    The description mapping of ``system`` (inverse of
+    :func:`mechanical_system_from_dict`): :meth:`MechanicalSystem.to_dict
+    <sage_dynsym.mechanics.system.MechanicalSystem.to_dict>`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: from sage_dynsym.mechanics.description import mechanical_system_to_dict
+        sage: mechanical_system_to_dict(load(example_path('spherical_pendulum.yaml')))['kind']
+        'mechanical'
+    """
+    return system.to_dict()
