@@ -325,7 +325,7 @@ def _mechanical(system, out):
                 out.check("the stationary motions (terms of the function at rest times 2^k "
                           "for k unknowns)",
                           polynomial_terms(F.expr()) * 2 ** len(F.coordinates()))
-                _stationary(L, cyclic, lines)
+                _stationary(L, cyclic, lines, system.positive_parameters())
             out.run("Stationary motions" if partial else "Equilibria", stationary)
     if out.want('hamiltonian'):
         out.run("Hamiltonian", lambda lines: _hamiltonian(L, lines, out))
@@ -364,7 +364,7 @@ def _hamiltonian(L, lines, out):
     _formula(lines, "H = ", H.expr())
 
 
-def _stationary(L, cyclic, lines):
+def _stationary(L, cyclic, lines, positive=()):
     r"""The stationary motions (Routh function at rest, solved for the cyclic
     momenta) or equilibria, each with its existence conditions and a
     stability verdict (Routh--Lyapunov, then first approximation)."""
@@ -373,7 +373,6 @@ def _stationary(L, cyclic, lines):
     routh = reduced is not L
     what = ("Stationary motions (Routh function at rest, cyclic momenta constant)"
             if routh else "Equilibria (equations at rest)")
-    positive = getattr(L, 'positive_parameters', lambda: [])()
     try:
         solutions = stationary_motions(reduced, solve_for=reduced.momenta() if routh else None,
                                        positive=positive)

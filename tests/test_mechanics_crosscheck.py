@@ -32,7 +32,7 @@ from reference.sympy_chain import SympyChain  # noqa: E402
 from sage.all import SR, fast_callable, RDF  # noqa: E402
 from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity  # noqa: E402
 from sage_dynsym.symbols import velocity
-from sage_dynsym.io.expressions import acceleration  # noqa: E402
+from sage_dynsym.symbols import acceleration  # noqa: E402
 
 MAX_COORDINATES = 4
 N_RANDOM = 20

@@ -37,7 +37,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from sage.all import SR, RDF, var, diagonal_matrix, cos, sin, pi, sqrt, matrix  # noqa: E402
 
 from sage_dynsym import Lagrangian, MechanicalSystem, RigidBody, UniformGravity  # noqa: E402
-from sage_dynsym.io.expressions import t  # noqa: E402
+from sage_dynsym.symbols import t  # noqa: E402
 
 psi, theta, phi, A, C, m, g, l, w, R, a = var('psi theta phi A C m g l w R a')
 dpsi, dtheta, dphi = var('dpsi dtheta dphi')

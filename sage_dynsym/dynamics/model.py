@@ -73,6 +73,20 @@ class Model(SageObject):
         """
         return getattr(self, '_parameters', None)
 
+    def positive_parameters(self):
+        r"""
+        The parameters declared positive (``positive=`` or the ``positive:``
+        key of a description file); the analysis assumes no other sign.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).positive_parameters()
+            [m, l, g]
+        """
+        return list(getattr(self, '_positive', []))
+
     def equations(self):
         r"""The equations of motion of the model.
 

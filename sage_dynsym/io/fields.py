@@ -76,6 +76,30 @@ def declared_names(data, key, source, required=True, limit=None):
     return [check_name(v, f"{key}[{i}]", source=source) for i, v in enumerate(value)]
 
 
+def declared_positive(data, parameters, source):
+    r"""
+    The ``positive:`` list of a description: declared parameters known to
+    be positive (the analysis assumes no sign that is not declared).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.io.fields import declared_positive
+        sage: declared_positive({'positive': ['m', 'g']}, ['m', 'l', 'g'], 'p.yaml')
+        ['m', 'g']
+        sage: declared_positive({'positive': ['k']}, ['m'], 'p.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: p.yaml: positive: 'k' is not a declared parameter (positive: lists parameters known to be positive)
+    """
+    names = declared_names(data, 'positive', source, required=False, limit=MAX_PARAMETERS)
+    for name in names:
+        if name not in parameters:
+            raise DescriptionError(f"{name!r} is not a declared parameter (positive: lists "
+                                   "parameters known to be positive)", entry='positive',
+                                   source=source)
+    return names
+
+
 def title(data, entry, source=None):
     r"""
     The ``name`` of a model or body: a text (or a number) of at most

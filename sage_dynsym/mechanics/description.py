@@ -55,10 +55,10 @@ EXAMPLES::
 """
 from ..errors import DescriptionError, DynSymError, ModelError, brief
 from ..io.expressions import ExpressionParser
-from ..io.fields import check_keys, declared_names, title, MAX_PARAMETERS
+from ..io.fields import check_keys, declared_names, declared_positive, title, MAX_PARAMETERS
 from ..symbols import velocity, acceleration, momentum, check_mechanical_names
 
-MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'coordinates', 'force_function',
+MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'positive', 'coordinates', 'force_function',
                    'dissipation', 'forces', 'bodies', 'results'}
 REQUIRED_MECHANICAL = ('coordinates', 'bodies')
 BODY_KEYS = {'name', 'parent', 'rotations', 'joint', 'velocity', 'mass_center', 'mass',
@@ -162,6 +162,7 @@ def mechanical_system_from_dict(data, source=None):
                                    entry=key, source=source)
     name = title(data, 'name', source)
     parameters = declared_names(data, 'parameters', source, required=False, limit=MAX_PARAMETERS)
+    positive = declared_positive(data, parameters, source)
     coordinates = declared_names(data, 'coordinates', source, limit=MAX_COORDINATES)
     check_mechanical_names(coordinates, parameters, DescriptionError, source)
     velocities = [str(velocity(q)) for q in coordinates]
@@ -198,7 +199,8 @@ def mechanical_system_from_dict(data, source=None):
         return MechanicalSystem(bodies, symbols,
                                 parameters=[motion.parse(p) for p in parameters],
                                 force_function=field, dissipation=dissipation,
-                                forces=forces, name=name)
+                                forces=forces, name=name,
+                                positive=[motion.parse(p) for p in positive])
     except DynSymError as err:
         raise err.with_context(source=source) from None
 

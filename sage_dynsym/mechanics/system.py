@@ -80,6 +80,9 @@ class MechanicalSystem(Model):
     - ``dissipation`` -- (default: 0) Rayleigh function `R(q, \dot q)`
     - ``forces`` -- (optional) generalized forces, one per coordinate
     - ``name`` -- (optional) a name
+    - ``positive`` -- (optional) parameters known to be positive; the
+      analysis (stationary motions and their stability in reports) assumes
+      no other sign
 
     EXAMPLES::
 
@@ -117,7 +120,7 @@ class MechanicalSystem(Model):
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
-                 dissipation=0, forces=None, name=None):
+                 dissipation=0, forces=None, name=None, positive=()):
         bodies = list(bodies)
         for i, body in enumerate(bodies):
             if not isinstance(body, RigidBody):
@@ -138,8 +141,13 @@ class MechanicalSystem(Model):
             raise ModelError(f"expected {n} generalized forces, one per coordinate, got "
                              f"{len(self._forces)}", entry="forces")
         self._name = name
+        self._positive = [SR(p) for p in positive]
         if self._parameters is not None:
             self._check_symbols()
+            names = {str(p) for p in self._parameters}
+            for p in self._positive:
+                if str(p) not in names:
+                    raise ModelError(f"{p} is not a declared parameter", entry="positive")
         self._symbolic = Kinematics(self, SymbolicBackend())
         self._tree = self._symbolic.tree
 
@@ -197,6 +205,8 @@ class MechanicalSystem(Model):
             out['name'] = self.name()
         if self.parameters() is not None:
             out['parameters'] = [str(p) for p in self.parameters()]
+        if self._positive:
+            out['positive'] = [str(p) for p in self._positive]
         out['coordinates'] = [str(q) for q in self.coordinates()]
         field = self.force_field()
         if isinstance(field, UniformGravity):
