@@ -20,6 +20,7 @@ LAYERS = [
     ("symbols", ["sage_dynsym.symbols"]),
     ("input", ["sage_dynsym.io"]),
     ("algebra and analysis", ["sage_dynsym.analysis"]),
+    ("numerics", ["sage_dynsym.numerics"]),
     ("characteristic functions and equations", ["sage_dynsym.dynamics"]),
     ("systems on Lie algebras", ["sage_dynsym.lie"]),
     ("models", ["sage_dynsym.mechanics", "sage_dynsym.circuits"]),
