@@ -224,12 +224,12 @@ def lie_poisson_to_dict(system):
     return system.to_dict()
 
 
-def _algebra(spec, variables, parser, source):
-    if not isinstance(spec, dict) or len(spec) != 1:
+def _algebra(algebra_data, variables, parser, source):
+    if not isinstance(algebra_data, dict) or len(algebra_data) != 1:
         raise DescriptionError(f"expected a named algebra ({', '.join(NAMED)}) or a mapping "
                                "with one key, poisson_matrix or structure_constants, got "
-                               f"{brief(spec)}", entry='algebra', source=source)
-    (kind, value), = spec.items()
+                               f"{brief(algebra_data)}", entry='algebra', source=source)
+    (kind, value), = algebra_data.items()
     n = len(variables)
     if kind == 'poisson_matrix':
         if not isinstance(value, list) or len(value) != n or any(

@@ -130,7 +130,7 @@ def _integer_power(x, n):
 # points
 # ---------------------------------------------------------------------------
 
-def chunk_points(spec, start, stop):
+def chunk_points(layout, start, stop):
     r"""
     The coordinates of the points ``start, ..., stop - 1`` of a point
     specification (see the module documentation).
@@ -141,19 +141,20 @@ def chunk_points(spec, start, stop):
 
         sage: from sage_dynsym.scale.kernel import chunk_points
         sage: import numpy as np
-        sage: spec = ('samples', [0., -1.], [1., 1.], 7)
-        sage: whole = chunk_points(spec, 0, 5000)
-        sage: parts = [chunk_points(spec, a, b) for a, b in ((0, 4095), (4095, 4097), (4097, 5000))]
+        sage: layout = ('samples', [0., -1.], [1., 1.], 7)
+        sage: whole = chunk_points(layout, 0, 5000)
+        sage: parts = [chunk_points(layout, a, b) for a, b in ((0, 4095), (4095, 4097), (4097, 5000))]
         sage: all((np.concatenate([p[k] for p in parts]) == whole[k]).all() for k in (0, 1))
         True
     """
-    kind = spec[0]
+    kind = layout[0]
     if kind == 'grid':
-        axes = [np.asarray(a, dtype=float) for a in spec[1]]
+        axes = [np.asarray(a, dtype=float) for a in layout[1]]
         index = np.unravel_index(np.arange(start, stop), tuple(len(a) for a in axes))
         return [a[i] for a, i in zip(axes, index)]
     if kind == 'samples':
-        lows, highs, seed = (np.asarray(spec[1], float), np.asarray(spec[2], float), int(spec[3]))
+        lows, highs, seed = (np.asarray(layout[1], float), np.asarray(layout[2], float),
+                             int(layout[3]))
         start, stop = int(start), int(stop)
         first, last = start // BLOCK, max(start, stop - 1) // BLOCK
         blocks = [np.random.default_rng([seed, int(b)]).random((BLOCK, len(lows)))

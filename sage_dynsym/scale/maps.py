@@ -206,7 +206,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         lhs = B != identity_matrix(SR, B.nrows())
         task = dict(method='eigvals', size=J.nrows(), lhs=lhs,
                     program=compile_expressions(J.list() + (B.list() if lhs else []), keys, entry))
-    task.update(points=points.spec, tol=tol)
+    task.update(points=points.layout, tol=tol)
     alpha = np.empty(points.size)
     stable = np.empty(points.size, dtype=bool)
 
@@ -535,7 +535,7 @@ class StabilityMap(SageObject):
         if self._points.is_grid():
             columns = self._points.axes()
         else:
-            columns = chunk_points(self._points.spec, 0, self._points.size)
+            columns = chunk_points(self._points.layout, 0, self._points.size)
         return dict(zip(self._points.keys, columns))
 
     def max_real_part(self):
@@ -661,7 +661,7 @@ class StabilityMap(SageObject):
         program = compile_expressions(flat, self._points.keys, entry="StabilityMap.exact")
         result = np.empty(self._points.size, dtype=bool)
         for a, b in chunks(self._points.size, CHUNK):
-            held = iter(run_program(program, chunk_points(self._points.spec, a, b), b - a))
+            held = iter(run_program(program, chunk_points(self._points.layout, a, b), b - a))
             verdict = np.zeros(b - a, dtype=bool)
             for alt in alternatives:
                 ok = np.ones(b - a, dtype=bool)
@@ -800,7 +800,7 @@ class StabilityMap(SageObject):
             raise AnalysisError("a map of random samples is drawn in two parameters",
                                 entry="StabilityMap.plot")
         n = min(self._points.size, 20000)        # enough points to see the regions
-        X, Y = chunk_points(self._points.spec, 0, n)
+        X, Y = chunk_points(self._points.layout, 0, n)
         s = self._stable[:n]
         G = point(list(zip(X[s], Y[s])), color='green', size=4, **options)
         G += point(list(zip(X[~s], Y[~s])), color='red', size=4)

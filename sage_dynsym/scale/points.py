@@ -32,12 +32,22 @@ from ..errors import AnalysisError
 class Points:
     r"""
     The points of a computation: ``keys`` (the parameters, in order),
-    ``shape`` (of the result arrays), ``size``, ``spec`` (for the kernels)
+    ``shape`` (of the result arrays), ``size``, ``layout`` (for the kernels)
     and whether they form a grid.
+
+    EXAMPLES: :func:`parse_points` makes them; the kernels expand ``layout``::
+
+        sage: from sage_dynsym.scale.points import parse_points
+        sage: from sage_dynsym.scale.kernel import chunk_points
+        sage: P = parse_points({'a': (0, 1, 3), 'b': (10, 20, 2)})
+        sage: P.keys, P.shape, P.size
+        (['a', 'b'], (3, 2), 6)
+        sage: chunk_points(P.layout, 0, P.size)
+        [array([0. , 0. , 0.5, 0.5, 1. , 1. ]), array([10., 20., 10., 20., 10., 20.])]
     """
 
-    def __init__(self, keys, spec, shape):
-        self.keys, self.spec, self.shape = list(keys), spec, tuple(shape)
+    def __init__(self, keys, layout, shape):
+        self.keys, self.layout, self.shape = list(keys), layout, tuple(shape)
         self.size = int(np.prod(self.shape, dtype=np.int64))
 
     def is_grid(self):
@@ -49,7 +59,7 @@ class Points:
             sage: parse_points({'a': (0, 1, 3)}).is_grid(), parse_points({'a': (0, 1)}, 9).is_grid()
             (True, False)
         """
-        return self.spec[0] == 'grid'
+        return self.layout[0] == 'grid'
 
     def axes(self):
         r"""The axes of a grid (list of 1-D arrays), ``None`` for samples.
@@ -60,7 +70,7 @@ class Points:
             sage: parse_points({'a': (0, 1, 3)}).axes(), parse_points({'a': (0, 1)}, 9).axes()
             ([array([0. , 0.5, 1. ])], None)
         """
-        return list(self.spec[1]) if self.is_grid() else None
+        return list(self.layout[1]) if self.is_grid() else None
 
     def __repr__(self):
         names = ', '.join(map(str, self.keys))
@@ -115,21 +125,21 @@ def parse_points(parameters, samples=None, seed=0, entry="parameters"):
             raise AnalysisError(f"expected a positive number of random points, got {samples!r}",
                                 entry="samples")
         lows, highs = [], []
-        for key, spec in parameters.items():
-            low, high, _ = _range(key, spec, entry, samples=True)
+        for key, axis_range in parameters.items():
+            low, high, _ = _range(key, axis_range, entry, samples=True)
             lows.append(low)
             highs.append(high)
         return Points(parameters, ('samples', lows, highs, int(seed)), (int(samples),))
     axes = []
-    for key, spec in parameters.items():
-        if isinstance(spec, np.ndarray):
-            values = np.asarray(spec, dtype=float)
+    for key, axis_range in parameters.items():
+        if isinstance(axis_range, np.ndarray):
+            values = np.asarray(axis_range, dtype=float)
             if values.ndim != 1 or not len(values) or not np.isfinite(values).all():
                 raise AnalysisError("empty range: an array of values must be 1-D, finite and "
                                     "not empty", entry=f"{entry}[{key}]")
             axes.append(values)
             continue
-        low, high, n = _range(key, spec, entry)
+        low, high, n = _range(key, axis_range, entry)
         axes.append(np.linspace(low, high, n))
     return Points(parameters, ('grid', axes), [len(a) for a in axes])
 
@@ -146,25 +156,27 @@ def _true(method):
         return False
 
 
-def _range(key, spec, entry, samples=False):
+def _range(key, axis_range, entry, samples=False):
     where = f"{entry}[{key}]"
     shape = "(low, high)" if samples else "(low, high, n)"
-    ok = isinstance(spec, (tuple, list)) and len(spec) in ((2, 3) if samples else (3,))
+    ok = (isinstance(axis_range, (tuple, list))
+          and len(axis_range) in ((2, 3) if samples else (3,)))
     try:
-        low, high = float(spec[0]), float(spec[1])
-        n = int(spec[2]) if ok and len(spec) == 3 else 2
-        ok = ok and (len(spec) == 2 or _is_integer(spec[2]))
+        low, high = float(axis_range[0]), float(axis_range[1])
+        n = int(axis_range[2]) if ok and len(axis_range) == 3 else 2
+        ok = ok and (len(axis_range) == 2 or _is_integer(axis_range[2]))
     except (TypeError, ValueError, IndexError, KeyError):
         ok = False
     if not ok:
         raise AnalysisError(f"expected {shape} with real numbers low, high"
-                            f"{'' if samples else ' and an integer n'}, got {spec!r}", entry=where)
+                            f"{'' if samples else ' and an integer n'}, got {axis_range!r}",
+                            entry=where)
     if not (np.isfinite(low) and np.isfinite(high)):
-        raise AnalysisError(f"the bounds must be finite, got {tuple(spec)!r}", entry=where)
+        raise AnalysisError(f"the bounds must be finite, got {tuple(axis_range)!r}", entry=where)
     if n < 1:
-        raise AnalysisError(f"empty range {tuple(spec)!r}: n must be a positive integer",
+        raise AnalysisError(f"empty range {tuple(axis_range)!r}: n must be a positive integer",
                             entry=where)
     if not (low < high or (low == high and n == 1 and not samples)):
-        raise AnalysisError(f"empty range {tuple(spec)!r}: expected low < high (or low = high "
-                            "with n = 1)", entry=where)
+        raise AnalysisError(f"empty range {tuple(axis_range)!r}: expected low < high (or low = "
+                            "high with n = 1)", entry=where)
     return low, high, n

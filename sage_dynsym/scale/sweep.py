@@ -165,7 +165,7 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
     if chunk_size is None:
         chunk_size = CHUNK if vectorized else max(1, min(1024, math.ceil(points.size / 64)))
     ranges = chunks(points.size, chunk_size)
-    task = dict(points=points.spec, names=names, fixed=fixed, function=call,
+    task = dict(points=points.layout, names=names, fixed=fixed, function=call,
                 vectorized=bool(vectorized))
     results = [None] * len(ranges)
     failures = []
@@ -295,7 +295,7 @@ class Sweep(SageObject):
         if self._points.is_grid():
             columns = self._points.axes()
         else:
-            columns = chunk_points(self._points.spec, 0, self._points.size)
+            columns = chunk_points(self._points.layout, 0, self._points.size)
         return dict(zip(self._keys, columns))
 
     def values(self):
