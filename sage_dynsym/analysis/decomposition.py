@@ -253,28 +253,101 @@ class ShapePrime:
         return f"Zero-dimensional prime of degree {self._G.degree()} where {self._G} = 0"
 
     def ring(self):
+        r"""The polynomial ring of the prime.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.ring()
+            Multivariate Polynomial Ring in x, y over Rational Field
+        """
         return self._rad.ring()
 
     def gens(self):
         r"""Generators of the radical of the part it comes from (a larger
-        ideal's points); see :meth:`defining_polynomial`."""
+        ideal's points); see :meth:`defining_polynomial`.
+
+        EXAMPLES: the prime `(y - x^2, x^5 - x - 1)` comes from a part that
+        also holds the point `(2, 4)`::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.gens()
+            [x^2 - y, 2*x*y^2 - y^3 - x + y - 2]
+        """
         return self._rad.gens()
 
     def defining_polynomial(self):
         r"""``(u, G)``: the component is where ``G(u)`` vanishes on the
-        radical's points."""
+        radical's points.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.defining_polynomial()
+            (x + 2*y, u^5 - 8*u^3 - 28*u^2 + 5*u - 17)
+        """
         return self._u, self._G
 
     def reduce(self, f):
+        r"""``f`` on the points of the prime, `f(g(u))` modulo `G(u)`:
+        zero if and only if ``f`` is in the prime.
+
+        EXAMPLES: the equations of the prime reduce to zero, ``x - 2`` (zero
+        only at the other point of the part) does not::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.reduce(y - x^2), P.reduce(x^5 - x - 1)
+            (0, 0)
+            sage: P.reduce(x - 2)
+            40/4399*u^4 + 248/4399*u^3 - 542/4399*u^2 - 1841/4399*u - 12094/4399
+        """
         return _on_shape(self.ring()(f), (self._u, self._G, self._gs))
 
     def dimension(self):
+        r"""The Krull dimension, `0` (finitely many points).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.dimension()
+            0
+        """
         return 0
 
     def vector_space_dimension(self):
+        r"""The number of (complex) points, the degree of `G`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.vector_space_dimension()
+            5
+        """
         return self._G.degree()
 
     def is_one(self):
+        r"""Whether the ideal is the whole ring: never (it has points).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: R.<x, y> = QQ[]
+            sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
+            sage: P.is_one()
+            False
+        """
         return False
 
 

@@ -122,6 +122,16 @@ class EquilibriumFamily:
     for the eliminated unknowns and the remaining equations.
 
     Created by :func:`equilibrium_family`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.elimination import equilibrium_family
+        sage: x, y, z, a = var('x y z a')
+        sage: fam = equilibrium_family([y - x^2, z - y - a, z*x - 1], [x, y, z],
+        ....:                          eliminate=[y, z]); fam
+        Family of equilibria: 2 unknowns eliminated, 1 equations remain
+        sage: fam.substitutions(), fam.equations()
+        ({y: x^2, z: x^2 + a}, [(x^2 + a)*x - 1])
     """
 
     def __init__(self, variables, substitutions, equations, nonzero, groebner):

@@ -75,6 +75,15 @@ class StabilityVerdict(SageObject):
     A verdict may also carry the method that decided it (:meth:`method`)
     and a *region* (:meth:`region`): a list of alternatives, each a list of
     relationals, under which it holds.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.kelvin_chetaev import StabilityVerdict, kelvin_chetaev
+        sage: a = var('a')
+        sage: StabilityVerdict('stable', 'the potential energy has a minimum', conditions=[a])
+        stable if [a]: the potential energy has a minimum
+        sage: kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
+        unstable: the potential energy has an odd degree of instability (1): ...
     """
 
     def __init__(self, verdict, reason, conditions=(), cases=(), method=None,

@@ -54,6 +54,18 @@ class NotPolynomial(ValueError):
     r"""
     Raised when an expression cannot be written in a
     :class:`TrigPolynomialRing`; callers then work in the symbolic ring.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing, NotPolynomial
+        sage: a = var('a')
+        sage: try:
+        ....:     TrigPolynomialRing([a], []).convert(sqrt(a))
+        ....: except NotPolynomial as error:
+        ....:     print(error)
+        sqrt(a) is not polynomial in the rotation variables and parameters
+        sage: issubclass(NotPolynomial, ValueError)
+        True
     """
 
 
@@ -188,17 +200,64 @@ class SymbolicBackend:
     zero = SR(0)
 
     def convert(self, expr):
+        r"""``expr`` as an element of the backend: a symbolic expression.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: B = SymbolicBackend(); a, l, da = var('a l da')
+            sage: B.convert(1).parent()
+            Symbolic Ring
+        """
         return SR(expr)
 
-    trig = staticmethod(lambda angle: symbolic_trig(angle))
+    @staticmethod
+    def trig(angle):
+        r"""The pair `(\cos, \sin)` of ``angle`` (see :func:`symbolic_trig`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: B = SymbolicBackend(); a, l, da = var('a l da')
+            sage: B.trig(a)
+            (cos(a), sin(a))
+        """
+        return symbolic_trig(angle)
 
     def diff(self, element, symbol):
+        r"""The derivative of ``element`` with respect to ``symbol``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: B = SymbolicBackend(); a, l, da = var('a l da')
+            sage: B.diff(l^2*da^2/2, da)
+            da*l^2
+        """
         return element.diff(symbol)
 
     def at_zero(self, element, symbols):
+        r"""``element`` with every one of ``symbols`` set to zero.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: B = SymbolicBackend(); a, l, da = var('a l da')
+            sage: B.at_zero(l*da + l^2, [da])
+            l^2
+        """
         return element.subs({v: 0 for v in symbols})
 
     def to_symbolic(self, element):
+        r"""``element`` as a symbolic expression (itself).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: B = SymbolicBackend(); a, l, da = var('a l da')
+            sage: B.to_symbolic(l*cos(a))
+            l*cos(a)
+        """
         return element
 
 
@@ -343,6 +402,17 @@ class TrigPolynomialRing:
         return list(self._atoms)
 
     def convert(self, expr):
+        r"""The ring element of the symbolic expression ``expr``; raises
+        :class:`NotPolynomial` if it is not polynomial in the generators.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: a, l, da = var('a l da')
+            sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
+            sage: R.convert(l*da*cos(a))
+            dynsymcos0*da*l
+        """
         expr = SR(expr)
         try:
             return self.ring(expr.subs(self._forward) if self._forward else expr)
@@ -351,15 +421,47 @@ class TrigPolynomialRing:
                                 "and parameters") from None
 
     def trig(self, angle):
+        r"""The pair `(\cos, \sin)` of ``angle`` as ring elements: the
+        generators of an angle of the ring, else converted values.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: a, l, da = var('a l da')
+            sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
+            sage: R.trig(a), R.trig(pi/2)
+            ((dynsymcos0, dynsymsin0), (0, 1))
+        """
         angle = SR(angle)
         if angle in self._pairs:
             return self._pairs[angle]
         return self.convert(angle.cos()), self.convert(angle.sin())
 
     def diff(self, element, symbol):
+        r"""The derivative of ``element`` with respect to ``symbol`` (a
+        generator of the ring, such as a velocity).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: a, l, da = var('a l da')
+            sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
+            sage: R.to_symbolic(R.diff(R.convert(l^2*da^2/2)*c, da))
+            da*l^2*cos(a)
+        """
         return element.derivative(self.ring(str(symbol)))
 
     def at_zero(self, element, symbols):
+        r"""``element`` with every one of ``symbols`` (generators) set to zero.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: a, l, da = var('a l da')
+            sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
+            sage: R.to_symbolic(R.at_zero(R.convert(l*da + l^2)*c, [da]))
+            l^2*cos(a)
+        """
         return element.subs({self.ring(str(v)): 0 for v in symbols})
 
     def reduce(self, element):
@@ -655,6 +757,17 @@ class RingCalculus:
             self._chains.append((c, s, by_coordinate, rate))
 
     def convert(self, expr):
+        r"""The ring element of the symbolic expression ``expr``.
+
+        EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: x, z, w, t = var('x z w t')
+            sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
+            sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
+            sage: C.convert(z^2)
+            z^2
+        """
         return self.ring.convert(expr)
 
     def _through_angles(self, element, select):
@@ -672,6 +785,20 @@ class RingCalculus:
         return result
 
     def derivative(self, element, k):
+        r"""
+        The derivative of ``element`` with respect to the coordinate of
+        index ``k``, or with respect to time (explicit dependence) for
+        ``k = None``.
+
+        EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: x, z, w, t = var('x z w t')
+            sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
+            sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
+            sage: [C.symbolic(C.derivative(p, k)) for k in (0, 1, None)]
+            [-z^2*sin(t*w + x), 2*z*cos(t*w + x), -w*z^2*sin(t*w + x)]
+        """
         if k is None:
             direct = element.derivative(self._time) if self._time is not None else self.zero
             return direct + self._through_angles(element, lambda by, rate: rate)
@@ -682,6 +809,17 @@ class RingCalculus:
         return set(element.variables())
 
     def dependencies(self, element):
+        r"""The set of the indices of the coordinates ``element`` depends on.
+
+        EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: x, z, w, t = var('x z w t')
+            sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
+            sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
+            sage: C.dependencies(p), C.dependencies(C.convert(z)), C.dependencies(C.convert(w))
+            ({0, 1}, {1}, set())
+        """
         used = self._uses(element)
         found = {k for k, v in enumerate(self._direct) if v is not None and v in used}
         for c, s, by_coordinate, _ in self._chains:
@@ -690,14 +828,47 @@ class RingCalculus:
         return found
 
     def depends_on_time(self, element):
+        r"""Whether ``element`` depends explicitly on time.
+
+        EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: x, z, w, t = var('x z w t')
+            sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
+            sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
+            sage: C.depends_on_time(p), C.depends_on_time(C.convert(z))
+            (True, False)
+        """
         used = self._uses(element)
         return (self._time is not None and self._time in used) or any(
             rate is not None and (c in used or s in used) for c, s, _, rate in self._chains)
 
     def is_zero(self, element):
+        r"""Whether ``element`` is zero (a reduced element: exactly).
+
+        EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: x, z, w, t = var('x z w t')
+            sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
+            sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
+            sage: C.is_zero(C.derivative(C.convert(w), 0)), C.is_zero(p)
+            (True, False)
+        """
         return element.is_zero()
 
     def symbolic(self, element):
+        r"""The reduced ``element`` as a symbolic expression.
+
+        EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
+
+            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: x, z, w, t = var('x z w t')
+            sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
+            sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
+            sage: C.symbolic(p)
+            z^2*cos(t*w + x)
+        """
         return self.ring.to_symbolic(element, reduced=True)
 
 

@@ -63,24 +63,76 @@ class SymbolicCalculus:
         self.zero = SR(0)
 
     def convert(self, expr):
+        r"""``expr`` as an element of the calculus: a symbolic expression.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
+            sage: x, y, t, a = var('x y t a'); C = SymbolicCalculus([x, y])
+            sage: C.convert(1).parent()
+            Symbolic Ring
+        """
         return SR(expr)
 
     def dependencies(self, element):
+        r"""The set of the indices of the coordinates ``element`` depends on.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
+            sage: x, y, t, a = var('x y t a'); C = SymbolicCalculus([x, y])
+            sage: C.dependencies(x*y*t + a), C.dependencies(a*t)
+            ({0, 1}, set())
+        """
         return {self._position[v] for v in SR(element).variables() if v in self._position}
 
     def depends_on_time(self, element):
+        r"""Whether ``element`` depends explicitly on the time ``t``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
+            sage: x, y, t, a = var('x y t a'); C = SymbolicCalculus([x, y])
+            sage: C.depends_on_time(x*t), C.depends_on_time(x*a)
+            (True, False)
+        """
         return SR(element).has(t)
 
     def derivative(self, element, k):
         r"""
         `\partial/\partial q_k`, or `\partial/\partial t` for ``k = None``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
+            sage: x, y, t, a = var('x y t a'); C = SymbolicCalculus([x, y])
+            sage: C.derivative(x^2*y*t, 0), C.derivative(x^2*y*t, None)
+            (2*t*x*y, x^2*y)
         """
         return SR(element).diff(t if k is None else self._coordinates[k])
 
     def is_zero(self, element):
+        r"""Whether ``element`` is zero structurally (no simplification).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
+            sage: x, y, t, a = var('x y t a'); C = SymbolicCalculus([x, y])
+            sage: C.is_zero(x - x), C.is_zero(sin(x)^2 + cos(x)^2 - 1)
+            (True, False)
+        """
         return SR(element).is_trivial_zero()
 
     def symbolic(self, element):
+        r"""``element`` as a symbolic expression.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.natural_equations import SymbolicCalculus
+            sage: x, y, t, a = var('x y t a'); C = SymbolicCalculus([x, y])
+            sage: C.symbolic(2).parent()
+            Symbolic Ring
+        """
         return SR(element)
 
 

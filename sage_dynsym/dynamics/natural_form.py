@@ -29,6 +29,25 @@ from ..analysis.trigonometric import trig_rational_simplify
 
 
 def symbol_list(symbols, what):
+    r"""
+    ``symbols`` as a list of distinct symbolic variables; raises
+    :class:`~sage_dynsym.errors.ModelError` naming ``what`` otherwise.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.natural_form import symbol_list
+        sage: x, y = var('x y')
+        sage: symbol_list([x, 'y'], 'coordinates')
+        [x, y]
+        sage: symbol_list([x, x], 'coordinates')
+        Traceback (most recent call last):
+        ...
+        ModelError: coordinates must be distinct, got [x, x]
+        sage: symbol_list([x^2], 'coordinates')
+        Traceback (most recent call last):
+        ...
+        ModelError: coordinates must be symbolic variables, got x^2
+    """
     symbols = [SR(s) for s in symbols]
     for s in symbols:
         if not s.is_symbol():
@@ -41,6 +60,15 @@ def symbol_list(symbols, what):
 def is_at_most_quadratic(expr, velocities):
     r"""
     Whether ``expr`` is a polynomial of total degree at most 2 in ``velocities``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.natural_form import is_at_most_quadratic
+        sage: x, dx, dy, m, a = var('x dx dy m a')
+        sage: is_at_most_quadratic(m*dx^2/2 + a*dx*dy + x, [dx, dy])
+        True
+        sage: is_at_most_quadratic(dx^3, [dx, dy]), is_at_most_quadratic(sin(dx), [dx])
+        (False, False)
     """
     if not velocities:
         return True
@@ -53,6 +81,13 @@ def natural_form(A, A1, A0, velocities):
     r"""
     `\tfrac12 \dot q^T A \dot q + A_1\cdot\dot q + A_0`, each
     off-diagonal pair written once.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.natural_form import natural_form
+        sage: x, dx, dy, m, a = var('x dx dy m a')
+        sage: natural_form(matrix([[m, a], [a, m]]), [x, 0], -x^2, [dx, dy])
+        a*dx*dy + 1/2*dx^2*m + 1/2*dy^2*m + dx*x - x^2
     """
     n = len(velocities)
     v = velocities
@@ -66,6 +101,13 @@ def linear_collected(expr, symbols):
     ``expr``, linear in ``symbols``, as `\sum_s c_s s + c_0` with every
     coefficient simplified by
     :func:`~sage_dynsym.analysis.trigonometric.trig_rational_simplify`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.natural_form import linear_collected
+        sage: a, m, p, q = var('a m p q')
+        sage: linear_collected((p - q)*cos(a)^2 + (p - q)*sin(a)^2 + a*q + m, [p, q])
+        (a - 1)*q + m + p
     """
     expr = SR(expr)
     rest = trig_rational_simplify(expr.subs({s: 0 for s in symbols}))
@@ -200,6 +242,15 @@ class Elimination:
     def products(self, u, w):
         r"""
         The terms of `u^T A^{-1} w`.
+
+        EXAMPLES: for the heavy symmetric top, the entries of `A^{-1}
+        (p, q)`::
+
+            sage: from sage_dynsym.dynamics.natural_form import Elimination
+            sage: a, A, C, p, q = var('a A C p q')
+            sage: E = Elimination(matrix([[A*sin(a)^2 + C*cos(a)^2, C*cos(a)], [C*cos(a), C]]))
+            sage: sum(E.products([p, q], [1, 0])), sum(E.products([p, q], [0, 1]))
+            (-(q*cos(a) - p)/(A*sin(a)^2), q/C + (q*cos(a) - p)*cos(a)/(A*sin(a)^2))
         """
         yu, yw = self._reduced(u), self._reduced(w)
         terms = [yu[k] * yw[k] / d for k, d in zip(self._order, self._pivots)]
@@ -212,6 +263,15 @@ class Elimination:
         r"""
         The terms of `u^T A^{-1} u`: `y_k^2/D_k`, with each `y_k` collected
         in the symbols ``collect`` (in which ``u`` is linear).
+
+        EXAMPLES: for the heavy symmetric top, `u^T A^{-1} u` at `u = (p - k,
+        q)` as a sum of squares::
+
+            sage: from sage_dynsym.dynamics.natural_form import Elimination
+            sage: a, A, C, p, q, k = var('a A C p q k')
+            sage: E = Elimination(matrix([[A*sin(a)^2 + C*cos(a)^2, C*cos(a)], [C*cos(a), C]]))
+            sage: E.squares([p - k*cos(a)^2 - k*sin(a)^2, q], collect=[p, q])
+            [q^2/C, (q*cos(a) + k - p)^2/(A*sin(a)^2)]
         """
         y = {i: linear_collected(v, collect) for i, v in self._reduced(u).items()}
         terms = [y[k] ** 2 / d for k, d in zip(self._order, self._pivots)]
