@@ -296,16 +296,42 @@ class Circuit(Model):
         return self._cgraph
 
     def name(self):
-        r"""The title of the circuit (or ``None``)."""
+        r"""The title of the circuit (or ``None``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']], name='LC').name()
+            'LC'
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']]).name() is None
+            True
+        """
         return self._name
 
     def parameters(self):
-        r"""The extra symbols declared for long-form values."""
+        r"""The extra symbols declared for long-form values.
+
+        EXAMPLES: a transformer, whose mutual inductance ``M`` is a parameter::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 0, 'L2'], [0, 2, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:             parameters=['M'])
+            sage: C.parameters()
+            ('M',)
+        """
         return self._parameters
 
     def branches(self):
         r"""
         The branches, a tuple of :class:`~sage_dynsym.circuits.elements.Branch`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']]).branches()
+            (Branch(index=0, name='L1', kind='inductor', tail=1, head=2, value=L1),
+             Branch(index=1, name='C1', kind='capacitor', tail=2, head=1, value=C1))
         """
         return self._branches
 
@@ -313,6 +339,15 @@ class Circuit(Model):
         r"""
         The mutual inductances, a tuple of
         :class:`~sage_dynsym.circuits.elements.Coupling`.
+
+        EXAMPLES: a transformer::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 0, 'L2'], [0, 2, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:             parameters=['M'])
+            sage: C.couplings()
+            (Coupling(first='L1', second='L2', value=M),)
         """
         return self._couplings
 
@@ -475,6 +510,13 @@ class Circuit(Model):
         r"""
         The mixed potential `P(i, u) = F(i) - G(u) + (i, \gamma u)` of a
         complete circuit (see :meth:`brayton_moser`).
+
+        EXAMPLES: a loop of an inductor, a resistor and a capacitor::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
+            sage: C.mixed_potential()
+            -1/2*R1*i1^2 + i1*u2
         """
         return self.brayton_moser().mixed_potential()
 
@@ -482,6 +524,13 @@ class Circuit(Model):
         r"""
         The state variables, pairs ``(symbol, element name)``: inductor
         currents ``i1, ..., ir`` first, then capacitor voltages.
+
+        EXAMPLES: a loop of an inductor, a resistor and a capacitor::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
+            sage: C.state_variables()
+            [(i1, 'L1'), (u2, 'C1')]
         """
         return self.brayton_moser().state_variables()
 
@@ -490,5 +539,12 @@ class Circuit(Model):
         The right-hand sides of `L_k\, di_k/dt = \partial P/\partial i_k`
         and `C_l\, du_l/dt = -\partial P/\partial u_l`, in the order of
         :meth:`state_variables`.
+
+        EXAMPLES: a loop of an inductor, a resistor and a capacitor::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
+            sage: C.state_equations()     # L1 di1/dt = u2 - R1 i1, C1 du2/dt = -i1
+            [-R1*i1 + u2, -i1]
         """
         return self.brayton_moser().state_equations()

@@ -91,9 +91,28 @@ One elementary branch: position ``index`` of its entry in the branch list, eleme
 from node ``tail`` to node ``head``; ``value`` is the element's symbolic
 value (for a nonlinear resistor: ``None`` for the unknown function
 ``function(name)``, or its characteristic as an expression in ``u``).
+
+EXAMPLES::
+
+    sage: from sage_dynsym.circuits.elements import parse_entries
+    sage: branches, _ = parse_entries([[1, 2, 'L1'], [2, 1, 'C1']])
+    sage: b = branches[0]; b
+    Branch(index=0, name='L1', kind='inductor', tail=1, head=2, value=L1)
+    sage: b.kind, b.tail, b.head
+    ('inductor', 1, 2)
 """
 Coupling = namedtuple('Coupling', 'first second value')
-Coupling.__doc__ = "A mutual inductance ``value`` between inductors ``first`` and ``second``."
+Coupling.__doc__ = r"""
+A mutual inductance ``value`` between inductors ``first`` and ``second``.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.circuits.elements import parse_entries
+    sage: _, (c,) = parse_entries([[1, 2, 'L1'], [2, 1, 'L2'],
+    ....:     {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}], ['M'])
+    sage: c, c.value
+    (Coupling(first='L1', second='L2', value=M), M)
+"""
 
 
 def own_variable(kind):

@@ -42,7 +42,16 @@ class UnionFind:
         self._parent = {v: v for v in nodes}
 
     def find(self, v):
-        r"""The representative of the set of ``v``."""
+        r"""The representative of the set of ``v``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.graph import UnionFind
+            sage: U = UnionFind([1, 2, 3]); U.union(1, 2)
+            True
+            sage: U.find(1) == U.find(2), U.find(3)
+            (True, 3)
+        """
         root = v
         while self._parent[root] != root:
             root = self._parent[root]
@@ -51,7 +60,15 @@ class UnionFind:
         return root
 
     def union(self, a, b):
-        r"""Join the sets of ``a`` and ``b``; return ``False`` if they were one set."""
+        r"""Join the sets of ``a`` and ``b``; return ``False`` if they were one set.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.graph import UnionFind
+            sage: U = UnionFind([1, 2, 3])
+            sage: U.union(1, 2), U.union(2, 1), U.union(3, 1)
+            (True, False, True)
+        """
         ra, rb = self.find(a), self.find(b)
         if ra == rb:
             return False
@@ -222,6 +239,18 @@ class RootedTree:
     walked along its orientation. ``loop(chord)`` is the fundamental loop of
     a branch outside the tree, oriented along that branch and starting with
     it.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.elements import parse_entries
+        sage: from sage_dynsym.circuits.graph import CircuitGraph
+        sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
+        sage: CG = CircuitGraph(branches)
+        sage: T = CG.rooted(CG.spanning_tree(priority=['voltage_source', 'capacitor']))
+        sage: [branches[k].name for k in sorted(T.positions)]
+        ['C1', 'E1']
+        sage: [(b.name, s) for b, s in T.path(2, 1)]    # along C1, against E1
+        [('C1', 1), ('E1', -1)]
     """
 
     def __init__(self, cgraph, tree):
@@ -251,7 +280,19 @@ class RootedTree:
         return parent, (b, 1 if b.tail == v else -1)
 
     def path(self, a, b):
-        r"""The tree path from node ``a`` to node ``b``: a list of ``(branch, sign)``."""
+        r"""The tree path from node ``a`` to node ``b``: a list of ``(branch, sign)``.
+
+        EXAMPLES: the tree of the module's example: ``C1`` (from node 2 to
+        3) and ``E1`` (from 1 to 3)::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
+            sage: CG = CircuitGraph(branches)
+            sage: T = CG.rooted(CG.spanning_tree(priority=['voltage_source', 'capacitor']))
+            sage: [(b.name, s) for b, s in T.path(1, 2)]
+            [('E1', 1), ('C1', -1)]
+        """
         up, down = [], []
         while self.depth[a] > self.depth[b]:
             a, step = self._step(a)
@@ -267,5 +308,19 @@ class RootedTree:
         return up + down[::-1]
 
     def loop(self, chord):
-        r"""The fundamental loop of ``chord``, oriented along it, starting with it."""
+        r"""The fundamental loop of ``chord``, oriented along it, starting with it.
+
+        EXAMPLES: the tree of the module's example: ``C1`` (from node 2 to
+        3) and ``E1`` (from 1 to 3)::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
+            sage: CG = CircuitGraph(branches)
+            sage: T = CG.rooted(CG.spanning_tree(priority=['voltage_source', 'capacitor']))
+            sage: [(b.name, s) for b, s in T.loop(branches[0])]     # R1
+            [('R1', 1), ('C1', 1), ('E1', -1)]
+            sage: [(b.name, s) for b, s in T.loop(branches[2])]     # L1
+            [('L1', 1), ('E1', 1)]
+        """
         return [(chord, 1)] + self.path(chord.head, chord.tail)

@@ -186,6 +186,15 @@ class LoopAnalysis(_BranchAnalysis):
     Loop-current description of a linear circuit (see the module
     documentation). Built by
     :meth:`~sage_dynsym.circuits.circuit.Circuit.loop_analysis`.
+
+    EXAMPLES: a series RLC circuit has one loop::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']]).loop_analysis()
+        sage: A.loops()
+        [[(2, 3, 'L1'), (3, 0, 'C1'), (0, 1, 'E1'), (1, 2, 'R1')]]
+        sage: A.kinetic_energy(), A.potential_energy(), A.dissipation(), A.source_vector()
+        (1/2*L1*dq1^2, 1/2*q1^2/C1, 1/2*R1*dq1^2, [E1])
     """
 
     def __init__(self, circuit):
@@ -311,6 +320,16 @@ class NodeAnalysis(_BranchAnalysis):
     Node-potential description of a linear circuit (see the module
     documentation). Built by
     :meth:`~sage_dynsym.circuits.circuit.Circuit.node_analysis`.
+
+    EXAMPLES: a series RLC circuit, node 0 grounded (node 1 is fixed by the
+    source)::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: A = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']]).node_analysis()
+        sage: A.ground(), A.coordinates()
+        (0, [phi2, phi3])
+        sage: A.kinetic_energy(), A.potential_energy(), A.dissipation()
+        (1/2*C1*dphi3^2, 1/2*(phi2 - phi3)^2/L1, 1/2*(E1 - dphi2)^2/R1)
     """
 
     def __init__(self, circuit, ground=None):
