@@ -215,9 +215,9 @@ def cases():
     add("missing_kind", pendulum("missing_kind").replace("kind: mechanical\n", ""), "error",
         "kind")
     add("kind_hydraulic", pendulum("kind_hydraulic").replace("mechanical", "hydraulic"),
-        "error", "expected 'mechanical' or 'circuit'")
+        "error", "expected one of 'mechanical', 'circuit', 'lie_poisson'")
     add("kind_list", pendulum("kind_list").replace("kind: mechanical", "kind: [mechanical]"),
-        "error", "expected 'mechanical' or 'circuit'")
+        "error", "expected one of 'mechanical', 'circuit', 'lie_poisson'")
     add("coordinates_missing", pendulum("coordinates_missing", "coordinates: [psi, theta]\n", ""),
         "error", "missing key 'coordinates'")
     add("coordinates_string", pendulum("coordinates_string", "coordinates: [psi, theta]",
