@@ -298,6 +298,14 @@ class SystemBuilder:
     def add_body(self, values=None):
         r"""
         Add the fields of one more body (empty, or filled from ``values``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()      # the fields hold the spherical pendulum
+            sage: B.add_body(dict(name='bob', parent='1', mass='m2'))
+            sage: len(B.bodies.children), B.description()['bodies'][1]
+            (2, {'mass': 'm2', 'name': 'bob', 'parent': 1, 'rotations': []})
         """
         values = values or {'parent': str(len(self._body_fields))}
         fields = {key: widgets.Text(value=values.get(key, ''), description=label,
@@ -309,6 +317,15 @@ class SystemBuilder:
     def remove_body(self):
         r"""
         Remove the fields of the last body.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()      # the fields hold the spherical pendulum
+            sage: B.add_body(); len(B.bodies.children)
+            2
+            sage: B.remove_body(); len(B.bodies.children)
+            1
         """
         if self._body_fields:
             self._body_fields.pop()
@@ -326,6 +343,15 @@ class SystemBuilder:
     def description(self):
         r"""
         The description dictionary of what the fields hold.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()      # the fields hold the spherical pendulum
+            sage: d = B.description(); d['coordinates'], d['bodies'][0]['rotations']
+            (['psi', 'theta'], [[3, 'psi'], [1, 'theta']])
+            sage: B.kind.value = 'circuit'; B.description()['branches'][:2]
+            [[1, 2, 'L1'], [2, 3, 'f1']]
         """
         if self.kind.value == 'circuit':
             return circuit_description(self.circuit_name.value, self.branches.value)
@@ -337,6 +363,17 @@ class SystemBuilder:
     def model(self):
         r"""
         The model the fields describe (raises the loader's errors).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()      # the fields hold the spherical pendulum
+            sage: B.model().lagrangian().expr()
+            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)
+            sage: B.parameters.value = 'm, l'; B.model()
+            Traceback (most recent call last):
+            ...
+            ExpressionError: system builder: force_function.uniform_gravity[2]: undeclared symbol 'g' in '-g'; declared symbols are: l, m, psi, t, theta
         """
         return model_from_description(self.description())
 
@@ -344,6 +381,19 @@ class SystemBuilder:
         r"""
         Show the characteristic function and the equations as LaTeX (or the
         error, naming the field).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()      # the fields hold the spherical pendulum
+            sage: B.derive(); print(B.output.value)
+            $$\begin{aligned}
+            L &amp;= \frac{1}{2} \, {\dot{\psi}}^{2} l^{2} m \sin\left(\theta\right)^{2} + ...\\
+            0 &amp;= 2 \, {\dot{\psi}} {\dot{\theta}} l^{2} m ...\\
+            0 &amp;= -{\dot{\psi}}^{2} l^{2} m ...
+            \end{aligned}$$
+            sage: B.parameters.value = 'm, l'; B.derive(); B.status.value
+            '<b>error:</b> system builder: force_function.uniform_gravity[2]: undeclared symbol ...'
         """
         from .forms import derive, derivation_latex
         self.output.value = ""

@@ -38,6 +38,20 @@ from ..errors import ModelError
 #: ``function`` is a pair (name, expression); ``equations`` a list of pairs
 #: ``(lhs, rhs)`` meaning ``lhs = rhs`` (``lhs`` a LaTeX string).
 Derivation = namedtuple("Derivation", ["form", "function", "equations", "note"])
+Derivation.__doc__ = r"""
+One form of the equations of a model, as returned by :func:`derive`.
+
+EXAMPLES::
+
+    sage: from sage_dynsym import load
+    sage: from sage_dynsym.description import example_path
+    sage: from sage_dynsym.interact.forms import derive
+    sage: d = derive(load(example_path('spherical_pendulum.yaml')), 'Lagrange')
+    sage: d.form, d.function, d.note
+    ('Lagrange', ('L', 1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)), None)
+    sage: d.equations[1]
+    ('0', -dpsi^2*l^2*m*cos(theta)*sin(theta) + ddtheta*l^2*m - g*l*m*sin(theta))
+"""
 
 MECHANICAL_FORMS = ['Lagrange', 'Routh', 'Hamilton']
 CIRCUIT_FORMS = ['Brayton-Moser', 'Lagrange (loop)', 'Lagrange (node)', 'Hamilton (loop)']

@@ -42,6 +42,18 @@ def equations_explorer(model):
     coordinates for Routh's form.
 
     OUTPUT: the interactive widget
+
+    EXAMPLES: a Lagrangian given directly (the page is drawn once)::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.symbols import velocity
+        sage: from sage_dynsym.interact.pages import equations_explorer
+        sage: x, m, k = var('x m k')
+        sage: w = equations_explorer(Lagrangian(m*velocity(x)^2/2 - k*x^2/2, [x]))
+        ...Lagrange equations of the model
+        <IPython.core.display.Math object>
+        sage: w.kwargs_widgets[0].options
+        ('Lagrange', 'Routh', 'Hamilton')
     """
     import ipywidgets as W
     from IPython.display import display, Math

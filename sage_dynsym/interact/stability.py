@@ -85,7 +85,21 @@ class StabilityStudy(SageObject):
     - ``positive`` -- parameters known to be positive (simplifies the
       conditions)
 
-    See the module documentation for examples.
+    See the module documentation for a circuit with a tunnel diode.
+
+    EXAMPLES: the nonlinear oscillator `\ddot x = -kx(x - a) - c\dot x`
+    around its equilibrium `x = a`, which depends on a parameter; with `k,
+    c > 0` it is stable for `a > 0`::
+
+        sage: from sage_dynsym.interact.stability import StabilityStudy
+        sage: x, y, k, c, a = var('x y k c a')
+        sage: St = StabilityStudy([y, -k*(x - a)*x - c*y], [x, y], {x: a, y: 0},
+        ....:                     positive=[k, c]); St
+        Stability study of an equilibrium of a system in (x, y)
+        sage: St.characteristic_polynomial(), St.conditions()
+        (a*k + c*lam + lam^2, [a])
+        sage: St.conditions_hold(dict(a=1, k=1, c=1)), St.conditions_hold(dict(a=-1, k=1, c=1))
+        (True, False)
     """
 
     def __init__(self, rhs, variables, at, lhs_matrix=None, positive=()):
@@ -139,34 +153,112 @@ class StabilityStudy(SageObject):
         return f"Stability study of an equilibrium of a system in ({vs})"
 
     def parameters(self):
-        r"""The parameters the study depends on, sorted by name."""
+        r"""The parameters the study depends on, sorted by name.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.parameters()
+            [c, k]
+        """
         return list(self._parameters)
 
     def variables(self):
-        r"""The state variables."""
+        r"""The state variables.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.variables()
+            [x, y]
+        """
         return list(self._variables)
 
     def equilibrium(self):
-        r"""The equilibrium point, a list in the order of the variables."""
+        r"""The equilibrium point, a list in the order of the variables.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.equilibrium()
+            [0, 0]
+        """
         return list(self._point)
 
     def linear_system(self):
-        r"""The first-approximation system (``None`` without the analysis part)."""
+        r"""The first-approximation system (``None`` without the analysis part).
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.linear_system()
+            Linear system B x' = J x in (x, y)
+        """
         return self._linear
 
     def characteristic_polynomial(self):
-        r"""The characteristic polynomial in ``lam`` (fraction-free)."""
+        r"""The characteristic polynomial in ``lam`` (fraction-free).
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.characteristic_polynomial()
+            c*lam + lam^2 + k
+        """
         return self._poly
 
     def conditions(self):
         r"""
         The Liénard--Chipart conditions (all ``> 0``), or ``None`` (see
         :meth:`note`).
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.conditions()
+            [k, c]
         """
         return None if self._conditions is None else list(self._conditions)
 
     def note(self):
-        r"""A remark on how stability is decided here, or ``None``."""
+        r"""A remark on how stability is decided here, or ``None``.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.note() is None
+            True
+
+        A stiffness `\sin k` is not rational in `k`: no symbolic
+        conditions::
+
+            sage: St = StabilityStudy([y, -sin(k)*x - c*y], [x, y], {x: 0, y: 0})
+            sage: print(St.note())
+            no symbolic conditions (...): stability from the roots; ...
+            sage: St.conditions() is None
+            True
+        """
         return self._note
 
     def _values(self, values):
@@ -198,13 +290,32 @@ class StabilityStudy(SageObject):
         return [complex(z) for z in numpy.roots(coefficients)] if len(coefficients) > 1 else []
 
     def spectral_abscissa(self, values):
-        r"""The largest real part of the characteristic roots."""
+        r"""The largest real part of the characteristic roots.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.spectral_abscissa({'k': 2, 'c': 1}), St.spectral_abscissa({'k': 2, 'c': -1})
+            (-0.5, 0.5)
+        """
         return float(max(z.real for z in self.roots(values)))
 
     def conditions_hold(self, values):
         r"""
         Whether all the conditions are positive at ``values`` (``None``
         without symbolic conditions).
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.conditions_hold({'k': 2, 'c': 1}), St.conditions_hold({'k': 2, 'c': -1})
+            (True, False)
         """
         if self._conditions is None:
             return None
@@ -284,7 +395,17 @@ class StabilityStudy(SageObject):
                              client=False)
 
     def roots_plot(self, values):
-        r"""The characteristic roots in the complex plane."""
+        r"""The characteristic roots in the complex plane.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.roots_plot({'k': 2, 'c': 1})     # the imaginary axis and the roots
+            Graphics object consisting of 2 graphics primitives
+        """
         from sage.plot.point import point
         from sage.plot.line import line
         zs = self.roots(values)
@@ -302,6 +423,18 @@ class StabilityStudy(SageObject):
 
         OUTPUT: ``(t, X)``: the times and the states (NumPy arrays; ``X[k]``
         is the state at ``t[k]``)
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: t, X = St.simulate({'k': 2, 'c': 1}, t_end=30)
+            sage: t.shape, X.shape, X[0]
+            ((400,), (400, 2), array([0.05, 0.05]))
+            sage: bool(abs(X[-1]).max() < 1e-5)      # back to the equilibrium
+            True
         """
         from scipy.integrate import solve_ivp
         from sage.ext.fast_callable import fast_callable
@@ -324,6 +457,15 @@ class StabilityStudy(SageObject):
         r"""
         The simulated trajectory: every variable against time, and the phase
         portrait in the first two variables.
+
+        EXAMPLES: a damped oscillator `\ddot x + c\dot x + kx = 0` as a
+        first-order system::
+
+            sage: from sage_dynsym.interact.stability import StabilityStudy
+            sage: x, y, k, c = var('x y k c')
+            sage: St = StabilityStudy([y, -k*x - c*y], [x, y], {x: 0, y: 0})
+            sage: St.trajectory_plot({'k': 2, 'c': 1})
+            Graphics Array of size 1 x 2
         """
         from sage.plot.line import line
         from sage.plot.plot import graphics_array
