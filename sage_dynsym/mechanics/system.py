@@ -43,7 +43,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import velocity, acceleration, t, time_derivative
+from ..symbols import velocity, acceleration, t, time_derivative, check_mechanical_names
 from ..io.fields import text as _text
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
@@ -51,12 +51,13 @@ from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form
+from .force_functions import check_force_function
 from .kinematics import Kinematics
 from .rigid_body import RigidBody
 
 # Above this many terms in the mass matrix, converting the polynomial
 # Christoffel coefficients back to symbolic expressions dominates the
-# derivation (15 s at 16,000 terms, two minutes at 110,000); see lagrangian().
+# derivation (see bench/bench_chain.py); see lagrangian().
 _POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
 
 
@@ -117,6 +118,19 @@ class MechanicalSystem(Model):
         Traceback (most recent call last):
         ...
         ModelError: p.mass: undeclared symbol k; declared are: m, t
+
+    Names that clash with the package's own symbols, and force functions
+    that depend on velocities, are refused::
+
+        sage: x = var('x')
+        sage: MechanicalSystem([RigidBody('p', mass=m)], [x], parameters=[var('dx')])
+        Traceback (most recent call last):
+        ...
+        ModelError: parameters[0]: the name 'dx' is the velocity of the coordinate 'x' (coordinates[0]); choose another name
+        sage: MechanicalSystem([RigidBody('p', mass=m)], [x], force_function=var('dx')^2)
+        Traceback (most recent call last):
+        ...
+        ModelError: force_function: the force function U(q, t) cannot depend on the velocity dx; velocity-dependent forces belong in the dissipation function or the generalized forces
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
@@ -133,6 +147,8 @@ class MechanicalSystem(Model):
                                  entry="coordinates")
         self._velocities = [velocity(q) for q in self._coordinates]
         self._parameters = None if parameters is None else [SR(p) for p in parameters]
+        check_mechanical_names(self._coordinates, self._parameters or (), ModelError)
+        check_force_function(force_function, self._coordinates)
         self._force = force_function
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
@@ -853,11 +869,10 @@ class MechanicalSystem(Model):
             cancel, and convert each coefficient to its canonical recursive
             form: the most compact equations, but the conversion back to
             symbolic expressions costs time in proportion to the number of
-            terms (2.6 million, about two minutes, for the chain of 6
-            spatial links of ``bench/bench_chain.py``);
+            terms (minutes for the chain of 6 spatial links of
+            ``bench/bench_chain.py``, which prints the times);
           - ``'symbolic'`` -- differentiate the (already compact) symbolic
-            mass matrix: fast even for large systems (under 30 s for that
-            chain), but the equations are larger, about 1.4 times, since the
+            mass matrix: fast even for large systems, but the equations are larger, about 1.4 times, since the
             three derivatives do not cancel;
           - ``'auto'`` (default) -- ``'polynomial'`` unless the mass matrix
             has more than 10,000 polynomial terms (for the spatial chains of
