@@ -436,6 +436,16 @@ class PoissonStructure(SageObject):
         r"""
         A :class:`~sage_dynsym.lie._polynomials.PolynomialContext` on the
         coordinates, with the parameters of the matrix and ``parameters``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import PoissonStructure
+            sage: q, p, a, c = var('q p a c')
+            sage: K = PoissonStructure([[0, a], [-a, 0]], [q, p]).context([c])
+            sage: K.variables, K.parameters
+            ([q, p], [a, c])
+            sage: K.element(a*q*p + c*q^2/a, 'H')      # numerator and denominator
+            (a^2*q*p + c*q^2, a)
         """
         names = {str(a) for a in self._parameters}
         extra = [a for a in parameters if str(a) not in names]

@@ -287,13 +287,40 @@ class IntegralJump(SageObject):
         return f"dimension {self._dimension} if {conds}{tail}"
 
     def ideal(self):
-        r"""The prime ideal of the family (lexicographic order), in the ring of the parameters."""
+        r"""The prime ideal of the family (lexicographic order), in the ring of the parameters.
+
+        EXAMPLES: the free rigid body has a linear integral when two
+        moments of inertia are equal::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import polynomial_integrals
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables(); A1, A2, A3 = var('A1 A2 A3')
+            sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3)
+            sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True); j = jumps[0]; j
+            dimension 1 if A1 - A2 == 0: [M3]
+            sage: j.ideal()
+            Ideal (A1 - A2) of Multivariate Polynomial Ring in A1, A2, A3 over Rational Field
+        """
         return self._prime
 
     def conditions(self):
         r"""
         The equations of the family: a list of relations ``g == 0`` (the
         generators of the reduced Gröbner basis of its prime ideal).
+
+        EXAMPLES: the free rigid body has a linear integral when two
+        moments of inertia are equal::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import polynomial_integrals
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables(); A1, A2, A3 = var('A1 A2 A3')
+            sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3)
+            sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True); j = jumps[0]; j
+            dimension 1 if A1 - A2 == 0: [M3]
+            sage: j.conditions()
+            [A1 - A2 == 0]
+            sage: jumps[3].conditions()     # the spherical top
+            [A1 - A3 == 0, A2 - A3 == 0]
         """
         return [SR(g) == 0 for g in self._prime.groebner_basis()]
 
@@ -302,11 +329,36 @@ class IntegralJump(SageObject):
         The dimension of the space of polynomial integrals of degree `\le
         d` (modulo constants) at the generic point of the family, against
         :meth:`generic_dimension` elsewhere.
+
+        EXAMPLES: the free rigid body has a linear integral when two
+        moments of inertia are equal::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import polynomial_integrals
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables(); A1, A2, A3 = var('A1 A2 A3')
+            sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3)
+            sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True); j = jumps[0]; j
+            dimension 1 if A1 - A2 == 0: [M3]
+            sage: j.dimension(), jumps[3].dimension()
+            (1, 3)
         """
         return self._dimension
 
     def generic_dimension(self):
-        r"""The dimension of that space for generic parameter values."""
+        r"""The dimension of that space for generic parameter values.
+
+        EXAMPLES: the free rigid body has a linear integral when two
+        moments of inertia are equal::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import polynomial_integrals
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables(); A1, A2, A3 = var('A1 A2 A3')
+            sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3)
+            sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True); j = jumps[0]; j
+            dimension 1 if A1 - A2 == 0: [M3]
+            sage: j.generic_dimension()
+            0
+        """
         return self._generic
 
     def substitution(self):
@@ -314,6 +366,18 @@ class IntegralJump(SageObject):
         A parametrization of the family as a dict ``{parameter: value}``,
         when its Gröbner basis can be solved for one parameter per equation
         (each linear in its leading parameter); else ``None``.
+
+        EXAMPLES: the free rigid body has a linear integral when two
+        moments of inertia are equal::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import polynomial_integrals
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables(); A1, A2, A3 = var('A1 A2 A3')
+            sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3)
+            sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True); j = jumps[0]; j
+            dimension 1 if A1 - A2 == 0: [M3]
+            sage: j.substitution(), jumps[3].substitution()
+            ({A1: A2}, {A1: A3, A2: A3})
         """
         return _parametrization(self._prime)
 
@@ -323,6 +387,18 @@ class IntegralJump(SageObject):
         family (only the new ones if the search was ``new_only``), with
         :meth:`substitution` applied; ``None`` if the family cannot be
         parametrized that way.
+
+        EXAMPLES: the free rigid body has a linear integral when two
+        moments of inertia are equal::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import polynomial_integrals
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables(); A1, A2, A3 = var('A1 A2 A3')
+            sage: H = M1^2/(2*A1) + M2^2/(2*A2) + M3^2/(2*A3)
+            sage: _, jumps = polynomial_integrals(E, H, 1, conditions=True); j = jumps[0]; j
+            dimension 1 if A1 - A2 == 0: [M3]
+            sage: j.integrals(), jumps[3].integrals()
+            ([M3], [M1, M2, M3])
         """
         if self._integrals is None:
             sub = self.substitution()

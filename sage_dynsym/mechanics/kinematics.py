@@ -79,6 +79,19 @@ class Kinematics:
         return self._backend
 
     def body_frame(self, k):
+        r"""The frame of body ``k`` in :attr:`tree` (``0``: the inertial frame).
+
+        EXAMPLES: the pendulum's frame is the last of its rotations,
+        `\theta` about the first axis::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
+            sage: f = K.body_frame(1); K.body_frame(0), K.tree.axis(f), K.tree.angle(f)
+            (0, 1, theta)
+        """
         return self._frames[k]
 
     def _vector(self, frame, components):
@@ -131,6 +144,20 @@ class Kinematics:
         return self.joint_position(j) + self._vector(self._frames[j], self._bodies[k - 1].joint())
 
     def mass_center_position(self, k):
+        r"""The position of the mass centre of body ``k`` (a
+        :class:`~sage_dynsym.mechanics.frames.FrameVector`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
+            sage: r = K.mass_center_position(1)
+            sage: r.components(K.body_frame(1)), r.components(0)
+            ((0, 0, l), (l*sin(psi)*sin(theta), -l*cos(psi)*sin(theta), l*cos(theta)))
+        """
         return self.joint_position(k) + self._vector(self._frames[k],
                                                      self._bodies[k - 1].mass_center())
 
