@@ -2,9 +2,10 @@ r"""
 The system builder: a model entered in form fields
 
 The counterpart of the original packages' dialog panels. The user types
-the parameters, coordinates, force field and, body by body, the parent,
-rotation sequence, vectors, mass and inertia -- or, for a circuit, one
-branch per line. :func:`mechanical_description` and
+the parameters, coordinates, the force function (gravity and/or a
+potential term), the dissipation, holonomic constraints and, body by body,
+the parent, rotation sequence, vectors, mass and inertia, and loads on the
+bodies -- or, for a circuit, one branch per line (short or long form). :func:`mechanical_description` and
 :func:`circuit_description` turn those texts into the same dictionary a
 description file holds, so the model is built and checked by the loader of
 :mod:`sage_dynsym.description` (safe parser, errors naming the entry), and
@@ -14,7 +15,12 @@ description file holds, so the model is built and checked by the loader of
 Field syntax: lists are comma-separated (``m, l, g``); a rotation sequence
 is ``axis angle`` pairs (``3 psi, 1 theta``); an inertia tensor is three
 diagonal entries or nine entries row by row (rows may be separated by
-``;``); a branch is ``from to element`` (``1 2 L1``).
+``;``); constraints are one per line; a load is the fields ``body``,
+``point`` (in the body's axes), ``force``, ``torque`` (three components
+each, optional) and ``axes`` (``0``: inertial, or a body name). A branch is
+``from to element`` (``1 2 L1``), or in long form ``from to kind name``
+with an optional ``= value`` (``1 2 capacitor C1 = C0*(1 + u^2)``); two
+coupled windings are ``mutual L1 L2 = M``.
 
 EXAMPLES::
 
@@ -29,6 +35,8 @@ EXAMPLES::
     sage: S = model_from_description(data); S.lagrangian().expr()
     1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)
 """
+import re
+
 import ipywidgets as widgets
 
 from ..errors import DescriptionError, DynSymError
@@ -92,7 +100,7 @@ def _inertia(text, entry):
 
 
 def mechanical_description(name, parameters, coordinates, gravity, bodies,
-                           dissipation=""):
+                           dissipation="", potential="", constraints="", loads=()):
     r"""
     The description-file dictionary of a mechanical system entered as text
     fields.
@@ -102,17 +110,38 @@ def mechanical_description(name, parameters, coordinates, gravity, bodies,
     - ``name``, ``parameters``, ``coordinates`` -- strings (lists
       comma-separated)
     - ``gravity`` -- the gravity vector in the inertial axes (three
-      components), or an empty string for no force function
+      components), or an empty string for none
     - ``bodies`` -- a list of dictionaries with the string fields ``name``,
       ``parent``, ``rotations``, ``joint``, ``mass_center``, ``mass``,
       ``inertia`` and optionally ``velocity`` (empty: the default)
     - ``dissipation`` -- (optional) the Rayleigh function
+    - ``potential`` -- (optional) a force function `U(q, t)` added to the
+      gravity term (e.g. ``-k*x^2/2`` for a spring)
+    - ``constraints`` -- (optional) holonomic constraints `f(q, t)`, one
+      per line, each meaning ``f == 0``
+    - ``loads`` -- (optional) a list of dictionaries with the string fields
+      ``body``, ``point``, ``force``, ``torque`` and ``axes``
 
     OUTPUT: a dictionary as read from a description file
 
-    TESTS::
+    EXAMPLES: a pendulum on a cart held by a spring, pushed at its bob::
 
         sage: from sage_dynsym.interact.builder import mechanical_description
+        sage: cart = dict(name='cart', joint='x, 0, 0', mass='M')
+        sage: bob = dict(name='bob', parent='cart', rotations='2 phi', mass_center='0, 0, -l',
+        ....:            mass='m')
+        sage: push = dict(body='bob', point='0, 0, -l', force='F, 0, 0', axes='0')
+        sage: data = mechanical_description('cart', 'M, m, l, g, k, F', 'x, phi', '0, 0, -g',
+        ....:                               [cart, bob], potential='-k*x^2/2', loads=[push])
+        sage: data['force_function']
+        [{'uniform_gravity': ['0', '0', '-g']}, {'expression': '-k*x^2/2'}]
+        sage: data['loads']
+        [{'axes': 0, 'body': 'bob', 'force': ['F', '0', '0'], 'point': ['0', '0', '-l']}]
+        sage: mechanical_description('ring', 'm', 'x, y', '', [], constraints='x^2 + y^2 - 1')['constraints']
+        ['x^2 + y^2 - 1']
+
+    TESTS::
+
         sage: mechanical_description('x', 'm', 'q', '', [dict(rotations='4 q')])
         Traceback (most recent call last):
         ...
@@ -121,14 +150,26 @@ def mechanical_description(name, parameters, coordinates, gravity, bodies,
         Traceback (most recent call last):
         ...
         DescriptionError: force_function.uniform_gravity: expected three comma-separated components, got '0, 0'
+        sage: mechanical_description('x', 'm', 'q', '', [], loads=[dict(body='b', force='1, 2')])
+        Traceback (most recent call last):
+        ...
+        DescriptionError: loads[0].force: expected three comma-separated components, got '1, 2'
     """
     data = {'kind': 'mechanical', 'name': name.strip() or 'mechanical system',
             'parameters': split_list(parameters), 'coordinates': split_list(coordinates)}
+    terms = []
     if gravity.strip():
-        data['force_function'] = {
-            'uniform_gravity': _vector(gravity, 'force_function.uniform_gravity')}
+        terms.append({'uniform_gravity': _vector(gravity, 'force_function.uniform_gravity')})
+    if potential.strip():
+        terms.append({'expression': potential.strip()})
+    if terms:
+        # one term keeps the single-mapping form of older files
+        data['force_function'] = terms[0] if len(terms) == 1 else terms
     if dissipation.strip():
         data['dissipation'] = dissipation.strip()
+    lines = [line.strip() for line in constraints.splitlines() if line.strip()]
+    if lines:
+        data['constraints'] = lines
     data['bodies'] = []
     for k, fields in enumerate(bodies):
         entry = f"bodies[{k}]"
@@ -142,7 +183,18 @@ def mechanical_description(name, parameters, coordinates, gravity, bodies,
         if fields.get('inertia', '').strip():
             body['inertia'] = _inertia(fields['inertia'], f"{entry}.inertia")
         data['bodies'].append(body)
+    if loads:
+        data['loads'] = [_load(fields, f"loads[{k}]") for k, fields in enumerate(loads)]
     return data
+
+
+def _load(fields, entry):
+    load = {'body': _parent(fields.get('body', ''))}
+    for key in ('point', 'force', 'torque'):
+        if fields.get(key, '').strip():
+            load[key] = _vector(fields[key], f"{entry}.{key}")
+    load['axes'] = _parent(fields.get('axes', '0'))
+    return load
 
 
 def _parent(text):
@@ -153,7 +205,10 @@ def _parent(text):
 def circuit_description(name, branches, parameters=""):
     r"""
     The description-file dictionary of a circuit entered as text: one
-    branch ``from to element`` per line.
+    branch per line, ``from to element`` (short form), ``from to kind
+    name`` with an optional ``= value`` (long form, for the kinds of
+    :data:`~sage_dynsym.circuits.elements.BRANCH_KINDS`), or ``mutual L1 L2
+    = M`` for a mutual inductance.
 
     EXAMPLES::
 
@@ -164,24 +219,52 @@ def circuit_description(name, branches, parameters=""):
         sage: model_from_description(data).state_equations()
         [-R1*i1 + E1 + u2, -i1]
 
+    Long-form entries and a mutual inductance, with a parameter used in a
+    value::
+
+        sage: data = circuit_description('coupled', '1 2 L1\n2 1 capacitor C1 = C0\n'
+        ....:                            '1 2 L2\nmutual L1 L2 = M', parameters='C0, M')
+        sage: data['branches'][1], data['branches'][3]
+        ({'from': 2, 'kind': 'capacitor', 'name': 'C1', 'to': 1, 'value': 'C0'},
+         {'between': ['L1', 'L2'], 'kind': 'mutual', 'value': 'M'})
+
     TESTS::
 
         sage: circuit_description('x', '1 2')
         Traceback (most recent call last):
         ...
-        DescriptionError: branches[0]: expected 'from_node to_node element' such as '1 2 L1', got '1 2'
+        DescriptionError: branches[0]: expected 'from_node to_node element' such as '1 2 L1', 'from_node to_node kind name [= value]' or 'mutual L1 L2 = M', got '1 2'
+        sage: circuit_description('x', 'mutual L1 = M')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: branches[0]: expected 'from_node to_node element' such as '1 2 L1', 'from_node to_node kind name [= value]' or 'mutual L1 L2 = M', got 'mutual L1 = M'
     """
     rows = []
     for k, line in enumerate(l for l in branches.splitlines() if l.strip()):
-        parts = line.replace(",", " ").split()
-        if len(parts) != 3 or not (parts[0].isdigit() and parts[1].isdigit()):
-            raise DescriptionError("expected 'from_node to_node element' such as '1 2 L1', "
-                                   f"got {line.strip()!r}", entry=f"branches[{k}]")
-        rows.append([int(parts[0]), int(parts[1]), parts[2]])
+        rows.append(_branch(line.strip(), f"branches[{k}]"))
     data = {'kind': 'circuit', 'name': name.strip() or 'circuit', 'branches': rows}
     if parameters.strip():
         data['parameters'] = split_list(parameters)
     return data
+
+
+def _branch(line, entry):
+    head, _, value = line.partition("=")
+    parts, value = head.replace(",", " ").split(), value.strip()
+    if parts and parts[0] == 'mutual' and len(parts) == 3 and value:
+        return {'kind': 'mutual', 'between': parts[1:], 'value': value}
+    if len(parts) >= 3 and parts[0].isdigit() and parts[1].isdigit():
+        ends = [int(parts[0]), int(parts[1])]
+        if len(parts) == 3 and not value:
+            return ends + [parts[2]]
+        if len(parts) == 4:
+            branch = {'from': ends[0], 'to': ends[1], 'kind': parts[2], 'name': parts[3]}
+            if value:
+                branch['value'] = value
+            return branch
+    raise DescriptionError("expected 'from_node to_node element' such as '1 2 L1', "
+                           "'from_node to_node kind name [= value]' or 'mutual L1 L2 = M', "
+                           f"got {line!r}", entry=entry)
 
 
 def model_from_description(data, source="system builder"):
@@ -203,6 +286,9 @@ _BODY_FIELDS = [('name', 'name'), ('parent', 'parent'), ('rotations', 'rotations
                 ('joint', 'joint r0'), ('velocity', 'velocity v0'),
                 ('mass_center', 'mass centre rc'), ('mass', 'mass'),
                 ('inertia', 'inertia')]
+
+_LOAD_FIELDS = [('body', 'body'), ('point', 'point rP'), ('force', 'force F'),
+                ('torque', 'torque M'), ('axes', 'axes')]
 
 _PENDULUM = dict(name='pendulum', parent='0', rotations='3 psi, 1 theta', joint='0, 0, 0',
                  velocity='', mass_center='0, 0, l', mass='m', inertia='m*l^2, m*l^2, 0')
@@ -254,21 +340,30 @@ class SystemBuilder:
         self.parameters = W.Text(value='m, l, g', description='parameters', layout=wide)
         self.coordinates = W.Text(value='psi, theta', description='coordinates', layout=wide)
         self.gravity = W.Text(value='0, 0, -g', description='gravity g', layout=wide)
+        self.potential = W.Text(value='', description='potential U', layout=wide)
         self.dissipation = W.Text(value='', description='dissipation', layout=wide)
-        self.bodies = W.VBox()
-        self._body_fields = []
+        self.constraints = W.Textarea(value='', description='constraints',
+                                      placeholder='f(q, t), one per line (f = 0)', layout=wide)
+        self.bodies, self._body_fields = W.VBox(), []
+        self.loads, self._load_fields = W.VBox(), []
         self.add_body(_PENDULUM)
-        add = W.Button(description='add body')
-        add.on_click(lambda _: self.add_body())
-        remove = W.Button(description='remove last body')
-        remove.on_click(lambda _: self.remove_body())
+        buttons = []
+        for label, action in [('add body', lambda _: self.add_body()),
+                              ('remove last body', lambda _: self.remove_body()),
+                              ('add load', lambda _: self.add_load()),
+                              ('remove last load', lambda _: self.remove_load())]:
+            buttons.append(W.Button(description=label))
+            buttons[-1].on_click(action)
         self.mechanical = W.VBox([self.name, self.parameters, self.coordinates, self.gravity,
-                                  self.dissipation, self.bodies, W.HBox([add, remove])])
+                                  self.potential, self.dissipation, self.constraints,
+                                  self.bodies, W.HBox(buttons[:2]), self.loads,
+                                  W.HBox(buttons[2:])])
         self.circuit_name = W.Text(value='nonlinear circuit of Example 2',
                                    description='name', layout=wide)
+        self.circuit_parameters = W.Text(value='', description='parameters', layout=wide)
         self.branches = W.Textarea(value=_EXAMPLE2, description='branches',
                                    layout=W.Layout(width='95%', height='14em'))
-        self.circuit = W.VBox([self.circuit_name, self.branches])
+        self.circuit = W.VBox([self.circuit_name, self.circuit_parameters, self.branches])
         self.circuit.layout.display = 'none'
         self.kind.observe(self._switch, names='value')
         derive = W.Button(description='derive equations', button_style='primary')
@@ -308,11 +403,8 @@ class SystemBuilder:
             (2, {'mass': 'm2', 'name': 'bob', 'parent': 1, 'rotations': []})
         """
         values = values or {'parent': str(len(self._body_fields))}
-        fields = {key: widgets.Text(value=values.get(key, ''), description=label,
-                                    layout=widgets.Layout(width='48%'))
-                  for key, label in _BODY_FIELDS}
-        self._body_fields.append(fields)
-        self._refresh_bodies()
+        self._body_fields.append(_text_fields(_BODY_FIELDS, values))
+        self._refresh()
 
     def remove_body(self):
         r"""
@@ -329,16 +421,44 @@ class SystemBuilder:
         """
         if self._body_fields:
             self._body_fields.pop()
-            self._refresh_bodies()
+            self._refresh()
 
-    def _refresh_bodies(self):
-        boxes = []
-        for k, fields in enumerate(self._body_fields):
-            title = widgets.HTML(f"<b>body {k + 1}</b>")
-            items = list(fields.values())
-            rows = [widgets.HBox(items[i:i + 2]) for i in range(0, len(items), 2)]
-            boxes.append(widgets.VBox([title] + rows))
-        self.bodies.children = boxes
+    def add_load(self, values=None):
+        r"""
+        Add the fields of one more load on a body (empty, or filled from
+        ``values``): the body, the point of application in the body's axes,
+        the force and the torque, and the axes their components are given
+        in (``0`` for the inertial axes, or a body name).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()      # the fields hold the spherical pendulum
+            sage: B.add_load(dict(body='pendulum', point='0, 0, l', torque='0, 0, M0'))
+            sage: B.description()['loads']
+            [{'axes': 0, 'body': 'pendulum', 'point': ['0', '0', 'l'], 'torque': ['0', '0', 'M0']}]
+        """
+        self._load_fields.append(_text_fields(_LOAD_FIELDS, values or {'axes': '0'}))
+        self._refresh()
+
+    def remove_load(self):
+        r"""
+        Remove the fields of the last load.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.interact.builder import SystemBuilder
+            sage: B = SystemBuilder()
+            sage: B.add_load(); B.remove_load(); len(B.loads.children)
+            0
+        """
+        if self._load_fields:
+            self._load_fields.pop()
+            self._refresh()
+
+    def _refresh(self):
+        self.bodies.children = _boxes("body", self._body_fields)
+        self.loads.children = _boxes("load", self._load_fields)
 
     def description(self):
         r"""
@@ -353,12 +473,18 @@ class SystemBuilder:
             sage: B.kind.value = 'circuit'; B.description()['branches'][:2]
             [[1, 2, 'L1'], [2, 3, 'f1']]
         """
-        if self.kind.value == 'circuit':
-            return circuit_description(self.circuit_name.value, self.branches.value)
-        bodies = [{k: w.value for k, w in fields.items()} for fields in self._body_fields]
-        return mechanical_description(self.name.value, self.parameters.value,
-                                      self.coordinates.value, self.gravity.value, bodies,
-                                      self.dissipation.value)
+        try:
+            if self.kind.value == 'circuit':
+                return circuit_description(self.circuit_name.value, self.branches.value,
+                                           self.circuit_parameters.value)
+            values = [{k: w.value for k, w in fields.items()} for fields in self._body_fields]
+            loads = [{k: w.value for k, w in fields.items()} for fields in self._load_fields]
+            return mechanical_description(self.name.value, self.parameters.value,
+                                          self.coordinates.value, self.gravity.value, values,
+                                          self.dissipation.value, self.potential.value,
+                                          self.constraints.value, loads)
+        except DynSymError as err:
+            raise self._as_seen(err) from None
 
     def model(self):
         r"""
@@ -374,8 +500,40 @@ class SystemBuilder:
             Traceback (most recent call last):
             ...
             ExpressionError: system builder: force_function.uniform_gravity[2]: undeclared symbol 'g' in '-g'; declared symbols are: l, m, psi, t, theta
+
+        Errors name a body as the page shows it::
+
+            sage: B.parameters.value = 'm, l, g'
+            sage: B._body_fields[0]['mass'].value = 'm*k'; B.model()
+            Traceback (most recent call last):
+            ...
+            ExpressionError: system builder: body 1 (pendulum).mass: undeclared symbol 'k' in 'm*k'; ...
+            sage: B._body_fields[0]['rotations'].value = '4 psi'; B.model()
+            Traceback (most recent call last):
+            ...
+            DescriptionError: body 1 (pendulum).rotations: expected 'axis angle' pairs such as '3 psi, 1 theta', got '4 psi'
         """
-        return model_from_description(self.description())
+        try:
+            return model_from_description(self.description())
+        except DynSymError as err:
+            raise self._as_seen(err) from None
+
+    def _as_seen(self, err):
+        # the loader names list positions (bodies[1].mass); the page shows
+        # "body 2 (bob)" with its fields
+        if not err.entry or self.kind.value == 'circuit':
+            return err
+
+        def body(match):
+            k = int(match.group(1))
+            name = (self._body_fields[k]['name'].value.strip()
+                    if k < len(self._body_fields) else '')
+            return f"body {k + 1}" + (f" ({name})" if name else "")
+
+        entry = re.sub(r"^bodies\[(\d+)\]", body, err.entry)
+        entry = re.sub(r"^loads\[(\d+)\]", lambda m: f"load {int(m.group(1)) + 1}", entry)
+        return err if entry == err.entry else type(err)(err.message, entry=entry,
+                                                        source=err.source)
 
     def derive(self):
         r"""
@@ -435,6 +593,21 @@ class SystemBuilder:
             self.status.value = f"<b>error:</b> {_escape(type(err).__name__)}: {_escape(err)}"
             return
         self.status.value = f"saved to {_escape(path)}"
+
+
+def _text_fields(keys, values):
+    return {key: widgets.Text(value=values.get(key, ''), description=label,
+                              layout=widgets.Layout(width='48%'))
+            for key, label in keys}
+
+
+def _boxes(title, items):
+    boxes = []
+    for k, fields in enumerate(items):
+        cells = list(fields.values())
+        rows = [widgets.HBox(cells[i:i + 2]) for i in range(0, len(cells), 2)]
+        boxes.append(widgets.VBox([widgets.HTML(f"<b>{title} {k + 1}</b>")] + rows))
+    return boxes
 
 
 def _escape(obj):
