@@ -45,6 +45,15 @@ class SecondOrderEquations(SageObject):
       negative is the potential of the equilibria (`-L|_{\dot q = 0}`
       enters as the amended potential), with ``kinetic`` the matrix of the
       velocities' quadratic part (the kinetic matrix)
+    - ``constraints`` -- (optional) holonomic constraints `f_j(q, t)`, each
+      ``== 0``
+    - ``multipliers`` -- (optional) their multiplier symbols `\mu_j`, one per
+      constraint
+
+    With constraints, the equations `E_i` contain the terms
+    `-\sum_j \mu_j \partial f_j/\partial q_i`: for `E = M\ddot q - F` this
+    is `M\ddot q = F + J^T\mu` with `J = \partial f/\partial q`, so `J^T\mu`
+    are the generalized constraint forces.
 
     EXAMPLES::
 
@@ -52,10 +61,25 @@ class SecondOrderEquations(SageObject):
         sage: x, dx, ddx = var('x dx ddx')
         sage: SecondOrderEquations([ddx + x], [x], [dx], [ddx]).equations()
         [ddx + x]
+
+    A particle on a line `x = y` (the multiplier is the constraint force)::
+
+        sage: y, dy, ddy, mu1 = var('y dy ddy mu1')
+        sage: E = SecondOrderEquations([ddx - mu1, ddy + mu1], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          constraints=[x - y], multipliers=[mu1])
+        sage: E.constraints(), E.multipliers()
+        ([x - y], [mu1])
+
+    TESTS::
+
+        sage: SecondOrderEquations([ddx], [x], [dx], [ddx], constraints=[x], multipliers=[])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: equations of motion: 1 constraints for 0 multipliers
     """
 
     def __init__(self, equations, coordinates, velocities, accelerations, function=None,
-                 kinetic=None):
+                 kinetic=None, constraints=(), multipliers=()):
         self._equations = [SR(e) for e in equations]
         self._q = [SR(v) for v in coordinates]
         self._dq = [SR(v) for v in velocities]
@@ -65,10 +89,19 @@ class SecondOrderEquations(SageObject):
                                 "coordinates", entry="equations of motion")
         self._function = None if function is None else SR(function)
         self._kinetic = None if kinetic is None else matrix(SR, kinetic)
+        self._constraints = [SR(f) for f in constraints]
+        self._multipliers = [SR(v) for v in multipliers]
+        if len(self._constraints) != len(self._multipliers):
+            raise AnalysisError(f"{len(self._constraints)} constraints for "
+                                f"{len(self._multipliers)} multipliers",
+                                entry="equations of motion")
 
     def _repr_(self):
-        return (f"Second-order equations in ({', '.join(map(str, self._q))}): "
+        text = (f"Second-order equations in ({', '.join(map(str, self._q))}): "
                 f"{self._equations} == 0")
+        if self._constraints:
+            text += f" with constraints {self._constraints} == 0"
+        return text
 
     def equations(self):
         r"""The expressions `E_i`.
@@ -136,6 +169,30 @@ class SecondOrderEquations(SageObject):
             [1]
         """
         return self._kinetic
+
+    def constraints(self):
+        r"""The holonomic constraints `f_j` (each ``== 0``; empty if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: SecondOrderEquations([ddx + x], [x], [dx], [ddx]).constraints()
+            []
+        """
+        return list(self._constraints)
+
+    def multipliers(self):
+        r"""The multipliers `\mu_j` of the constraints (empty if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: SecondOrderEquations([ddx + x], [x], [dx], [ddx]).multipliers()
+            []
+        """
+        return list(self._multipliers)
 
 
 class FirstOrderEquations(SageObject):
