@@ -1,0 +1,18 @@
+r"""
+Numerics: compiled right-hand sides, simulation, trajectories and code
+generation for the equations of motion of every model (see
+:mod:`~sage_dynsym.numerics.methods`).
+
+EXAMPLES::
+
+    sage: from sage_dynsym.numerics import NumericalMethods, numerical_rhs, simulate, Trajectory
+"""
+from .codegen import generate_code, GeneratedCode
+from .form import NumericalForm
+from .methods import NumericalMethods
+from .rhs import numerical_rhs, RightHandSide
+from .simulate import simulate
+from .trajectory import Trajectory
+
+__all__ = ['NumericalMethods', 'NumericalForm', 'numerical_rhs', 'RightHandSide', 'simulate',
+           'Trajectory', 'generate_code', 'GeneratedCode']

@@ -1,0 +1,319 @@
+r"""
+Symbolic expressions written as straight-line code (Python or C)
+
+:func:`write_code` walks the expression trees of Sage's symbolic ring once
+and writes them as assignments in Python (``math`` functions) or C
+(``math.h``): a subexpression used more than once is computed once into a
+temporary (common subexpression elimination), quotients are written as
+quotients, small integer powers as products. The text is the package's
+own: numbers are written as floating-point literals, functions come from a
+fixed table and symbol names are used only when they are plain
+identifiers, so the code can be compiled or run without evaluating any
+text a user wrote.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.numerics.expressions import write_code
+    sage: x, y = var('x y')
+    sage: temps, results = write_code([sin(x*y) + x*y, 1/(1 + x^2)], {x: 'x', y: 'y'})
+    sage: temps, results
+    ([('_e0', 'x*y')], ['_e0 + math.sin(_e0)', '1.0/(x**2 + 1.0)'])
+    sage: write_code([(x + y)^3/y], {x: 'x', y: 'y'}, language='c')
+    ([('_e0', 'x + y')], ['_e0*_e0*_e0/y'])
+"""
+import keyword
+import operator
+import re
+
+from sage.symbolic.operators import add_vararg, mul_vararg
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+
+#: Sage's function names -> (Python ``math`` name, C ``math.h`` name).
+FUNCTIONS = {
+    'sin': ('math.sin', 'sin'), 'cos': ('math.cos', 'cos'), 'tan': ('math.tan', 'tan'),
+    'exp': ('math.exp', 'exp'), 'log': ('math.log', 'log'), 'abs': ('abs', 'fabs'),
+    'sinh': ('math.sinh', 'sinh'), 'cosh': ('math.cosh', 'cosh'),
+    'tanh': ('math.tanh', 'tanh'), 'arcsin': ('math.asin', 'asin'),
+    'arccos': ('math.acos', 'acos'), 'arctan': ('math.atan', 'atan'),
+    'arctan2': ('math.atan2', 'atan2'), 'arcsinh': ('math.asinh', 'asinh'),
+    'arccosh': ('math.acosh', 'acosh'), 'arctanh': ('math.atanh', 'atanh'),
+}
+
+_IDENTIFIER = re.compile(r'[A-Za-z][A-Za-z0-9_]*\Z')
+#: Names the generated code cannot give to a symbol (C keywords and library
+#: names, Python keywords and builtins used by the code).
+_RESERVED = set(keyword.kwlist) | {
+    'math', 'abs', 'float', 'int', 'range', 'len', 'list', 'tuple', 'print', 'auto',
+    'break', 'case', 'char', 'const', 'continue', 'default', 'do', 'double', 'else', 'enum',
+    'extern', 'for', 'goto', 'if', 'inline', 'long', 'register', 'restrict', 'return',
+    'short', 'signed', 'sizeof', 'static', 'struct', 'switch', 'typedef', 'union',
+    'unsigned', 'void', 'volatile', 'while', 'pow', 'sqrt', 'fabs', 'atan2', 'asin',
+    'acos', 'atan', 'asinh', 'acosh', 'atanh', 'main', 'free', 'malloc', 'numpy', 'np'}
+for _python, _c in FUNCTIONS.values():
+    _RESERVED.add(_c)
+
+
+def identifier(symbol, index, taken=()):
+    r"""
+    The name of ``symbol`` in generated code: its own name when it is a
+    plain identifier (letters, digits, underscores, not starting with an
+    underscore) that no language keyword or library function uses, else
+    ``_s<index>``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import identifier
+        sage: identifier(var('psi1'), 0), identifier(SR.symbol('lambda'), 1), identifier(SR.symbol('a b'), 2)
+        ('psi1', '_s1', '_s2')
+    """
+    name = str(symbol)
+    if _IDENTIFIER.match(name) and name not in _RESERVED and name not in taken:
+        return name
+    return f'_s{index}'
+
+
+class _Key:
+    """A symbolic expression as a dictionary key compared by structure
+    (``==`` of Sage expressions builds an equation)."""
+    __slots__ = ('expr', 'hash')
+
+    def __init__(self, expr):
+        self.expr = expr
+        self.hash = hash(expr)
+
+    def __hash__(self):
+        return self.hash
+
+    def __eq__(self, other):
+        return self.expr.is_trivially_equal(other.expr)
+
+
+def _constant(e, entry):
+    try:
+        z = complex(e)
+    except (TypeError, ValueError):
+        raise AnalysisError(f"{e} has no numerical value", entry=entry) from None
+    if z.imag != 0:
+        raise AnalysisError(f"the constant {e} is not real", entry=entry)
+    return float(z.real)
+
+
+def _literal(value):
+    text = repr(float(value))
+    if text in ('inf', '-inf', 'nan'):
+        raise AnalysisError(f"the constant {text} has no numerical value", entry="code")
+    return text
+
+
+def _function_name(op):
+    try:
+        return op.name()
+    except AttributeError:
+        return None
+
+
+def write_code(expressions, names, language='python', entry='code', prefix='_e', cse=True):
+    r"""
+    Straight-line code for ``expressions``.
+
+    INPUT:
+
+    - ``expressions`` -- list of symbolic expressions
+    - ``names`` -- dict: symbol -> its name in the code (every symbol of
+      the expressions must have one)
+    - ``language`` -- ``'python'`` (functions of ``math``) or ``'c'``
+    - ``entry`` -- the name used in error messages
+    - ``prefix`` -- prefix of the temporaries' names
+    - ``cse`` -- (default: ``True``) compute repeated subexpressions once
+
+    OUTPUT: ``(temporaries, results)``: the list of pairs ``(name, text)``
+    to assign in this order, and the text of each expression
+
+    Raises :class:`~sage_dynsym.errors.AnalysisError` for a symbol without
+    a name, a function without a numerical counterpart and a complex
+    constant.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import write_code
+        sage: a, b = var('a b')
+        sage: write_code([-a*b + cos(a)^2, sqrt(b)], {a: 'a', b: 'b'}, language='c')
+        ([('_e0', 'cos(a)')], ['-a*b + _e0*_e0', 'sqrt(b)'])
+        sage: write_code([(a + b)^2 + sin(a + b)], {a: 'a', b: 'b'}, cse=False)
+        ([], ['(a + b)**2 + math.sin(a + b)'])
+
+    TESTS::
+
+        sage: write_code([a + b], {a: 'a'})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: code: no value for the symbol b
+        sage: write_code([function('f')(a)], {a: 'a'})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: code: f(a) has no numerical value
+        sage: write_code([I*a], {a: 'a'})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: code: the constant I is not real
+    """
+    if language not in ('python', 'c'):
+        raise AnalysisError(f"language must be 'python' or 'c', got {language!r}", entry=entry)
+    python = language == 'python'
+    names = {_Key(SR(k)): v for k, v in names.items()}
+    exprs = [SR(e) for e in expressions]
+
+    # pass 1: how often each compound subexpression is used
+    uses = {}
+    stack = list(exprs)
+    while stack:
+        e = stack.pop()
+        if e.operator() is None:
+            continue
+        key = _Key(e)
+        uses[key] = uses.get(key, 0) + 1
+        if uses[key] == 1:
+            stack.extend(e.operands())
+
+    temps, done = [], {}
+
+    def store(key, text):
+        name = f'{prefix}{len(temps)}'
+        temps.append((name, text))
+        done[key] = (name, 3)
+        return name, 3
+
+    def atomic(e):
+        """``e`` as a name or literal (stored in a temporary if compound)."""
+        text, prec = render(e)
+        if prec == 3 and re.match(r'[A-Za-z_0-9.]+\Z', text):
+            return text
+        key = _Key(e)
+        return done[key][0] if key in done else store(key, text)[0]
+
+    def wrap(item, level):
+        text, prec = item
+        return text if prec >= level else f'({text})'
+
+    def render(e):
+        """``(text, precedence)``: 3 atom, 2 product, 1 sum or negative."""
+        op = e.operator()
+        if op is None:
+            key = _Key(e)
+            if key in names:
+                return names[key], 3
+            if e.is_symbol():
+                raise AnalysisError(f"no value for the symbol {e}", entry=entry)
+            value = _constant(e, entry)
+            return _literal(value), (3 if value >= 0 else 1)
+        key = _Key(e)
+        if key in done:
+            return done[key]
+        if not e.variables():
+            value = _constant(e, entry)
+            return _literal(value), (3 if value >= 0 else 1)
+        if op is add_vararg:
+            item = _sum(e.operands())
+        elif op is mul_vararg:
+            item = _product(e.operands())
+        elif op is operator.pow:
+            item = _power(*e.operands())
+        elif _function_name(op) in FUNCTIONS:
+            function = FUNCTIONS[_function_name(op)][0 if python else 1]
+            item = f"{function}({', '.join(render(o)[0] for o in e.operands())})", 3
+        else:
+            raise AnalysisError(f"{e} has no numerical value", entry=entry)
+        if cse and uses.get(key, 0) > 1:
+            return store(key, item[0])
+        return item
+
+    def _signed(e):
+        """``(negative, text, precedence)`` of a term of a sum."""
+        if e.operator() is mul_vararg and _Key(e) not in done and not (
+                cse and uses.get(_Key(e), 0) > 1):
+            factors = e.operands()
+            coefficient = [f for f in factors if f.operator() is None and f.is_numeric()]
+            if coefficient and _constant(coefficient[0], entry) < 0:
+                rest = [f for f in factors if f is not coefficient[0]]
+                c = -_constant(coefficient[0], entry)
+                text, prec = _product(rest, c)
+                return True, text, prec
+        text, prec = render(e)
+        if prec == 1 and text.startswith('-') and _is_number(text[1:]):
+            return True, text[1:], 3
+        return False, text, prec
+
+    def _sum(terms):
+        parts = []
+        for e in terms:
+            negative, text, prec = _signed(e)
+            text = text if prec >= 2 else f'({text})'
+            if not parts:
+                parts.append(f'-{text}' if negative else text)
+            else:
+                parts.append(f' - {text}' if negative else f' + {text}')
+        return ''.join(parts), 1
+
+    def _product(factors, coefficient=None):
+        numerator, denominator = [], []
+        if coefficient is None:
+            rest = []
+            for f in factors:
+                if f.operator() is None and f.is_numeric():
+                    coefficient = _constant(f, entry) * (1 if coefficient is None else coefficient)
+                else:
+                    rest.append(f)
+            factors = rest
+        for f in factors:
+            if (f.operator() is operator.pow and _Key(f) not in done and
+                    not (cse and uses.get(_Key(f), 0) > 1)):
+                base, exponent = f.operands()
+                if exponent.is_numeric() and exponent < 0:
+                    denominator.append(_power(base, -exponent))
+                    continue
+            numerator.append(render(f))
+        negative = coefficient is not None and coefficient < 0
+        if coefficient is not None and abs(coefficient) != 1:
+            numerator.insert(0, (_literal(abs(coefficient)), 3))
+        text = '*'.join(wrap(item, 2) for item in numerator) or '1.0'
+        if denominator:
+            below = '*'.join(wrap(item, 2) for item in denominator)
+            text += '/' + (wrap(denominator[0], 3) if len(denominator) == 1 else f'({below})')
+        if negative:
+            return f'-{text}', 1
+        return text, (2 if len(numerator) + len(denominator) > 1 or denominator else
+                      numerator[0][1])
+
+    def _power(base, exponent):
+        if exponent.is_integer():
+            n = int(exponent)
+            if n < 0:
+                text, prec = _power(base, -exponent)
+                return '1.0/' + (text if prec == 3 else f'({text})'), 2
+            if n == 1:
+                return render(base)
+            if python:
+                return f'{wrap(render(base), 3)}**{n}', 3
+            if n <= 4:
+                return '*'.join([atomic(base)] * n), 2
+            return f'pow({render(base)[0]}, {n}.0)', 3
+        if exponent.is_numeric() and exponent == SR(1) / 2:
+            return f"{'math.sqrt' if python else 'sqrt'}({render(base)[0]})", 3
+        if exponent.is_numeric() and exponent == -SR(1) / 2:
+            return f"1.0/{'math.sqrt' if python else 'sqrt'}({render(base)[0]})", 2
+        if python:
+            return f'{wrap(render(base), 3)}**{wrap(render(exponent), 3)}', 3
+        return f'pow({render(base)[0]}, {render(exponent)[0]})', 3
+
+    results = [render(e)[0] for e in exprs]
+    return temps, results
+
+
+def _is_number(text):
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True

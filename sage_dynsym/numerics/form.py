@@ -1,0 +1,242 @@
+r"""
+The numerical form of equations of motion: linear systems to solve per step
+
+A record of :mod:`sage_dynsym.analysis.motion` is turned into the blocks
+that a numerical right-hand side evaluates at each state and then solves
+(no symbolic inverse):
+
+- second order `E(q, \dot q, \ddot q) = 0`: the mass matrix
+  `M = \partial E/\partial \ddot q` and the forcing `F = -E|_{\ddot q = 0}`,
+  so that `M \ddot q = F`; with holonomic constraints `f_j(q, t) = 0` and
+  their multipliers `\mu_j` (the equations containing
+  `-\sum_j \mu_j \partial f_j/\partial q_i`) the augmented system
+
+  .. MATH::
+
+      \begin{pmatrix} M & -J^T \\ J & 0 \end{pmatrix}
+      \begin{pmatrix} \ddot q \\ \mu \end{pmatrix} =
+      \begin{pmatrix} F \\ \gamma \end{pmatrix}, \qquad
+      J = \frac{\partial f}{\partial q}, \quad
+      \gamma = -\Bigl(\frac{\partial (J\dot q)}{\partial q}\dot q
+      + 2\,\frac{\partial J}{\partial t}\dot q
+      + \frac{\partial^2 f}{\partial t^2}\Bigr)
+
+  (the second time derivative of the constraints vanishes);
+- first order `B \dot x = F(x)`: `B` (skipped when it is the identity) and `F`.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+    sage: from sage_dynsym.numerics.form import NumericalForm
+    sage: x, dx, ddx, m, k = var('x dx ddx m k')
+    sage: N = NumericalForm(SecondOrderEquations([m*ddx + k*x], [x], [dx], [ddx])); N
+    Numerical form M x'' = F in (x), parameters (k, m)
+    sage: N.matrix(), N.vector()
+    ([m], [-k*x])
+"""
+from sage.matrix.constructor import matrix
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from ..symbols import t as _t
+
+
+def _optional(record, name):
+    method = getattr(record, name, None)
+    return [SR(e) for e in (method() if method is not None else None) or ()]
+
+
+class NumericalForm:
+    r"""
+    The blocks `A y = b` of a record's equations (see the module
+    documentation) with the state, the parameters and, for the second
+    order, the constraints.
+
+    INPUT:
+
+    - ``record`` -- a :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`
+      or :class:`~sage_dynsym.analysis.motion.FirstOrderEquations`
+    - ``energy`` -- (optional) a conserved energy in the state variables
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: from sage_dynsym.numerics.form import NumericalForm
+        sage: i, u, L, C = var('i u L C')
+        sage: N = NumericalForm(FirstOrderEquations([-u, i], [i, u], lhs_matrix=[L, C]))
+        sage: N, N.state(), N.parameters()
+        (Numerical form B x' = F in (i, u), parameters (C, L), [i, u], [C, L])
+        sage: N.matrix()
+        [L 0]
+        [0 C]
+        sage: N.vector()
+        [-u, i]
+
+    TESTS::
+
+        sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+        sage: x, dx, ddx = var('x dx ddx')
+        sage: NumericalForm(SecondOrderEquations([ddx^2 + x], [x], [dx], [ddx]))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: numerical_rhs: the equations are not linear in the accelerations (ddx)
+    """
+
+    def __init__(self, record, energy=None):
+        self._energy = None if energy is None else SR(energy)
+        self._constraints, self._J, self._gamma, self._f_t = [], [], [], []
+        if hasattr(record, 'accelerations'):
+            self._second_order(record)
+        else:
+            self._order = 1
+            self._state, self._hidden = list(record.variables()), []
+            self._n = len(self._state)
+            B = record.lhs_matrix()
+            self._A = None if B.is_one() else B
+            self._b = list(record.rhs())
+        exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
+        exprs += self._constraints + ([] if self._energy is None else [self._energy])
+        hidden = {str(v) for v in self._state + self._hidden + [_t]}
+        found = {}
+        for e in exprs:
+            for v in SR(e).variables():
+                if str(v) not in hidden:
+                    found[str(v)] = v
+        self._parameters = [found[k] for k in sorted(found)]
+        self._kernels = {}
+
+    def _second_order(self, record):
+        self._order = 2
+        q, dq, ddq = record.coordinates(), record.velocities(), record.accelerations()
+        mu = _optional(record, 'multipliers')
+        f = _optional(record, 'constraints')
+        E = record.equations()
+        M = matrix(SR, [[e.diff(a) for a in ddq] for e in E]) if E else matrix(SR, 0, 0)
+        if any(entry.has(a) for entry in M.list() for a in ddq + mu):
+            raise AnalysisError("the equations are not linear in the accelerations ("
+                                f"{', '.join(map(str, ddq))})", entry="numerical_rhs")
+        zero = {a: 0 for a in ddq + mu}
+        F = [-e.subs(zero) for e in E]
+        self._state, self._hidden = list(q) + list(dq), list(ddq) + mu
+        self._n = len(q)
+        self._constraints = f
+        if f:
+            J = [[fj.diff(qi) for qi in q] for fj in f]
+            gamma = []
+            for row, fj in zip(J, f):
+                Jdq = sum(a * b for a, b in zip(row, dq))
+                gamma.append(-(sum(Jdq.diff(qk) * dk for qk, dk in zip(q, dq))
+                               + 2 * Jdq.diff(_t) + fj.diff(_t, 2)))
+            self._J, self._gamma = J, gamma
+            self._f_t = [fj.diff(_t) for fj in f]
+            m, n = len(f), len(q)
+            A = matrix(SR, n + m, n + m)
+            A[:n, :n] = M
+            A[:n, n:] = -matrix(SR, J).transpose()
+            A[n:, :n] = matrix(SR, J)
+            self._A, self._b = A, F + gamma
+        else:
+            self._A, self._b = M, F
+
+    def __repr__(self):
+        left = ("M x'' = F" if self._order == 2 else
+                ("x' = F" if self._A is None else "B x' = F"))
+        if self._constraints:
+            left += f" with {len(self._constraints)} constraints"
+        coords = self._state[:self._n] if self._order == 2 else self._state
+        return (f"Numerical form {left} in ({', '.join(map(str, coords))}), parameters "
+                f"({', '.join(map(str, self._parameters))})")
+
+    def order(self):
+        r"""1 or 2, the order of the equations.
+
+        EXAMPLES: see :meth:`state`.
+        """
+        return self._order
+
+    def state(self):
+        r"""
+        The state variables: coordinates then velocities (second order), or
+        the variables (first order).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: N = NumericalForm(SecondOrderEquations([ddx + x], [x], [dx], [ddx]))
+            sage: N.state(), N.order()
+            ([x, dx], 2)
+        """
+        return list(self._state)
+
+    def parameters(self):
+        r"""The other symbols of the equations (time excepted), sorted by name.
+
+        EXAMPLES: see the class documentation.
+        """
+        return list(self._parameters)
+
+    def matrix(self):
+        r"""The matrix `A` of `A y = b` (``None`` for the identity).
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._A
+
+    def vector(self):
+        r"""The right-hand side `b` of `A y = b`.
+
+        EXAMPLES: see the class documentation.
+        """
+        return list(self._b)
+
+    def constraints(self):
+        r"""
+        The holonomic constraints `f_j(q, t)`, their Jacobian `J` (rows) and
+        `\partial f/\partial t`, as ``(f, J, f_t)`` (empty lists when there
+        are none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: NumericalForm(SecondOrderEquations([ddx + x], [x], [dx], [ddx])).constraints()
+            ([], [], [])
+        """
+        return list(self._constraints), [list(r) for r in self._J], list(self._f_t)
+
+    def energy(self):
+        r"""The conserved energy given (``None`` if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: E = SecondOrderEquations([ddx + x], [x], [dx], [ddx])
+            sage: NumericalForm(E, energy=(dx^2 + x^2)/2).energy()
+            1/2*dx^2 + 1/2*x^2
+        """
+        return self._energy
+
+    def kernel(self, backend='auto'):
+        r"""
+        The compiled evaluation of the blocks (see
+        :func:`~sage_dynsym.numerics.compiler.compile_kernel`), built once
+        per backend.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, dx, ddx, k = var('x dx ddx k')
+            sage: N = NumericalForm(SecondOrderEquations([ddx + k*x], [x], [dx], [ddx]))
+            sage: N.kernel('python')
+            Python kernel: 2 states, 1 parameters
+        """
+        from .compiler import compile_kernel
+        if backend not in self._kernels:
+            self._kernels[backend] = compile_kernel(self, backend)
+        return self._kernels[backend]

@@ -1,0 +1,151 @@
+r"""
+The numerical methods every model has: right-hand side, simulation, code
+
+:class:`NumericalMethods` is a base class of the models. It works only
+through the model's ``to_linearizer()`` (one of the records of
+:mod:`sage_dynsym.analysis.motion`) and the optional hook
+``_conserved_energy()`` (a symbolic energy in the state variables and the
+parameters, or ``None``), and gives
+
+- :meth:`~NumericalMethods.numerical_rhs` (see :mod:`~sage_dynsym.numerics.rhs`),
+- :meth:`~NumericalMethods.simulate` (see :mod:`~sage_dynsym.numerics.simulate`),
+- :meth:`~NumericalMethods.code` (see :mod:`~sage_dynsym.numerics.codegen`).
+
+The numerical form of the equations (and its compiled code) is built once
+per model object.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+    sage: from sage_dynsym.numerics.methods import NumericalMethods
+    sage: x, dx, ddx, k = var('x dx ddx k')
+    sage: class Oscillator(NumericalMethods):
+    ....:     def to_linearizer(self):
+    ....:         return SecondOrderEquations([ddx + k*x], [x], [dx], [ddx])
+    ....:     def _conserved_energy(self):
+    ....:         return (dx^2 + k*x^2)/2
+    sage: T = Oscillator().simulate({k: 1}, {x: 1, dx: 0}, 20)
+    sage: T.energy_drift() < 1e-9
+    True
+"""
+import weakref
+
+from .codegen import generate_code
+from .form import NumericalForm
+from .rhs import RightHandSide
+from .simulate import simulate as _simulate
+
+_FORMS = {}
+
+
+class NumericalMethods:
+    r"""
+    Mixin of the models: numerical right-hand side, simulation and code
+    generation from ``to_linearizer()`` (see the module documentation).
+
+    EXAMPLES: see the module documentation.
+    """
+
+    def _conserved_energy(self):
+        r"""The conserved energy of the model, or ``None`` (the default)."""
+        return None
+
+    def _numerical_form(self):
+        key = id(self)
+        cached = _FORMS.get(key)
+        if cached is not None and cached[0]() is self:
+            return cached[1]
+        form = NumericalForm(self.to_linearizer(), energy=self._conserved_energy())
+        try:
+            ref = weakref.ref(self, lambda _, key=key: _FORMS.pop(key, None))
+        except TypeError:       # objects without weak references: no cache
+            return form
+        _FORMS[key] = (ref, form)
+        return form
+
+    def numerical_rhs(self, values, backend='auto'):
+        r"""
+        A callable ``f(t, x)`` returning `\dot x` as a NumPy array, ``x``
+        over the state variables (coordinates then velocities for
+        second-order equations), with the parameter values ``values`` (a
+        dict, symbols or names as keys); compiled, solving the linear
+        system of the equations at each call (see
+        :func:`~sage_dynsym.numerics.rhs.numerical_rhs`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.methods import NumericalMethods
+            sage: x, y, w = var('x y w')
+            sage: class Rotation(NumericalMethods):
+            ....:     def to_linearizer(self):
+            ....:         return FirstOrderEquations([-w*y, w*x], [x, y])
+            sage: f = Rotation().numerical_rhs({'w': 2}); f(0, [1.0, 1.0])
+            array([-2.,  2.])
+            sage: f.variables()
+            [x, y]
+        """
+        return RightHandSide(self._numerical_form(), values, backend)
+
+    def simulate(self, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
+                 atol=1e-12, backend='auto', **options):
+        r"""
+        The motion from ``initial`` (a dict over the state variables) at
+        ``t0`` to ``t_end``, sampled at ``points`` times (both ends
+        included), as a :class:`~sage_dynsym.numerics.trajectory.Trajectory`;
+        ``values`` the parameter values. See
+        :func:`~sage_dynsym.numerics.simulate.simulate` for the integrators
+        (``method='auto'``, ``'stiff'``, or a method of SciPy's
+        ``solve_ivp``) and the tolerances.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.methods import NumericalMethods
+            sage: x, a = var('x a')
+            sage: class Decay(NumericalMethods):
+            ....:     def to_linearizer(self):
+            ....:         return FirstOrderEquations([-a*x], [x])
+            sage: T = Decay().simulate({a: 1}, {x: 1}, 1, points=3, method='stiff')
+            sage: abs(T.values(x)[-1] - exp(-1.)) < 1e-8
+            True
+            sage: T.energy_drift()
+            Traceback (most recent call last):
+            ...
+            ModelError: energy_drift: the model has no energy integral (explicit time, dissipation or non-potential forces)
+        """
+        rhs = self.numerical_rhs(values, backend)
+        return _simulate(rhs, values, initial, t_end, points=points, t0=t0, method=method,
+                         rtol=rtol, atol=atol, **options)
+
+    def code(self, language='python', cse=True):
+        r"""
+        Readable source code of the equations in ``language``
+        (``'python'`` or ``'c'``): the mass matrix and the forcing
+        (second-order equations) or the right-hand side and the matrix of
+        the left-hand side (first order); see
+        :func:`~sage_dynsym.numerics.codegen.generate_code`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.methods import NumericalMethods
+            sage: x, a = var('x a')
+            sage: class Decay(NumericalMethods):
+            ....:     def to_linearizer(self):
+            ....:         return FirstOrderEquations([-a*x], [x])
+            sage: print(Decay().code('c'))
+            /* Right-hand side F of the equations dx/dt = F in x = (x),
+               generated by sage_dynsym. Matrices are flat arrays, row by row.
+               x_ = (x), p = (a) */
+            #include <math.h>
+            <BLANKLINE>
+            void rhs(double t, const double *x_, const double *p,
+                     double *F)
+            {
+                const double x = x_[0];
+                const double a = p[0];
+                F[0] = -a*x;
+            }
+        """
+        return generate_code(self._numerical_form(), language=language, cse=cse)

@@ -1,0 +1,195 @@
+r"""
+Numerical right-hand sides `\dot x = f(t, x)` of equations of motion
+
+:func:`numerical_rhs` turns a record of :mod:`sage_dynsym.analysis.motion`
+(second order `E(q, \dot q, \ddot q) = 0`, or first order
+`B \dot x = F(x)`) and parameter values into a callable ``f(t, x)`` on
+NumPy arrays: at each call the mass matrix and the forcing (or `B` and
+`F`) are evaluated by compiled code with common subexpressions shared, and
+the linear system is solved numerically -- no symbolic inverse (see
+:mod:`~sage_dynsym.numerics.form` and :mod:`~sage_dynsym.numerics.compiler`).
+For second-order equations the state is `x = (q, \dot q)`.
+
+EXAMPLES: a pendulum::
+
+    sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+    sage: from sage_dynsym.numerics.rhs import numerical_rhs
+    sage: x, dx, ddx, g, l = var('x dx ddx g l')
+    sage: E = SecondOrderEquations([l*ddx + g*sin(x)], [x], [dx], [ddx])
+    sage: f = numerical_rhs(E, {g: 9.81, 'l': 2}); f
+    Numerical right-hand side x' = f(t, x) in (x, dx)
+    sage: f(0, [pi.n()/2, 0.5])
+    array([ 0.5  , -4.905])
+"""
+import numpy as np
+
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import ModelError
+from .form import NumericalForm
+
+
+def parameter_values(form, values):
+    r"""
+    The values of the parameters of ``form`` (in its order) as a NumPy
+    array, from the dict ``values`` (keys: symbols or their names; values:
+    Python or Sage numbers). Other keys are ignored.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: from sage_dynsym.numerics.form import NumericalForm
+        sage: from sage_dynsym.numerics.rhs import parameter_values
+        sage: x, a, b = var('x a b')
+        sage: N = NumericalForm(FirstOrderEquations([a*x + b], [x]))
+        sage: parameter_values(N, {'a': 1/2, b: sqrt(2)})
+        array([0.5       , 1.41421356])
+
+    TESTS::
+
+        sage: parameter_values(N, {a: 1})
+        Traceback (most recent call last):
+        ...
+        ModelError: values: missing values of the parameters b
+        sage: parameter_values(N, {a: 1, b: x})
+        Traceback (most recent call last):
+        ...
+        ModelError: values: the value of b must be a real number, got x
+    """
+    if not isinstance(values, dict):
+        raise ModelError(f"values must be a dict of parameter values, got {type(values).__name__}",
+                         entry="values")
+    by_name = {str(k): v for k, v in values.items()}
+    missing = [a for a in form.parameters() if str(a) not in by_name]
+    if missing:
+        raise ModelError(f"missing values of the parameters {', '.join(map(str, missing))}",
+                         entry="values")
+    return np.array([real_number(by_name[str(a)], str(a)) for a in form.parameters()],
+                    dtype=float)
+
+
+def real_number(value, name, entry="values"):
+    r"""
+    ``value`` (a Python or Sage number, or a constant expression) as a float.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.rhs import real_number
+        sage: real_number(pi, 'a'), real_number(3/4, 'b')
+        (3.141592653589793, 0.75)
+    """
+    try:
+        number = complex(SR(value)) if not isinstance(value, (int, float)) else value
+    except (TypeError, ValueError):
+        number = None
+    if number is None or (isinstance(number, complex) and number.imag != 0):
+        raise ModelError(f"the value of {name} must be a real number, got {value}", entry=entry)
+    return float(number.real)
+
+
+class RightHandSide(SageObject):
+    r"""
+    A numerical right-hand side ``f(t, x)`` (see :func:`numerical_rhs`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: from sage_dynsym.numerics.rhs import numerical_rhs
+        sage: x, y, w = var('x y w')
+        sage: f = numerical_rhs(FirstOrderEquations([w*y, -w*x], [x, y]), {w: 2})
+        sage: f(0.0, [1.0, 0.0]), f.variables(), f.parameters()
+        (array([ 0., -2.]), [x, y], {w: 2.0})
+    """
+
+    def __init__(self, form, values, backend='auto'):
+        self._form = form
+        self._p = parameter_values(form, values)
+        self._kernel = form.kernel(backend)
+
+    def _repr_(self):
+        return (f"Numerical right-hand side x' = f(t, x) in "
+                f"({', '.join(map(str, self._form.state()))})")
+
+    def __call__(self, t, x):
+        return self._kernel(t, x, self._p)
+
+    def variables(self):
+        r"""The state variables, in the order of ``x``.
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._form.state()
+
+    def parameters(self):
+        r"""The parameter values used, as a dict.
+
+        EXAMPLES: see the class documentation.
+        """
+        return dict(zip(self._form.parameters(), map(float, self._p)))
+
+    def backend(self):
+        r"""``'c'`` (compiled) or ``'python'``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.rhs import numerical_rhs
+            sage: x = var('x')
+            sage: numerical_rhs(FirstOrderEquations([-x], [x]), {}, backend='python').backend()
+            'python'
+        """
+        return self._kernel.backend()
+
+    def form(self):
+        r"""The :class:`~sage_dynsym.numerics.form.NumericalForm` evaluated.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.rhs import numerical_rhs
+            sage: x = var('x')
+            sage: numerical_rhs(FirstOrderEquations([-x], [x]), {}).form()
+            Numerical form x' = F in (x), parameters ()
+        """
+        return self._form
+
+
+def numerical_rhs(equations, values, backend='auto'):
+    r"""
+    The numerical right-hand side ``f(t, x)`` of ``equations``.
+
+    INPUT:
+
+    - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion` or a
+      :class:`~sage_dynsym.numerics.form.NumericalForm`
+    - ``values`` -- dict of the parameter values (symbols or names as keys)
+    - ``backend`` -- ``'auto'`` (compiled C when a compiler works, else
+      Python), ``'c'`` or ``'python'``
+
+    OUTPUT: a :class:`RightHandSide`: ``f(t, x)`` takes a sequence ``x``
+    over :meth:`RightHandSide.variables` and returns a NumPy array
+
+    EXAMPLES: see the module documentation; holonomic constraints are
+    honoured through their multipliers (a Cartesian pendulum,
+    `x^2 + y^2 = l^2`)::
+
+        sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+        sage: from sage_dynsym.numerics.rhs import numerical_rhs
+        sage: x, y, dx, dy, ddx, ddy, mu, g = var('x y dx dy ddx ddy mu g')
+        sage: class Pendulum(SecondOrderEquations):
+        ....:     def constraints(self): return [x^2 + y^2 - 1]
+        ....:     def multipliers(self): return [mu]
+        sage: E = Pendulum([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy])
+        sage: numerical_rhs(E, {g: 1})(0, [1.0, 0.0, 0.0, 1.0])    # centripetal
+        array([ 0.,  1., -1., -1.])
+
+    TESTS::
+
+        sage: numerical_rhs(E, {})
+        Traceback (most recent call last):
+        ...
+        ModelError: values: missing values of the parameters g
+    """
+    form = equations if isinstance(equations, NumericalForm) else NumericalForm(equations)
+    return RightHandSide(form, values, backend)

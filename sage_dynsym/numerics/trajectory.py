@@ -1,0 +1,266 @@
+r"""
+Trajectories: the samples of a numerical solution
+
+A :class:`Trajectory` holds the sample times and the states of a solution
+computed by :func:`~sage_dynsym.numerics.simulate.simulate`, with the
+state variables, the parameter values and, when the model has one, its
+conserved energy, so that any expression of the state can be followed
+along the motion.
+
+EXAMPLES::
+
+    sage: import numpy as np
+    sage: from sage_dynsym.numerics.trajectory import Trajectory
+    sage: x, dx, w = var('x dx w')
+    sage: ts = np.linspace(0, 1, 3)
+    sage: T = Trajectory(ts, np.array([np.cos(ts), -np.sin(ts)]).T, [x, dx], {w: 1.0},
+    ....:                energy=(dx^2 + w*x^2)/2)
+    sage: T
+    Trajectory in (x, dx): 3 samples, t from 0.0 to 1.0
+    sage: T.values(x)
+    [1.0, 0.8775825618903728, 0.5403023058681398]
+    sage: T.energy_drift() < 1e-15
+    True
+"""
+import numpy as np
+
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import ModelError
+from ..symbols import t as _t
+
+
+class Trajectory(SageObject):
+    r"""
+    The samples of a solution.
+
+    INPUT:
+
+    - ``times`` -- 1-D array of the sample times
+    - ``states`` -- 2-D array, one row per sample, one column per variable
+    - ``variables`` -- the state variables (symbols)
+    - ``parameters`` -- dict of the parameter values used (symbol -> float)
+    - ``energy`` -- (optional) a conserved energy in the variables and
+      parameters, for :meth:`energy_drift`
+    - ``method`` -- (optional) the integrator's name
+
+    EXAMPLES: see the module documentation.
+    """
+
+    def __init__(self, times, states, variables, parameters, energy=None, method=None):
+        self._times = np.array(times, dtype=float)
+        self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
+        self._variables = [SR(v) for v in variables]
+        self._parameters = {SR(k): float(v) for k, v in parameters.items()}
+        self._energy = None if energy is None else SR(energy)
+        self._method = method
+
+    def _repr_(self):
+        return (f"Trajectory in ({', '.join(map(str, self._variables))}): "
+                f"{len(self._times)} samples, t from {self._times[0]} to {self._times[-1]}")
+
+    def times(self):
+        r"""The sample times (a NumPy array).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}).times()
+            array([0., 1.])
+        """
+        return self._times.copy()
+
+    def states(self):
+        r"""The states, one row per sample (a NumPy array).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}).states()
+            array([[1.],
+                   [2.]])
+        """
+        return self._states.copy()
+
+    def variables(self):
+        r"""The state variables, in the order of the columns of :meth:`states`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}).variables()
+            [x]
+        """
+        return list(self._variables)
+
+    def parameters(self):
+        r"""The parameter values of the simulation.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x, a = var('x a')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {a: 2}).parameters()
+            {a: 2.0}
+        """
+        return dict(self._parameters)
+
+    def method(self):
+        r"""The name of the integrator used (``None`` if unknown).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}, method='DOP853').method()
+            'DOP853'
+        """
+        return self._method
+
+    def _array(self, expression):
+        """The values of a variable, its name, or an expression of the state."""
+        names = {str(v): i for i, v in enumerate(self._variables)}
+        if isinstance(expression, str):
+            if expression not in names:
+                raise ModelError(f"{expression!r} is not a state variable (they are "
+                                 f"{', '.join(names)})", entry="values")
+            return self._states[:, names[expression]]
+        expression = SR(expression)
+        if str(expression) in names and expression.is_symbol():
+            return self._states[:, names[str(expression)]]
+        from .compiler import python_function
+        known = {str(v) for v in self._variables + list(self._parameters) + [_t]}
+        unknown = sorted({str(v) for v in expression.variables()} - known)
+        if unknown:
+            raise ModelError(f"{expression} depends on {', '.join(unknown)}, which are not state "
+                             "variables or parameters of the trajectory", entry="values")
+        f = python_function([expression.subs(self._parameters)], [_t] + self._variables,
+                            entry="values")
+        return np.array([f(s, *row)[0] for s, row in zip(self._times, self._states.tolist())])
+
+    def values(self, expression):
+        r"""
+        The values of a state variable (a symbol or its name), or of an
+        expression in the state variables, the parameters and ``t``, at the
+        samples (a list of floats).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x, a = var('x a')
+            sage: T = Trajectory([0, 1], [[1], [2]], [x], {a: 3})
+            sage: from sage_dynsym.symbols import t
+            sage: T.values('x'), T.values(a*x^2 + t)
+            ([1.0, 2.0], [3.0, 13.0])
+
+        TESTS::
+
+            sage: T.values('y')
+            Traceback (most recent call last):
+            ...
+            ModelError: values: 'y' is not a state variable (they are x)
+            sage: T.values(x + var('b'))
+            Traceback (most recent call last):
+            ...
+            ModelError: values: b + x depends on b, which are not state variables or parameters of the trajectory
+        """
+        return [float(v) for v in self._array(expression)]
+
+    def final_state(self):
+        r"""The state at the last sample, as a dict over the variables.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}).final_state()
+            {x: 2.0}
+        """
+        return dict(zip(self._variables, map(float, self._states[-1])))
+
+    def energy(self):
+        r"""The conserved energy of the model (``None`` if it has none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=x^2).energy()
+            x^2
+        """
+        return self._energy
+
+    def energy_drift(self):
+        r"""
+        The largest relative change of the energy along the samples,
+        `\max_k |E(t_k) - E(t_0)| / |E(t_0)|` (absolute when `E(t_0) = 0`).
+
+        Raises :class:`~sage_dynsym.errors.ModelError` when the model has no
+        energy integral (explicit time, dissipation, non-potential forces).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=x^2).energy_drift()
+            3.0
+
+        TESTS::
+
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}).energy_drift()
+            Traceback (most recent call last):
+            ...
+            ModelError: energy_drift: the model has no energy integral (explicit time, dissipation or non-potential forces)
+        """
+        if self._energy is None:
+            raise ModelError("the model has no energy integral (explicit time, dissipation or "
+                             "non-potential forces)", entry="energy_drift")
+        E = self._array(self._energy)
+        scale = abs(E[0]) if E[0] != 0 else 1.0
+        return float(np.max(np.abs(E - E[0])) / scale)
+
+    def plot(self, *expressions, **options):
+        r"""
+        The graphs of state variables (default: all) or expressions of the
+        state against time, one colour each.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x, dx = var('x dx')
+            sage: T = Trajectory([0, 1, 2], [[1, 0], [0, -1], [-1, 0]], [x, dx], {})
+            sage: T.plot(x, dx^2)
+            Graphics object consisting of 2 graphics primitives
+        """
+        from sage.plot.graphics import Graphics
+        from sage.plot.line import line
+        from sage.plot.colors import rainbow
+        expressions = expressions or tuple(self._variables)
+        colors = rainbow(max(len(expressions), 1))
+        G = Graphics()
+        for expression, color in zip(expressions, colors):
+            G += line(list(zip(self._times.tolist(), self.values(expression))), color=color,
+                      legend_label=str(expression), **options)
+        G.axes_labels(['$t$', ''])
+        return G
+
+    def phase_portrait(self, x, y, **options):
+        r"""The curve `(x(t), y(t))` of two state variables or expressions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x, dx = var('x dx')
+            sage: T = Trajectory([0, 1, 2], [[1, 0], [0, -1], [-1, 0]], [x, dx], {})
+            sage: T.phase_portrait(x, dx)
+            Graphics object consisting of 1 graphics primitive
+        """
+        from sage.plot.line import line
+        G = line(list(zip(self.values(x), self.values(y))), **options)
+        G.axes_labels([f'${SR(x)._latex_()}$' if not isinstance(x, str) else x,
+                       f'${SR(y)._latex_()}$' if not isinstance(y, str) else y])
+        return G
