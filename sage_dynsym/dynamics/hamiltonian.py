@@ -33,14 +33,15 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import momentum
+from ..symbols import momentum, t as _t
 from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import FirstOrderEquations
+from ..numerics.methods import NumericalMethods
 from .brackets import poisson_bracket
 from .natural_form import Elimination
 
 
-class Hamiltonian(SageObject):
+class Hamiltonian(SageObject, NumericalMethods):
     r"""
     The Hamiltonian of a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`.
 
@@ -195,6 +196,29 @@ class Hamiltonian(SageObject):
         pairs = self.equations()
         return FirstOrderEquations([a for a, _ in pairs] + [b for _, b in pairs],
                                    list(self._coordinates) + list(self._momenta))
+
+    def _conserved_energy(self):
+        r"""
+        `H` when it is conserved: no explicit time, no dissipation or
+        generalized forces, a regular Lagrangian; else ``None``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, c = var('x dx c')
+            sage: H = Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian()
+            sage: H._conserved_energy()
+            1/2*p_x^2 + 1/2*x^2
+            sage: T = H.simulate({}, {x: 1, 'p_x': 0}, 2*pi, points=3)
+            sage: [round(v, 8) for v in T.values(x)], T.energy_drift() < 1e-9
+            ([1.0, -1.0, 1.0], True)
+            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).hamiltonian()._conserved_energy() is None
+            True
+        """
+        if self._dirac is not None or self._expr.has(_t) or any(
+                not F.is_zero() for F in self._nonpotential_forces()):
+            return None
+        return self._expr
 
     def _repr_(self):
         kind = "Hamiltonian" if self._dirac is None else "Canonical Hamiltonian (singular Lagrangian)"

@@ -73,9 +73,11 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..analysis import linearize as _linearize
+from ..analysis.motion import FirstOrderEquations
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
+from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
 from .integrals import casimirs as _casimirs, polynomial_integrals as _polynomial_integrals
 
@@ -85,7 +87,7 @@ _COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
 _DEFAULT_NAMES = {n for name in NAMED for n in _default_names(name)}
 
 
-class LiePoissonSystem(Model):
+class LiePoissonSystem(Model, NumericalMethods):
     r"""
     A Hamiltonian system `\dot x = J(x)\nabla H` on a Lie algebra (or any
     Poisson structure).
@@ -504,19 +506,28 @@ class LiePoissonSystem(Model):
                                 name=self._name, reduction=reduction,
                                 positive=[a for a in self._positive if str(a) not in names])
 
-    def numerical_rhs(self, values):
+    def to_linearizer(self):
         r"""
-        A callable ``f(t, x)`` returning `\dot x` as a NumPy array, with the
-        parameters given by ``values`` (a dict); ``x`` in the order of
-        :meth:`variables`.
+        The equations `\dot x = J(x)\nabla H` as neutral data
+        (:class:`~sage_dynsym.analysis.motion.FirstOrderEquations` in
+        :meth:`variables`); through it the system gets ``numerical_rhs``,
+        ``simulate`` and ``code`` of
+        :class:`~sage_dynsym.numerics.methods.NumericalMethods`, with `H`
+        as the energy of the trajectories.
 
         EXAMPLES::
 
             sage: from sage_dynsym.lie.system import LiePoissonSystem
             sage: M1, M2, M3, a = var('M1 M2 M3 a')
-            sage: f = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/a)/2).numerical_rhs({a: 3})
+            sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/a)/2)
+            sage: S.to_linearizer()
+            First-order equations x' = F(x) in (M1, M2, M3)
+            sage: f = S.numerical_rhs({a: 3})
             sage: f(0, [1.0, 2.0, 3.0])
             array([-1.,  2., -1.])
+            sage: T = S.simulate({a: 3}, {M1: 1, M2: 0.1, M3: 0.1}, 10)
+            sage: T.energy_drift() < 1e-9
+            True
 
         TESTS::
 
@@ -525,20 +536,10 @@ class LiePoissonSystem(Model):
             ...
             ModelError: values: missing values of the parameters a
         """
-        import numpy as np
-        from sage.ext.fast_callable import fast_callable
-        from sage.rings.real_double import RDF
-        values = {SR(k): v for k, v in values.items()}
-        missing = [a for a in self._parameters if a not in values]
-        if missing:
-            raise ModelError(f"missing values of the parameters {', '.join(map(str, missing))}",
-                             entry="values")
-        x = self.variables()
-        fs = [fast_callable(SR(e).subs(values), vars=x, domain=RDF) for e in self.equations()]
+        return FirstOrderEquations(self.equations(), self.variables())
 
-        def rhs(t, state):
-            return np.array([f(*state) for f in fs], dtype=float)
-        return rhs
+    def _conserved_energy(self):
+        return self._H
 
     # ------------------------------------------------------------------
     # the model interface
