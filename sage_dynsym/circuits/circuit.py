@@ -42,6 +42,7 @@ The node-potential method gives Kirchhoff's current law instead::
 
 from sage.misc.cachefunc import cached_method
 from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
 
 from ..errors import CircuitError
 from ..symbols import CIRCUIT_VARIABLES
@@ -63,6 +64,9 @@ class Circuit(Model):
       [L1, L2], value: M}`` (see :func:`~sage_dynsym.circuits.elements.parse_entries`)
     - ``name`` -- (optional) a title
     - ``parameters`` -- (optional) extra symbols allowed in long-form values
+    - ``positive`` -- (optional) parameters and element values known to be
+      positive (:meth:`positive_parameters`); the analysis assumes no
+      other sign
 
     The element name is its symbol (``L1`` is ``var('L1')``); a nonlinear
     resistor ``f1`` without a value is ``function('f1')`` of its branch
@@ -95,7 +99,7 @@ class Circuit(Model):
         CircuitError: branches[0]: the name 'q1' is reserved for variables ...
     """
 
-    def __init__(self, branches, name=None, parameters=()):
+    def __init__(self, branches, name=None, parameters=(), positive=()):
         entries = list(branches)
         self._parameters = tuple(str(p) for p in parameters)
         self._branches, self._couplings = parse_entries(entries, self._parameters)
@@ -124,7 +128,18 @@ class Circuit(Model):
                                    "once", entry=f"branches[{k}]")
             pairs.add(pair)
         self._name = name
-        self._cgraph = CircuitGraph(self._branches)
+        symbols = set(self._parameters) | {b.name for b in self._branches
+                                           if b.kind != 'nonlinear_resistor'}
+        self._positive = []
+        for k, p in enumerate(positive):
+            if str(p) not in symbols:
+                raise CircuitError(f"{p} is neither a parameter nor an element value of the "
+                                   "circuit (positive lists symbols known to be positive)",
+                                   entry=f"positive[{k}]")
+            self._positive.append(SR.var(str(p)))
+        where = {b.name: p for p, b in enumerate(self._branches)}
+        self._cgraph = CircuitGraph(self._branches, links=[
+            (where[c.first], where[c.second]) for c in self._couplings])
 
     def _repr_(self):
         title = f" {self._name!r}" if self._name else ""
@@ -134,7 +149,8 @@ class Circuit(Model):
 
     def __eq__(self, other):
         return (isinstance(other, Circuit) and self._branches == other._branches
-                and self._couplings == other._couplings)
+                and self._couplings == other._couplings
+                and self._positive == other._positive)
 
     def __hash__(self):
         return hash((self._branches, self._couplings))
@@ -146,9 +162,10 @@ class Circuit(Model):
 
     def equations(self):
         r"""
-        The equations of motion: the state equations (8) (raises
-        :class:`~sage_dynsym.errors.CircuitError` for a circuit that has
-        no Brayton--Moser form).
+        The equations of motion: the right-hand sides of the state
+        equations (:meth:`state_equations`; raises
+        :class:`~sage_dynsym.errors.CircuitError` for a circuit without
+        unique or explicit solution).
 
         EXAMPLES::
 
@@ -206,6 +223,8 @@ class Circuit(Model):
             out['name'] = self.name()
         if self.parameters():
             out['parameters'] = list(self.parameters())
+        if self._positive:
+            out['positive'] = [str(p) for p in self._positive]
         branches = []
         for b in self.branches():
             short = PREFIXES.get(b.name[0]) == b.kind and (
@@ -227,7 +246,8 @@ class Circuit(Model):
     def results(self):
         r"""
         The ``results:`` section of a saved description: the state
-        equations and the mixed potential (where the circuit has them) and
+        equations (where the circuit has them), the mixed potential (of a
+        complete circuit) and
         the loop Lagrangian of a linear circuit, as text and LaTeX.
 
         EXAMPLES::
@@ -248,8 +268,9 @@ class Circuit(Model):
             results['state_variables'] = [str(v) for v, _ in self.state_variables()]
             results['state_equations'] = [str(e) for e in equations]
             results['state_equations_latex'] = [str(latex(e)) for e in equations]
-            results['mixed_potential_text'] = str(self.mixed_potential())
-            results['mixed_potential_latex'] = str(latex(self.mixed_potential()))
+            if self.has_mixed_potential():
+                results['mixed_potential_text'] = str(self.mixed_potential())
+                results['mixed_potential_latex'] = str(latex(self.mixed_potential()))
         if self._is_linear():
             try:
                 L = self.lagrangian(method="loop")
@@ -400,6 +421,71 @@ class Circuit(Model):
                                "Kirchhoff's voltage law cannot hold for arbitrary "
                                "source values") from None
 
+    def subs(self, values):
+        r"""
+        The circuit with parameter and element values substituted.
+
+        INPUT:
+
+        - ``values`` -- a dictionary ``{symbol: value}``, keys symbols or
+          names of parameters or elements (an element's name is its value's
+          symbol); values exact or floating-point numbers, or expressions
+
+        OUTPUT: a :class:`Circuit`; the substituted symbols leave
+        :meth:`parameters` and :meth:`positive_parameters`
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']],
+            ....:             positive=['R1'])
+            sage: C2 = C.subs({'R1': 2, var('C1'): 0.5}); C2.state_equations()
+            [E1 - 2*i1 + u2, -i1]
+            sage: C2.lhs_matrix(), C2.positive_parameters()
+            (
+            [                L1                  0]
+            [                 0 0.500000000000000], []
+            )
+
+        TESTS::
+
+            sage: C.subs({'i1': 0})
+            Traceback (most recent call last):
+            ...
+            CircuitError: subs: i1 is not a parameter or element value of the circuit; they are: E1, R1, L1, C1
+            sage: C.subs({'R1': 0})
+            Traceback (most recent call last):
+            ...
+            CircuitError: branches[1].value: a resistance of 0 is a short circuit: join its two nodes into one instead
+        """
+        from sage.rings.real_mpfr import RR
+        if not isinstance(values, dict):
+            raise CircuitError(f"expected a dictionary {{symbol: value}}, got {values!r}",
+                               entry="subs")
+        symbols = list(self._parameters) + [b.name for b in self._branches
+                                            if b.kind != 'nonlinear_resistor']
+        substitution = {}
+        for key, value in values.items():
+            symbol = SR.var(key) if isinstance(key, str) else SR(key)
+            if not symbol.is_symbol() or str(symbol) not in symbols:
+                raise CircuitError(f"{symbol} is not a parameter or element value of the "
+                                   f"circuit; they are: {', '.join(symbols)}", entry="subs")
+            if isinstance(value, float):
+                value = RR(value)       # a Python float inside SR breaks matrix algebra
+            substitution[symbol] = SR(value)
+        entries = []
+        for b in self._branches:
+            entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}
+            if b.value is not None:
+                entry['value'] = SR(b.value).subs(substitution)
+            entries.append(entry)
+        entries += [{'kind': 'mutual', 'between': [c.first, c.second],
+                     'value': SR(c.value).subs(substitution)} for c in self._couplings]
+        done = {str(x) for x in substitution}
+        return Circuit(entries, name=self._name,
+                       parameters=[p for p in self._parameters if p not in done],
+                       positive=[p for p in self._positive if str(p) not in done])
+
     @cached_method
     def loop_analysis(self):
         r"""
@@ -520,10 +606,66 @@ class Circuit(Model):
         """
         return self.brayton_moser().mixed_potential()
 
+    @cached_method
+    def nodal_analysis(self):
+        r"""
+        The state equations by modified nodal analysis with a normal tree,
+        for any solvable circuit (capacitor loops and inductor cut-sets
+        reduce the state); see
+        :class:`~sage_dynsym.circuits.nodal.NodalAnalysis`.
+
+        EXAMPLES: a resistive bridge has no Brayton--Moser split::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'R2'], [2, 1, 'C1']])
+            sage: C.nodal_analysis()
+            Modified nodal analysis of Circuit with 4 branches on 3 nodes
+        """
+        from .nodal import NodalAnalysis
+        return NodalAnalysis(self)
+
+    def has_mixed_potential(self):
+        r"""
+        Whether the circuit is complete (has the Brayton--Moser split);
+        then :meth:`state_equations` come from the mixed potential, else
+        from :meth:`nodal_analysis`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']]).has_mixed_potential()
+            True
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1'], [2, 1, 'C2']]).has_mixed_potential()
+            False
+        """
+        try:
+            self.brayton_moser()
+        except CircuitError:
+            return False
+        return True
+
+    def _state_form(self):
+        # the mixed potential for a complete circuit, else nodal analysis
+        try:
+            return self.brayton_moser()
+        except CircuitError as split:
+            try:
+                return self.nodal_analysis()
+            except CircuitError as err:
+                from .nodal import NOT_EXPLICIT
+                if not err.message.startswith(NOT_EXPLICIT):
+                    raise
+                raise CircuitError(f"{split.message}; {err.message}",
+                                   entry=split.entry or err.entry) from None
+
     def state_variables(self):
         r"""
         The state variables, pairs ``(symbol, element name)``: inductor
-        currents ``i1, ..., ir`` first, then capacitor voltages.
+        currents ``i1, ..., ir`` first, then capacitor voltages. A loop of
+        capacitors (and voltage sources) or a cut-set of inductors (and
+        current sources) leaves out one of its elements: the state is a
+        maximal set of independent capacitor voltages and inductor currents
+        (see :mod:`~sage_dynsym.circuits.nodal`).
 
         EXAMPLES: a loop of an inductor, a resistor and a capacitor::
 
@@ -531,14 +673,28 @@ class Circuit(Model):
             sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
             sage: C.state_variables()
             [(i1, 'L1'), (u2, 'C1')]
+
+        Two capacitors in parallel have one voltage::
+
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1'], [2, 1, 'C2']]).state_variables()
+            [(i1, 'L1'), (u2, 'C1')]
         """
-        return self.brayton_moser().state_variables()
+        return self._state_form().state_variables()
 
     def state_equations(self):
         r"""
-        The right-hand sides of `L_k\, di_k/dt = \partial P/\partial i_k`
-        and `C_l\, du_l/dt = -\partial P/\partial u_l`, in the order of
-        :meth:`state_variables`.
+        The right-hand sides `F` of `B\dot x = F(x)`, `B` the
+        :meth:`lhs_matrix`, in the order of :meth:`state_variables`. For a
+        complete circuit these are `\partial P/\partial i_k` and
+        `-\partial P/\partial u_l` of the mixed potential (the equations
+        `L_k\, di_k/dt = \partial P/\partial i_k`, `C_l\, du_l/dt =
+        -\partial P/\partial u_l`); otherwise they come from
+        :meth:`nodal_analysis`.
+
+        Raises :class:`~sage_dynsym.errors.CircuitError` for a circuit
+        without unique solution (a loop of voltage sources, a cut-set of
+        current sources) and for nonlinear resistors whose relations cannot
+        be solved explicitly, naming the elements.
 
         EXAMPLES: a loop of an inductor, a resistor and a capacitor::
 
@@ -546,5 +702,79 @@ class Circuit(Model):
             sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
             sage: C.state_equations()     # L1 di1/dt = u2 - R1 i1, C1 du2/dt = -i1
             [-R1*i1 + u2, -i1]
+
+        Two capacitors in parallel::
+
+            sage: C = Circuit([[1, 2, 'L1'], [2, 1, 'C1'], [2, 1, 'C2']])
+            sage: C.state_equations(), C.lhs_matrix()
+            (
+                        [     L1       0]
+            [u2, -i1], [      0 C1 + C2]
+            )
+
+        TESTS::
+
+            sage: Circuit([[1, 2, 'E1'], [2, 1, 'E2'], [1, 2, 'C1']]).state_equations()
+            Traceback (most recent call last):
+            ...
+            CircuitError: branches[1]: the voltage sources E2, E1 form a loop: ...
+            sage: Circuit([[1, 2, 'f1'], [2, 3, 'R1'], [3, 1, 'C1']]).state_equations()
+            Traceback (most recent call last):
+            ...
+            CircuitError: branches[0]: no Brayton-Moser split: ...; no explicit state equations: ...
         """
-        return self.brayton_moser().state_equations()
+        return self._state_form().state_equations()
+
+    def lhs_matrix(self):
+        r"""
+        The matrix `B` of `B\dot x = F(x)`, `F` the :meth:`state_equations`,
+        rows and columns in the order of :meth:`state_variables`: the
+        inductance matrix (mutual inductances included) and the
+        capacitances, block-diagonal; for a reduced state (capacitor loops,
+        inductor cut-sets) the effective matrices of
+        :meth:`~sage_dynsym.circuits.nodal.NodalAnalysis.lhs_matrix`.
+
+        EXAMPLES: a transformer with galvanically isolated sides::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 3, 'L2'], [3, 2, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:             parameters=['M'])
+            sage: C.lhs_matrix(), C.state_equations()
+            (
+            [L1  M]
+            [ M L2], [E1, -R2*i2]
+            )
+        """
+        form = self._state_form()
+        if hasattr(form, 'lhs_matrix'):
+            return form.lhs_matrix()
+        from sage.matrix.special import block_diagonal_matrix
+        from sage.matrix.constructor import matrix
+        from sage.symbolic.ring import SR
+        return block_diagonal_matrix([form.inductance_matrix(),
+                                      matrix.diagonal(SR, form.capacitances())],
+                                     subdivide=False)
+
+    def to_linearizer(self):
+        r"""
+        The state equations as the neutral record of the analysis:
+        :class:`~sage_dynsym.analysis.motion.FirstOrderEquations` with the
+        right-hand sides, the state variables and `B` (:meth:`lhs_matrix`).
+        This is what :func:`~sage_dynsym.analysis.linear.linearize` uses.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: from sage_dynsym.analysis.linear import linearize
+            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])
+            sage: F = C.to_linearizer(); F
+            First-order equations B x' = F(x) in (i1, u2)
+            sage: linearize(C, {var('i1'): 0, var('u2'): 0}).jacobian()
+            [-R1/L1   1/L1]
+            [ -1/C1      0]
+        """
+        from ..analysis.motion import FirstOrderEquations
+        return FirstOrderEquations(self.state_equations(),
+                                   [x for x, _ in self.state_variables()],
+                                   lhs_matrix=self.lhs_matrix())

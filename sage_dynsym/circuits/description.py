@@ -9,6 +9,8 @@ with the keys
 - ``branches`` (required): a list of ``[from, to, element]`` entries or
   long-form mappings (see :mod:`~sage_dynsym.circuits.elements`),
 - ``parameters`` (optional): extra symbols used in long-form values,
+- ``positive`` (optional): parameters and element values known to be
+  positive (see :meth:`~sage_dynsym.dynamics.model.Model.positive_parameters`),
 - ``results`` (optional): written by ``save``; ignored when reading.
 
 The generic ``sage_dynsym.load`` reads the YAML file safely and hands the
@@ -33,12 +35,12 @@ EXAMPLES::
     CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
 """
 from ..errors import DescriptionError, DynSymError, brief
-from ..io.fields import title, MAX_PARAMETERS
+from ..io.fields import declared_names, title, MAX_PARAMETERS
 from ..symbols import check_name
 from .circuit import Circuit
 from .elements import PREFIXES
 
-KEYS = {'kind', 'name', 'branches', 'parameters', 'results'}
+KEYS = {'kind', 'name', 'branches', 'parameters', 'positive', 'results'}
 
 #: Most branches (entries of ``branches``) of a circuit description.
 MAX_BRANCHES = 2000
@@ -66,7 +68,7 @@ def circuit_from_dict(data, source=None):
         sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1']], 'colour': 1})
         Traceback (most recent call last):
         ...
-        DescriptionError: colour: unknown key; a circuit description has keys branches, kind, name, parameters, results
+        DescriptionError: colour: unknown key; a circuit description has keys branches, kind, name, parameters, positive, results
         sage: circuit_from_dict({'kind': 'mechanical', 'branches': []})
         Traceback (most recent call last):
         ...
@@ -89,6 +91,14 @@ def circuit_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         CircuitError: x.yaml: branches[1].value: a capacitance of 0 is an open circuit: remove the branch instead
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1'], [2, 1, 'C1']],
+        ....:                    'positive': ['R1', 'C1']}).positive_parameters()
+        [R1, C1]
+        sage: circuit_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'R1'], [2, 1, 'C1']],
+        ....:                    'positive': ['R2']}, 'x.yaml')
+        Traceback (most recent call last):
+        ...
+        CircuitError: x.yaml: positive[0]: R2 is neither a parameter nor an element value of the circuit (positive lists symbols known to be positive)
     """
     if not isinstance(data, dict):
         raise DescriptionError(f"a circuit description is a mapping, got {type(data).__name__}",
@@ -126,8 +136,9 @@ def circuit_from_dict(data, source=None):
                                source=source)
     for i, p in enumerate(parameters):
         check_name(p, f"parameters[{i}]", source=source)
+    positive = declared_names(data, 'positive', source, required=False, limit=MAX_PARAMETERS)
     try:
-        return Circuit(branches, name=name, parameters=parameters)
+        return Circuit(branches, name=name, parameters=parameters, positive=positive)
     except DynSymError as err:
         raise err.with_context(source=source) from None
 

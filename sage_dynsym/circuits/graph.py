@@ -89,6 +89,44 @@ def node_key(v):
     return (isinstance(v, str), v)
 
 
+def capacitor_order(cgraph):
+    r"""
+    The capacitors (branch positions) in the naming order of the state
+    variables: breadth-first through the capacitor forest, each tree of it
+    started at its highest node (trees taken from the highest such node
+    down), neighbours visited in increasing node order; capacitors closing
+    a loop of capacitors come last, in branch order.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.elements import parse_entries
+        sage: from sage_dynsym.circuits.graph import CircuitGraph, capacitor_order
+        sage: CG = CircuitGraph(parse_entries([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'C3'],
+        ....:                                  [1, 3, 'L1']])[0])
+        sage: [CG.branches[p].name for p in capacitor_order(CG)]
+        ['C3', 'C2', 'C1']
+    """
+    adjacency = {v: [] for v in cgraph.nodes}
+    for p, b in enumerate(cgraph.branches):
+        if b.kind == 'capacitor':
+            adjacency[b.tail].append((b.head, p))
+            adjacency[b.head].append((b.tail, p))
+    order, seen = [], set()
+    for root in reversed(cgraph.nodes):
+        if root in seen or not adjacency[root]:
+            continue
+        seen.add(root)
+        queue = [root]
+        for v in queue:
+            for w, p in sorted(adjacency[v], key=lambda e: (node_key(e[0]), e[1])):
+                if w not in seen:
+                    seen.add(w)
+                    order.append(p)
+                    queue.append(w)
+    return order + [p for p, b in enumerate(cgraph.branches)
+                    if b.kind == 'capacitor' and p not in order]
+
+
 class CircuitGraph:
     r"""
     The graph of a circuit, with its branches.
@@ -96,9 +134,12 @@ class CircuitGraph:
     INPUT:
 
     - ``branches`` -- tuple of :class:`~sage_dynsym.circuits.elements.Branch`
+    - ``links`` -- (optional) pairs of branch positions coupled by a mutual
+      inductance: parts of the graph joined only by such a coupling (a
+      transformer with galvanically isolated sides) form one circuit
 
     Raises :class:`~sage_dynsym.errors.CircuitError` for a self-loop or a
-    disconnected graph.
+    graph whose parts are joined neither by branches nor by couplings.
 
     TESTS::
 
@@ -111,10 +152,16 @@ class CircuitGraph:
         sage: CircuitGraph(parse_entries([[1, 2, 'R1'], [3, 4, 'C1']])[0])
         Traceback (most recent call last):
         ...
-        CircuitError: the circuit graph is disconnected: its parts have nodes [1, 2] and [3, 4]
+        CircuitError: the circuit graph is disconnected: its parts have nodes [1, 2] and [3, 4] (parts may be joined only through mutual inductances)
+
+    Two windings coupled by a mutual inductance only::
+
+        sage: CG = CircuitGraph(parse_entries([[1, 2, 'L1'], [3, 4, 'L2']])[0], links=[(0, 1)])
+        sage: CG.graph.connected_components_number()
+        2
     """
 
-    def __init__(self, branches):
+    def __init__(self, branches, links=()):
         self.branches = tuple(branches)
         graph = Graph(multiedges=True, loops=False)
         for pos, b in enumerate(self.branches):
@@ -124,23 +171,31 @@ class CircuitGraph:
             graph.add_edge(b.tail, b.head, pos)
         if graph.num_verts() == 0:
             raise CircuitError("a circuit needs at least one branch", entry="branches")
-        if not graph.is_connected():
+        joined = UnionFind(graph.vertices(sort=False))
+        for part in graph.connected_components(sort=False):
+            for v in part[1:]:
+                joined.union(part[0], v)
+        for a, b in links:
+            joined.union(self.branches[a].tail, self.branches[b].tail)
+        if len({joined.find(v) for v in graph.vertices(sort=False)}) > 1:
             parts = sorted((sorted(c, key=node_key) for c in graph.connected_components()),
                            key=lambda c: node_key(c[0]))
             raise CircuitError("the circuit graph is disconnected: its parts have "
-                               f"nodes {' and '.join(map(str, parts))}")
+                               f"nodes {' and '.join(map(str, parts))} (parts may be "
+                               "joined only through mutual inductances)")
         self.graph = graph.copy(immutable=True)
         self.nodes = tuple(sorted(graph.vertices(sort=False), key=node_key))
 
     def spanning_tree(self, priority=(), exclude=()):
         r"""
-        Return a spanning tree as a set of branch positions.
+        Return a spanning tree (a spanning forest when the graph has
+        several parts) as a set of branch positions.
 
         Kruskal's algorithm (Sage's ``min_spanning_tree``) with branches of
         the kinds listed first in ``priority`` preferred, then the others,
         ties broken by branch order; branches of the kinds in ``exclude``
         are never taken. Returns ``None`` when the remaining branches do not
-        connect all nodes.
+        connect the nodes of each part.
 
         EXAMPLES::
 
@@ -156,7 +211,7 @@ class CircuitGraph:
                 if b.kind not in exclude]
         sub = Graph(kept, multiedges=True, loops=False, format='list_of_edges')
         sub.add_vertices(self.nodes)
-        if not sub.is_connected():
+        if sub.connected_components_number() != self.graph.connected_components_number():
             return None
         weight = {pos: rank.get(self.branches[pos].kind, len(rank)) * m + pos
                   for _, _, pos in kept}
@@ -232,7 +287,8 @@ class CircuitGraph:
 
 class RootedTree:
     r"""
-    A spanning tree with parent pointers, for fundamental loops and paths.
+    A spanning tree (or forest, each tree rooted at its highest node) with
+    parent pointers, for fundamental loops and paths.
 
     ``path(a, b)`` is the list of ``(branch, sign)`` met when walking in the
     tree from node ``a`` to node ``b``, with ``sign = +1`` when a branch is
@@ -261,16 +317,18 @@ class RootedTree:
             b = branches[pos]
             adjacency[b.tail].append((b.head, pos))
             adjacency[b.head].append((b.tail, pos))
-        root = cgraph.nodes[-1]
-        self.parent = {root: None}       # node -> (parent node, branch position)
-        self.depth = {root: 0}
-        queue = [root]
-        for v in queue:
-            for w, pos in adjacency[v]:
-                if w not in self.parent:
-                    self.parent[w] = (v, pos)
-                    self.depth[w] = self.depth[v] + 1
-                    queue.append(w)
+        self.parent, self.depth = {}, {}   # node -> (parent node, branch position)
+        for root in reversed(cgraph.nodes):     # one root per part of a forest
+            if root in self.parent:
+                continue
+            self.parent[root], self.depth[root] = None, 0
+            queue = [root]
+            for v in queue:
+                for w, pos in adjacency[v]:
+                    if w not in self.parent:
+                        self.parent[w] = (v, pos)
+                        self.depth[w] = self.depth[v] + 1
+                        queue.append(w)
         self._branches = branches
 
     def _step(self, v):

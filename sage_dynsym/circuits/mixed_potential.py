@@ -137,7 +137,7 @@ from sage.matrix.constructor import matrix
 
 from ..errors import CircuitError
 from .elements import own_variable
-from .graph import node_key
+from .graph import capacitor_order
 
 RESISTIVE = ('resistor', 'nonlinear_resistor', 'current_source')
 
@@ -233,8 +233,12 @@ class MixedPotential:
                 "voltages are not fixed by the capacitors and their currents are not "
                 "fixed by the inductors",
                 entry=f"branches[{br[err.args[0]].index}]") from None
-        if len(tree) != len(cg.nodes) - 1:
-            root = kforest.find(cg.nodes[0])
+        parts = cg.graph.connected_components(sort=False)
+        if len(tree) != len(cg.nodes) - len(parts):
+            # a part of the graph that K does not span: its piece around its
+            # first node is cut off by inductors and current sources
+            part = next(c for c in parts if len({kforest.find(v) for v in c}) > 1)
+            root = kforest.find(part[0])
             cut = [b.name for b in br
                    if (kforest.find(b.tail) == root) != (kforest.find(b.head) == root)]
             raise CircuitError("the circuit is not complete: the inductors and current "
@@ -247,23 +251,7 @@ class MixedPotential:
     def _name_states(self, cg):
         br = self._branches
         inductors = [p for p, b in enumerate(br) if b.kind == 'inductor']
-        adjacency = {v: [] for v in cg.nodes}
-        for p, b in enumerate(br):
-            if b.kind == 'capacitor':
-                adjacency[b.tail].append((b.head, p))
-                adjacency[b.head].append((b.tail, p))
-        capacitors, seen = [], set()
-        for root in reversed(cg.nodes):
-            if root in seen or not adjacency[root]:
-                continue
-            seen.add(root)
-            queue = [root]
-            for v in queue:
-                for w, p in sorted(adjacency[v], key=lambda e: (node_key(e[0]), e[1])):
-                    if w not in seen:
-                        seen.add(w)
-                        capacitors.append(p)
-                        queue.append(w)
+        capacitors = capacitor_order(cg)     # a forest here: the circuit is complete
         self._inductors, self._capacitors = inductors, capacitors
         r = len(inductors)
         self._symbol = {p: SR.var(f"i{k + 1}") for k, p in enumerate(inductors)}
