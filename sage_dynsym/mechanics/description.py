@@ -18,8 +18,12 @@ A mechanical system::
     force_function:
       uniform_gravity: [0, 0, -g]    # or newtonian: {nu: .., r: .., direction: [..]}
                                      # or expression: "U(q, t)"
+                                     # or a list of such terms, added together
     dissipation: "c*dtheta^2/2"      # optional Rayleigh function (velocities d<name>)
     forces: ["0", "M0*sin(w*t)"]     # optional, one per coordinate
+    loads:                           # optional forces at body points and torques
+      - {body: pendulum, point: [0, 0, l], force: [F, 0, 0], axes: 0}
+    constraints: []                  # optional holonomic constraints f(q, t) (== 0)
     bodies:
       - name: pendulum
         parent: 0                    # 0, a body name or a 1-based body index
@@ -59,16 +63,19 @@ from ..io.fields import check_keys, declared_names, declared_positive, title, MA
 from ..symbols import velocity, acceleration, momentum, check_mechanical_names
 
 MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'positive', 'coordinates', 'force_function',
-                   'dissipation', 'forces', 'bodies', 'results'}
+                   'dissipation', 'forces', 'loads', 'constraints', 'bodies', 'results'}
 REQUIRED_MECHANICAL = ('coordinates', 'bodies')
 BODY_KEYS = {'name', 'parent', 'rotations', 'joint', 'velocity', 'mass_center', 'mass',
              'inertia'}
 FIELD_KEYS = {'uniform_gravity', 'newtonian', 'expression'}
 NEWTONIAN_KEYS = {'nu', 'r', 'direction'}
+LOAD_KEYS = {'body', 'point', 'force', 'torque', 'axes'}
 #: Most generalized coordinates of a mechanical description.
 MAX_COORDINATES = 50
 #: Most bodies of a mechanical description.
 MAX_BODIES = 50
+#: Most terms of a force function, loads and constraints of a description.
+MAX_TERMS = 200
 
 
 def _refusals(coordinates, velocities_allowed, where):
@@ -153,6 +160,37 @@ def mechanical_system_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         DescriptionError: f.yaml: bodies[0].rotations[0]: expected a pair [axis, angle], got [3, 'x', 1]
+
+    Several force-function terms, loads and constraints; errors name the
+    entry::
+
+        sage: d = {'kind': 'mechanical', 'parameters': ['m', 'k', 'g', 'F'],
+        ....:      'coordinates': ['x', 'z'],
+        ....:      'force_function': [{'uniform_gravity': [0, 0, '-g']}, {'expression': '-k*x^2/2'}],
+        ....:      'loads': [{'body': 'b', 'force': ['F', 0, 0]}],
+        ....:      'bodies': [{'name': 'b', 'joint': ['x', 0, 'z'], 'mass': 'm'}]}
+        sage: S = mechanical_system_from_dict(d); S.force_function(), S.generalized_forces()
+        (-1/2*k*x^2 - g*m*z, [F, 0])
+        sage: d['force_function'][1] = {'expression': '-k*dx^2'}
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: force_function[1].expression: dx is the velocity of the coordinate x, which the force function U(q, t) cannot depend on: velocity-dependent forces belong in 'dissipation' or 'forces' (in '-k*dx^2')
+        sage: d['force_function'] = None; d['loads'][0]['body'] = 'c'
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ModelError: f.yaml: loads[0].body: unknown body 'c'; known bodies are: b
+        sage: d['loads'][0] = {'body': 'b', 'point': [0, 'dx', 0], 'force': [1, 0, 0]}
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: loads[0].point[1]: dx is the velocity of the coordinate x, which cannot appear in positions, angles, masses or inertia (in 'dx')
+        sage: d['loads'] = []; d['constraints'] = ['k - 1']
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ModelError: f.yaml: constraints[0]: the constraint k - 1 == 0 does not depend on the coordinates x, z
     """
     check_keys(data, MECHANICAL_KEYS, None, source, "a mechanical description")
     for key in REQUIRED_MECHANICAL:
@@ -174,6 +212,8 @@ def mechanical_system_from_dict(data, source=None):
             "velocity-dependent forces belong in 'dissipation' or 'forces'")),
         'motion': ExpressionParser(parameters + coordinates + velocities,
                                    refused=_refusals(coordinates, True, "")),
+        'constraint': ExpressionParser(parameters + coordinates, refused=_refusals(
+            coordinates, False, "a holonomic constraint f(q, t) cannot depend on")),
     }
     bodies_data = data['bodies']
     if not isinstance(bodies_data, list):
@@ -195,12 +235,16 @@ def mechanical_system_from_dict(data, source=None):
             forces = [motion.parse(f, entry=f'forces[{i}]') for i, f in enumerate(forces)]
         dissipation = motion.parse(data.get('dissipation', 0), entry='dissipation')
         field = _force_field(data.get('force_function'), parsers['force'])
+        loads = [_load(d, i, parsers) for i, d in enumerate(_entries(data, 'loads'))]
+        constraints = [parsers['constraint'].parse(f, entry=f'constraints[{i}]')
+                       for i, f in enumerate(_entries(data, 'constraints'))]
         symbols = [motion.parse(q) for q in coordinates]
         return MechanicalSystem(bodies, symbols,
                                 parameters=[motion.parse(p) for p in parameters],
                                 force_function=field, dissipation=dissipation,
                                 forces=forces, name=name,
-                                positive=[motion.parse(p) for p in positive])
+                                positive=[motion.parse(p) for p in positive],
+                                loads=loads, constraints=constraints)
     except DynSymError as err:
         raise err.with_context(source=source) from None
 
@@ -263,16 +307,70 @@ def _body(data, index, parsers, source):
         raise type(err)(err.message, entry=f"{entry}.{field}" if field else entry) from None
 
 
+def _entries(data, key):
+    # an optional list of at most MAX_TERMS entries
+    value = data.get(key)
+    if value is None:
+        return []
+    if not isinstance(value, list):
+        raise DescriptionError(f"expected a list, got {brief(value)}", entry=key)
+    if len(value) > MAX_TERMS:
+        raise DescriptionError(f"{len(value)} entries; a description file has at most "
+                               f"{MAX_TERMS} (MAX_TERMS)", entry=key)
+    return value
+
+
+def _load(data, index, parsers):
+    entry = f"loads[{index}]"
+    check_keys(data, LOAD_KEYS, entry, None, "a load")
+    if 'body' not in data:
+        raise DescriptionError("missing key 'body' (a body name or 1-based index)", entry=entry)
+    if not ('force' in data or 'torque' in data):
+        raise DescriptionError("a load needs a 'force', a 'torque' or both", entry=entry)
+    load = {}
+    for key in ('body', 'axes'):
+        if key in data:
+            value = data[key]
+            if not isinstance(value, (int, str)) or isinstance(value, bool):
+                raise DescriptionError(f"expected {'0, ' if key == 'axes' else ''}a body name "
+                                       f"or a 1-based body index, got {brief(value)}",
+                                       entry=f"{entry}.{key}")
+            load[key] = value
+    for key in ('point', 'force', 'torque'):
+        if data.get(key) is None:
+            continue
+        value = data[key]
+        if not isinstance(value, list) or len(value) != 3:
+            raise DescriptionError(f"expected a list of 3 expressions, got {brief(value)}",
+                                   entry=f"{entry}.{key}")
+        parser = parsers['geometry'] if key == 'point' else parsers['motion']
+        load[key] = [parser.parse(c, entry=f"{entry}.{key}[{i}]") for i, c in enumerate(value)]
+    return load
+
+
 def _force_field(data, parser):
-    from .force_functions import UniformGravity, NewtonianField
     if data is None:
         return None
-    check_keys(data, FIELD_KEYS, 'force_function', None, "a force function")
+    if isinstance(data, list):
+        if not data:
+            raise DescriptionError("expected at least one term (or no force_function key)",
+                                   entry='force_function')
+        if len(data) > MAX_TERMS:
+            raise DescriptionError(f"{len(data)} terms; a description file has at most "
+                                   f"{MAX_TERMS} (MAX_TERMS)", entry='force_function')
+        return [_force_term(term, parser, f"force_function[{i}]")
+                for i, term in enumerate(data)]
+    return _force_term(data, parser, 'force_function')
+
+
+def _force_term(data, parser, where):
+    from .force_functions import UniformGravity, NewtonianField
+    check_keys(data, FIELD_KEYS, where, None, "a force-function term")
     if len(data) != 1:
-        raise DescriptionError("give exactly one of uniform_gravity, newtonian, expression",
-                               entry='force_function')
+        raise DescriptionError("give exactly one of uniform_gravity, newtonian, expression "
+                               "per term (a list of terms adds them)", entry=where)
     (key, value), = data.items()
-    entry = f"force_function.{key}"
+    entry = f"{where}.{key}"
     if key == 'expression':
         return parser.parse(value, entry=entry)
     if key == 'uniform_gravity':

@@ -58,6 +58,19 @@ class UniformGravity(SageObject):
         """
         return self._g
 
+    def subs(self, values):
+        r"""
+        The field with ``values`` (a dictionary) substituted.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import UniformGravity
+            sage: g = var('g')
+            sage: UniformGravity([0, 0, -g]).subs({g: 9.81})
+            uniform gravity field g = (0, 0, -9.81000000000000)
+        """
+        return UniformGravity([SR(c).subs(values) for c in self._g])
+
     def evaluate(self, system):
         r"""
         The force function of ``system`` in this field.
@@ -144,6 +157,20 @@ class NewtonianField(SageObject):
             (1, 2, (0, 1, 0))
         """
         return self._nu, self._r, self._e
+
+    def subs(self, values):
+        r"""
+        The field with ``values`` (a dictionary) substituted.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import NewtonianField
+            sage: nu, r = var('nu r')
+            sage: NewtonianField(nu, r, [1, 0, 0]).subs({nu: 1})
+            Newtonian central field nu = 1, distance r, direction (1, 0, 0)
+        """
+        return NewtonianField(self._nu.subs(values), self._r.subs(values),
+                              [SR(c).subs(values) for c in self._e])
 
     def evaluate(self, system):
         r"""

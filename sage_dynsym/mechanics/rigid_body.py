@@ -417,3 +417,35 @@ class RigidBody(SageObject):
             (True, False)
         """
         return self._mass.is_zero() and self._inertia.is_zero()
+
+    def subs(self, values, parent=None):
+        r"""
+        The body with ``values`` (a dictionary ``{symbol: value}``)
+        substituted in its angles, vectors, mass and inertia; the parent is
+        ``parent`` if given, else the same (a body object kept by name).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: m, l = var('m l')
+            sage: b = RigidBody('b', mass_center=[0, 0, l], mass=m).subs({m: 2, l: 0.5})
+            sage: b.mass(), b.mass_center()
+            (2, (0, 0, 0.500000000000000))
+
+        TESTS::
+
+            sage: RigidBody('b', mass=m).subs({m: -1})
+            Traceback (most recent call last):
+            ...
+            ModelError: b.mass: the mass must be non-negative, got -1
+        """
+        def sub(v):
+            return None if v is None else [SR(c).subs(values) for c in v]
+        if parent is None:
+            parent = self._parent.name() if isinstance(self._parent, RigidBody) else self._parent
+        return RigidBody(self._name, parent=parent,
+                         rotations=[(axis, SR(angle).subs(values))
+                                    for axis, angle in self._rotations],
+                         joint=sub(self._joint), velocity=sub(self._velocity),
+                         mass_center=sub(self._mass_center), mass=self._mass.subs(values),
+                         inertia=self._inertia.apply_map(lambda e: SR(e).subs(values)))

@@ -36,6 +36,7 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
 import numbers
 
 from sage.matrix.constructor import matrix
+from sage.rings.real_mpfr import RR
 from sage.misc.cachefunc import cached_method
 from sage.misc.verbose import verbose
 from sage.modules.free_module_element import vector
@@ -61,6 +62,101 @@ from .rigid_body import RigidBody
 _POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
 
 
+def check_constraints(constraints, coordinates, parameters=None, entry="constraints"):
+    r"""
+    The holonomic constraints `f_j(q, t)` as expressions (a relation
+    ``lhs == rhs`` becomes ``lhs - rhs``), checked: each depends on a
+    coordinate and on no velocity; with ``parameters`` (a list) no other
+    symbol than coordinates, parameters and ``t``; and the Jacobian
+    `\partial f_j / \partial q_i` has full rank `m` at generic points
+    (evaluated at a few fixed pseudo-random points), so that no constraint
+    is redundant.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.system import check_constraints
+        sage: x, y, z, l = var('x y z l')
+        sage: check_constraints([x^2 + y^2 == l^2], [x, y])
+        [-l^2 + x^2 + y^2]
+
+    TESTS::
+
+        sage: check_constraints([x^2 + y^2 - l^2, 2*x^2 + 2*y^2 - 2*l^2], [x, y])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank 1 at generic points; remove the redundant ones
+        sage: check_constraints([x - y, y - z, x - z], [x, y, z])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints: the 3 constraints are not independent: their Jacobian with respect to the coordinates has rank 2 at generic points; remove the redundant ones
+        sage: check_constraints([x - z], [x], parameters=[l])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: undeclared symbol z; declared are: l, t
+        sage: check_constraints(["x"], [x])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: expected an expression f(q, t) or a relation, got 'x'
+    """
+    from sage.symbolic.expression import Expression
+    from ..symbols import velocity as _velocity
+    out = []
+    forbidden = {}
+    for q in coordinates:
+        forbidden[_velocity(q)] = f"the velocity {_velocity(q)}"
+        forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
+    for i, f in enumerate(constraints):
+        sub = f"{entry}[{i}]"
+        if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+            raise ModelError(f"expected an expression f(q, t) or a relation, got {f!r}",
+                             entry=sub)
+        f = SR(f)
+        if f.is_relational():
+            f = f.lhs() - f.rhs()
+        for v in f.variables():
+            if v in forbidden:
+                raise ModelError("a holonomic constraint f(q, t) cannot depend on "
+                                 f"{forbidden[v]}", entry=sub)
+            if parameters is not None and v not in coordinates and v not in parameters \
+                    and v != t:
+                raise ModelError(f"undeclared symbol {v}; declared are: "
+                                 + ", ".join(sorted(map(str, list(parameters) + [t]))),
+                                 entry=sub)
+        if not any(f.has(q) for q in coordinates):
+            raise ModelError(f"the constraint {f} == 0 does not depend on the coordinates "
+                             f"{', '.join(map(str, coordinates))}", entry=sub)
+        out.append(f)
+    if out:
+        rank = _generic_rank([[f.diff(q) for q in coordinates] for f in out])
+        if rank < len(out):
+            raise ModelError(f"the {len(out)} constraints are not independent: their Jacobian "
+                             f"with respect to the coordinates has rank {rank} at generic "
+                             "points; remove the redundant ones", entry=entry)
+    return out
+
+
+def _generic_rank(rows, points=3):
+    # the largest numerical rank over a few fixed pseudo-random points (a
+    # point where an entry cannot be evaluated is skipped)
+    import random
+    import numpy
+    symbols = sorted({v for row in rows for e in row for v in SR(e).variables()}, key=str)
+    generator = random.Random(13)
+    best = 0
+    for _ in range(points):
+        values = {v: SR(generator.randint(300, 1700)) / 1000 for v in symbols}
+        try:
+            J = numpy.array([[complex(SR(e).subs(values)) for e in row] for row in rows])
+        except (TypeError, ValueError, ArithmeticError):
+            continue
+        if not numpy.all(numpy.isfinite(J)):
+            continue
+        sigma = numpy.linalg.svd(J, compute_uv=False)
+        scale = max(sigma.max(), 1.0) if sigma.size else 1.0
+        best = max(best, int((sigma > 1e-9 * scale).sum()))
+    return best
+
+
 class MechanicalSystem(Model):
     r"""
     A system of rigid bodies.
@@ -76,10 +172,17 @@ class MechanicalSystem(Model):
       ``d<q>``, a parameter or ``t``
     - ``force_function`` -- (optional)
       :class:`~sage_dynsym.mechanics.force_functions.UniformGravity`,
-      :class:`~sage_dynsym.mechanics.force_functions.NewtonianField`, or any
-      expression `U(q, t)`
+      :class:`~sage_dynsym.mechanics.force_functions.NewtonianField`, any
+      expression `U(q, t)`, or a list of those (terms added together)
     - ``dissipation`` -- (default: 0) Rayleigh function `R(q, \dot q)`
     - ``forces`` -- (optional) generalized forces, one per coordinate
+    - ``loads`` -- (optional) list of
+      :class:`~sage_dynsym.mechanics.loads.Load` (or dictionaries with its
+      keywords): forces at body points and torques, turned into generalized
+      forces by virtual power and added to ``forces``
+    - ``constraints`` -- (optional) list of holonomic constraints `f(q, t)`
+      (each meaning `f = 0`), passed on to the Lagrangian (Lagrange
+      equations of the first kind, one multiplier per constraint)
     - ``name`` -- (optional) a name
     - ``positive`` -- (optional) parameters known to be positive; the
       analysis (stationary motions and their stability in reports) assumes
@@ -131,11 +234,38 @@ class MechanicalSystem(Model):
         Traceback (most recent call last):
         ...
         ModelError: force_function: the force function U(q, t) cannot depend on the velocity dx; velocity-dependent forces belong in the dissipation function or the generalized forces
+
+    Several force-function terms are added together (gravity and a
+    spring)::
+
+        sage: from sage_dynsym import UniformGravity
+        sage: z, k, g = var('z k g')
+        sage: S = MechanicalSystem([RigidBody('p', joint=[0, 0, z], mass=m)], [z],
+        ....:                      force_function=[UniformGravity([0, 0, -g]), -k*z^2/2])
+        sage: S.force_function()
+        -g*m*z - 1/2*k*z^2
+
+    Loads on unknown bodies, and constraints that are not holonomic
+    relations between the coordinates, are refused::
+
+        sage: MechanicalSystem([RigidBody('p', mass=m)], [z], loads=[{'body': 'q', 'force': [1, 0, 0]}])
+        Traceback (most recent call last):
+        ...
+        ModelError: loads[0].body: unknown body 'q'; known bodies are: p
+        sage: MechanicalSystem([RigidBody('p', mass=m)], [z], constraints=[k - 1])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: the constraint k - 1 == 0 does not depend on the coordinates z
+        sage: MechanicalSystem([RigidBody('p', mass=m)], [z], constraints=[z - var('dz')])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dz
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
-                 dissipation=0, forces=None, name=None, positive=()):
+                 dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=()):
         bodies = list(bodies)
+        given_names = [b.name() if isinstance(b, RigidBody) else None for b in bodies]
         for i, body in enumerate(bodies):
             if not isinstance(body, RigidBody):
                 raise ModelError(f"expected a RigidBody, got {body!r}", entry=f"bodies[{i}]")
@@ -149,6 +279,8 @@ class MechanicalSystem(Model):
         self._parameters = None if parameters is None else [SR(p) for p in parameters]
         check_mechanical_names(self._coordinates, self._parameters or (), ModelError)
         check_force_function(force_function, self._coordinates)
+        if isinstance(force_function, (list, tuple)):
+            force_function = list(force_function)
         self._force = force_function
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
@@ -166,6 +298,9 @@ class MechanicalSystem(Model):
                     raise ModelError(f"{p} is not a declared parameter", entry="positive")
         self._symbolic = Kinematics(self, SymbolicBackend())
         self._tree = self._symbolic.tree
+        self._loads = [self._checked_load(load, f"loads[{i}]", given_names)
+                       for i, load in enumerate(loads)]
+        self._constraints = check_constraints(constraints, self._coordinates, self._parameters)
 
 
     # ------------------------------------------------------------------
@@ -224,19 +359,27 @@ class MechanicalSystem(Model):
         if self._positive:
             out['positive'] = [str(p) for p in self._positive]
         out['coordinates'] = [str(q) for q in self.coordinates()]
-        field = self.force_field()
-        if isinstance(field, UniformGravity):
-            out['force_function'] = {'uniform_gravity': [_text(c) for c in field.acceleration()]}
-        elif isinstance(field, NewtonianField):
-            nu, r, e = field.parameters()
-            out['force_function'] = {'newtonian': {'nu': _text(nu), 'r': _text(r),
-                                                   'direction': [_text(c) for c in e]}}
-        elif field is not None:
-            out['force_function'] = {'expression': _text(field)}
+        terms = []
+        for field in self.force_terms():
+            if isinstance(field, UniformGravity):
+                terms.append({'uniform_gravity': [_text(c) for c in field.acceleration()]})
+            elif isinstance(field, NewtonianField):
+                nu, r, e = field.parameters()
+                terms.append({'newtonian': {'nu': _text(nu), 'r': _text(r),
+                                            'direction': [_text(c) for c in e]}})
+            else:
+                terms.append({'expression': _text(field)})
+        if terms:
+            # one term keeps the single-mapping form
+            out['force_function'] = terms if isinstance(self._force, list) else terms[0]
         if not self.dissipation().is_zero():
             out['dissipation'] = _text(self.dissipation())
-        if any(not f.is_zero() for f in self.generalized_forces()):
-            out['forces'] = [_text(f) for f in self.generalized_forces()]
+        if any(not f.is_zero() for f in self._forces):
+            out['forces'] = [_text(f) for f in self._forces]
+        if self._loads:
+            out['loads'] = [load.to_dict() for load in self._loads]
+        if self._constraints:
+            out['constraints'] = [_text(f) for f in self._constraints]
         bodies = []
         for k, body in enumerate(self.bodies(), 1):
             entry = {'name': body.name(), 'parent': self.parent_index(k),
@@ -291,7 +434,84 @@ class MechanicalSystem(Model):
             symbols += sorted({str(v) for v in self.lagrangian().expr().variables()})
         symbols += q + [str(velocity(SR(v))) for v in q] + [str(acceleration(SR(v))) for v in q]
         symbols += [str(momentum(SR(v))) for v in q]
+        if self._constraints:
+            # the Lagrange equations of the first kind hold the multipliers
+            symbols += [str(mu) for mu in self.lagrangian().multipliers()]
         return symbols, ()
+
+    def subs(self, values):
+        r"""
+        The system with parameter values substituted: in the bodies, the
+        force-function terms, the loads, the dissipation function, the
+        generalized forces and the constraints. The substituted parameters
+        leave :meth:`parameters` and the ``positive`` list.
+
+        INPUT:
+
+        - ``values`` -- a dictionary ``{parameter: value}`` (keys symbols or
+          names); values exact or floating-point numbers, or expressions
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: m, l, g = var('m l g')
+            sage: S1 = S.subs({m: 1, l: 2, 'g': 9.81}); S1.parameters()
+            []
+            sage: S1.lagrangian().lagrange_equations()[1]
+            -4*dpsi^2*cos(theta)*sin(theta) + 4*ddtheta - 19.6200000000000*sin(theta)
+
+        TESTS::
+
+            sage: S.subs({var('theta'): 0})
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: cannot substitute for theta, a coordinate, velocity or t
+            sage: S.subs({'k': 1})
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: k is not a parameter of the system; its parameters are: m, l, g
+        """
+        from ..symbols import momentum
+        if not isinstance(values, dict):
+            raise ModelError(f"expected a dictionary {{parameter: value}}, got {values!r}",
+                             entry="subs")
+        protected = set(self._coordinates) | set(self._velocities) | {t}
+        protected |= set(self._accelerations()) | {momentum(q) for q in self._coordinates}
+        substitution = {}
+        for key, value in values.items():
+            symbol = SR.var(key) if isinstance(key, str) else SR(key)
+            if not symbol.is_symbol() or symbol in protected:
+                raise ModelError(f"cannot substitute for {symbol}, a coordinate, velocity or t",
+                                 entry="subs")
+            if self._parameters is not None and symbol not in self._parameters:
+                raise ModelError(f"{symbol} is not a parameter of the system; its parameters "
+                                 f"are: {', '.join(map(str, self._parameters)) or '(none)'}",
+                                 entry="subs")
+            if isinstance(value, float):
+                # a Python float inside SR breaks matrix algebra; a Sage real does not
+                value = RR(value)
+            substitution[symbol] = SR(value)
+
+        def sub(e):
+            return SR(e).subs(substitution)
+
+        terms = [term.subs(substitution) if hasattr(term, 'evaluate') else sub(term)
+                 for term in self.force_terms()]
+        force = terms if isinstance(self._force, list) else (terms[0] if terms else None)
+        kept = [p for p in self._parameters if p not in substitution] \
+            if self._parameters is not None else None
+        bodies = [b.subs(substitution, parent=self._bodies[self._parents[k] - 1].name()
+                         if self._parents[k] else 0)
+                  for k, b in enumerate(self._bodies, 1)]
+        return MechanicalSystem(bodies, self._coordinates,
+                                parameters=kept, force_function=force,
+                                dissipation=sub(self._dissipation),
+                                forces=[sub(f) for f in self._forces], name=self._name,
+                                positive=[p for p in self._positive if p not in substitution],
+                                loads=[load.subs(substitution) for load in self._loads],
+                                constraints=[sub(f) for f in self._constraints])
 
     def euler_poisson(self, names=None):
         r"""
@@ -388,6 +608,47 @@ class MechanicalSystem(Model):
         check(self._dissipation, "dissipation")
         for i, f in enumerate(self._forces):
             check(f, f"forces[{i}]")
+        for i, term in enumerate(self.force_terms()):
+            if not hasattr(term, 'evaluate'):
+                check(term, "force_function" if not isinstance(self._force, list)
+                      else f"force_function[{i}]")
+
+    def _checked_load(self, load, entry, given_names):
+        from .loads import Load, body_index
+        load = Load.from_value(load, entry)
+        # a body index counts in the order the bodies were given (as parent
+        # indices do); keep names, which do not depend on the order
+        names = {}
+        for key in ('body', 'axes'):
+            ref = getattr(load, key)()
+            if isinstance(ref, int) and ref > 0:
+                if ref > len(given_names):
+                    raise ModelError(f"body index {ref} out of range 1..{len(given_names)}",
+                                     entry=f"{entry}.{key}")
+                ref = given_names[ref - 1]
+            if ref != 0:
+                body_index(self, ref, f"{entry}.{key}")
+            names[key] = ref
+        load = Load(names['body'], point=load.point(), force=load.force(),
+                    torque=load.torque(), axes=names['axes'])
+        for c in load.point():
+            for v in SR(c).variables():
+                if v in self._velocities or v in self._accelerations():
+                    raise ModelError(f"the point of application cannot depend on {v}",
+                                     entry=f"{entry}.point")
+        if self._parameters is not None:
+            declared = set(self._coordinates) | set(self._velocities) | set(self._parameters) | {t}
+            names = ", ".join(sorted(map(str, set(self._parameters) | {t})))
+            for field in ('point', 'force', 'torque'):
+                for c in getattr(load, field)() or ():
+                    for v in SR(c).variables():
+                        if v not in declared:
+                            raise ModelError(f"undeclared symbol {v}; declared are: {names}",
+                                             entry=f"{entry}.{field}")
+        return load
+
+    def _accelerations(self):
+        return [acceleration(q) for q in self._coordinates]
 
     # ------------------------------------------------------------------
     # description
@@ -460,9 +721,59 @@ class MechanicalSystem(Model):
         """
         return None if self._parameters is None else list(self._parameters)
 
+    def force_terms(self):
+        r"""
+        The terms of the force function (a list, empty if none): fields
+        (:class:`~sage_dynsym.mechanics.force_functions.UniformGravity`,
+        :class:`~sage_dynsym.mechanics.force_functions.NewtonianField`) and
+        expressions `U(q, t)`, added together in :meth:`force_function`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, UniformGravity
+            sage: x, k = var('x k')
+            sage: MechanicalSystem([], [x], force_function=[UniformGravity([0, 0, -1]),
+            ....:                                            -k*x^2/2]).force_terms()
+            [uniform gravity field g = (0, 0, -1), -1/2*k*x^2]
+            sage: MechanicalSystem([], [x], force_function=-k*x^2/2).force_terms()
+            [-1/2*k*x^2]
+        """
+        if self._force is None:
+            return []
+        return list(self._force) if isinstance(self._force, list) else [self._force]
+
+    def loads(self):
+        r"""
+        The loads on the bodies (:class:`~sage_dynsym.mechanics.loads.Load`;
+        body references by name).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x = var('x')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x],
+            ....:                  loads=[{'body': 1, 'force': [1, 0, 0]}]).loads()
+            [Load on 'b' at (0, 0, 0): force (1, 0, 0), in the inertial axes]
+        """
+        return list(self._loads)
+
+    def constraints(self):
+        r"""
+        The holonomic constraints `f_j(q, t)` (each meaning `f_j = 0`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: x, y, l = var('x y l')
+            sage: MechanicalSystem([], [x, y], constraints=[x^2 + y^2 == l^2]).constraints()
+            [-l^2 + x^2 + y^2]
+        """
+        return list(self._constraints)
+
     def force_field(self):
         r"""
-        The force-function description given at construction.
+        The force-function description given at construction (a list when
+        several terms were given, see :meth:`force_terms`).
 
         EXAMPLES::
 
@@ -485,17 +796,27 @@ class MechanicalSystem(Model):
         """
         return self._dissipation
 
+    @cached_method
     def generalized_forces(self):
         r"""
-        The generalized non-potential forces `Q_i`.
+        The generalized non-potential forces `Q_i`: those given as
+        ``forces`` plus those of the :meth:`loads` (see
+        :mod:`~sage_dynsym.mechanics.loads` for the sign convention).
 
         EXAMPLES::
 
-            sage: from sage_dynsym import MechanicalSystem
-            sage: MechanicalSystem([], [var('x')], forces=[1]).generalized_forces()
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, F = var('x F')
+            sage: MechanicalSystem([], [x], forces=[1]).generalized_forces()
             [1]
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x], forces=[1],
+            ....:                  loads=[{'body': 'b', 'force': [F, 0, 0]}]).generalized_forces()
+            [F + 1]
         """
-        return list(self._forces)
+        forces = list(self._forces)
+        for i, load in enumerate(self._loads):
+            forces = [a + b for a, b in zip(forces, load.generalized_forces(self, f"loads[{i}]"))]
+        return forces
 
     # ------------------------------------------------------------------
     # kinematics
@@ -846,11 +1167,13 @@ class MechanicalSystem(Model):
             sage: MechanicalSystem([], [x], force_function=-x^2/2).force_function()
             -1/2*x^2
         """
-        if self._force is None:
-            return SR(0)
-        if hasattr(self._force, 'evaluate'):
-            return trig_rational_simplify(self._force.evaluate(self).expand())
-        return SR(self._force)
+        terms = self.force_terms()
+        if len(terms) == 1 and not hasattr(terms[0], 'evaluate'):
+            return SR(terms[0])
+        total = SR(0)
+        for term in terms:
+            total += term.evaluate(self).expand() if hasattr(term, 'evaluate') else SR(term)
+        return trig_rational_simplify(total) if terms else total
 
     @cached_method
     def lagrangian(self, christoffel='auto'):
@@ -872,14 +1195,27 @@ class MechanicalSystem(Model):
             terms (minutes for the chain of 6 spatial links of
             ``bench/bench_chain.py``, which prints the times);
           - ``'symbolic'`` -- differentiate the (already compact) symbolic
-            mass matrix: fast even for large systems, but the equations are larger, about 1.4 times, since the
-            three derivatives do not cancel;
-          - ``'auto'`` (default) -- ``'polynomial'`` unless the mass matrix
-            has more than 10,000 polynomial terms (for the spatial chains of
-            ``bench/``: up to 4 links), then ``'symbolic'``.
+            mass matrix: fast even for large systems, but the equations are
+            larger, about 1.4 times, since the three derivatives do not
+            cancel;
+          - ``'recursive'`` -- assemble the equations body by body
+            (Newton--Euler recursion, see
+            :meth:`~sage_dynsym.mechanics.kinematics.Kinematics.recursive_equations`):
+            the mass matrix times the accelerations plus nested terms in the
+            velocities, never expanded; the fastest and, for long chains of
+            bodies, the shortest form (for the spatial chain of 6 links of
+            ``bench/bench_chain.py``: a quarter of the ``'symbolic'`` one, in
+            a fraction of a second); needs bodies of constant mass, mass
+            centre and inertia and no prescribed relative velocity, else
+            ``'symbolic'`` is used;
+          - ``'auto'`` (default) -- ``'polynomial'`` unless some body lies
+            more than 8 elementary rotations away from the inertial frame or
+            the mass matrix has more than 10,000 polynomial terms (for the
+            spatial chains of ``bench/``: up to 4 links), then
+            ``'recursive'``.
 
           Models that are not polynomial in the sines and cosines of their
-          angles always use ``'symbolic'``.
+          angles use ``'symbolic'`` instead of ``'polynomial'``.
 
         EXAMPLES::
 
@@ -905,33 +1241,80 @@ class MechanicalSystem(Model):
              -dpsi^2*l^2*m*cos(theta)*sin(theta) + ddtheta*l^2*m - g*l*m*sin(theta)]
             sage: S.lagrangian('symbolic').lagrange_equations() == E
             True
+            sage: S.lagrangian('recursive').lagrange_equations() == E
+            True
 
         TESTS::
 
             sage: S.lagrangian('fast')
             Traceback (most recent call last):
             ...
-            ModelError: christoffel must be 'auto', 'polynomial' or 'symbolic', got 'fast'
+            ModelError: christoffel must be 'auto', 'polynomial', 'recursive' or 'symbolic', got 'fast'
+
+        A chain of 9 planar links takes the recursive form, with the same
+        equations as functions; a body with a prescribed relative velocity
+        cannot, and gets the symbolic form::
+
+            sage: a = [var(f'a{k}') for k in range(1, 10)]
+            sage: links = [RigidBody(f'b{k}', parent=k - 1, rotations=[(3, a[k - 1])],
+            ....:                    joint=[1 if k > 1 else 0, 0, 0], mass_center=[1/2, 0, 0],
+            ....:                    mass=1) for k in range(1, 10)]
+            sage: S = MechanicalSystem(links, a)
+            sage: E, P = S.lagrangian().lagrange_equations(), S.lagrangian('polynomial').lagrange_equations()
+            sage: point = {v: QQ((k % 7 + 1, 5)) for k, v in enumerate(set().union(*[e.variables() for e in P]))}
+            sage: max(abs(RDF((e - p).subs(point))) for e, p in zip(E, P)) < 1e-12
+            True
+            sage: x, m = var('x m')
+            sage: b = RigidBody('b', joint=[x, 0, 0], velocity=[2*var('dx'), 0, 0], mass=m)
+            sage: MechanicalSystem([b], [x]).lagrangian('recursive').lagrange_equations()
+            [4*ddx*m]
         """
-        if christoffel not in ('auto', 'polynomial', 'symbolic'):
-            raise ModelError("christoffel must be 'auto', 'polynomial' or 'symbolic', "
-                             f"got {christoffel!r}")
-        data = self._polynomial_decomposition()
+        if christoffel not in ('auto', 'polynomial', 'recursive', 'symbolic'):
+            raise ModelError("christoffel must be 'auto', 'polynomial', 'recursive' or "
+                             f"'symbolic', got {christoffel!r}")
+        kinematics = self._symbolic
+        if christoffel == 'recursive' and not kinematics.recursive_applies():
+            christoffel = 'symbolic'
+        if christoffel == 'auto':
+            # deep bodies: the polynomial forms grow faster than the nested
+            # ones, and even computing them costs seconds (bench/bench_chain.py)
+            depth = max((len(self._tree.path_to_root(kinematics.body_frame(k))) - 1
+                         for k in range(1, len(self._bodies) + 1)), default=0)
+            if depth > 8 and kinematics.recursive_applies():
+                christoffel = 'recursive'
+        data = None if christoffel == 'recursive' else self._polynomial_decomposition()
         if data is not None and christoffel == 'auto':
             terms = sum(e.number_of_terms() for i, row in enumerate(data[1]) for e in row[i:])
-            christoffel = 'polynomial' if terms <= _POLYNOMIAL_CHRISTOFFEL_TERMS else 'symbolic'
+            christoffel = ('polynomial' if terms <= _POLYNOMIAL_CHRISTOFFEL_TERMS else
+                           'recursive' if kinematics.recursive_applies() else 'symbolic')
+        U = self.force_function()
+        if christoffel == 'recursive':
+            A, A1, T0, h = kinematics.recursive_equations()
+            ddq = [acceleration(q) for q in self._coordinates]
+
+            def recursive_equations():
+                return [SR(0).add(*[a * x for a, x in zip(row, ddq) if not a.is_trivial_zero()])
+                        + e - U.diff(q) for row, e, q in zip(A, h, self._coordinates)]
+            A = matrix(SR, A)
+            A.set_immutable()
+            decomposition = (A, vector(SR, A1), T0 + U)
+            builder = recursive_equations
+        else:
+            decomposition = self.decomposition()
 
         def ring_equations():
             kinetic = natural_equations(data[1], data[2], data[3], self._coordinates,
                                         self._velocities,
                                         [acceleration(q) for q in self._coordinates], data[0],
                                         mass_matrix=self.decomposition()[0])
-            U = self.force_function()
             return [e - U.diff(q) for e, q in zip(kinetic, self._coordinates)]
 
-        use_ring = data is not None and christoffel == 'polynomial'
+        if christoffel != 'recursive':
+            use_ring = data is not None and christoffel == 'polynomial'
+            builder = ring_equations if use_ring else None
         return Lagrangian(None, self._coordinates, self._velocities,
-                          decomposition=self.decomposition(), dissipation=self._dissipation,
-                          forces=self._forces, name=self._name,
-                          equation_builder=ring_equations if use_ring else None)
+                          decomposition=decomposition, dissipation=self._dissipation,
+                          forces=self.generalized_forces(), name=self._name,
+                          equation_builder=builder,
+                          **({'constraints': self._constraints} if self._constraints else {}))
 

@@ -1,0 +1,377 @@
+r"""
+Loads on bodies: forces at body points and torques
+
+A :class:`Load` is a force applied at a point of a body and/or a torque
+(a couple) on that body. The point is given in the body's own axes; the
+force and torque components are given in the axes of the inertial frame
+(``axes=0``) or of a named body: they stay fixed in those axes (dead loads;
+a follower force on a body is given in that body's axes).
+
+A load enters the Lagrange equations through its generalized forces, by
+virtual power: with `v_P` the absolute velocity of the point `P` and `W_k`
+the absolute angular velocity of the body,
+
+.. MATH::
+
+    Q_i = F \cdot \frac{\partial v_P}{\partial \dot q_i}
+        + M \cdot \frac{\partial W_k}{\partial \dot q_i},
+
+and `Q_i` appears on the right-hand side of the Lagrange equations with the
+same sign as the generalized forces given directly
+(``forces=`` of :class:`~sage_dynsym.mechanics.system.MechanicalSystem`):
+
+.. MATH::
+
+    \frac{d}{dt}\frac{\partial L}{\partial \dot q_i}
+    - \frac{\partial L}{\partial q_i}
+    + \frac{\partial R}{\partial \dot q_i} = Q_i .
+
+An interaction force between two bodies (a spring or an actuator between
+them) is two opposite loads, one on each body.
+
+EXAMPLES:
+
+A force `F` along the inertial `y` axis at the tip of a rod pendulum of
+length `l` hanging from a pivot (the rod turned by `\theta` about the
+`x` axis) has the moment `F l \cos\theta` about the pivot::
+
+    sage: from sage_dynsym import MechanicalSystem, RigidBody
+    sage: from sage_dynsym.mechanics.loads import Load
+    sage: theta, l, m, F = var('theta l m F')
+    sage: rod = RigidBody('rod', rotations=[(1, theta)], mass_center=[0, 0, -l/2], mass=m)
+    sage: tip = Load('rod', point=[0, 0, -l], force=[0, F, 0])
+    sage: S = MechanicalSystem([rod], [theta], loads=[tip])
+    sage: S.generalized_forces()
+    [F*l*cos(theta)]
+
+Two opposite loads: a spring of stiffness `k` between two sliders on the
+`x` axis (the force on ``b`` is `-k(x_b - x_a)`, the one on ``a`` its
+opposite); the generalized forces are those of the potential
+`-k(x_b - x_a)^2/2`::
+
+    sage: xa, xb, k = var('xa xb k')
+    sage: a = RigidBody('a', joint=[xa, 0, 0], mass=m)
+    sage: b = RigidBody('b', joint=[xb, 0, 0], mass=m)
+    sage: spring = [Load('b', force=[-k*(xb - xa), 0, 0]), Load('a', force=[k*(xb - xa), 0, 0])]
+    sage: MechanicalSystem([a, b], [xa, xb], loads=spring).generalized_forces()
+    [-k*(xa - xb), k*(xa - xb)]
+"""
+import numbers
+
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import ModelError
+from .rigid_body import RigidBody, as_vector3
+
+#: The keys of a load (in a description file or a dictionary).
+LOAD_KEYS = ('body', 'point', 'force', 'torque', 'axes')
+
+
+def _check_reference(value, entry, inertial):
+    # 0 (when the inertial frame is allowed), a body name, a 1-based index or a body
+    if isinstance(value, RigidBody):
+        return value.name()
+    if isinstance(value, str) and value:
+        return value
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool) and (
+            value > 0 or (inertial and value == 0)):
+        return int(value)
+    expected = "0 (the inertial frame), a body name or a 1-based body index" if inertial \
+        else "a body name or a 1-based body index"
+    raise ModelError(f"expected {expected}, got {value!r}", entry=entry)
+
+
+class Load(SageObject):
+    r"""
+    A force at a point of a body and/or a torque on it.
+
+    INPUT:
+
+    - ``body`` -- the body: its name, its 1-based index, or the
+      :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`
+    - ``point`` -- (default: the joint point `O_k`) the point of application,
+      in the body's own axes
+    - ``force`` -- (default: none) the force components, in ``axes``
+    - ``torque`` -- (default: none) the torque components, in ``axes``
+    - ``axes`` -- (default: 0) the axes of the force and torque
+      components: ``0`` for the inertial frame, or a body (name, index or
+      object); the components are fixed in those axes
+
+    The components may depend on the coordinates, the velocities, the
+    parameters and ``t``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.loads import Load
+        sage: Load('arm', point=[0, 0, 1], force=[var('F'), 0, 0])
+        Load on 'arm' at (0, 0, 1): force (F, 0, 0), in the inertial axes
+        sage: Load('arm', torque=[0, 0, var('M')], axes='arm')
+        Load on 'arm' at (0, 0, 0): torque (0, 0, M), in the axes of 'arm'
+
+    TESTS::
+
+        sage: Load('arm', force=[1, 2])
+        Traceback (most recent call last):
+        ...
+        ModelError: force: expected a list of 3 components, got 2
+        sage: Load('arm')
+        Traceback (most recent call last):
+        ...
+        ModelError: force: a load needs a force, a torque or both
+        sage: Load(0, force=[1, 0, 0])
+        Traceback (most recent call last):
+        ...
+        ModelError: body: expected a body name or a 1-based body index, got 0
+    """
+
+    def __init__(self, body, point=(0, 0, 0), force=None, torque=None, axes=0):
+        self._body = _check_reference(body, "body", inertial=False)
+        self._point = as_vector3((0, 0, 0) if point is None else point, "point")
+        self._force = as_vector3(force, "force")
+        self._torque = as_vector3(torque, "torque")
+        if self._force is None and self._torque is None:
+            raise ModelError("a load needs a force, a torque or both", entry="force")
+        self._axes = _check_reference(axes, "axes", inertial=True)
+
+    @classmethod
+    def from_value(cls, value, entry):
+        r"""
+        A :class:`Load` from a :class:`Load` or a dictionary with the keys
+        ``body``, ``point``, ``force``, ``torque``, ``axes``; errors name
+        ``entry`` (e.g. ``loads[2]``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load.from_value({'body': 'b', 'force': [1, 0, 0]}, 'loads[0]')
+            Load on 'b' at (0, 0, 0): force (1, 0, 0), in the inertial axes
+            sage: Load.from_value({'body': 'b', 'pont': [1, 0, 0]}, 'loads[1]')
+            Traceback (most recent call last):
+            ...
+            ModelError: loads[1]: unknown key 'pont'; a load has the keys body, point, force, torque, axes
+            sage: Load.from_value({'body': 'b', 'point': [1, 0], 'force': [1, 0, 0]}, 'loads[2]')
+            Traceback (most recent call last):
+            ...
+            ModelError: loads[2].point: expected a list of 3 components, got 2
+        """
+        if isinstance(value, Load):
+            return value
+        if not isinstance(value, dict):
+            raise ModelError(f"expected a Load or a dictionary with the keys "
+                             f"{', '.join(LOAD_KEYS)}, got {value!r}", entry=entry)
+        for key in value:
+            if key not in LOAD_KEYS:
+                raise ModelError(f"unknown key {key!r}; a load has the keys "
+                                 f"{', '.join(LOAD_KEYS)}", entry=entry)
+        if 'body' not in value:
+            raise ModelError("missing key 'body'", entry=entry)
+        try:
+            return cls(**value)
+        except ModelError as err:
+            raise type(err)(err.message, entry=f"{entry}.{err.entry}") from None
+
+    def _repr_(self):
+        parts = []
+        if self._force is not None:
+            parts.append("force ({})".format(", ".join(map(str, self._force))))
+        if self._torque is not None:
+            parts.append("torque ({})".format(", ".join(map(str, self._torque))))
+        axes = "the inertial axes" if self._axes == 0 else f"the axes of {self._axes!r}"
+        return "Load on {!r} at ({}): {}, in {}".format(
+            self._body, ", ".join(map(str, self._point)), ", ".join(parts), axes)
+
+    def body(self):
+        r"""
+        The loaded body (its name or 1-based index).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', force=[1, 0, 0]).body()
+            'b'
+        """
+        return self._body
+
+    def point(self):
+        r"""
+        The point of application, in the body's axes.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', point=[1, 0, 0], force=[1, 0, 0]).point()
+            (1, 0, 0)
+        """
+        return self._point
+
+    def force(self):
+        r"""
+        The force components in :meth:`axes` (``None`` if no force).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', torque=[0, 0, 1]).force() is None
+            True
+        """
+        return self._force
+
+    def torque(self):
+        r"""
+        The torque components in :meth:`axes` (``None`` if no torque).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', torque=[0, 0, 1]).torque()
+            (0, 0, 1)
+        """
+        return self._torque
+
+    def axes(self):
+        r"""
+        The axes of the components: ``0`` (inertial) or a body name or index.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', torque=[0, 0, 1], axes='b').axes()
+            'b'
+        """
+        return self._axes
+
+    def expressions(self):
+        r"""
+        All the expressions of the load (point, force, torque components).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', force=[var('F'), 0, 0]).expressions()
+            [0, 0, 0, F, 0, 0]
+        """
+        return list(self._point) + list(self._force or ()) + list(self._torque or ())
+
+    def subs(self, values):
+        r"""
+        The load with ``values`` (a dictionary) substituted.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: F = var('F')
+            sage: Load('b', force=[F, 0, 0]).subs({F: 2})
+            Load on 'b' at (0, 0, 0): force (2, 0, 0), in the inertial axes
+        """
+        def sub(v):
+            return None if v is None else [SR(c).subs(values) for c in v]
+        return Load(self._body, point=sub(self._point), force=sub(self._force),
+                    torque=sub(self._torque), axes=self._axes)
+
+    def to_dict(self):
+        r"""
+        The description mapping of the load (expressions as text).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: Load('b', point=[0, 0, var('l')], torque=[0, 0, 1], axes='b').to_dict()
+            {'axes': 'b', 'body': 'b', 'point': ['0', '0', 'l'], 'torque': ['0', '0', '1']}
+        """
+        from ..io.fields import text
+        out = {'body': self._body}
+        if any(not c.is_zero() for c in self._point):
+            out['point'] = [text(c) for c in self._point]
+        if self._force is not None:
+            out['force'] = [text(c) for c in self._force]
+        if self._torque is not None:
+            out['torque'] = [text(c) for c in self._torque]
+        out['axes'] = self._axes
+        return out
+
+    def power(self, system, entry="load"):
+        r"""
+        The power `F \cdot v_P + M \cdot W_k` of the load on ``system``
+        (affine in the velocities).
+
+        EXAMPLES: a torque `M` about the axis of a rotor turned by `a`::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: a, M = var('a M')
+            sage: S = MechanicalSystem([RigidBody('rotor', rotations=[(3, a)])], [a])
+            sage: Load('rotor', torque=[0, 0, M]).power(S)
+            M*da
+        """
+        from .frames import FrameVector
+        k = body_index(system, self._body, f"{entry}.body")
+        j = 0 if self._axes == 0 else body_index(system, self._axes, f"{entry}.axes")
+        tree, frame = system.frame_tree(), system.body_frame(k)
+        axes = system.body_frame(j) if j else 0
+        W = system.angular_velocity_vector(k)
+        power = SR(0)
+        if self._force is not None:
+            r = FrameVector(tree, {frame: self._point})
+            v = system.joint_velocity_vector(k) + FrameVector(tree, {frame: W.cross(r, frame)})
+            power += FrameVector(tree, {axes: self._force}).dot(v)
+        if self._torque is not None:
+            power += FrameVector(tree, {axes: self._torque}).dot(W)
+        return power
+
+    def generalized_forces(self, system, entry="load"):
+        r"""
+        The generalized forces `Q_i = \partial P / \partial \dot q_i` of the
+        load on ``system``, `P` its :meth:`power` (see the module
+        documentation for the sign convention).
+
+        EXAMPLES: a force along the inertial `x` axis at the point `(l, 0, 0)`
+        of a body turned by `a` about the `z` axis::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: a, l, F = var('a l F')
+            sage: S = MechanicalSystem([RigidBody('arm', rotations=[(3, a)])], [a])
+            sage: Load('arm', point=[l, 0, 0], force=[F, 0, 0]).generalized_forces(S)
+            [-F*l*sin(a)]
+        """
+        from ..analysis.trigonometric import trig_rational_simplify
+        power = self.power(system, entry)
+        return [trig_rational_simplify(power.diff(v)) for v in system.velocities()]
+
+
+def body_index(system, reference, entry):
+    r"""
+    The 1-based index in ``system`` of the body ``reference`` (a name, a
+    1-based index or a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`);
+    :class:`~sage_dynsym.errors.ModelError` naming ``entry`` if there is no
+    such body.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody
+        sage: from sage_dynsym.mechanics.loads import body_index
+        sage: S = MechanicalSystem([RigidBody('a'), RigidBody('b', parent='a')], [])
+        sage: body_index(S, 'b', 'loads[0].body'), body_index(S, 1, 'loads[0].body')
+        (2, 1)
+        sage: body_index(S, 'c', 'loads[0].body')
+        Traceback (most recent call last):
+        ...
+        ModelError: loads[0].body: unknown body 'c'; known bodies are: a, b
+        sage: body_index(S, 3, 'loads[0].body')
+        Traceback (most recent call last):
+        ...
+        ModelError: loads[0].body: body index 3 out of range 1..2
+    """
+    bodies = system.bodies()
+    if isinstance(reference, RigidBody):
+        reference = reference.name()
+    if isinstance(reference, str):
+        for k, body in enumerate(bodies, 1):
+            if body.name() == reference:
+                return k
+        raise ModelError(f"unknown body {reference!r}; known bodies are: "
+                         f"{', '.join(b.name() for b in bodies) or '(none)'}", entry=entry)
+    if not 1 <= reference <= len(bodies):
+        raise ModelError(f"body index {reference} out of range 1..{len(bodies)}", entry=entry)
+    return int(reference)
