@@ -25,7 +25,8 @@ like the function). This module lists those names in one place:
 - the names the package creates (:data:`MECHANICAL_PATTERNS`,
   :data:`CIRCUIT_PATTERNS`): multipliers ``lambda<j>`` of the
   Routh--Lyapunov method, deviations ``xi_<x>`` of the second variation,
-  the multipliers ``u<k>``, ``v<k>`` of Dirac's scheme; in circuits the
+  the multipliers ``u<k>``, ``v<k>`` of Dirac's scheme, the multipliers
+  ``mu<j>`` of holonomic constraints (:func:`constraint_multipliers`); in circuits the
   state variables ``i<k>`` (inductor currents) and ``u<k>`` (capacitor
   voltages), the loop charges ``q<k>``, the node potentials ``phi<k>`` and
   their velocities and momenta, the placeholders ``i``, ``u`` of an
@@ -198,6 +199,7 @@ COMMON_PATTERNS = (
 MECHANICAL_PATTERNS = COMMON_PATTERNS + (
     (r'u[1-9]\d*', "a multiplier of Dirac's scheme (u<k>)"),
     (r'v[1-9]\d*', "a gauge multiplier of Dirac's scheme (v<k>)"),
+    (r'mu[1-9]\d*', 'a multiplier of a holonomic constraint (mu<j>)'),
 )
 
 #: Names created for circuits (with :data:`COMMON_PATTERNS`).
@@ -270,6 +272,33 @@ def reserved_meaning(name, kind='mechanical'):
         if pattern.fullmatch(name):
             return what
     return None
+
+
+def constraint_multipliers(count, taken=()):
+    r"""
+    Symbols ``mu1, mu2, ...`` for the multipliers of ``count`` holonomic
+    constraints, skipping the names in ``taken`` (the names ``mu<j>`` are
+    reserved in mechanical models, so only a Lagrangian written directly
+    can use them).
+
+    INPUT:
+
+    - ``count`` -- the number of constraints
+    - ``taken`` -- names (strings or symbols) already in use
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import constraint_multipliers
+        sage: constraint_multipliers(2), constraint_multipliers(2, taken=var('mu1 x'))
+        ([mu1, mu2], [mu2, mu3])
+    """
+    taken = {str(name) for name in taken}
+    names, j = [], 0
+    while len(names) < count:
+        j += 1
+        if f'mu{j}' not in taken:
+            names.append(f'mu{j}')
+    return [SR.var(name, latex_name=r'\mu_{%d}' % int(name[2:])) for name in names]
 
 
 def check_name(name, entry=None, error=DescriptionError, source=None):

@@ -688,10 +688,26 @@ def equations_of_motion(system):
         Second-order equations in (x): [ddx + x] == 0
         sage: equations_of_motion([x]) is None
         True
+
+    Equations with constraint multipliers are refused (the linearization
+    and the stationary-motion search work in independent coordinates)::
+
+        sage: from sage_dynsym.analysis.linear import linearize
+        sage: y, dy = var('y dy')
+        sage: linearize(Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]), {x: 0, y: 0})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: constraints: the equations have the constraints [x - y] with multipliers [mu1], which the analysis does not handle; reduce the model to independent coordinates first (Lagrangian.reduce)
     """
     to_linearizer = getattr(system, 'to_linearizer', None)
     if to_linearizer is not None:
-        return to_linearizer()
+        data = to_linearizer()
+        if isinstance(data, SecondOrderEquations) and data.constraints():
+            raise AnalysisError(f"the equations have the constraints {data.constraints()} "
+                                f"with multipliers {data.multipliers()}, which the analysis "
+                                "does not handle; reduce the model to independent "
+                                "coordinates first (Lagrangian.reduce)", entry="constraints")
+        return data
     if hasattr(system, 'lagrange_equations'):
         return SecondOrderEquations(system.lagrange_equations(), system.coordinates(),
                                     system.velocities(), system.accelerations())

@@ -48,6 +48,37 @@ Dissipation and forces enter the equations::
     sage: L.lagrange_equations()
     [c*dx + ddx*m + k*x - F]
 
+Holonomic constraints
+---------------------
+
+With holonomic constraints `f_j(q, t) = 0` (``constraints=[f_1, ...]``) the
+equations are Lagrange's equations of the first kind: one multiplier `\mu_j`
+per constraint (:meth:`~Lagrangian.multipliers`), and
+
+.. MATH::
+
+    E_i = \frac{d}{dt}\frac{\partial L}{\partial \dot q_i}
+          - \frac{\partial L}{\partial q_i}
+          + \frac{\partial R}{\partial \dot q_i} - Q_i
+          - \sum_j \mu_j \frac{\partial f_j}{\partial q_i},
+
+i.e. `M\ddot q = F + J^T\mu` with `J = \partial f/\partial q`: `J^T\mu` is
+the generalized constraint force. Together with the twice-differentiated
+constraints `J\ddot q + \dot J\dot q + \dots = 0` they determine the
+accelerations and the multipliers (:meth:`~Lagrangian.accelerations_and_multipliers`).
+
+EXAMPLES:
+
+A pendulum in Cartesian coordinates; `-2\mu_1 l` is the tension of the rod::
+
+    sage: from sage_dynsym import Lagrangian
+    sage: x, y, dx, dy, m, g, l = var('x y dx dy m g l')
+    sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
+    sage: L.lagrange_equations()
+    [ddx*m - 2*mu1*x, ddy*m + g*m - 2*mu1*y]
+    sage: L.accelerations_and_multipliers()[L.multipliers()[0]]
+    1/2*(g*m*y - (dx^2 + dy^2)*m)/(x^2 + y^2)
+
 Routh functions
 ---------------
 
@@ -83,11 +114,14 @@ from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
 from sage.modules.free_module_element import vector
+from sage.rings.cc import CC
+from sage.rings.real_mpfr import RR
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import velocity, acceleration, momentum, time_derivative, t
+from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
+                       constraint_multipliers)
 from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
 from .natural_equations import natural_equations, SymbolicCalculus
@@ -117,6 +151,9 @@ class Lagrangian(SageObject):
     - ``equation_builder`` -- (optional, with ``decomposition``) a function
       without arguments returning the equations (5) without dissipation and
       forces, computed in a faster arithmetic by the caller
+    - ``constraints`` -- (default: none) holonomic constraints `f_j(q, t)`,
+      each meaning `f_j = 0`, independent at a generic point (see the
+      module documentation)
 
     EXAMPLES::
 
@@ -144,10 +181,23 @@ class Lagrangian(SageObject):
         Traceback (most recent call last):
         ...
         ModelError: coordinates must be symbolic variables, got x^2
+        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints: the constraints [x - y, -2*x + 2*y] are redundant: the Jacobian d(constraints)/d(x, y) has rank less than 2 at a generic point; remove the dependent ones
+        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[1]: l - 1 does not depend on the coordinates (x, y): a constraint must be a relation f(q, t) = 0 between them
+        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: dx - y depends on the velocity dx: only holonomic constraints f(q, t) = 0 are supported
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
-                 forces=None, name=None, decomposition=None, equation_builder=None):
+                 forces=None, name=None, decomposition=None, equation_builder=None,
+                 constraints=()):
         self._coordinates = symbol_list(coordinates, "coordinates")
         if velocities is None:
             velocities = [velocity(q) for q in self._coordinates]
@@ -173,6 +223,37 @@ class Lagrangian(SageObject):
                              f"coordinate, got {len(forces)}", entry="forces")
         self._forces = [SR(f) for f in forces]
         self._name = name
+        self._constraints = self._checked_constraints(constraints)
+        taken = set().union(*(SR(e).variables() for e in
+                              [self._expr, self._dissipation] + self._forces + self._constraints))
+        taken |= {momentum(q) for q in self._coordinates}
+        self._multipliers = constraint_multipliers(len(self._constraints), taken)
+
+    def _checked_constraints(self, constraints):
+        constraints = [SR(f) for f in constraints]
+        motion = self._velocities + self._accelerations
+        coords = ", ".join(map(str, self._coordinates))
+        for j, f in enumerate(constraints):
+            entry = f"constraints[{j}]"
+            if f.is_relational():
+                raise ModelError(f"expected an expression f meaning f = 0, got the relation {f}",
+                                 entry=entry)
+            for v in motion:
+                if f.has(v):
+                    raise ModelError(f"{f} depends on the velocity {v}: only holonomic "
+                                     "constraints f(q, t) = 0 are supported", entry=entry)
+            if not any(f.has(q) for q in self._coordinates):
+                raise ModelError(f"{f} does not depend on the coordinates ({coords}): a "
+                                 "constraint must be a relation f(q, t) = 0 between them",
+                                 entry=entry)
+        if constraints:
+            J = matrix(SR, [[f.diff(q) for q in self._coordinates] for f in constraints])
+            if len(constraints) > len(self._coordinates) or is_singular(J * J.transpose()):
+                raise ModelError(f"the constraints {constraints} are redundant: the Jacobian "
+                                 f"d(constraints)/d({coords}) has rank less than "
+                                 f"{len(constraints)} at a generic point; remove the "
+                                 "dependent ones", entry="constraints")
+        return constraints
 
     # ------------------------------------------------------------------
     # accessors
@@ -264,12 +345,51 @@ class Lagrangian(SageObject):
         """
         return self._name
 
+    def constraints(self):
+        r"""
+        The holonomic constraints `f_j(q, t)`, each meaning `f_j = 0` (a new
+        list, empty if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, l = var('x y dx dy l')
+            sage: L = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x^2 + y^2 - l^2])
+            sage: L.constraints()
+            [-l^2 + x^2 + y^2]
+            sage: Lagrangian(dx^2, [x]).constraints()
+            []
+        """
+        return list(self._constraints)
+
+    def multipliers(self):
+        r"""
+        The multipliers `\mu_j`, one per constraint: symbols ``mu1, mu2,
+        ...`` that occur nowhere else in the model (see
+        :func:`~sage_dynsym.symbols.constraint_multipliers`).
+
+        The equations contain `-\sum_j \mu_j \partial f_j/\partial q_i`,
+        so `\mu_j \partial f_j/\partial q` is the generalized force of the
+        constraint `j`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, mu1 = var('x y dx dy mu1')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).multipliers()
+            [mu1]
+            sage: Lagrangian((dx^2 + dy^2)/2 + mu1*x, [x, y], constraints=[x - y]).multipliers()
+            [mu2]
+        """
+        return list(self._multipliers)
+
     # ------------------------------------------------------------------
     # value semantics
 
     def _content(self):
         return (type(self).__name__, self._expr, tuple(self._coordinates),
-                tuple(self._velocities), self._dissipation, tuple(self._forces))
+                tuple(self._velocities), self._dissipation, tuple(self._forces),
+                tuple(self._constraints))
 
     def __eq__(self, other):
         r"""
@@ -318,36 +438,52 @@ class Lagrangian(SageObject):
             sage: loads(dumps(L)) == L
             True
             sage: TestSuite(L).run()
+            sage: C = Lagrangian(m*dx^2/2, [x], constraints=[x - k]); loads(dumps(C)) == C
+            True
+            sage: C == Lagrangian(m*dx^2/2, [x]), C
+            (False, Lagrangian in coordinates (x) : 1/2*dx^2*m, subject to -k + x == 0)
+            sage: latex(C)
+            L = \frac{1}{2} \, {\dot{x}}^{2} m , \quad -k + x = 0
         """
         return (_rebuild_lagrangian,
                 (self._expr, self._coordinates, self._velocities,
                  {'dissipation': self._dissipation, 'forces': self._forces,
-                  'name': self._name, 'decomposition': self._structure}))
+                  'name': self._name, 'decomposition': self._structure,
+                  'constraints': self._constraints}))
 
     def _repr_(self):
         coords = ", ".join(str(q) for q in self._coordinates)
         of = f" of {self._name}" if self._name else ""
-        return f"Lagrangian{of} in coordinates ({coords}) : {self._expr}"
+        return f"Lagrangian{of} in coordinates ({coords}) : {self._expr}{self._subject_to()}"
+
+    def _subject_to(self):
+        if not self._constraints:
+            return ""
+        return ", subject to " + ", ".join(f"{f} == 0" for f in self._constraints)
 
     def _latex_(self):
-        return "L = " + latex(self._expr)
+        return "L = " + latex(self._expr) + "".join(
+            r", \quad " + latex(f) + " = 0" for f in self._constraints)
 
     def _derived(self, expr, **changes):
         r"""
         A Lagrangian of the same kind with a new expression (and options).
         """
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
-                       forces=self._forces, name=self._name)
+                       forces=self._forces, name=self._name, constraints=self._constraints)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
         return Lagrangian(expr, coordinates, **options)
 
     def subs(self, *args, **kwds):
         r"""
-        Substitute values for parameters (in `L`, `R` and `Q`).
+        Substitute values for parameters (in `L`, `R`, `Q` and the
+        constraints).
 
         Coordinates and velocities must not be substituted: that would change
-        the dynamics in a way this method cannot track.
+        the dynamics in a way this method cannot track. Python floats become
+        Sage real numbers, which every later step accepts (the exact analysis
+        turns them into rationals).
 
         EXAMPLES::
 
@@ -355,6 +491,9 @@ class Lagrangian(SageObject):
             sage: x, dx, m, k = var('x dx m k')
             sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs(m=2, k=8)
             Lagrangian in coordinates (x) : dx^2 - 4*x^2
+            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
+            sage: L.first_order_system()
+            ([x, dx], [dx, -4.0*x])
 
         TESTS::
 
@@ -363,6 +502,8 @@ class Lagrangian(SageObject):
             ...
             ModelError: cannot substitute for the coordinate or velocity x
         """
+        args = [_sage_values(a) for a in args]
+        kwds = {k: _sage_values(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
         for v in protected:
@@ -370,7 +511,8 @@ class Lagrangian(SageObject):
                 raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
         return self._derived(self._expr.subs(*args, **kwds),
                              dissipation=self._dissipation.subs(*args, **kwds),
-                             forces=[f.subs(*args, **kwds) for f in self._forces])
+                             forces=[f.subs(*args, **kwds) for f in self._forces],
+                             constraints=[f.subs(*args, **kwds) for f in self._constraints])
 
     # ------------------------------------------------------------------
     # structure
@@ -505,7 +647,11 @@ class Lagrangian(SageObject):
 
     def cyclic_coordinates(self):
         r"""
-        The coordinates that do not appear in `L`, `R` and `Q`.
+        The coordinates `q_l` whose momentum is conserved, exactly those
+        :meth:`routh` accepts: `q_l` appears neither in `L` nor in the
+        dissipation function, the generalized forces or the constraints,
+        the dissipation function does not depend on `\dot q_l`, and no
+        generalized force acts on `q_l`.
 
         EXAMPLES::
 
@@ -513,10 +659,34 @@ class Lagrangian(SageObject):
             sage: r, phi, dr, dphi = var('r phi dr dphi')
             sage: Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).cyclic_coordinates()
             [phi]
+
+        A damper on a cart makes its position non-cyclic::
+
+            sage: x, dx, c = var('x dx c')
+            sage: L = Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi], dissipation=c*dx^2/2)
+            sage: L.cyclic_coordinates()
+            []
         """
-        parts = [self._expr, self._dissipation] + self._forces
-        return [q for q in self._coordinates
-                if all(not p.has(q) for p in parts)]
+        return [q for q in self._coordinates if self._not_cyclic(q) is None]
+
+    def _not_cyclic(self, q):
+        r"""
+        Why the coordinate ``q`` is not cyclic, or ``None`` if it is.
+        """
+        i = self._coordinates.index(q)
+        if self._expr.has(q):
+            return "the Lagrangian depends on it"
+        if self._dissipation.diff(self._velocities[i]) != 0:
+            return ("the dissipation function depends on its velocity, so its momentum "
+                    "is not conserved")
+        if self._forces[i] != 0:
+            return "a generalized force acts on it"
+        for what, parts in (("the dissipation function", [self._dissipation]),
+                            ("a generalized force", self._forces),
+                            ("a constraint", self._constraints)):
+            if any(p.has(q) for p in parts):
+                return f"{what} depends on it"
+        return None
 
     # ------------------------------------------------------------------
     # equations
@@ -537,7 +707,10 @@ class Lagrangian(SageObject):
           ``"direct"`` otherwise) ``"structured"`` assembles (5) from the
           decomposition (4); ``"direct"`` differentiates
           `d/dt (\partial L/\partial \dot q_i) - \partial L/\partial q_i`.
-          Both are equal as functions.
+            Both are equal as functions.
+
+        With constraints, `E_i` contains `-\sum_j \mu_j \partial f_j/\partial
+        q_i` (`M\ddot q = F + J^T\mu`, see the module documentation).
 
         EXAMPLES:
 
@@ -576,7 +749,13 @@ class Lagrangian(SageObject):
             equations = self._direct_equations()
         else:
             raise ValueError(f"form must be 'structured' or 'direct', got {form!r}")
-        return [e + extra for e, extra in zip(equations, self._nonpotential_terms())]
+        J = self._constraint_jacobian()
+        return [e + extra - sum(mu * J[j, i] for j, mu in enumerate(self._multipliers))
+                for i, (e, extra) in enumerate(zip(equations, self._nonpotential_terms()))]
+
+    def _constraint_jacobian(self):
+        return matrix(SR, len(self._constraints), len(self._coordinates),
+                      [[f.diff(q) for q in self._coordinates] for f in self._constraints])
 
     def equations(self):
         r"""
@@ -604,11 +783,17 @@ class Lagrangian(SageObject):
             sage: x, dx = var('x dx')
             sage: Lagrangian(dx^2/2 - x^2/2, [x]).to_linearizer()
             Second-order equations in (x): [ddx + x] == 0
+            sage: y, dy = var('y dy')
+            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).to_linearizer()
+            sage: E.constraints(), E.multipliers()
+            ([x - y], [mu1])
         """
         kinetic = self.mass_matrix() if self.is_natural() else None
         return SecondOrderEquations(self.lagrange_equations(), self._coordinates,
                                     self._velocities, self._accelerations,
-                                    function=self._expr, kinetic=kinetic)
+                                    function=self._expr, kinetic=kinetic,
+                                    constraints=self._constraints,
+                                    multipliers=self._multipliers)
 
     def _direct_equations(self):
         q, dq, ddq = self._coordinates, self._velocities, self._accelerations
@@ -631,7 +816,9 @@ class Lagrangian(SageObject):
         r"""
         The equations solved for the accelerations: a list of expressions
         `\ddot q_i = f_i(q, \dot q, t)` (only for natural Lagrangians with an
-        invertible mass matrix).
+        invertible mass matrix). With constraints: the accelerations of
+        :meth:`accelerations_and_multipliers` (valid on the constraint
+        surface).
 
         EXAMPLES::
 
@@ -648,6 +835,9 @@ class Lagrangian(SageObject):
             ...
             ModelError: the mass matrix is singular: the accelerations cannot be solved for
         """
+        if self._constraints:
+            solution = self.accelerations_and_multipliers()
+            return [solution[a] for a in self._accelerations]
         A = self.mass_matrix()
         if is_singular(A):
             raise ModelError("the mass matrix is singular: the accelerations cannot be solved for")
@@ -655,6 +845,167 @@ class Lagrangian(SageObject):
         rest = matrix(SR, [[-e.subs(zero)] for e in self.lagrange_equations()])
         solution = A.solve_right(rest)
         return [solution[i, 0].simplify_rational() for i in range(A.nrows())]
+
+    @cached_method
+    def accelerations_and_multipliers(self):
+        r"""
+        The accelerations and the multipliers, solved from the `n` equations
+        together with the twice-differentiated constraints (Lagrange's
+        equations of the first kind).
+
+        With `E = M\ddot q - F - J^T\mu` and
+        `\ddot f = J\ddot q + b(q, \dot q, t)`, the linear system
+        `\begin{pmatrix} M & -J^T \\ J & 0\end{pmatrix}
+        \begin{pmatrix}\ddot q \\ \mu\end{pmatrix}
+        = \begin{pmatrix} F \\ -b\end{pmatrix}` is solved exactly.
+        `J^T\mu` is the generalized constraint force.
+
+        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}`` of functions of `q`,
+        `\dot q` and `t` (valid on the constraint surface, where
+        `f = \dot f = 0`).
+
+        EXAMPLES:
+
+        A pendulum of length `l` in Cartesian coordinates: with
+        `x = l\sin\theta`, `y = -l\cos\theta` the tension of the rod is
+        `-2\mu_1 l = m(l\dot\theta^2 + g\cos\theta)` [Gol2002]_::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, m, g, l, th, dth = var('x y dx dy m g l theta dtheta')
+            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
+            sage: sol = L.accelerations_and_multipliers(); sol
+            {ddx: (g*x*y - (dx^2 + dy^2)*x)/(x^2 + y^2),
+             ddy: -(g*x^2 + (dx^2 + dy^2)*y)/(x^2 + y^2),
+             mu1: 1/2*(g*m*y - (dx^2 + dy^2)*m)/(x^2 + y^2)}
+            sage: polar = {x: l*sin(th), y: -l*cos(th), dx: l*cos(th)*dth, dy: l*sin(th)*dth}
+            sage: (-2*sol[L.multipliers()[0]]*l).subs(polar).full_simplify()
+            dtheta^2*l*m + g*m*cos(theta)
+
+        Without constraints, the accelerations alone::
+
+            sage: Lagrangian(m*dx^2/2 - x^2/2, [x]).accelerations_and_multipliers()
+            {ddx: -x/m}
+
+        TESTS::
+
+            sage: Lagrangian(-sqrt(1 - dx^2), [x], constraints=[x - var('t')]).accelerations_and_multipliers()
+            Traceback (most recent call last):
+            ...
+            ModelError: the Lagrangian is not quadratic in the velocities (dx)
+
+        REFERENCES:
+
+        - [Gol2002]_ H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
+          3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
+          and forces of constraint).
+        """
+        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
+        M = self.decomposition()[0]
+        n, m = len(q), len(self._constraints)
+        zero = {v: 0 for v in ddq + self._multipliers}
+        F = [-e.subs(zero) for e in self.lagrange_equations()]
+        J = self._constraint_jacobian()
+        b = [-time_derivative(time_derivative(f, q, dq, ddq), q, dq, ddq).subs(zero)
+             for f in self._constraints]
+        K = matrix(SR, n + m, n + m)
+        K.set_block(0, 0, M)
+        if m:
+            K.set_block(0, n, -J.transpose())
+            K.set_block(n, 0, J)
+        if is_singular(K):
+            raise ModelError("the equations cannot be solved for the accelerations and "
+                             "multipliers (the matrix [[M, -J^T], [J, 0]] is singular)")
+        solution = K.solve_right(matrix(SR, [[v] for v in F + b]))
+        return {v: solution[i, 0].simplify_rational()
+                for i, v in enumerate(ddq + self._multipliers)}
+
+    def reduce(self, independent, parametrization):
+        r"""
+        The Lagrangian in independent coordinates: the constrained
+        coordinates are replaced by functions of the independent ones.
+
+        INPUT:
+
+        - ``independent`` -- the `n - m` independent coordinates `s_k`: kept
+          coordinates of `L` or new symbols
+        - ``parametrization`` -- a dict ``{q_i: phi_i(s, t)}`` giving every
+          other coordinate; the constraints must hold identically under it
+
+        OUTPUT: a :class:`Lagrangian` in ``independent`` without
+        constraints: `L(\varphi(s, t), \dot\varphi, t)`, the dissipation
+        function substituted the same way, and the generalized forces by
+        virtual work, `Q'_k = \sum_i Q_i\,\partial\varphi_i/\partial s_k`.
+
+        EXAMPLES:
+
+        The Cartesian pendulum reduced to its angle::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
+            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
+            sage: P = L.reduce([th], {x: l*sin(th), y: -l*cos(th)})
+            sage: P.lagrange_equations()[0].simplify_full()
+            ddtheta*l^2*m + g*l*m*sin(theta)
+
+        TESTS::
+
+            sage: L.reduce([th], {x: l*sin(th), y: l*sin(th)})
+            Traceback (most recent call last):
+            ...
+            ModelError: parametrization: the constraint constraints[0] = -l^2 + x^2 + y^2 does not hold identically under the parametrization {x: l*sin(theta), y: l*sin(theta)}
+            sage: L.reduce([x, th], {y: th})
+            Traceback (most recent call last):
+            ...
+            ModelError: independent: expected 1 independent coordinate(s) (2 coordinates, 1 constraint(s)), got [x, theta]
+            sage: L.reduce([th], {x: l*sin(th)})
+            Traceback (most recent call last):
+            ...
+            ModelError: parametrization: the coordinate y is neither independent nor given
+        """
+        independent = symbol_list(independent, "independent")
+        sub = {SR(k): SR(v) for k, v in parametrization.items()}
+        n, m = len(self._coordinates), len(self._constraints)
+        if len(independent) != n - m:
+            raise ModelError(f"expected {n - m} independent coordinate(s) ({n} coordinates, "
+                             f"{m} constraint(s)), got {independent}", entry="independent")
+        for k in sub:
+            if k not in self._coordinates:
+                raise ModelError(f"{k} is not a coordinate of the Lagrangian; coordinates "
+                                 f"are {self._coordinates}", entry="parametrization")
+            if k in independent:
+                raise ModelError(f"the coordinate {k} is both independent and given",
+                                 entry="parametrization")
+        parts = [self._expr, self._dissipation] + self._forces + self._constraints
+        for q in self._coordinates:
+            if q not in sub and q not in independent:
+                raise ModelError(f"the coordinate {q} is neither independent nor given",
+                                 entry="parametrization")
+        for s_k in independent:
+            if s_k not in self._coordinates and any(p.has(s_k) for p in parts):
+                raise ModelError(f"the new coordinate {s_k} is already a symbol of the model",
+                                 entry="independent")
+        removed = [q for q in self._coordinates if q in sub]
+        for k, v in sub.items():
+            bad = [w for w in removed + self._velocities if v.has(w)]
+            if bad:
+                raise ModelError(f"the value of {k} depends on {bad[0]}; give it in the "
+                                 "independent coordinates and t", entry="parametrization")
+        ds = [velocity(s_k) for s_k in independent]
+        position = {q: sub.get(q, q) for q in self._coordinates}
+        rate = {dq: time_derivative(position[q], independent, ds)
+                for q, dq in zip(self._coordinates, self._velocities)}
+        for j, f in enumerate(self._constraints):
+            if not bool(f.subs(position).simplify_full() == 0):
+                raise ModelError(f"the constraint constraints[{j}] = {f} does not hold "
+                                 f"identically under the parametrization {sub}",
+                                 entry="parametrization")
+        full = {**position, **rate}
+        forces = [sum(Q.subs(full) * position[q].diff(s_k)
+                      for q, Q in zip(self._coordinates, self._forces))
+                  for s_k in independent]
+        return Lagrangian(self._expr.subs(full), independent, ds,
+                          dissipation=self._dissipation.subs(full), forces=forces,
+                          name=self._name)
 
     def first_order_system(self):
         r"""
@@ -705,7 +1056,18 @@ class Lagrangian(SageObject):
             sage: x, dx, m, k = var('x dx m k')
             sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian().expr()
             1/2*k*x^2 + 1/2*p_x^2/m
+
+        TESTS::
+
+            sage: Lagrangian(m*dx^2/2, [x], constraints=[x - var('t')]).hamiltonian()
+            Traceback (most recent call last):
+            ...
+            ModelError: constraints: the Legendre transform of a constrained Lagrangian is not supported: reduce it to independent coordinates first (reduce)
         """
+        if self._constraints:
+            raise ModelError("the Legendre transform of a constrained Lagrangian is not "
+                             "supported: reduce it to independent coordinates first "
+                             "(reduce)", entry="constraints")
         from .hamiltonian import Hamiltonian
         return Hamiltonian(self)
 
@@ -745,6 +1107,10 @@ class RouthFunction(Lagrangian):
         Traceback (most recent call last):
         ...
         ModelError: cyclic: y is not cyclic: the dissipation function depends on its velocity, so its momentum is not conserved
+        sage: RouthFunction(Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]), [y])
+        Traceback (most recent call last):
+        ...
+        ModelError: cyclic: y is not cyclic: a constraint depends on it
         sage: RouthFunction(Lagrangian((dx^2 + dy^2)/2, [x, y]), [var('z')])
         Traceback (most recent call last):
         ...
@@ -808,7 +1174,7 @@ class RouthFunction(Lagrangian):
         forces = [lagrangian.generalized_forces()[i].subs(substitution) for i in positional]
         Lagrangian.__init__(self, None, [q_all[i] for i in positional], dq_p,
                             dissipation=dissipation, forces=forces, name=lagrangian.name(),
-                            decomposition=(M, B, R0))
+                            decomposition=(M, B, R0), constraints=lagrangian.constraints())
 
     @staticmethod
     def _check_cyclic(lagrangian, cyclic):
@@ -819,16 +1185,9 @@ class RouthFunction(Lagrangian):
             if c not in velocities:
                 raise ModelError(f"{c} is not a coordinate of the Lagrangian; "
                                  f"coordinates are {coordinates}", entry="cyclic")
-            if lagrangian.expr().has(c):
-                raise ModelError(f"{c} is not cyclic: the Lagrangian depends on it",
-                                 entry="cyclic")
-            if lagrangian.dissipation().diff(velocities[c]) != 0:
-                raise ModelError(f"{c} is not cyclic: the dissipation function depends "
-                                 "on its velocity, so its momentum is not conserved",
-                                 entry="cyclic")
-            if lagrangian.generalized_forces()[coordinates.index(c)] != 0:
-                raise ModelError(f"{c} is not cyclic: a generalized force acts on it",
-                                 entry="cyclic")
+            reason = lagrangian._not_cyclic(c)
+            if reason is not None:
+                raise ModelError(f"{c} is not cyclic: {reason}", entry="cyclic")
             if not lagrangian.is_natural():
                 raise ModelError("Routh reduction needs a Lagrangian quadratic in the "
                                  "velocities", entry="lagrangian")
@@ -867,7 +1226,8 @@ class RouthFunction(Lagrangian):
                           **{'velocities': self.velocities(),
                              'dissipation': self.dissipation(),
                              'forces': self.generalized_forces(),
-                             'name': self.name(), **changes})
+                             'name': self.name(), 'constraints': self.constraints(),
+                             **changes})
 
     def momenta(self):
         r"""
@@ -961,3 +1321,29 @@ def _hashable(a):
 
 def _rebuild_lagrangian(expr, coordinates, velocities, keywords):
     return Lagrangian(expr, coordinates, velocities, **keywords)
+
+
+def _sage_values(value):
+    r"""
+    ``value`` (a number, expression, relation, dict or list of them) with
+    Python floats and complex numbers made Sage numbers: a Python float
+    inside a symbolic expression is an opaque object many Sage routines
+    cannot handle.
+    """
+    if isinstance(value, dict):
+        return {k: _sage_values(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return type(value)(_sage_values(v) for v in value)
+    if isinstance(value, float):
+        return RR(value)
+    if isinstance(value, complex):
+        return CC(value)
+    if not hasattr(value, 'operator'):
+        return value
+    if value.is_numeric():
+        return _sage_values(value.pyobject()) if isinstance(value.pyobject(),
+                                                            (float, complex)) else value
+    operator = value.operator()
+    if operator is None:
+        return value
+    return operator(*[_sage_values(a) for a in value.operands()])
