@@ -311,6 +311,11 @@ def _mechanical(system, out):
     if out.want('equations'):
         out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
     cyclic = L.cyclic_coordinates()
+    # absent from L but not cyclic: a damper, a force or a constraint acts on it
+    acted = [q for q in L.coordinates() if q not in cyclic and not L.expr().has(q)]
+    if acted and out.want('routh', 'stationary'):
+        out.lines.append(f"Not cyclic (absent from L, but the dissipation, a generalized force "
+                         f"or a constraint acts on them): {', '.join(map(str, acted))}")
     partial = bool(cyclic) and len(cyclic) < len(L.coordinates())
     R = None
     if partial and out.want('routh', 'stationary'):

@@ -1,0 +1,66 @@
+"""The command line reports a damped system: a cart with a damper carrying a
+pendulum. The cart's position is absent from the Lagrangian but its momentum
+is not conserved (the damper acts on it), so it is not offered as cyclic and
+the report goes on to the equilibria of the full system (issue: the CLI used
+to stop because ``cyclic_coordinates()`` offered ``x`` and ``routh([x])``
+refused it)."""
+import subprocess
+import sys
+
+CART = """\
+kind: mechanical
+name: damped cart pendulum
+parameters: [M, m, l, g, c]
+positive: [M, m, l, g, c]
+coordinates: [x, theta]
+force_function:
+  uniform_gravity: [0, 0, -g]
+dissipation: "c*dx^2/2"
+bodies:
+  - name: cart
+    parent: 0
+    joint: [x, 0, 0]
+    mass: M
+  - name: bob
+    parent: cart
+    rotations: [[2, theta]]
+    mass_center: [0, 0, -l]
+    mass: m
+    inertia: [[m*l^2, 0, 0], [0, m*l^2, 0], [0, 0, 0]]
+"""
+
+
+def run(*args):
+    return subprocess.run([sys.executable, "-m", "sage_dynsym", *args],
+                          capture_output=True, text=True, timeout=600)
+
+
+def test_damped_cart_is_reported(tmp_path):
+    path = tmp_path / "cart.yaml"
+    path.write_text(CART)
+    result = run(str(path))
+    assert result.returncode == 0, result.stderr
+    assert "Traceback" not in result.stderr
+    text = result.stdout
+    assert "section failed" not in text and "not available" not in text
+    # the damping term c*dx is in the cart's equation
+    assert "c*dx" in text
+    assert "Not cyclic" in text and ": x\n" in text
+    assert "Routh function" not in text
+    # equilibria of the pendulum: hanging down and upside down (a
+    # one-parameter family in x); upside down is unstable
+    assert "Equilibria" in text
+    assert "theta = 0" in text and "theta = pi" in text
+    upside_down = text.split("theta = pi")[1].split("\n")[1]
+    assert "unstable" in upside_down
+    assert "Hamiltonian" in text
+
+
+def test_undamped_cart_still_reduced(tmp_path):
+    path = tmp_path / "cart.yaml"
+    path.write_text(CART.replace('dissipation: "c*dx^2/2"\n', ""))
+    result = run(str(path))
+    assert result.returncode == 0, result.stderr
+    text = result.stdout
+    assert "Routh function for the cyclic coordinates x" in text
+    assert "Not cyclic" not in text
