@@ -17,8 +17,8 @@ from ``t0`` to ``t_end``, both included.
   is integrated from sample to sample and at each sample the coordinates
   are projected onto `f = 0` (Gauss--Newton, minimum-norm steps) and the
   velocities onto `J \dot q + \partial f/\partial t = 0`.
-- The integration runs in pieces; when it lasts more than a few seconds
-  the progress is reported through :func:`sage.misc.verbose.verbose` (level
+- When the integration lasts more than a few seconds the progress is
+  reported through :func:`sage.misc.verbose.verbose` (level
   1) and the logger ``sage_dynsym.numerics``. An interruption (Ctrl-C)
   propagates as ``KeyboardInterrupt``; nothing is left half-built.
 
@@ -129,6 +129,27 @@ class _Projection:
         return np.concatenate([q, dq])
 
 
+class _Progress:
+    """The right-hand side, reporting the progress of long integrations."""
+
+    def __init__(self, rhs, t0, t_end):
+        self._rhs, self._t0, self._span = rhs, t0, t_end - t0
+        self._calls, self._start = 0, time.monotonic()
+        self._last = self._start
+
+    def __call__(self, t, x):
+        self._calls += 1
+        if not self._calls % 2000:
+            now = time.monotonic()
+            if now - self._last > _REPORT_AFTER:
+                self._last = now
+                message = (f"simulate: t = {t:g} ({100 * (t - self._t0) / self._span:.0f}%) "
+                           f"after {now - self._start:.1f} s, {self._calls} evaluations")
+                verbose(message, level=1)
+                _LOG.info(message)
+        return self._rhs(t, x)
+
+
 def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
              atol=1e-12, backend='auto', energy=None, **options):
     r"""
@@ -213,27 +234,22 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     times = np.linspace(t0, t_end, points)
     states = np.empty((points, len(x)))
     states[0] = x
-    # pieces: every sample interval under constraints (projection), else ~20
-    step = 1 if project is not None else max(1, (points - 1) // 20)
-    start, last_report = time.monotonic(), time.monotonic()
+    progress = _Progress(rhs, t0, t_end)
+    # without constraints one integration (restarts cost steps); with them
+    # one per sample interval, each followed by the projection
+    step = 1 if project is not None else points - 1
     i = 0
     while i < points - 1:
         j = min(i + step, points - 1)
-        solution = solve_ivp(rhs, (times[i], times[j]), states[i], method=scipy_method,
+        solution = solve_ivp(progress, (times[i], times[j]), states[i], method=scipy_method,
                              t_eval=times[i:j + 1], rtol=rtol, atol=atol, **options)
         if not solution.success:
-            raise AnalysisError(f"the integration stopped at t = {solution.t[-1] if len(solution.t) else times[i]}: "
+            reached = solution.t[-1] if len(solution.t) else times[i]
+            raise AnalysisError(f"the integration stopped at t = {reached}: "
                                 f"{solution.message}", entry="simulate")
         states[i + 1:j + 1] = solution.y.T[1:]
         if project is not None:
             states[j] = project(times[j], states[j])
         i = j
-        now = time.monotonic()
-        if now - last_report > _REPORT_AFTER:
-            last_report = now
-            message = (f"simulate: t = {times[i]:g} of {t_end:g} "
-                       f"({100 * (times[i] - t0) / (t_end - t0):.0f}%) after {now - start:.1f} s")
-            verbose(message, level=1)
-            _LOG.info(message)
     return Trajectory(times, states, form.state(), parameters, energy=energy,
                       method=scipy_method)
