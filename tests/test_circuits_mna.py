@@ -284,6 +284,9 @@ def test_transformer_with_isolated_sides():
     assert same_multiset(np.linalg.eigvals(np.linalg.solve(B, J)), natural_frequencies(E, A))
     # the secondary is driven only through M: L1 i1' + M i2' = ..., M i1' + L2 i2' = ...
     assert C.lhs_matrix()[0, 1] == SR.var('M')
+    # both Lagrangians: one grounded node per part (node 1 follows E1), three loops
+    assert len(C.lagrangian(method="node").coordinates()) == 2
+    assert len(C.lagrangian(method="loop").coordinates()) == 3
     # parts joined neither by a branch nor by a coupling are still refused
     with pytest.raises(CircuitError, match="disconnected"):
         Circuit(entries[:-1])

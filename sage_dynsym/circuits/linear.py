@@ -25,7 +25,8 @@ branch charges `Q_b = \sum \pm q_k`:
 each loop.
 
 **Node-potential method.** One node is grounded (node ``0`` if there is one,
-otherwise the highest node). The coordinates are node flux linkages
+otherwise the highest node; in a circuit whose parts are joined only by
+mutual inductances, also the highest node of every other part). The coordinates are node flux linkages
 ``phi<node>`` (their derivatives are node potentials). Voltage sources tie
 the flux of their ``to`` node to that of their ``from`` node
 (`\varphi_b = \varphi_a + \int_0^t E`), so only one node per group joined by
@@ -47,7 +48,7 @@ from sage.symbolic.integration.integral import definite_integral
 
 from ..errors import CircuitError
 from ..symbols import velocity, t
-from .graph import UnionFind
+from .graph import UnionFind, node_key
 
 
 def source_integral(value):
@@ -330,6 +331,15 @@ class NodeAnalysis(_BranchAnalysis):
         (0, [phi2, phi3])
         sage: A.kinetic_energy(), A.potential_energy(), A.dissipation()
         (1/2*C1*dphi3^2, 1/2*(phi2 - phi3)^2/L1, 1/2*(E1 - dphi2)^2/R1)
+
+    A transformer with galvanically isolated sides: node 4 grounds the
+    secondary::
+
+        sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [3, 4, 'L2'], [4, 3, 'R2'],
+        ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+        ....:             parameters=['M'])
+        sage: C.node_analysis().coordinates()
+        [phi3]
     """
 
     def __init__(self, circuit, ground=None):
@@ -349,9 +359,13 @@ class NodeAnalysis(_BranchAnalysis):
             uf.union(b.tail, b.head)
             adjacency[b.tail].append((b.head, b.value))
             adjacency[b.head].append((b.tail, -b.value))
+        # one grounded node per part of the graph (parts joined only by mutual
+        # inductances): the given one, and each other part's highest node
+        grounds = [ground] + [max(part, key=node_key) for part in
+                              cg.graph.connected_components(sort=False) if ground not in part]
         # flux of every node = coordinate of its group's representative + offset
         rep, offset = {}, {}
-        for root in [ground] + [v for v in nodes if v != ground]:
+        for root in grounds + [v for v in nodes if v not in grounds]:
             if root in rep:
                 continue
             rep[root], offset[root] = root, SR(0)
@@ -361,7 +375,7 @@ class NodeAnalysis(_BranchAnalysis):
                     if w not in rep:
                         rep[w], offset[w] = root, offset[v] + e
                         queue.append(w)
-        reps = [v for v in nodes if rep[v] == v and v != ground]
+        reps = [v for v in nodes if rep[v] == v and v not in grounds]
         self._coordinates = [SR.var(f"phi{v}" if not isinstance(v, str) else f"phi_{v}")
                              for v in reps]
         index = {v: k for k, v in enumerate(reps)}
