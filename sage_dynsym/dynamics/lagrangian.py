@@ -895,9 +895,9 @@ class Lagrangian(SageObject):
 
         REFERENCES:
 
-        - [Gol2002]_ H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
-          3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
-          and forces of constraint).
+        .. [Gol2002] H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
+           3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
+           and forces of constraint).
         """
         q, dq, ddq = self._coordinates, self._velocities, self._accelerations
         M = self.decomposition()[0]
