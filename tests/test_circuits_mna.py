@@ -332,3 +332,48 @@ def test_linearize_and_positive():
     i1, u2, E1 = SR.var('i1'), SR.var('u2'), SR.var('E1')
     lin = linearize(C.subs({E1: 0}), {i1: 0, u2: 0})
     assert lin.jacobian().nrows() == 2
+
+
+def test_nonlinear_circuits_without_split_match_kirchhoff():
+    # circuits with nonlinear resistors i = c1/2 u + c3/5 u^3 and no
+    # Brayton-Moser split, against the Kirchhoff solver (scipy root finding)
+    # of test_circuits_crosscheck, which shares no code with sage_dynsym
+    from test_circuits_crosscheck import MNA, random_circuit as complete_circuit, num
+    rng = np.random.default_rng(7400)
+    checked = implicit = 0
+    for _ in range(300):
+        if checked >= 8:
+            break
+        br, cp, n, entries, values = complete_circuit(
+            rng, {'R': 3, 'L': 2, 'C': 2, 'E': 1, 'I': 1, 'f': 2}, mutual=True)
+        if not any(b['kind'] == 'f' for b in br):
+            continue
+        C = Circuit(entries, parameters=['M12'])
+        if C.has_mixed_potential():
+            continue
+        try:
+            rhs = C.state_equations()
+        except CircuitError as err:
+            assert "no explicit state equations" in str(err) and " f" in str(err)
+            implicit += 1
+            continue
+        solver = MNA(br, cp, n)
+        index = {b['name']: k for k, b in enumerate(br)}
+        states = C.state_variables()
+        assert len(states) == len(solver.ind) + len(solver.cap)
+        iL, uC = rng.normal(size=len(solver.ind)), rng.normal(size=len(solver.cap))
+        point = dict(values)
+        for x, name in states:
+            k = index[name]
+            point[x] = iL[solver.ind.index(k)] if br[k]['kind'] == 'L' \
+                else uC[solver.cap.index(k)]
+        diL, duC = solver.derivative(iL, uC)
+        rate = {br[k]['name']: d for k, d in zip(solver.ind + solver.cap,
+                                                  list(diL) + list(duC))}
+        B = C.lhs_matrix()
+        for a, (x, name) in enumerate(states):
+            expected = sum(num(B[a, c], point) * rate[other]
+                           for c, (_, other) in enumerate(states))
+            assert num(rhs[a], point) == pytest.approx(expected, abs=1e-8), (entries, name)
+        checked += 1
+    assert checked >= 8 and implicit >= 1, (checked, implicit)
