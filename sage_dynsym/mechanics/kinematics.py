@@ -10,6 +10,10 @@ and mass centres, and the decomposition (4) of each body's kinetic energy
 :class:`~sage_dynsym.mechanics.frames.FrameVector` over either the symbolic ring or a
 :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`.
 
+For large systems, :meth:`Kinematics.recursive_equations` assembles the
+equations (5) body by body from the same kinematics (Newton--Euler
+recursion), keeping the nested form of the kinematic expressions.
+
 EXAMPLES::
 
     sage: from sage_dynsym import load
@@ -23,8 +27,9 @@ EXAMPLES::
 from sage.misc.cachefunc import cached_method
 from sage.misc.verbose import verbose
 from sage.rings.rational_field import QQ
+from sage.symbolic.ring import SR
 
-from ..symbols import time_derivative
+from ..symbols import time_derivative, t
 from .frames import FrameTree, FrameVector, cross
 
 
@@ -210,3 +215,208 @@ class Kinematics:
         A1 = [bilinear(JV[i], JW[i], V0, W0) for i in range(n)]
         A0 = QQ((1, 2)) * bilinear(V0, W0, V0, W0)
         return A, A1, A0
+
+    def recursive_applies(self):
+        r"""
+        Whether :meth:`recursive_equations` applies: every body has a constant
+        mass, mass centre and inertia tensor (no coordinate, velocity or time
+        in them) and no prescribed relative velocity.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: x, m = var('x m')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])
+            sage: Kinematics(S, SymbolicBackend()).recursive_applies()
+            True
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m*x)], [x])
+            sage: Kinematics(S, SymbolicBackend()).recursive_applies()
+            False
+        """
+        dynamic = set(self._coordinates) | set(self._velocities) | {t}
+        for body in self._bodies:
+            data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
+            if body.velocity() is not None or any(
+                    dynamic.intersection(SR(e).variables()) for e in data):
+                return False
+        return True
+
+    @cached_method
+    def recursive_equations(self):
+        r"""
+        The kinetic part of the equations (5), assembled body by body over the
+        symbolic ring (Newton--Euler recursion; see :meth:`recursive_applies`).
+
+        With the partial velocities `\partial V_{0k}/\partial\dot q_i` and
+        `\partial W_k/\partial\dot q_i` of the joint and the body, its
+        acceleration `a_{0k}` and angular acceleration `\varepsilon_k`, all in
+        body `k`'s axes (formulas of :doc:`the method </method>`, Section 2),
+
+        .. MATH::
+
+            \frac{d}{dt}\frac{\partial T}{\partial\dot q_i}
+            - \frac{\partial T}{\partial q_i}
+            = \sum_k \frac{\partial V_{0k}}{\partial\dot q_i}\cdot
+              m_k\big(a_{0k} + \varepsilon_k\times r_{ck}
+                      + W_k\times(W_k\times r_{ck})\big)
+            + \frac{\partial W_k}{\partial\dot q_i}\cdot
+              \big(\Theta_k\varepsilon_k + W_k\times\Theta_k W_k
+                   + m_k\, r_{ck}\times a_{0k}\big).
+
+        The accelerations' terms give the mass matrix `A`; the rest, at zero
+        accelerations, the terms `h_i` in the velocities (and time). The
+        kinematic quantities are built frame by frame (one elementary
+        rotation at a time) and never expanded, so the equations of a long
+        chain stay far shorter than their expanded form.
+
+        OUTPUT: a tuple ``(A, A1, T0, h)``: the decomposition (4) of the
+        kinetic energy (nested lists and an expression) and the list of `h_i`,
+        so that `\sum_r A_{ir}\ddot q_r + h_i` is the kinetic part of `E_i`.
+
+        EXAMPLES: the spherical pendulum (equations (9) of Example 1, without
+        gravity)::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
+            sage: A, A1, T0, h = K.recursive_equations()
+            sage: A, h
+            ([[l^2*m*sin(theta)^2, 0], [0, l^2*m]],
+             [2*dpsi*dtheta*l^2*m*cos(theta)*sin(theta), -dpsi^2*l^2*m*cos(theta)*sin(theta)])
+
+        TESTS:
+
+        A sliding joint on a turntable turning at the prescribed rate `w`
+        (time in the kinematics: `A_1` and `T_0`)::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, w, m = var('x w m'); t = var('t')
+            sage: S = MechanicalSystem([RigidBody('table', rotations=[(3, w*t)]),
+            ....:                       RigidBody('bead', parent='table', joint=[x, 0, 0],
+            ....:                                 mass=m)], [x])
+            sage: A, A1, T0, h = Kinematics(S, SymbolicBackend()).recursive_equations()
+            sage: A, A1, T0, h
+            ([[m]], [0], 1/2*m*w^2*x^2, [-m*w^2*x])
+        """
+        n = len(self._coordinates)
+        tree, zero = self.tree, SR(0)
+        no_acceleration = [0] * n
+
+        def rate(expr):
+            # time derivative at zero accelerations
+            return time_derivative(expr, self._coordinates, self._velocities, no_acceleration)
+
+        def at_rest(expr):
+            return SR(expr).subs({v: 0 for v in self._velocities})
+
+        def partials(expr):
+            return [SR(expr).diff(v) for v in self._velocities]
+
+        # per frame, in its own axes: W, its value at rest W0, the angular
+        # acceleration at zero accelerations, the partial angular velocities
+        W, W0, eps, JW = {0: _ZERO3}, {0: _ZERO3}, {0: _ZERO3}, {0: [None] * n}
+        # every frame lies on the path of some body; parents come first
+        frames = sorted(set().union(*[tree.path_to_root(f) for f in self._frames]) - {0})
+        for f in frames:
+            p, axis = tree.parent(f), tree.axis(f)
+
+            def down(v, p=p, f=f):
+                # components in f of the vector with components v in p
+                return tree.express(v, p, f)
+
+            angle_rate = rate(tree.angle(f))
+            w = down(W[p])
+            W[f] = _plus_axis(w, axis, angle_rate)
+            W0[f] = _plus_axis(down(W0[p]), axis, at_rest(angle_rate))
+            # d/dt (rate e) = (rate)' e + rate W_parent x e
+            spin = _plus_axis(_ZERO3, axis, angle_rate)
+            eps[f] = _add(_plus_axis(down(eps[p]), axis, rate(angle_rate)), cross(w, spin))
+            JW[f] = [_plus_axis(None if J is None else down(J), axis, d)
+                     for J, d in zip(JW[p], partials(angle_rate))]
+        # per body, in its own axes: V0k at rest, a0k at zero accelerations,
+        # the partial velocities
+        V0, acc, JV = {0: _ZERO3}, {0: _ZERO3}, {0: [None] * n}
+        A = [[[] for _ in range(n)] for _ in range(n)]
+        A1, T0, h = [[] for _ in range(n)], [], [[] for _ in range(n)]
+        for k, body in enumerate(self._bodies, 1):
+            j = self._parents[k]
+            fj, fk = self._frames[j], self._frames[k]
+            r = [SR(c) for c in body.joint()]
+            dr = [rate(c) for c in r]
+            w, e = W[fj], eps[fj]
+            a = _add(acc[j], cross(e, r), cross(w, cross(w, r)),
+                     [2 * c for c in cross(w, dr)], [rate(c) for c in dr])
+            acc[k] = tree.express(a, fj, fk)
+            V0[k] = tree.express(_add(V0[j], cross(W0[fj], r), [at_rest(c) for c in dr]),
+                                 fj, fk)
+            dr_partials = [partials(c) for c in dr]
+            JV[k] = []
+            for i in range(n):
+                parts = [J for J in (JV[j][i], None if JW[fj][i] is None else cross(JW[fj][i], r),
+                                     [d[i] for d in dr_partials]) if J is not None]
+                J = _add(*parts)
+                JV[k].append(None if all(x.is_trivial_zero() for x in J)
+                             else tree.express(J, fj, fk))
+            if body.is_massless():
+                continue
+            m = SR(body.mass())
+            c = [SR(x) for x in body.mass_center()]
+            inertia = body.inertia()
+
+            def Theta(u):
+                return [zero.add(*[inertia[a, b] * u[b] for b in range(3) if inertia[a, b]])
+                        for a in range(3)]
+
+            def momentum(V, Wv):
+                # the linear and angular momentum (about O_k) of velocities V, W
+                return [m * x for x in _add(V, cross(Wv, c))], _add(
+                    Theta(Wv), [m * x for x in cross(c, V)])
+
+            def pair(V, Wv, P):
+                # <(V, W), (F, M)>; None stands for zero
+                return zero.add(*[_dot(X, Y) for X, Y in zip((V, Wv), P) if X is not None])
+
+            w, e, a = W[fk], eps[fk], acc[k]
+            force = ([m * x for x in _add(a, cross(e, c), cross(w, cross(w, c)))],
+                     _add(Theta(e), cross(w, Theta(w)), [m * x for x in cross(c, a)]))
+            rest = momentum(V0[k], W0[fk])
+            T0.append(pair(V0[k], W0[fk], rest) / 2)
+            for i in range(n):
+                if JV[k][i] is None and JW[fk][i] is None:
+                    continue
+                h[i].append(pair(JV[k][i], JW[fk][i], force))
+                A1[i].append(pair(JV[k][i], JW[fk][i], rest))
+                column = momentum(JV[k][i] or _ZERO3, JW[fk][i] or _ZERO3)
+                for s in range(i, n):
+                    if JV[k][s] is not None or JW[fk][s] is not None:
+                        A[i][s].append(pair(JV[k][s], JW[fk][s], column))
+        A = [[zero.add(*A[min(i, s)][max(i, s)]) for s in range(n)] for i in range(n)]
+        return A, [zero.add(*x) for x in A1], zero.add(*T0), [zero.add(*x) for x in h]
+
+
+_ZERO3 = (SR(0), SR(0), SR(0))
+
+
+def _add(*vectors):
+    return tuple(SR(0).add(*components) for components in zip(*vectors))
+
+
+def _dot(u, w):
+    return SR(0).add(*[a * b for a, b in zip(u, w)
+                       if not (a.is_trivial_zero() or b.is_trivial_zero())])
+
+
+def _plus_axis(vector, axis, value):
+    # ``vector`` (None: zero) plus ``value`` times the unit vector of ``axis``;
+    # None if the result is zero
+    if vector is None:
+        if SR(value).is_trivial_zero():
+            return None
+        vector = _ZERO3
+    vector = list(vector)
+    vector[axis - 1] += value
+    return tuple(vector)
