@@ -110,6 +110,8 @@ The Kepler problem in polar coordinates::
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
 """
+import operator
+
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
@@ -152,8 +154,8 @@ class Lagrangian(SageObject):
       without arguments returning the equations (5) without dissipation and
       forces, computed in a faster arithmetic by the caller
     - ``constraints`` -- (default: none) holonomic constraints `f_j(q, t)`,
-      each meaning `f_j = 0`, independent at a generic point (see the
-      module documentation)
+      each meaning `f_j = 0` (or equations ``a == b``, meaning `a - b = 0`),
+      independent at a generic point (see the module documentation)
 
     EXAMPLES::
 
@@ -193,6 +195,12 @@ class Lagrangian(SageObject):
         Traceback (most recent call last):
         ...
         ModelError: constraints[0]: dx - y depends on the velocity dx: only holonomic constraints f(q, t) = 0 are supported
+        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
+        [x - y]
+        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: expected an expression f meaning f = 0 or an equation, got the relation x < y
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
@@ -224,10 +232,12 @@ class Lagrangian(SageObject):
         self._forces = [SR(f) for f in forces]
         self._name = name
         self._constraints = self._checked_constraints(constraints)
-        taken = set().union(*(SR(e).variables() for e in
-                              [self._expr, self._dissipation] + self._forces + self._constraints))
-        taken |= {momentum(q) for q in self._coordinates}
-        self._multipliers = constraint_multipliers(len(self._constraints), taken)
+        self._multipliers = []
+        if self._constraints:
+            taken = set().union(*(SR(e).variables() for e in [self._expr, self._dissipation]
+                                  + self._forces + self._constraints))
+            taken |= {momentum(q) for q in self._coordinates}
+            self._multipliers = constraint_multipliers(len(self._constraints), taken)
 
     def _checked_constraints(self, constraints):
         constraints = [SR(f) for f in constraints]
@@ -236,8 +246,10 @@ class Lagrangian(SageObject):
         for j, f in enumerate(constraints):
             entry = f"constraints[{j}]"
             if f.is_relational():
-                raise ModelError(f"expected an expression f meaning f = 0, got the relation {f}",
-                                 entry=entry)
+                if f.operator() is not operator.eq:
+                    raise ModelError(f"expected an expression f meaning f = 0 or an equation, "
+                                     f"got the relation {f}", entry=entry)
+                f = constraints[j] = f.lhs() - f.rhs()
             for v in motion:
                 if f.has(v):
                     raise ModelError(f"{f} depends on the velocity {v}: only holonomic "
