@@ -51,7 +51,7 @@ from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPo
 from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
-from ..dynamics.natural_form import natural_form
+from ..dynamics.natural_form import natural_form, is_singular
 from .force_functions import check_force_function
 from .kinematics import Kinematics
 from .rigid_body import RigidBody
@@ -68,9 +68,10 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
     ``lhs == rhs`` becomes ``lhs - rhs``), checked: each depends on a
     coordinate and on no velocity; with ``parameters`` (a list) no other
     symbol than coordinates, parameters and ``t``; and the Jacobian
-    `\partial f_j / \partial q_i` has full rank `m` at generic points
-    (evaluated at a few fixed pseudo-random points), so that no constraint
-    is redundant.
+    `\partial f_j / \partial q_i` has full rank `m` at a generic point
+    (:func:`~sage_dynsym.dynamics.natural_form.is_singular`), so that no
+    constraint is redundant (checked again by the Lagrangian; here the
+    error comes at construction, naming the entry).
 
     EXAMPLES::
 
@@ -84,11 +85,11 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
         sage: check_constraints([x^2 + y^2 - l^2, 2*x^2 + 2*y^2 - 2*l^2], [x, y])
         Traceback (most recent call last):
         ...
-        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank 1 at generic points; remove the redundant ones
+        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
         sage: check_constraints([x - y, y - z, x - z], [x, y, z])
         Traceback (most recent call last):
         ...
-        ModelError: constraints: the 3 constraints are not independent: their Jacobian with respect to the coordinates has rank 2 at generic points; remove the redundant ones
+        ModelError: constraints: the 3 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 3 at a generic point; remove the redundant ones
         sage: check_constraints([x - z], [x], parameters=[l])
         Traceback (most recent call last):
         ...
@@ -127,34 +128,15 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
                              f"{', '.join(map(str, coordinates))}", entry=sub)
         out.append(f)
     if out:
-        rank = _generic_rank([[f.diff(q) for q in coordinates] for f in out])
-        if rank < len(out):
+        J = matrix(SR, [[f.diff(q) for q in coordinates] for f in out])
+        if len(out) > len(coordinates) or is_singular(J * J.transpose()):
             raise ModelError(f"the {len(out)} constraints are not independent: their Jacobian "
-                             f"with respect to the coordinates has rank {rank} at generic "
-                             "points; remove the redundant ones", entry=entry)
+                             "with respect to the coordinates has rank less than "
+                             f"{len(out)} at a generic point; remove the redundant ones",
+                             entry=entry)
     return out
 
 
-def _generic_rank(rows, points=3):
-    # the largest numerical rank over a few fixed pseudo-random points (a
-    # point where an entry cannot be evaluated is skipped)
-    import random
-    import numpy
-    symbols = sorted({v for row in rows for e in row for v in SR(e).variables()}, key=str)
-    generator = random.Random(13)
-    best = 0
-    for _ in range(points):
-        values = {v: SR(generator.randint(300, 1700)) / 1000 for v in symbols}
-        try:
-            J = numpy.array([[complex(SR(e).subs(values)) for e in row] for row in rows])
-        except (TypeError, ValueError, ArithmeticError):
-            continue
-        if not numpy.all(numpy.isfinite(J)):
-            continue
-        sigma = numpy.linalg.svd(J, compute_uv=False)
-        scale = max(sigma.max(), 1.0) if sigma.size else 1.0
-        best = max(best, int((sigma > 1e-9 * scale).sum()))
-    return best
 
 
 class MechanicalSystem(Model):
@@ -1314,5 +1296,5 @@ class MechanicalSystem(Model):
                           decomposition=decomposition, dissipation=self._dissipation,
                           forces=self.generalized_forces(), name=self._name,
                           equation_builder=builder,
-                          **({'constraints': self._constraints} if self._constraints else {}))
+                          constraints=self._constraints)
 
