@@ -105,6 +105,21 @@ def sympy_rhs(kane, values):
     return small, full
 
 
+def physical_values(desc, rng):
+    """
+    Random parameter values of the spatial chain that a real chain can
+    have: the central inertia diag(A - m c^2, A - m c^2, C) is positive and
+    obeys the triangle inequalities (else the mass matrix may be singular).
+    """
+    values = {'g': 9.81}
+    for k in range(1, len(desc['bodies']) + 1):
+        m, c = rng.uniform(0.5, 2), rng.uniform(0.3, 1)
+        values.update({f'm{k}': m, f'c{k}': c, f'l{k}': rng.uniform(0.5, 2),
+                       f'A{k}': m * c * c + m * rng.uniform(0.2, 0.5),
+                       f'C{k}': m * rng.uniform(0.05, 0.2)})
+    return {p: values[p] for p in desc['parameters']}
+
+
 def per_call(f, x, calls):
     f(0.0, x)
     start = time.perf_counter()
@@ -128,7 +143,7 @@ def compare_rhs(n, calls=2000, seed=1, verbose=True):
     from sage_dynsym.numerics import numerical_rhs
     desc = spatial_chain(n)
     rng = random.Random(seed)
-    values = {p: rng.uniform(0.5, 2) for p in desc['parameters']}
+    values = physical_values(desc, rng)
     start = time.perf_counter()
     record = sage_chain(desc).lagrangian().to_linearizer()
     sage = numerical_rhs(record, values)
