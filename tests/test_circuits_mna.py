@@ -377,3 +377,54 @@ def test_nonlinear_circuits_without_split_match_kirchhoff():
             assert num(rhs[a], point) == pytest.approx(expected, abs=1e-8), (entries, name)
         checked += 1
     assert checked >= 8 and implicit >= 1, (checked, implicit)
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_ramp_sources_drive_loops_and_cut_sets_through_their_derivatives(seed):
+    # sources E_k(t) = e_k t, I_k(t) = e_k t: the descriptor system has the
+    # solution z0 + z1 t with A z1 = -b1, E z1 + A z0 = 0 (A nonsingular);
+    # the state part x(t) = x0 + x1 t must satisfy B x1 = F(x(t), t) at every
+    # t -- a capacitor loop through a voltage source feels dE/dt, an inductor
+    # cut-set with a current source dI/dt
+    from sage_dynsym.symbols import t
+    rng = np.random.default_rng(7500 + seed)
+    while True:
+        nnodes, br, couplings, entries, parameters, values = random_circuit(rng, (2, 3, 4, 3, 3))
+        E, A, _ = descriptor(nnodes, br, couplings)
+        parts = lambda kinds: len(set(_parts(nnodes, [x for x in br if x['kind'] in kinds])))
+        voltage_sources = sum(x['kind'] == 'E' for x in br)
+        # a capacitor loop through a voltage source, a cut-set of inductors
+        # with a current source
+        loop_or_cut = (parts('CE') > parts('C') - voltage_sources
+                       or parts('RCEf') > parts('RCEfI'))
+        if loop_or_cut and not is_singular_pencil(E, A, rng) and nonsingular(A):
+            break
+    slopes = {x['name']: QQ(int(rng.integers(-8, 9))) / 4 for x in br if x['kind'] in 'EI'}
+    ramped = []
+    for entry in entries:
+        if isinstance(entry, list) and entry[2][0] in 'EI':
+            kind = 'voltage_source' if entry[2][0] == 'E' else 'current_source'
+            ramped.append({'from': entry[0], 'to': entry[1], 'kind': kind, 'name': entry[2],
+                           'value': f"{slopes[entry[2]]}*t"})
+        else:
+            ramped.append(entry)
+    C = Circuit(ramped, parameters=parameters)
+    _, _, b1 = descriptor(nnodes, br, couplings, {k: float(v) for k, v in slopes.items()})
+    z1 = np.linalg.solve(A, -b1)
+    z0 = np.linalg.solve(A, -E @ z1)
+    where = {x['name']: k for k, x in enumerate(br)}
+
+    def state(z, name):
+        k = where[name]
+        return z[nnodes + k] if br[k]['kind'] == 'L' else z[br[k]['head']] - z[br[k]['tail']]
+
+    states = C.state_variables()
+    x0 = np.array([state(z0, name) for _, name in states])
+    x1 = np.array([state(z1, name) for _, name in states])
+    B = np.array([[float(SR(e).subs(values)) for e in row] for row in C.lhs_matrix().rows()])
+    for time in (0, 1):
+        point = dict(values)
+        point[t] = time
+        point.update({x: v for (x, _), v in zip(states, x0 + time * x1)})
+        F = np.array([float(SR(f).subs(point)) for f in C.state_equations()])
+        assert np.allclose(B @ x1 if len(states) else F, F, rtol=1e-8, atol=1e-8), (ramped, time)
