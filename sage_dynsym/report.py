@@ -310,6 +310,8 @@ def _mechanical(system, out):
         return
     if out.want('equations'):
         out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
+        if L.constraints():
+            out.run("Constraint forces", lambda lines: _constraint_forces(L, lines, out))
     cyclic = L.cyclic_coordinates()
     # absent from L but not cyclic: a damper, a force or a constraint acts on it
     acted = [q for q in L.coordinates() if q not in cyclic and not L.expr().has(q)]
@@ -535,6 +537,17 @@ def _lagrangian_equations(L, lines, out):
     lines.append("Lagrange equations (E_i = 0):")
     for q, e in zip(L.coordinates(), L.lagrange_equations()):
         _formula(lines, f"[{q}] ", e)
+    for mu, f in zip(L.multipliers(), L.constraints()):
+        _formula(lines, f"constraint with multiplier {mu} (terms -{mu} df/dq_i): 0 = ", f)
+
+
+def _constraint_forces(L, lines, out):
+    out.check("the accelerations and multipliers (the equations' terms times (n + m)^2)",
+              equations_estimate(L) * (len(L.coordinates()) + len(L.constraints())) ** 2)
+    solved = L.accelerations_and_multipliers()
+    lines.append("Multipliers (constraint forces), solved with the accelerations:")
+    for mu in L.multipliers():
+        _formula(lines, f"{mu} = ", solved[mu])
 
 
 def _circuit(circuit, out):

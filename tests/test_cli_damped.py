@@ -64,3 +64,37 @@ def test_undamped_cart_still_reduced(tmp_path):
     text = result.stdout
     assert "Routh function for the cyclic coordinates x" in text
     assert "Not cyclic" not in text
+
+
+PENDULUM = """\
+kind: mechanical
+name: Cartesian pendulum
+parameters: [m, l, g]
+positive: [m, l, g]
+coordinates: [x, z]
+force_function:
+  uniform_gravity: [0, 0, -g]
+constraints: ["x^2 + z^2 - l^2"]
+bodies:
+  - name: bob
+    parent: 0
+    joint: [x, 0, z]
+    mass: m
+"""
+
+
+def test_constrained_pendulum_is_reported(tmp_path):
+    """The multiplier's equations and the solved multiplier are printed; the
+    analysis that needs independent coordinates says so instead of stopping.
+    (Tension T = -2 mu1 l = m (v^2 - g z)/l on the circle, Goldstein et al.,
+    Classical Mechanics, 3rd ed., section 2.4.)"""
+    path = tmp_path / "pendulum.yaml"
+    path.write_text(PENDULUM)
+    result = run(str(path))
+    assert result.returncode == 0, result.stderr
+    text = result.stdout
+    assert "[x] ddx*m - 2*mu1*x" in text
+    assert "[z] ddz*m + g*m - 2*mu1*z" in text
+    assert "mu1 = 1/2*(g*m*z - (dx^2 + dz^2)*m)/(x^2 + z^2)" in text
+    assert "Equilibria (equations at rest): not available (constraints:" in text
+    assert "section failed" not in text
