@@ -529,3 +529,20 @@ def test_subs_exact_and_float(tmp_path):
     assert S4.parameters() == [m] and S4.positive_parameters() == [m]
     assert bool(S4.dissipation() == velocity(th) ** 2)
     assert bool(S4.generalized_forces()[0] == 2 * 0.5 * th.cos())
+
+
+def test_velocity_dependent_load_is_a_drag():
+    """A linear drag -c v_P at the tip of a rod on a cart, as a load whose
+    force depends on the velocities, equals the Rayleigh function
+    c |v_P|^2 / 2 (the partial velocities, not the derivative of the power)."""
+    y, th, l, c = [SR.var(n) for n in 'y theta l c'.split()]
+    dy, dth = velocity(y), velocity(th)
+    tip_velocity = [0, dy + l * th.cos() * dth, l * th.sin() * dth]
+    cart = RigidBody('cart', joint=[0, y, 0], mass=1)
+    rod = RigidBody('rod', parent='cart', rotations=[(1, th)], mass_center=[0, 0, -l / 2], mass=1)
+    S1 = MechanicalSystem([cart, rod], [y, th],
+                          loads=[Load('rod', point=[0, 0, -l], force=[-c * u for u in tip_velocity])])
+    S2 = MechanicalSystem([cart, rod], [y, th],
+                          dissipation=c * sum(u ** 2 for u in tip_velocity) / 2)
+    for e1, e2 in zip(S1.equations(), S2.equations()):
+        assert bool((e1 - e2).expand().simplify_trig() == 0)

@@ -290,10 +290,24 @@ class Load(SageObject):
         out['axes'] = self._axes
         return out
 
+    def _vectors(self, system, entry):
+        # (force, velocity of the point, torque, angular velocity) as
+        # FrameVector, the force and torque None when absent
+        from .frames import FrameVector
+        k = body_index(system, self._body, f"{entry}.body")
+        j = 0 if self._axes == 0 else body_index(system, self._axes, f"{entry}.axes")
+        tree, frame = system.frame_tree(), system.body_frame(k)
+        axes = system.body_frame(j) if j else 0
+        W = system.angular_velocity_vector(k)
+        r = FrameVector(tree, {frame: self._point})
+        v = system.joint_velocity_vector(k) + FrameVector(tree, {frame: W.cross(r, frame)})
+        F = None if self._force is None else FrameVector(tree, {axes: self._force})
+        M = None if self._torque is None else FrameVector(tree, {axes: self._torque})
+        return F, v, M, W
+
     def power(self, system, entry="load"):
         r"""
-        The power `F \cdot v_P + M \cdot W_k` of the load on ``system``
-        (affine in the velocities).
+        The power `F \cdot v_P + M \cdot W_k` of the load on ``system``.
 
         EXAMPLES: a torque `M` about the axis of a rotor turned by `a`::
 
@@ -304,26 +318,15 @@ class Load(SageObject):
             sage: Load('rotor', torque=[0, 0, M]).power(S)
             M*da
         """
-        from .frames import FrameVector
-        k = body_index(system, self._body, f"{entry}.body")
-        j = 0 if self._axes == 0 else body_index(system, self._axes, f"{entry}.axes")
-        tree, frame = system.frame_tree(), system.body_frame(k)
-        axes = system.body_frame(j) if j else 0
-        W = system.angular_velocity_vector(k)
-        power = SR(0)
-        if self._force is not None:
-            r = FrameVector(tree, {frame: self._point})
-            v = system.joint_velocity_vector(k) + FrameVector(tree, {frame: W.cross(r, frame)})
-            power += FrameVector(tree, {axes: self._force}).dot(v)
-        if self._torque is not None:
-            power += FrameVector(tree, {axes: self._torque}).dot(W)
-        return power
+        F, v, M, W = self._vectors(system, entry)
+        return (SR(0) if F is None else F.dot(v)) + (SR(0) if M is None else M.dot(W))
 
     def generalized_forces(self, system, entry="load"):
         r"""
-        The generalized forces `Q_i = \partial P / \partial \dot q_i` of the
-        load on ``system``, `P` its :meth:`power` (see the module
-        documentation for the sign convention).
+        The generalized forces `Q_i = F \cdot \partial v_P/\partial \dot q_i
+        + M \cdot \partial W_k/\partial \dot q_i` of the load on ``system``
+        (see the module documentation for the sign convention). The force
+        and torque may depend on the velocities (a drag force).
 
         EXAMPLES: a force along the inertial `x` axis at the point `(l, 0, 0)`
         of a body turned by `a` about the `z` axis::
@@ -334,10 +337,26 @@ class Load(SageObject):
             sage: S = MechanicalSystem([RigidBody('arm', rotations=[(3, a)])], [a])
             sage: Load('arm', point=[l, 0, 0], force=[F, 0, 0]).generalized_forces(S)
             [-F*l*sin(a)]
+
+        A linear drag `-c\, v_P` at that point gives
+        `-\partial R/\partial \dot a` with `R = \tfrac12 c\, l^2 \dot a^2`::
+
+            sage: c, da = var('c da')
+            sage: drag = Load('arm', point=[l, 0, 0], force=[c*l*da*sin(a), -c*l*da*cos(a), 0])
+            sage: drag.generalized_forces(S)
+            [-c*da*l^2]
         """
         from ..analysis.trigonometric import trig_rational_simplify
-        power = self.power(system, entry)
-        return [trig_rational_simplify(power.diff(v)) for v in system.velocities()]
+        F, v, M, W = self._vectors(system, entry)
+        forces = []
+        for dq in system.velocities():
+            Q = SR(0)
+            if F is not None:
+                Q += F.dot(v.map_components(lambda c: SR(c).diff(dq)))
+            if M is not None:
+                Q += M.dot(W.map_components(lambda c: SR(c).diff(dq)))
+            forces.append(trig_rational_simplify(Q))
+        return forces
 
 
 def body_index(system, reference, entry):
