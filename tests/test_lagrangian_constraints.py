@@ -343,3 +343,39 @@ def test_cyclic_coordinates_agree_with_routh(case):
         else:
             with pytest.raises(ModelError, match="not cyclic"):
                 L.routh([q])
+
+
+def test_double_pendulum_motion_equals_the_reduced_model():
+    """The Cartesian double pendulum reduced to its two angles (by the
+    package's ``reduce``) moves as the constrained model: its angular
+    accelerations, mapped to Cartesian ones by hand, equal the accelerations
+    solved with the multipliers."""
+    x1, y1, x2, y2, dx1, dy1, dx2, dy2 = var('x1 y1 x2 y2 dx1 dy1 dx2 dy2')
+    a1, a2, da1, da2 = var('a1 a2 da1 da2')
+    L = Lagrangian(m1 * (dx1**2 + dy1**2) / 2 + m2 * (dx2**2 + dy2**2) / 2
+                   - m1 * g * y1 - m2 * g * y2, [x1, y1, x2, y2],
+                   constraints=[x1**2 + y1**2 - l1**2, (x2 - x1)**2 + (y2 - y1)**2 - l2**2])
+    P = L.reduce([a1, a2], {x1: l1 * sin(a1), y1: -l1 * cos(a1),
+                            x2: l1 * sin(a1) + l2 * sin(a2),
+                            y2: -l1 * cos(a1) - l2 * cos(a2)})
+    reduced = P.accelerations_solved()
+    sol = L.accelerations_and_multipliers()
+    rng = random.Random(17)
+    for _ in range(4):
+        p = {m1: rng.uniform(0.5, 2), m2: rng.uniform(0.5, 2), g: 9.81,
+             l1: rng.uniform(0.5, 2), l2: rng.uniform(0.5, 2)}
+        A1, A2, W1, W2 = (rng.uniform(-3, 3) for _ in range(4))
+        angles = {a1: A1, a2: A2, da1: W1, da2: W2, **p}
+        dd1, dd2 = (float(r.subs(angles)) for r in reduced)
+        s1, c1, s2, c2 = (float(f) for f in (sin(A1), cos(A1), sin(A2), cos(A2)))
+        L1, L2 = p[l1], p[l2]
+        cart = {x1: L1 * s1, y1: -L1 * c1, x2: L1 * s1 + L2 * s2, y2: -L1 * c1 - L2 * c2,
+                dx1: L1 * c1 * W1, dy1: L1 * s1 * W1,
+                dx2: L1 * c1 * W1 + L2 * c2 * W2, dy2: L1 * s1 * W1 + L2 * s2 * W2, **p}
+        ddx1 = L1 * (c1 * dd1 - s1 * W1**2)
+        ddy1 = L1 * (s1 * dd1 + c1 * W1**2)
+        expected = {'ddx1': ddx1, 'ddy1': ddy1,
+                    'ddx2': ddx1 + L2 * (c2 * dd2 - s2 * W2**2),
+                    'ddy2': ddy1 + L2 * (s2 * dd2 + c2 * W2**2)}
+        for name, value in expected.items():
+            assert close(sol[var(name)].subs(cart), value, 1e-8)
