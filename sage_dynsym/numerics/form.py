@@ -37,7 +37,7 @@ EXAMPLES::
 from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, ModelError
 from ..symbols import t as _t
 
 
@@ -94,15 +94,7 @@ class NumericalForm:
             B = record.lhs_matrix()
             self._A = None if B.is_one() else B
             self._b = list(record.rhs())
-        exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
-        exprs += self._constraints + ([] if self._energy is None else [self._energy])
-        hidden = {str(v) for v in self._state + self._hidden + [_t]}
-        found = {}
-        for e in exprs:
-            for v in SR(e).variables():
-                if str(v) not in hidden:
-                    found[str(v)] = v
-        self._parameters = [found[k] for k in sorted(found)]
+        self._parameters = self._find_parameters()
         self._kernels = {}
 
     def _second_order(self, record):
@@ -220,6 +212,135 @@ class NumericalForm:
             1/2*dx^2 + 1/2*x^2
         """
         return self._energy
+
+    def _expressions(self):
+        exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
+        exprs += self._constraints + [a for row in self._J for a in row] + self._f_t
+        return exprs + ([] if self._energy is None else [self._energy])
+
+    def functions(self):
+        r"""
+        The unspecified functions of the equations (such as the
+        characteristics `i = f(u)` of a circuit's nonlinear resistors),
+        sorted by name; :meth:`with_functions` gives them a definition.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: u, C = var('u C'); f = function('f')
+            sage: NumericalForm(FirstOrderEquations([-f(u)], [u], lhs_matrix=[C])).functions()
+            [f]
+        """
+        if not hasattr(self, '_functions'):
+            found, stack = {}, [SR(e) for e in self._expressions()]
+            while stack:
+                e = stack.pop()
+                op = e.operator()
+                if op is None:
+                    continue
+                if type(op).__name__ == 'NewSymbolicFunction':
+                    found[op.name()] = op
+                elif type(op).__name__ == 'FDerivativeOperator':
+                    found[op.function().name()] = op.function()
+                stack.extend(e.operands())
+            self._functions = [found[k] for k in sorted(found)]
+        return list(self._functions)
+
+    def with_functions(self, values):
+        r"""
+        The form with its unspecified functions replaced by the definitions
+        in ``values`` (keys: the functions or their names; values: Python
+        functions of as many symbolic arguments, or callable symbolic
+        expressions); ``self`` if it has none. The definitions may use
+        parameters (they then need values too). Forms are cached by
+        definition, so their code is compiled once.
+
+        EXAMPLES: a nonlinear resistor `i = f(u)` in parallel with a
+        capacitor::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: u, C, a = var('u C a'); f = function('f')
+            sage: N = NumericalForm(FirstOrderEquations([-f(u)], [u], lhs_matrix=[C]))
+            sage: M = N.with_functions({'f': lambda v: a*v^3 - v}); M.vector(), M.parameters()
+            ([-a*u^3 + u], [C, a])
+
+        TESTS::
+
+            sage: N.with_functions({})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: missing definitions of the functions f (give values['f'] = a function, e.g. lambda u: u^3 - u)
+            sage: N.with_functions({f: 2})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: the definition of f must be a function of 1 arguments, got 2
+        """
+        functions = self.functions()
+        if not functions:
+            return self
+        by_name = {(k.name() if hasattr(k, 'name') and not isinstance(k, str) else str(k)): v
+                   for k, v in values.items()}
+        missing = [f.name() for f in functions if f.name() not in by_name]
+        if missing:
+            raise ModelError(f"missing definitions of the functions {', '.join(missing)} (give "
+                             f"values['{missing[0]}'] = a function, e.g. lambda u: u^3 - u)",
+                             entry="values")
+        definitions = {}
+        for f in functions:
+            arity = self._arity(f)
+            arguments = [SR.var(f'_{f.name()}_{k}') for k in range(arity)]
+            given = by_name[f.name()]
+            try:
+                body = SR(given(*arguments))
+            except (TypeError, ValueError, ArithmeticError):
+                raise ModelError(f"the definition of {f.name()} must be a function of {arity} "
+                                 f"arguments, got {given}", entry="values") from None
+            definitions[f] = body.function(*arguments)
+        key = tuple(str(definitions[f]) for f in functions)
+        variants = self.__dict__.setdefault('_variants', {})
+        if key not in variants:
+            variants[key] = self._substituted(definitions)
+        return variants[key]
+
+    def _arity(self, f):
+        stack = [SR(e) for e in self._expressions()]
+        while stack:
+            e = stack.pop()
+            if e.operator() is f:
+                return len(e.operands())
+            if e.operator() is not None:
+                stack.extend(e.operands())
+        return 1
+
+    def _substituted(self, definitions):
+        import copy
+
+        def sub(e):
+            for f, g in definitions.items():
+                e = SR(e).substitute_function(f, g)
+            return e
+        new = copy.copy(self)
+        new.__dict__.pop('_variants', None)
+        new._functions, new._kernels = [], {}
+        new._b = [sub(e) for e in self._b]
+        new._A = None if self._A is None else self._A.apply_map(sub)
+        new._constraints = [sub(e) for e in self._constraints]
+        new._J = [[sub(e) for e in row] for row in self._J]
+        new._gamma, new._f_t = [sub(e) for e in self._gamma], [sub(e) for e in self._f_t]
+        new._energy = None if self._energy is None else sub(self._energy)
+        new._parameters = new._find_parameters()
+        return new
+
+    def _find_parameters(self):
+        hidden = {str(v) for v in self._state + self._hidden + [_t]}
+        found = {}
+        for e in self._expressions():
+            for v in SR(e).variables():
+                if str(v) not in hidden:
+                    found[str(v)] = v
+        return [found[k] for k in sorted(found)]
 
     def kernel(self, backend='auto'):
         r"""

@@ -103,6 +103,10 @@ class RightHandSide(SageObject):
     """
 
     def __init__(self, form, values, backend='auto'):
+        if not isinstance(values, dict):
+            raise ModelError("values must be a dict of parameter values, got "
+                             f"{type(values).__name__}", entry="values")
+        form = form.with_functions(values)
         self._form = form
         self._p = parameter_values(form, values)
         self._kernel = form.kernel(backend)
@@ -163,7 +167,9 @@ def numerical_rhs(equations, values, backend='auto'):
 
     - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion` or a
       :class:`~sage_dynsym.numerics.form.NumericalForm`
-    - ``values`` -- dict of the parameter values (symbols or names as keys)
+    - ``values`` -- dict of the parameter values (symbols or names as
+      keys) and of the definitions of unspecified functions (see
+      :meth:`~sage_dynsym.numerics.form.NumericalForm.with_functions`)
     - ``backend`` -- ``'auto'`` (compiled C when a compiler works, else
       Python), ``'c'`` or ``'python'``
 
@@ -183,6 +189,14 @@ def numerical_rhs(equations, values, backend='auto'):
         sage: E = Pendulum([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy])
         sage: numerical_rhs(E, {g: 1})(0, [1.0, 0.0, 0.0, 1.0])    # centripetal
         array([ 0.,  1., -1., -1.])
+
+    A nonlinear resistor `i = f(u)` in parallel with a capacitor `C`::
+
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: u, C = var('u C'); f = function('f')
+        sage: E1 = FirstOrderEquations([-f(u)], [u], lhs_matrix=[C])
+        sage: numerical_rhs(E1, {C: 2, 'f': lambda v: v^3 - v})(0, [2.0])
+        array([-3.])
 
     TESTS::
 
