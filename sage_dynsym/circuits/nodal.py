@@ -121,6 +121,7 @@ from sage.matrix.constructor import matrix
 from sage.matrix.special import block_diagonal_matrix
 from sage.rings.rational_field import QQ
 from sage.rings.real_double import RDF
+from sage.rings.real_mpfr import RR
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.symbolic.ring import SR
 from sage.symbolic.function_factory import function as symbolic_function
@@ -163,16 +164,14 @@ def coefficient_ring(values):
         Fraction Field of Multivariate Polynomial Ring in R1, R2 over Rational Field
         sage: coefficient_ring([SR(2), SR(3)/4]), coefficient_ring([SR(0.5)])
         (Rational Field, Real Double Field)
-        sage: coefficient_ring([sqrt(R1)]), coefficient_ring([0.5*R1])
-        (Symbolic Ring, Symbolic Ring)
+        sage: coefficient_ring([sqrt(R1)]), coefficient_ring([0.5*R1]), coefficient_ring([pi])
+        (Symbolic Ring, Symbolic Ring, Symbolic Ring)
     """
     values = [SR(v) for v in values]
     names = sorted({str(x) for v in values for x in v.variables()})
     if any(_inexact(v) for v in values):
         return SR if names else RDF
-    if not names:
-        return QQ
-    ring = PolynomialRing(QQ, names).fraction_field()
+    ring = PolynomialRing(QQ, names).fraction_field() if names else QQ
     try:
         for v in values:
             ring(v)
@@ -311,9 +310,13 @@ class NodalAnalysis:
         keys = list(columns)
         row_of = {x: X.row(where[x]) for x in unknowns}
 
+        # floating-point results as Sage reals (a Python float inside SR breaks
+        # matrix algebra)
+        to_sr = (lambda c: SR(RR(c))) if ring is RDF else SR
+
         def combination(x):
             v = row_of[x]
-            return sum((SR(v[columns[key]]) * value[key] for key in keys
+            return sum((to_sr(v[columns[key]]) * value[key] for key in keys
                         if v[columns[key]] != 0), SR(0))
 
         nonlinear = [p for p in res if br[p].kind == 'nonlinear_resistor']
@@ -389,11 +392,9 @@ class NodalAnalysis:
     # branch quantities
 
     def _tree_voltage(self, p):
-        b = self._branches[p]
         return self._voltage[p] if p in self._voltage else self._known(p, 'u')
 
     def _chord_current(self, p):
-        b = self._branches[p]
         return self._current[p] if p in self._current else self._known(p, 'i')
 
     def _repr_(self):
