@@ -1123,6 +1123,12 @@ class RouthFunction(Lagrangian):
         Traceback (most recent call last):
         ...
         ModelError: cyclic: y is not cyclic: a constraint depends on it
+
+    Constraints between the positional coordinates are kept::
+
+        sage: z, dz = var('z dz')
+        sage: RouthFunction(Lagrangian((dx^2 + dy^2 + dz^2)/2, [x, y, z], constraints=[x - y]), [z])
+        Routh function in coordinates (x, y) with cyclic momenta (p_z) : 1/2*dx^2 + 1/2*dy^2 - 1/2*p_z^2, subject to x - y == 0
         sage: RouthFunction(Lagrangian((dx^2 + dy^2)/2, [x, y]), [var('z')])
         Traceback (most recent call last):
         ...
@@ -1208,7 +1214,7 @@ class RouthFunction(Lagrangian):
         coords = ", ".join(map(str, self.coordinates()))
         momenta = ", ".join(map(str, self._momenta))
         return (f"Routh function in coordinates ({coords}) with cyclic momenta "
-                f"({momenta}) : {self.expr()}")
+                f"({momenta}) : {self.expr()}{self._subject_to()}")
 
     def _content(self):
         return ('RouthFunction', self._lagrangian, tuple(self._cyclic), tuple(self._momenta))
