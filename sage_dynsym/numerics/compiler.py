@@ -41,11 +41,12 @@ import numpy as np
 
 from sage.misc.verbose import verbose
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, ModelError
 from ..symbols import t as _t
 from .expressions import identifier, write_code
 
 _LIBRARIES = {}
+_PRIVATE = None
 
 _SOLVE_C = r"""
 /* Gaussian elimination with partial pivoting; the solution overwrites b. */
@@ -269,9 +270,18 @@ def cache_directory():
         sage: 'sage_dynsym' in cache_directory() or 'SAGE_DYNSYM_CACHE' in os.environ
         True
     """
+    global _PRIVATE
     path = os.environ.get('SAGE_DYNSYM_CACHE') or os.path.join(
         tempfile.gettempdir(), f'sage_dynsym-{os.getuid() if hasattr(os, "getuid") else 0}')
     os.makedirs(path, mode=0o700, exist_ok=True)
+    if hasattr(os, 'getuid'):
+        # libraries are loaded from here: a directory that someone else owns
+        # or may write to is not trusted (a private one is used instead)
+        info = os.stat(path)
+        if info.st_uid != os.getuid() or info.st_mode & 0o022:
+            if _PRIVATE is None:
+                _PRIVATE = tempfile.mkdtemp(prefix='sage_dynsym-')
+            return _PRIVATE
     return path
 
 
@@ -330,6 +340,13 @@ class Kernel:
         sage: K = compile_kernel(NumericalForm(FirstOrderEquations([y, -x], [x, y])))
         sage: K(0.0, [1.0, 2.0], []), K.backend() in ('c', 'python')
         (array([ 2., -1.]), True)
+
+    TESTS::
+
+        sage: K(0.0, [1.0], [])
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must have 2 entries, got shape (1,)
     """
 
     def __init__(self, form, backend, function):
@@ -356,14 +373,16 @@ class Kernel:
         return self._backend
 
     def __call__(self, t, x, p):
+        x = np.ascontiguousarray(x, dtype=float)
+        if x.shape != (self._size,):
+            raise ModelError(f"the state must have {self._size} entries, got shape {x.shape}",
+                             entry="numerical_rhs")
         if self._backend == 'c':
-            x = np.ascontiguousarray(x, dtype=float)
             p = np.ascontiguousarray(p, dtype=float)
             out = np.empty(self._size)
             if self._function(t, x.ctypes.data, p.ctypes.data, out.ctypes.data):
                 self._singular(t, x)
             return out
-        x = np.asarray(x, dtype=float)
         b, A = self._function(float(t), x.tolist(), [float(v) for v in p])
         if not self._solve:
             return np.array(b, dtype=float)
