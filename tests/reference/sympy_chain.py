@@ -22,7 +22,9 @@ written with ``**`` over the names in ``coordinates`` and ``parameters``
 
 Convention of the equations: ``E_i = d/dt dL/d(dq_i) - dL/dq_i`` with
 ``L = T - V`` and ``V = -sum m_k g . r_{C_k}`` (SymPy's ``LagrangesMethod``
-returns exactly this ``eom`` when there are no forces or constraints).
+returns exactly this ``eom`` when there are no forces or constraints;
+``KanesMethod``, with the generalized speeds ``u_i = dq_i``, returns
+``fr + frstar = -E_i``).
 """
 from fractions import Fraction
 
@@ -123,6 +125,7 @@ class SympyChain:
             centers.append(Ck)
         self.frames, self.joints, self.mass_centers, self.bodies = frames, joints, centers, rigid
         g = _vector(N, [parse(x) for x in gravity])
+        self.gravity = g
         self.kinetic_energy = sum((b.kinetic_energy(N) for b in rigid), sympy.S.Zero)
         self.potential_energy = -sum((b.mass * g.dot(C.pos_from(O))
                                       for b, C in zip(rigid, centers)), sympy.S.Zero)
@@ -142,9 +145,33 @@ class SympyChain:
         return rule
 
     def to_plain(self, expr):
-        """``expr`` with q(t) and its derivatives replaced by plain symbols."""
+        """``expr`` with q(t) and its derivatives replaced by plain symbols
+        (and the generalized speeds of :meth:`kane_equations` by ``dq``,
+        their derivatives by ``ddq``)."""
         # xreplace matches whole subtrees first, so q''(t) is replaced before q(t).
-        return sympy.sympify(expr).xreplace(self.plain_symbols())
+        rule = self.plain_symbols()
+        for q, u in zip(self.coordinates, self.speeds()):
+            rule[u.diff(T)] = rule[q.diff(T, 2)]
+            rule[u] = rule[q.diff(T)]
+        return sympy.sympify(expr).xreplace(rule)
+
+    def speeds(self):
+        """The generalized speeds ``u_q(t)`` of :meth:`kane_equations`, ``u_q = q'``."""
+        return [me.dynamicsymbols('u_' + q.func.__name__) for q in self.coordinates]
+
+    def kane_equations(self, plain=True):
+        """
+        ``fr + frstar`` of ``KanesMethod`` with the generalized speeds
+        ``u_q = q'`` and the weights ``m_k g`` at the mass centres: minus the
+        Lagrange equations; in plain symbols unless ``plain=False``.
+        """
+        u = self.speeds()
+        KM = me.KanesMethod(self.inertial_frame, q_ind=self.coordinates, u_ind=u,
+                            kd_eqs=[q.diff(T) - s for q, s in zip(self.coordinates, u)])
+        loads = [(C, b.mass * self.gravity) for b, C in zip(self.bodies, self.mass_centers)]
+        fr, frstar = KM.kanes_equations(self.bodies, loads)
+        eom = list(fr + frstar)
+        return [self.to_plain(e) for e in eom] if plain else eom
 
     def lagrange_equations(self, plain=True):
         """
