@@ -56,6 +56,35 @@ class Trajectory(SageObject):
         self._energy = None if energy is None else SR(energy)
         self._method = method
 
+    def __eq__(self, other):
+        r"""
+        Trajectories are values: equal when they have the same samples,
+        variables, parameters and energy.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: T = Trajectory([0, 1], [[1], [2]], [x], {}, energy=x^2)
+            sage: T == Trajectory([0, 1], [[1], [2]], [x], {}, energy=x^2), T == 1
+            (True, False)
+            sage: TestSuite(T).run()
+        """
+        return (isinstance(other, Trajectory) and
+                np.array_equal(self._times, other._times) and
+                np.array_equal(self._states, other._states) and
+                [str(v) for v in self._variables] == [str(v) for v in other._variables] and
+                {str(k): v for k, v in self._parameters.items()} ==
+                {str(k): v for k, v in other._parameters.items()} and
+                str(self._energy) == str(other._energy))
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash((tuple(str(v) for v in self._variables), self._times.tobytes(),
+                     self._states.tobytes()))
+
     def _repr_(self):
         return (f"Trajectory in ({', '.join(map(str, self._variables))}): "
                 f"{len(self._times)} samples, t from {self._times[0]} to {self._times[-1]}")
