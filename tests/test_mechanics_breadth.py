@@ -546,3 +546,20 @@ def test_velocity_dependent_load_is_a_drag():
                           dissipation=c * sum(u ** 2 for u in tip_velocity) / 2)
     for e1, e2 in zip(S1.equations(), S2.equations()):
         assert bool((e1 - e2).expand().simplify_trig() == 0)
+
+
+def test_loads_round_trip(tmp_path):
+    th, phi, l, F, M = [SR.var(n) for n in 'theta phi l F M'.split()]
+    arm = RigidBody('arm', rotations=[(3, phi)], mass=1, mass_center=[l, 0, 0])
+    rod = RigidBody('rod', parent='arm', joint=[l, 0, 0], rotations=[(1, th)],
+                    mass_center=[0, 0, -l / 2], mass=1)
+    S = MechanicalSystem([arm, rod], [phi, th], parameters=[l, F, M], name='loaded',
+                         loads=[Load('rod', point=[0, 0, -l], force=[F, 0, 0], axes='arm'),
+                                Load(1, torque=[0, 0, M])])
+    assert [load.body() for load in S.loads()] == ['rod', 'arm']
+    path = tmp_path / "loaded.yaml"
+    save(S, str(path))
+    S2, results = load(str(path), results=True)
+    assert S2.to_dict()['loads'] == S.to_dict()['loads']
+    assert S2.generalized_forces() == S.generalized_forces()
+    assert results['lagrange_equations'] == S.lagrangian().lagrange_equations()
