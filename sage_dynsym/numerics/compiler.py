@@ -46,6 +46,8 @@ from ..symbols import t as _t
 from .expressions import identifier, write_code
 
 _LIBRARIES = {}
+#: sources longer than this (characters) are compiled without optimization
+_OPTIMIZE_BELOW = 50000
 _PRIVATE = None
 
 _SOLVE_C = r"""
@@ -431,7 +433,9 @@ def compile_kernel(form, backend='auto'):
     if backend in ('auto', 'c'):
         source = c_source(form)
         try:
-            library = compile_c(source)
+            # optimizing a very long straight-line function costs the compiler
+            # seconds and gains little against the cost of the call itself
+            library = compile_c(source, ('-O2',) if len(source) < _OPTIMIZE_BELOW else ('-O0',))
         except (AnalysisError, OSError) as error:
             if backend == 'c':
                 raise
