@@ -6,7 +6,9 @@ A :class:`Circuit` is an immutable graph of elementary branches (see
 orientation convention). A linear circuit gives Lagrangians by the
 loop-current and node-potential methods (:mod:`~sage_dynsym.circuits.linear`);
 a complete, possibly nonlinear circuit gives the Brayton--Moser mixed
-potential and the state equations (:mod:`~sage_dynsym.circuits.mixed_potential`).
+potential and the state equations (:mod:`~sage_dynsym.circuits.mixed_potential`);
+any other circuit with a unique solution gets its state equations by
+modified nodal analysis (:mod:`~sage_dynsym.circuits.nodal`).
 
 EXAMPLES:
 
@@ -752,9 +754,10 @@ class Circuit(Model):
         from sage.matrix.special import block_diagonal_matrix
         from sage.matrix.constructor import matrix
         from sage.symbolic.ring import SR
-        return block_diagonal_matrix([form.inductance_matrix(),
-                                      matrix.diagonal(SR, form.capacitances())],
-                                     subdivide=False)
+        B = block_diagonal_matrix([form.inductance_matrix(),
+                                   matrix.diagonal(SR, form.capacitances())], subdivide=False)
+        B.set_immutable()
+        return B
 
     def to_linearizer(self):
         r"""

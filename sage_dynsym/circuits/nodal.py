@@ -118,6 +118,7 @@ REFERENCES:
   network analysis*, IEEE Trans. Circuits Syst. 22 (1975) 504--509.
 """
 from sage.matrix.constructor import matrix
+from sage.misc.cachefunc import cached_method
 from sage.matrix.special import block_diagonal_matrix
 from sage.rings.rational_field import QQ
 from sage.rings.real_double import RDF
@@ -509,6 +510,15 @@ class NodalAnalysis:
                         Q[index[k], scol[q]] -= s
         return P.transpose() * Cd * P, P.transpose() * Cd * Q, sources
 
+    @cached_method
+    def _lhs(self):
+        BL = self._inductor_blocks()[0]
+        BC = self._capacitor_blocks()[0]
+        B = block_diagonal_matrix([BL, BC], subdivide=False).apply_map(
+            lambda e: SR(e).expand())
+        B.set_immutable()
+        return B
+
     def lhs_matrix(self):
         r"""
         The matrix `B` of `B\dot x = F(x)`: the effective inductance matrix
@@ -525,10 +535,7 @@ class NodalAnalysis:
             sage: C.nodal_analysis().lhs_matrix()
             [L1 + L2 + 2*M]
         """
-        BL = self._inductor_blocks()[0]
-        BC = self._capacitor_blocks()[0]
-        return block_diagonal_matrix([BL, BC], subdivide=False).apply_map(
-            lambda e: SR(e).expand())
+        return self._lhs()
 
     def state_equations(self):
         r"""
@@ -550,6 +557,10 @@ class NodalAnalysis:
             sage: A.state_equations(), A.lhs_matrix()
             ([-C1*E0*w*cos(t*w) - u1/R1], [C1 + C2])
         """
+        return list(self._rhs())
+
+    @cached_method
+    def _rhs(self):
         br = self._branches
         _, LQ, isources = self._inductor_blocks()
         _, CQ, esources = self._capacitor_blocks()
