@@ -92,6 +92,8 @@ def test_load_errors_python():
     with pytest.raises(ModelError, match=r"loads\[0\]\.point: the point of application cannot depend on dx"):
         MechanicalSystem([body], [x], loads=[{'body': 'b', 'point': [SR.var('dx'), 0, 0],
                                               'force': [1, 0, 0]}])
+    with pytest.raises(ModelError, match=r"loads\[0\]\.force: the force cannot depend on ddx"):
+        MechanicalSystem([body], [x], loads=[{'body': 'b', 'force': [SR.var('ddx'), 0, 0]}])
     with pytest.raises(ModelError, match=r"loads\[0\]: expected a Load"):
         MechanicalSystem([body], [x], loads=[3])
 

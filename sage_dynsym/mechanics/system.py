@@ -613,11 +613,14 @@ class MechanicalSystem(Model):
             names[key] = ref
         load = Load(names['body'], point=load.point(), force=load.force(),
                     torque=load.torque(), axes=names['axes'])
-        for c in load.point():
-            for v in SR(c).variables():
-                if v in self._velocities or v in self._accelerations():
-                    raise ModelError(f"the point of application cannot depend on {v}",
-                                     entry=f"{entry}.point")
+        accelerations = self._accelerations()
+        for field in ('point', 'force', 'torque'):
+            for c in getattr(load, field)() or ():
+                for v in SR(c).variables():
+                    if v in accelerations or (field == 'point' and v in self._velocities):
+                        what = 'point of application' if field == 'point' else field
+                        raise ModelError(f"the {what} cannot depend on {v}",
+                                         entry=f"{entry}.{field}")
         if self._parameters is not None:
             declared = set(self._coordinates) | set(self._velocities) | set(self._parameters) | {t}
             names = ", ".join(sorted(map(str, set(self._parameters) | {t})))
