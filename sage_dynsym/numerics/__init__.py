@@ -8,6 +8,7 @@ EXAMPLES::
     sage: from sage_dynsym.numerics import NumericalMethods, numerical_rhs, simulate, Trajectory
 """
 from .codegen import generate_code, GeneratedCode
+from .energy import quadratic_energy
 from .form import NumericalForm
 from .methods import NumericalMethods
 from .rhs import numerical_rhs, RightHandSide
@@ -15,4 +16,4 @@ from .simulate import simulate
 from .trajectory import Trajectory
 
 __all__ = ['NumericalMethods', 'NumericalForm', 'numerical_rhs', 'RightHandSide', 'simulate',
-           'Trajectory', 'generate_code', 'GeneratedCode']
+           'Trajectory', 'generate_code', 'GeneratedCode', 'quadratic_energy']
