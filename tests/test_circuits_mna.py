@@ -428,3 +428,17 @@ def test_ramp_sources_drive_loops_and_cut_sets_through_their_derivatives(seed):
         point.update({x: v for (x, _), v in zip(states, x0 + time * x1)})
         F = np.array([float(SR(f).subs(point)) for f in C.state_equations()])
         assert np.allclose(B @ x1 if len(states) else F, F, rtol=1e-8, atol=1e-8), (ramped, time)
+
+
+def test_positive_key_of_circuit_descriptions():
+    from sage_dynsym.circuits import circuit_from_dict
+    data = {'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1'],
+            {'from': 2, 'to': 1, 'kind': 'resistor', 'name': 'R1', 'value': 'R0/2'}],
+            'parameters': ['R0'], 'positive': ['R0', 'C1']}
+    C = circuit_from_dict(data)
+    assert C.positive_parameters() == [SR.var('R0'), SR.var('C1')]
+    assert C.to_dict()['positive'] == ['R0', 'C1'] and circuit_from_dict(C.to_dict()) == C
+    assert C.subs({'R0': 4}).positive_parameters() == [SR.var('C1')]
+    for bad in (['R9'], ['f1'], 'R0'):
+        with pytest.raises(Exception, match="positive"):
+            circuit_from_dict(dict(data, positive=bad), source='c.yaml')
