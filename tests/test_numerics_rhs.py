@@ -105,3 +105,36 @@ def test_compiled_and_python_backends_report_singular_matrices():
     for b in ['python'] + (['c'] if compiler() else []):
         with pytest.raises(AnalysisError, match='singular'):
             numerical_rhs(E, {}, backend=b)(0, [0.0, 1.0])
+
+
+@pytest.mark.parametrize("example", ['coupled_inductors.yaml', 'nonlinear_circuit.yaml',
+                                     'heavy_top_e3.yaml'])
+def test_first_order_rhs_solves_the_lhs_matrix(example):
+    """x' = B^{-1} F(x) for circuits (mutual inductance: B not diagonal;
+    nonlinear resistors defined through values) and a Lie-Poisson system,
+    with B and F evaluated in 150 bits and solved there."""
+    from sage.all import function
+    from sage_dynsym import load
+    from sage_dynsym.description import example_path
+    record = load(example_path(example)).to_linearizer()
+    x = record.variables()
+    rng = random.Random(len(example))
+    params = sorted({str(v) for e in record.rhs() + record.lhs_matrix().list()
+                     for v in SR(e).variables()} - {str(v) for v in x})
+    values = {p: rng.uniform(0.5, 2) for p in params}
+    # the nonlinear resistors' characteristics i = a u^3 - u (a = 0.3)
+    characteristics = {f'f{k}': (lambda u: 3 * u ** 3 / 10 - u) for k in range(1, 5)}
+    f = numerical_rhs(record, dict(values, **characteristics))
+    for _ in range(3):
+        state = [rng.uniform(-2, 2) for _ in x]
+        at = {SR.var(k): R(v) for k, v in values.items()}
+        at.update({v: R(s) for v, s in zip(x, state)})
+        F = [SR(e) for e in record.rhs()]
+        for k in range(1, 5):
+            F = [e.substitute_function(function(f'f{k}'), characteristics[f'f{k}'](SR.var('w'))
+                                       .function(SR.var('w'))) for e in F]
+        B = matrix(R, [[R(SR(e).subs(at)) for e in row] for row in record.lhs_matrix().rows()])
+        expected = B.solve_right(vector(R, [R(e.subs(at)) for e in F]))
+        got = f(0.0, state)
+        scale = max(1.0, max(abs(float(v)) for v in expected))
+        assert max(abs(float(e) - g) for e, g in zip(expected, got)) / scale < 1e-12
