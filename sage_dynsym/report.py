@@ -252,14 +252,17 @@ def lagrangian_estimate(system):
         depth.append(depth[system.parent_index(k)] + turning)
         data += [body.mass()] + body.inertia().list() + list(body.joint())
         data += list(body.velocity() or ()) + list(body.mass_center())
-    field = system.force_field()
-    if isinstance(field, UniformGravity):
-        data += list(field.acceleration())
-    elif isinstance(field, NewtonianField):
-        nu, r, e = field.parameters()
-        data += [nu, r] + list(e)
-    elif field is not None:
-        data.append(field)
+    for field in system.force_terms():
+        if isinstance(field, UniformGravity):
+            data += list(field.acceleration())
+        elif isinstance(field, NewtonianField):
+            nu, r, e = field.parameters()
+            data += [nu, r] + list(e)
+        else:
+            data.append(field)
+    for load in system.loads():
+        data += load.expressions()
+    data += system.constraints()
     largest = max([polynomial_terms(e) for e in data] + [1])
     n = len(system.coordinates())
     return min(n ** 2 * 2 ** max(depth) * largest ** 2, _TERMS_CAP)
