@@ -10,7 +10,7 @@ import pathlib
 import pytest
 import yaml
 
-from sage.all import SR, function, var
+from sage.all import SR, function, identity_matrix, jacobian, var
 from sage_dynsym.circuits import Circuit, circuit_from_dict, circuit_to_dict
 from sage_dynsym.errors import CircuitError, DescriptionError
 
@@ -127,7 +127,7 @@ def test_not_complete_capacitor_voltage_source_loop():
     C = Circuit([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1'], [1, 3, 'L1'], [2, 3, 'R1']])
     with pytest.raises(CircuitError, match="not complete: the capacitors and voltage "
                                            "sources .* form a loop"):
-        C.state_equations()
+        C.brayton_moser()
 
 
 def test_not_complete_inductor_current_source_cut_set():
@@ -148,10 +148,17 @@ def test_resistor_network_without_split():
     # R1, R2 divide the capacitor voltage: neither voltage- nor current-determined
     C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'R2'], [2, 1, 'C1']])
     with pytest.raises(CircuitError, match="no Brayton-Moser split: the resistors"):
-        C.state_equations()
+        C.brayton_moser()
     # ... but the linear methods still apply
     assert len(C.lagrangian(method="loop").coordinates()) == 2
     assert len(C.lagrangian(method="node").coordinates()) == 2
+    # and the state equations come from nodal analysis: a parallel RLC with
+    # R = R1 + R2, characteristic polynomial s^2 + s/(R C) + 1/(L C)
+    B, x = C.lhs_matrix(), [v for v, _ in C.state_variables()]
+    A = jacobian(C.state_equations(), x)
+    s, R1, R2, L1, C1 = var('s R1 R2 L1 C1')
+    p = (s * identity_matrix(2) - B.inverse() * A).det()
+    assert (p - (s**2 + s / ((R1 + R2) * C1) + 1 / (L1 * C1))).simplify_full() == 0
 
 
 def test_linear_methods_reject_source_loops_and_cut_sets():
