@@ -36,6 +36,7 @@ import os
 import shutil
 import subprocess
 import tempfile
+import threading
 
 import numpy as np
 
@@ -46,6 +47,8 @@ from ..symbols import t as _t
 from .expressions import identifier, write_code
 
 _LIBRARIES = {}
+_PROTOTYPE = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p,
+                              ctypes.c_void_p)
 #: sources longer than this (characters) are compiled without optimization
 _OPTIMIZE_BELOW = 50000
 _PRIVATE = None
@@ -360,8 +363,9 @@ class Kernel:
         self._lead = self._size // 2 if form.order() == 2 else 0
         self._n_params = len(form.parameters())
         if backend == 'c':
-            function.argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 3
-            function.restype = ctypes.c_int
+            # a prototype called with plain addresses: the cheapest ctypes call
+            self._function = _PROTOTYPE(ctypes.cast(function, ctypes.c_void_p).value)
+            self._library = function    # keeps the library loaded
 
     def __repr__(self):
         return (f"{'C' if self._backend == 'c' else 'Python'} kernel: {self._size} states, "
@@ -373,6 +377,46 @@ class Kernel:
         EXAMPLES: see the class documentation.
         """
         return self._backend
+
+    def bind(self, p):
+        r"""
+        A function ``f(t, x)`` with the parameter values ``p`` fixed. For C,
+        the state is copied into a buffer allocated once (calls from
+        several threads take turns).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: from sage_dynsym.numerics.compiler import compile_kernel
+            sage: x, w = var('x w')
+            sage: f = compile_kernel(NumericalForm(FirstOrderEquations([-w*x], [x]))).bind([2.0])
+            sage: f(0.0, [3.0])
+            array([-6.])
+            sage: f(0.0, [3.0, 1.0])
+            Traceback (most recent call last):
+            ...
+            ModelError: numerical_rhs: the state must have 1 entries, got 2
+        """
+        p = np.array(p, dtype=float)
+        if self._backend != 'c':
+            return lambda t, x: self(t, x, p)
+        size, call, singular = self._size, self._function, self._singular
+        state, out = np.empty(size), np.empty(size)
+        x_address, p_address, out_address = state.ctypes.data, p.ctypes.data, out.ctypes.data
+        lock = threading.Lock()
+
+        def rhs(t, x):
+            if len(x) != size:
+                raise ModelError(f"the state must have {size} entries, got {len(x)}",
+                                 entry="numerical_rhs")
+            with lock:
+                state[:] = x
+                if call(float(t), x_address, p_address, out_address):
+                    singular(t, state)
+                return out.copy()
+        rhs.buffers = (p, state, out)
+        return rhs
 
     def __call__(self, t, x, p):
         x = np.ascontiguousarray(x, dtype=float)

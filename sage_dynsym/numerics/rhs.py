@@ -110,13 +110,14 @@ class RightHandSide(SageObject):
         self._form = form
         self._p = parameter_values(form, values)
         self._kernel = form.kernel(backend)
+        self._call = self._kernel.bind(self._p)
 
     def _repr_(self):
         return (f"Numerical right-hand side x' = f(t, x) in "
                 f"({', '.join(map(str, self._form.state()))})")
 
     def __call__(self, t, x):
-        return self._kernel(t, x, self._p)
+        return self._call(t, x)
 
     def variables(self):
         r"""The state variables, in the order of ``x``.
