@@ -431,8 +431,11 @@ def _linear_circuit_stability(circuit, L, lines, out):
     from .analysis import linearize, lienard_chipart_conditions
     sources = {SR.var(b.name): 0 for b in circuit.branches()
                if b.kind in ('voltage_source', 'current_source')}
-    values = sorted({v for b in circuit.branches() if b.value is not None
-                     for v in SR(b.value).variables()} - set(sources), key=str)
+    # declared signs, else the symbols of the element values (physical
+    # resistances, inductances and capacitances; mutual inductances have no sign)
+    values = circuit.positive_parameters() or sorted(
+        {v for b in circuit.branches() if b.value is not None
+         for v in SR(b.value).variables()} - set(sources), key=str)
     lam = SR.var('lambda_')
     free = L.subs(sources) if sources else L
     out.check("the characteristic polynomial (permanent bound of the determinant)",
@@ -553,42 +556,60 @@ def _constraint_forces(L, lines, out):
         _formula(lines, f"{mu} = ", solved[mu])
 
 
+def _lhs_row(B, i, x):
+    # row i of B x', e.g. "C1 du2/dt" or "(C1 + C2) du2/dt + M di3/dt"
+    terms = []
+    for b, v in zip(B.row(i), x):
+        if b.is_zero():
+            continue
+        b = SR(b)
+        factor = "" if b == 1 else (f"{b} " if b.is_symbol() or b.is_numeric() else f"({b}) ")
+        terms.append(f"{factor}d{v}/dt")
+    return " + ".join(terms)
+
+
 def _circuit(circuit, out):
     from .errors import CircuitError
     out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
                      f"branches on {len(circuit.nodes())} nodes) ==")
     estimate = circuit_estimate(circuit)
     if out.want('mixed_potential', 'state_equations', 'lyapunov'):
-        def brayton_moser(lines):
-            out.check("the Brayton-Moser form (branches times the squared terms of the "
+        def state_equations(lines):
+            out.check("the state equations (branches times the squared terms of the "
                       "largest element value)", estimate)
             try:
                 return circuit.state_equations()
             except CircuitError as err:
-                lines.append(f"No Brayton-Moser form: {err}")
+                lines.append(f"No state equations: {err}")
                 return None
-        equations = out.run("Brayton-Moser form", brayton_moser)
-        if equations is not None:
-            if out.want('mixed_potential'):
-                def potential(lines):
-                    lines.append("Mixed potential P(i, u):")
-                    _formula(lines, "P = ", circuit.mixed_potential())
-                out.run("Mixed potential", potential)
-            if out.want('state_equations'):
-                def state(lines):
-                    lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du):")
-                    for (v, element), e in zip(circuit.state_variables(), equations):
-                        _formula(lines, f"[{element} d{v}/dt] ", e)
-                out.run("State equations", state)
-            if out.want('lyapunov'):
-                def lyapunov(lines):
-                    # dP/dt = sum of (dP/dx_k) dx_k/dt: each state equation squared
-                    out.check("dP/dt (the squares of the state equations)",
-                              sum(polynomial_terms(e) ** 2 for e in equations))
-                    lines.append("Time derivative of P along the state equations "
-                                 "(Lyapunov analogue):")
-                    _formula(lines, "dP/dt = ", circuit.brayton_moser().time_derivative())
-                out.run("dP/dt", lyapunov)
+        equations = out.run("State equations", state_equations)
+        # the mixed potential exists for complete circuits only; the others
+        # get their state equations from nodal analysis
+        split = equations is not None and circuit.has_mixed_potential()
+        if split and out.want('mixed_potential'):
+            def potential(lines):
+                lines.append("Mixed potential P(i, u):")
+                _formula(lines, "P = ", circuit.mixed_potential())
+            out.run("Mixed potential", potential)
+        if equations is not None and out.want('state_equations'):
+            def state(lines):
+                B = circuit.lhs_matrix()
+                x = [v for v, _ in circuit.state_variables()]
+                lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du)" if split
+                             else "State equations (nodal analysis; capacitor loops and "
+                                  "inductor cut-sets reduce the state):")
+                for i, e in enumerate(equations):
+                    _formula(lines, f"[{_lhs_row(B, i, x)}] ", e)
+            out.run("State equations", state)
+        if split and out.want('lyapunov'):
+            def lyapunov(lines):
+                # dP/dt = sum of (dP/dx_k) dx_k/dt: each state equation squared
+                out.check("dP/dt (the squares of the state equations)",
+                          sum(polynomial_terms(e) ** 2 for e in equations))
+                lines.append("Time derivative of P along the state equations "
+                             "(Lyapunov analogue):")
+                _formula(lines, "dP/dt = ", circuit.brayton_moser().time_derivative())
+            out.run("dP/dt", lyapunov)
     if not out.want('lagrangian', 'equations', 'stability'):
         return
 
