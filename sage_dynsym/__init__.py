@@ -37,9 +37,10 @@ from .dynamics.hamiltonian import Hamiltonian
 from .dynamics.dirac import DiracConstraints
 from .mechanics.rigid_body import RigidBody
 from .mechanics.force_functions import UniformGravity, NewtonianField
+from .mechanics.loads import Load
 from .mechanics.system import MechanicalSystem
 from .description import load, save
-from .circuits import Circuit
+from .circuits import Circuit, NodalAnalysis
 from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLyapunov,
                        linearize, LinearSystem, hurwitz_matrix, hurwitz_determinants,
                        hurwitz_conditions, lienard_chipart_conditions,
