@@ -280,3 +280,39 @@ def test_lossless_lc_circuit_keeps_its_energy():
     T = simulate(single, {'L1': 0.5, 'C1': 0.2}, {v: (1.0 if v == u else 0.0) for v in names},
                  5, points=51)
     assert np.allclose(T.values(u), np.cos(T.times() / math.sqrt(0.5 * 0.2)), rtol=0, atol=1e-8)
+
+
+def test_explicit_time_forced_oscillator():
+    # x'' + x = cos(2 t) from rest: x = (cos t - cos 2t)/3 by hand
+    from sage.all import cos
+    from sage_dynsym.symbols import t
+    x, dx, ddx = var('x dx ddx')
+    E = SecondOrderEquations([ddx + x - cos(2 * t)], [x], [dx], [ddx])
+    for backend in ('python', 'c'):
+        T = simulate(E, {}, {x: 0, dx: 0}, 6, points=31, backend=backend)
+        want = (np.cos(T.times()) - np.cos(2 * T.times())) / 3
+        assert np.allclose(T.values(x), want, rtol=0, atol=1e-9)
+
+
+def test_rheonomic_constraint_bead_on_rotating_rod():
+    """A bead on a rod turning at the rate w in a plane without gravity:
+    r'' = w^2 r, so r = r0 cosh(w t) from rest on the rod (by hand). The
+    constraint -x sin(wt) + y cos(wt) = 0 depends on time (its J_t and f_tt
+    enter gamma, f_t the velocity projection)."""
+    from sage.all import sin, cos
+    from sage_dynsym.symbols import t
+    x, y, dx, dy, ddx, ddy, mu, w = var('x y dx dy ddx ddy mu w')
+    f = -x * sin(w * t) + y * cos(w * t)
+    E = [ddx - mu * f.diff(x), ddy - mu * f.diff(y)]
+    try:
+        record = SecondOrderEquations(E, [x, y], [dx, dy], [ddx, ddy], constraints=[f],
+                                      multipliers=[mu])
+    except TypeError:
+        record = ConstrainedEquations(E, [x, y], [dx, dy], [ddx, ddy], [f], [mu])
+    W, r0 = 0.7, 0.5
+    # at t = 0 the rod is the x axis; the bead turns with it: dy = w r0
+    T = simulate(record, {w: W}, {x: r0, y: 0, dx: 0, dy: W * r0}, 3, points=31)
+    r = np.hypot(T.values(x), T.values(y))
+    assert np.allclose(r, r0 * np.cosh(W * T.times()), rtol=1e-9, atol=0)
+    angle = np.unwrap(np.arctan2(T.values(y), T.values(x)))
+    assert np.allclose(angle, W * T.times(), rtol=0, atol=1e-10)
