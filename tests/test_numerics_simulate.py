@@ -143,30 +143,13 @@ def test_rlc_with_lhs_matrix_and_stiff_method():
         T.energy_drift()
 
 
-class ConstrainedEquations(SecondOrderEquations):
-    """A record with holonomic constraints (until SecondOrderEquations takes them)."""
-
-    def __init__(self, equations, q, dq, ddq, constraints, multipliers):
-        super().__init__(equations, q, dq, ddq)
-        self._c, self._mu = list(constraints), list(multipliers)
-
-    def constraints(self):
-        return self._c
-
-    def multipliers(self):
-        return self._mu
-
-
 def cartesian_pendulum():
     x, y, dx, dy, ddx, ddy, mu, m, g, l = var('x y dx dy ddx ddy mu m g l')
     f = x ** 2 + y ** 2 - l ** 2
     # E_i = m ddq_i + dV/dq_i - mu df/dq_i, V = m g y
     E = [m * ddx - mu * f.diff(x), m * ddy + m * g - mu * f.diff(y)]
-    try:
-        record = SecondOrderEquations(E, [x, y], [dx, dy], [ddx, ddy], constraints=[f],
-                                      multipliers=[mu])
-    except TypeError:
-        record = ConstrainedEquations(E, [x, y], [dx, dy], [ddx, ddy], [f], [mu])
+    record = SecondOrderEquations(E, [x, y], [dx, dy], [ddx, ddy], constraints=[f],
+                                  multipliers=[mu])
     return record, (x, y, dx, dy, m, g, l)
 
 
@@ -304,11 +287,8 @@ def test_rheonomic_constraint_bead_on_rotating_rod():
     x, y, dx, dy, ddx, ddy, mu, w = var('x y dx dy ddx ddy mu w')
     f = -x * sin(w * t) + y * cos(w * t)
     E = [ddx - mu * f.diff(x), ddy - mu * f.diff(y)]
-    try:
-        record = SecondOrderEquations(E, [x, y], [dx, dy], [ddx, ddy], constraints=[f],
-                                      multipliers=[mu])
-    except TypeError:
-        record = ConstrainedEquations(E, [x, y], [dx, dy], [ddx, ddy], [f], [mu])
+    record = SecondOrderEquations(E, [x, y], [dx, dy], [ddx, ddy], constraints=[f],
+                                  multipliers=[mu])
     W, r0 = 0.7, 0.5
     # at t = 0 the rod is the x axis; the bead turns with it: dy = w r0
     T = simulate(record, {w: W}, {x: r0, y: 0, dx: 0, dy: W * r0}, 3, points=31)

@@ -41,11 +41,6 @@ from ..errors import AnalysisError, ModelError
 from ..symbols import t as _t
 
 
-def _optional(record, name):
-    method = getattr(record, name, None)
-    return [SR(e) for e in (method() if method is not None else None) or ()]
-
-
 class NumericalForm:
     r"""
     The blocks `A y = b` of a record's equations (see the module
@@ -100,8 +95,7 @@ class NumericalForm:
     def _second_order(self, record):
         self._order = 2
         q, dq, ddq = record.coordinates(), record.velocities(), record.accelerations()
-        mu = _optional(record, 'multipliers')
-        f = _optional(record, 'constraints')
+        mu, f = record.multipliers(), record.constraints()
         E = record.equations()
         M = matrix(SR, [[e.diff(a) for a in ddq] for e in E]) if E else matrix(SR, 0, 0)
         if any(entry.has(a) for entry in M.list() for a in ddq + mu):

@@ -184,10 +184,8 @@ def numerical_rhs(equations, values, backend='auto'):
         sage: from sage_dynsym.analysis.motion import SecondOrderEquations
         sage: from sage_dynsym.numerics.rhs import numerical_rhs
         sage: x, y, dx, dy, ddx, ddy, mu, g = var('x y dx dy ddx ddy mu g')
-        sage: class Pendulum(SecondOrderEquations):
-        ....:     def constraints(self): return [x^2 + y^2 - 1]
-        ....:     def multipliers(self): return [mu]
-        sage: E = Pendulum([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy])
+        sage: E = SecondOrderEquations([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          constraints=[x^2 + y^2 - 1], multipliers=[mu])
         sage: numerical_rhs(E, {g: 1})(0, [1.0, 0.0, 0.0, 1.0])    # centripetal
         array([ 0.,  1., -1., -1.])
 

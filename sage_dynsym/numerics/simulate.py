@@ -182,10 +182,8 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         sage: from sage_dynsym.analysis.motion import SecondOrderEquations
         sage: from sage_dynsym.numerics.simulate import simulate
         sage: x, y, dx, dy, ddx, ddy, mu, g = var('x y dx dy ddx ddy mu g')
-        sage: class Pendulum(SecondOrderEquations):
-        ....:     def constraints(self): return [x^2 + y^2 - 1]
-        ....:     def multipliers(self): return [mu]
-        sage: E = Pendulum([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy])
+        sage: E = SecondOrderEquations([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          constraints=[x^2 + y^2 - 1], multipliers=[mu])
         sage: T = simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 10, energy=(dx^2 + dy^2)/2 + g*y)
         sage: max(abs(r) for r in T.values(x^2 + y^2 - 1)) < 1e-12, T.energy_drift() < 1e-8
         (True, True)
