@@ -296,3 +296,17 @@ def test_rheonomic_constraint_bead_on_rotating_rod():
     assert np.allclose(r, r0 * np.cosh(W * T.times()), rtol=1e-9, atol=0)
     angle = np.unwrap(np.arctan2(T.values(y), T.values(x)))
     assert np.allclose(angle, W * T.times(), rtol=0, atol=1e-10)
+
+
+def test_constrained_lagrangian_end_to_end():
+    """Lagrangian(..., constraints=...) -> record -> simulate: the Cartesian
+    pendulum follows the textbook theta'' = -g/l sin(theta)."""
+    x, y, dx, dy, m, g, l = var('x y dx dy m g l')
+    L = Lagrangian(m * (dx ** 2 + dy ** 2) / 2 - m * g * y, [x, y],
+                   constraints=[x ** 2 + y ** 2 - l ** 2])
+    G, Lv, th0 = 9.81, 0.9, 1.0
+    initial = {x: Lv * math.sin(th0), y: -Lv * math.cos(th0), dx: 0, dy: 0}
+    T = simulate_model(L, {m: 1.5, g: G, l: Lv}, initial, 5, 51, energy=L.energy())
+    expected = reference(lambda t, s: [s[1], -G / Lv * math.sin(s[0])], [th0, 0.0], 5, 51)
+    assert np.allclose(T.values(x), Lv * np.sin(expected[:, 0]), rtol=0, atol=1e-8)
+    assert max(abs(r) for r in T.values(x ** 2 + y ** 2 - l ** 2)) < 1e-12
