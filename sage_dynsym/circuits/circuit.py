@@ -49,10 +49,11 @@ from sage.symbolic.ring import SR
 from ..errors import CircuitError
 from ..symbols import CIRCUIT_VARIABLES
 from ..dynamics.model import Model
+from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
 from .graph import CircuitGraph
 
-class Circuit(Model):
+class Circuit(NumericalMethods, Model):
     r"""
     An electrical circuit given as a list of branches.
 
@@ -758,6 +759,30 @@ class Circuit(Model):
                                    matrix.diagonal(SR, form.capacitances())], subdivide=False)
         B.set_immutable()
         return B
+
+    def _conserved_energy(self):
+        r"""
+        The stored energy `\tfrac12 x^T B x` (`B` the :meth:`lhs_matrix`:
+        inductances with their mutual terms, capacitances) of a circuit of
+        constant inductors and capacitors only -- no resistor, no source,
+        where it is an integral of the state equations --, else ``None``;
+        what ``simulate(...).energy_drift()`` measures.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']])._conserved_energy()
+            1/2*L1*i1^2 + 1/2*C1*u2^2
+            sage: Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])._conserved_energy() is None
+            True
+        """
+        if any(b.kind not in ('inductor', 'capacitor') for b in self.branches()):
+            return None
+        x = [v for v, _ in self.state_variables()]
+        B = self.lhs_matrix()
+        if any(SR(e).has(v) for e in B.list() for v in x):
+            return None
+        return sum(B[i, j] * x[i] * x[j] for i in range(len(x)) for j in range(len(x))) / 2
 
     def to_linearizer(self):
         r"""

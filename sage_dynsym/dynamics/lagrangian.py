@@ -126,12 +126,13 @@ from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
                        constraint_multipliers)
 from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
+from ..numerics.methods import NumericalMethods
 from .natural_equations import natural_equations, SymbolicCalculus
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
                            is_singular, Elimination)
 
 
-class Lagrangian(SageObject):
+class Lagrangian(NumericalMethods, SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
     generalized forces.
@@ -782,6 +783,28 @@ class Lagrangian(SageObject):
             [ddx + x]
         """
         return self.lagrange_equations()
+
+    def _conserved_energy(self):
+        r"""
+        The generalized energy (:meth:`energy`) when it is an integral of
+        the motion -- no explicit time in `L` or the constraints, no
+        dissipation, no generalized forces --, else ``None``; what
+        ``simulate(...).energy_drift()`` measures.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, c = var('x dx c')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x])._conserved_energy()
+            1/2*dx^2 + 1/2*x^2
+            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2)._conserved_energy() is None
+            True
+        """
+        if (self._expr.has(t) or not self._dissipation.is_zero()
+                or any(not f.is_zero() for f in self._forces)
+                or any(SR(f).has(t) for f in self._constraints)):
+            return None
+        return self.energy()
 
     def to_linearizer(self):
         r"""
