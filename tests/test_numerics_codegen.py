@@ -146,3 +146,25 @@ def test_generated_code_is_readable():
     assert 'math.sin(theta)' in code
     c = generate_code(L.to_linearizer(), 'c')
     assert 'const double theta = q[1];' in c and '#include <math.h>' in c
+
+
+def test_constraint_blocks(tmp_path):
+    """Cartesian pendulum: J = (2x, 2y) and gamma = -2(dx^2 + dy^2) by hand
+    (the second derivative of x^2 + y^2 - l^2 vanishes)."""
+    from sage_dynsym.analysis.motion import SecondOrderEquations
+    x, y, dx, dy, ddx, ddy, mu, m, g, l = var('x y dx dy ddx ddy mu m g l')
+    f = x ** 2 + y ** 2 - l ** 2
+    E = SecondOrderEquations([m * ddx - 2 * mu * x, m * ddy + m * g - 2 * mu * y],
+                             [x, y], [dx, dy], [ddx, ddy], constraints=[f], multipliers=[mu])
+    code = generate_code(E, 'python')
+    M, F, J, gamma = run_python(code, 'mass_matrix_and_forcing')(0.0, [0.3, -0.8], [1.5, -2.0],
+                                                                   [9.81, 1.0, 2.0])
+    assert np.allclose(M, [2, 0, 0, 2]) and np.allclose(F, [0, -2 * 9.81])
+    assert np.allclose(J, [0.6, -1.6]) and np.allclose(gamma, [-2 * (1.5 ** 2 + 2.0 ** 2)])
+    if compiler():
+        lib = compile_c(generate_code(E, 'c'), tmp_path, 'constrained')
+        outs = [np.zeros(4), np.zeros(2), np.zeros(2), np.zeros(1)]
+        args = [pointer(a) for a in ([0.3, -0.8], [1.5, -2.0], [9.81, 1.0, 2.0])]
+        lib.mass_matrix_and_forcing(ctypes.c_double(0.0), *[p for _, p in args],
+                                    *[pointer(o)[1] for o in outs])
+        assert np.allclose(outs[2], J) and np.allclose(outs[3], gamma)
