@@ -52,6 +52,7 @@ from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLy
 from .analysis.trigonometric import trig_rational_simplify
 from .lie import (LiePoissonSystem, PoissonStructure, lie_algebra, poisson_structure,
                   casimirs, polynomial_integrals, euler_poisson, kirchhoff)
+from .numerics import NumericalMethods, Trajectory, numerical_rhs, simulate, generate_code
 from .scale import stability_map, StabilityMap, sweep, Sweep
 
 #: Earlier module names and where they live now.

@@ -49,6 +49,7 @@ from sage.symbolic.ring import SR
 from ..errors import CircuitError
 from ..symbols import CIRCUIT_VARIABLES
 from ..dynamics.model import Model
+from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
 from .graph import CircuitGraph
@@ -763,10 +764,10 @@ class Circuit(NumericalMethods, Model):
     def _conserved_energy(self):
         r"""
         The stored energy `\tfrac12 x^T B x` (`B` the :meth:`lhs_matrix`:
-        inductances with their mutual terms, capacitances) of a circuit of
-        constant inductors and capacitors only -- no resistor, no source,
-        where it is an integral of the state equations --, else ``None``;
-        what ``simulate(...).energy_drift()`` measures.
+        inductances with their mutual terms, capacitances) when the state
+        equations are lossless and linear (see
+        :func:`~sage_dynsym.numerics.energy.quadratic_energy`), else
+        ``None``; what ``simulate(...).energy_drift()`` measures.
 
         EXAMPLES::
 
@@ -776,13 +777,7 @@ class Circuit(NumericalMethods, Model):
             sage: Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])._conserved_energy() is None
             True
         """
-        if any(b.kind not in ('inductor', 'capacitor') for b in self.branches()):
-            return None
-        x = [v for v, _ in self.state_variables()]
-        B = self.lhs_matrix()
-        if any(SR(e).has(v) for e in B.list() for v in x):
-            return None
-        return sum(B[i, j] * x[i] * x[j] for i in range(len(x)) for j in range(len(x))) / 2
+        return quadratic_energy(self.to_linearizer())
 
     def to_linearizer(self):
         r"""

@@ -720,7 +720,7 @@ class Lagrangian(NumericalMethods, SageObject):
           ``"direct"`` otherwise) ``"structured"`` assembles (5) from the
           decomposition (4); ``"direct"`` differentiates
           `d/dt (\partial L/\partial \dot q_i) - \partial L/\partial q_i`.
-            Both are equal as functions.
+          Both are equal as functions.
 
         With constraints, `E_i` contains `-\sum_j \mu_j \partial f_j/\partial
         q_i` (`M\ddot q = F + J^T\mu`, see the module documentation).
