@@ -128,6 +128,7 @@ from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
 from ..numerics.methods import NumericalMethods
 from .natural_equations import natural_equations, SymbolicCalculus
+from .compact import equations_cse
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
                            is_singular, Elimination)
 
@@ -783,6 +784,26 @@ class Lagrangian(NumericalMethods, SageObject):
             [ddx + x]
         """
         return self.lagrange_equations()
+
+    def equations_cse(self):
+        r"""
+        The Lagrange equations written with their common subexpressions
+        (see :func:`~sage_dynsym.dynamics.compact.equations_cse`): a compact
+        form for the largest models, exactly equal to
+        :meth:`lagrange_equations` after ``expand()``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: psi, theta, dpsi, dtheta, m, l, g = var('psi theta dpsi dtheta m l g')
+            sage: L = Lagrangian(m*l^2*(dtheta^2 + sin(theta)^2*dpsi^2)/2 + m*g*l*cos(theta),
+            ....:                [psi, theta])
+            sage: C = L.equations_cse(); C.subexpressions()
+            [(x1_, cos(theta)), (x2_, sin(theta))]
+            sage: C.expand() == L.lagrange_equations()
+            True
+        """
+        return equations_cse(self.lagrange_equations(), reserved_names=self._multipliers)
 
     def _conserved_energy(self):
         r"""

@@ -517,6 +517,58 @@ class MechanicalSystem(Model):
     # ------------------------------------------------------------------
     # construction helpers
 
+    # numerics: the system's Lagrange equations run through its Lagrangian
+
+    def numerical_rhs(self, values, **options):
+        r"""
+        The compiled right-hand side of the Lagrange equations of
+        :meth:`lagrangian` (see
+        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.numerical_rhs`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k = var('x m k')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2)
+            sage: S.numerical_rhs({m: 2, k: 8})(0, [1.0, 0.5])
+            array([ 0.5, -4. ])
+        """
+        return self.lagrangian().numerical_rhs(values, **options)
+
+    def simulate(self, values, initial, t_end, **options):
+        r"""
+        A simulation of the Lagrange equations of :meth:`lagrangian` (see
+        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`).
+
+        EXAMPLES: a mass on a spring, `x(t) = \cos 2t`::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k = var('x m k')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2)
+            sage: T = S.simulate({m: 2, k: 8}, {x: 1, 'dx': 0}, pi, points=3)
+            sage: [round(v, 8) for v in T.values(x)], T.energy_drift() < 1e-9
+            ([1.0, -1.0, 1.0], True)
+        """
+        return self.lagrangian().simulate(values, initial, t_end, **options)
+
+    def code(self, language='python', cse=True):
+        r"""
+        Generated source of the mass matrix and forcing of :meth:`lagrangian`
+        (see :meth:`~sage_dynsym.numerics.methods.NumericalMethods.code`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k = var('x m k')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2)
+            sage: 'k*x' in str(S.code())
+            True
+        """
+        return self.lagrangian().code(language=language, cse=cse)
+
     def _sorted_by_parents(self, bodies):
         names = {}
         for i, body in enumerate(bodies):
