@@ -100,3 +100,22 @@ def test_failures():
 def test_bad_input(function, parameters, options, message):
     with pytest.raises(AnalysisError, match=message):
         sweep(function, parameters, client=False, **options)
+
+
+def test_lagrangian_and_circuit_are_swept_as_they_are():
+    # a mass on a spring: x(t) = cos(sqrt(k/m) t); an RL loop:
+    # L di/dt = -R i, i(t) = exp(-R t / L)
+    from sage_dynsym import Lagrangian
+    from sage_dynsym.circuits import Circuit
+    x, dx, m, k = var('x dx m k')
+    L = Lagrangian(m * dx**2 / 2 - k * x**2 / 2, [x])
+    W = sweep(L, {'k': (1, 4, 4)}, fixed={'m': 2}, client=False,
+              simulate=dict(initial={x: 1, dx: 0}, t_end=1.5),
+              reduce=lambda T: T.values(x)[-1])
+    np.testing.assert_allclose(W.values(), np.cos(np.sqrt(np.linspace(1, 4, 4) / 2) * 1.5),
+                               rtol=1e-8)
+    C = Circuit([[1, 2, 'L1'], [2, 1, 'R1']])
+    i1 = C.state_variables()[0][0]
+    W = sweep(C, {'R1': (0.5, 2, 4)}, fixed={'L1': 0.5}, client=False,
+              simulate=dict(initial={i1: 1}, t_end=1.0), reduce=lambda T: T.values(i1)[-1])
+    np.testing.assert_allclose(W.values(), np.exp(-np.linspace(0.5, 2, 4) / 0.5), rtol=1e-8)

@@ -20,8 +20,10 @@ of the parameter values (keys as given, the ``fixed`` ones included) and
 result kept is ``reduce(trajectory)`` (default: the trajectory itself,
 which must then be picklable). This is the calling convention of
 ``L.simulate(values, initial, t_end, points=..., t0=0)`` of the package's
-numerics: a Lagrangian (or circuit) with that method can be swept as it
-is. Until then any object with that method can, see :func:`sweep`.
+numerics (:mod:`sage_dynsym.numerics.methods`): Lagrangians, Routh
+functions, Hamiltonians, mechanical systems, circuits and Lie--Poisson
+systems are swept as they are (and so is any other object with that
+method, see :func:`sweep`).
 
 EXAMPLES::
 
