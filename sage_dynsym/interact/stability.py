@@ -11,7 +11,7 @@ Liénard--Chipart conditions
 then answers numerical questions for given parameter values: the
 characteristic roots, whether the conditions hold, the stability region in
 a plane of two parameters, a simulated trajectory of the *nonlinear*
-equations (SciPy's ``solve_ivp``). :meth:`StabilityStudy.explorer` is the
+equations (see :mod:`sage_dynsym.numerics`). :meth:`StabilityStudy.explorer` is the
 interactive page with a slider per parameter.
 
 Where the symbolic conditions are not available (too large, or the
@@ -419,7 +419,8 @@ class StabilityStudy(SageObject):
     def simulate(self, values, perturbation=0.05, t_end=20, points=400):
         r"""
         Integrate the nonlinear equations from the equilibrium with every
-        variable shifted by ``perturbation`` (SciPy ``solve_ivp``, LSODA).
+        variable shifted by ``perturbation`` (the compiled right-hand side of
+        :mod:`sage_dynsym.numerics`, SciPy's LSODA).
 
         OUTPUT: ``(t, X)``: the times and the states (NumPy arrays; ``X[k]``
         is the state at ``t[k]``)
@@ -436,22 +437,16 @@ class StabilityStudy(SageObject):
             sage: bool(abs(X[-1]).max() < 1e-5)      # back to the equilibrium
             True
         """
-        from scipy.integrate import solve_ivp
-        from sage.ext.fast_callable import fast_callable
-        from sage.rings.real_double import RDF
+        from ..analysis.motion import FirstOrderEquations
+        from ..numerics.simulate import simulate
         subs = self._values(values)
-        rhs = [f.subs(subs) for f in self._rhs]
-        Binv = self._B.subs(subs).change_ring(RDF).inverse().numpy()
-        fs = [fast_callable(f, vars=self._variables, domain=RDF) for f in rhs]
-        x0 = [float(N(p.subs(subs))) + perturbation for p in self._point]
-
-        def field(_, x):
-            return Binv @ numpy.array([f(*x) for f in fs])
-
-        times = numpy.linspace(0, t_end, points)
-        sol = solve_ivp(field, (0, t_end), x0, t_eval=times, method='LSODA',
-                        rtol=1e-8, atol=1e-10)
-        return sol.t, sol.y.T
+        record = FirstOrderEquations([f.subs(subs) for f in self._rhs], self._variables,
+                                     lhs_matrix=self._B.subs(subs))
+        x0 = {v: float(N(p.subs(subs))) + perturbation
+              for v, p in zip(self._variables, self._point)}
+        trajectory = simulate(record, {}, x0, t_end, points=points, method='LSODA',
+                              rtol=1e-8, atol=1e-10)
+        return trajectory.times(), trajectory.states()
 
     def trajectory_plot(self, values, perturbation=0.05, t_end=20):
         r"""
