@@ -91,6 +91,27 @@ def _zero_equations(coordinates, equations):
     return [("0", e) for e in equations]
 
 
+def _state_equations(circuit):
+    # each row of B x' = F labelled by its row of B: "(C_1 + C_2) du2/dt"
+    B = circuit.lhs_matrix()
+    x = [v for v, _ in circuit.state_variables()]
+    rows = []
+    for i, e in enumerate(circuit.state_equations()):
+        terms = []
+        for b, v in zip(B.row(i), x):
+            if not b.is_zero():
+                b = SR(b)
+                factor = "" if b == 1 else (latex(b) if b.is_symbol() or b.is_numeric()
+                                            else f"\\left({latex(b)}\\right)")
+                terms.append(f"{factor} \\frac{{d {latex(v)}}}{{dt}}".strip())
+        rows.append((" + ".join(terms), e))
+    if circuit.has_mixed_potential():
+        return Derivation('Brayton-Moser', ('P', circuit.mixed_potential()), rows, None)
+    return Derivation('Brayton-Moser', ('B', B), rows,
+                      "no mixed potential (capacitor loops or inductor cut-sets, or no "
+                      "Brayton-Moser split): the state equations B x' = F by nodal analysis")
+
+
 def derive(model, form, cyclic=()):
     r"""
     One form of the equations of ``model``.
@@ -121,6 +142,17 @@ def derive(model, form, cyclic=()):
         sage: derive(C, 'Brayton-Moser').equations[0]
         ('L_{1} \\frac{d i_{1}}{dt}', -u3 + u4 + u6)
 
+    A circuit without a mixed potential (a loop of two capacitors and a
+    source) gets its state equations from nodal analysis, each labelled by
+    its row of the matrix `B` of `B\\dot x = F`::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: D = derive(Circuit([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1'], [1, 3, 'L1'],
+        ....:                     [2, 3, 'R1']]), 'Brayton-Moser')
+        sage: D.equations[1], D.note
+        (('\\left(C_{1} + C_{2}\\right) \\frac{d u_{2}}{dt}', -u2/R1),
+         "no mixed potential (capacitor loops or inductor cut-sets, or no Brayton-Moser split): the state equations B x' = F by nodal analysis")
+
     TESTS::
 
         sage: derive(C, 'Lagrange (loop)')
@@ -136,9 +168,7 @@ def derive(model, form, cyclic=()):
     if form not in forms:
         raise ModelError(f"unknown form {form!r}: expected one of {', '.join(forms)}")
     if form == 'Brayton-Moser':
-        rows = [(f"{latex(SR.var(element))} \\frac{{d {latex(v)}}}{{dt}}", e)
-                for (v, element), e in zip(model.state_variables(), model.state_equations())]
-        return Derivation(form, ('P', model.mixed_potential()), rows, None)
+        return _state_equations(model)
     L = model if _is_characteristic_function(model) else _lagrangian(model, form)
     if form.startswith('Lagrange'):
         return Derivation(form, ('L', L.expr()),
