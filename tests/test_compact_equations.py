@@ -194,8 +194,9 @@ def test_equations_cse_round_trip(n):
         check_mechanical_names(desc['coordinates'], names[:1])
     assert all(not re.fullmatch(r'x\d+_', v) for v in desc['coordinates'] + desc['parameters'])
     assert _size([e for _, e in C.subexpressions()] + C.equations()) < _size(E)
-    point = _point(desc, 11)
-    _assert_close(_sage_values(C.expand(), point), _sage_values(E, point), 'cse')
+    if n <= 3:   # (compiling the 5-link equations takes half a minute)
+        point = _point(desc, 11)
+        _assert_close(_sage_values(C.expand(), point), _sage_values(E, point), 'cse')
 
 
 def test_equations_cse_skips_names_in_use():
