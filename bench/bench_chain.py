@@ -15,9 +15,9 @@ Each (tool, N) runs in a fresh subprocess with a timeout; the time covers
 building the model and deriving the equations (not importing the library).
 Output size: total length of the equations' text without spaces, in plain
 symbols (psi1, dpsi1, ddpsi1, ...) with ``^`` for powers; for sage_dynsym
-also the size of the opt-in compact form ``equations_cse`` (common
-subexpressions and the equations written with them; its time is not
-included). All three evaluate their equations at the same random point
+also the size of the opt-in compact form ``equations_cse`` (the
+definitions ``x1_=...`` of the common subexpressions and the equations
+written with them; its time is not included). All three evaluate their equations at the same random point
 (Kane's with the sign of the Lagrange equations, fr + frstar = -E) and the
 largest relative difference to sage_dynsym is printed (a correctness guard).
 
@@ -106,7 +106,8 @@ def worker_sage(n, christoffel='auto'):
     result = _report(time=time.perf_counter() - start)
     result = _report(result, size=_size(E))
     C = equations_cse(E)
-    result = _report(result, cse_size=_size([e for _, e in C.subexpressions()] + C.equations()))
+    result = _report(result, cse_size=_size([f'{s}={e}' for s, e in C.subexpressions()]
+                                            + C.equations()))
     point = _point(desc)
     order = sorted(point)
     values = [float(fast_callable(SR(e), vars=[SR.var(s) for s in order], domain=RDF)(
