@@ -252,7 +252,9 @@ class Kinematics:
         With the partial velocities `\partial V_{0k}/\partial\dot q_i` and
         `\partial W_k/\partial\dot q_i` of the joint and the body, its
         acceleration `a_{0k}` and angular acceleration `\varepsilon_k`, all in
-        body `k`'s axes (formulas of :doc:`the method </method>`, Section 2),
+        body `k`'s axes (the quantities of the kinetic energy (1) of
+        :doc:`the method </method>` and their time derivatives), Kane's form of the equations
+        [KL1985]_ with the momenta about the joint point `O_k`,
 
         .. MATH::
 
@@ -301,6 +303,12 @@ class Kinematics:
             sage: A, A1, T0, h = Kinematics(S, SymbolicBackend()).recursive_equations()
             sage: A, A1, T0, h
             ([[m]], [0], 1/2*m*w^2*x^2, [-m*w^2*x])
+
+        REFERENCES:
+
+        .. [KL1985] T. R. Kane, D. A. Levinson, *Dynamics: Theory and
+           Applications*, McGraw-Hill 1985, chapters 5 and 6 (generalized
+           inertia forces from partial velocities).
         """
         n = len(self._coordinates)
         tree, zero = self.tree, SR(0)
