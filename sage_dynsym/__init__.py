@@ -35,6 +35,7 @@ from .errors import (DynSymError, ModelError, DescriptionError, ExpressionError,
 from .dynamics.lagrangian import Lagrangian, RouthFunction
 from .dynamics.hamiltonian import Hamiltonian
 from .dynamics.dirac import DiracConstraints
+from .dynamics.compact import equations_cse, CompactEquations
 from .mechanics.rigid_body import RigidBody
 from .mechanics.force_functions import UniformGravity, NewtonianField
 from .mechanics.loads import Load

@@ -216,11 +216,11 @@ def test_lagrangian_agrees_with_sympy(name):
         _assert_close(f_sage(state), f_sympy(state), f"{name}: Lagrangian at {state}")
 
 
-@pytest.mark.parametrize('christoffel', ['polynomial', 'symbolic'])
+@pytest.mark.parametrize('christoffel', ['polynomial', 'symbolic', 'recursive'])
 @pytest.mark.parametrize('name', list(CASES))
 def test_lagrange_equations_agree_with_sympy(name, christoffel):
-    """Both ways of forming the Christoffel coefficients (the automatic
-    choice takes the polynomial one for chains this small)."""
+    """The three ways of forming the equations (the automatic choice takes
+    the polynomial one for chains this small)."""
     desc = CASES[name]
     q, dq, ddq, params = _names(desc)
     order = q + dq + ddq + params
