@@ -242,6 +242,21 @@ class Hamiltonian(SageObject, NumericalMethods):
         """
         return self._expr
 
+    def subs(self, values):
+        r"""
+        The Hamiltonian of the Lagrangian with the parameter values
+        ``values`` (a dict; exact numbers or floats) substituted.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: H = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian()
+            sage: H.subs({m: 2, k: 0.5}).expr()
+            1/4*p_x^2 + 0.250000000000000*x^2
+        """
+        return Hamiltonian(self._lagrangian.subs(values), self._momenta)
+
     def coordinates(self):
         r"""
         The coordinates `q` (a new list).
