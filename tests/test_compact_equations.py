@@ -21,31 +21,12 @@ import sympy
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference.chains import random_chain, spatial_chain  # noqa: E402
 from reference.sympy_chain import SympyChain  # noqa: E402
+from sage_chains import sage_chain as _sage_system  # noqa: E402
 
 from sage.all import SR, fast_callable, RDF  # noqa: E402
-from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity  # noqa: E402
 from sage_dynsym.dynamics.compact import equations_cse  # noqa: E402
 from sage_dynsym.symbols import check_mechanical_names  # noqa: E402
 from sage_dynsym.errors import ModelError  # noqa: E402
-
-
-def _sage_system(desc):
-    names = {n: sympy.Symbol(n) for n in desc['coordinates'] + desc['parameters'] + ['t']}
-
-    def conv(x):
-        if isinstance(x, str):
-            return SR(sympy.parse_expr(x, local_dict=dict(names)))
-        return SR(x.numerator) / SR(x.denominator) if hasattr(x, 'denominator') else SR(x)
-
-    bodies = [RigidBody(f'body{k}', parent=b['parent'],
-                        rotations=[(axis, conv(angle)) for axis, angle in b['rotations']],
-                        joint=[conv(x) for x in b['joint']], velocity=None,
-                        mass_center=[conv(x) for x in b['mass_center']], mass=conv(b['mass']),
-                        inertia=[[conv(x) for x in row] for row in b['inertia']])
-              for k, b in enumerate(desc['bodies'], start=1)]
-    return MechanicalSystem(bodies, coordinates=[SR.var(c) for c in desc['coordinates']],
-                            parameters=[SR.var(p) for p in desc['parameters']],
-                            force_function=UniformGravity([conv(x) for x in desc['gravity']]))
 
 
 def _rheonomic():

@@ -28,9 +28,9 @@ import sympy
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference.chains import random_chain  # noqa: E402
 from reference.sympy_chain import SympyChain  # noqa: E402
+from sage_chains import sage_chain as sage_system  # noqa: E402
 
 from sage.all import SR, fast_callable, RDF  # noqa: E402
-from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity  # noqa: E402
 from sage_dynsym.symbols import velocity
 from sage_dynsym.symbols import acceleration  # noqa: E402
 
@@ -42,34 +42,6 @@ STATES_PER_CASE = 3
 # ---------------------------------------------------------------------------
 # The same plain data, given to sage_dynsym
 # ---------------------------------------------------------------------------
-
-def _sage_value(value, names):
-    if isinstance(value, Fraction):
-        return SR(value.numerator) / SR(value.denominator)
-    if isinstance(value, str):
-        # Test-authored strings; SymPy parses them, Sage converts the result.
-        return SR(sympy.parse_expr(value, local_dict=dict(names)))
-    return SR(value)
-
-
-def sage_system(desc):
-    """A sage_dynsym ``MechanicalSystem`` for a plain-data chain description."""
-    names = {n: sympy.Symbol(n) for n in desc['coordinates'] + desc['parameters']}
-    conv = functools.partial(_sage_value, names=names)
-    bodies = []
-    for k, b in enumerate(desc['bodies'], start=1):
-        bodies.append(RigidBody(
-            f'body{k}', parent=b['parent'],
-            rotations=[(axis, conv(angle)) for axis, angle in b['rotations']],
-            joint=[conv(x) for x in b['joint']], velocity=None,
-            mass_center=[conv(x) for x in b['mass_center']],
-            mass=conv(b['mass']),
-            inertia=[[conv(x) for x in row] for row in b['inertia']]))
-    return MechanicalSystem(bodies,
-                            coordinates=[SR.var(c) for c in desc['coordinates']],
-                            parameters=[SR.var(p) for p in desc['parameters']],
-                            force_function=UniformGravity([conv(x) for x in desc['gravity']]))
-
 
 def sympy_chain(desc):
     return SympyChain(desc['bodies'], desc['coordinates'], desc['gravity'],

@@ -9,43 +9,22 @@ the linear system is solved in that precision. The compiled (C) and the
 Python right-hand sides must agree with it to 1e-12.
 """
 import random
-from fractions import Fraction
 import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
-import sympy
 
 from sage.all import SR, RealField, matrix, vector
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference.chains import spatial_chain, random_chain  # noqa: E402
 
-from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity  # noqa: E402
+from sage_chains import sage_chain as build_chain  # noqa: E402
 from sage_dynsym.numerics import numerical_rhs  # noqa: E402
 from sage_dynsym.numerics.compiler import compiler  # noqa: E402
 
 R = RealField(150)
-
-
-def build_chain(desc):
-    """The chain of the plain-data description as a MechanicalSystem."""
-    names = {s: sympy.Symbol(s) for s in desc['coordinates'] + desc['parameters']}
-
-    def conv(x):
-        if isinstance(x, Fraction):
-            return SR(x.numerator) / x.denominator
-        return SR(sympy.parse_expr(x, local_dict=dict(names))) if isinstance(x, str) else SR(x)
-    bodies = [RigidBody(f'link{k}', velocity=None, parent=b['parent'],
-                        rotations=[(a, conv(q)) for a, q in b['rotations']],
-                        joint=[conv(x) for x in b['joint']],
-                        mass_center=[conv(x) for x in b['mass_center']], mass=conv(b['mass']),
-                        inertia=[[conv(x) for x in row] for row in b['inertia']])
-              for k, b in enumerate(desc['bodies'], start=1)]
-    return MechanicalSystem(bodies, coordinates=[SR.var(q) for q in desc['coordinates']],
-                            parameters=[SR.var(p) for p in desc['parameters']],
-                            force_function=UniformGravity([conv(x) for x in desc['gravity']]))
 
 
 def exact_accelerations(record, point):
