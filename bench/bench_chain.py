@@ -79,29 +79,13 @@ def _report(result=None, **new):
 
 
 def worker_sage(n, christoffel='auto'):
-    import sympy
     from sage.all import SR, fast_callable, RDF
-    from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
     from sage_dynsym.dynamics.compact import equations_cse
+    from sage_chains import sage_chain_parts, assemble
     desc = spatial_chain(n)
-    names = {s: sympy.Symbol(s) for s in desc['coordinates'] + desc['parameters']}
-
-    def conv(x):
-        return SR(sympy.parse_expr(x, local_dict=dict(names))) if isinstance(x, str) else SR(x)
-
-    bodies_data = [dict(name=f'link{k}', parent=b['parent'],
-                        rotations=[(a, conv(q)) for a, q in b['rotations']],
-                        joint=[conv(x) for x in b['joint']],
-                        mass_center=[conv(x) for x in b['mass_center']], mass=conv(b['mass']),
-                        inertia=[[conv(x) for x in row] for row in b['inertia']])
-                   for k, b in enumerate(desc['bodies'], start=1)]
-    coordinates = [SR.var(q) for q in desc['coordinates']]
-    parameters = [SR.var(p) for p in desc['parameters']]
-    gravity = [conv(x) for x in desc['gravity']]
+    parts = sage_chain_parts(desc)
     start = time.perf_counter()
-    bodies = [RigidBody(d.pop('name'), velocity=None, **d) for d in bodies_data]
-    S = MechanicalSystem(bodies, coordinates=coordinates, parameters=parameters,
-                         force_function=UniformGravity(gravity))
+    S = assemble(*parts)
     E = S.lagrangian(christoffel).lagrange_equations()
     result = _report(time=time.perf_counter() - start)
     result = _report(result, size=_size(E))

@@ -22,7 +22,6 @@ import os
 import random
 import sys
 import time
-from fractions import Fraction
 
 import numpy as np
 
@@ -30,28 +29,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 
 from reference.chains import spatial_chain  # noqa: E402
-
-
-def sage_chain(desc):
-    """The chain as a sage_dynsym ``MechanicalSystem`` (as bench_chain.py builds it)."""
-    import sympy
-    from sage.all import SR
-    from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
-    names = {s: sympy.Symbol(s) for s in desc['coordinates'] + desc['parameters']}
-
-    def conv(x):
-        if isinstance(x, Fraction):
-            return SR(x.numerator) / x.denominator
-        return SR(sympy.parse_expr(x, local_dict=dict(names))) if isinstance(x, str) else SR(x)
-    bodies = [RigidBody(f'link{k}', velocity=None, parent=b['parent'],
-                        rotations=[(a, conv(q)) for a, q in b['rotations']],
-                        joint=[conv(x) for x in b['joint']],
-                        mass_center=[conv(x) for x in b['mass_center']], mass=conv(b['mass']),
-                        inertia=[[conv(x) for x in row] for row in b['inertia']])
-              for k, b in enumerate(desc['bodies'], start=1)]
-    return MechanicalSystem(bodies, coordinates=[SR.var(q) for q in desc['coordinates']],
-                            parameters=[SR.var(p) for p in desc['parameters']],
-                            force_function=UniformGravity([conv(x) for x in desc['gravity']]))
+from sage_chains import sage_chain  # noqa: E402
 
 
 def kane_chain(desc):
