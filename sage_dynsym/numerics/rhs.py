@@ -21,6 +21,8 @@ EXAMPLES: a pendulum::
     sage: f(0, [pi.n()/2, 0.5])
     array([ 0.5  , -4.905])
 """
+import math
+
 import numpy as np
 
 from sage.structure.sage_object import SageObject
@@ -71,13 +73,25 @@ def parameter_values(form, values):
 
 def real_number(value, name, entry="values"):
     r"""
-    ``value`` (a Python or Sage number, or a constant expression) as a float.
+    ``value`` (a Python or Sage number, or a constant expression) as a
+    finite float.
 
     EXAMPLES::
 
         sage: from sage_dynsym.numerics.rhs import real_number
         sage: real_number(pi, 'a'), real_number(3/4, 'b')
         (3.141592653589793, 0.75)
+
+    TESTS::
+
+        sage: real_number(float('nan'), 'x', entry='initial')
+        Traceback (most recent call last):
+        ...
+        ModelError: initial: the value of x must be a finite real number, got nan
+        sage: real_number(oo, 'k')
+        Traceback (most recent call last):
+        ...
+        ModelError: values: the value of k must be a finite real number, got +Infinity
     """
     try:
         number = complex(SR(value)) if not isinstance(value, (int, float)) else value
@@ -85,6 +99,9 @@ def real_number(value, name, entry="values"):
         number = None
     if number is None or (isinstance(number, complex) and number.imag != 0):
         raise ModelError(f"the value of {name} must be a real number, got {value}", entry=entry)
+    if not math.isfinite(number.real):
+        raise ModelError(f"the value of {name} must be a finite real number, got {value}",
+                         entry=entry)
     return float(number.real)
 
 
