@@ -9,29 +9,10 @@ every expression is a string parsed by
 declared symbols (never ``eval``). Errors name the file, the entry and what
 was expected.
 
-A mechanical system::
-
-    kind: mechanical
-    name: spherical pendulum
-    parameters: [m, l, g]
-    coordinates: [psi, theta]
-    force_function:
-      uniform_gravity: [0, 0, -g]    # or newtonian: {nu: .., r: .., direction: [..]}
-                                     # or expression: "U(q, t)"
-    dissipation: "c*dtheta^2/2"      # optional Rayleigh function (velocities d<name>)
-    forces: ["0", "M0*sin(w*t)"]     # optional, one per coordinate
-    bodies:
-      - name: pendulum
-        parent: 0                    # 0, a body name or a 1-based body index
-        rotations: [[3, psi], [1, theta]]
-        joint: [0, 0, 0]
-        velocity: [0, 0, 0]          # optional; default: time derivative of joint
-        mass_center: [0, 0, l]
-        mass: m
-        inertia: [[m*l^2, 0, 0], [0, m*l^2, 0], [0, 0, 0]]
-
-A circuit (``kind: circuit``) is handled by
-:mod:`sage_dynsym.circuits.description`.
+The required key ``kind`` chooses the format: ``mechanical`` (see
+:mod:`sage_dynsym.mechanics.description`), ``circuit`` (see
+:mod:`sage_dynsym.circuits.description`) or ``lie_poisson`` (see
+:mod:`sage_dynsym.lie.description`).
 
 :func:`save` writes the description back with a ``results:`` section (the
 Lagrangian and the equations, as text and LaTeX); :func:`load` with
