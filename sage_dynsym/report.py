@@ -392,39 +392,8 @@ def _stationary(L, cyclic, lines, positive=()):
     lines.append(f"{what}:")
     for e in solutions.equations():
         _formula(lines, "0 = ", e)
-    if solutions.is_empty():
-        lines.append("  no real solutions (for generic parameter values)")
-    if not solutions.is_complete():
-        lines.append("  (transcendental equations: solutions found by Maxima's solve, "
-                     "possibly not all)")
-    for k, s in enumerate(solutions, 1):
-        values = ", ".join(f"{v} = {e}" for v, e in s.point().items() if str(v) != str(e))
-        kind = "isolated" if s.dimension() == 0 else f"{s.dimension()}-parameter family"
-        if not s.is_explicit():
-            kind += ", implicit"
-        lines.append(f"  solution {k} ({kind}): {values or 'given by its equations'}")
-        for e in s.equations():
-            _formula(lines, "0 = ", e, indent="    ")
-        try:
-            conditions = s.conditions()
-            if conditions:
-                lines.append("    exists if: " + ", ".join(map(str, conditions)))
-            verdict = s.stability()
-        except DynSymError as err:
-            lines.append(f"    stability: not decided ({err})")
-            continue
-        _verdict(verdict, lines)
-
-
-def _verdict(verdict, lines):
-    if verdict.verdict() != 'depends on the parameters':
-        method = f" ({verdict.method()})" if verdict.method() else ""
-        lines.append(f"    stability: {verdict.verdict()}{method}: {verdict.reason()}")
-        return
-    lines.append("    stability depends on the parameters:")
-    for v in verdict.cases():
-        where = " or ".join("[" + ", ".join(map(str, alt)) + "]" for alt in v.region())
-        lines.append(f"      {v.verdict()} ({v.method()}) where {where}")
+    lines.extend(solutions.report_lines(
+        lambda out, e: _formula(out, "0 = ", e, indent="    ")))
 
 
 def _linear_circuit_stability(circuit, L, lines, out):

@@ -101,7 +101,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.function_factory import function as symbolic_function
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, DynSymError
 from ..symbols import velocity
 from .conditions import (positive_conditions, positive_conditions_all, conjunction,
                          simplify_conjunction)
@@ -760,6 +760,68 @@ class StationarySolutions(SolutionList):
             True
         """
         return not self._solutions
+
+    def report_lines(self, equation=None):
+        r"""
+        The solutions as lines of a text report: whether there are none,
+        whether the list may be incomplete, then for each solution its
+        values (or that it is a family, or implicit), the equations left, the
+        existence conditions and the stability verdict -- or why it was not
+        decided.
+
+        INPUT:
+
+        - ``equation`` -- (optional) a function ``(lines, expr)`` appending
+          the lines of an equation ``0 = expr`` (default: one line)
+
+        OUTPUT: a list of strings
+
+        EXAMPLES: the equilibria of a pendulum::
+
+            sage: from sage_dynsym import Lagrangian, stationary_motions
+            sage: th, dth, m, g, l = var('theta dtheta m g l')
+            sage: L = Lagrangian(m*l^2*dth^2/2 + m*g*l*cos(th), [th])
+            sage: for line in stationary_motions(L, positive=[m, g, l]).report_lines():
+            ....:     print(line)
+              solution 1 (isolated): theta = 0
+                stability: stable (Routh-Lyapunov): the second variation of the Lyapunov function is definite (Routh-Lyapunov)
+              solution 2 (isolated): theta = pi
+                stability: unstable (first approximation): the characteristic polynomial has a root with positive real part (Lyapunov's theorem on the first approximation)
+        """
+        if equation is None:
+            def equation(lines, e):
+                lines.append(f"    0 = {e}")
+        lines = []
+        if self.is_empty():
+            lines.append("  no real solutions (for generic parameter values)")
+        if not self.is_complete():
+            lines.append("  (transcendental equations: solutions found by Maxima's solve, "
+                         "possibly not all)")
+        for k, s in enumerate(self, 1):
+            values = ", ".join(f"{v} = {e}" for v, e in s.point().items() if str(v) != str(e))
+            kind = "isolated" if s.dimension() == 0 else f"{s.dimension()}-parameter family"
+            if not s.is_explicit():
+                kind += ", implicit"
+            lines.append(f"  solution {k} ({kind}): {values or 'given by its equations'}")
+            for e in s.equations():
+                equation(lines, e)
+            try:
+                conditions = s.conditions()
+                if conditions:
+                    lines.append("    exists if: " + ", ".join(map(str, conditions)))
+                verdict = s.stability()
+            except DynSymError as err:
+                lines.append(f"    stability: not decided ({err})")
+                continue
+            if verdict.verdict() != 'depends on the parameters':
+                method = f" ({verdict.method()})" if verdict.method() else ""
+                lines.append(f"    stability: {verdict.verdict()}{method}: {verdict.reason()}")
+                continue
+            lines.append("    stability depends on the parameters:")
+            for v in verdict.cases():
+                where = " or ".join("[" + ", ".join(map(str, alt)) + "]" for alt in v.region())
+                lines.append(f"      {v.verdict()} ({v.method()}) where {where}")
+        return lines
 
     def equations(self):
         r"""

@@ -347,30 +347,4 @@ def lie_report(system, sections=None, analysis=True):
 
 
 def _stationary(system, integrals, out):
-    solutions = system.stationary_solutions(integrals)
-    if solutions.is_empty():
-        out.append("  no real solutions (for generic parameter values)")
-    for k, s in enumerate(solutions, 1):
-        values = ", ".join(f"{v} = {e}" for v, e in s.point().items() if str(v) != str(e))
-        kind = "isolated" if s.dimension() == 0 else f"{s.dimension()}-parameter family"
-        if not s.is_explicit():
-            kind += ", implicit"
-        out.append(f"  solution {k} ({kind}): {values or 'given by its equations'}")
-        for e in s.equations():
-            out.append(f"    0 = {e}")
-        try:
-            conditions = s.conditions()
-            if conditions:
-                out.append("    exists if: " + ", ".join(map(str, conditions)))
-            verdict = s.stability()
-        except DynSymError as err:
-            out.append(f"    stability: not decided ({err})")
-            continue
-        if verdict.verdict() != 'depends on the parameters':
-            method = f" ({verdict.method()})" if verdict.method() else ""
-            out.append(f"    stability: {verdict.verdict()}{method}: {verdict.reason()}")
-            continue
-        out.append("    stability depends on the parameters:")
-        for v in verdict.cases():
-            where = " or ".join("[" + ", ".join(map(str, alt)) + "]" for alt in v.region())
-            out.append(f"      {v.verdict()} ({v.method()}) where {where}")
+    out.extend(system.stationary_solutions(integrals).report_lines())
