@@ -525,18 +525,6 @@ def _constraint_forces(L, lines, out):
         _formula(lines, f"{mu} = ", solved[mu])
 
 
-def _lhs_row(B, i, x):
-    # row i of B x', e.g. "C1 du2/dt" or "(C1 + C2) du2/dt + M di3/dt"
-    terms = []
-    for b, v in zip(B.row(i), x):
-        if b.is_zero():
-            continue
-        b = SR(b)
-        factor = "" if b == 1 else (f"{b} " if b.is_symbol() or b.is_numeric() else f"({b}) ")
-        terms.append(f"{factor}d{v}/dt")
-    return " + ".join(terms)
-
-
 def _circuit(circuit, out):
     from .errors import CircuitError
     out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
@@ -562,13 +550,11 @@ def _circuit(circuit, out):
             out.run("Mixed potential", potential)
         if equations is not None and out.want('state_equations'):
             def state(lines):
-                B = circuit.lhs_matrix()
-                x = [v for v, _ in circuit.state_variables()]
                 lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du)" if split
                              else "State equations (nodal analysis; capacitor loops and "
                                   "inductor cut-sets reduce the state):")
-                for i, e in enumerate(equations):
-                    _formula(lines, f"[{_lhs_row(B, i, x)}] ", e)
+                for label, e in zip(circuit.state_equation_labels(), equations):
+                    _formula(lines, f"[{label}] ", e)
             out.run("State equations", state)
         if split and out.want('lyapunov'):
             def lyapunov(lines):

@@ -729,6 +729,42 @@ class Circuit(NumericalMethods, Model):
         """
         return self._state_form().state_equations()
 
+    def state_equation_labels(self, latex=False):
+        r"""
+        The left-hand sides of `B\dot x =` :meth:`state_equations`, row by
+        row, as text (``latex=True``: LaTeX), e.g. ``C1 du2/dt`` or, for a
+        state reduced by a capacitor loop, ``(C1 + C2) du2/dt``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1'], [1, 3, 'L1'], [2, 3, 'R1']])
+            sage: C.state_equation_labels()
+            ['L1 di1/dt', '(C1 + C2) du2/dt']
+            sage: C.state_equation_labels(latex=True)[1]
+            '\\left(C_{1} + C_{2}\\right) \\frac{d u_{2}}{dt}'
+        """
+        from sage.misc.latex import latex as to_latex
+        B = self.lhs_matrix()
+        x = [v for v, _ in self.state_variables()]
+        labels = []
+        for i in range(B.nrows()):
+            terms = []
+            for b, v in zip(B.row(i), x):
+                if b.is_zero():
+                    continue
+                b = SR(b)
+                simple = b.is_symbol() or b.is_numeric()
+                if latex:
+                    factor = "" if b == 1 else (to_latex(b) if simple
+                                                else f"\\left({to_latex(b)}\\right)")
+                    terms.append(f"{factor} \\frac{{d {to_latex(v)}}}{{dt}}".strip())
+                else:
+                    factor = "" if b == 1 else (f"{b} " if simple else f"({b}) ")
+                    terms.append(f"{factor}d{v}/dt")
+            labels.append(" + ".join(terms))
+        return labels
+
     def lhs_matrix(self):
         r"""
         The matrix `B` of `B\dot x = F(x)`, `F` the :meth:`state_equations`,

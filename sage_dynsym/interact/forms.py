@@ -92,22 +92,10 @@ def _zero_equations(coordinates, equations):
 
 
 def _state_equations(circuit):
-    # each row of B x' = F labelled by its row of B: "(C_1 + C_2) du2/dt"
-    B = circuit.lhs_matrix()
-    x = [v for v, _ in circuit.state_variables()]
-    rows = []
-    for i, e in enumerate(circuit.state_equations()):
-        terms = []
-        for b, v in zip(B.row(i), x):
-            if not b.is_zero():
-                b = SR(b)
-                factor = "" if b == 1 else (latex(b) if b.is_symbol() or b.is_numeric()
-                                            else f"\\left({latex(b)}\\right)")
-                terms.append(f"{factor} \\frac{{d {latex(v)}}}{{dt}}".strip())
-        rows.append((" + ".join(terms), e))
+    rows = list(zip(circuit.state_equation_labels(latex=True), circuit.state_equations()))
     if circuit.has_mixed_potential():
         return Derivation('Brayton-Moser', ('P', circuit.mixed_potential()), rows, None)
-    return Derivation('Brayton-Moser', ('B', B), rows,
+    return Derivation('Brayton-Moser', ('B', circuit.lhs_matrix()), rows,
                       "no mixed potential (capacitor loops or inductor cut-sets, or no "
                       "Brayton-Moser split): the state equations B x' = F by nodal analysis")
 
