@@ -90,11 +90,30 @@ class _Key:
         return self.expr.is_trivially_equal(other.expr)
 
 
-def _constant(e, entry):
+def real_constant(e, entry, hint=""):
+    r"""
+    The constant expression ``e`` as a float; an
+    :class:`~sage_dynsym.errors.AnalysisError` (on ``entry``, with
+    ``hint`` appended) when it has no numerical value or is not real.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import real_constant
+        sage: real_constant(sqrt(2)/2, 'code')
+        0.7071067811865476
+        sage: real_constant(I, 'code')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: code: the constant I is not real
+        sage: f = function('f'); real_constant(f(1), 'map', hint='; give it a value')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: map: f(1) has no numerical value; give it a value
+    """
     try:
         z = complex(e)
     except (TypeError, ValueError):
-        raise AnalysisError(f"{e} has no numerical value", entry=entry) from None
+        raise AnalysisError(f"{e} has no numerical value{hint}", entry=entry) from None
     if z.imag != 0:
         raise AnalysisError(f"the constant {e} is not real", entry=entry)
     return float(z.real)
@@ -107,7 +126,17 @@ def _literal(value):
     return text
 
 
-def _function_name(op):
+def function_name(op):
+    r"""
+    The name of the symbolic function ``op`` (``None`` for an operator
+    without one).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import function_name
+        sage: function_name(sin(var('x')).operator()), function_name(operator.add)
+        ('sin', None)
+    """
     try:
         return op.name()
     except AttributeError:
@@ -206,13 +235,13 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
                 return names[key], 3
             if e.is_symbol():
                 raise AnalysisError(f"no value for the symbol {e}", entry=entry)
-            value = _constant(e, entry)
+            value = real_constant(e, entry)
             return _literal(value), (3 if value >= 0 else 1)
         key = _Key(e)
         if key in done:
             return done[key]
         if not e.variables():
-            value = _constant(e, entry)
+            value = real_constant(e, entry)
             return _literal(value), (3 if value >= 0 else 1)
         if op is add_vararg:
             item = _sum(e.operands())
@@ -220,8 +249,8 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
             item = _product(e.operands())
         elif op is operator.pow:
             item = _power(*e.operands())
-        elif _function_name(op) in FUNCTIONS:
-            function = FUNCTIONS[_function_name(op)][0 if python else 1]
+        elif function_name(op) in FUNCTIONS:
+            function = FUNCTIONS[function_name(op)][0 if python else 1]
             item = f"{function}({', '.join(render(o)[0] for o in e.operands())})", 3
         else:
             raise AnalysisError(f"{e} has no numerical value", entry=entry)
@@ -235,9 +264,9 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
                 cse and uses.get(_Key(e), 0) > 1):
             factors = e.operands()
             coefficient = [f for f in factors if f.operator() is None and f.is_numeric()]
-            if coefficient and _constant(coefficient[0], entry) < 0:
+            if coefficient and real_constant(coefficient[0], entry) < 0:
                 rest = [f for f in factors if f is not coefficient[0]]
-                c = -_constant(coefficient[0], entry)
+                c = -real_constant(coefficient[0], entry)
                 text, prec = _product(rest, c)
                 return True, text, prec
         text, prec = render(e)
@@ -262,7 +291,7 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
             rest = []
             for f in factors:
                 if f.operator() is None and f.is_numeric():
-                    coefficient = _constant(f, entry) * (1 if coefficient is None else coefficient)
+                    coefficient = real_constant(f, entry) * (1 if coefficient is None else coefficient)
                 else:
                     rest.append(f)
             factors = rest

@@ -26,7 +26,11 @@ from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
+from ..numerics.expressions import real_constant, function_name
 from .kernel import FUNCTIONS
+
+#: what a user can do about a symbol or function without a value
+_HINT = "; give it a value in fixed="
 
 _COMPARISONS = {operator.gt: 'gt', operator.ge: 'ge', operator.lt: 'lt',
                 operator.le: 'le', operator.eq: 'eq', operator.ne: 'ne'}
@@ -92,7 +96,7 @@ def compile_expressions(expressions, inputs, entry="stability_map"):
         else:
             op = e.operator()
             if op is None:
-                r = emit(('const', _constant(e, entry)))
+                r = emit(('const', real_constant(e, entry, _HINT)))
             elif op is add_vararg or op is mul_vararg:
                 r = emit(('add' if op is add_vararg else 'mul',) + tuple(walk(o) for o in e.operands()))
             elif op is operator.pow:
@@ -105,9 +109,9 @@ def compile_expressions(expressions, inputs, entry="stability_map"):
                 left, right = e.operands()
                 r = emit(('cmp', _COMPARISONS[op], walk(left), walk(right)))
             elif not e.variables():
-                r = emit(('const', _constant(e, entry)))
-            elif _name(op) in FUNCTIONS:
-                r = emit(('call', _name(op)) + tuple(walk(o) for o in e.operands()))
+                r = emit(('const', real_constant(e, entry, _HINT)))
+            elif function_name(op) in FUNCTIONS:
+                r = emit(('call', function_name(op)) + tuple(walk(o) for o in e.operands()))
             else:
                 raise AnalysisError(f"{e} has no numerical value; give it a value in fixed=",
                                     entry=entry)
@@ -137,21 +141,3 @@ def _arguments(ins):
     if op in ('call', 'cmp'):
         return ins[2:]
     return ins[1:]
-
-
-def _name(op):
-    try:
-        return op.name()
-    except AttributeError:
-        return None
-
-
-def _constant(e, entry):
-    try:
-        z = complex(e)
-    except (TypeError, ValueError):
-        raise AnalysisError(f"{e} has no numerical value; give it a value in fixed=",
-                            entry=entry) from None
-    if z.imag != 0:
-        raise AnalysisError(f"the constant {e} is not real", entry=entry)
-    return float(z.real)
