@@ -64,6 +64,8 @@ import re
 from sage.functions import all as sage_functions
 from sage.misc.latex import latex
 from sage.symbolic.constants import pi, e as euler_e, I as imaginary_unit
+from sage.rings.cc import CC
+from sage.rings.real_mpfr import RR
 from sage.symbolic.ring import SR
 
 from .errors import ModelError, DescriptionError, brief
@@ -434,3 +436,38 @@ def check_mechanical_names(coordinates, parameters=(), error=ModelError, source=
     declared = [(str(q), 'coordinate', f'coordinates[{i}]') for i, q in enumerate(coordinates)]
     declared += [(str(p), 'parameter', f'parameters[{i}]') for i, p in enumerate(parameters or ())]
     check_names(declared, 'mechanical', error, source)
+
+
+def sage_numbers(value):
+    r"""
+    ``value`` (a number, expression, relation, dict or list of them) with
+    Python floats and complex numbers made Sage numbers: a Python float
+    inside a symbolic expression is an opaque object many Sage routines
+    cannot handle.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import sage_numbers
+        sage: x = var('x')
+        sage: v = sage_numbers({x: 0.5r, 'k': [2r, 1.5r*x]}); v[x], v['k']
+        (0.500000000000000, [2, 1.50000000000000*x])
+        sage: parent(v[x])
+        Real Field with 53 bits of precision
+    """
+    if isinstance(value, dict):
+        return {k: sage_numbers(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return type(value)(sage_numbers(v) for v in value)
+    if isinstance(value, float):
+        return RR(value)
+    if isinstance(value, complex):
+        return CC(value)
+    if not hasattr(value, 'operator'):
+        return value
+    if value.is_numeric():
+        return sage_numbers(value.pyobject()) if isinstance(value.pyobject(),
+                                                            (float, complex)) else value
+    operator = value.operator()
+    if operator is None:
+        return value
+    return operator(*[sage_numbers(a) for a in value.operands()])

@@ -47,7 +47,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import CircuitError
-from ..symbols import CIRCUIT_VARIABLES
+from ..symbols import CIRCUIT_VARIABLES, sage_numbers
 from ..dynamics.model import Model
 from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
@@ -462,7 +462,6 @@ class Circuit(NumericalMethods, Model):
             ...
             CircuitError: branches[1].value: a resistance of 0 is a short circuit: join its two nodes into one instead
         """
-        from sage.rings.real_mpfr import RR
         if not isinstance(values, dict):
             raise CircuitError(f"expected a dictionary {{symbol: value}}, got {values!r}",
                                entry="subs")
@@ -474,9 +473,7 @@ class Circuit(NumericalMethods, Model):
             if not symbol.is_symbol() or str(symbol) not in symbols:
                 raise CircuitError(f"{symbol} is not a parameter or element value of the "
                                    f"circuit; they are: {', '.join(symbols)}", entry="subs")
-            if isinstance(value, float):
-                value = RR(value)       # a Python float inside SR breaks matrix algebra
-            substitution[symbol] = SR(value)
+            substitution[symbol] = SR(sage_numbers(value))
         entries = []
         for b in self._branches:
             entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}

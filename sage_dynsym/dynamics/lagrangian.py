@@ -116,14 +116,12 @@ from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
 from sage.modules.free_module_element import vector
-from sage.rings.cc import CC
-from sage.rings.real_mpfr import RR
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
-                       constraint_multipliers)
+                       constraint_multipliers, sage_numbers)
 from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
 from ..numerics.methods import NumericalMethods
@@ -516,8 +514,8 @@ class Lagrangian(NumericalMethods, SageObject):
             ...
             ModelError: cannot substitute for the coordinate or velocity x
         """
-        args = [_sage_values(a) for a in args]
-        kwds = {k: _sage_values(v) for k, v in kwds.items()}
+        args = [sage_numbers(a) for a in args]
+        kwds = {k: sage_numbers(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
         for v in protected:
@@ -1383,29 +1381,3 @@ def _hashable(a):
 
 def _rebuild_lagrangian(expr, coordinates, velocities, keywords):
     return Lagrangian(expr, coordinates, velocities, **keywords)
-
-
-def _sage_values(value):
-    r"""
-    ``value`` (a number, expression, relation, dict or list of them) with
-    Python floats and complex numbers made Sage numbers: a Python float
-    inside a symbolic expression is an opaque object many Sage routines
-    cannot handle.
-    """
-    if isinstance(value, dict):
-        return {k: _sage_values(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return type(value)(_sage_values(v) for v in value)
-    if isinstance(value, float):
-        return RR(value)
-    if isinstance(value, complex):
-        return CC(value)
-    if not hasattr(value, 'operator'):
-        return value
-    if value.is_numeric():
-        return _sage_values(value.pyobject()) if isinstance(value.pyobject(),
-                                                            (float, complex)) else value
-    operator = value.operator()
-    if operator is None:
-        return value
-    return operator(*[_sage_values(a) for a in value.operands()])

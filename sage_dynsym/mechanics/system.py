@@ -36,7 +36,6 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
 import numbers
 
 from sage.matrix.constructor import matrix
-from sage.rings.real_mpfr import RR
 from sage.misc.cachefunc import cached_method
 from sage.misc.verbose import verbose
 from sage.modules.free_module_element import vector
@@ -44,7 +43,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import velocity, acceleration, t, time_derivative, check_mechanical_names
+from ..symbols import (velocity, acceleration, t, time_derivative, check_mechanical_names,
+                       sage_numbers)
 from ..io.fields import text as _text
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
@@ -471,10 +471,7 @@ class MechanicalSystem(Model):
                 raise ModelError(f"{symbol} is not a parameter of the system; its parameters "
                                  f"are: {', '.join(map(str, self._parameters)) or '(none)'}",
                                  entry="subs")
-            if isinstance(value, float):
-                # a Python float inside SR breaks matrix algebra; a Sage real does not
-                value = RR(value)
-            substitution[symbol] = SR(value)
+            substitution[symbol] = SR(sage_numbers(value))
 
         def sub(e):
             return SR(e).subs(substitution)
