@@ -801,7 +801,7 @@ class Lagrangian(NumericalMethods, SageObject):
             sage: C.expand() == L.lagrange_equations()
             True
         """
-        return equations_cse(self.lagrange_equations(), reserved_names=self._multipliers)
+        return equations_cse(self.lagrange_equations())
 
     def _conserved_energy(self):
         r"""
