@@ -621,6 +621,14 @@ def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
         sage: [D3] = lienard_chipart_conditions(p, lam, positive=[m1, m2, k1, k2, c1, c2])
         sage: D3.coefficient(c1*c2*k1*k2*m1*m2)
         -2
+
+    TESTS: a coefficient of the wrong sign settles it, whichever set of
+    coefficients is shorter::
+
+        sage: c, a = var('c a')
+        sage: lienard_chipart_conditions(lam^4 + 2*c*lam^3 + a*lam^2 - c*lam + 1, lam,
+        ....:                            positive=[c])
+        [-1]
     """
     a = _normalized_coefficients(poly, var)
     n = len(a) - 1
@@ -628,7 +636,13 @@ def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     deltas = _determinants(a, n - 1, budget) if det_idx else [None]
     first = [a[i] for i in range(n, -1, -2)]
     second = [a[n]] + [a[i] for i in range(n - 1, -1, -2)]
-    coeffs = min((first, second), key=lambda cs: len(_reduce([a[0]] + cs, positive)))
+    reduced = [_reduce([a[0]] + cs, positive) for cs in (first, second)]
+    for r in reduced:
+        # a coefficient of the wrong sign in either set: no root test needed
+        if len(r) == 1 and not isinstance(r[0], _Unexpanded) and len(r[0]) == 1 \
+                and _is_constant(r[0][0]):
+            return _to_sr(r)
+    coeffs = first if len(reduced[0]) <= len(reduced[1]) else second
     return _to_sr(_reduce([a[0]] + coeffs + [deltas[k] for k in det_idx], positive))
 
 
