@@ -6,7 +6,9 @@ solutions and invariant manifolds (Routh--Lyapunov, also the modified
 method with an extended function), their stability by the second
 variation and quadratic-form criteria, first approximation
 (linearization, force structure, characteristic polynomial,
-Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
+Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems,
+roots on the imaginary axis, flutter and divergence, the limit of small
+damping)
 and families of equilibria by elimination.
 """
 from .elimination import equilibrium_family, EquilibriumFamily
@@ -19,5 +21,7 @@ from .quadratic_forms import (sylvester_conditions, definiteness_conditions, for
 from .solving import solve_exactly, normalize
 from .quantifier_elimination import exists
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
+from .damping_limit import small_damping_limit, DampingLimit
+from .spectrum import spectrum_regions
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, ModifiedRouthLyapunov)

@@ -570,15 +570,31 @@ def hurwitz_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     (all conditions together are equivalent to `a > 0`; this function does
     no semi-algebraic reasoning beyond sign patterns of coefficients.)
 
+    A polynomial even in the variable (every coefficient of an odd power
+    zero: a conservative or gyroscopic system) can never be Hurwitz -- its
+    roots come in pairs `\pm\lambda` --; that is an error, pointing to the
+    conditions for a spectrum on the imaginary axis::
+
+        sage: hurwitz_conditions(m*lam^4 + c*lam^2 + k, lam)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: hurwitz_conditions: every coefficient of an odd power of lam is zero in lam^4*m + c*lam^2 + k: its roots come in pairs +-lam, so they are never all in the left half-plane (no asymptotic stability); for roots on the imaginary axis use conservative_stability_conditions
+
     TESTS::
 
-        sage: hurwitz_conditions(lam^2 + 1, lam)
-        [0]
         sage: hurwitz_conditions(-lam - 1, lam)
         []
+        sage: hurwitz_conditions(lam^3 + lam, lam)
+        [0]
     """
     a = _normalized_coefficients(poly, var)
     n = len(a) - 1
+    if all(a[i] == 0 for i in range(n + 1) if (n - i) % 2):
+        raise AnalysisError(f"every coefficient of an odd power of {var} is zero in {poly}: "
+                            f"its roots come in pairs +-{var}, so they are never all in the "
+                            "left half-plane (no asymptotic stability); for roots on the "
+                            "imaginary axis use conservative_stability_conditions",
+                            entry="hurwitz_conditions")
     deltas = _determinants(a, n - 1, budget)
     conds = [a[0]] + deltas[1:n] + [a[n]]
     return _to_sr(_reduce(conds, positive))

@@ -444,7 +444,9 @@ class LinearSystem(SageObject):
 
     def kelvin_chetaev(self, positive=()):
         r"""
-        The verdict of the Kelvin--Chetaev theorems, see
+        The stability verdict from the structure of forces and the first
+        approximation (Kelvin--Chetaev theorems, gyroscopic stabilization,
+        circulatory forces), see
         :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`.
 
         EXAMPLES::
@@ -459,6 +461,25 @@ class LinearSystem(SageObject):
         self._second()
         return kelvin_chetaev(self.M(), self.D(), self.G(), self.K(), self.P(),
                               positive=positive)
+
+    def small_damping_limit(self, damping, positive=()):
+        r"""
+        The stability as damping of the shape ``damping`` vanishes, beside
+        the undamped system (the damping `D` of this system is replaced):
+        see :func:`~sage_dynsym.analysis.damping_limit.small_damping_limit`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: k = var('k')
+            sage: Ls = LinearSystem([var('x')], M=[[1]], S=[[0]], W=[[k]])
+            sage: Ls.small_damping_limit(matrix([[1]])).region()
+            [[k > 0]]
+        """
+        from .damping_limit import small_damping_limit
+        self._second()
+        return small_damping_limit(self.M(), damping, self.G(), self.K(), self.P(),
+                                   positive=positive)
 
     def linear_integrals(self):
         r"""
