@@ -306,10 +306,11 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
         K_definite = definiteness_conditions(K, positive=positive)
         D_semidefinite = semidefiniteness_conditions(D, positive=positive)
         if D_semidefinite is not None:
-            # Kelvin's theorems: with D >= 0 asymptotic stability needs K > 0,
-            # and so does any stability without gyroscopic forces
+            # Kelvin's theorems: with D >= 0 and det K != 0 asymptotic stability
+            # needs K > 0, and so does any stability without gyroscopic forces
             outside = negation([D_semidefinite], positive) or []
-            needs_K = ([K_definite] if K_definite is not None else []) + outside
+            needs_K = ([K_definite] if K_definite is not None else []) + outside + \
+                [[_det(K) == 0]]
             asymptotic = intersection(asymptotic, needs_K, positive) if asymptotic else None
             if G.is_zero() and marginal:
                 marginal = intersection(marginal, needs_K, positive)

@@ -231,7 +231,9 @@ class SpectrumRegions(SageObject):
                 conds += real_negative_roots_conditions(to_sr(_scaled(h, M)), mu, positive)
                 boundaries['divergence'] += _zero_set(to_sr(h.subs({M: 0})), positive)
                 if h.degree(M) >= 2:
-                    disc = h.polynomial(M).discriminant()
+                    # the discriminant, as a resultant in the ring (Singular)
+                    lc = h.parent()(h.polynomial(M).leading_coefficient())
+                    disc = h.resultant(h.derivative(M), M) // lc
                     boundaries['flutter'] += _zero_set(to_sr(disc), positive)
             if rest.degree(L) > 0:
                 conds += lienard_chipart_conditions(to_sr(_scaled(rest, L)), lam, positive)
