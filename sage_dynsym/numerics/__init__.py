@@ -9,6 +9,7 @@ EXAMPLES::
 """
 from .codegen import generate_code, GeneratedCode
 from .energy import quadratic_energy
+from .events import Event
 from .form import NumericalForm
 from .methods import NumericalMethods
 from .rhs import numerical_rhs, RightHandSide
@@ -16,4 +17,4 @@ from .simulate import simulate
 from .trajectory import Trajectory
 
 __all__ = ['NumericalMethods', 'NumericalForm', 'numerical_rhs', 'RightHandSide', 'simulate',
-           'Trajectory', 'generate_code', 'GeneratedCode', 'quadratic_energy']
+           'Trajectory', 'generate_code', 'GeneratedCode', 'quadratic_energy', 'Event']
