@@ -18,4 +18,5 @@ scheduler when there is one, or plain NumPy in this process:
 See :mod:`sage_dynsym.scale.cluster` for where the chunks run.
 """
 from .maps import stability_map, StabilityMap, model_linear_system
+from .kernel import stability_class
 from .sweep import sweep, Sweep
