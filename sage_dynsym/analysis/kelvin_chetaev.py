@@ -165,7 +165,7 @@ def _reasons(M, D, G, K, P, spectrum, positive):
         "(Lyapunov's theorem on the first approximation)"
     unstable = []
     if odd:
-        negative = _negative_eigenvalues(K)
+        negative = 1 if n == 1 else _negative_eigenvalues(K)
         degree = f" ({negative})" if negative is not None else ""
         where = "" if odd_always else "where det K < 0 "
         unstable.append(f"{where}the potential energy has an odd degree of instability"
