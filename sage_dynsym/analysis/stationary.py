@@ -575,6 +575,23 @@ class StationarySolution(SageObject):
              ({theta1: pi, theta2: pi}, 'unstable')]
             sage: stationary_motions(L)[3].stability(positive=[m, l, g]).method()
             'first approximation'
+
+        Where neither method decides, the first approximation may still
+        give stability with simple roots on the imaginary axis: the sleeping
+        top, gyroscopically stabilized for `p^2 > 4Amgl` (the gap `2Amgl <
+        p^2 < 4Amgl` is unstable, but no coefficient shows it)::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+            sage: alpha, beta, phi, A, C = var('alpha beta phi A C')
+            sage: top = RigidBody('top', rotations=[(1, alpha), (2, beta), (3, phi)],
+            ....:                 mass_center=[0, 0, l], mass=m, inertia=diagonal_matrix([A, A, C]))
+            sage: R = MechanicalSystem([top], [alpha, beta, phi], parameters=[A, C, m, g, l],
+            ....:     force_function=UniformGravity([0, 0, -g])).lagrangian().routh([phi])
+            sage: sols = stationary_motions(R, positive=[A, C, m, g, l])
+            sage: v = next(s for s in sols if s.point() == {alpha: 0, beta: 0}).stability()
+            sage: [(case.verdict(), case.region()) for case in v.cases()]
+            [('unstable', [[2*A*g*l*m - p_phi^2 > 0]]),
+             ('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]])]
         """
         positive = self._positive(positive)
         cases = []
@@ -605,6 +622,17 @@ class StationarySolution(SageObject):
                 if alts:
                     cases.append(StabilityVerdict(verdict, why, method='first approximation',
                                                   region=alts))
+            if not region:
+                # where neither decides: roots simple on the imaginary axis
+                alts = [a for a in (simplify_conjunction(existence + alt, positive)
+                                    for alt in _marginal(lin, positive)) if a is not None]
+                if alts:
+                    cases.append(StabilityVerdict(
+                        'stable in first approximation', "the roots of the characteristic "
+                        "polynomial on the imaginary axis are simple (or semisimple), the "
+                        "others have negative real parts: the linearized system is stable; "
+                        "the nonlinear terms decide (critical case)",
+                        method='first approximation', region=alts))
         for case in cases:
             if any(set(map(str, alt)) <= set(map(str, existence)) for alt in case.region()):
                 return case
@@ -673,6 +701,20 @@ def _first_approximation(lin, positive):
         if cond is not None:
             asymptotic.append(cond)
     return asymptotic, unstable
+
+
+def _marginal(lin, positive):
+    r"""The region where ``lin`` is stable in first approximation, not
+    asymptotically (:mod:`.spectrum`); ``[]`` if nowhere or not decided."""
+    from .spectrum import spectrum_regions
+    lam = SR.symbol()
+    p = lin.characteristic_polynomial(lam, positive=positive)
+    if not SR(p).has(lam):
+        return []
+    try:
+        return spectrum_regions(p, lam, positive, matrix=lin.jacobian()).marginal() or []
+    except (AnalysisError, ArithmeticError, ValueError, TypeError, ZeroDivisionError):
+        return []
 
 
 class StationarySolutions(SolutionList):

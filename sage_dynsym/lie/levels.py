@@ -122,7 +122,18 @@ class InvariantLevel:
 
     def lift(self, f):
         r"""A polynomial of the search's ring (parameters and variables) as
-        an element of the ring over the field of the parameters."""
+        an element of the ring over the field of the parameters.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import _Search
+            sage: from sage_dynsym.lie.levels import InvariantLevel
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables()
+            sage: level = InvariantLevel(_Search(E, (M1^2 + M2^2 + M3^2)/2), {M1^2 + M2^2 + M3^2: 1})
+            sage: level.lift(level.context.ring('M1^2'))
+            M1^2
+        """
         P = self.context
         n = P.np
         parameters = [P.field(a) for a in P.coefficients.gens()] if n else []
@@ -135,13 +146,35 @@ class InvariantLevel:
         return result
 
     def symbolic(self, f):
-        r"""A polynomial of the level's ring as a symbolic expression."""
+        r"""A polynomial of the level's ring as a symbolic expression.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import _Search
+            sage: from sage_dynsym.lie.levels import InvariantLevel
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables()
+            sage: level = InvariantLevel(_Search(E, (M1^2 + M2^2 + M3^2)/2), {M1^2 + M2^2 + M3^2: 1})
+            sage: level.symbolic(level.ring('M1*M2 - 1')).parent()
+            Symbolic Ring
+        """
         P = self.context
         return sum((SR(c) * SR(P.to_sr({tuple(m): 1})) for m, c in
                     zip(f.exponents(), f.coefficients())), SR(0))
 
     def reduce(self, f):
-        r"""The normal form of ``f`` (in the level's ring)."""
+        r"""The normal form of ``f`` (in the level's ring).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import _Search
+            sage: from sage_dynsym.lie.levels import InvariantLevel
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables()
+            sage: level = InvariantLevel(_Search(E, (M1^2 + M2^2 + M3^2)/2), {M1^2 + M2^2 + M3^2: 1})
+            sage: level.reduce(level.ring('M1^2 + 2'))
+            -M2^2 - M3^2 + 3
+        """
         return f.reduce(self._gb)
 
     def _true_bracket(self, f):
@@ -153,12 +186,34 @@ class InvariantLevel:
 
     def is_standard(self, m):
         r"""Whether the monomial (exponent tuple) is not divisible by a
-        leading monomial of the Gröbner basis."""
+        leading monomial of the Gröbner basis.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import _Search
+            sage: from sage_dynsym.lie.levels import InvariantLevel
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables()
+            sage: level = InvariantLevel(_Search(E, (M1^2 + M2^2 + M3^2)/2), {M1^2 + M2^2 + M3^2: 1})
+            sage: level.is_standard((2, 0, 0)), level.is_standard((1, 1, 0))
+            (False, True)
+        """
         return not any(all(a >= b for a, b in zip(m, lead)) for lead in self._leading)
 
     def vector(self, f):
         r"""The normal form of a polynomial of the search's ring, as a vector
-        (constant dropped)."""
+        (constant dropped).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import _Search
+            sage: from sage_dynsym.lie.levels import InvariantLevel
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables()
+            sage: level = InvariantLevel(_Search(E, (M1^2 + M2^2 + M3^2)/2), {M1^2 + M2^2 + M3^2: 1})
+            sage: sorted(level.vector(level.context.ring('M1^2')).items())
+            [((0, 0, 2), -1), ((0, 2, 0), -1)]
+        """
         g = self.reduce(self.lift(f))
         return {tuple(m): c for m, c in zip(g.exponents(), g.coefficients()) if any(m)}
 
@@ -168,6 +223,18 @@ class InvariantLevel:
         monomials of degree `1..d` (images cleared of the denominators of
         the parameters by one common factor, which leaves the kernel as it
         is). Cached.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.algebras import lie_algebra
+            sage: from sage_dynsym.lie.integrals import _Search
+            sage: from sage_dynsym.lie.levels import InvariantLevel
+            sage: E = lie_algebra('so3'); M1, M2, M3 = E.variables()
+            sage: level = InvariantLevel(_Search(E, (M1^2 + M2^2 + M3^2)/2), {M1^2 + M2^2 + M3^2: 1})
+            sage: level.problem(2).columns        # the standard monomials of degree <= 2
+            [(1, 1, 0), (1, 0, 1), (0, 2, 0), (0, 1, 1), (0, 0, 2), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+            sage: len(level.problem(2).kernel())  # H is a Casimir: all are integrals
+            8
         """
         if d not in self._problems:
             P = self.context
