@@ -343,7 +343,7 @@ class StabilityStudy(SageObject):
             sage: print(St.note())
             no symbolic conditions (...): stability from the roots; the region plot is a stability map of the characteristic roots (sage_dynsym.scale.stability_map)
             sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 4), (-1, 2))
-            Graphics object consisting of 2 graphics primitives
+            Graphics object consisting of 4 graphics primitives
 
         TESTS:
 
