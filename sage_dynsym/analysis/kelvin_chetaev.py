@@ -35,9 +35,10 @@ leaves the nonlinear system open (a critical case), while ``'stable'``
 comes from the energy, a Lyapunov function of the nonlinear mechanical
 system as well. The parts are disjoint, in this precedence:
 asymptotically stable, stable, stable in first approximation, undecided,
-unstable (the rest); the boundaries belong to none. The kinetic matrix is
-required to be positive definite: its conditions, if any, are part of every
-region.
+unstable (the rest); the boundaries belong to none. The conditions for
+the kinetic matrix to be positive definite, if any, are part of every
+region; with an indefinite (nonsingular) `M` -- not a mechanical system --
+the first approximation alone decides.
 
 EXAMPLES:
 
@@ -113,6 +114,7 @@ from .determinants import fraction_free_det
 from .quadratic_forms import (definiteness_conditions, semidefiniteness_conditions,
                               _det)
 from .regions import partition, simplify_region, negation, intersection, prune_empty
+from .solving import normalize
 from .spectrum import spectrum_regions
 from .verdict import StabilityVerdict
 
@@ -153,10 +155,12 @@ def _possible(conditions):
     return conditions is not None
 
 
-def _reasons(M, D, G, K, P, spectrum, positive):
-    r"""The reason of each verdict, from the structure of forces."""
+def _reasons(M, D, G, K, P, spectrum, positive, mechanical=True):
+    r"""The reason of each verdict, from the structure of forces (the
+    theorems on it only for a mechanical system, `M > 0`)."""
     n = M.nrows()
-    has_D, has_G, has_P = not D.is_zero(), not G.is_zero(), not P.is_zero()
+    has_D, has_G = not D.is_zero(), not G.is_zero()
+    has_P = not P.is_zero() or not mechanical       # no Kelvin-Chetaev theorems then
     complete = has_D and _possible(definiteness_conditions(D, positive=positive))
     detK = _det(K)
     odd = not has_P and _possible(simplify_region([[detK < 0]], positive) or None)
@@ -177,7 +181,7 @@ def _reasons(M, D, G, K, P, spectrum, positive):
     if not has_P and not has_G and not odd_always and n > 1:
         unstable.append("an even degree of instability without gyroscopic forces stays "
                         "unstable (Kelvin-Chetaev, 4th theorem)")
-    if has_P and not has_D:
+    if has_P and mechanical and not has_D:
         unstable.append("circulatory forces beyond the flutter boundary (two roots meet "
                         "on the imaginary axis and leave it) or the divergence boundary "
                         "(a real root through zero)")
@@ -203,7 +207,7 @@ def _reasons(M, D, G, K, P, spectrum, positive):
         marginal += "; where K is not positive definite this is gyroscopic stabilization " \
             "of an even degree of instability (Thomson-Tait-Chetaev), destroyed by any " \
             "complete dissipation (Kelvin-Chetaev, 4th theorem)"
-    if has_P and not has_D:
+    if has_P and mechanical and not has_D:
         marginal += "; circulatory forces: inside the flutter and divergence boundaries " \
             "(small damping may lower the flutter boundary: small_damping_limit)"
     if not has_D and spectrum.symmetric_degree() == 0:
@@ -279,11 +283,17 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
           [[16*g^4 + 24*g^2 - 4*p^2 + 1 > 0, g*p == 0]]),
          ('unstable', [[16*g^4 + 24*g^2 - 4*p^2 + 1 < 0], [p != 0, g != 0]])]
 
-    TESTS::
+    TESTS: an indefinite kinetic matrix (not a mechanical system: the first
+    approximation alone), and a singular one::
 
         sage: kelvin_chetaev(matrix([[1, 0], [0, -1]]), zero_matrix(2), zero_matrix(2),
         ....:                identity_matrix(2)).verdict()
-        'undecided'
+        'unstable'
+        sage: kelvin_chetaev(matrix([[1, 0], [0, 0]]), zero_matrix(2), zero_matrix(2),
+        ....:                identity_matrix(2))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: kelvin_chetaev: the kinetic matrix M = [(1, 0), (0, 0)] is singular: the equations are not of second order in every coordinate
         sage: kelvin_chetaev(identity_matrix(2), zero_matrix(2), zero_matrix(2), matrix([[1]]))
         Traceback (most recent call last):
         ...
@@ -292,9 +302,15 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     M, D, G, K, P = _matrices(M, D, G, K, P)
     positive = list(positive)
     kinetic = definiteness_conditions(M, positive=positive)
-    if kinetic is None:
-        return StabilityVerdict('undecided', "the kinetic matrix M is not positive definite: "
-                                "not a mechanical system", region=[[]], positive=positive)
+    mechanical = kinetic is not None
+    if not mechanical:
+        # not a mechanical system: the first approximation still decides,
+        # the theorems on the structure of forces do not apply
+        if normalize(_det(M)).is_zero():
+            raise AnalysisError(f"the kinetic matrix M = {list(M)} is singular: the "
+                                "equations are not of second order in every coordinate",
+                                entry="kelvin_chetaev")
+        kinetic = []
     domain = [kinetic]
     S, W = D + 2 * G, K + P
     lam = SR.symbol()
@@ -302,7 +318,7 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     spectrum = spectrum_regions(chi, lam, positive, matrix=state_matrix(M, S, W))
     asymptotic, marginal = spectrum.asymptotic(), spectrum.marginal()
     kelvin = None
-    if P.is_zero():
+    if mechanical and P.is_zero():
         K_definite = definiteness_conditions(K, positive=positive)
         D_semidefinite = semidefiniteness_conditions(D, positive=positive)
         if D_semidefinite is not None:
@@ -323,7 +339,7 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
              for name, region in partition(parts, rest='unstable', domain=domain,
                                            positive=positive)]
     found = [(name, region) for name, region in found if region != []]
-    reasons = _reasons(M, D, G, K, P, spectrum, positive)
+    reasons = _reasons(M, D, G, K, P, spectrum, positive, mechanical)
     boundaries = spectrum.boundaries()
     cases = []
     for name, region in found:
