@@ -19,7 +19,7 @@ order or as they complete. Where it runs is given by ``client``:
   thread each, on 127.0.0.1, without dashboard), one per core unless
   ``workers=`` says otherwise (giving ``workers=`` with ``client=None``
   also asks for one). The workers are started as fresh Python processes
-  (``python -m dask spec``), not by :mod:`multiprocessing`: they never
+  (``python -m dask``), not by :mod:`multiprocessing`: they never
   import the user's script, so a plain script without an
   ``if __name__ == '__main__':`` guard works;
 - a :class:`dask.distributed.Client` -- used as given (e.g. connected to a
@@ -198,8 +198,9 @@ def local_cluster(workers):
     A local Dask cluster of ``workers`` worker processes (one thread each,
     on 127.0.0.1, no dashboard), its scheduler in this process.
 
-    The workers are fresh interpreters (``python -m dask spec``, each with a
-    nanny that restarts it if it dies), not children made by
+    The workers are fresh interpreters (``python -m dask``, one process
+    each, without a nanny: a chunk lost with a worker is computed again by
+    another one), not children made by
     :mod:`multiprocessing`: the ``spawn`` and ``forkserver`` start methods
     import the main script again in every child, which runs an unguarded
     script once per worker and fails; ``fork`` is unsafe in a process with
@@ -217,7 +218,7 @@ def local_cluster(workers):
     from distributed.deploy.subprocess import SubprocessWorker
     quiet = logging.ERROR
     worker = {'cls': SubprocessWorker,
-              'options': {'worker_class': 'distributed.Nanny',
+              'options': {'worker_class': 'distributed.Worker',
                           'worker_kwargs': {'nthreads': 1, 'host': '127.0.0.1',
                                             'silence_logs': quiet}}}
     scheduler = {'cls': Scheduler,
