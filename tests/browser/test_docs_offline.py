@@ -1,0 +1,231 @@
+"""
+The built documentation works offline and reads well.
+
+Every HTML page and stylesheet of the build is read for a script,
+stylesheet, font, image or frame loaded from another host (links a reader
+clicks are fine), and every local script or stylesheet a page loads must
+exist in the build. Then headless Chromium opens pages from the files with
+every request to another host blocked and recorded: the method page must
+show its formulas typeset by MathJax (no TeX source left, no TeX error),
+having asked for nothing outside; and no code example of any page may be
+wider than its box (the examples wrap). Screenshots are kept in
+tests/browser/artifacts/.
+
+The pages are the build of ``make docs`` (doc/_build/html), which
+``make test`` runs just before; if that build is missing or older than a
+source of the documentation, it is built here.
+"""
+import functools
+import os
+import re
+import subprocess
+import sys
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.parse import urlsplit
+
+import pytest
+
+pytest.importorskip("playwright.sync_api")
+
+ROOT = Path(__file__).resolve().parents[2]
+DOC = ROOT / "doc"
+
+#: an address on another host: ``http(s)://...``, ``//host/...`` or any other scheme
+#: that goes over the network
+EXTERNAL = re.compile(r"^\s*(?:(?:https?|ftp|wss?):)?//", re.IGNORECASE)
+#: where a stylesheet loads something: ``url(...)`` and ``@import``
+CSS_LOADS = re.compile(r"""url\(\s*['"]?([^'")\s]*)|@import\s+['"]([^'"]*)""", re.IGNORECASE)
+#: the attributes by which each tag loads a resource (``<a href>`` is a link, not a load)
+LOADING = {"script": ("src",), "link": ("href",), "img": ("src", "srcset"),
+           "source": ("src", "srcset"), "iframe": ("src",), "frame": ("src",),
+           "embed": ("src",), "object": ("data",), "audio": ("src",),
+           "video": ("src", "poster"), "track": ("src",), "input": ("src",)}
+
+
+def _sources():
+    """The files the HTML is built from: the pages, the configuration, the CSS."""
+    for path in DOC.rglob("*"):
+        if path.is_file() and not {"_build", "api"} & set(path.relative_to(DOC).parts):
+            yield path
+
+
+@pytest.fixture(scope="module")
+def html(tmp_path_factory):
+    """The folder of the built HTML documentation."""
+    built = DOC / "_build" / "html"
+    index = built / "index.html"
+    if index.exists() and all(p.stat().st_mtime <= index.stat().st_mtime for p in _sources()):
+        return built
+    out = tmp_path_factory.mktemp("docs") / "html"
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")]))
+    run = subprocess.run([sys.executable, "-m", "sphinx", "-W", "-q", "-b", "html", str(DOC), str(out)],
+                         env=env, capture_output=True, text=True, timeout=1800)
+    assert run.returncode == 0, "the documentation does not build:\n" + run.stderr[-4000:]
+    return out
+
+
+class _Loads(HTMLParser):
+    """The addresses an HTML page loads: (tag, address) pairs, and the CSS in it."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.loads, self.css, self._in_style = [], [], False
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        for name in LOADING.get(tag, ()):
+            for address in (attrs.get(name) or "").split(","):
+                if address.strip():
+                    self.loads.append((tag, address.strip().split()[0]))
+        if attrs.get("style"):
+            self.css.append(attrs["style"])
+        self._in_style = tag == "style"
+
+    def handle_endtag(self, tag):
+        self._in_style = False
+
+    def handle_data(self, data):
+        if self._in_style:
+            self.css.append(data)
+
+
+class _Links(HTMLParser):
+    """The ``<a href>`` of an HTML page."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.links = []
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "a" and dict(attrs).get("href"):
+            self.links.append((tag, dict(attrs)["href"]))
+
+    @classmethod
+    def of(cls, path):
+        parser = cls()
+        parser.feed(path.read_text(encoding="utf-8"))
+        return parser.links
+
+
+def _css_loads(text):
+    return [a or b for a, b in CSS_LOADS.findall(text)]
+
+
+@functools.lru_cache(maxsize=None)
+def _page_loads(path):
+    parser = _Loads()
+    parser.feed(path.read_text(encoding="utf-8"))
+    return parser.loads + [("style", a) for css in parser.css for a in _css_loads(css)]
+
+
+def _pages(html):
+    return sorted(html.rglob("*.html"))
+
+
+def test_the_reference_has_one_page_per_module(html):
+    layers = sorted(html.glob("reference_*.html"))
+    assert layers
+    for layer in layers:
+        links = {a for tag, a in _Links.of(layer) if a.startswith("api/")}
+        assert links, f"{layer.name} links to no module page"
+        for link in links:
+            assert (html / urlsplit(link).path).is_file(), f"{layer.name}: {link} not built"
+    # no page near the size of the former single reference page (3.4 MB)
+    assert max(p.stat().st_size for p in _pages(html)) < 1_000_000
+
+
+def test_no_page_loads_anything_from_another_host(html):
+    offenders = [f"{page.relative_to(html)}: <{tag}> {address}"
+                 for page in _pages(html) for tag, address in _page_loads(page)
+                 if EXTERNAL.match(address)]
+    offenders += [f"{css.relative_to(html)}: {address}"
+                  for css in sorted(html.rglob("*.css"))
+                  for address in _css_loads(css.read_text(encoding="utf-8", errors="replace"))
+                  if EXTERNAL.match(address)]
+    assert not offenders, "loaded from another host:\n" + "\n".join(offenders)
+
+
+def test_every_local_script_and_stylesheet_is_in_the_build(html):
+    missing = []
+    for page in _pages(html):
+        for tag, address in _page_loads(page):
+            if tag in ("script", "link") and not EXTERNAL.match(address):
+                target = urlsplit(address).path
+                if target and not (page.parent / target).is_file():
+                    missing.append(f"{page.relative_to(html)}: {address}")
+    assert not missing, "\n".join(missing)
+    # MathJax itself is among them
+    scripts = [a for tag, a in _page_loads(html / "method.html") if tag == "script"]
+    assert any("mathjax" in a.lower() for a in scripts), scripts
+
+
+def _block_other_hosts(context):
+    """Abort every request that leaves this machine; return the list of those asked for."""
+    asked = []
+
+    def route(r):
+        url = urlsplit(r.request.url)
+        if url.scheme in ("file", "data", "blob") or url.hostname in ("localhost", "127.0.0.1", "::1"):
+            r.continue_()
+        else:
+            asked.append(r.request.url)
+            r.abort()
+
+    context.route("**/*", route)
+    return asked
+
+
+def test_method_page_shows_typeset_math_offline(html, launch, artifacts):
+    context = launch()
+    asked = _block_other_hosts(context)
+    page = context.new_page()
+    errors = []
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.goto((html / "method.html").as_uri())
+    # MathJax has typeset the page when its start-up promise resolves; the
+    # page's load event waited for the scripts, so MathJax is there or never will be
+    started = page.evaluate("() => Boolean(window.MathJax && MathJax.startup)")
+    assert started, "MathJax did not load; requests to other hosts: " + ", ".join(asked)
+    page.evaluate("() => MathJax.startup.promise")
+    formulas = page.locator(".math").count()
+    assert formulas > 100                      # the method page is mostly formulas
+    untypeset = page.evaluate(
+        "() => [...document.querySelectorAll('.math')]"
+        ".filter(e => !e.querySelector('mjx-container')).map(e => e.textContent.slice(0, 80))")
+    assert not untypeset, untypeset[:5]
+    assert page.locator("mjx-merror").count() == 0, "TeX errors on the page"
+    text = page.evaluate("() => document.body.innerText")
+    for tex in ("\\(", "\\[", "$$", "\\frac", "\\partial"):
+        assert tex not in text, f"TeX source {tex!r} visible"
+    page.goto((html / "method.html").as_uri() + "#eq-lagrange")
+    page.evaluate("() => MathJax.startup.promise")
+    page.screenshot(path=str(artifacts / "docs_method_offline.png"))
+    assert not asked, "requests to other hosts: " + ", ".join(asked)
+    assert not errors, errors
+
+
+def test_no_code_example_is_wider_than_the_page(html, launch, artifacts):
+    # every page written by hand, and the reference pages with the most code
+    # (the CSS that wraps code is the same on all pages)
+    modules = sorted((html / "api").glob("*.html"), key=lambda p: p.stat().st_size)
+    pages = sorted(html.glob("*.html")) + modules[-5:]
+    # the layout of code does not depend on scripts: without them the pages load fast
+    context = launch(java_script_enabled=False)
+    asked = _block_other_hosts(context)
+    page = context.new_page()
+    too_wide = []
+    for path in pages:
+        page.goto(path.as_uri())
+        too_wide += [f"{path.relative_to(html)}: {line}" for line in page.evaluate(
+            "() => [...document.querySelectorAll('pre')]"
+            ".filter(e => e.scrollWidth > e.clientWidth + 1)"
+            ".map(e => e.textContent.split('\\n').reduce((a, b) => a.length >= b.length ? a : b))")]
+    assert not too_wide, f"{len(too_wide)} code blocks cut:\n" + "\n".join(too_wide[:20])
+    assert not asked, "requests to other hosts: " + ", ".join(asked)
+    # what a reader sees: the largest reference page, its examples wrapped
+    page = launch().new_page()
+    page.goto(modules[-1].as_uri())
+    page.evaluate("() => MathJax.startup.promise")
+    page.screenshot(path=str(artifacts / "docs_reference_code.png"))
