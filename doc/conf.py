@@ -6,10 +6,12 @@
 # The .rst pages are also doctested by ``sage -t`` (``.. linkall``).
 #
 # The built pages load nothing from another host (the documentation is read
-# offline too; tests/browser/test_docs_offline.py checks it): MathJax comes
-# from the ``sphinx-mathjax-offline`` package, which copies it into
-# ``_static/mathjax``, and the theme brings its own assets.
+# offline too; tests/browser/test_docs_offline.py checks it): MathJax 3 comes
+# from the files of the ``sphinx-mathjax-offline`` package, copied into
+# ``_static/mathjax`` (its Sphinx extension is not used: it does not declare
+# itself safe for parallel builds), and the theme brings its own assets.
 import glob
+import importlib.util
 import os
 import shutil
 import sys
@@ -19,8 +21,11 @@ sys.path.insert(0, os.path.abspath(os.path.join(HERE, "..")))
 
 project = "sage_dynsym"
 author = "the sage_dynsym developers"
-extensions = ["sphinx.ext.autodoc", "sphinx.ext.autosummary", "sphinx.ext.mathjax",
-              "sphinx-mathjax-offline"]
+extensions = ["sphinx.ext.autodoc", "sphinx.ext.autosummary", "sphinx.ext.mathjax"]
+# a folder holding mathjax/ (tex-chtml.js, its components and fonts)
+MATHJAX_PARENT = os.path.join(
+    importlib.util.find_spec("sphinx-mathjax-offline").submodule_search_locations[0], "static")
+mathjax_path = "mathjax/tex-chtml.js"
 # the macros Sage docstrings use
 mathjax3_config = {"tex": {"macros": {"QQ": r"\mathbb{Q}", "ZZ": r"\mathbb{Z}", "RR": r"\mathbb{R}", "CC": r"\mathbb{C}"}}}
 master_doc = "index"
@@ -42,7 +47,7 @@ autosummary_generate = False
 
 html_theme = "furo"
 html_title = "sage_dynsym"
-html_static_path = ["_static"]
+html_static_path = ["_static", MATHJAX_PARENT]
 # code examples and wide formulas wrap or scroll inside the page, never cut
 html_css_files = ["sage_dynsym.css"]
 

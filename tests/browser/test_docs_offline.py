@@ -206,7 +206,31 @@ def test_method_page_shows_typeset_math_offline(html, launch, artifacts):
     assert not errors, errors
 
 
-def test_no_code_example_is_wider_than_the_page(html, launch, artifacts):
+#: the text that sticks out of the column of a page (the theme would clip it),
+#: unless it is in a box that scrolls (as tables and displayed formulas are)
+STICKING_OUT = """() => {
+    const column = document.querySelector('article') || document.body;
+    const right = column.getBoundingClientRect().right + 1;
+    const inScrollBox = e => {
+        for (let a = e.parentElement; a && a !== column; a = a.parentElement) {
+            if (['auto', 'scroll'].includes(getComputedStyle(a).overflowX)) return true;
+        }
+        return false;
+    };
+    const walker = document.createTreeWalker(column, NodeFilter.SHOW_TEXT);
+    const range = document.createRange(), out = [];
+    for (let t = walker.nextNode(); t; t = walker.nextNode()) {
+        if (!t.textContent.trim()) continue;
+        range.selectNodeContents(t);
+        if (range.getBoundingClientRect().right > right && !inScrollBox(t)) {
+            out.push(t.textContent.trim().slice(0, 80));
+        }
+    }
+    return out;
+}"""
+
+
+def test_no_code_example_or_text_is_cut(html, launch, artifacts):
     # every page written by hand, and the reference pages with the most code
     # (the CSS that wraps code is the same on all pages)
     modules = sorted((html / "api").glob("*.html"), key=lambda p: p.stat().st_size)
@@ -215,14 +239,16 @@ def test_no_code_example_is_wider_than_the_page(html, launch, artifacts):
     context = launch(java_script_enabled=False)
     asked = _block_other_hosts(context)
     page = context.new_page()
-    too_wide = []
+    too_wide, sticking_out = [], []
     for path in pages:
         page.goto(path.as_uri())
         too_wide += [f"{path.relative_to(html)}: {line}" for line in page.evaluate(
             "() => [...document.querySelectorAll('pre')]"
             ".filter(e => e.scrollWidth > e.clientWidth + 1)"
             ".map(e => e.textContent.split('\\n').reduce((a, b) => a.length >= b.length ? a : b))")]
+        sticking_out += [f"{path.relative_to(html)}: {what}" for what in page.evaluate(STICKING_OUT)]
     assert not too_wide, f"{len(too_wide)} code blocks cut:\n" + "\n".join(too_wide[:20])
+    assert not sticking_out, "wider than the text:\n" + "\n".join(sticking_out[:20])
     assert not asked, "requests to other hosts: " + ", ".join(asked)
     # what a reader sees: the largest reference page, its examples wrapped
     page = launch().new_page()
