@@ -7,13 +7,14 @@ clicks are fine), and every local script or stylesheet a page loads must
 exist in the build. Then headless Chromium opens pages from the files with
 every request to another host blocked and recorded: the method page must
 show its formulas typeset by MathJax (no TeX source left, no TeX error),
-having asked for nothing outside; and no code example of any page may be
-wider than its box (the examples wrap). Screenshots are kept in
+having asked for nothing outside; and on the pages written by hand and the
+largest reference pages no code example may be wider than its box (the
+examples wrap), nor any text stick out of the column. Screenshots are kept in
 tests/browser/artifacts/.
 
 The pages are the build of ``make docs`` (doc/_build/html), which
 ``make test`` runs just before; if that build is missing or older than a
-source of the documentation, it is built here.
+file of doc/ (pages, configuration, stylesheet), it is built here.
 """
 import functools
 import os
@@ -31,8 +32,7 @@ pytest.importorskip("playwright.sync_api")
 ROOT = Path(__file__).resolve().parents[2]
 DOC = ROOT / "doc"
 
-#: an address on another host: ``http(s)://...``, ``//host/...`` or any other scheme
-#: that goes over the network
+#: an address on another host: ``http(s)://``, ``ftp://``, ``ws(s)://`` or ``//host/``
 EXTERNAL = re.compile(r"^\s*(?:(?:https?|ftp|wss?):)?//", re.IGNORECASE)
 #: where a stylesheet loads something: ``url(...)`` and ``@import``
 CSS_LOADS = re.compile(r"""url\(\s*['"]?([^'")\s]*)|@import\s+['"]([^'"]*)""", re.IGNORECASE)
@@ -41,6 +41,10 @@ LOADING = {"script": ("src",), "link": ("href",), "img": ("src", "srcset"),
            "source": ("src", "srcset"), "iframe": ("src",), "frame": ("src",),
            "embed": ("src",), "object": ("data",), "audio": ("src",),
            "video": ("src", "poster"), "track": ("src",), "input": ("src",)}
+#: ``<link rel=...>`` that only name a related page (the others load: stylesheet,
+#: icon, preload, preconnect, ...)
+NAVIGATION_RELS = {"canonical", "alternate", "author", "license", "help", "index", "search",
+                   "next", "prev", "top", "up"}
 
 
 def _sources():
@@ -74,10 +78,16 @@ class _Loads(HTMLParser):
 
     def handle_starttag(self, tag, attrs):
         attrs = dict(attrs)
+        rel = set((attrs.get("rel") or "").lower().split())
+        if tag == "link" and rel and rel <= NAVIGATION_RELS:
+            return
         for name in LOADING.get(tag, ()):
-            for address in (attrs.get(name) or "").split(","):
-                if address.strip():
-                    self.loads.append((tag, address.strip().split()[0]))
+            value = (attrs.get(name) or "").strip()
+            if name == "srcset":                  # "address width, address width, ..."
+                addresses = [a.split()[0] for a in value.split(",") if a.strip()]
+            else:
+                addresses = [value] if value else []
+            self.loads += [(tag, address) for address in addresses]
         if attrs.get("style"):
             self.css.append(attrs["style"])
         self._in_style = tag == "style"
@@ -99,7 +109,7 @@ class _Links(HTMLParser):
 
     def handle_starttag(self, tag, attrs):
         if tag == "a" and dict(attrs).get("href"):
-            self.links.append((tag, dict(attrs)["href"]))
+            self.links.append(dict(attrs)["href"])
 
     @classmethod
     def of(cls, path):
@@ -112,22 +122,44 @@ def _css_loads(text):
     return [a or b for a, b in CSS_LOADS.findall(text)]
 
 
+def _loads(text):
+    parser = _Loads()
+    parser.feed(text)
+    return parser.loads + [("style", a) for css in parser.css for a in _css_loads(css)]
+
+
 @functools.lru_cache(maxsize=None)
 def _page_loads(path):
-    parser = _Loads()
-    parser.feed(path.read_text(encoding="utf-8"))
-    return parser.loads + [("style", a) for css in parser.css for a in _css_loads(css)]
+    return _loads(path.read_text(encoding="utf-8"))
 
 
 def _pages(html):
     return sorted(html.rglob("*.html"))
 
 
+def test_the_check_sees_every_kind_of_load():
+    page = """<html><head>
+    <link rel="stylesheet" href="//fonts.example.org/a.css">
+    <link rel="preconnect" href="https://cdn.example.org">
+    <link rel="canonical" href="https://docs.example.org/page.html">
+    <script src="HTTPS://cdn.example.org/x.js"></script><script src="_static/local.js"></script>
+    <style>@import "http://example.org/b.css"; p { background: url( 'https://example.org/c.png' ) }
+    i { background: url(data:image/svg+xml;utf8,<svg xmlns="http://www.w3.org/2000/svg"/>) }</style>
+    </head><body><a href="https://doi.org/10.1000/1">a paper</a>
+    <img srcset="img/a.png 1x, https://example.org/d.png 2x">
+    <div style="background: url(//example.org/e.png)"></div></body></html>"""
+    external = sorted(a for _, a in _loads(page) if EXTERNAL.match(a))
+    assert external == sorted(["//fonts.example.org/a.css", "https://cdn.example.org",
+                               "HTTPS://cdn.example.org/x.js", "http://example.org/b.css",
+                               "https://example.org/c.png", "https://example.org/d.png",
+                               "//example.org/e.png"])
+
+
 def test_the_reference_has_one_page_per_module(html):
     layers = sorted(html.glob("reference_*.html"))
     assert layers
     for layer in layers:
-        links = {a for tag, a in _Links.of(layer) if a.startswith("api/")}
+        links = {a for a in _Links.of(layer) if a.startswith("api/")}
         assert links, f"{layer.name} links to no module page"
         for link in links:
             assert (html / urlsplit(link).path).is_file(), f"{layer.name}: {link} not built"
