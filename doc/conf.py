@@ -32,7 +32,9 @@ master_doc = "index"
 exclude_patterns = ["_build"]
 default_role = "math"
 autodoc_member_order = "bysource"
-autodoc_default_options = {"members": True, "show-inheritance": False}
+# A package's ``__all__`` names what it re-exports (lazily): each object is
+# documented once, on the page of the module that defines it.
+autodoc_default_options = {"members": True, "show-inheritance": False, "ignore-module-all": True}
 nitpicky = False
 
 # One page per module: the reference_<layer>.rst pages list their modules
