@@ -50,7 +50,7 @@ autosummary_generate = False
 html_theme = "furo"
 html_title = "sage_dynsym"
 html_static_path = ["_static", MATHJAX_PARENT]
-# code examples and wide formulas wrap or scroll inside the page, never cut
+# code examples wrap to the page, never cut
 html_css_files = ["sage_dynsym.css"]
 
 
