@@ -288,8 +288,14 @@ def test_no_code_example_or_text_is_cut(html, launch, artifacts):
     assert not too_wide, f"{len(too_wide)} code blocks cut:\n" + "\n".join(too_wide[:20])
     assert not sticking_out, "wider than the text:\n" + "\n".join(sticking_out[:20])
     assert not asked, "requests to other hosts: " + ", ".join(asked)
-    # what a reader sees: the largest reference page, its examples wrapped
-    page = launch().new_page()
+    # what a reader sees: the largest reference page, its examples wrapped,
+    # its formulas typeset offline too
+    context = launch()
+    asked = _block_other_hosts(context)
+    page = context.new_page()
     page.goto(modules[-1].as_uri())
     page.evaluate("() => MathJax.startup.promise")
     page.screenshot(path=str(artifacts / "docs_reference_code.png"))
+    assert page.evaluate("() => [...document.querySelectorAll('.math')]"
+                         ".every(e => e.querySelector('mjx-container'))")
+    assert not asked, "requests to other hosts: " + ", ".join(asked)
