@@ -68,4 +68,4 @@ bench: $(STAMP)
 	for b in bench/bench_*.py; do $(PY) $$b || exit 1; done
 
 clean:
-	rm -rf $(VENV) build *.egg-info doc/_build
+	rm -rf $(VENV) build *.egg-info doc/_build doc/api
