@@ -57,6 +57,12 @@ def exact_numbers(expr):
     return operator(*operands)
 
 
+def _terms(x):
+    # the size of a fraction (its field is QQ when there are no symbols)
+    return sum(getattr(part, 'number_of_terms', lambda: 1)()
+               for part in (x.numerator(), x.denominator()))
+
+
 class TrigFractionField:
     r"""
     Rational functions of the symbols, sines and cosines of ``expressions``,
@@ -200,8 +206,7 @@ class TrigFractionField:
             rows = [i for i in range(top, len(A)) if not self.is_zero(A[i][j])]
             if not rows:
                 continue
-            p = min(rows, key=lambda i: A[i][j].numerator().number_of_terms()
-                    + A[i][j].denominator().number_of_terms())
+            p = min(rows, key=lambda i: _terms(A[i][j]))
             A[top], A[p] = A[p], A[top]
             B[top], B[p] = B[p], B[top]
             inverse = self.one / A[top][j]
