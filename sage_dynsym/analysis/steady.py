@@ -463,10 +463,9 @@ class _Linearization:
             out[i] = list(rows_w[a])
         return out
 
-    def _solve_w(self, rhs):
-        # the dependent rows of X with Cw X = rhs, embedded
+    def _solve_w(self, rhs, width):
+        # the dependent rows of X with Cw X = rhs (width columns), embedded
         K = self.K
-        width = len(rhs[0]) if rhs else 0
         if not self.w:
             return [[K.zero] * width for _ in range(self.n)]
         return self._embed(K.solve(self.Cw, rhs), width)
@@ -532,7 +531,7 @@ class _Linearization:
               for j in range(n)] for i in range(n)]
         dQ = join(self.Q, zeros, zeros)
         Gq = K.matrix(self.Gq)
-        Bq = self._solve_w([[-x for x in row] for row in K.product(Gq, self.Q)])
+        Bq = self._solve_w([[-x for x in row] for row in K.product(Gq, self.Q)], no)
         dDQ = join(Bq, self.B0, zeros)
         Dq = [[K.normal(a + b) for a, b in zip(r1, r2)]
               for r1, r2 in zip(K.matrix(self.Cacc), K.matrix(self.gamma_q))]
@@ -544,7 +543,7 @@ class _Linearization:
                                           for r in K.product(Cu, [[K.one if a == b else K.zero
                                                                    for b in range(k)]
                                                                   for a in range(k)])])]
-        dDDQ = self._solve_w(accel)
+        dDDQ = self._solve_w(accel, no + 2 * k)
         for a, i in enumerate(self.u):
             dDDQ[i][no + k + a] = K.one
         Eq = [[K.normal(K(e) - h) for e, h in zip(row, hrow)]
