@@ -167,7 +167,7 @@ def test_a_random_parameter_set_gives_the_closed_forms(bicycle):
     substitution = {SR.var(k): x for k, x in values.items()}
     for key in ('M', 'C1', 'K0', 'K2'):
         for got, want in zip(bicycle[key].list(), expected[key].list()):
-            assert (SR(got).subs(substitution) - want).simplify_full().is_zero(), (key, got)
+            assert trig_rational_simplify(SR(got).subs(substitution) - want).is_zero(), (key, got)
 
 
 def _benchmark(X):

@@ -128,7 +128,7 @@ from ..numerics.methods import NumericalMethods
 from .natural_equations import natural_equations, SymbolicCalculus
 from .compact import equations_cse
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
-                           is_singular, Elimination)
+                           is_singular, has_full_row_rank, Elimination)
 
 
 class Lagrangian(NumericalMethods, SageObject):
@@ -259,8 +259,8 @@ class Lagrangian(NumericalMethods, SageObject):
                                  "constraint must be a relation f(q, t) = 0 between them",
                                  entry=entry)
         if constraints:
-            J = matrix(SR, [[f.diff(q) for q in self._coordinates] for f in constraints])
-            if len(constraints) > len(self._coordinates) or is_singular(J * J.transpose()):
+            J = [[f.diff(q) for q in self._coordinates] for f in constraints]
+            if len(constraints) > len(self._coordinates) or not has_full_row_rank(J):
                 raise ModelError(f"the constraints {constraints} are redundant: the Jacobian "
                                  f"d(constraints)/d({coords}) has rank less than "
                                  f"{len(constraints)} at a generic point; remove the "

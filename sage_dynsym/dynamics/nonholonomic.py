@@ -71,7 +71,7 @@ from ..symbols import acceleration, constraint_multipliers, momentum, sage_numbe
 from ..symbols import time_derivative
 from ..analysis.motion import SecondOrderEquations
 from .lagrangian import Lagrangian
-from .natural_form import is_singular
+from .natural_form import has_full_row_rank
 
 
 def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(),
@@ -160,8 +160,7 @@ def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(
     if out:
         rows = [[SR(f).diff(q) for q in coordinates] for f in holonomic]
         rows += [[g.diff(v) for v in velocities] for g in out]
-        C = matrix(SR, rows)
-        if len(rows) > len(velocities) or is_singular(C * C.transpose()):
+        if len(rows) > len(velocities) or not has_full_row_rank(rows):
             raise ModelError("the constraints are not independent: with the holonomic ones "
                              "differentiated, their matrix of velocity coefficients has rank "
                              f"less than {len(rows)} at a generic point; remove the redundant "

@@ -61,7 +61,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
+from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial, TrigPolynomialRing
 from .frames import cross
 from .rigid_body import RigidBody, as_scalar
 
@@ -300,8 +300,12 @@ class RollingContact(SageObject):
 
 
 def _simplified(expr):
+    # the reduced fraction modulo cos^2 + sin^2 = 1 (the first normal form:
+    # the shortest printed one costs seconds on a front wheel's expressions)
+    expr = SR(expr)
     try:
-        return trig_rational_simplify(expr, strict=True)
+        ring = TrigPolynomialRing.for_expressions([expr], fractions=True)
+        return ring.simplest_fraction(*ring.fraction(expr))
     except NotPolynomial:
         return expr
 

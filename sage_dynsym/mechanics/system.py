@@ -52,7 +52,7 @@ from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
-from ..dynamics.natural_form import natural_form, is_singular
+from ..dynamics.natural_form import natural_form, is_singular, has_full_row_rank
 from .force_functions import check_force_function
 from .constraint_set import ConstraintSet
 from .kinematics import Kinematics
@@ -131,8 +131,8 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
                              f"{', '.join(map(str, coordinates))}", entry=sub)
         out.append(f)
     if out:
-        J = matrix(SR, [[f.diff(q) for q in coordinates] for f in out])
-        if len(out) > len(coordinates) or is_singular(J * J.transpose()):
+        J = [[f.diff(q) for q in coordinates] for f in out]
+        if len(out) > len(coordinates) or not has_full_row_rank(J):
             raise ModelError(f"the {len(out)} constraints are not independent: their Jacobian "
                              "with respect to the coordinates has rank less than "
                              f"{len(out)} at a generic point; remove the redundant ones",
