@@ -967,6 +967,13 @@ class Lagrangian(NumericalMethods, SageObject):
            3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
            and forces of constraint).
         """
+        K, rhs, unknowns = self._acceleration_system()
+        solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
+        return {v: solution[i, 0].simplify_rational() for i, v in enumerate(unknowns)}
+
+    def _acceleration_system(self):
+        # the linear system [[M, -G^T], [G, 0]] (ddq, multipliers) = (F, h),
+        # as (matrix, right-hand side, unknowns)
         q, ddq = self._coordinates, self._accelerations
         M = self.decomposition()[0]
         G, h, multipliers = self._acceleration_constraints()
@@ -981,9 +988,7 @@ class Lagrangian(NumericalMethods, SageObject):
         if is_singular(K):
             raise ModelError("the equations cannot be solved for the accelerations and "
                              "multipliers (the matrix [[M, -J^T], [J, 0]] is singular)")
-        solution = K.solve_right(matrix(SR, [[v] for v in F + h]))
-        return {v: solution[i, 0].simplify_rational()
-                for i, v in enumerate(ddq + multipliers)}
+        return K, F + h, ddq + multipliers
 
     def reduce(self, independent, parametrization):
         r"""

@@ -48,9 +48,8 @@ itself [Blo2003]_, section 1.6::
 The force across the blade turns the velocity with the blade:
 `\lambda = -m\dot\theta(\cos\theta\,\dot x + \sin\theta\,\dot y)`::
 
-    sage: from sage_dynsym import trig_rational_simplify
     sage: sol = L.accelerations_and_multipliers()
-    sage: trig_rational_simplify(sol[L.multipliers()[0]])
+    sage: sol[L.multipliers()[0]]
     -(dx*cos(theta) + dy*sin(theta))*dtheta*m
 
 REFERENCES:
@@ -66,10 +65,11 @@ import operator
 from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..errors import AnalysisError, ModelError
 from ..symbols import acceleration, constraint_multipliers, momentum, sage_numbers, t
 from ..symbols import time_derivative
 from ..analysis.motion import SecondOrderEquations
+from ..analysis.trig_linear import TrigFractionField
 from .lagrangian import Lagrangian
 from .natural_form import has_full_row_rank
 
@@ -298,6 +298,34 @@ class NonholonomicLagrangian(Lagrangian):
         zero = {a: 0 for a in ddq}
         h = h + [-time_derivative(g, q, dq, ddq).subs(zero) for g in self._nonholonomic]
         return G.stack(A), h, multipliers + self._velocity_multipliers
+
+    def accelerations_and_multipliers(self):
+        r"""
+        The accelerations and the multipliers of all constraints, solved from
+        the `n` equations together with the holonomic constraints
+        differentiated twice and the velocity constraints differentiated once
+        (see :meth:`Lagrangian.accelerations_and_multipliers
+        <sage_dynsym.dynamics.lagrangian.Lagrangian.accelerations_and_multipliers>`);
+        exactly, modulo `\cos^2 + \sin^2 = 1`, where the equations are
+        rational in the sines and cosines (see
+        :mod:`~sage_dynsym.analysis.trig_linear`).
+
+        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}``, valid where the
+        constraints hold
+
+        EXAMPLES: see the module documentation.
+        """
+        if not hasattr(self, '_solved'):
+            K, rhs, unknowns = self._acceleration_system()
+            try:
+                field = TrigFractionField(K.list() + rhs)
+                X = field.solve(field.matrix(K), [[field(v)] for v in rhs])
+                values = [field.expression(x[0]) for x in X]
+            except AnalysisError:   # not rational in the sines and cosines
+                X = K.solve_right(matrix(SR, [[v] for v in rhs]))
+                values = [X[i, 0].simplify_rational() for i in range(len(unknowns))]
+            self._solved = dict(zip(unknowns, values))
+        return dict(self._solved)
 
     def accelerations_solved(self):
         r"""
