@@ -113,6 +113,13 @@ class ConstraintSet:
         """
         return list(self._velocity)
 
+    def given_holonomic(self):
+        r"""The holonomic constraints given (``constraints``).
+
+        EXAMPLES: see the module documentation.
+        """
+        return list(self._given_holonomic)
+
     def given_nonholonomic(self):
         r"""The velocity constraints given (``nonholonomic``).
 
