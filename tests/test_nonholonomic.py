@@ -22,7 +22,7 @@ import pytest
 import sympy as sm
 import sympy.physics.mechanics as me
 
-from sage.all import SR, QQ, var, cos, sin
+from sage.all import SR, QQ, CDF, cos, sin
 
 from sage_dynsym import linearize, load, save, DynSymError
 from sage_dynsym.analysis.operating_point import OperatingPoint
@@ -413,3 +413,59 @@ def test_linearize_refuses_what_is_not_a_steady_motion():
     # the heading cannot be left out when the speeds couple to it
     with pytest.raises(DynSymError, match="add it to the coordinates|add its coordinate"):
         linearize(system(DISK), system(DISK).operating_point('upright'), coordinates=[SR.var('theta')])
+
+
+def test_disk_turning_steady_motion_against_sympy():
+    # a disk rolling on a circle: the steady-motion condition (Routh, art. 244)
+    # solved for the spin rate; at that state SymPy's speeds do not change, and
+    # the linearization about it has the eigenvalues of SymPy's reduced
+    # dynamics (numerical Jacobian)
+    from sage.all import solve
+    from sage_dynsym.analysis.steady import steady_motion_conditions
+    S = system(DISK)
+    m, r, A, C, g, th, psi, phi = symbols('m', 'r', 'A', 'C', 'g', 'theta', 'psi', 'phi')
+    th0, Om, om = symbols('theta0', 'Omega', 'omega')
+    point = OperatingPoint('turning', {th: th0}, {SR.var('dpsi'): Om, SR.var('dphi'): om})
+    conditions = steady_motion_conditions(S, point)
+    spin = solve(conditions[SR.var('dtheta')], om)[0].rhs()
+    assert trig_rational_simplify(spin - (-(g * m * r + (m * r ** 2 - A + C) * Om ** 2 * cos(th0))
+                                          * sin(th0) / ((m * r ** 2 + C) * Om * cos(th0)))).is_zero()
+    values = {m: QQ(6) / 5, r: QQ(3) / 10, A: QQ(3) / 100, C: QQ(11) / 200, g: QQ(981) / 100}
+    angle, rate = QQ(1) / 4, QQ(5)
+    spin_value = spin.subs(values).subs({th0: angle, Om: rate})
+    steady = OperatingPoint('turning', {th: angle}, {SR.var('dpsi'): rate, SR.var('dphi'): spin_value})
+    linear = linearize(S.subs(values), steady, coordinates=[th, psi, phi])
+    ours = [complex(z) for z in linear.jacobian().change_ring(CDF).eigenvalues()]
+    KM, constraints, parameters = sympy_disk()
+    p = [float(values[SR.var(str(s))]) for s in parameters]
+    q, u = list(KM.q), list(KM.u)
+    rhs = sm.lambdify(q + u + parameters, KM.rhs(), 'numpy')
+    A_u = sm.lambdify(q + parameters, sm.Matrix(constraints).jacobian(u), 'numpy')
+    index = {str(v).replace('(t)', ''): i for i, v in enumerate(u)}
+    free = [index['upsi'], index['utheta'], index['uphi']]
+    dependent = [index['ux'], index['uy']]
+
+    def reduced(state):
+        # (theta, u_psi, u_theta, u_phi) -> their derivatives (psi = 0, x = y = 0)
+        theta, *speeds = state
+        qv = [0, 0, 0, theta, 0]
+        uv = np.zeros(len(u))
+        uv[free] = speeds
+        M = np.array(A_u(*qv, *p), dtype=float)
+        uv[dependent] = np.linalg.solve(M[:, dependent], -M[:, free] @ uv[free])
+        out = np.array(rhs(*qv, *uv, *p), dtype=float).ravel()
+        return np.array([uv[index['utheta']]] + [out[len(q) + i] for i in free])
+
+    x0 = np.array([float(angle), float(rate), 0.0, float(spin_value)])
+    assert np.max(np.abs(reduced(x0)[1:])) < 1e-10          # a steady motion
+    h = 1e-6
+    jacobian = np.array([(reduced(x0 + h * e) - reduced(x0 - h * e)) / (2 * h)
+                         for e in np.eye(4)]).T
+    theirs = list(np.linalg.eigvals(jacobian))
+    nonzero = [z for z in ours if abs(z) > 1e-6]
+    assert len(nonzero) == 2 and all(abs(z) < 1e-6 for z in ours if z not in nonzero)
+    theirs_nonzero = [z for z in theirs if abs(z) > 1e-4]
+    assert len(theirs_nonzero) == 2
+    for a, b in zip(sorted(nonzero, key=lambda z: (z.real, z.imag)),
+                    sorted(theirs_nonzero, key=lambda z: (z.real, z.imag))):
+        assert abs(a - b) < 1e-6, (nonzero, theirs)

@@ -470,13 +470,17 @@ class _Linearization:
             return [[K.zero] * width for _ in range(self.n)]
         return self._embed(K.solve(self.Cw, rhs), width)
 
+    def residuals(self):
+        # Kane's equations of the speeds along the motion: (speed, value)
+        K = self.K
+        Bt = [list(col) for col in zip(*self.B0)]
+        residual = K.product(Bt, [[K(e)] for e in self.E0])
+        return [(self.dq[self.u[a]], r[0]) for a, r in enumerate(residual)]
+
     def steady_check(self):
         K = self.K
         E0 = [[K(e)] for e in self.E0]
-        Bt = [list(col) for col in zip(*self.B0)]
-        residual = K.product(Bt, E0)
-        bad = [(self.dq[self.u[a]], K.expression(r[0])) for a, r in enumerate(residual)
-               if not K.is_zero(r[0])]
+        bad = [(v, K.expression(r)) for v, r in self.residuals() if not K.is_zero(r)]
         if bad:
             raise AnalysisError("the operating point is not a steady motion: Kane's equations "
                                 "of the speeds do not vanish there ("
@@ -591,6 +595,59 @@ class _Linearization:
         return SteadyMotion(self.point, self.p, [dq[i] for i in self.u], self.vel0, multipliers,
                             dependent, [q[i] for i in dropped], [dq[self.u[a]] for a in extra],
                             (M, S, W))
+
+
+def steady_motion_conditions(system, point, speeds=None):
+    r"""
+    The conditions for ``point`` to be a steady motion of ``system``:
+    Kane's equations of the independent speeds along it (see the module
+    documentation), each meaning ``== 0``; the values of the operating point
+    may be unknowns (symbols) to solve for, e.g. with
+    :func:`~sage_dynsym.analysis.solving.solve_exactly`.
+
+    INPUT:
+
+    - ``system`` -- a :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`
+      or anything with ``to_linearizer()`` giving one (a Lagrangian, a
+      mechanical system)
+    - ``point`` -- an :class:`~sage_dynsym.analysis.operating_point.OperatingPoint`
+      (or a dict over coordinates and velocities)
+    - ``speeds`` -- (optional) the independent speeds, see
+      :func:`steady_linearization`
+
+    OUTPUT: a dict ``{speed: expression}``
+
+    EXAMPLES:
+
+    A disk (mass `m`, radius `r`, moments `A` about a diameter, `C` about
+    its axle) rolling on a circle: tilt `\theta_0`, heading rate `\Omega`,
+    spin rate `\omega`. Its steady motions satisfy one relation (Routh,
+    *Advanced Rigid Dynamics*, art. 244), here solved for `\omega`::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+        sage: from sage_dynsym.analysis.operating_point import OperatingPoint
+        sage: from sage_dynsym.analysis.steady import steady_motion_conditions
+        sage: x, y, psi, th, phi, m, r, A, C, g = var('x y psi theta phi m r A C g')
+        sage: frame = RigidBody('frame', joint=[x, y, 0], rotations=[(3, psi), (1, th)])
+        sage: disk = RigidBody('disk', parent='frame', joint=[0, 0, r], rotations=[(2, phi)],
+        ....:                  mass=m, inertia=diagonal_matrix([A, C, A]))
+        sage: S = MechanicalSystem([frame, disk], [x, y, psi, th, phi],
+        ....:                      force_function=UniformGravity([0, 0, -g]),
+        ....:                      rolling=[{'body': 'disk', 'radius': r, 'axle': 2}])
+        sage: th0, Om, om = var('theta0 Omega omega')
+        sage: point = OperatingPoint('turning', {th: th0}, {var('dpsi'): Om, var('dphi'): om})
+        sage: conditions = steady_motion_conditions(S, point); conditions
+        {dtheta: ...}
+        sage: solve(conditions[var('dtheta')], om)
+        [omega == ...]
+    """
+    record = system.to_linearizer() if hasattr(system, 'to_linearizer') else system
+    work = _Linearization(record, point, [], speeds)
+    work.steady_velocities()
+    work.derivatives()
+    work.field()
+    work.choose_speeds()
+    return {v: work.K.expression(r) for v, r in work.residuals()}
 
 
 def steady_linearization(record, point, coordinates=None, speeds=None):
