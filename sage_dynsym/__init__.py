@@ -36,9 +36,12 @@ from .dynamics.lagrangian import Lagrangian, RouthFunction
 from .dynamics.hamiltonian import Hamiltonian
 from .dynamics.dirac import DiracConstraints
 from .dynamics.compact import equations_cse, CompactEquations
+from .dynamics.nonholonomic import NonholonomicLagrangian
+from .dynamics.reduced import ReducedEquations
 from .mechanics.rigid_body import RigidBody
 from .mechanics.force_functions import UniformGravity, NewtonianField
 from .mechanics.loads import Load
+from .mechanics.rolling import RollingDisk
 from .mechanics.system import MechanicalSystem
 from .description import load, save
 from .circuits import Circuit, NodalAnalysis
@@ -49,7 +52,7 @@ from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLy
                        sylvester_conditions, definiteness_conditions, restrict_to_subspace,
                        simultaneous_reduction, kelvin_chetaev, StabilityVerdict,
                        equilibrium_family, StationarySolution, StationarySolutions,
-                       solve_exactly, exists)
+                       solve_exactly, exists, OperatingPoint, steady_motion_conditions)
 from .analysis.trigonometric import trig_rational_simplify
 from .lie import (LiePoissonSystem, PoissonStructure, lie_algebra, poisson_structure,
                   casimirs, polynomial_integrals, euler_poisson, kirchhoff)

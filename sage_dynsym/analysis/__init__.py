@@ -6,14 +6,17 @@ solutions and invariant manifolds (Routh--Lyapunov, also the modified
 method with an extended function), their stability by the second
 variation and quadratic-form criteria, first approximation
 (linearization, force structure, characteristic polynomial,
-Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
-and families of equilibria by elimination.
+Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems),
+linearization about steady motions with velocity constraints, and families
+of equilibria by elimination.
 """
 from .elimination import equilibrium_family, EquilibriumFamily
 from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
                       conservative_stability_conditions, simplify_conditions)
 from .linear import LinearSystem, linearize
+from .operating_point import OperatingPoint
+from .steady import steady_linearization, steady_motion_conditions, SteadyMotion
 from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
                               restrict_to_subspace, simultaneous_reduction)
 from .solving import solve_exactly, normalize

@@ -178,15 +178,3 @@ def _same(a, b):
     return (list(map(str, a)) == list(map(str, b))
             and all(SR(a[k]).is_trivially_equal(SR(b[k])) for k in a))
 
-
-def is_operating_point(value):
-    r"""
-    Whether ``value`` is an :class:`OperatingPoint`.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.operating_point import OperatingPoint, is_operating_point
-        sage: is_operating_point(OperatingPoint('p', {})), is_operating_point({})
-        (True, False)
-    """
-    return isinstance(value, OperatingPoint)

@@ -636,10 +636,13 @@ def steady_motion_conditions(system, point, speeds=None):
         ....:                      rolling=[{'body': 'disk', 'radius': r, 'axle': 2}])
         sage: th0, Om, om = var('theta0 Omega omega')
         sage: point = OperatingPoint('turning', {th: th0}, {var('dpsi'): Om, var('dphi'): om})
-        sage: conditions = steady_motion_conditions(S, point); conditions
-        {dtheta: ...}
+        sage: conditions = steady_motion_conditions(S, point)
+        sage: conditions[var('dpsi')], conditions[var('dphi')]
+        (0, 0)
+        sage: conditions[var('dtheta')]
+        -g*m*r*sin(theta0) - ((m*r^2 - A + C)*Omega^2*sin(theta0) + (m*r^2 + C)*Omega*omega)*cos(theta0)
         sage: solve(conditions[var('dtheta')], om)
-        [omega == ...]
+        [omega == -(g*m*r + (Omega^2*m*r^2 - (A - C)*Omega^2)*cos(theta0))*sin(theta0)/((Omega*m*r^2 + C*Omega)*cos(theta0))]
     """
     record = system.to_linearizer() if hasattr(system, 'to_linearizer') else system
     work = _Linearization(record, point, [], speeds)
