@@ -199,6 +199,27 @@ def mechanical_system_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         ModelError: f.yaml: constraints[0]: the constraint k - 1 == 0 does not depend on the coordinates x, z
+
+    Velocity constraints, rolling disks and operating points::
+
+        sage: d['constraints'] = []; d['nonholonomic'] = ['dx - ddz']
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: nonholonomic[0]: ddz is the acceleration of the coordinate z; a description holds no accelerations (in 'dx - ddz')
+        sage: d['nonholonomic'] = ['dx - k*dz']; d['rolling'] = [{'body': 'b', 'radius': 'k', 'axle': 0}]
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ModelError: f.yaml: rolling[0].axle: expected 1, 2 or 3 (the axis of the body along the axle), got 0
+        sage: d['rolling'] = []; d['operating_points'] = {'p': {'at': {'z': 'x'}}}
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: operating_points.p.at.z: x is a coordinate; the values of an operating point are in the parameters (in 'x')
+        sage: d['operating_points'] = {'p': {'at': {'z': 0}, 'velocities': {'dx': 'F'}}}
+        sage: mechanical_system_from_dict(d, 'f.yaml').operating_point('p')
+        Operating point 'p': z = 0, dx = F
     """
     check_keys(data, MECHANICAL_KEYS, None, source, "a mechanical description")
     for key in REQUIRED_MECHANICAL:
