@@ -52,7 +52,8 @@ from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLy
                        sylvester_conditions, definiteness_conditions, restrict_to_subspace,
                        simultaneous_reduction, kelvin_chetaev, StabilityVerdict,
                        equilibrium_family, StationarySolution, StationarySolutions,
-                       solve_exactly, exists, OperatingPoint, steady_motion_conditions)
+                       solve_exactly, exists, OperatingPoint, steady_motion_conditions,
+                       steady_motions)
 from .analysis.trigonometric import trig_rational_simplify
 from .lie import (LiePoissonSystem, PoissonStructure, lie_algebra, poisson_structure,
                   casimirs, polynomial_integrals, euler_poisson, kirchhoff)

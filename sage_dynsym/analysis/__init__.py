@@ -16,7 +16,8 @@ from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       conservative_stability_conditions, simplify_conditions)
 from .linear import LinearSystem, linearize
 from .operating_point import OperatingPoint
-from .steady import steady_linearization, steady_motion_conditions, SteadyMotion
+from .steady import (steady_linearization, steady_motion_conditions, steady_motions,
+                     SteadyMotion)
 from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
                               restrict_to_subspace, simultaneous_reduction)
 from .solving import solve_exactly, normalize

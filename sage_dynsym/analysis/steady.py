@@ -653,6 +653,45 @@ def steady_motion_conditions(system, point, speeds=None):
     return {v: work.K.expression(r) for v, r in work.residuals()}
 
 
+def steady_motions(system, point, solve_for, positive=(), speeds=None):
+    r"""
+    The steady motions of the form ``point`` whose values ``solve_for``
+    are unknown: the real solutions of :func:`steady_motion_conditions`,
+    exactly (:func:`~sage_dynsym.analysis.solving.solve_exactly`), with the
+    conditions for them to exist.
+
+    INPUT:
+
+    - ``system``, ``point``, ``speeds`` -- as for :func:`steady_motion_conditions`
+    - ``solve_for`` -- the unknowns (symbols in the values of ``point``)
+    - ``positive`` -- parameters declared positive
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.solving.SolutionSet`
+
+    EXAMPLES: the disk of :func:`steady_motion_conditions` rolling on a
+    circle, its spin rate for a given tilt and turning rate::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+        sage: from sage_dynsym.analysis.operating_point import OperatingPoint
+        sage: from sage_dynsym.analysis.steady import steady_motions
+        sage: x, y, psi, th, phi, m, r, A, C, g = var('x y psi theta phi m r A C g')
+        sage: frame = RigidBody('frame', joint=[x, y, 0], rotations=[(3, psi), (1, th)])
+        sage: disk = RigidBody('disk', parent='frame', joint=[0, 0, r], rotations=[(2, phi)],
+        ....:                  mass=m, inertia=diagonal_matrix([A, C, A]))
+        sage: S = MechanicalSystem([frame, disk], [x, y, psi, th, phi],
+        ....:                      force_function=UniformGravity([0, 0, -g]),
+        ....:                      rolling=[{'body': 'disk', 'radius': r, 'axle': 2}])
+        sage: th0, Om, om = var('theta0 Omega omega')
+        sage: point = OperatingPoint('turning', {th: th0}, {var('dpsi'): Om, var('dphi'): om})
+        sage: s, = steady_motions(S, point, [om], positive=[m, r, A, C, g]); s.conditions()
+        [cos(theta0) != 0, Omega != 0]
+    """
+    from .solving import solve_exactly
+    conditions = [e for e in steady_motion_conditions(system, point, speeds).values()
+                  if not e.is_zero()]
+    return solve_exactly(conditions, solve_for, positive=positive)
+
+
 def steady_linearization(record, point, coordinates=None, speeds=None):
     r"""
     The linearization of ``record`` about the steady motion ``point`` (see
