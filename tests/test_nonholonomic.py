@@ -14,6 +14,7 @@ Each model is also built independently in sympy.physics.mechanics (frames,
 points, KanesMethod with dependent speeds) and the accelerations are compared
 at random states that satisfy the constraints.
 """
+import functools
 import math
 import random
 
@@ -78,6 +79,7 @@ def symbols(*names):
 # SymPy: the same models, written by hand
 # ---------------------------------------------------------------------------
 
+@functools.lru_cache(maxsize=None)
 def sympy_knife():
     x, y, th = me.dynamicsymbols('x y theta')
     ux, uy, uth = me.dynamicsymbols('ux uy utheta')
@@ -96,6 +98,7 @@ def sympy_knife():
     return KM, constraints, [m, I, g, al]
 
 
+@functools.lru_cache(maxsize=None)
 def sympy_sleigh():
     x, y, th = me.dynamicsymbols('x y theta')
     ux, uy, uth = me.dynamicsymbols('ux uy utheta')
@@ -116,6 +119,7 @@ def sympy_sleigh():
     return KM, constraints, [m, J, a]
 
 
+@functools.lru_cache(maxsize=None)
 def sympy_disk():
     x, y, psi, th, phi = me.dynamicsymbols('x y psi theta phi')
     ux, uy, upsi, uth, uphi = me.dynamicsymbols('ux uy upsi utheta uphi')
