@@ -7,19 +7,16 @@ four no-slip constraints are compared at random states that satisfy the
 constraints (the package's compiled right-hand side, with its augmented
 system).
 
-Building the SymPy model takes some tens of seconds, so this cross-check runs
-only when the environment variable SAGE_DYNSYM_SLOW is set (the linearized
-bicycle is checked against the benchmark in test_whipple_bicycle.py).
+Building the SymPy model takes about a minute: the cross-check is marked slow
+(``make test-slow``; the linearized bicycle is checked against the benchmark
+in test_whipple_bicycle.py).
 """
-import os
 import random
 
 import numpy as np
 import pytest
 
-pytestmark = pytest.mark.skipif(not os.environ.get("SAGE_DYNSYM_SLOW"),
-                                reason="slow SymPy cross-check of the nonlinear bicycle; "
-                                       "run with SAGE_DYNSYM_SLOW=1")
+pytestmark = pytest.mark.slow
 
 #: Table 1 of Meijaard et al. (2007)
 VALUES = dict(w=1.02, c=0.08, lam=0.1 * np.pi, g=9.81, rR=0.3, mR=2, IRxx=0.0603, IRyy=0.12,
