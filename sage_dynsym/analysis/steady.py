@@ -541,12 +541,10 @@ class _Linearization:
               for r1, r2 in zip(K.matrix(self.Cacc), K.matrix(self.gamma_q))]
         rest = [[K.normal(a + b) for a, b in zip(r1, r2)]
                 for r1, r2 in zip(K.product(Dq, dQ), K.product(K.matrix(self.gamma_dq), dDQ))]
+        # C_w ddq_w = -(C_u ddu + D dq + gamma_dq ddq), the speeds' accelerations last
         Cu = [[row[j] for j in self.u] for row in self.C0m]
-        accel = [[K.normal(-a - b) for a, b in zip(r1, r2)]
-                 for r1, r2 in zip(rest, [[K.zero] * (no + k) + list(r)
-                                          for r in K.product(Cu, [[K.one if a == b else K.zero
-                                                                   for b in range(k)]
-                                                                  for a in range(k)])])]
+        accel = [[K.normal(-a - b) for a, b in zip(r1, [K.zero] * (no + k) + r2)]
+                 for r1, r2 in zip(rest, Cu)]
         dDDQ = self._solve_w(accel, no + 2 * k)
         for a, i in enumerate(self.u):
             dDDQ[i][no + k + a] = K.one
@@ -588,7 +586,7 @@ class _Linearization:
         W = block([self.o.index(i) for i in listed])
         S, M = block([no + r for r in rows]), block([no + k + r for r in rows])
         dependent = {}
-        for a, i in enumerate(self.d):
+        for i in self.d:
             dependent[q[i]] = SR(0).add(*[K.expression(self.Q[i][self.o.index(j)]) * q[j]
                                           for j in listed])
         multipliers = {mu: K.expression(x) for mu, x in zip(self.multiplier_symbols, self.nu0)}
