@@ -238,3 +238,22 @@ def test_the_weave_and_capsize_speeds_are_roots_of_the_hurwitz_conditions(bicycl
     # the paper's last (15th) digit comes from double precision: 14 agree
     assert abs(weave - WEAVE_SPEED) < 2e-14 and abs(capsize - CAPSIZE_SPEED) < 2e-14
     assert not stable(RF(4)) and stable(RF(5)) and not stable(RF(7))
+
+
+def test_the_state_matrix_of_sympys_bicycle_test(bicycle):
+    # sympy/physics/mechanics/tests/test_kane3.py (test_bicycle) compares its
+    # linearized bicycle with this state matrix in (lean, steer, their rates),
+    # for v = 0, ..., 5 and to 1e-12
+    v = SR.var('v')
+    rows = [[9.48977444677355, -0.891197738059089 * v ** 2 - 0.571523173729245,
+             -0.105522449805691 * v, -0.330515398992311 * v],
+            [11.7194768719633, -1.97171508499972 * v ** 2 + 30.9087533932407,
+             3.67680523332152 * v, -3.08486552743311 * v]]
+    M, S, W = (_benchmark(bicycle[k]) for k in ('M', 'S', 'W'))
+    inverse = M.inverse()
+    bottom = (-inverse * W).augment(-inverse * S)
+    for speed in range(6):
+        for i in range(2):
+            for j in range(4):
+                got = RealField(200)(bottom[i, j].subs({v: speed}))
+                assert abs(got - SR(rows[i][j]).subs({v: speed})) < 1e-12, (speed, i, j)
