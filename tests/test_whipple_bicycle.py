@@ -257,3 +257,16 @@ def test_the_state_matrix_of_sympys_bicycle_test(bicycle):
             for j in range(4):
                 got = RealField(200)(bottom[i, j].subs({v: speed}))
                 assert abs(got - SR(rows[i][j]).subs({v: speed})) < 1e-12, (speed, i, j)
+
+
+def test_a_stability_map_in_the_speed(bicycle):
+    # the linear system of the package's maps: stable on the grid points
+    # between the weave and capsize speeds, and only there
+    import numpy as np
+    from sage_dynsym import stability_map
+    v = SR.var('v')
+    linear = LinearSystem([SR.var('lean'), SR.var('steer')],
+                          *(_benchmark(bicycle[k]) for k in ('M', 'S', 'W')))
+    speeds_map = stability_map(linear, {v: (0, 10, 201)})
+    speeds, stable = speeds_map.axes()[v], speeds_map.stable()
+    assert np.array_equal(stable, (speeds > WEAVE_SPEED) & (speeds < CAPSIZE_SPEED))
