@@ -113,7 +113,8 @@ def closed_form(p):
 @pytest.fixture(scope="module")
 def bicycle():
     S = load(example_path('whipple_bicycle.yaml'))
-    linear = linearize(S, S.operating_point('upright'))
+    lean, steer = SR.var('lean'), SR.var('steer')
+    linear = linearize(S, S.operating_point('upright'), coordinates=[lean, steer])
     v, g = SR.var('v'), SR.var('g')
     # M q'' + v C1 q' + (g K0 + v^2 K2) q = 0
     W = linear.W()
