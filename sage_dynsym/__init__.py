@@ -54,14 +54,14 @@ _PUBLIC = {
                   'sylvester_conditions', 'definiteness_conditions', 'restrict_to_subspace',
                   'simultaneous_reduction', 'kelvin_chetaev', 'StabilityVerdict',
                   'equilibrium_family', 'StationarySolution', 'StationarySolutions',
-                  'solve_exactly', 'exists', 'OperatingPoint', 'steady_motion_conditions',
-                  'steady_motions'],
+                  'solve_exactly', 'exists', 'small_damping_limit', 'spectrum_regions',
+                  'OperatingPoint', 'steady_motion_conditions', 'steady_motions'],
     '.analysis.trigonometric': ['trig_rational_simplify'],
     '.lie': ['LiePoissonSystem', 'PoissonStructure', 'lie_algebra', 'poisson_structure',
              'casimirs', 'polynomial_integrals', 'euler_poisson', 'kirchhoff'],
     '.numerics': ['NumericalMethods', 'Trajectory', 'numerical_rhs', 'simulate',
-                  'generate_code'],
-    '.scale': ['stability_map', 'StabilityMap', 'sweep', 'Sweep'],
+                  'generate_code', 'Event'],
+    '.scale': ['stability_map', 'StabilityMap', 'sweep', 'Sweep', 'stability_class'],
 }
 _SOURCE = {name: module for module, names in _PUBLIC.items() for name in names}
 

@@ -6,9 +6,10 @@ solutions and invariant manifolds (Routh--Lyapunov, also the modified
 method with an extended function), their stability by the second
 variation and quadratic-form criteria, first approximation
 (linearization, force structure, characteristic polynomial,
-Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems),
-linearization about steady motions with velocity constraints, and families
-of equilibria by elimination.
+Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems,
+roots on the imaginary axis, flutter and divergence, the limit of small
+damping), linearization about steady motions with velocity constraints,
+and families of equilibria by elimination.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # (the package's face loads it lazily, only when a name is used)
@@ -26,5 +27,7 @@ from .quadratic_forms import (sylvester_conditions, definiteness_conditions, for
 from .solving import solve_exactly, normalize
 from .quantifier_elimination import exists
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
+from .damping_limit import small_damping_limit, DampingLimit
+from .spectrum import spectrum_regions
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, ModifiedRouthLyapunov)

@@ -50,15 +50,13 @@ A pendulum with a damper, from its Lagrangian::
     AnalysisError: linearize: the point {phi: 1} is not an equilibrium: equation 0 gives g*l*m*sin(1) != 0
 """
 from sage.matrix.constructor import matrix, identity_matrix
-from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_ring
+from .determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
 from .solving import normalize
-from .translation import Translation
 
 
 def _at(expr, point):
@@ -118,68 +116,6 @@ def _check_equilibrium(values, point):
             raise AnalysisError(f"the point {_shown(point)} is not an equilibrium: "
                                 f"equation {i} gives {_tidy(v)} != 0",
                                 entry="linearize")
-
-
-def _fraction_free_det(A, as_polynomial=False, positive=()):
-    r"""
-    A polynomial with the sign (and the zeros) of ``det(A)``.
-
-    Each row is multiplied by the least common multiple `d_i` of its
-    denominators and the determinant is taken over a polynomial ring
-    (Singular); then `\det A = N/D` with `N = \det(\mathrm{diag}(d) A)`,
-    `D = \prod d_i`, and the result is `N D` with common factors cancelled:
-    no denominator is assumed positive unless its factors are declared in
-    ``positive``. Non-polynomial parts of the entries (unspecified
-    functions and their derivatives, ``cos(alpha)``) are atoms.
-
-    OUTPUT: a symbolic expression, or with ``as_polynomial`` an element of a
-    polynomial ring over `\QQ` in the symbols (sorted by name)
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.linear import _fraction_free_det
-        sage: a, g, lam = var('a g lam'); f = function('f')
-        sage: _fraction_free_det(matrix([[lam, 1], [-a/g, lam]]))
-        g^2*lam^2 + a*g
-        sage: _fraction_free_det(matrix([[lam, 1], [-a/g, lam]]), positive=[g])
-        g*lam^2 + a
-        sage: _fraction_free_det(matrix([[lam - diff(f(a), a)]]))
-        lam - diff(f(a), a)
-    """
-    T = Translation([], [], extra=A.list())
-    R = T.flat_ring()
-    if R is None:
-        det = SR(matrix(QQ, [[QQ(e) for e in row] for row in A.rows()]).det())
-        return to_ring(det, QQ) if as_polynomial else det
-    rows, D = [], R(1)
-    for row in A.rows():
-        fractions = [T.fraction(e) for e in row]
-        d = R(1)
-        for f in fractions:
-            d = d.lcm(R(f.denominator()))
-        D *= d
-        rows.append([R(f * d) for f in fractions])
-    N = matrix(R, rows).det()
-    if not D.is_constant() and not N.is_zero():
-        g = N.gcd(D)
-        N, D = N // g, D // g
-    names = T.positive_names(positive)
-    from ._polynomials import positive_polynomial
-    if D.is_constant():
-        scale = R(QQ(D.constant_coefficient()).sign())
-    else:
-        F = D.factor()
-        scale = R(QQ(F.unit()).sign())
-        for factor, e in F:
-            if e % 2 and not positive_polynomial(factor, names):
-                scale *= factor
-    det = T.symbolic(N * scale)
-    if not as_polynomial:
-        return det
-    if any(not p.is_symbol() for p in T.parameters()):
-        raise AnalysisError("the characteristic matrix is not rational in its "
-                            "symbols; use as_polynomial=False", entry="linearize")
-    return to_ring(det, parameter_ring(det.variables()), "characteristic polynomial")
 
 
 class LinearSystem(SageObject):
@@ -530,7 +466,9 @@ class LinearSystem(SageObject):
 
     def kelvin_chetaev(self, positive=()):
         r"""
-        The verdict of the Kelvin--Chetaev theorems, see
+        The stability verdict from the structure of forces and the first
+        approximation (Kelvin--Chetaev theorems, gyroscopic stabilization,
+        circulatory forces), see
         :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`.
 
         EXAMPLES::
@@ -545,6 +483,25 @@ class LinearSystem(SageObject):
         self._second()
         return kelvin_chetaev(self.M(), self.D(), self.G(), self.K(), self.P(),
                               positive=positive)
+
+    def small_damping_limit(self, damping, positive=()):
+        r"""
+        The stability as damping of the shape ``damping`` vanishes, beside
+        the undamped system (the damping `D` of this system is replaced):
+        see :func:`~sage_dynsym.analysis.damping_limit.small_damping_limit`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: k = var('k')
+            sage: Ls = LinearSystem([var('x')], M=[[1]], S=[[0]], W=[[k]])
+            sage: Ls.small_damping_limit(matrix([[1]])).region()
+            [[k > 0]]
+        """
+        from .damping_limit import small_damping_limit
+        self._second()
+        return small_damping_limit(self.M(), damping, self.G(), self.K(), self.P(),
+                                   positive=positive)
 
     def linear_integrals(self):
         r"""

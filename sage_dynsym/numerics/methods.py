@@ -96,7 +96,8 @@ class NumericalMethods:
         ``values`` the parameter values. See
         :func:`~sage_dynsym.numerics.simulate.simulate` for the integrators
         (``method='auto'``, ``'stiff'``, or a method of SciPy's
-        ``solve_ivp``) and the tolerances.
+        ``solve_ivp``), the tolerances and ``events=[expr, ...]`` (zero
+        crossings, :meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`).
 
         EXAMPLES::
 

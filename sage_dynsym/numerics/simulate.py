@@ -158,7 +158,7 @@ class _Progress:
 
 
 def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
-             atol=1e-12, backend='auto', energy=None, name=None, **options):
+             atol=1e-12, backend='auto', energy=None, name=None, events=None, **options):
     r"""
     The solution of ``equations`` from ``initial`` at ``t0`` to ``t_end``.
 
@@ -181,6 +181,13 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
       (default: the one of a ``NumericalForm``)
     - ``name`` -- (optional) the model's name, for the titles of the
       trajectory's pictures
+    - ``events`` -- (optional) a list of expressions in ``t``, the state
+      variables and the parameters, or of
+      :class:`~sage_dynsym.numerics.events.Event` (with a direction and
+      termination): their zero crossings, located to the integrator's
+      tolerance, are recorded
+      (:meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`); after a
+      terminal one the trajectory ends at the crossing, its last sample
     - other keywords are passed to ``solve_ivp`` (e.g. ``max_step``)
 
     OUTPUT: a :class:`~sage_dynsym.numerics.trajectory.Trajectory`
@@ -209,6 +216,18 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         sage: residual = T.constraint_residuals()[y*dx - dy]
         sage: bool(max(abs(residual)) < 1e-10)
         True
+
+    The oscillator crossing `x = 0` upwards, and stopped there the second
+    time (its period is `\pi`)::
+
+        sage: from sage_dynsym.numerics.events import Event
+        sage: O = SecondOrderEquations([ddx + 4*x], [x], [dx], [ddx])
+        sage: T = simulate(O, {}, {x: 1, dx: 0}, 10, events=[Event(x, direction=1)])
+        sage: [round(t, 10) for t, k, state in T.events()]
+        [2.3561944902, 5.4977871438, 8.6393797974]
+        sage: T = simulate(O, {}, {x: 1, dx: 0}, 10, events=[Event(x, terminal=True)])
+        sage: bool(abs(T.times()[-1] - pi/4) < 1e-10), abs(T.final_state()[x]) < 1e-12
+        (True, True)
 
     TESTS::
 
@@ -256,6 +275,10 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     states = np.empty((points, len(x)))
     states[0] = x
     progress = _Progress(rhs, t0, t_end)
+    if events is not None:
+        from .events import event_functions
+        options['events'] = event_functions(events, form.state(), parameters)
+    found = []
     # without constraints one integration (restarts cost steps); with them
     # one per sample interval, each followed by the projection
     step = 1 if project is not None else points - 1
@@ -270,6 +293,18 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
             reached = solution.t[-1] if len(solution.t) else times[i]
             raise AnalysisError(f"the integration stopped at t = {reached}: "
                                 f"{solution.message}", entry="simulate")
+        if events is not None:
+            found += _crossings(solution, found, t0)
+        if solution.status == 1:          # a terminal event: end at the crossing
+            kept = i + len(solution.t)
+            states[i + 1:kept] = solution.y.T[1:]
+            if found[-1][0] <= times[kept - 1]:     # the crossing is a sample
+                kept -= 1
+            times, states = np.append(times[:kept], found[-1][0]), states[:kept + 1]
+            states[kept] = found[-1][2]
+            dense.append(solution.sol)
+            breaks.append(found[-1][0])
+            break
         states[i + 1:j + 1] = solution.y.T[1:]
         dense.append(solution.sol)
         breaks.append(times[j])
@@ -278,4 +313,17 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         i = j
     return Trajectory(times, states, form.state(), parameters, energy=energy,
                       method=scipy_method, dense=dense, breaks=breaks, name=name,
-                      constraints=constraints)
+                      events=found if events is not None else None, constraints=constraints)
+
+
+def _crossings(solution, earlier, t0):
+    r"""The crossings of one ``solve_ivp`` run as ``(t, index, state)``,
+    by time, without a zero at the initial time (not a crossing) or one
+    already recorded at the start of the run (the restarts of a
+    constrained integration)."""
+    new = [(float(t), k, np.array(y)) for k, (ts, ys) in
+           enumerate(zip(solution.t_events, solution.y_events)) for t, y in zip(ts, ys)
+           if t > t0]
+    new.sort(key=lambda e: e[0])
+    return [e for e in new if not any(k == e[1] and abs(t - e[0]) <= 1e-12 * max(1, abs(t))
+                                      for t, k, _ in earlier[-len(new) - 1:])]
