@@ -8,7 +8,7 @@ variation and quadratic-form criteria, first approximation
 (linearization, force structure, characteristic polynomial,
 Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems,
 roots on the imaginary axis, flutter and divergence, the limit of small
-damping)
+damping), linearization about steady motions with velocity constraints,
 and families of equilibria by elimination.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
@@ -19,6 +19,9 @@ from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
                       conservative_stability_conditions, simplify_conditions)
 from .linear import LinearSystem, linearize
+from .operating_point import OperatingPoint
+from .steady import (steady_linearization, steady_motion_conditions, steady_motions,
+                     SteadyMotion)
 from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
                               restrict_to_subspace, simultaneous_reduction)
 from .solving import solve_exactly, normalize

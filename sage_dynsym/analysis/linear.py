@@ -133,6 +133,9 @@ class LinearSystem(SageObject):
       velocities and coordinates, `M\ddot z + S\dot z + W z = 0`
     - ``J``, ``B`` -- (first order) the Jacobian and the left-hand matrix
       (default identity)
+    - ``steady_motion`` -- (optional) the
+      :class:`~sage_dynsym.analysis.steady.SteadyMotion` the system
+      linearizes (see :meth:`steady_motion`)
 
     EXAMPLES::
 
@@ -149,8 +152,9 @@ class LinearSystem(SageObject):
         g^2*lam^2 + lam^4 + 2*k*lam^2 + k^2
     """
 
-    def __init__(self, variables, M=None, S=None, W=None, J=None, B=None):
+    def __init__(self, variables, M=None, S=None, W=None, J=None, B=None, steady_motion=None):
         self._variables = [SR(v) for v in variables]
+        self._steady_motion = steady_motion
         n = len(self._variables)
         if J is not None:
             self._order = 1
@@ -179,6 +183,24 @@ class LinearSystem(SageObject):
             [x, y]
         """
         return list(self._variables)
+
+    def steady_motion(self):
+        r"""
+        The steady motion this system linearizes, with the independent
+        speeds, the velocities and constraint multipliers along it, the
+        coordinates solved to first order and those left out (a
+        :class:`~sage_dynsym.analysis.steady.SteadyMotion`); ``None`` for a
+        linearization about an equilibrium.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.linear import linearize
+            sage: x, dx = var('x dx')
+            sage: linearize(Lagrangian(dx^2/2 - x^2/2, [x]), {x: 0}).steady_motion() is None
+            True
+        """
+        return self._steady_motion
 
     def order(self):
         r"""1 for `B\dot x = Jx`, 2 for the second-order form.
@@ -556,9 +578,10 @@ class LinearSystem(SageObject):
         return result
 
 
-def linearize(system, at, variables=None, lhs_matrix=None):
+def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, speeds=None):
     r"""
-    The first-approximation system around an equilibrium.
+    The first-approximation system around an equilibrium, or around a
+    steady motion (an operating point).
 
     INPUT:
 
@@ -574,6 +597,14 @@ def linearize(system, at, variables=None, lhs_matrix=None):
     - ``lhs_matrix`` -- (optional, first-order systems) the matrix `B`, or
       the list of its diagonal entries; default the identity. E.g. the
       inductances and capacitances of circuit state equations (8).
+    - ``coordinates`` -- (optional) linearize about the steady motion ``at``
+      (an :class:`~sage_dynsym.analysis.operating_point.OperatingPoint`,
+      e.g. ``S.operating_point('upright')``, or a dict over coordinates and
+      velocities) in these coordinates, the others being ignorable or tied
+      to them by holonomic constraints; this is also the way for models
+      with constraints, holonomic or on the velocities (rolling wheels), see
+      :mod:`~sage_dynsym.analysis.steady`
+    - ``speeds`` -- (optional, with ``coordinates``) the independent speeds
 
     OUTPUT: a :class:`LinearSystem`; second-order for a Lagrangian, else
     first-order
@@ -616,8 +647,19 @@ def linearize(system, at, variables=None, lhs_matrix=None):
         ...
         AnalysisError: linearize: the point {theta: 0} is a singularity of the coordinates: a denominator of the equations vanishes at theta = 0 (the chart degenerates there, as Euler angles do at theta = 0); linearize in a regular chart instead (e.g. other angles for the axis)
     """
+    from .operating_point import OperatingPoint
+    data = _record(system)
+    if coordinates is not None or speeds is not None or isinstance(at, OperatingPoint) or (
+            isinstance(data, SecondOrderEquations) and data.velocity_constraints()):
+        from .steady import steady_linearization
+        if not isinstance(data, SecondOrderEquations):
+            raise AnalysisError("steady motions are linearized from second-order equations "
+                                "(a Lagrangian or a mechanical system)", entry="linearize")
+        motion = steady_linearization(data, at, coordinates, speeds)
+        return LinearSystem(motion.coordinates(), M=motion.M(), S=motion.S(), W=motion.W(),
+                            steady_motion=motion)
     at = {SR(k): SR(v) for k, v in at.items()}
-    data = equations_of_motion(system)
+    data = _without_constraints(data)
     if isinstance(data, SecondOrderEquations):
         return _linearize_second_order(data, at)
     if isinstance(data, FirstOrderEquations):
@@ -646,25 +688,42 @@ def equations_of_motion(system):
         sage: equations_of_motion([x]) is None
         True
 
-    Equations with constraint multipliers are refused (the linearization
-    and the stationary-motion search work in independent coordinates)::
+    Equations with constraint multipliers are refused (the stationary-motion
+    search and the linearization about equilibria work in independent
+    coordinates; :func:`linearize` with ``coordinates=`` eliminates them)::
 
         sage: from sage_dynsym.analysis.linear import linearize
         sage: y, dy = var('y dy')
-        sage: linearize(Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]), {x: 0, y: 0})
+        sage: L = Lagrangian((dx^2 + dy^2)/2 - x^2/2, [x, y], constraints=[x - y])
+        sage: equations_of_motion(L)
         Traceback (most recent call last):
         ...
-        AnalysisError: constraints: the equations have the constraints [x - y] with multipliers [mu1], which the analysis does not handle; reduce the model to independent coordinates first (Lagrangian.reduce)
+        AnalysisError: constraints: the equations have the constraints [x - y] with multipliers [mu1], which the analysis does not handle; reduce the model to independent coordinates first (Lagrangian.reduce), or linearize in chosen coordinates (linearize(..., coordinates=[...]))
+        sage: Ls = linearize(L, {x: 0, y: 0}, coordinates=[x]); Ls.M(), Ls.K()
+        ([2], [1])
     """
+    return _without_constraints(_record(system))
+
+
+def _without_constraints(data):
+    # the record, refused when it has constraint multipliers
+    if isinstance(data, SecondOrderEquations) and (data.constraints()
+                                                   or data.velocity_constraints()):
+        constraints = data.constraints() + data.velocity_constraints()
+        multipliers = data.multipliers() + data.velocity_multipliers()
+        raise AnalysisError(f"the equations have the constraints {constraints} with "
+                            f"multipliers {multipliers}, which the analysis does not handle; "
+                            "reduce the model to independent coordinates first "
+                            "(Lagrangian.reduce), or linearize in chosen coordinates "
+                            "(linearize(..., coordinates=[...]))", entry="constraints")
+    return data
+
+
+def _record(system):
+    # the neutral record of a model or characteristic function, unchecked
     to_linearizer = getattr(system, 'to_linearizer', None)
     if to_linearizer is not None:
-        data = to_linearizer()
-        if isinstance(data, SecondOrderEquations) and data.constraints():
-            raise AnalysisError(f"the equations have the constraints {data.constraints()} "
-                                f"with multipliers {data.multipliers()}, which the analysis "
-                                "does not handle; reduce the model to independent "
-                                "coordinates first (Lagrangian.reduce)", entry="constraints")
-        return data
+        return to_linearizer()
     if hasattr(system, 'lagrange_equations'):
         return SecondOrderEquations(system.lagrange_equations(), system.coordinates(),
                                     system.velocities(), system.accelerations())

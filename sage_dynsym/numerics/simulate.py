@@ -16,7 +16,10 @@ from ``t0`` to ``t_end``, both included.
 - Holonomic constraints `f(q, t) = 0` are kept by projection: the solution
   is integrated from sample to sample and at each sample the coordinates
   are projected onto `f = 0` (Gauss--Newton, minimum-norm steps) and the
-  velocities onto `J \dot q + \partial f/\partial t = 0`.
+  velocities onto `J \dot q + \partial f/\partial t = 0` and the velocity
+  constraints `A\dot q + b = 0` (a rolling wheel); the trajectory reports
+  what is left of every constraint along the motion
+  (:meth:`~sage_dynsym.numerics.trajectory.Trajectory.constraint_residuals`).
 - When the integration lasts more than a few seconds the progress is
   reported through :func:`sage.misc.verbose.verbose` (level
   1) and the logger ``sage_dynsym.numerics``. An interruption (Ctrl-C)
@@ -103,29 +106,33 @@ class _Projection:
     def __init__(self, form, values):
         from .compiler import python_function
         f, J, f_t = form.constraints()
-        self._n, self._m = len(form.state()) // 2, len(f)
+        _, A, b = form.velocity_constraints()
+        self._n, self._m, self._k = len(form.state()) // 2, len(f), len(A)
         q = form.state()[:self._n]
-        exprs = [SR(e).subs(values) for e in f + [a for row in J for a in row] + f_t]
+        exprs = [SR(e).subs(values) for e in f + [a for row in J + A for a in row] + f_t + b]
         self._evaluate = python_function(exprs, [_t] + q, entry="constraints")
 
     def _blocks(self, t, q):
-        n, m = self._n, self._m
-        v = np.array(self._evaluate(t, *q))
-        return v[:m], v[m:m + m * n].reshape(m, n), v[m + m * n:]
+        # f, the velocity rows [J; A] and their free terms [f_t; b] at (t, q)
+        n, m, k = self._n, self._m, self._k
+        v = np.array(self._evaluate(t, *q), dtype=float)
+        rows = (m + k) * n
+        return v[:m], v[m:m + rows].reshape(m + k, n), v[m + rows:]
 
     def __call__(self, t, x):
-        n = self._n
+        n, m = self._n, self._m
         q, dq = x[:n].copy(), x[n:].copy()
         for _ in range(50):
-            f, J, _ = self._blocks(t, q)
-            if np.max(np.abs(f)) <= 1e-14 * max(1.0, np.max(np.abs(q))):
+            f, G, _ = self._blocks(t, q)
+            if not m or np.max(np.abs(f)) <= 1e-14 * max(1.0, np.max(np.abs(q))):
                 break
+            J = G[:m]
             q -= J.T @ np.linalg.solve(J @ J.T, f)
         else:
             raise AnalysisError(f"cannot project the state at t = {t} onto the constraints",
                                 entry="simulate")
-        f, J, f_t = self._blocks(t, q)
-        dq -= J.T @ np.linalg.solve(J @ J.T, J @ dq + f_t)
+        f, G, h = self._blocks(t, q)
+        dq -= G.T @ np.linalg.solve(G @ G.T, G @ dq + h)
         return np.concatenate([q, dq])
 
 
@@ -196,6 +203,19 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         sage: T = simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 10, energy=(dx^2 + dy^2)/2 + g*y)
         sage: bool(max(abs(T.values(x^2 + y^2 - 1))) < 1e-12), T.energy_drift() < 1e-8
         (True, True)
+        sage: bool(max(abs(T.constraint_residuals()[x^2 + y^2 - 1])) < 1e-12)
+        True
+
+    A point that must move along the direction of ``(1, y)`` (the velocity
+    constraint `y\dot x - \dot y = 0`, not integrable), pushed along `x`::
+
+        sage: la = var('la')
+        sage: E = SecondOrderEquations([ddx - 1 - la*y, ddy + la], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          velocity_constraints=[y*dx - dy], velocity_multipliers=[la])
+        sage: T = simulate(E, {}, {x: 0, y: 1, dx: 0, dy: 0}, 2)
+        sage: residual = T.constraint_residuals()[y*dx - dy]
+        sage: bool(max(abs(residual)) < 1e-10)
+        True
 
     The oscillator crossing `x = 0` upwards, and stopped there the second
     time (its period is `\pi`)::
@@ -247,7 +267,8 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         raise ModelError(f"the final time must be after t0 = {t0}, got {t_end}", entry="t_end")
     x = initial_state(form, initial)
     parameters = rhs.parameters()
-    project = _Projection(form, parameters) if form.constraints()[0] else None
+    constraints = form.constraints()[0] + form.velocity_constraints()[0]
+    project = _Projection(form, parameters) if constraints else None
     if project is not None:
         x = project(t0, x)
     times = np.linspace(t0, t_end, points)
@@ -292,7 +313,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         i = j
     return Trajectory(times, states, form.state(), parameters, energy=energy,
                       method=scipy_method, dense=dense, breaks=breaks, name=name,
-                      events=found if events is not None else None)
+                      events=found if events is not None else None, constraints=constraints)
 
 
 def _crossings(solution, earlier, t0):

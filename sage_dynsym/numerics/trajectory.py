@@ -53,12 +53,16 @@ class Trajectory(SageObject):
     - ``events`` -- (optional) the recorded zero crossings, a list of
       ``(time, index, state)`` with ``state`` an array over the variables
       (see :mod:`~sage_dynsym.numerics.events`)
+    - ``constraints`` -- (optional) the constraints the motion must keep
+      (expressions in the state, each ``== 0``), for
+      :meth:`constraint_residuals`
 
     EXAMPLES: see the module documentation.
     """
 
     def __init__(self, times, states, variables, parameters, energy=None, method=None,
-                 dense=None, breaks=None, name=None, events=None):
+                 dense=None, breaks=None, name=None, events=None, constraints=()):
+        self._constraints = [SR(c) for c in constraints]
         self._times = np.array(times, dtype=float)
         self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
         self._variables = [SR(v) for v in variables]
@@ -230,6 +234,22 @@ class Trajectory(SageObject):
             {x: 2.0}
         """
         return dict(zip(self._variables, map(float, self._states[-1])))
+
+    def constraint_residuals(self):
+        r"""
+        The values of the constraints along the motion: a dict
+        ``{constraint: NumPy array over the samples}`` (empty when the
+        model has none); zero up to the integration and projection errors.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x, dx = var('x dx')
+            sage: T = Trajectory([0, 1], [[1, 0], [2, 1e-9]], [x, dx], {}, constraints=[dx])
+            sage: T.constraint_residuals()
+            {dx: array([0.e+00, 1.e-09])}
+        """
+        return {c: self._array(c) for c in self._constraints}
 
     def energy(self):
         r"""The conserved energy of the model (``None`` if it has none).
