@@ -198,7 +198,7 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
 
 def semidefiniteness_conditions(A, positive=()):
     r"""
-    Conditions for a symmetric matrix to be positive *semi*definite: every
+    Conditions for a symmetric matrix to be positive semidefinite: every
     principal minor (not only the leading ones) is nonnegative.
 
     INPUT:
