@@ -21,14 +21,13 @@ EXAMPLES: a pendulum::
     sage: f(0, [pi.n()/2, 0.5])
     array([ 0.5  , -4.905])
 """
-import math
-
 import numpy as np
 
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..errors import ModelError, brief
+from ..io.arguments import finite_real
 from .form import NumericalForm
 
 
@@ -74,7 +73,7 @@ def parameter_values(form, values):
 def real_number(value, name, entry="values"):
     r"""
     ``value`` (a Python or Sage number, or a constant expression) as a
-    finite float.
+    finite float (see :func:`~sage_dynsym.io.arguments.finite_real`).
 
     EXAMPLES::
 
@@ -92,17 +91,66 @@ def real_number(value, name, entry="values"):
         Traceback (most recent call last):
         ...
         ModelError: values: the value of k must be a finite real number, got +Infinity
+        sage: real_number('7', 'k')
+        Traceback (most recent call last):
+        ...
+        ModelError: values: the value of k must be a real number, got '7' (str)
     """
-    try:
-        number = complex(SR(value)) if not isinstance(value, (int, float)) else value
-    except (TypeError, ValueError):
-        number = None
-    if number is None or (isinstance(number, complex) and number.imag != 0):
-        raise ModelError(f"the value of {name} must be a real number, got {value}", entry=entry)
-    if not math.isfinite(number.real):
-        raise ModelError(f"the value of {name} must be a finite real number, got {value}",
-                         entry=entry)
-    return float(number.real)
+    return finite_real(value, name, entry=entry)
+
+
+def state_vector(x, size, entry="numerical_rhs"):
+    r"""
+    The state ``x`` (a sequence of ``size`` finite real numbers) as a NumPy
+    array of floats; a :class:`~sage_dynsym.errors.ModelError` for anything
+    else (strings, booleans, complex numbers, ``nan``, a wrong length).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.rhs import state_vector
+        sage: state_vector([1, 1/2], 2)
+        array([1. , 0.5])
+
+    TESTS::
+
+        sage: state_vector(['a', 'b'], 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must be 2 real numbers, got ['a', 'b']
+        sage: state_vector([1.0, float('nan')], 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must be 2 finite real numbers, got [1.0, nan]
+        sage: state_vector([1.0], 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must have 2 entries, got 1
+        sage: state_vector(None, 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must be 2 real numbers, got None
+    """
+    array = None
+    if not isinstance(x, (str, bytes, dict)) and hasattr(x, '__len__'):
+        array = np.asarray(x) if not isinstance(x, np.ndarray) else x
+        if array.dtype.kind == 'O':     # Sage numbers, one by one
+            try:
+                array = np.array([finite_real(v, 'x') for v in array.ravel()], dtype=float) \
+                    if array.ndim == 1 else None
+            except ModelError:
+                array = None
+        elif array.dtype.kind not in 'iuf':
+            array = None
+    if array is None:
+        raise ModelError(f"the state must be {size} real numbers, got {brief(x)}", entry=entry)
+    if array.shape != (size,):
+        got = len(array) if array.ndim == 1 else f"shape {array.shape}"
+        raise ModelError(f"the state must have {size} entries, got {got}", entry=entry)
+    array = np.ascontiguousarray(array, dtype=float)
+    if not np.isfinite(array).all():
+        raise ModelError(f"the state must be {size} finite real numbers, got "
+                         f"{brief(list(map(float, array)))}", entry=entry)
+    return array
 
 
 class RightHandSide(SageObject):
@@ -128,13 +176,31 @@ class RightHandSide(SageObject):
         self._p = parameter_values(form, values)
         self._kernel = form.kernel(backend)
         self._call = self._kernel.bind(self._p)
+        self._size = len(form.state())
 
     def _repr_(self):
         return (f"Numerical right-hand side x' = f(t, x) in "
                 f"({', '.join(map(str, self._form.state()))})")
 
     def __call__(self, t, x):
-        return self._call(t, x)
+        t = finite_real(t, 't', entry="numerical_rhs")
+        return self._call(t, state_vector(x, self._size))
+
+    def unchecked(self):
+        r"""
+        The function ``f(t, x)`` without the checks of its arguments, for
+        callers that pass a float and a NumPy array of the right length
+        (the integrators).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.rhs import numerical_rhs
+            sage: x = var('x')
+            sage: numerical_rhs(FirstOrderEquations([-x], [x]), {}).unchecked()(0.0, [2.0])
+            array([-2.])
+        """
+        return self._call
 
     def variables(self):
         r"""The state variables, in the order of ``x``.

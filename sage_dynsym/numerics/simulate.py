@@ -16,7 +16,19 @@ from ``t0`` to ``t_end``, both included.
 - Holonomic constraints `f(q, t) = 0` are kept by projection: the solution
   is integrated from sample to sample and at each sample the coordinates
   are projected onto `f = 0` (Gauss--Newton, minimum-norm steps) and the
-  velocities onto `J \dot q + \partial f/\partial t = 0`.
+  velocities onto `J \dot q + \partial f/\partial t = 0`. The initial
+  state must lie on the constraints (positions and velocities, to
+  rounding): a state off them is refused with its residuals, unless
+  ``project=True`` asks for its projection (then reported by a warning).
+  Constraints without a regular real point there (an empty set such as
+  `x^2 + 1 = 0`, a singular one such as `(x^2 + z^2 - 1)^2 = 0`) are
+  refused before integrating.
+- Sizes are checked before anything is allocated or integrated: at most
+  :data:`MAX_POINTS` samples (``max_points=`` raises it) and at most
+  :data:`MAX_EVALUATIONS` evaluations of the right-hand side
+  (``max_evaluations=``): an integration that needs more (a final time far
+  beyond the time scale of the motion, a stiff system integrated by an
+  explicit method) stops with an error saying how far it got.
 - When the integration lasts more than a few seconds the progress is
   reported through :func:`sage.misc.verbose.verbose` (level
   1) and the logger ``sage_dynsym.numerics``. An interruption (Ctrl-C)
@@ -35,6 +47,7 @@ EXAMPLES: the harmonic oscillator::
 """
 import logging
 import time
+import warnings
 
 import numpy as np
 
@@ -42,6 +55,7 @@ from sage.misc.verbose import verbose
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, AnalysisError
+from ..io.arguments import count, finite_real, flag
 from ..symbols import t as _t
 from .form import NumericalForm
 from .rhs import RightHandSide, real_number
@@ -50,8 +64,19 @@ from .trajectory import Trajectory
 _LOG = logging.getLogger('sage_dynsym.numerics')
 _METHODS = {'auto': 'DOP853', 'nonstiff': 'DOP853', 'stiff': 'Radau'}
 _SCIPY = ('RK45', 'RK23', 'DOP853', 'Radau', 'BDF', 'LSODA')
+#: the options of ``solve_ivp`` that :func:`simulate` passes on (step sizes)
+_STEP_OPTIONS = ('max_step', 'first_step', 'min_step')
 #: seconds after which the progress is reported
 _REPORT_AFTER = 3.0
+#: Most samples of a trajectory (``max_points=`` raises it): the samples
+#: are stored, ``points`` times the size of the state in floats.
+MAX_POINTS = 10**6
+#: Most evaluations of the right-hand side in one simulation
+#: (``max_evaluations=`` raises it): some twenty seconds of integration.
+MAX_EVALUATIONS = 10**6
+#: Residuals of the constraints below this (relative to the size of the
+#: state) are rounding errors: such a state is on the constraints.
+CONSTRAINT_TOLERANCE = 1e-9
 
 
 def initial_state(form, initial):
@@ -104,41 +129,81 @@ class _Projection:
         from .compiler import python_function
         f, J, f_t = form.constraints()
         self._n, self._m = len(form.state()) // 2, len(f)
+        self._state = form.state()
         q = form.state()[:self._n]
         exprs = [SR(e).subs(values) for e in f + [a for row in J for a in row] + f_t]
         self._evaluate = python_function(exprs, [_t] + q, entry="constraints")
 
     def _blocks(self, t, q):
         n, m = self._n, self._m
-        v = np.array(self._evaluate(t, *q))
+        try:
+            v = np.array(self._evaluate(t, *q), dtype=float)
+        except (ArithmeticError, ValueError, OverflowError):
+            v = np.full(m + m * n + m, np.nan)
         return v[:m], v[m:m + m * n].reshape(m, n), v[m + m * n:]
+
+    def residuals(self, t, x):
+        r"""The residuals of the constraints (positions) and of their time
+        derivative (velocities) at the state ``x``, and whether they are
+        rounding errors."""
+        q, dq = x[:self._n], x[self._n:]
+        f, J, f_t = self._blocks(t, q)
+        velocity = J @ dq + f_t
+        small = (np.max(np.abs(f)) <= CONSTRAINT_TOLERANCE * max(1.0, np.max(np.abs(q)))
+                 and np.max(np.abs(velocity)) <= CONSTRAINT_TOLERANCE * max(
+                     1.0, np.max(np.abs(J)) * np.max(np.abs(dq), initial=0.0)
+                     + np.max(np.abs(f_t))))
+        return f, velocity, bool(small)
+
+    def _refuse(self, t, q, why):
+        where = ', '.join(f"{v} = {float(a):.6g}" for v, a in zip(self._state, q))
+        return AnalysisError(f"the constraints have no regular real point near t = {t:g}, "
+                             f"{where} ({why}): they are empty over the reals or singular "
+                             "there", entry="constraints")
+
+    def _solve(self, t, q, J, rhs):
+        # minimum-norm step J^T (J J^T)^{-1} rhs; a rank-deficient J means
+        # the constraints are not independent (singular) at q
+        if not np.isfinite(J).all() or np.linalg.matrix_rank(J) < self._m:
+            raise self._refuse(t, q, "the Jacobian of the constraints has rank "
+                                     f"{np.linalg.matrix_rank(J) if np.isfinite(J).all() else 0}"
+                                     f" < {self._m}")
+        return J.T @ np.linalg.solve(J @ J.T, rhs)
 
     def __call__(self, t, x):
         n = self._n
         q, dq = x[:n].copy(), x[n:].copy()
         for _ in range(50):
             f, J, _ = self._blocks(t, q)
+            if not np.isfinite(f).all():
+                raise self._refuse(t, q, "the constraints have no value there")
             if np.max(np.abs(f)) <= 1e-14 * max(1.0, np.max(np.abs(q))):
                 break
-            q -= J.T @ np.linalg.solve(J @ J.T, f)
+            q -= self._solve(t, q, J, f)
         else:
-            raise AnalysisError(f"cannot project the state at t = {t} onto the constraints",
-                                entry="simulate")
+            raise self._refuse(t, q, "the Gauss-Newton projection does not converge")
         f, J, f_t = self._blocks(t, q)
-        dq -= J.T @ np.linalg.solve(J @ J.T, J @ dq + f_t)
+        dq -= self._solve(t, q, J, J @ dq + f_t)
         return np.concatenate([q, dq])
 
 
 class _Progress:
-    """The right-hand side, reporting the progress of long integrations."""
+    """The right-hand side, reporting the progress of long integrations and
+    stopping after ``limit`` evaluations."""
 
-    def __init__(self, rhs, t0, t_end):
-        self._rhs, self._t0, self._span = rhs, t0, t_end - t0
+    def __init__(self, rhs, t0, t_end, limit):
+        self._rhs, self._t0, self._t_end, self._span = rhs, t0, t_end, t_end - t0
+        self._limit = limit
         self._calls, self._start = 0, time.monotonic()
         self._last = self._start
 
     def __call__(self, t, x):
         self._calls += 1
+        if self._calls > self._limit:
+            raise AnalysisError(f"the integration needed more than {self._limit} evaluations "
+                                f"of the right-hand side and reached t = {t:g} of "
+                                f"{self._t_end:g}; raise max_evaluations= (or shorten t_end, "
+                                "or use method='stiff' for a stiff system)", entry="simulate")
         if not self._calls % 2000:
             now = time.monotonic()
             if now - self._last > _REPORT_AFTER:
@@ -150,8 +215,31 @@ class _Progress:
         return self._rhs(t, x)
 
 
+def _start_on_constraints(project, t0, x, state, allow):
+    r"""The initial state ``x`` on the constraints: refused with its
+    residuals when it is off them, unless ``allow`` (then projected and
+    reported)."""
+    f, velocity, small = project.residuals(t0, x)
+    if not small and not allow:
+        shown = ', '.join(f"{v:.6g}" for v in f)
+        moving = ', '.join(f"{v:.6g}" for v in velocity)
+        raise ModelError(f"the initial state is off the constraints: residuals f = [{shown}] "
+                         f"(positions), J dq + df/dt = [{moving}] (velocities); give a state "
+                         "on the constraints, or project=True to project it onto them",
+                         entry="initial")
+    projected = project(t0, x)
+    if not small:
+        message = ("simulate: the initial state was projected onto the constraints: "
+                   + ', '.join(f"{v} = {a:.12g} (given {b:.12g})"
+                               for v, a, b in zip(state, projected, x) if a != b))
+        warnings.warn(message, stacklevel=3)
+        _LOG.info(message)
+    return projected
+
+
 def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
-             atol=1e-12, backend='auto', energy=None, **options):
+             atol=1e-12, backend='auto', energy=None, project=False, max_points=MAX_POINTS,
+             max_evaluations=MAX_EVALUATIONS, **options):
     r"""
     The solution of ``equations`` from ``initial`` at ``t0`` to ``t_end``.
 
@@ -172,7 +260,14 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     - ``energy`` -- (optional) a conserved energy for
       :meth:`~sage_dynsym.numerics.trajectory.Trajectory.energy_drift`
       (default: the one of a ``NumericalForm``)
-    - other keywords are passed to ``solve_ivp`` (e.g. ``max_step``)
+    - ``project`` -- (default: ``False``) with holonomic constraints, project
+      an initial state that is off them onto them (reported by a warning)
+      instead of refusing it
+    - ``max_points`` -- (default: :data:`MAX_POINTS`) the most samples
+    - ``max_evaluations`` -- (default: :data:`MAX_EVALUATIONS`) the most
+      evaluations of the right-hand side
+    - ``max_step``, ``first_step``, ``min_step`` -- step sizes passed to
+      ``solve_ivp``
 
     OUTPUT: a :class:`~sage_dynsym.numerics.trajectory.Trajectory`
 
@@ -193,7 +288,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, points=1)
         Traceback (most recent call last):
         ...
-        ModelError: points: at least 2 samples are needed (both ends), got 1
+        ModelError: points: expected at least 2 samples, got 1
         sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, method='Euler')
         Traceback (most recent call last):
         ...
@@ -202,37 +297,84 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         Traceback (most recent call last):
         ...
         ModelError: t_end: the final time must be after t0 = 0.0, got -1.0
+        sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, points=float(2.9))
+        Traceback (most recent call last):
+        ...
+        ModelError: points: expected an integer, got 2.9 (float)
+        sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, points=10^9)
+        Traceback (most recent call last):
+        ...
+        ModelError: points: 1000000000 samples are more than the limit of 1000000; raise it with max_points= if that is what you want
+        sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, rtol=-1)
+        Traceback (most recent call last):
+        ...
+        ModelError: rtol: the value of rtol must be greater than 0, got -1
+        sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 10^12, points=2, max_evaluations=1000)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: simulate: the integration needed more than 1000 evaluations of the right-hand side and reached t = ... of 1e+12; raise max_evaluations= (or shorten t_end, or use method='stiff' for a stiff system)
+
+    An initial state off the constraints is refused, or projected on
+    request::
+
+        sage: simulate(E, {g: 1}, {x: 2, y: 0, dx: 0, dy: 1}, 1)
+        Traceback (most recent call last):
+        ...
+        ModelError: initial: the initial state is off the constraints: residuals f = [3] (positions), J dq + df/dt = [0] (velocities); give a state on the constraints, or project=True to project it onto them
+        sage: T = simulate(E, {g: 1}, {x: 2, y: 0, dx: 0, dy: 1}, 1, project=True)
+        doctest:warning...
+        UserWarning: simulate: the initial state was projected onto the constraints: x = 1 (given 2)
+        sage: abs(T.values(x)[0] - 1) < 1e-14
+        True
+
+    Constraints that have no regular real point are refused before
+    integrating::
+
+        sage: F = SecondOrderEquations([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          constraints=[x^2 + y^2 + 1], multipliers=[mu])
+        sage: simulate(F, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, project=True)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: constraints: the constraints have no regular real point near t = 0, x = ..., y = ... (...): they are empty over the reals or singular there
     """
     from scipy.integrate import solve_ivp
+    if method not in _METHODS and method not in _SCIPY:
+        raise ModelError(f"{method!r} is not one of {', '.join(list(_METHODS) + list(_SCIPY))}",
+                         entry="method")
+    scipy_method = _METHODS.get(method, method)
+    max_points = count(max_points, 'max_points', minimum=2)
+    max_evaluations = count(max_evaluations, 'max_evaluations')
+    points = count(points, 'points', minimum=2, maximum=max_points, what="samples",
+                   raise_with="max_points=")
+    t0, t_end = real_number(t0, 't0', entry="t0"), real_number(t_end, 't_end', entry="t_end")
+    if not t_end > t0:
+        raise ModelError(f"the final time must be after t0 = {t0}, got {t_end}", entry="t_end")
+    if not np.isfinite(t_end - t0):
+        raise ModelError(f"the interval from t0 = {t0} to t_end = {t_end} is too long for "
+                         "floating point", entry="t_end")
+    rtol = finite_real(rtol, 'rtol', minimum=0, strict=True)
+    atol = finite_real(atol, 'atol', minimum=0)
+    project_initial = flag(project, 'project')
+    for key, value in options.items():
+        if key not in _STEP_OPTIONS:
+            raise ModelError(f"unknown option {key!r}; the options of the integrator are "
+                             f"{', '.join(_STEP_OPTIONS)}", entry="simulate")
+        options[key] = finite_real(value, key, minimum=0, strict=True)
     if isinstance(equations, RightHandSide):
         rhs, form = equations, equations.form()
     else:
         form = equations if isinstance(equations, NumericalForm) else NumericalForm(equations)
         rhs = RightHandSide(form, values, backend)
     energy = form.energy() if energy is None else energy
-    if method not in _METHODS and method not in _SCIPY:
-        raise ModelError(f"{method!r} is not one of {', '.join(list(_METHODS) + list(_SCIPY))}",
-                         entry="method")
-    scipy_method = _METHODS.get(method, method)
-    try:
-        points = int(points)
-    except (TypeError, ValueError):
-        raise ModelError(f"points must be an integer, got {points}", entry="points") from None
-    if points < 2:
-        raise ModelError(f"at least 2 samples are needed (both ends), got {points}",
-                         entry="points")
-    t0, t_end = real_number(t0, 't0', entry="t0"), real_number(t_end, 't_end', entry="t_end")
-    if not t_end > t0:
-        raise ModelError(f"the final time must be after t0 = {t0}, got {t_end}", entry="t_end")
     x = initial_state(form, initial)
     parameters = rhs.parameters()
     project = _Projection(form, parameters) if form.constraints()[0] else None
     if project is not None:
-        x = project(t0, x)
+        x = _start_on_constraints(project, t0, x, form.state(), project_initial)
     times = np.linspace(t0, t_end, points)
     states = np.empty((points, len(x)))
     states[0] = x
-    progress = _Progress(rhs, t0, t_end)
+    progress = _Progress(rhs.unchecked(), t0, t_end, max_evaluations)
     # without constraints one integration (restarts cost steps); with them
     # one per sample interval, each followed by the projection
     step = 1 if project is not None else points - 1
