@@ -45,6 +45,7 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import (velocity, acceleration, t, time_derivative, check_mechanical_names,
                        sage_numbers)
+from ..io.arguments import symbol_arguments
 from ..io.fields import text as _text
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
@@ -52,6 +53,7 @@ from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form, is_singular
+from ..numerics.values import check_model_values
 from .force_functions import check_force_function
 from .kinematics import Kinematics
 from .rigid_body import RigidBody
@@ -271,7 +273,7 @@ class MechanicalSystem(Model):
             raise ModelError(f"expected {n} generalized forces, one per coordinate, got "
                              f"{len(self._forces)}", entry="forces")
         self._name = name
-        self._positive = [SR(p) for p in positive]
+        self._positive = symbol_arguments(positive, 'positive')
         if self._parameters is not None:
             self._check_symbols()
             names = {str(p) for p in self._parameters}
@@ -531,6 +533,7 @@ class MechanicalSystem(Model):
             sage: S.numerical_rhs({m: 2, k: 8})(0, [1.0, 0.5])
             array([ 0.5, -4. ])
         """
+        check_model_values(self, values)
         return self.lagrangian().numerical_rhs(values, **options)
 
     def simulate(self, values, initial, t_end, **options):
@@ -547,7 +550,17 @@ class MechanicalSystem(Model):
             sage: T = S.simulate({m: 2, k: 8}, {x: 1, 'dx': 0}, pi, points=3)
             sage: [round(v, 8) for v in T.values(x)], T.energy_drift() < 1e-9
             ([1.0, -1.0, 1.0], True)
+
+        TESTS::
+
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2, positive=[m, k])
+            sage: S.simulate({m: -2, k: 8}, {x: 1, 'dx': 0}, pi)
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -2
         """
+        check_model_values(self, values)
         return self.lagrangian().simulate(values, initial, t_end, **options)
 
     def code(self, language='python', cse=True):
@@ -775,6 +788,28 @@ class MechanicalSystem(Model):
         if self._force is None:
             return []
         return list(self._force) if isinstance(self._force, list) else [self._force]
+
+    def conditions(self):
+        r"""
+        The conditions on the parameters for the model to be physical that
+        are not decided by its data: those of its force fields (the
+        direction of a Newtonian field with symbolic direction cosines a
+        unit vector, its distance positive; see
+        :meth:`~sage_dynsym.mechanics.force_functions.NewtonianField.conditions`).
+        Values given to :meth:`simulate` and :meth:`numerical_rhs` must
+        satisfy them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, NewtonianField
+            sage: phi, nu, r, e1, e2 = var('phi nu r e1 e2')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, phi)], mass=1)], [phi],
+            ....:                      force_function=NewtonianField(nu, r, [e1, e2, 0]))
+            sage: S.conditions()
+            [e1^2 + e2^2 == 1, r > 0]
+        """
+        return [c for term in self.force_terms() if hasattr(term, 'conditions')
+                for c in term.conditions()]
 
     def loads(self):
         r"""
