@@ -141,6 +141,12 @@ def lie_poisson_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         ModelError: bad.yaml: algebra: the matrix breaks the Jacobi identity: {x, {y, z}} + {y, {z, x}} + {z, {x, y}} = x, not 0
+        sage: lie_poisson_from_dict({'kind': 'lie_poisson', 'variables': ['x', 'y'],
+        ....:     'algebra': {'structure_constants': [['x', 'y', {'y': 1}], ['y', 'x', {'y': -1}]]},
+        ....:     'hamiltonian': 'x*y'}, 'b.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: b.yaml: algebra.structure_constants[1]: the bracket of y and x is already given in structure_constants[0]: give each pair once (the other order follows by skew-symmetry)
         sage: lie_poisson_from_dict({'kind': 'lie_poisson', 'algebra': 'so3', 'hamiltonian': 'M1',
         ....:                        'colour': 'red'}, 'top.yaml')
         Traceback (most recent call last):
@@ -244,7 +250,7 @@ def _algebra(algebra_data, variables, parser, source):
             raise DescriptionError(f"expected a list of brackets [a, b, {{c: coefficient}}], "
                                    f"got {brief(value)}", entry='algebra.structure_constants',
                                    source=source)
-        constants = {}
+        constants, given = {}, {}
         for i, item in enumerate(value):
             entry = f'algebra.structure_constants[{i}]'
             if not (isinstance(item, list) and len(item) == 3 and isinstance(item[2], dict)
@@ -253,6 +259,13 @@ def _algebra(algebra_data, variables, parser, source):
                 raise DescriptionError(f"expected a bracket [a, b, {{c: coefficient}}] of the "
                                        f"variables {', '.join(variables)}, got {brief(item)}",
                                        entry=entry, source=source)
+            pair = frozenset(item[:2])
+            if pair in given:
+                raise DescriptionError(f"the bracket of {item[0]} and {item[1]} is already given "
+                                       f"in structure_constants[{given[pair]}]: give each pair "
+                                       "once (the other order follows by skew-symmetry)",
+                                       entry=entry, source=source)
+            given[pair] = i
             constants[item[0], item[1]] = {k: parser.parse(c, entry=f'{entry}.{k}')
                                            for k, c in item[2].items()}
         return constants
