@@ -38,8 +38,12 @@ import os
 import uuid
 
 from ..errors import AnalysisError
+from ..io.arguments import count, finite_real, is_integer
 
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
+#: Most worker processes of a local cluster (``workers=``): each is a
+#: Python process; far more than the cores only costs memory.
+MAX_WORKERS = 256
 
 
 def chunks(total, size):
@@ -56,12 +60,12 @@ def chunks(total, size):
         Traceback (most recent call last):
         ...
         AnalysisError: scale: chunk_size must be a positive integer, got 0
+        sage: chunks(7, 2.5)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: scale: chunk_size must be a positive integer, got 2.50000000000000
     """
-    try:
-        ok = int(size) == size and size >= 1
-    except (TypeError, ValueError):
-        ok = False
-    if not ok:
+    if not (is_integer(size) and size >= 1):
         raise AnalysisError(f"chunk_size must be a positive integer, got {size!r}", entry="scale")
     size = int(size)
     return [(a, min(total, a + size)) for a in range(0, total, size)]
@@ -137,7 +141,16 @@ def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
         Traceback (most recent call last):
         ...
         AnalysisError: scale: client must be None (a local cluster), False (no Dask), a Dask Client or a scheduler address, got 42
+        sage: with connected(workers=10^5): pass
+        Traceback (most recent call last):
+        ...
+        AnalysisError: workers: 100000 is more than the limit of 256
     """
+    finite_real(timeout, 'timeout', error=AnalysisError, minimum=0, strict=True)
+    if client is None:
+        n = machine_cores() if workers is None else count(workers, 'workers',
+                                                          maximum=MAX_WORKERS,
+                                                          error=AnalysisError)
     distributed = _dask()
     if isinstance(client, distributed.Client):
         if client.status not in ('running', 'connecting', 'newly-created'):
@@ -158,9 +171,6 @@ def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
     if client is not None:
         raise AnalysisError("client must be None (a local cluster), False (no Dask), a Dask "
                             f"Client or a scheduler address, got {client!r}", entry="scale")
-    n = machine_cores() if workers is None else int(workers)
-    if n < 1:
-        raise AnalysisError(f"workers must be a positive integer, got {workers!r}", entry="scale")
     # no dashboard; the scheduler's HTTP endpoints on a free port of 127.0.0.1
     http = dict(dashboard=False, dashboard_address='127.0.0.1:0')
     with distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
