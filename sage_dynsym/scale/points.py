@@ -232,3 +232,34 @@ def _range(key, axis_range, entry, samples=False):
         raise AnalysisError(f"the range {tuple(axis_range)!r} is too wide for floating point "
                             "(high - low overflows)", entry=where)
     return low, high, n
+
+
+def check_positive_ranges(points, positive, entry="parameters"):
+    r"""
+    Check that the parameters of ``points`` declared positive (in the list
+    ``positive``) only take positive values.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.points import parse_points, check_positive_ranges
+        sage: m, k = var('m k')
+        sage: check_positive_ranges(parse_points({m: (1, 2, 3), k: (-1, 1, 3)}), [m])
+        sage: check_positive_ranges(parse_points({m: (0, 2, 3)}), [m])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[m]: m is declared positive: its values must be positive, got the range (0.0, 2.0, 3)
+    """
+    declared = {str(p) for p in positive}
+    for i, key in enumerate(points.keys):
+        if str(key) not in declared:
+            continue
+        if points.is_grid():
+            axis = points.layout[1][i]
+            low = float(np.min(axis))
+            shown = f"the range ({float(axis[0])!r}, {float(axis[-1])!r}, {len(axis)})"
+        else:
+            low = float(points.layout[1][i])
+            shown = f"the range ({low!r}, {float(points.layout[2][i])!r})"
+        if not low > 0:
+            raise AnalysisError(f"{key} is declared positive: its values must be positive, got "
+                                f"{shown}", entry=f"{entry}[{key}]")
