@@ -19,16 +19,25 @@ Options:
   the system needs a value);
 - ``--at NAME=NUMBER`` -- the point of linearization (state variables or
   coordinates; default 0);
-- ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid;
+- ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid
+  (``S`` a non-negative integer);
+- ``--max-points N`` -- the most points (default
+  :data:`~sage_dynsym.scale.points.MAX_POINTS`), checked before anything
+  is loaded or computed;
 - ``--method auto|polynomial|eigvals``;
 - ``--scheduler ADDRESS`` -- a Dask scheduler to use (default: a local
   cluster), ``--workers N`` for the local cluster, ``--numpy`` for no Dask,
   ``--timeout S`` to reach the scheduler;
 - ``--progress`` -- Dask's progress bar;
 - ``-o PREFIX`` -- the output files (default: the file's name with
-  ``_map``, in the current directory).
+  ``_map``, in the current directory); the folder must exist (checked
+  first).
 
-Errors are one line on standard error and exit status 1.
+Errors are one line on standard error naming the file and the option or
+the entry of the description, and exit status 1 (2 for a malformed command
+line, with argparse's usage message). A symbol given twice to ``--value``
+or ``--at``, a ``--at`` that names no state variable or coordinate of the
+model, a value breaking the model's declared signs are errors.
 
 EXAMPLES::
 
@@ -44,12 +53,23 @@ EXAMPLES::
     wrote ....png, ....npz
     0
     sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:0', '--numpy'])
-    sage-dynsym: error: parameters[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
+    sage-dynsym: error: ...rlc_ladder.yaml: parameters[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
+    1
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:100000', '--param',
+    ....:       'R2=0:1:100000', '--numpy'])
+    sage-dynsym: error: ...rlc_ladder.yaml: --param: 10000000000 points are more than --max-points 10000000
+    1
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:3', '--numpy', '-o',
+    ....:       '/no/such/dir/out'])
+    sage-dynsym: error: ...rlc_ladder.yaml: -o: the folder /no/such/dir does not exist
     1
 """
 import argparse
+import math
 import os
 import sys
+
+from ..io.arguments import count_option
 
 
 def _assignment(text, what):
@@ -89,16 +109,6 @@ def _value(text):
     return name, _number(value)
 
 
-def _positive_int(text):
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
-    return value
-
-
 def parser():
     r"""The argument parser of ``sage-dynsym map``.
 
@@ -108,6 +118,8 @@ def parser():
         sage: parser().parse_args(['f.yaml', '--param', 'R=0:5:400', '--value', 'g=0.5']).param
         [('R', (0.0, 5.0, 400))]
     """
+    from .points import MAX_POINTS
+    from .cluster import MAX_WORKERS
     p = argparse.ArgumentParser(
         prog="sage-dynsym map",
         description="Stability map of the model of a description file over a grid of "
@@ -119,16 +131,19 @@ def parser():
                    help="the value of another symbol")
     p.add_argument("--at", type=_value, action="append", default=[], metavar="NAME=NUMBER",
                    help="the point of linearization (default: 0)")
-    p.add_argument("--samples", type=_positive_int, metavar="N",
+    p.add_argument("--samples", type=count_option, metavar="N",
                    help="N random points instead of the grid")
-    p.add_argument("--seed", type=int, default=0, help="seed of the random points")
+    p.add_argument("--seed", type=lambda text: count_option(text, minimum=0), default=0,
+                   help="seed of the random points (a non-negative integer)")
+    p.add_argument("--max-points", type=count_option, default=MAX_POINTS, metavar="N",
+                   help=f"the most points (default: {MAX_POINTS})")
     p.add_argument("--method", choices=("auto", "polynomial", "eigvals"), default="auto")
     where = p.add_mutually_exclusive_group()
     where.add_argument("--scheduler", metavar="ADDRESS", help="address of a Dask scheduler")
     where.add_argument("--numpy", action="store_true", help="compute in this process, no Dask")
-    p.add_argument("--workers", type=_positive_int, metavar="N",
-                   help="workers of the local cluster (default: one per core)")
-    p.add_argument("--timeout", type=_positive_int, default=10, metavar="S",
+    p.add_argument("--workers", type=lambda text: count_option(text, maximum=MAX_WORKERS),
+                   metavar="N", help="workers of the local cluster (default: one per core)")
+    p.add_argument("--timeout", type=count_option, default=10, metavar="S",
                    help="seconds to reach the scheduler (default: 10)")
     p.add_argument("--progress", action="store_true", help="show Dask's progress bar")
     p.add_argument("-o", "--output", metavar="PREFIX", help="output files PREFIX.png, PREFIX.npz")
@@ -145,7 +160,7 @@ def main(argv=None):
         sage: from sage_dynsym.scale.cli import main
         sage: from sage_dynsym.description import example_path
         sage: main([example_path('rlc_ladder.yaml'), '--param', 'X=0:1:3', '--numpy'])
-        sage-dynsym: error: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
+        sage-dynsym: error: ...rlc_ladder.yaml: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
         1
     """
     args = parser().parse_args(argv)
@@ -153,7 +168,7 @@ def main(argv=None):
     try:
         return _run(args)
     except DynSymError as err:
-        message = str(err)
+        message = str(_located(err, args.file))
     except KeyboardInterrupt:
         print("sage-dynsym: interrupted", file=sys.stderr)
         return 130
@@ -163,19 +178,46 @@ def main(argv=None):
     return 1
 
 
+def _located(err, path):
+    r"""``err`` naming the file (its entry names the option or the entry of
+    the description)."""
+    return err if err.source else err.with_context(source=path)
+
+
+def _checked(args):
+    r"""The parameters and values of the command line, checked before the
+    model is loaded: no symbol twice, at most ``--max-points`` points, the
+    output folder."""
+    from ..errors import DescriptionError
+    for option, what, pairs in (('--param', 'parameter', args.param),
+                                ('--value', 'value', args.value), ('--at', 'point', args.at)):
+        names = [name for name, _ in pairs]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:
+            raise DescriptionError(f"a {what} is given twice: {', '.join(twice)}", entry=option)
+    size = args.samples if args.samples is not None else math.prod(
+        r[2] for _, r in args.param if len(r) == 3)
+    if size > args.max_points:
+        raise DescriptionError(f"{size} points are more than --max-points {args.max_points}",
+                               entry="--samples" if args.samples is not None else "--param")
+    if args.output:
+        folder = os.path.dirname(args.output) or '.'
+        if not os.path.isdir(folder):
+            raise DescriptionError(f"the folder {folder} does not exist", entry="-o")
+
+
 def _run(args):
     from ..description import load
     from ..errors import DescriptionError
     from .maps import stability_map
+    _checked(args)
     model = load(args.file)
     parameters = dict(args.param)
-    if len(parameters) < len(args.param):
-        raise DescriptionError("a parameter is given twice", entry="--param")
     client = False if args.numpy else (args.scheduler or None)
     S = stability_map(model, parameters, fixed=dict(args.value), client=client,
                       samples=args.samples, seed=args.seed, at=dict(args.at),
                       method=args.method, conditions='lienard-chipart', workers=args.workers,
-                      timeout=args.timeout, progress=args.progress)
+                      timeout=args.timeout, progress=args.progress, max_points=args.max_points)
     name = model.name() if callable(getattr(model, 'name', None)) else None
     print(f"{name or args.file}: {str(S)[0].lower()}{str(S)[1:]} (method: {S.method()})")
     if S.conditions() is not None:
@@ -184,11 +226,15 @@ def _run(args):
         print(S.note())
     prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
     written = []
-    if len(parameters) <= 2 or not S.is_grid():
-        G = S.plot()
-        G.save(prefix + ".png", figsize=[7, 6])
-        written.append(prefix + ".png")
-    S.save(prefix + ".npz")
+    try:
+        if len(parameters) <= 2 or not S.is_grid():
+            G = S.plot()
+            G.save(prefix + ".png", figsize=[7, 6])
+            written.append(prefix + ".png")
+        S.save(prefix + ".npz")
+    except OSError as err:
+        raise DescriptionError(f"cannot write {err.filename or prefix}: "
+                               f"{err.strerror or err}", entry="-o") from None
     written.append(prefix + ".npz")
     print("wrote " + ", ".join(written))
     return 0
