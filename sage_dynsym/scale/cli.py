@@ -228,7 +228,9 @@ def _run(args):
     written = []
     try:
         if len(parameters) <= 2 or not S.is_grid():
-            G = S.plot()
+            import numpy
+            with numpy.errstate(all='ignore'):     # huge axes overflow in region_plot
+                G = S.plot()
             G.save(prefix + ".png", figsize=[7, 6])
             written.append(prefix + ".png")
         S.save(prefix + ".npz")
