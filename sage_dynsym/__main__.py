@@ -22,15 +22,18 @@ Options:
 
 Exit status:
 
-- 0 -- every file was reported, every section computed (a section over the
-  budget is one line saying so, and counts as reported: ``--budget``
-  raises it);
+- 0 -- every file was reported; a section over the budget (``skipped``:
+  ``--budget`` raises it) or one the model does not have (``not
+  available (...)``, e.g. a Hamiltonian of a constrained system, dP/dt of
+  perfectly coupled windings) is one line saying why, and counts as
+  reported;
 - 1 -- some file could not be read or reported (or ``-o`` not written),
   each one line on standard error naming the file and the entry or option;
 - 2 -- the command line itself is wrong (an unknown option, a bad number),
   with argparse's usage message;
-- 3 -- every file was reported, but some section could not be computed:
-  its line says why (``not available (...)`` or ``section failed: ...``).
+- 3 -- every file was reported, but some section failed on an error that
+  is not the package's own: its line says ``section failed:`` and the
+  error (a defect to report).
 
 ``sage-dynsym map FILE --param NAME=LOW:HIGH:N ...`` computes a stability
 map of the model on Dask instead (see :mod:`sage_dynsym.scale.cli`).
@@ -42,7 +45,7 @@ import sys
 from .io.arguments import count_option
 
 #: Exit status of a run whose reports all printed but some section of
-#: which could not be computed.
+#: which failed on an error that is not the package's own.
 INCOMPLETE = 3
 
 
@@ -129,13 +132,13 @@ def main(argv=None):
     from .description import load, write_atomically
     from .errors import DynSymError, brief
     from .report import report
-    reports, status, problems = [], 0, []
+    reports, status, failed = [], 0, []
 
     for path in args.files:
         try:
             text = _with_time_limit(args.time_limit, lambda: report(
                 load(path), sections=args.sections, budget=args.budget,
-                analysis=not args.no_analysis, problems=problems))
+                analysis=not args.no_analysis, failed=failed))
         except DynSymError as err:
             status = fail(path, err)
             continue
@@ -155,7 +158,7 @@ def main(argv=None):
             write_atomically(args.output, lambda s: s.write("\n\n".join(reports) + "\n"))
         except DynSymError as err:
             status = fail(args.output, err)
-    return status or (INCOMPLETE if problems else 0)
+    return status or (INCOMPLETE if failed else 0)
 
 
 class _TimeLimit(Exception):

@@ -129,9 +129,9 @@ class _Report:
     and :meth:`run`, which turns any failure of a section into one line.
     """
 
-    def __init__(self, sections, budget, problems=None):
+    def __init__(self, sections, budget, failed=None):
         self.lines, self.wanted, self.budget = [], set(sections), budget
-        self.problems = [] if problems is None else problems
+        self.failed = [] if failed is None else failed
 
     def want(self, *keys):
         return any(k in self.wanted for k in keys)
@@ -144,9 +144,9 @@ class _Report:
         r"""
         Run ``body(lines)``; its lines are kept if it succeeds, else one line
         says why the section is missing: over the budget, not available
-        (the package's error), or failed (any other error, with its class);
-        the titles of the last two are added to ``problems``. Returns the
-        body's value, or ``None``. ``KeyboardInterrupt`` is not caught.
+        (the package's error), or failed (any other error, with its class;
+        its title is added to ``failed``). Returns the body's value, or
+        ``None``. ``KeyboardInterrupt`` is not caught.
         """
         lines = []
         try:
@@ -156,12 +156,11 @@ class _Report:
             return None
         except DynSymError as err:
             self.lines.append(f"{title}: not available ({_clip(str(err))})")
-            self.problems.append(title)
             return None
         except Exception as err:    # Sage, Maxima, memory, recursion: one line, no traceback
             self.lines.append(f"{title}: section failed: {type(err).__name__}: "
                               f"{_clip(str(err))}")
-            self.problems.append(title)
+            self.failed.append(title)
             return None
         self.lines.extend(lines)
         return value
@@ -557,7 +556,7 @@ def _circuit(circuit, out):
                 lambda lines: _linear_circuit_stability(circuit, L, lines, out))
 
 
-def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, problems=None):
+def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None):
     r"""
     A text report of ``model`` (see the module documentation).
 
@@ -571,9 +570,9 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, problems=
       each section, in polynomial terms
     - ``analysis`` -- (default: ``True``) whether to include the analysis
       sections (:data:`ANALYSIS_SECTIONS`)
-    - ``problems`` -- (optional) a list: the titles of the sections that
-      could not be computed (not available, or failed) are appended to it
-      (the command line's exit status 3)
+    - ``failed`` -- (optional) a list: the titles of the sections that
+      failed on an error that is not the package's own (``section failed:
+      ...``) are appended to it (the command line's exit status 3)
 
     OUTPUT: a string
 
@@ -638,9 +637,9 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, problems=
     if not analysis:
         wanted = [key for key in wanted if key not in ANALYSIS_SECTIONS]
     budget = count(budget, 'budget', error=DynSymError)
-    if problems is not None and not isinstance(problems, list):
-        raise DynSymError(f"problems must be a list, got {problems!r}")
-    out = _Report(wanted, budget, problems)
+    if failed is not None and not isinstance(failed, list):
+        raise DynSymError(f"failed must be a list, got {failed!r}")
+    out = _Report(wanted, budget, failed)
     renderer = _RENDERERS.get(getattr(model, 'kind', None))
     if renderer is None:
         raise DynSymError(f"cannot report on {type(model).__name__}: expected a model "
@@ -652,7 +651,7 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, problems=
 def _lie_poisson(system, out):
     from .lie.description import lie_report
     out.lines.extend(lie_report(system, sections=out.wanted, budget=out.budget,
-                                problems=out.problems).split("\n"))
+                                failed=out.failed).split("\n"))
 
 
 #: How each kind of model is reported (by :attr:`~sage_dynsym.dynamics.model.Model.kind`).

@@ -278,7 +278,7 @@ def _formula(lines, label, expr, indent="  "):
     lines.append(f"{indent}  LaTeX: {latex(expr)}")
 
 
-def lie_report(system, sections=None, analysis=True, budget=None, problems=None):
+def lie_report(system, sections=None, analysis=True, budget=None, failed=None):
     r"""
     A text report of a Lie--Poisson system: the Hamiltonian, the equations
     (text and LaTeX), the Casimirs, the polynomial first integrals of degree
@@ -295,8 +295,8 @@ def lie_report(system, sections=None, analysis=True, budget=None, problems=None)
     - ``budget`` -- (optional) the size budget of each section, in
       polynomial terms (see :func:`lie_estimates`): a section whose estimate
       is larger is one line saying so
-    - ``problems`` -- (optional) a list: the titles of the sections that
-      could not be computed are appended to it
+    - ``failed`` -- (optional) a list: the titles of the sections that
+      failed on an error that is not the package's own are appended to it
 
     A section that fails is one line saying why; the others are still
     printed.
@@ -329,7 +329,7 @@ def lie_report(system, sections=None, analysis=True, budget=None, problems=None)
     wanted = set(LIE_SECTIONS if sections is None else sections) & set(LIE_SECTIONS)
     if not analysis:
         wanted.discard('stationary')
-    problems = [] if problems is None else problems
+    failed = [] if failed is None else failed
     estimates = lie_estimates(system) if budget is not None else {}
     what = system.structure().name() or "a Poisson structure"
     head = f"Lie-Poisson system on {what}: variables {', '.join(map(str, system.variables()))}"
@@ -348,11 +348,10 @@ def lie_report(system, sections=None, analysis=True, budget=None, problems=None)
             return
         except DynSymError as err:
             lines.append(f"{title}: not available ({err})")
-            problems.append(title)
             return
         except Exception as err:    # one line, never a traceback
             lines.append(f"{title}: section failed: {type(err).__name__}: {err}")
-            problems.append(title)
+            failed.append(title)
             return
         lines.append(f"{title}:")
         lines.extend(out)

@@ -21,6 +21,8 @@ EXAMPLES: a pendulum::
     sage: f(0, [pi.n()/2, 0.5])
     array([ 0.5  , -4.905])
 """
+import math
+
 import numpy as np
 
 from sage.structure.sage_object import SageObject
@@ -176,31 +178,21 @@ class RightHandSide(SageObject):
         self._p = parameter_values(form, values)
         self._kernel = form.kernel(backend)
         self._call = self._kernel.bind(self._p)
-        self._size = len(form.state())
+        self._shape = (len(form.state()),)
 
     def _repr_(self):
         return (f"Numerical right-hand side x' = f(t, x) in "
                 f"({', '.join(map(str, self._form.state()))})")
 
     def __call__(self, t, x):
+        # the integrators' calls, a float and a NumPy array of floats of the
+        # right length, go straight to the compiled code; anything else is
+        # checked first
+        if (type(x) is np.ndarray and x.dtype == np.float64 and x.shape == self._shape
+                and isinstance(t, float) and math.isfinite(t)):
+            return self._call(t, x)
         t = finite_real(t, 't', entry="numerical_rhs")
-        return self._call(t, state_vector(x, self._size))
-
-    def unchecked(self):
-        r"""
-        The function ``f(t, x)`` without the checks of its arguments, for
-        callers that pass a float and a NumPy array of the right length
-        (the integrators).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
-            sage: from sage_dynsym.numerics.rhs import numerical_rhs
-            sage: x = var('x')
-            sage: numerical_rhs(FirstOrderEquations([-x], [x]), {}).unchecked()(0.0, [2.0])
-            array([-2.])
-        """
-        return self._call
+        return self._call(t, state_vector(x, self._shape[0]))
 
     def variables(self):
         r"""The state variables, in the order of ``x``.

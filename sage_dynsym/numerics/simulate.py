@@ -374,7 +374,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     times = np.linspace(t0, t_end, points)
     states = np.empty((points, len(x)))
     states[0] = x
-    progress = _Progress(rhs.unchecked(), t0, t_end, max_evaluations)
+    progress = _Progress(rhs, t0, t_end, max_evaluations)
     # without constraints one integration (restarts cost steps); with them
     # one per sample interval, each followed by the projection
     step = 1 if project is not None else points - 1
