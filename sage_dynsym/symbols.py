@@ -482,15 +482,17 @@ def is_exact(expr):
 
         sage: from sage_dynsym.symbols import is_exact
         sage: x = var('x')
-        sage: is_exact(sqrt(2)/2 + x), is_exact(0.5*x), is_exact(3)
-        (True, False, True)
+        sage: is_exact(sqrt(2)/2 + x), is_exact(0.5*x), is_exact(3), is_exact(SR(float(1)))
+        (True, False, True, False)
     """
     stack = [SR(expr)]
     while stack:
         e = stack.pop()
         if e.operator() is None:
-            if e.is_numeric() and not e.pyobject().parent().is_exact():
-                return False
+            if e.is_numeric():
+                number = e.pyobject()
+                if isinstance(number, (float, complex)) or not number.parent().is_exact():
+                    return False
         else:
             stack.extend(e.operands())
     return True
