@@ -224,6 +224,27 @@ def flag(value, name, error=ModelError, entry=None):
                 entry=name if entry is None else entry)
 
 
+def choice(value, choices, name, error=ModelError, entry=None):
+    r"""
+    ``value`` if it is one of the strings ``choices``, else an error listing
+    them (also for values that are not strings, or cannot be hashed).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.io.arguments import choice
+        sage: choice('c', ('python', 'c'), 'language')
+        'c'
+        sage: choice(['c'], ('python', 'c'), 'language')
+        Traceback (most recent call last):
+        ...
+        ModelError: language: ['c'] is not one of python, c
+    """
+    if not isinstance(value, str) or value not in choices:
+        raise error(f"{brief(value)} is not one of {', '.join(choices)}",
+                    entry=name if entry is None else entry)
+    return value
+
+
 def _symbol_name(key):
     r"""The name of ``key`` (a string, or a symbolic variable), or ``None``
     for anything else (an expression, a number)."""

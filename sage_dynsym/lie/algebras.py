@@ -147,9 +147,10 @@ def _variables(name, variables):
     else:
         if isinstance(variables, str):
             variables = [v for v in re.split(r'[\s,]+', variables) if v]
-        variables = list(variables)
+        variables = _listed(variables)
         if len(variables) == nblocks and nblocks < n and all(
-                isinstance(v, str) or SR(v).is_symbol() for v in variables):
+                isinstance(v, str) or getattr(v, 'is_symbol', lambda: False)()
+                for v in variables):
             names = _default_names(name, [str(v) for v in variables])
         elif len(variables) == n:
             names = variables
@@ -162,7 +163,15 @@ def _variables(name, variables):
     return _symbols(names)
 
 
+def _listed(names):
+    r"""``names`` as a list, or a :class:`ModelError` for what is not a list."""
+    if isinstance(names, (str, bytes, dict)) or not hasattr(names, '__iter__'):
+        raise ModelError(f"expected a list of variables, got {brief(names)}", entry="variables")
+    return list(names)
+
+
 def _symbols(names):
+    names = _listed(names)
     out = []
     for i, v in enumerate(names):
         try:

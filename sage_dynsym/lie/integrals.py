@@ -91,10 +91,23 @@ def basis_size(variables, degree):
     return int(binomial(variables + degree, degree)) - 1
 
 
-def _check_degree(d, entry, variables, max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
-    r"""The degree ``d`` of a search in ``variables`` variables, checked: an
+def check_degree(d, entry, variables, max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
+    r"""
+    The degree ``d`` of a search in ``variables`` variables, checked: an
     integer from 1 to ``max_degree`` whose basis has at most ``max_basis``
-    monomials (before anything is built)."""
+    monomials (:func:`basis_size`), before anything is built; errors name
+    ``entry``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lie.integrals import check_degree
+        sage: check_degree(4, 'casimirs', 6)
+        4
+        sage: check_degree(8, 'casimirs', 10)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: casimirs: degree 8 in 10 variables has 43757 monomials, more than the limit of 3000 unknown coefficients; lower the degree or raise max_basis=
+    """
     max_degree = count(max_degree, 'max_degree', error=AnalysisError)
     max_basis = count(max_basis, 'max_basis', error=AnalysisError)
     d = count(d, 'degree', maximum=max_degree, error=AnalysisError, entry=entry,
@@ -284,7 +297,7 @@ def casimirs(structure, degree=4, parameters=(), max_degree=MAX_DEGREE, max_basi
         ...
         AnalysisError: casimirs: degree 12 in 6 variables has 18563 monomials, more than the limit of 3000 unknown coefficients; lower the degree or raise max_basis=
     """
-    d = _check_degree(degree, "casimirs", len(structure.variables()), max_degree, max_basis)
+    d = check_degree(degree, "casimirs", len(structure.variables()), max_degree, max_basis)
     search = _Search(structure, parameters=parameters)
     P = search.context
     return [P.to_sr(v) for v in _sorted(search.casimirs(d))]
@@ -551,7 +564,7 @@ def polynomial_integrals(structure, hamiltonian, degree, new_only=False, conditi
         ...
         AnalysisError: new_only: expected True or False, got 'yes'
     """
-    d = _check_degree(degree, "polynomial_integrals", len(structure.variables()), max_degree,
+    d = check_degree(degree, "polynomial_integrals", len(structure.variables()), max_degree,
                       max_basis)
     new_only = flag(new_only, 'new_only', error=AnalysisError)
     conditions = flag(conditions, 'conditions', error=AnalysisError)

@@ -81,7 +81,7 @@ from ..io.arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
-                        MAX_DEGREE, MAX_BASIS)
+                        MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
 
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
@@ -354,23 +354,34 @@ class LiePoissonSystem(Model, NumericalMethods):
         """
         return bool(SR(self.poisson_bracket(F, self._H)).is_zero())
 
-    @cached_method
     def casimirs(self, degree=4, max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
         r"""
         The independent polynomial Casimirs of the structure up to
         ``degree``, computed from the Poisson matrix
         (:func:`~sage_dynsym.lie.integrals.casimirs`), by increasing degree;
         ``max_degree`` and ``max_basis`` bound the search (the degree, the
-        number of unknown coefficients).
+        number of unknown coefficients). Computed once per degree.
 
         EXAMPLES::
 
             sage: from sage_dynsym.lie.system import LiePoissonSystem
             sage: LiePoissonSystem('so31', var('M1')^2).casimirs()
             [M1^2 + M2^2 + M3^2 - p1^2 - p2^2 - p3^2, M1*p1 + M2*p2 + M3*p3]
+
+        TESTS::
+
+            sage: LiePoissonSystem('so3', var('M1')^2).casimirs(degree=[])
+            Traceback (most recent call last):
+            ...
+            AnalysisError: casimirs: expected an integer, got [] (list)
         """
-        return _casimirs(self._structure, degree, parameters=self._parameters,
-                         max_degree=max_degree, max_basis=max_basis)
+        degree = check_degree(degree, "casimirs", len(self.variables()), max_degree, max_basis)
+        return list(self._casimirs(degree))
+
+    @cached_method
+    def _casimirs(self, degree):
+        return _casimirs(self._structure, degree, parameters=self._parameters, max_degree=degree,
+                         max_basis=basis_size(len(self.variables()), degree))
 
     def polynomial_integrals(self, degree, new_only=False, conditions=False,
                              max_degree=MAX_DEGREE, max_basis=MAX_BASIS):

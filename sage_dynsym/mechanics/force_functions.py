@@ -327,6 +327,10 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         Traceback (most recent call last):
         ...
         ModelError: force_function[0]: the force function U(q, t) cannot depend on the acceleration ddx; velocity-dependent forces belong in the dissipation function or the generalized forces
+        sage: check_force_function([-k*x^2, None], [x])
+        Traceback (most recent call last):
+        ...
+        ModelError: force_function[1]: expected a force field or an expression U(q, t), got None
     """
     from ..errors import ModelError
     from ..symbols import velocity, acceleration
@@ -334,6 +338,9 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         return
     if isinstance(force_function, (list, tuple)):
         for i, term in enumerate(force_function):
+            if term is None or isinstance(term, (list, tuple)):
+                raise ModelError("expected a force field or an expression U(q, t), got "
+                                 f"{term!r}", entry=f"{entry}[{i}]")
             check_force_function(term, coordinates, f"{entry}[{i}]")
         return
     forbidden = {}

@@ -56,6 +56,7 @@ from ..dynamics.natural_form import natural_form, is_singular
 from ..numerics.values import check_model_values
 from .force_functions import check_force_function
 from .kinematics import Kinematics
+from .loads import load_list
 from .rigid_body import RigidBody
 
 # Above this many terms in the mass matrix, converting the polynomial
@@ -103,6 +104,9 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
     """
     from sage.symbolic.expression import Expression
     from ..symbols import velocity as _velocity
+    if isinstance(constraints, (str, bytes, dict)) or not hasattr(constraints, '__iter__'):
+        raise ModelError(f"expected a list of constraints f(q, t), got {constraints!r}",
+                         entry=entry)
     out = []
     forbidden = {}
     for q in coordinates:
@@ -110,10 +114,13 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
     for i, f in enumerate(constraints):
         sub = f"{entry}[{i}]"
-        if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+        try:
+            if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+                raise TypeError
+            f = SR(f)
+        except (TypeError, ValueError):
             raise ModelError(f"expected an expression f(q, t) or a relation, got {f!r}",
-                             entry=sub)
-        f = SR(f)
+                             entry=sub) from None
         if f.is_relational():
             f = f.lhs() - f.rhs()
         for v in f.variables():
@@ -283,7 +290,7 @@ class MechanicalSystem(Model):
         self._symbolic = Kinematics(self, SymbolicBackend())
         self._tree = self._symbolic.tree
         self._loads = [self._checked_load(load, f"loads[{i}]", given_names)
-                       for i, load in enumerate(loads)]
+                       for i, load in enumerate(load_list(loads))]
         self._constraints = check_constraints(constraints, self._coordinates, self._parameters)
 
 

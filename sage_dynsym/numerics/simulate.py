@@ -55,7 +55,7 @@ from sage.misc.verbose import verbose
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, AnalysisError
-from ..io.arguments import count, finite_real, flag
+from ..io.arguments import choice, count, finite_real, flag
 from ..symbols import t as _t
 from .form import NumericalForm
 from .rhs import RightHandSide, real_number
@@ -338,9 +338,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         AnalysisError: constraints: the constraints have no regular real point near t = 0, x = ..., y = ... (...): they are empty over the reals or singular there
     """
     from scipy.integrate import solve_ivp
-    if method not in _METHODS and method not in _SCIPY:
-        raise ModelError(f"{method!r} is not one of {', '.join(list(_METHODS) + list(_SCIPY))}",
-                         entry="method")
+    method = choice(method, list(_METHODS) + list(_SCIPY), 'method')
     scipy_method = _METHODS.get(method, method)
     max_points = count(max_points, 'max_points', minimum=2)
     max_evaluations = count(max_evaluations, 'max_evaluations')
