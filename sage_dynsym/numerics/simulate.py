@@ -326,7 +326,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         sage: T = simulate(E, {g: 1}, {x: 2, y: 0, dx: 0, dy: 1}, 1, project=True)
         doctest:warning...
         UserWarning: simulate: the initial state was projected onto the constraints: x = 1 (given 2)
-        sage: abs(T.values(x)[0] - 1) < 1e-14
+        sage: bool(abs(T.values(x)[0] - 1) < 1e-14)
         True
 
     Constraints that have no regular real point are refused before

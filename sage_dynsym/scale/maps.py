@@ -223,8 +223,10 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     for name, value in (('fixed', fixed), ('at', at)):
         if not isinstance(value, (dict, type(None))):
             raise AnalysisError(f"{name}= must be a dict, got {value!r}", entry=entry)
-    if _is_model(system):
+    if _is_model(system):       # the model's declared signs, before any work
         check_model_values(system, dict(fixed or {}), entry="fixed")
+        check_positive_ranges(parse_points(parameters, samples, seed, max_points=max_points),
+                              system.positive_parameters())
     linear = _linear_system(system, at, variables, lhs_matrix)
     symbols = _symbols(linear)
     names = {str(s): s for s in symbols}
@@ -239,8 +241,6 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         values[key] = _exact_number(v, f"fixed[{k}]")
     points = parse_points(dict(zip(keys, parameters.values())), samples, seed,
                           max_points=max_points)
-    if _is_model(system):
-        check_positive_ranges(points, system.positive_parameters())
     fixed_system = _substitute(linear, values)
     missing = sorted(set(_symbols(fixed_system)) - set(keys), key=str)
     if missing:
