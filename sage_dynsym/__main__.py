@@ -42,7 +42,7 @@ import argparse
 import os
 import sys
 
-from .io.arguments import count_option
+from .arguments import count_option
 
 #: Exit status of a run whose reports all printed but some section of
 #: which failed on an error that is not the package's own.

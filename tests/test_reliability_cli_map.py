@@ -157,7 +157,7 @@ def test_a_section_that_is_not_available_says_why(files, capsys):
 
 
 def test_a_failed_section_gives_exit_status_3(files, capsys, monkeypatch):
-    import sage_dynsym.report as R
+    import sage_dynsym.report.writer as R
 
     def broken(*args):
         raise ZeroDivisionError("division by zero")

@@ -102,7 +102,7 @@ from sage.symbolic.function_factory import function as symbolic_function
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
-from ..io.arguments import known_symbols, symbol_arguments
+from ..arguments import known_symbols, symbol_arguments
 from ..symbols import velocity
 from .conditions import (positive_conditions, positive_conditions_all, conjunction,
                          simplify_conjunction)

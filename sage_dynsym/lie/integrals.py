@@ -62,7 +62,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..io.arguments import count, flag
+from ..arguments import count, flag
 from ._polynomials import (LinearProblem, MAX_MINORS, Reducer, degree, primitive, products,
                            rank_modulo, generic_point, _minors, _schur_after_constant_pivots)
 

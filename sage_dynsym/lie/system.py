@@ -77,7 +77,7 @@ from ..analysis.motion import FirstOrderEquations
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
-from ..io.arguments import symbol_arguments
+from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,

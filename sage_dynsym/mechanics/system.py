@@ -45,7 +45,7 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import (velocity, acceleration, t, time_derivative, check_mechanical_names,
                        sage_numbers)
-from ..io.arguments import symbol_arguments
+from ..arguments import symbol_arguments
 from ..io.fields import text as _text
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)

@@ -29,7 +29,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, brief
-from ..io.arguments import finite_real
+from ..arguments import finite_real
 from .form import NumericalForm
 
 
@@ -75,7 +75,7 @@ def parameter_values(form, values):
 def real_number(value, name, entry="values"):
     r"""
     ``value`` (a Python or Sage number, or a constant expression) as a
-    finite float (see :func:`~sage_dynsym.io.arguments.finite_real`).
+    finite float (see :func:`~sage_dynsym.arguments.finite_real`).
 
     EXAMPLES::
 

@@ -55,7 +55,7 @@ from sage.misc.verbose import verbose
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, AnalysisError
-from ..io.arguments import choice, count, finite_real, flag
+from ..arguments import choice, count, finite_real, flag
 from ..symbols import t as _t
 from .form import NumericalForm
 from .rhs import RightHandSide, real_number

@@ -39,7 +39,7 @@ from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..io.arguments import check_declared_signs, finite_real
+from ..arguments import check_declared_signs, finite_real
 
 #: Relative size of the rounding errors tolerated when a condition is
 #: checked at floating-point values (relative to the sum of the absolute

@@ -38,7 +38,7 @@ from sage.symbolic.ring import SR
 
 from ..analysis.size import polynomial_terms, TERMS_CAP as _TERMS_CAP
 from ..errors import DynSymError, BudgetError
-from ..io.arguments import count
+from ..arguments import count
 
 from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 

@@ -73,7 +73,7 @@ import os
 import sys
 
 # the Sage-free part of the package: --help and argument errors answer at once
-from ..io.arguments import count_option
+from ..arguments import count_option
 from .cluster import CLUSTER_THRESHOLD
 
 

@@ -54,7 +54,7 @@ import time
 import uuid
 
 from ..errors import AnalysisError
-from ..io.arguments import count, finite_real, is_integer
+from ..arguments import count, finite_real, is_integer
 
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
 #: Most worker processes of a local cluster (``workers=``): each is a

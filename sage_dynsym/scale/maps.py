@@ -82,7 +82,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
-from ..io.arguments import known_symbols
+from ..arguments import known_symbols
 from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions

@@ -34,7 +34,7 @@ import math
 import numpy as np
 
 from ..errors import AnalysisError
-from ..io.arguments import count, is_integer
+from ..arguments import count, is_integer
 
 #: Most points of a map or a sweep (``max_points=`` raises it).
 MAX_POINTS = 10**7

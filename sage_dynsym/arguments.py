@@ -21,9 +21,14 @@ coercion):
   positive must be positive;
 - :func:`count_option` -- :func:`count` for a command-line option.
 
+The module loads no Sage (it imports Sage's symbolic ring only when a
+value needs it), so the command lines check their options before Sage is
+loaded; it sits just above :mod:`sage_dynsym.errors` in the layers of the
+package.
+
 EXAMPLES::
 
-    sage: from sage_dynsym.io.arguments import count, finite_real, known_symbols
+    sage: from sage_dynsym.arguments import count, finite_real, known_symbols
     sage: count(5, 'points', minimum=2)
     5
     sage: count(float(2.9), 'points', minimum=2)
@@ -40,7 +45,7 @@ import argparse
 import math
 import numbers
 
-from ..errors import ModelError, brief
+from .errors import ModelError, brief
 
 
 def _shown(value):
@@ -58,7 +63,7 @@ def is_integer(value):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import is_integer
+        sage: from sage_dynsym.arguments import is_integer
         sage: import numpy as np
         sage: is_integer(3), is_integer(int(3)), is_integer(np.int64(3))
         (True, True, True)
@@ -89,7 +94,7 @@ def count(value, name, minimum=1, maximum=None, error=ModelError, entry=None, wh
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import count
+        sage: from sage_dynsym.arguments import count
         sage: count(3, 'degree'), count(int(0), 'seed', minimum=0)
         (3, 0)
 
@@ -144,7 +149,7 @@ def finite_real(value, name, entry=None, error=ModelError, minimum=None, strict=
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import finite_real
+        sage: from sage_dynsym.arguments import finite_real
         sage: finite_real(pi, 'a'), finite_real(3/4, 'b'), finite_real(int(2), 'c')
         (3.141592653589793, 0.75, 2.0)
 
@@ -207,7 +212,7 @@ def flag(value, name, error=ModelError, entry=None):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import flag
+        sage: from sage_dynsym.arguments import flag
         sage: flag(True, 'project')
         True
         sage: flag('no', 'project')
@@ -231,7 +236,7 @@ def choice(value, choices, name, error=ModelError, entry=None):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import choice
+        sage: from sage_dynsym.arguments import choice
         sage: choice('c', ('python', 'c'), 'language')
         'c'
         sage: choice(['c'], ('python', 'c'), 'language')
@@ -278,7 +283,7 @@ def known_symbols(keys, valid, name, error=ModelError, what="symbol", entry=None
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import known_symbols
+        sage: from sage_dynsym.arguments import known_symbols
         sage: a, b, x = var('a b x')
         sage: known_symbols([b, 'a'], [a, b], 'positive', what='parameter')
         [b, a]
@@ -332,7 +337,7 @@ def symbol_arguments(values, name, error=ModelError, entry=None):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import symbol_arguments
+        sage: from sage_dynsym.arguments import symbol_arguments
         sage: m = var('m')
         sage: symbol_arguments([m, 'g'], 'positive')
         [m, g]
@@ -382,7 +387,7 @@ def check_declared_signs(values, positive, name="values", error=ModelError):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import check_declared_signs
+        sage: from sage_dynsym.arguments import check_declared_signs
         sage: m, l, g = var('m l g')
         sage: check_declared_signs({m: 1, 'l': 2, g: -9.81}, [m, l])
         sage: check_declared_signs({m: 1, 'l': -2}, [m, l])
@@ -417,7 +422,7 @@ def count_option(text, minimum=1, maximum=None):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.io.arguments import count_option
+        sage: from sage_dynsym.arguments import count_option
         sage: count_option('12')
         12
         sage: count_option('2.5')
