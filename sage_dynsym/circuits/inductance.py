@@ -95,9 +95,8 @@ def coupled_groups(circuit):
             a = parent[a]
         return a
     first = {}
-    for k, c in enumerate(circuit.couplings()):
-        a, b = find(c.first), find(c.second)
-        parent[a] = b
+    for c in circuit.couplings():
+        parent[find(c.first)] = find(c.second)
     for k, c in enumerate(circuit.couplings()):
         first.setdefault(find(c.first), k)
     groups = {}
@@ -143,10 +142,15 @@ def _shown(L):
 
 
 def _numeric(L, names, entry):
-    # exact numbers are decided exactly (all principal minors), floating-point
-    # ones by the eigenvalues, to rounding
+    # exact algebraic numbers are decided exactly (all principal minors), the
+    # others (floating-point, transcendental) by the eigenvalues, to rounding
+    A = None
     if all(is_exact(e) for e in L.list()):
-        A = matrix(AA, L)
+        try:
+            A = matrix(AA, L)
+        except (TypeError, ValueError):     # pi, e: not algebraic
+            A = None
+    if A is not None:
         n = A.nrows()
         ok = all(A.matrix_from_rows_and_columns(list(s), list(s)).det() >= 0
                  for k in range(1, n + 1) for s in combinations(range(n), k))
@@ -159,7 +163,8 @@ def _numeric(L, names, entry):
     if not ok:
         raise CircuitError(f"the inductance matrix of the coupled windings {', '.join(names)} "
                            f"is not positive semi-definite: its smallest eigenvalue is "
-                           f"{float(smallest):.6g} (the matrix is {_shown(L)}); {_NEEDED}", entry=entry)
+                           f"{float(smallest):.6g} (the matrix is {_shown(L)}); {_NEEDED}",
+                           entry=entry)
 
 
 def inductance_conditions(circuit, entries=None):
