@@ -26,7 +26,7 @@ like the function). This module lists those names in one place:
   :data:`CIRCUIT_PATTERNS`): multipliers ``lambda<j>`` of the
   Routh--Lyapunov method, deviations ``xi_<x>`` of the second variation,
   the multipliers ``u<k>``, ``v<k>`` of Dirac's scheme, the multipliers
-  ``mu<j>`` of holonomic constraints (:func:`constraint_multipliers`); in circuits the
+  ``mu<j>`` of constraints (:func:`constraint_multipliers`); in circuits the
   state variables ``i<k>`` (inductor currents) and ``u<k>`` (capacitor
   voltages), the loop charges ``q<k>``, the node potentials ``phi<k>`` and
   their velocities and momenta, the placeholders ``i``, ``u`` of an
@@ -204,7 +204,7 @@ COMMON_PATTERNS = (
 MECHANICAL_PATTERNS = COMMON_PATTERNS + (
     (r'u[1-9]\d*', "a multiplier of Dirac's scheme (u<k>)"),
     (r'v[1-9]\d*', "a gauge multiplier of Dirac's scheme (v<k>)"),
-    (r'mu[1-9]\d*', 'a multiplier of a holonomic constraint (mu<j>)'),
+    (r'mu[1-9]\d*', 'a multiplier of a constraint (mu<j>)'),
 )
 
 #: Names created for circuits (with :data:`COMMON_PATTERNS`).

@@ -383,7 +383,7 @@ class LiePoissonSystem(Model, NumericalMethods):
         return _casimirs(self._structure, degree, parameters=self._parameters, max_degree=degree,
                          max_basis=basis_size(len(self.variables()), degree))
 
-    def polynomial_integrals(self, degree, new_only=False, conditions=False,
+    def polynomial_integrals(self, degree, new_only=False, conditions=False, levels=None,
                              max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
         r"""
         A basis of the polynomial first integrals of degree at most
@@ -399,6 +399,11 @@ class LiePoissonSystem(Model, NumericalMethods):
         - ``conditions`` -- (default: ``False``) also return the families
           of parameter values on which there are more integrals: a pair
           ``(basis, jumps)``, see
+          :class:`~sage_dynsym.lie.integrals.IntegralJump`; only ``True``
+          or ``False``
+        - ``levels`` -- (optional) a dict ``{g: c}`` of Casimirs or
+          integrals and their values: the integrals on that invariant
+          level, modulo its ideal (:mod:`~sage_dynsym.lie.levels`)
           :class:`~sage_dynsym.lie.integrals.IntegralJump`
         - ``max_degree``, ``max_basis`` -- (default:
           :data:`~sage_dynsym.lie.integrals.MAX_DEGREE`,
@@ -422,10 +427,27 @@ class LiePoissonSystem(Model, NumericalMethods):
             16*C^2*g^2*gamma1^2*m^2*x0^2 + 16*C^2*g^2*gamma2^2*m^2*x0^2 - 8*C*M1^2*g*gamma1*m*x0 + 8*C*M2^2*g*gamma1*m*x0 - 16*C*M1*M2*g*gamma2*m*x0 + M1^4 + 2*M1^2*M2^2 + M2^4
             sage: bool(K == (M1^2 - M2^2 - 4*C*m*g*x0*g1)^2 + (2*M1*M2 - 4*C*m*g*x0*g2)^2)
             True
+
+        The Goryachev--Chaplygin case, `A = B = 4C`, has a cubic integral
+        only on the level of the area integral `(M, \gamma) = 0`::
+
+            sage: GC = LiePoissonSystem('e3', (M1^2 + M2^2 + 4*M3^2)/(8*C) + m*g*x0*g1)
+            sage: GC.polynomial_integrals(3, new_only=True)
+            []
+            sage: GC.polynomial_integrals(3, new_only=True, levels={M1*g1 + M2*g2 + M3*g3: 0})
+            [-4*C*M1*g*gamma3*m*x0 + M1^2*M3 + M2^2*M3]
+
+        TESTS::
+
+            sage: GC.polynomial_integrals(2, conditions='yes')
+            Traceback (most recent call last):
+            ...
+            AnalysisError: polynomial_integrals: conditions must be True or False, got 'yes'
         """
         return _polynomial_integrals(self._structure, self._H, degree, new_only=new_only,
                                      conditions=conditions, parameters=self._parameters,
-                                     max_degree=max_degree, max_basis=max_basis)
+                                     levels=levels, max_degree=max_degree,
+                                     max_basis=max_basis)
 
     def stationary_solutions(self, integrals=(), levels=None, positive=None, multipliers=None,
                              solve_for=None):

@@ -50,13 +50,16 @@ from ..io.fields import text as _text
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
 from ..dynamics.lagrangian import Lagrangian
+from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
-from ..dynamics.natural_form import natural_form, is_singular
+from ..dynamics.natural_form import natural_form, is_singular, has_full_row_rank
 from ..numerics.values import check_model_values
 from .force_functions import check_force_function
+from .constraint_set import ConstraintSet
 from .kinematics import Kinematics
 from .loads import load_list
+from .operating_points import checked_operating_points, operating_point_to_dict
 from .rigid_body import RigidBody
 
 # Above this many terms in the mass matrix, converting the polynomial
@@ -137,8 +140,8 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
                              f"{', '.join(map(str, coordinates))}", entry=sub)
         out.append(f)
     if out:
-        J = matrix(SR, [[f.diff(q) for q in coordinates] for f in out])
-        if len(out) > len(coordinates) or is_singular(J * J.transpose()):
+        J = [[f.diff(q) for q in coordinates] for f in out]
+        if len(out) > len(coordinates) or not has_full_row_rank(J):
             raise ModelError(f"the {len(out)} constraints are not independent: their Jacobian "
                              "with respect to the coordinates has rank less than "
                              f"{len(out)} at a generic point; remove the redundant ones",
@@ -174,6 +177,15 @@ class MechanicalSystem(Model):
     - ``constraints`` -- (optional) list of holonomic constraints `f(q, t)`
       (each meaning `f = 0`), passed on to the Lagrangian (Lagrange
       equations of the first kind, one multiplier per constraint)
+    - ``nonholonomic`` -- (optional) list of constraints on the velocities,
+      linear in them (each meaning `= 0`); the Lagrangian is then a
+      :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`
+    - ``rolling`` -- (optional) list of
+      :class:`~sage_dynsym.mechanics.rolling.RollingDisk` (or dicts with
+      the keys ``body``, ``radius``, ``axle``): thin disks rolling without
+      slipping on the plane `z = 0`, see :mod:`~sage_dynsym.mechanics.rolling`
+    - ``operating_points`` -- (optional) dict ``{name: point}`` of steady
+      motions (see :mod:`~sage_dynsym.mechanics.operating_points`)
     - ``name`` -- (optional) a name
     - ``positive`` -- (optional) parameters known to be positive; the
       analysis (stationary motions and their stability in reports) assumes
@@ -254,7 +266,8 @@ class MechanicalSystem(Model):
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
-                 dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=()):
+                 dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=(),
+                 nonholonomic=(), rolling=(), operating_points=None):
         bodies = list(bodies)
         given_names = [b.name() if isinstance(b, RigidBody) else None for b in bodies]
         for i, body in enumerate(bodies):
@@ -292,6 +305,10 @@ class MechanicalSystem(Model):
         self._loads = [self._checked_load(load, f"loads[{i}]", given_names)
                        for i, load in enumerate(load_list(loads))]
         self._constraints = check_constraints(constraints, self._coordinates, self._parameters)
+        self._constraint_set = ConstraintSet(self, self._constraints, nonholonomic, rolling,
+                                             given_names)
+        self._operating_points = checked_operating_points(
+            operating_points, self._coordinates, self._velocities, self._parameters)
 
 
     # ------------------------------------------------------------------
@@ -371,6 +388,14 @@ class MechanicalSystem(Model):
             out['loads'] = [load.to_dict() for load in self._loads]
         if self._constraints:
             out['constraints'] = [_text(f) for f in self._constraints]
+        constraints = self._constraint_set
+        if constraints.given_nonholonomic():
+            out['nonholonomic'] = [_text(g) for g in constraints.given_nonholonomic()]
+        if constraints.rolling():
+            out['rolling'] = [disk.to_dict() for disk in constraints.rolling()]
+        if self._operating_points:
+            out['operating_points'] = {name: operating_point_to_dict(point)
+                                       for name, point in self._operating_points.items()}
         bodies = []
         for k, body in enumerate(self.bodies(), 1):
             entry = {'name': body.name(), 'parent': self.parent_index(k),
@@ -425,7 +450,7 @@ class MechanicalSystem(Model):
             symbols += sorted({str(v) for v in self.lagrangian().expr().variables()})
         symbols += q + [str(velocity(SR(v))) for v in q] + [str(acceleration(SR(v))) for v in q]
         symbols += [str(momentum(SR(v))) for v in q]
-        if self._constraints:
+        if self.constraints() or self.nonholonomic_constraints():
             # the Lagrange equations of the first kind hold the multipliers
             symbols += [str(mu) for mu in self.lagrangian().multipliers()]
         return symbols, ()
@@ -499,7 +524,13 @@ class MechanicalSystem(Model):
                                 forces=[sub(f) for f in self._forces], name=self._name,
                                 positive=[p for p in self._positive if p not in substitution],
                                 loads=[load.subs(substitution) for load in self._loads],
-                                constraints=[sub(f) for f in self._constraints])
+                                constraints=[sub(f) for f in self._constraints],
+                                nonholonomic=[sub(g) for g in
+                                              self._constraint_set.given_nonholonomic()],
+                                rolling=[disk.subs(substitution)
+                                         for disk in self._constraint_set.rolling()],
+                                operating_points={name: point.subs(substitution) for name, point
+                                                  in self._operating_points.items()})
 
     def euler_poisson(self, names=None):
         r"""
@@ -835,7 +866,9 @@ class MechanicalSystem(Model):
 
     def constraints(self):
         r"""
-        The holonomic constraints `f_j(q, t)` (each meaning `f_j = 0`).
+        The holonomic constraints `f_j(q, t)` (each meaning `f_j = 0`): those
+        given, then the contact conditions of rolling disks that the
+        coordinates do not impose (see :meth:`constraint_set`).
 
         EXAMPLES::
 
@@ -844,7 +877,95 @@ class MechanicalSystem(Model):
             sage: MechanicalSystem([], [x, y], constraints=[x^2 + y^2 == l^2]).constraints()
             [-l^2 + x^2 + y^2]
         """
-        return list(self._constraints)
+        return self._constraint_set.holonomic()
+
+    def nonholonomic_constraints(self):
+        r"""
+        The constraints on the velocities (each meaning `= 0`): those given,
+        then the no-slip conditions of the rolling disks (see
+        :meth:`constraint_set`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, y, th = var('x y theta')
+            sage: S = MechanicalSystem([RigidBody('blade', joint=[x, y, 0], rotations=[(3, th)])],
+            ....:                      [x, y, th], nonholonomic=['sin(theta)*dx - cos(theta)*dy'])
+            Traceback (most recent call last):
+            ...
+            ModelError: nonholonomic[0]: expected an expression or a relation, got 'sin(theta)*dx - cos(theta)*dy'
+            sage: dx, dy = var('dx dy')
+            sage: S = MechanicalSystem([RigidBody('blade', joint=[x, y, 0], rotations=[(3, th)])],
+            ....:                      [x, y, th], nonholonomic=[sin(th)*dx - cos(th)*dy])
+            sage: S.nonholonomic_constraints(), S.lagrangian().nonholonomic_constraints()
+            ([-dy*cos(theta) + dx*sin(theta)], [-dy*cos(theta) + dx*sin(theta)])
+        """
+        return self._constraint_set.nonholonomic()
+
+    def constraint_set(self):
+        r"""
+        All the constraints with their origins: the
+        :class:`~sage_dynsym.mechanics.constraint_set.ConstraintSet` (the
+        rolling contacts, which conditions are holonomic).
+
+        EXAMPLES: see :mod:`~sage_dynsym.mechanics.constraint_set`.
+        """
+        return self._constraint_set
+
+    def operating_points(self):
+        r"""
+        The named operating points (a dict ``{name: OperatingPoint}``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, v = var('x v')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x],
+            ....:                  operating_points={'moving': {'velocities': {'dx': v}}}).operating_points()
+            {'moving': Operating point 'moving': dx = v}
+        """
+        return dict(self._operating_points)
+
+    def operating_point(self, name):
+        r"""
+        The operating point ``name``, for
+        :func:`~sage_dynsym.analysis.linear.linearize`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, linearize
+            sage: x, m, v = var('x m v')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      operating_points={'moving': {'velocities': {'dx': v}}})
+            sage: linearize(S, S.operating_point('moving'), coordinates=[x]).M()
+            [m]
+
+        TESTS::
+
+            sage: S.operating_point('resting')
+            Traceback (most recent call last):
+            ...
+            ModelError: operating_points: no operating point 'resting'; the operating points are moving
+        """
+        if name not in self._operating_points:
+            raise ModelError(f"no operating point {name!r}; the operating points are "
+                             f"{', '.join(self._operating_points) or '(none)'}",
+                             entry="operating_points")
+        return self._operating_points[name]
+
+    def to_linearizer(self):
+        r"""
+        The equations as neutral data for the analysis: those of
+        :meth:`lagrangian`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m = var('x m')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x]).to_linearizer()
+            Second-order equations in (x): [ddx*m] == 0
+        """
+        return self.lagrangian().to_linearizer()
 
     def force_field(self):
         r"""
@@ -1386,9 +1507,11 @@ class MechanicalSystem(Model):
         if christoffel != 'recursive':
             use_ring = data is not None and christoffel == 'polynomial'
             builder = ring_equations if use_ring else None
-        return Lagrangian(None, self._coordinates, self._velocities,
-                          decomposition=decomposition, dissipation=self._dissipation,
-                          forces=self.generalized_forces(), name=self._name,
-                          equation_builder=builder,
-                          constraints=self._constraints)
+        options = dict(decomposition=decomposition, dissipation=self._dissipation,
+                       forces=self.generalized_forces(), name=self._name,
+                       equation_builder=builder, constraints=self.constraints())
+        if self.nonholonomic_constraints():
+            return NonholonomicLagrangian(None, self._coordinates, self._velocities,
+                                          nonholonomic=self.nonholonomic_constraints(), **options)
+        return Lagrangian(None, self._coordinates, self._velocities, **options)
 

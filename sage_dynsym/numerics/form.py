@@ -21,7 +21,13 @@ that a numerical right-hand side evaluates at each state and then solves
       + 2\,\frac{\partial J}{\partial t}\dot q
       + \frac{\partial^2 f}{\partial t^2}\Bigr)
 
-  (the second time derivative of the constraints vanishes);
+  (the second time derivative of the constraints vanishes); constraints on
+  the velocities `g_k = A_k\dot q + b_k = 0` with their multipliers
+  `\lambda_k` add the rows `A\ddot q = \gamma_A`, `\gamma_A = -\bigl(
+  \frac{\partial (A\dot q + b)}{\partial q}\dot q + \frac{\partial (A\dot q
+  + b)}{\partial t}\bigr)` (their first time derivative vanishes) and the
+  columns `-A^T` (rolling without slipping, see
+  :mod:`~sage_dynsym.dynamics.nonholonomic`);
 - first order `B \dot x = F(x)`: `B` (skipped when it is the identity) and `F`.
 
 EXAMPLES::
@@ -80,6 +86,7 @@ class NumericalForm:
     def __init__(self, record, energy=None):
         self._energy = None if energy is None else SR(energy)
         self._constraints, self._J, self._gamma, self._f_t = [], [], [], []
+        self._velocity_constraints, self._A = [], []
         if hasattr(record, 'accelerations'):
             self._second_order(record)
         else:
@@ -96,6 +103,8 @@ class NumericalForm:
         self._order = 2
         q, dq, ddq = record.coordinates(), record.velocities(), record.accelerations()
         mu, f = record.multipliers(), record.constraints()
+        g = record.velocity_constraints()
+        mu = mu + record.velocity_multipliers()
         E = record.equations()
         M = matrix(SR, [[e.diff(a) for a in ddq] for e in E]) if E else matrix(SR, 0, 0)
         if any(entry.has(a) for entry in M.list() for a in ddq + mu):
@@ -106,20 +115,27 @@ class NumericalForm:
         self._state, self._hidden = list(q) + list(dq), list(ddq) + mu
         self._n = len(q)
         self._constraints = f
-        if f:
+        self._velocity_constraints = g
+        if f or g:
             J = [[fj.diff(qi) for qi in q] for fj in f]
             gamma = []
             for row, fj in zip(J, f):
                 Jdq = sum(a * b for a, b in zip(row, dq))
                 gamma.append(-(sum(Jdq.diff(qk) * dk for qk, dk in zip(q, dq))
                                + 2 * Jdq.diff(_t) + fj.diff(_t, 2)))
-            self._J, self._gamma = J, gamma
+            # velocity constraints: A ddq + (dg/dq) dq + dg/dt = 0
+            rows = [[gk.diff(v) for v in dq] for gk in g]
+            gamma += [-(sum(gk.diff(qk) * dk for qk, dk in zip(q, dq)) + gk.diff(_t))
+                      for gk in g]
+            self._J, self._A_rows, self._gamma = J, rows, gamma
             self._f_t = [fj.diff(_t) for fj in f]
-            m, n = len(f), len(q)
+            self._b_velocity = [gk.subs({v: 0 for v in dq}) for gk in g]
+            m, n = len(f) + len(g), len(q)
+            G = matrix(SR, m, n, J + rows)
             A = matrix(SR, n + m, n + m)
             A[:n, :n] = M
-            A[:n, n:] = -matrix(SR, J).transpose()
-            A[n:, :n] = matrix(SR, J)
+            A[:n, n:] = -G.transpose()
+            A[n:, :n] = G
             self._A, self._b = A, F + gamma
         else:
             self._A, self._b = M, F
@@ -129,6 +145,8 @@ class NumericalForm:
                 ("x' = F" if self._A is None else "B x' = F"))
         if self._constraints:
             left += f" with {len(self._constraints)} constraints"
+        if self._velocity_constraints:
+            left += f" with {len(self._velocity_constraints)} velocity constraints"
         coords = self._state[:self._n] if self._order == 2 else self._state
         return (f"Numerical form {left} in ({', '.join(map(str, coords))}), parameters "
                 f"({', '.join(map(str, self._parameters))})")
@@ -193,6 +211,35 @@ class NumericalForm:
         """
         return list(self._constraints), [list(r) for r in self._J], list(self._f_t)
 
+    def velocity_constraints(self):
+        r"""
+        The constraints on the velocities `g_k = A_k(q, t)\dot q + b_k(q,
+        t)`, as ``(g, A, b)`` (``A`` a list of rows; empty lists when there
+        are none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, y, dx, dy, ddx, ddy, la = var('x y dx dy ddx ddy la')
+            sage: N = NumericalForm(SecondOrderEquations([ddx - la*y, ddy + la], [x, y], [dx, dy],
+            ....:                   [ddx, ddy], velocity_constraints=[y*dx - dy],
+            ....:                   velocity_multipliers=[la])); N
+            Numerical form M x'' = F with 1 velocity constraints in (x, y), parameters ()
+            sage: N.velocity_constraints()
+            ([dx*y - dy], [[y, -1]], [0])
+            sage: N.matrix(), N.vector()
+            (
+            [ 1  0 -y]
+            [ 0  1  1]
+            [ y -1  0], [0, 0, -dx*dy]
+            )
+        """
+        if not self._velocity_constraints:
+            return [], [], []
+        return (list(self._velocity_constraints), [list(r) for r in self._A_rows],
+                list(self._b_velocity))
+
     def energy(self):
         r"""The conserved energy given (``None`` if none).
 
@@ -210,6 +257,7 @@ class NumericalForm:
     def _expressions(self):
         exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
         exprs += self._constraints + [a for row in self._J for a in row] + self._f_t
+        exprs += self._velocity_constraints
         return exprs + ([] if self._energy is None else [self._energy])
 
     def functions(self):
@@ -323,6 +371,10 @@ class NumericalForm:
         new._constraints = [sub(e) for e in self._constraints]
         new._J = [[sub(e) for e in row] for row in self._J]
         new._gamma, new._f_t = [sub(e) for e in self._gamma], [sub(e) for e in self._f_t]
+        new._velocity_constraints = [sub(e) for e in self._velocity_constraints]
+        if self._velocity_constraints:
+            new._A_rows = [[sub(e) for e in row] for row in self._A_rows]
+            new._b_velocity = [sub(e) for e in self._b_velocity]
         new._energy = None if self._energy is None else sub(self._energy)
         new._parameters = new._find_parameters()
         return new

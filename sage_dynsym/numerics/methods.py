@@ -102,8 +102,10 @@ class NumericalMethods:
         ``values`` the parameter values. See
         :func:`~sage_dynsym.numerics.simulate.simulate` for the integrators
         (``method='auto'``, ``'stiff'``, or a method of SciPy's
-        ``solve_ivp``), the tolerances, the limits (``max_points=``,
-        ``max_evaluations=``) and the constraints (``project=``).
+        ``solve_ivp``), the tolerances, ``events=[expr, ...]`` (zero
+        crossings, :meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`),
+        the limits (``max_points=``, ``max_evaluations=``) and the
+        constraints (``project=``).
 
         EXAMPLES::
 

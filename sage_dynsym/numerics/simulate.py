@@ -16,9 +16,12 @@ from ``t0`` to ``t_end``, both included.
 - Holonomic constraints `f(q, t) = 0` are kept by projection: the solution
   is integrated from sample to sample and at each sample the coordinates
   are projected onto `f = 0` (Gauss--Newton, minimum-norm steps) and the
-  velocities onto `J \dot q + \partial f/\partial t = 0`. The initial
-  state must lie on the constraints (positions and velocities, to
-  rounding): a state off them is refused with its residuals, unless
+  velocities onto `J \dot q + \partial f/\partial t = 0` and the velocity
+  constraints `A\dot q + b = 0` (a rolling wheel); the trajectory reports
+  what is left of every constraint along the motion
+  (:meth:`~sage_dynsym.numerics.trajectory.Trajectory.constraint_residuals`).
+  The initial state must lie on the constraints (positions and velocities,
+  to rounding): a state off them is refused with its residuals, unless
   ``project=True`` asks for its projection (then reported by a warning).
   Constraints without a regular real point there (an empty set such as
   `x^2 + 1 = 0`, a singular one such as `(x^2 + z^2 - 1)^2 = 0`) are
@@ -128,31 +131,36 @@ class _Projection:
     def __init__(self, form, values):
         from .compiler import python_function
         f, J, f_t = form.constraints()
-        self._n, self._m = len(form.state()) // 2, len(f)
+        _, A, b = form.velocity_constraints()
+        self._n, self._m, self._k = len(form.state()) // 2, len(f), len(A)
         self._state = form.state()
         q = form.state()[:self._n]
-        exprs = [SR(e).subs(values) for e in f + [a for row in J for a in row] + f_t]
+        exprs = [SR(e).subs(values) for e in f + [a for row in J + A for a in row] + f_t + b]
         self._evaluate = python_function(exprs, [_t] + q, entry="constraints")
 
     def _blocks(self, t, q):
-        n, m = self._n, self._m
+        # f, the velocity rows [J; A] and their free terms [f_t; b] at (t, q);
+        # nan where they have no value
+        n, m, k = self._n, self._m, self._k
+        rows = (m + k) * n
         try:
             v = np.array(self._evaluate(t, *q), dtype=float)
         except (ArithmeticError, ValueError, OverflowError):
-            v = np.full(m + m * n + m, np.nan)
-        return v[:m], v[m:m + m * n].reshape(m, n), v[m + m * n:]
+            v = np.full(m + rows + m + k, np.nan)
+        return v[:m], v[m:m + rows].reshape(m + k, n), v[m + rows:]
 
     def residuals(self, t, x):
-        r"""The residuals of the constraints (positions) and of their time
-        derivative (velocities) at the state ``x``, and whether they are
-        rounding errors."""
+        r"""The residuals of the constraints (positions) and of the velocity
+        constraints, `J\dot q + f_t` and `A\dot q + b`, at the state ``x``,
+        and whether they are rounding errors."""
         q, dq = x[:self._n], x[self._n:]
-        f, J, f_t = self._blocks(t, q)
-        velocity = J @ dq + f_t
-        small = (np.max(np.abs(f)) <= CONSTRAINT_TOLERANCE * max(1.0, np.max(np.abs(q)))
-                 and np.max(np.abs(velocity)) <= CONSTRAINT_TOLERANCE * max(
-                     1.0, np.max(np.abs(J)) * np.max(np.abs(dq), initial=0.0)
-                     + np.max(np.abs(f_t))))
+        f, G, h = self._blocks(t, q)
+        velocity = G @ dq + h
+        scale = np.max(np.abs(G), initial=0.0) * np.max(np.abs(dq), initial=0.0) + \
+            np.max(np.abs(h), initial=0.0)
+        small = (np.max(np.abs(f), initial=0.0) <= CONSTRAINT_TOLERANCE * max(1.0, np.max(
+            np.abs(q), initial=0.0)) and np.max(np.abs(velocity), initial=0.0)
+            <= CONSTRAINT_TOLERANCE * max(1.0, scale))
         return f, velocity, bool(small)
 
     def _refuse(self, t, q, why):
@@ -161,29 +169,29 @@ class _Projection:
                              f"{where} ({why}): they are empty over the reals or singular "
                              "there", entry="constraints")
 
-    def _solve(self, t, q, J, rhs):
-        # minimum-norm step J^T (J J^T)^{-1} rhs; a rank-deficient J means
+    def _solve(self, t, q, G, rhs):
+        # minimum-norm step G^T (G G^T)^{-1} rhs; a rank-deficient G means
         # the constraints are not independent (singular) at q
-        if not np.isfinite(J).all() or np.linalg.matrix_rank(J) < self._m:
-            raise self._refuse(t, q, "the Jacobian of the constraints has rank "
-                                     f"{np.linalg.matrix_rank(J) if np.isfinite(J).all() else 0}"
-                                     f" < {self._m}")
-        return J.T @ np.linalg.solve(J @ J.T, rhs)
+        rank = np.linalg.matrix_rank(G) if np.isfinite(G).all() else 0
+        if rank < len(G):
+            raise self._refuse(t, q, f"the Jacobian of the constraints has rank {rank} < "
+                                     f"{len(G)}")
+        return G.T @ np.linalg.solve(G @ G.T, rhs)
 
     def __call__(self, t, x):
-        n = self._n
+        n, m = self._n, self._m
         q, dq = x[:n].copy(), x[n:].copy()
         for _ in range(50):
-            f, J, _ = self._blocks(t, q)
+            f, G, _ = self._blocks(t, q)
             if not np.isfinite(f).all():
                 raise self._refuse(t, q, "the constraints have no value there")
-            if np.max(np.abs(f)) <= 1e-14 * max(1.0, np.max(np.abs(q))):
+            if not m or np.max(np.abs(f)) <= 1e-14 * max(1.0, np.max(np.abs(q))):
                 break
-            q -= self._solve(t, q, J, f)
+            q -= self._solve(t, q, G[:m], f)
         else:
             raise self._refuse(t, q, "the Gauss-Newton projection does not converge")
-        f, J, f_t = self._blocks(t, q)
-        dq -= self._solve(t, q, J, J @ dq + f_t)
+        f, G, h = self._blocks(t, q)
+        dq -= self._solve(t, q, G, G @ dq + h)
         return np.concatenate([q, dq])
 
 
@@ -238,7 +246,7 @@ def _start_on_constraints(project, t0, x, state, allow):
 
 
 def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
-             atol=1e-12, backend='auto', energy=None, name=None, project=False,
+             atol=1e-12, backend='auto', energy=None, name=None, events=None, project=False,
              max_points=MAX_POINTS, max_evaluations=MAX_EVALUATIONS, **options):
     r"""
     The solution of ``equations`` from ``initial`` at ``t0`` to ``t_end``.
@@ -262,8 +270,15 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
       (default: the one of a ``NumericalForm``)
     - ``name`` -- (optional) the model's name, for the titles of the
       trajectory's pictures
-    - ``project`` -- (default: ``False``) with holonomic constraints, project
-      an initial state that is off them onto them (reported by a warning)
+    - ``events`` -- (optional) a list of expressions in ``t``, the state
+      variables and the parameters, or of
+      :class:`~sage_dynsym.numerics.events.Event` (with a direction and
+      termination): their zero crossings, located to the integrator's
+      tolerance, are recorded
+      (:meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`); after a
+      terminal one the trajectory ends at the crossing, its last sample
+    - ``project`` -- (default: ``False``) with constraints, project an
+      initial state that is off them onto them (reported by a warning)
       instead of refusing it
     - ``max_points`` -- (default: :data:`MAX_POINTS`) the most samples
     - ``max_evaluations`` -- (default: :data:`MAX_EVALUATIONS`) the most
@@ -284,9 +299,36 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         sage: T = simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 10, energy=(dx^2 + dy^2)/2 + g*y)
         sage: bool(max(abs(T.values(x^2 + y^2 - 1))) < 1e-12), T.energy_drift() < 1e-8
         (True, True)
+        sage: bool(max(abs(T.constraint_residuals()[x^2 + y^2 - 1])) < 1e-12)
+        True
+
+    A point that must move along the direction of ``(1, y)`` (the velocity
+    constraint `y\dot x - \dot y = 0`, not integrable), pushed along `x`::
+
+        sage: la = var('la')
+        sage: E = SecondOrderEquations([ddx - 1 - la*y, ddy + la], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          velocity_constraints=[y*dx - dy], velocity_multipliers=[la])
+        sage: T = simulate(E, {}, {x: 0, y: 1, dx: 0, dy: 0}, 2)
+        sage: residual = T.constraint_residuals()[y*dx - dy]
+        sage: bool(max(abs(residual)) < 1e-10)
+        True
+
+    The oscillator crossing `x = 0` upwards, and stopped there the second
+    time (its period is `\pi`)::
+
+        sage: from sage_dynsym.numerics.events import Event
+        sage: O = SecondOrderEquations([ddx + 4*x], [x], [dx], [ddx])
+        sage: T = simulate(O, {}, {x: 1, dx: 0}, 10, events=[Event(x, direction=1)])
+        sage: [round(t, 10) for t, k, state in T.events()]
+        [2.3561944902, 5.4977871438, 8.6393797974]
+        sage: T = simulate(O, {}, {x: 1, dx: 0}, 10, events=[Event(x, terminal=True)])
+        sage: bool(abs(T.times()[-1] - pi/4) < 1e-10), abs(T.final_state()[x]) < 1e-12
+        (True, True)
 
     TESTS::
 
+        sage: E = SecondOrderEquations([ddx - 2*mu*x, ddy + g - 2*mu*y], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          constraints=[x^2 + y^2 - 1], multipliers=[mu])
         sage: simulate(E, {g: 1}, {x: 1, y: 0, dx: 0, dy: 0}, 1, points=1)
         Traceback (most recent call last):
         ...
@@ -338,6 +380,16 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
         Traceback (most recent call last):
         ...
         AnalysisError: constraints: the constraints have no regular real point near t = 0, x = ..., y = ... (...): they are empty over the reals or singular there
+
+    The velocity constraint `y\dot x - \dot y = 0` above, broken by the
+    initial velocity::
+
+        sage: N = SecondOrderEquations([ddx - 1 - la*y, ddy + la], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          velocity_constraints=[y*dx - dy], velocity_multipliers=[la])
+        sage: simulate(N, {}, {x: 0, y: 1, dx: 0, dy: 1}, 1)
+        Traceback (most recent call last):
+        ...
+        ModelError: initial: the initial state is off the constraints: residuals f = [] (positions), J dq + df/dt = [-1] (velocities); give a state on the constraints, or project=True to project it onto them
     """
     from scipy.integrate import solve_ivp
     method = choice(method, list(_METHODS) + list(_SCIPY), 'method')
@@ -368,13 +420,18 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     energy = form.energy() if energy is None else energy
     x = initial_state(form, initial)
     parameters = rhs.parameters()
-    project = _Projection(form, parameters) if form.constraints()[0] else None
+    constraints = form.constraints()[0] + form.velocity_constraints()[0]
+    project = _Projection(form, parameters) if constraints else None
     if project is not None:
         x = _start_on_constraints(project, t0, x, form.state(), project_initial)
     times = np.linspace(t0, t_end, points)
     states = np.empty((points, len(x)))
     states[0] = x
     progress = _Progress(rhs, t0, t_end, max_evaluations)
+    if events is not None:
+        from .events import event_functions
+        options['events'] = event_functions(events, form.state(), parameters)
+    found = []
     # without constraints one integration (restarts cost steps); with them
     # one per sample interval, each followed by the projection
     step = 1 if project is not None else points - 1
@@ -389,6 +446,18 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
             reached = solution.t[-1] if len(solution.t) else times[i]
             raise AnalysisError(f"the integration stopped at t = {reached}: "
                                 f"{solution.message}", entry="simulate")
+        if events is not None:
+            found += _crossings(solution, found, t0)
+        if solution.status == 1:          # a terminal event: end at the crossing
+            kept = i + len(solution.t)
+            states[i + 1:kept] = solution.y.T[1:]
+            if found[-1][0] <= times[kept - 1]:     # the crossing is a sample
+                kept -= 1
+            times, states = np.append(times[:kept], found[-1][0]), states[:kept + 1]
+            states[kept] = found[-1][2]
+            dense.append(solution.sol)
+            breaks.append(found[-1][0])
+            break
         states[i + 1:j + 1] = solution.y.T[1:]
         dense.append(solution.sol)
         breaks.append(times[j])
@@ -396,4 +465,18 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
             states[j] = project(times[j], states[j])
         i = j
     return Trajectory(times, states, form.state(), parameters, energy=energy,
-                      method=scipy_method, dense=dense, breaks=breaks, name=name)
+                      method=scipy_method, dense=dense, breaks=breaks, name=name,
+                      events=found if events is not None else None, constraints=constraints)
+
+
+def _crossings(solution, earlier, t0):
+    r"""The crossings of one ``solve_ivp`` run as ``(t, index, state)``,
+    by time, without a zero at the initial time (not a crossing) or one
+    already recorded at the start of the run (the restarts of a
+    constrained integration)."""
+    new = [(float(t), k, np.array(y)) for k, (ts, ys) in
+           enumerate(zip(solution.t_events, solution.y_events)) for t, y in zip(ts, ys)
+           if t > t0]
+    new.sort(key=lambda e: e[0])
+    return [e for e in new if not any(k == e[1] and abs(t - e[0]) <= 1e-12 * max(1, abs(t))
+                                      for t, k, _ in earlier[-len(new) - 1:])]

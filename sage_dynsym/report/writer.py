@@ -198,7 +198,9 @@ def lagrangian_estimate(system):
             data.append(field)
     for load in system.loads():
         data += load.expressions()
-    data += system.constraints()
+    # the constraints given (the derived contact conditions of rolling disks
+    # enter the equations linearly, through their multipliers)
+    data += system.constraint_set().given_holonomic()
     largest = max([polynomial_terms(e) for e in data] + [1])
     n = len(system.coordinates())
     return min(n ** 2 * 2 ** max(depth) * largest ** 2, _TERMS_CAP)
@@ -257,9 +259,15 @@ def _mechanical(system, out):
     L = out.run("Lagrangian", lagrangian)
     if L is None:
         return
+    constrained = bool(system.constraint_set().lines())
+    if constrained and out.want('lagrangian', 'equations'):
+        out.lines.append("Constraints (holonomic: f(q, t) = 0; on the velocities: linear in "
+                         "them, not integrable):")
+        out.lines.extend("  " + line for line in system.constraint_set().lines())
+    velocity = getattr(L, 'nonholonomic_constraints', lambda: [])()
     if out.want('equations'):
         out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
-        if L.constraints():
+        if L.constraints() or velocity:
             out.run("Constraint forces", lambda lines: _constraint_forces(L, lines, out))
     cyclic = L.cyclic_coordinates()
     # absent from L but not cyclic: a damper, a force or a constraint acts on it
@@ -271,7 +279,20 @@ def _mechanical(system, out):
     R = None
     if partial and out.want('routh', 'stationary'):
         R = out.run("Routh function", lambda lines: _routh(L, cyclic, lines, out))
-    if out.want('stationary'):
+    if out.want('stationary') and system.operating_points():
+        for name, point in system.operating_points().items():
+            found = out.run(f"Stationary motions (operating point {name!r})",
+                            lambda lines, point=point: _operating_point(system, L, point, lines,
+                                                                        out))
+            if found is not None:
+                out.run(f"Stability conditions (operating point {name!r})",
+                        lambda lines, found=found: _stability_conditions(
+                            *found, system.positive_parameters(), lines, out))
+    if out.want('stationary') and velocity:
+        if not system.operating_points():
+            out.lines.append("Stationary motions: give operating points (operating_points:) to "
+                             "linearize about steady motions with velocity constraints")
+    elif out.want('stationary'):
         if partial and R is None:
             out.lines.append("Stationary motions: not available (the Routh function is not)")
         else:
@@ -460,15 +481,108 @@ def _lagrangian_equations(L, lines, out):
         _formula(lines, f"[{q}] ", e)
     for mu, f in zip(L.multipliers(), L.constraints()):
         _formula(lines, f"constraint with multiplier {mu} (terms -{mu} df/dq_i): 0 = ", f)
+    for mu, g in zip(getattr(L, 'velocity_multipliers', lambda: [])(),
+                     getattr(L, 'nonholonomic_constraints', lambda: [])()):
+        _formula(lines, f"velocity constraint with multiplier {mu} (terms -{mu} dg/d(dq_i)): "
+                        "0 = ", g)
 
 
 def _constraint_forces(L, lines, out):
     out.check("the accelerations and multipliers (the equations' terms times (n + m)^2)",
-              equations_estimate(L) * (len(L.coordinates()) + len(L.constraints())) ** 2)
+              equations_estimate(L) * (len(L.coordinates()) + len(L.multipliers())) ** 2)
     solved = L.accelerations_and_multipliers()
     lines.append("Multipliers (constraint forces), solved with the accelerations:")
     for mu in L.multipliers():
         _formula(lines, f"{mu} = ", solved[mu])
+
+
+def _operating_point(system, L, point, lines, out):
+    r"""A steady motion: the linearization in the coordinates of the
+    operating point, its characteristic polynomial and the Lienard--Chipart
+    conditions (see :mod:`~sage_dynsym.analysis.steady`)."""
+    from .analysis import linearize
+    out.check("the linearization about the operating point (the terms of the Lagrange "
+              "equations)", equations_estimate(L))
+    linear = linearize(system, point)
+    motion = linear.steady_motion()
+    given = ", ".join(f"{k} = {v}" for k, v in list(point.at().items())
+                      + list(point.velocities().items()))
+    lines.append(f"Stationary motions (operating point {point.name()!r}: {given}), linearized "
+                 f"in {', '.join(map(str, motion.coordinates()))}:")
+    lines.append(f"  independent speeds: {', '.join(map(str, motion.speeds()))}"
+                 + "".join(f"; {k} = {v} to first order"
+                           for k, v in motion.dependent_coordinates().items())
+                 + (f"; left out (ignorable): {', '.join(map(str, motion.dropped()))}"
+                    if motion.dropped() else "")
+                 + (f"; decoupled speeds: {', '.join(map(str, motion.decoupled_speeds()))}"
+                    if motion.decoupled_speeds() else ""))
+    lines.append("  velocities along the motion: " + ", ".join(
+        f"{k} = {v}" for k, v in motion.velocities().items()))
+    if motion.multipliers():
+        lines.append("  constraint multipliers along the motion: " + ", ".join(
+            f"{k} = {v}" for k, v in motion.multipliers().items()))
+    lines.append("  M z'' + S z' + W z = 0 with")
+    for label, X in (("M", linear.M()), ("S", linear.S()), ("W", linear.W())):
+        _formula(lines, f"{label} = ", [list(row) for row in X.rows()], indent="    ")
+    lam = SR.var('lambda_')
+    out.check("the characteristic polynomial (permanent bound of the determinant)",
+              determinant_terms([[polynomial_terms(a) + polynomial_terms(b) + polynomial_terms(c)
+                                  for a, b, c in zip(*rows)]
+                                 for rows in zip(linear.M().rows(), linear.S().rows(),
+                                                 linear.W().rows())]))
+    poly = linear.characteristic_polynomial(lam).expand()
+    _formula(lines, "characteristic polynomial: ", poly)
+    return poly, lam
+
+
+def _stability_conditions(poly, lam, positive, lines, out):
+    # the Lienard--Chipart conditions of the roots other than lambda = 0;
+    # sines and cosines of parameters (a steer axis tilt) are symbols there
+    from .analysis import lienard_chipart_conditions
+    from .analysis.trigonometric import TrigPolynomialRing
+    zeros = 0
+    while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:
+        poly, zeros = (poly / lam).expand(), zeros + 1
+    if zeros:
+        lines.append(f"  lambda = 0 is a root of multiplicity {zeros} (neutral directions: a "
+                     "family of steady motions); the conditions concern the other roots")
+    if poly.degree(lam) < 1:
+        return
+    ring = TrigPolynomialRing.for_expressions([poly], [lam], fractions=True)
+    symbols = {}
+    for angle in ring.angles():
+        tag = len(symbols) // 2
+        symbols[SR(angle).cos()] = SR.var(f'dynsym_cos{tag}')
+        symbols[SR(angle).sin()] = SR.var(f'dynsym_sin{tag}')
+    back = {v: k for k, v in symbols.items()}
+    flat = poly.subs(symbols)
+    odd = [flat.coefficient(lam, k) for k in range(1, flat.degree(lam) + 1, 2)]
+    if all(SR(c).is_zero() for c in odd):
+        # no dissipation: stable in first approximation when the roots are
+        # simple and purely imaginary, i.e. h(mu) of p = h(lambda^2) has
+        # simple negative real roots
+        from .analysis import real_negative_roots_conditions
+        mu = SR.var('mu_')
+        even = flat.subs({lam: mu.sqrt()}).expand()
+        _check_routh_scheme(even, mu, out.budget)
+        conditions = real_negative_roots_conditions(even, mu, positive=positive,
+                                                    budget=out.budget)
+        lines.append("  no asymptotic stability (the odd coefficients vanish: no dissipation);"
+                     " the roots are simple and purely imaginary iff (each > 0)"
+                     + (", with the declared positive parameters:" if positive else ":"))
+        for c in conditions:
+            _formula(lines, "", SR(c).subs(back), indent="    ")
+        return
+    _check_routh_scheme(flat, lam, out.budget)
+    conditions = lienard_chipart_conditions(flat, lam, positive=positive, budget=out.budget)
+    if conditions:
+        lines.append("  Lienard-Chipart conditions (each > 0) for asymptotic stability"
+                     + (", with the declared positive parameters:" if positive else ":"))
+        for c in conditions:
+            _formula(lines, "", SR(c).subs(back), indent="    ")
+    else:
+        lines.append("  asymptotically stable for all admissible parameters (the "
+                     "Lienard-Chipart conditions hold identically)")
 
 
 def _circuit(circuit, out):

@@ -9,7 +9,11 @@ writes it as a picture (``PREFIX.png``) and as arrays (``PREFIX.npz``, see
 :meth:`~sage_dynsym.scale.maps.StabilityMap.save`). The region of the
 Liénard--Chipart conditions of the characteristic polynomial is drawn over
 the map when they can be derived, and their agreement with the map is
-printed.
+printed; so are the shares of the three classes of the map (asymptotically
+stable, stable in first approximation, unstable: see
+:meth:`~sage_dynsym.scale.maps.StabilityMap.classes`) and, where the exact
+classes can be derived from the characteristic polynomial, the agreement
+of each class with them (off the boundaries).
 
 Options:
 
@@ -53,6 +57,8 @@ EXAMPLES::
     ....:       '--numpy', '-o', prefix])
     RLC ladder with three sections: stability map of 31 x 31 points in (R1, R2): 66.6% asymptotically stable (method: polynomial)
     Lienard-Chipart conditions: agree at 100.0% of the points
+    classes: 66.6% asymptotically stable, 0.0% stable in first approximation, 33.4% unstable
+    exact classes: agree at 100.0% (asymptotically stable), 100.0% (unstable)
     wrote ....png, ....npz
     0
     sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:0', '--numpy'])
@@ -233,7 +239,7 @@ def _checked(args):
 
 def _run(args):
     from ..description import load
-    from ..errors import DescriptionError
+    from ..errors import DescriptionError, DynSymError
     from .maps import stability_map
     _checked(args)
     model = load(args.file)
@@ -241,14 +247,26 @@ def _run(args):
     client = False if args.numpy else 'local' if args.cluster else (args.scheduler or None)
     S = stability_map(model, parameters, fixed=dict(args.value), client=client,
                       samples=args.samples, seed=args.seed, at=dict(args.at),
-                      method=args.method, conditions='lienard-chipart', workers=args.workers,
-                      timeout=args.timeout, progress=args.progress, max_points=args.max_points)
+                      method=args.method, conditions='lienard-chipart', classes='spectrum',
+                      workers=args.workers, timeout=args.timeout, progress=args.progress,
+                      max_points=args.max_points)
     name = model.name() if callable(getattr(model, 'name', None)) else None
     print(f"{name or args.file}: {str(S)[0].lower()}{str(S)[1:]} (method: {S.method()})")
     if S.conditions() is not None:
         print(f"Lienard-Chipart conditions: agree at {100 * S.agreement():.1f}% of the points")
     elif S.note():
         print(S.note())
+    shares = [100 * (S.classes() == k).mean() for k in (2, 1, 0)]
+    print("classes: {:.1f}% asymptotically stable, {:.1f}% stable in first approximation, "
+          "{:.1f}% unstable".format(*shares))
+    try:
+        agree = S.agreement(by_class=True)
+    except DynSymError:
+        agree = None
+    if agree is not None:
+        names = {2: 'asymptotically stable', 1: 'stable in first approximation', 0: 'unstable'}
+        print("exact classes: agree at " + ", ".join(
+            f"{100 * agree[k]:.1f}% ({names[k]})" for k in (2, 1, 0) if agree[k] == agree[k]))
     prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
     picture = len(parameters) <= 2 or not S.is_grid()
     outputs = [prefix + ".png"] * picture + [prefix + ".npz"]

@@ -230,9 +230,11 @@ def local_cluster(workers):
               'options': {'worker_class': 'distributed.Worker',
                           'worker_kwargs': {'nthreads': 1, 'host': '127.0.0.1',
                                             'silence_logs': quiet}}}
+    # no dashboard; the scheduler's other HTTP endpoints on a free port of
+    # 127.0.0.1 (a fixed port may be taken by another cluster)
     scheduler = {'cls': Scheduler,
                  'options': {'host': '127.0.0.1', 'dashboard': False,
-                             'dashboard_address': None}}
+                             'dashboard_address': '127.0.0.1:0'}}
     return SpecCluster(scheduler=scheduler, workers={i: worker for i in range(workers)},
                        worker=worker, silence_logs=quiet, name='sage_dynsym')
 

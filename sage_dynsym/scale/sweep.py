@@ -37,6 +37,27 @@ EXAMPLES::
     array([[ 9.81 , 10.31 ],
            [14.715, 15.465],
            [19.62 , 20.62 ]])
+
+**Stability classes.** A function returning
+:func:`~sage_dynsym.scale.kernel.stability_class` (``2`` asymptotically
+stable, ``1`` stable in first approximation, ``0`` unstable; the classes of
+:meth:`~sage_dynsym.scale.maps.StabilityMap.classes`) sweeps the stability
+of anything whose roots or matrix the function computes, and
+:meth:`Sweep.plot` draws the classes with a legend. A damped oscillator::
+
+    sage: import numpy as np
+    sage: from sage_dynsym.scale import stability_class
+    sage: def oscillator(c, k):
+    ....:     return stability_class(np.array([[0, 1], [-k, -c]]))
+    sage: W = sweep(oscillator, {'c': (-1, 1, 5), 'k': (-1, 1, 5)}, client=False)
+    sage: W.values()
+    array([[0, 0, 0, 0, 0],
+           [0, 0, 0, 0, 0],
+           [0, 0, 1, 1, 1],
+           [0, 0, 1, 2, 2],
+           [0, 0, 1, 2, 2]])
+    sage: W.plot()
+    Graphics object consisting of 4 graphics primitives
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
@@ -344,3 +365,42 @@ class Sweep(SageObject):
             array([1. , 1.5, 2. ])
         """
         return self._values
+
+    def plot(self, **options):
+        r"""
+        The values against one parameter (a line), or, for two parameters
+        on a grid and values that are stability classes (``2``, ``1``,
+        ``0``, ``-1``), the picture of the classes with a legend (see
+        :func:`~sage_dynsym.scale.maps.class_plot`).
+
+        EXAMPLES: see the module documentation; one parameter::
+
+            sage: from sage_dynsym.scale import sweep
+            sage: sweep(lambda a: a^2, {'a': (0, 1, 5)}, client=False).plot()
+            Graphics object consisting of 1 graphics primitive
+
+        TESTS::
+
+            sage: sweep(lambda a, b: a*b, {'a': (0, 1, 3), 'b': (0, 1, 3)}, client=False).plot()
+            Traceback (most recent call last):
+            ...
+            AnalysisError: Sweep.plot: draws numbers against one parameter, or stability classes (2, 1, 0, -1) over two on a grid
+        """
+        values = self._values
+        numeric = values.dtype.kind in 'biuf'
+        if numeric and len(self._keys) == 1 and self._points.is_grid() and values.ndim == 1:
+            from sage.plot.line import line
+            G = line(list(zip(map(float, self._points.axes()[0]), map(float, values))),
+                     **options)
+            G.axes_labels([f"${self._keys[0]}$", ""])
+            return G
+        is_class = numeric and values.size and np.all(np.isin(values, (-1, 0, 1, 2)))
+        if is_class and len(self._keys) == 2 and self._points.is_grid() and values.ndim == 2:
+            from .maps import class_plot
+            X, Y = self._points.axes()
+            options = dict(dict(frame=True, axes=False, ticks_integer=False), **options)
+            G = class_plot(X, Y, values.astype(int), options)
+            G.axes_labels([f"${k}$" for k in self._keys])
+            return G
+        raise AnalysisError("draws numbers against one parameter, or stability classes (2, 1, "
+                            "0, -1) over two on a grid", entry="Sweep.plot")
