@@ -474,3 +474,28 @@ def sage_numbers(value):
     if operator is None:
         return value
     return operator(*[sage_numbers(a) for a in value.operands()])
+
+
+def is_exact(expr):
+    r"""
+    Whether the expression ``expr`` has no floating-point number in it (a
+    float makes equalities hold only to rounding).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import is_exact
+        sage: x = var('x')
+        sage: is_exact(sqrt(2)/2 + x), is_exact(0.5*x), is_exact(3), is_exact(SR(float(1)))
+        (True, False, True, False)
+    """
+    stack = [SR(expr)]
+    while stack:
+        e = stack.pop()
+        if e.operator() is None:
+            if e.is_numeric():
+                number = e.pyobject()
+                if isinstance(number, (float, complex)) or not number.parent().is_exact():
+                    return False
+        else:
+            stack.extend(e.operands())
+    return True

@@ -101,6 +101,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
+from ..arguments import known_symbols, symbol_arguments
 from .conditions import (positive_conditions, positive_conditions_all, conjunction,
                          simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
@@ -1046,7 +1047,9 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
     for V, c in zip(integrals[1:], levels or []):
         if c is not None:
             system.append((V - SR(c)).expand())
-    unknowns = variables + multipliers if solve_for is None else [SR(u) for u in solve_for]
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    unknowns = variables + multipliers if solve_for is None else \
+        _unknowns(solve_for, variables + multipliers, system, "stationary_solutions")
     rhs = [SR(X) for X in equations] if equations is not None else None
 
     def linear(s):
@@ -1106,6 +1109,17 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
           [cos(theta) < 0, sin(theta) != 0])]
         sage: sols[0].stability(positive=var('m l g')).verdict()
         'stable'
+
+    TESTS::
+
+        sage: stationary_motions(R, solve_for=[var('zz')])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_for: zz is not an unknown of the model; the unknowns are theta, g, l, m, p_psi
+        sage: stationary_motions(R, positive=['not a name'])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: positive: expected symbols or their names, got 'not a name'
     """
     from .linear import equations_of_motion
     system = routh_or_lagrangian
@@ -1117,7 +1131,9 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     rest = {v: 0 for v in data.velocities() + data.accelerations()}
     E = data.equations()
     at_rest = [normalize(e.subs(rest)) for e in E]
-    unknowns = list(q) if solve_for is None else [SR(u) for u in solve_for]
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    unknowns = list(q) if solve_for is None else \
+        _unknowns(solve_for, list(q), at_rest, "stationary_motions")
     function = data.function() if data.function() is not None else SR(system.expr())
     W = -function.subs({v: 0 for v in data.velocities()})
     kinetic = data.kinetic_matrix()
@@ -1136,3 +1152,46 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     return StationarySolutions(W, q, unknowns, [], at_rest, kinetic=kinetic,
                                signs=('positive',), linear=linear, positive=positive,
                                description=what, shown=shown)
+
+
+def _unknowns(solve_for, first, equations, entry):
+    r"""
+    The unknowns ``solve_for`` of a problem whose own unknowns are
+    ``first`` and whose ``equations`` are given: each must be one of
+    ``first`` or a symbol of the equations (a parameter solved for), and
+    every equation must involve one of them -- an equation free of the
+    unknowns is a condition on what is held fixed, and "no solution for
+    generic values" would then be a false answer.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.stationary import _unknowns
+        sage: x, y, a = var('x y a')
+        sage: _unknowns([a, 'x'], [x, y], [x - a, y], 'stationary_motions')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_for: the equation y == 0 does not involve the unknowns a, x: it is a condition on the symbols held fixed; solve for y as well
+        sage: _unknowns([var('zz')], [x, y], [x - a, y], 'stationary_motions')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_for: zz is not an unknown of the model; the unknowns are x, y, a
+    """
+    valid = list(first)
+    for e in equations:
+        for v in sorted(SR(e).variables(), key=str):
+            if all(str(v) != str(u) for u in valid) and str(v) != 't':
+                valid.append(v)
+    unknowns = known_symbols(solve_for, valid, 'solve_for', error=AnalysisError,
+                             what="unknown")
+    if len({str(u) for u in unknowns}) < len(unknowns):
+        raise AnalysisError(f"an unknown is given twice: {unknowns}", entry='solve_for')
+    for e in equations:
+        e = SR(e)
+        if not e.is_zero() and not any(e.has(u) for u in unknowns):
+            raise AnalysisError(f"the equation {e} == 0 does not involve the unknowns "
+                                f"{', '.join(map(str, unknowns))}: it is a condition on the "
+                                "symbols held fixed; solve for "
+                                f"{', '.join(map(str, sorted(e.variables(), key=str)))} as well",
+                                entry='solve_for')
+    return unknowns
+

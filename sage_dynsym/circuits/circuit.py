@@ -53,6 +53,7 @@ from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
 from .graph import CircuitGraph
+from .inductance import inductance_conditions
 
 class Circuit(NumericalMethods, Model):
     r"""
@@ -144,6 +145,7 @@ class Circuit(NumericalMethods, Model):
         where = {b.name: p for p, b in enumerate(self._branches)}
         self._cgraph = CircuitGraph(self._branches, links=[
             (where[c.first], where[c.second]) for c in self._couplings])
+        self._conditions = inductance_conditions(self, mutual_entries)
 
     def _repr_(self):
         title = f" {self._name!r}" if self._name else ""
@@ -375,6 +377,26 @@ class Circuit(NumericalMethods, Model):
             (Coupling(first='L1', second='L2', value=M),)
         """
         return self._couplings
+
+    def conditions(self):
+        r"""
+        The conditions on the parameters for the circuit to be physical that
+        its declared signs leave open: the principal minors of the
+        inductance matrix of each group of coupled windings `\ge 0` (see
+        :mod:`~sage_dynsym.circuits.inductance`); ``[]`` when there is none.
+        Values given to :meth:`simulate` and :meth:`numerical_rhs` must
+        satisfy them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 0, 'L2'], [0, 2, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:             parameters=['M'], positive=['L1', 'L2'])
+            sage: C.conditions()
+            [L1*L2 - M^2 >= 0]
+        """
+        return list(self._conditions)
 
     def nodes(self):
         r"""

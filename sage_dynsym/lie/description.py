@@ -56,7 +56,7 @@ EXAMPLES::
 """
 from sage.misc.latex import latex
 
-from ..errors import DescriptionError, DynSymError, brief
+from ..errors import BudgetError, DescriptionError, DynSymError, brief
 from ..io.expressions import ExpressionParser
 from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
@@ -141,6 +141,12 @@ def lie_poisson_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         ModelError: bad.yaml: algebra: the matrix breaks the Jacobi identity: {x, {y, z}} + {y, {z, x}} + {z, {x, y}} = x, not 0
+        sage: lie_poisson_from_dict({'kind': 'lie_poisson', 'variables': ['x', 'y'],
+        ....:     'algebra': {'structure_constants': [['x', 'y', {'y': 1}], ['y', 'x', {'y': -1}]]},
+        ....:     'hamiltonian': 'x*y'}, 'b.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: b.yaml: algebra.structure_constants[1]: the bracket of y and x is already given in structure_constants[0]: give each pair once (the other order follows by skew-symmetry)
         sage: lie_poisson_from_dict({'kind': 'lie_poisson', 'algebra': 'so3', 'hamiltonian': 'M1',
         ....:                        'colour': 'red'}, 'top.yaml')
         Traceback (most recent call last):
@@ -244,7 +250,7 @@ def _algebra(algebra_data, variables, parser, source):
             raise DescriptionError(f"expected a list of brackets [a, b, {{c: coefficient}}], "
                                    f"got {brief(value)}", entry='algebra.structure_constants',
                                    source=source)
-        constants = {}
+        constants, given = {}, {}
         for i, item in enumerate(value):
             entry = f'algebra.structure_constants[{i}]'
             if not (isinstance(item, list) and len(item) == 3 and isinstance(item[2], dict)
@@ -253,6 +259,13 @@ def _algebra(algebra_data, variables, parser, source):
                 raise DescriptionError(f"expected a bracket [a, b, {{c: coefficient}}] of the "
                                        f"variables {', '.join(variables)}, got {brief(item)}",
                                        entry=entry, source=source)
+            pair = frozenset(item[:2])
+            if pair in given:
+                raise DescriptionError(f"the bracket of {item[0]} and {item[1]} is already given "
+                                       f"in structure_constants[{given[pair]}]: give each pair "
+                                       "once (the other order follows by skew-symmetry)",
+                                       entry=entry, source=source)
+            given[pair] = i
             constants[item[0], item[1]] = {k: parser.parse(c, entry=f'{entry}.{k}')
                                            for k, c in item[2].items()}
         return constants
@@ -265,7 +278,7 @@ def _formula(lines, label, expr, indent="  "):
     lines.append(f"{indent}  LaTeX: {latex(expr)}")
 
 
-def lie_report(system, sections=None, analysis=True):
+def lie_report(system, sections=None, analysis=True, budget=None, failed=None):
     r"""
     A text report of a Lie--Poisson system: the Hamiltonian, the equations
     (text and LaTeX), the Casimirs, the polynomial first integrals of degree
@@ -279,6 +292,11 @@ def lie_report(system, sections=None, analysis=True):
       are ignored)
     - ``analysis`` -- (default: ``True``) whether to include the
       stationary motions
+    - ``budget`` -- (optional) the size budget of each section, in
+      polynomial terms (see :func:`lie_estimates`): a section whose estimate
+      is larger is one line saying so
+    - ``failed`` -- (optional) a list: the titles of the sections that
+      failed on an error that is not the package's own are appended to it
 
     A section that fails is one line saying why; the others are still
     printed.
@@ -293,10 +311,26 @@ def lie_report(system, sections=None, analysis=True):
         Polynomial first integrals of degree <= 2 besides H and the Casimirs:
           M1
             LaTeX: M_{1}
+
+    The budget bounds every section::
+
+        sage: M2, M3 = var('M2 M3')
+        sage: print(lie_report(LiePoissonSystem('so3', (M1 + 2*M2 + 3*M3)^200), budget=10^5))
+        == Lie-Poisson system on so3: variables M1, M2, M3 ==
+        Hamiltonian:
+        ...
+        Lie-Poisson equations dx/dt = {x, H}: skipped, the Lie-Poisson equations (terms of J_ij times those of dH/dx_j): about 1.21e+05 polynomial terms, over the budget of 100000 (raise it with --budget)
+        Casimirs (polynomial, degree <= 4):
+          M1^2 + M2^2 + M3^2
+            LaTeX: M_{1}^{2} + M_{2}^{2} + M_{3}^{2}
+        Polynomial first integrals of degree <= 2 besides H and the Casimirs: skipped, ...
+        Stationary motions (Routh-Lyapunov over H, the Casimirs): skipped, ...
     """
     wanted = set(LIE_SECTIONS if sections is None else sections) & set(LIE_SECTIONS)
     if not analysis:
         wanted.discard('stationary')
+    failed = [] if failed is None else failed
+    estimates = lie_estimates(system) if budget is not None else {}
     what = system.structure().name() or "a Poisson structure"
     head = f"Lie-Poisson system on {what}: variables {', '.join(map(str, system.variables()))}"
     lines = [f"== {system.name()} ({head}) ==" if system.name() else f"== {head} =="]
@@ -306,12 +340,18 @@ def lie_report(system, sections=None, analysis=True):
             return
         out = []
         try:
+            if key in estimates and estimates[key][1] > budget:
+                raise BudgetError(estimates[key][0], estimate=estimates[key][1], budget=budget)
             body(out)
+        except BudgetError as err:
+            lines.append(f"{title}: skipped, {err.message} (raise it with --budget)")
+            return
         except DynSymError as err:
             lines.append(f"{title}: not available ({err})")
             return
         except Exception as err:    # one line, never a traceback
             lines.append(f"{title}: section failed: {type(err).__name__}: {err}")
+            failed.append(title)
             return
         lines.append(f"{title}:")
         lines.extend(out)
@@ -344,6 +384,53 @@ def lie_report(system, sections=None, analysis=True):
         + (" and the integrals above)" if found else ")"),
         lambda out: _stationary(system, found, out))
     return "\n".join(lines)
+
+
+def lie_estimates(system):
+    r"""
+    The size estimates of the sections of :func:`lie_report`, in polynomial
+    terms (see :func:`~sage_dynsym.analysis.size.polynomial_terms`),
+    computed from the data alone, before the sections: a dict from the
+    section keys to pairs ``(what, estimate)``.
+
+    - ``equations`` -- `\sum_{ij}` (terms of `J_{ij}`) (terms of
+      `\partial H/\partial x_j`): the expanded right-hand sides;
+    - ``casimirs`` -- the monomials of degree `\le 4` in the `n` variables
+      times the terms of `J`: the coefficient matrix of the search;
+    - ``integrals`` -- the monomials of degree `\le 2` times the terms of the
+      equations, and the Casimirs of degree `\le 2`;
+    - ``stationary`` -- the terms of `H` times `2^n` (the exact solver
+      splits the system into cases), and the Casimirs.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lie.system import LiePoissonSystem
+        sage: from sage_dynsym.lie.description import lie_estimates
+        sage: M1, M2, M3 = var('M1 M2 M3')
+        sage: E = lie_estimates(LiePoissonSystem('so3', (M1^2 + M2^2 + M3^2)/2))
+        sage: {key: estimate for key, (_, estimate) in E.items()}
+        {'casimirs': 204, 'equations': 6, 'integrals': 108, 'stationary': 228}
+    """
+    from ..analysis.size import polynomial_terms
+    from .integrals import basis_size
+    x, J = system.variables(), system.poisson_matrix()
+    n = len(x)
+    H = system.hamiltonian()
+    structure = sum(polynomial_terms(e) for e in J.list())
+    equations = sum(polynomial_terms(J[i, j]) * polynomial_terms(H.diff(x[j]))
+                    for i in range(n) for j in range(n) if not J[i, j].is_zero())
+    # at least one term per variable: an abelian algebra (J = 0) still builds
+    # the whole basis
+    casimirs = basis_size(n, 4) * max(structure, n)
+    return {
+        'equations': ("the Lie-Poisson equations (terms of J_ij times those of dH/dx_j)",
+                      equations),
+        'casimirs': ("the Casimirs of degree <= 4 (monomials times the terms of J)", casimirs),
+        'integrals': ("the integrals of degree <= 2 (monomials times the terms of the "
+                      "equations)", basis_size(n, 2) * max(equations + structure, n)),
+        'stationary': ("the stationary motions (terms of H times 2^n for n variables, and the "
+                       "Casimirs)", polynomial_terms(H) * 2 ** n + casimirs),
+    }
 
 
 def _stationary(system, integrals, out):

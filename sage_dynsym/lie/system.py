@@ -77,9 +77,11 @@ from ..analysis.motion import FirstOrderEquations
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
+from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
-from .integrals import casimirs as _casimirs, polynomial_integrals as _polynomial_integrals
+from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
+                        MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
 
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
@@ -156,7 +158,7 @@ class LiePoissonSystem(Model, NumericalMethods):
     def __init__(self, algebra, hamiltonian, variables=None, parameters=None, name=None,
                  positive=(), reduction=None):
         self._structure = poisson_structure(algebra, variables)
-        self._positive = [SR(a) for a in positive]
+        self._positive = symbol_arguments(positive, 'positive')
         self._reduction = None if reduction is None else dict(reduction)
         x = self._structure.variables()
         try:
@@ -170,7 +172,7 @@ class LiePoissonSystem(Model, NumericalMethods):
                  if self._structure.name() else f"the system ({', '.join(_names_of(x))})")
         others = sorted({a for a in self._H.variables() if str(a) not in names}, key=str)
         if parameters is not None:
-            self._parameters = [SR(a) for a in parameters]
+            self._parameters = symbol_arguments(parameters, 'parameters')
             declared = {str(a) for a in self._parameters}
             for a in others + self._structure.parameters():
                 if str(a) not in declared:
@@ -352,22 +354,37 @@ class LiePoissonSystem(Model, NumericalMethods):
         """
         return bool(SR(self.poisson_bracket(F, self._H)).is_zero())
 
-    @cached_method
-    def casimirs(self, degree=4):
+    def casimirs(self, degree=4, max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
         r"""
         The independent polynomial Casimirs of the structure up to
         ``degree``, computed from the Poisson matrix
-        (:func:`~sage_dynsym.lie.integrals.casimirs`), by increasing degree.
+        (:func:`~sage_dynsym.lie.integrals.casimirs`), by increasing degree;
+        ``max_degree`` and ``max_basis`` bound the search (the degree, the
+        number of unknown coefficients). Computed once per degree.
 
         EXAMPLES::
 
             sage: from sage_dynsym.lie.system import LiePoissonSystem
             sage: LiePoissonSystem('so31', var('M1')^2).casimirs()
             [M1^2 + M2^2 + M3^2 - p1^2 - p2^2 - p3^2, M1*p1 + M2*p2 + M3*p3]
-        """
-        return _casimirs(self._structure, degree, parameters=self._parameters)
 
-    def polynomial_integrals(self, degree, new_only=False, conditions=False, levels=None):
+        TESTS::
+
+            sage: LiePoissonSystem('so3', var('M1')^2).casimirs(degree=[])
+            Traceback (most recent call last):
+            ...
+            AnalysisError: casimirs: expected an integer, got [] (list)
+        """
+        degree = check_degree(degree, "casimirs", len(self.variables()), max_degree, max_basis)
+        return list(self._casimirs(degree))
+
+    @cached_method
+    def _casimirs(self, degree):
+        return _casimirs(self._structure, degree, parameters=self._parameters, max_degree=degree,
+                         max_basis=basis_size(len(self.variables()), degree))
+
+    def polynomial_integrals(self, degree, new_only=False, conditions=False, levels=None,
+                             max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
         r"""
         A basis of the polynomial first integrals of degree at most
         ``degree``, modulo constants (products of integrals count); see
@@ -387,6 +404,12 @@ class LiePoissonSystem(Model, NumericalMethods):
         - ``levels`` -- (optional) a dict ``{g: c}`` of Casimirs or
           integrals and their values: the integrals on that invariant
           level, modulo its ideal (:mod:`~sage_dynsym.lie.levels`)
+          :class:`~sage_dynsym.lie.integrals.IntegralJump`
+        - ``max_degree``, ``max_basis`` -- (default:
+          :data:`~sage_dynsym.lie.integrals.MAX_DEGREE`,
+          :data:`~sage_dynsym.lie.integrals.MAX_BASIS`) the limits of the
+          search (the degree, the number of unknown coefficients), checked
+          before it starts
 
         EXAMPLES: Kovalevskaya's case, `A = B = 2C`, the centre of mass in
         the equatorial plane at `(x_0, 0, 0)`: a new integral of degree 4,
@@ -423,7 +446,8 @@ class LiePoissonSystem(Model, NumericalMethods):
         """
         return _polynomial_integrals(self._structure, self._H, degree, new_only=new_only,
                                      conditions=conditions, parameters=self._parameters,
-                                     levels=levels)
+                                     levels=levels, max_degree=max_degree,
+                                     max_basis=max_basis)
 
     def stationary_solutions(self, integrals=(), levels=None, positive=None, multipliers=None,
                              solve_for=None):

@@ -483,10 +483,13 @@ def _force_term(data, parser, where):
     if not isinstance(direction, list) or len(direction) != 3:
         raise DescriptionError(f"expected a list of 3 expressions, got {brief(direction)}",
                                entry=f"{entry}.direction")
-    return NewtonianField(parser.parse(value['nu'], entry=f"{entry}.nu"),
-                          parser.parse(value['r'], entry=f"{entry}.r"),
-                          [parser.parse(c, entry=f"{entry}.direction[{i}]")
-                           for i, c in enumerate(direction)])
+    nu, r = parser.parse(value['nu'], entry=f"{entry}.nu"), parser.parse(value['r'],
+                                                                         entry=f"{entry}.r")
+    e = [parser.parse(c, entry=f"{entry}.direction[{i}]") for i, c in enumerate(direction)]
+    try:
+        return NewtonianField(nu, r, e)
+    except ModelError as err:       # its entry is newtonian.<key>
+        raise err.with_context(entry=where) from None
 
 
 def mechanical_system_to_dict(system):

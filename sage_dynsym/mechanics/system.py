@@ -45,6 +45,7 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import (velocity, acceleration, t, time_derivative, check_mechanical_names,
                        sage_numbers)
+from ..arguments import symbol_arguments
 from ..io.fields import text as _text
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
@@ -53,9 +54,11 @@ from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form, is_singular, has_full_row_rank
+from ..numerics.values import check_model_values
 from .force_functions import check_force_function
 from .constraint_set import ConstraintSet
 from .kinematics import Kinematics
+from .loads import load_list
 from .operating_points import checked_operating_points, operating_point_to_dict
 from .rigid_body import RigidBody
 
@@ -104,6 +107,9 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
     """
     from sage.symbolic.expression import Expression
     from ..symbols import velocity as _velocity
+    if isinstance(constraints, (str, bytes, dict)) or not hasattr(constraints, '__iter__'):
+        raise ModelError(f"expected a list of constraints f(q, t), got {constraints!r}",
+                         entry=entry)
     out = []
     forbidden = {}
     for q in coordinates:
@@ -111,10 +117,13 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
     for i, f in enumerate(constraints):
         sub = f"{entry}[{i}]"
-        if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+        try:
+            if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+                raise TypeError
+            f = SR(f)
+        except (TypeError, ValueError):
             raise ModelError(f"expected an expression f(q, t) or a relation, got {f!r}",
-                             entry=sub)
-        f = SR(f)
+                             entry=sub) from None
         if f.is_relational():
             f = f.lhs() - f.rhs()
         for v in f.variables():
@@ -284,7 +293,7 @@ class MechanicalSystem(Model):
             raise ModelError(f"expected {n} generalized forces, one per coordinate, got "
                              f"{len(self._forces)}", entry="forces")
         self._name = name
-        self._positive = [SR(p) for p in positive]
+        self._positive = symbol_arguments(positive, 'positive')
         if self._parameters is not None:
             self._check_symbols()
             names = {str(p) for p in self._parameters}
@@ -294,7 +303,7 @@ class MechanicalSystem(Model):
         self._symbolic = Kinematics(self, SymbolicBackend())
         self._tree = self._symbolic.tree
         self._loads = [self._checked_load(load, f"loads[{i}]", given_names)
-                       for i, load in enumerate(loads)]
+                       for i, load in enumerate(load_list(loads))]
         self._constraints = check_constraints(constraints, self._coordinates, self._parameters)
         self._constraint_set = ConstraintSet(self, self._constraints, nonholonomic, rolling,
                                              given_names)
@@ -562,6 +571,7 @@ class MechanicalSystem(Model):
             sage: S.numerical_rhs({m: 2, k: 8})(0, [1.0, 0.5])
             array([ 0.5, -4. ])
         """
+        check_model_values(self, values)
         return self.lagrangian().numerical_rhs(values, **options)
 
     def simulate(self, values, initial, t_end, **options):
@@ -578,7 +588,17 @@ class MechanicalSystem(Model):
             sage: T = S.simulate({m: 2, k: 8}, {x: 1, 'dx': 0}, pi, points=3)
             sage: T.values(x).round(8), T.energy_drift() < 1e-9
             (array([ 1., -1.,  1.]), True)
+
+        TESTS::
+
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2, positive=[m, k])
+            sage: S.simulate({m: -2, k: 8}, {x: 1, 'dx': 0}, pi)
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -2
         """
+        check_model_values(self, values)
         return self.lagrangian().simulate(values, initial, t_end, **options)
 
     def code(self, language='python', cse=True):
@@ -806,6 +826,28 @@ class MechanicalSystem(Model):
         if self._force is None:
             return []
         return list(self._force) if isinstance(self._force, list) else [self._force]
+
+    def conditions(self):
+        r"""
+        The conditions on the parameters for the model to be physical that
+        are not decided by its data: those of its force fields (the
+        direction of a Newtonian field with symbolic direction cosines a
+        unit vector, its distance positive; see
+        :meth:`~sage_dynsym.mechanics.force_functions.NewtonianField.conditions`).
+        Values given to :meth:`simulate` and :meth:`numerical_rhs` must
+        satisfy them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, NewtonianField
+            sage: phi, nu, r, e1, e2 = var('phi nu r e1 e2')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, phi)], mass=1)], [phi],
+            ....:                      force_function=NewtonianField(nu, r, [e1, e2, 0]))
+            sage: S.conditions()
+            [e1^2 + e2^2 == 1, r > 0]
+        """
+        return [c for term in self.force_terms() if hasattr(term, 'conditions')
+                for c in term.conditions()]
 
     def loads(self):
         r"""

@@ -404,6 +404,9 @@ class NumericalForm:
             Python kernel: 2 states, 1 parameters
         """
         from .compiler import compile_kernel
+        if not isinstance(backend, str):
+            raise AnalysisError(f"backend must be 'auto', 'c' or 'python', got {backend!r}",
+                                entry="numerical_rhs")
         if backend not in self._kernels:
             self._kernels[backend] = compile_kernel(self, backend)
         return self._kernels[backend]

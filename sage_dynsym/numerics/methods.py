@@ -11,6 +11,10 @@ parameters, or ``None``), and gives
 - :meth:`~NumericalMethods.simulate` (see :mod:`~sage_dynsym.numerics.simulate`),
 - :meth:`~NumericalMethods.code` (see :mod:`~sage_dynsym.numerics.codegen`).
 
+The parameter values given are checked against the model's declared signs
+and physical conditions when it has them (see
+:mod:`~sage_dynsym.numerics.values`).
+
 The numerical form of the equations (and its compiled code) is built once
 per model object.
 
@@ -34,6 +38,7 @@ from .codegen import generate_code
 from .form import NumericalForm
 from .rhs import RightHandSide
 from .simulate import simulate as _simulate
+from .values import check_model_values
 
 _FORMS = {}
 
@@ -85,6 +90,7 @@ class NumericalMethods:
             sage: f.variables()
             [x, y]
         """
+        check_model_values(self, values)
         return RightHandSide(self._numerical_form(), values, backend)
 
     def simulate(self, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
@@ -96,8 +102,10 @@ class NumericalMethods:
         ``values`` the parameter values. See
         :func:`~sage_dynsym.numerics.simulate.simulate` for the integrators
         (``method='auto'``, ``'stiff'``, or a method of SciPy's
-        ``solve_ivp``), the tolerances and ``events=[expr, ...]`` (zero
-        crossings, :meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`).
+        ``solve_ivp``), the tolerances, ``events=[expr, ...]`` (zero
+        crossings, :meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`),
+        the limits (``max_points=``, ``max_evaluations=``) and the
+        constraints (``project=``).
 
         EXAMPLES::
 

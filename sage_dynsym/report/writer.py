@@ -32,78 +32,19 @@ EXAMPLES::
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (the package's face loads it lazily, only when a name is used)
 import sage.all  # noqa: F401
-import operator
 
 from sage.misc.latex import latex
-from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+from ..analysis.size import polynomial_terms, TERMS_CAP as _TERMS_CAP
 from ..errors import DynSymError, BudgetError
+from ..arguments import count
 
 from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 
-#: Term counts beyond this are reported as this (they are over any budget).
-_TERMS_CAP = 10**30
 #: Largest number of partial states of the permanent bound before the
 #: cruder product bound is used.
 _PERMANENT_STATES = 20_000
-
-
-def polynomial_terms(expr):
-    r"""
-    An upper bound of the number of terms of ``expr`` once expanded, from
-    its tree alone (nothing is expanded): sums add, products multiply, a
-    power `a^n` with a positive integer `n` counts the monomials of degree
-    `n` in the terms of `a`; functions and other powers are single atoms.
-    Capped at `10^{30}`.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.report import polynomial_terms
-        sage: x, y, z = var('x y z')
-        sage: polynomial_terms((x + y)*(x + z + 1)), ((x + y)*(x + z + 1)).expand().number_of_operands()
-        (6, 6)
-        sage: polynomial_terms((x + y + z)^10), len(((x + y + z)^10).expand().operands())
-        (66, 66)
-        sage: polynomial_terms(sin(x + y)/(x + y)), polynomial_terms(SR(0))
-        (1, 0)
-    """
-    try:
-        return min(_terms(SR(expr), {}), _TERMS_CAP)
-    except RecursionError:
-        return _TERMS_CAP
-
-
-def _terms(e, seen):
-    # ``seen``: the counts of the subexpressions met so far, by structural
-    # hash (large expressions repeat their factors: ten times faster)
-    key = hash(e)
-    for other, count in seen.get(key, ()):
-        if e.is_trivially_equal(other):
-            return count
-    count = _count(e, seen)
-    seen.setdefault(key, []).append((e, count))
-    return count
-
-
-def _count(e, seen):
-    op = e.operator()
-    if op is None:
-        return 0 if e.is_zero() else 1
-    if op is add_vararg:
-        return min(sum(_terms(x, seen) for x in e.operands()), _TERMS_CAP)
-    if op is mul_vararg:
-        count = 1
-        for x in e.operands():
-            count = min(count * _terms(x, seen), _TERMS_CAP)
-        return count
-    if op is operator.pow:
-        base, exponent = e.operands()
-        if exponent.is_integer() and exponent > 0:
-            from sage.arith.misc import binomial
-            k, n = _terms(base, seen), int(min(exponent, 10**6))
-            return min(binomial(k + n - 1, n), _TERMS_CAP) if k > 1 else k
-    return 1
 
 
 def determinant_terms(counts):
@@ -170,8 +111,9 @@ class _Report:
     and :meth:`run`, which turns any failure of a section into one line.
     """
 
-    def __init__(self, sections, budget):
+    def __init__(self, sections, budget, failed=None):
         self.lines, self.wanted, self.budget = [], set(sections), budget
+        self.failed = [] if failed is None else failed
 
     def want(self, *keys):
         return any(k in self.wanted for k in keys)
@@ -184,9 +126,9 @@ class _Report:
         r"""
         Run ``body(lines)``; its lines are kept if it succeeds, else one line
         says why the section is missing: over the budget, not available
-        (the package's error), or failed (any other error, with its class).
-        Returns the body's value, or ``None``. ``KeyboardInterrupt`` is not
-        caught.
+        (the package's error), or failed (any other error, with its class;
+        its title is added to ``failed``). Returns the body's value, or
+        ``None``. ``KeyboardInterrupt`` is not caught.
         """
         lines = []
         try:
@@ -200,6 +142,7 @@ class _Report:
         except Exception as err:    # Sage, Maxima, memory, recursion: one line, no traceback
             self.lines.append(f"{title}: section failed: {type(err).__name__}: "
                               f"{_clip(str(err))}")
+            self.failed.append(title)
             return None
         self.lines.extend(lines)
         return value
@@ -287,11 +230,21 @@ def circuit_estimate(circuit):
     return min(len(circuit.branches()) * largest ** 2, _TERMS_CAP)
 
 
+def _conditions(model, out):
+    # what the declared signs leave open for the model to be physical: the
+    # rest of the report holds where these hold
+    conditions = model.conditions()
+    if conditions:
+        out.lines.append("Conditions for the model to be physical (not decided by the declared "
+                         "signs): " + ", ".join(map(str, conditions)))
+
+
 def _mechanical(system, out):
     coordinates = ", ".join(map(str, system.coordinates()))
     n = len(system.bodies())
     out.lines.append(f"== {system.name() or 'mechanical system'} (mechanical system: {n} "
                      f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
+    _conditions(system, out)
 
     def lagrangian(lines):
         out.check("the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a chain, "
@@ -547,7 +500,7 @@ def _operating_point(system, L, point, lines, out):
     r"""A steady motion: the linearization in the coordinates of the
     operating point, its characteristic polynomial and the Lienard--Chipart
     conditions (see :mod:`~sage_dynsym.analysis.steady`)."""
-    from .analysis import linearize
+    from ..analysis import linearize
     out.check("the linearization about the operating point (the terms of the Lagrange "
               "equations)", equations_estimate(L))
     linear = linearize(system, point)
@@ -585,8 +538,8 @@ def _operating_point(system, L, point, lines, out):
 def _stability_conditions(poly, lam, positive, lines, out):
     # the Lienard--Chipart conditions of the roots other than lambda = 0;
     # sines and cosines of parameters (a steer axis tilt) are symbols there
-    from .analysis import lienard_chipart_conditions
-    from .analysis.trigonometric import TrigPolynomialRing
+    from ..analysis import lienard_chipart_conditions
+    from ..analysis.trigonometric import TrigPolynomialRing
     zeros = 0
     while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:
         poly, zeros = (poly / lam).expand(), zeros + 1
@@ -608,7 +561,7 @@ def _stability_conditions(poly, lam, positive, lines, out):
         # no dissipation: stable in first approximation when the roots are
         # simple and purely imaginary, i.e. h(mu) of p = h(lambda^2) has
         # simple negative real roots
-        from .analysis import real_negative_roots_conditions
+        from ..analysis import real_negative_roots_conditions
         mu = SR.var('mu_')
         even = flat.subs({lam: mu.sqrt()}).expand()
         _check_routh_scheme(even, mu, out.budget)
@@ -636,6 +589,7 @@ def _circuit(circuit, out):
     from ..errors import CircuitError
     out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
                      f"branches on {len(circuit.nodes())} nodes) ==")
+    _conditions(circuit, out)
     estimate = circuit_estimate(circuit)
     if out.want('mixed_potential', 'state_equations', 'lyapunov'):
         def state_equations(lines):
@@ -698,7 +652,7 @@ def _circuit(circuit, out):
                 lambda lines: _linear_circuit_stability(circuit, L, lines, out))
 
 
-def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
+def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None):
     r"""
     A text report of ``model`` (see the module documentation).
 
@@ -712,6 +666,9 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
       each section, in polynomial terms
     - ``analysis`` -- (default: ``True``) whether to include the analysis
       sections (:data:`ANALYSIS_SECTIONS`)
+    - ``failed`` -- (optional) a list: the titles of the sections that
+      failed on an error that is not the package's own (``section failed:
+      ...``) are appended to it (the command line's exit status 3)
 
     OUTPUT: a string
 
@@ -775,7 +732,10 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
                               f"{', '.join(SECTIONS)}")
     if not analysis:
         wanted = [key for key in wanted if key not in ANALYSIS_SECTIONS]
-    out = _Report(wanted, budget)
+    budget = count(budget, 'budget', error=DynSymError)
+    if failed is not None and not isinstance(failed, list):
+        raise DynSymError(f"failed must be a list, got {failed!r}")
+    out = _Report(wanted, budget, failed)
     renderer = _RENDERERS.get(getattr(model, 'kind', None))
     if renderer is None:
         raise DynSymError(f"cannot report on {type(model).__name__}: expected a model "
@@ -786,7 +746,8 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
 
 def _lie_poisson(system, out):
     from ..lie.description import lie_report
-    out.lines.extend(lie_report(system, sections=out.wanted).split("\n"))
+    out.lines.extend(lie_report(system, sections=out.wanted, budget=out.budget,
+                                failed=out.failed).split("\n"))
 
 
 #: How each kind of model is reported (by :attr:`~sage_dynsym.dynamics.model.Model.kind`).

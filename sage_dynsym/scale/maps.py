@@ -108,10 +108,12 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
+from ..arguments import known_symbols
+from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
-from .points import parse_points
+from .points import parse_points, check_positive_ranges, MAX_POINTS
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
@@ -120,7 +122,7 @@ MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
 def stability_map(system, parameters, fixed=None, client=None, samples=None, *, at=None,
                   variables=None, lhs_matrix=None, seed=0, method='auto', tol=1e-9,
                   marginal_tol=1e-7, conditions=None, classes=None, chunk_size=CHUNK,
-                  workers=None, timeout=DEFAULT_TIMEOUT, progress=False):
+                  workers=None, timeout=DEFAULT_TIMEOUT, progress=False, max_points=MAX_POINTS):
     r"""
     The stability map of a linear system over a grid (or random samples)
     of parameter values.
@@ -168,6 +170,13 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
       one per core; giving it with ``client=None`` asks for a local cluster)
     - ``timeout`` -- seconds to reach a scheduler and get a worker
     - ``progress`` -- show Dask's progress bar
+    - ``max_points`` -- (default: :data:`~sage_dynsym.scale.points.MAX_POINTS`)
+      the most points, checked before anything is computed
+
+    For a model, the values must respect its declared signs: a parameter
+    declared positive gets a positive value in ``fixed`` and a range of
+    positive values; ``at`` names its state variables (a circuit) or
+    coordinates (a mechanical system).
 
     OUTPUT: a :class:`StabilityMap`
 
@@ -209,6 +218,29 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         Traceback (most recent call last):
         ...
         AnalysisError: stability_map: expected a linear system (from linearize), or what linearize accepts with at=, or a circuit or mechanical model, got x
+        sage: stability_map([y, -a*x - b*y], {a: (0, 1, 10^5), b: (0, 1, 10^5)}, at={x: 0, y: 0},
+        ....:               variables=[x, y], client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: 10000000000 points are more than the limit of 10000000; raise it with max_points= if that is what you want
+
+    A model's declared signs and state variables::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], positive=['L1', 'C1'])
+        sage: stability_map(C, {'R1': (-1, 1, 3)}, fixed={'L1': -1, 'C1': 1}, client=False)
+        Traceback (most recent call last):
+        ...
+        ModelError: fixed: L1 is declared positive, got -1
+        sage: stability_map(C, {'L1': (-1, 1, 3)}, fixed={'R1': 1, 'C1': 1}, client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[L1]: L1 is declared positive: its values must be positive, got the range (-1.0, 1.0, 3)
+        sage: stability_map(C, {'R1': (0, 1, 3)}, fixed={'L1': 1, 'C1': 1}, at={'zz': 1},
+        ....:               client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: zz is not a state variable of the model; the state variables are i1, u2
     """
     entry = "stability_map"
     if method not in ('auto', 'polynomial', 'eigvals'):
@@ -222,6 +254,13 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         raise AnalysisError("tol must be a non-negative number", entry=entry)
     if not isinstance(parameters, dict) or not parameters:
         parse_points(parameters)            # the error for a missing or malformed dict
+    for name, value in (('fixed', fixed), ('at', at)):
+        if not isinstance(value, (dict, type(None))):
+            raise AnalysisError(f"{name}= must be a dict, got {value!r}", entry=entry)
+    if _is_model(system):       # the model's declared signs, before any work
+        check_model_values(system, dict(fixed or {}), entry="fixed")
+        check_positive_ranges(parse_points(parameters, samples, seed, max_points=max_points),
+                              system.positive_parameters())
     linear = _linear_system(system, at, variables, lhs_matrix)
     symbols = _symbols(linear)
     names = {str(s): s for s in symbols}
@@ -234,7 +273,8 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         if key in keys:
             raise AnalysisError(f"{key} is both a parameter and fixed", entry=entry)
         values[key] = _exact_number(v, f"fixed[{k}]")
-    points = parse_points(dict(zip(keys, parameters.values())), samples, seed)
+    points = parse_points(dict(zip(keys, parameters.values())), samples, seed,
+                          max_points=max_points)
     fixed_system = _substitute(linear, values)
     missing = sorted(set(_symbols(fixed_system)) - set(keys), key=str)
     if missing:
@@ -375,6 +415,7 @@ def model_linear_system(model, at=None):
             pairs = None
         if pairs is not None and (hasattr(model, 'lhs_matrix') or not model.couplings()):
             xs = [s for s, _ in pairs]
+            known_symbols(list(at), xs, 'at', error=AnalysisError, what="state variable")
             if hasattr(model, 'lhs_matrix'):
                 B = matrix(SR, model.lhs_matrix()).subs(sources)
             else:
@@ -386,6 +427,7 @@ def model_linear_system(model, at=None):
         L = model.lagrangian().subs(sources) if sources else model.lagrangian()
     else:
         L = model.lagrangian()
+    known_symbols(list(at), L.coordinates(), 'at', error=AnalysisError, what="coordinate")
     point = {q: SR(0) for q in L.coordinates()}
     point.update(at)
     return linearize(L, point)
