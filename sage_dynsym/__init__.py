@@ -45,7 +45,7 @@ _PUBLIC = {
     '.mechanics.loads': ['Load'],
     '.mechanics.rolling': ['RollingDisk'],
     '.mechanics.system': ['MechanicalSystem'],
-    '.description': ['load', 'save'],
+    '.description': ['load', 'save', 'kinds', 'register_kind'],
     '.circuits': ['Circuit', 'NodalAnalysis'],
     '.analysis': ['stationary_solutions', 'stationary_motions', 'ModifiedRouthLyapunov',
                   'linearize', 'LinearSystem', 'hurwitz_matrix', 'hurwitz_determinants',

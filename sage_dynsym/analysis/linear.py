@@ -675,7 +675,7 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
 def equations_of_motion(system):
     r"""
     The neutral record of a system's equations (see
-    :mod:`~sage_dynsym.analysis.motion`): ``system.to_linearizer()`` when
+    :mod:`~sage_dynsym.analysis.motion`): ``system.equations_record()`` when
     the object has it; ``None`` for a plain list of right-hand sides.
 
     EXAMPLES::
@@ -721,9 +721,10 @@ def _without_constraints(data):
 
 def _record(system):
     # the neutral record of a model or characteristic function, unchecked
-    to_linearizer = getattr(system, 'to_linearizer', None)
-    if to_linearizer is not None:
-        return to_linearizer()
+    # to_linearizer: the name of earlier versions, still honoured for other classes
+    record = getattr(system, 'equations_record', None) or getattr(system, 'to_linearizer', None)
+    if record is not None:
+        return record()
     if hasattr(system, 'lagrange_equations'):
         return SecondOrderEquations(system.lagrange_equations(), system.coordinates(),
                                     system.velocities(), system.accelerations())

@@ -4,7 +4,7 @@ Equations of motion as neutral data for the analysis
 The analysis does not know the classes that produce equations (Lagrangians,
 Routh functions, Hamiltonians, circuits, systems on Lie algebras): each of
 them hands over its equations as one of two plain records through a
-method ``to_linearizer()`` -- the pattern of SymPy's mechanics --, and
+method ``equations_record()`` -- the pattern of SymPy's mechanics --, and
 :func:`~sage_dynsym.analysis.linear.linearize`, the stationary-motion
 search and the stability verdicts work on the records only.
 

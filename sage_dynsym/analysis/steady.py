@@ -606,7 +606,7 @@ def steady_motion_conditions(system, point, speeds=None):
     INPUT:
 
     - ``system`` -- a :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`
-      or anything with ``to_linearizer()`` giving one (a Lagrangian, a
+      or anything with ``equations_record()`` giving one (a Lagrangian, a
       mechanical system)
     - ``point`` -- an :class:`~sage_dynsym.analysis.operating_point.OperatingPoint`
       (or a dict over coordinates and velocities)
@@ -642,7 +642,7 @@ def steady_motion_conditions(system, point, speeds=None):
         sage: solve(conditions[var('dtheta')], om)
         [omega == -(g*m*r + (Omega^2*m*r^2 - (A - C)*Omega^2)*cos(theta0))*sin(theta0)/((Omega*m*r^2 + C*Omega)*cos(theta0))]
     """
-    record = system.to_linearizer() if hasattr(system, 'to_linearizer') else system
+    record = system.equations_record() if hasattr(system, 'equations_record') else system
     work = _Linearization(record, point, [], speeds)
     work.steady_velocities()
     work.derivatives()

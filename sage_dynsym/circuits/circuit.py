@@ -166,6 +166,17 @@ class Circuit(NumericalMethods, Model):
 
     kind = 'circuit'
 
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The model of a description mapping (see :doc:`/description_files`);
+        ``source`` names the file in errors.
+
+        EXAMPLES: see :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+        """
+        from .description import circuit_from_dict
+        return circuit_from_dict(data, source)
+
     def equations(self):
         r"""
         The equations of motion: the right-hand sides of the state
@@ -832,9 +843,9 @@ class Circuit(NumericalMethods, Model):
             sage: Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])._conserved_energy() is None
             True
         """
-        return quadratic_energy(self.to_linearizer())
+        return quadratic_energy(self.equations_record())
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The state equations as the neutral record of the analysis:
         :class:`~sage_dynsym.analysis.motion.FirstOrderEquations` with the
@@ -846,7 +857,7 @@ class Circuit(NumericalMethods, Model):
             sage: from sage_dynsym.circuits import Circuit
             sage: from sage_dynsym.analysis.linear import linearize
             sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])
-            sage: F = C.to_linearizer(); F
+            sage: F = C.equations_record(); F
             First-order equations B x' = F(x) in (i1, u2)
             sage: linearize(C, {var('i1'): 0, var('u2'): 0}).jacobian()
             [-R1/L1   1/L1]

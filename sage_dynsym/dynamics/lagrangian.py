@@ -839,7 +839,7 @@ class Lagrangian(NumericalMethods, SageObject):
             return None
         return self.energy()
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The equations as neutral data for the analysis
         (:class:`~sage_dynsym.analysis.motion.SecondOrderEquations`, with
@@ -849,10 +849,10 @@ class Lagrangian(NumericalMethods, SageObject):
 
             sage: from sage_dynsym import Lagrangian
             sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).to_linearizer()
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations_record()
             Second-order equations in (x): [ddx + x] == 0
             sage: y, dy = var('y dy')
-            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).to_linearizer()
+            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
             sage: E.constraints(), E.multipliers()
             ([x - y], [mu1])
         """

@@ -1,21 +1,31 @@
 r"""
-Models: the common interface of mechanical systems, circuits and systems on
-Lie algebras
+Models: the interface every kind of model implements
 
-Everything that consumes a model -- description files, reports, the
-interactive pages -- talks to it through this small interface instead of
-asking for its class:
+Everything that consumes a model -- description files, reports, stability
+maps, the command line, the interactive pages -- talks to it through this
+interface and never asks for its class (``isinstance``, ``hasattr`` or a
+test of its ``kind``). A kind of model is a subclass of :class:`Model`
+registered under its :attr:`~Model.kind` (see
+:func:`sage_dynsym.description.kinds`); what it provides:
 
-- :attr:`Model.kind`: the ``kind`` of its description file
-  (``'mechanical'``, ``'circuit'``, ``'lie_poisson'``);
-- :meth:`Model.name`, :meth:`Model.parameters`;
-- :meth:`Model.equations`: its equations of motion;
-- :meth:`Model.characteristic_functions`: the characteristic functions it
-  has, by name -- a Lagrangian only where one exists (a nonlinear circuit
-  has a mixed potential instead, a Lie--Poisson system a Hamiltonian only);
-- :meth:`Model.to_dict`: its description mapping (what ``save`` writes);
-- :meth:`Model.results`: the ``results:`` section of a saved description,
-  and :meth:`Model.result_symbols`, the names such a section may use.
+- identity: :attr:`Model.kind`, :meth:`Model.name`, :meth:`Model.parameters`,
+  :meth:`Model.positive_parameters` (the only signs the analysis may use);
+- its description format, both ways, in one place: the class method
+  :meth:`Model.from_dict` and :meth:`Model.to_dict`; the ``results:``
+  section of a saved file: :meth:`Model.results` and
+  :meth:`Model.result_symbols`;
+- its equations: :meth:`Model.equations`, and
+  :meth:`Model.equations_record`, the neutral record
+  (:mod:`sage_dynsym.analysis.motion`) that the analysis and the numerics
+  read; :meth:`Model.characteristic_functions`;
+- :meth:`Model.free_linear_system`: the linear system with the sources
+  switched off, whose stability :func:`~sage_dynsym.scale.maps.stability_map`
+  maps;
+- :meth:`Model.report_title` and :meth:`Model.report_sections`: the
+  sections of its report (:class:`ReportSection`, each with an estimate of
+  its size and the results of earlier sections it needs), run by the one
+  section runner of :func:`~sage_dynsym.report.writer.report` within one
+  budget.
 
 EXAMPLES::
 
@@ -27,6 +37,8 @@ EXAMPLES::
     (True, 'mechanical')
     sage: sorted(S.characteristic_functions())
     ['hamiltonian', 'lagrangian']
+    sage: S.equations_record()
+    Second-order equations in (psi, theta): ...
     sage: C = load(example_path('nonlinear_circuit.yaml'))
     sage: C.kind, sorted(C.characteristic_functions())
     ('circuit', ['mixed_potential'])
@@ -34,11 +46,61 @@ EXAMPLES::
 from sage.structure.sage_object import SageObject
 
 
+class ReportSection(SageObject):
+    r"""
+    One section of a model's report (see :meth:`Model.report_sections`).
+
+    INPUT:
+
+    - ``key`` -- the name under which the command line's ``--sections``
+      selects it (see :data:`sage_dynsym.report.sections.SECTIONS`); several
+      sections may share a key
+    - ``name`` -- the section's name in the one line that replaces it when
+      it is skipped or cannot be computed (``Lagrangian: skipped, ...``)
+    - ``compute`` -- a function of ``results`` (a dict of what earlier
+      sections computed, by key; a section may add its own) returning the
+      section's lines (its heading included), or ``None`` when the section
+      does not apply to the model
+    - ``estimate`` -- (optional) a function of ``results`` returning the
+      number of polynomial terms the section would create, computed
+      without creating them; the runner skips the section when it exceeds
+      the budget
+    - ``what`` -- (default: ``name``) what the estimate counts, for the line
+      that says why the section was skipped
+    - ``analysis`` -- (default: ``False``) whether the section is analysis
+      (left out by ``analysis=False``, the command line's ``--no-analysis``)
+    - ``needs`` -- (default: none) keys of ``results`` the section needs:
+      when an earlier section could not provide one, this section is one
+      line saying so
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.model import ReportSection
+        sage: def equations(results):
+        ....:     results['equations'] = "x'' = -x"
+        ....:     return ["Equations:", "  x'' = -x"]
+        sage: s = ReportSection('equations', 'Equations', equations, estimate=lambda r: 2); s
+        Report section 'equations' (Equations)
+        sage: found = {}
+        sage: s.compute(found), s.estimate(found), found
+        (['Equations:', "  x'' = -x"], 2, {'equations': "x'' = -x"})
+    """
+
+    def __init__(self, key, name, compute, estimate=None, what=None, analysis=False,
+                 needs=()):
+        self.key, self.name, self.compute = key, name, compute
+        self.estimate, self.what, self.analysis = estimate, what or name, analysis
+        self.needs = tuple(needs)
+
+    def _repr_(self):
+        return f"Report section {self.key!r} ({self.name})"
+
+
 class Model(SageObject):
     r"""
-    Base class of the models (see the module documentation). Subclasses
-    set :attr:`kind` and implement :meth:`equations`, :meth:`to_dict`,
-    :meth:`characteristic_functions` and :meth:`results`.
+    Base class of the kinds of models (see the module documentation).
+    Subclasses set :attr:`kind` and implement the methods that raise
+    ``NotImplementedError`` here.
 
     EXAMPLES::
 
@@ -48,8 +110,10 @@ class Model(SageObject):
         ...
         NotImplementedError: <abstract method equations>
     """
-    #: The ``kind`` of the model's description file.
+    #: The ``kind`` of the model's description file (its registry name).
     kind = None
+
+    # -- identity --------------------------------------------------------
 
     def name(self):
         r"""The model's name (``None`` if it has none).
@@ -87,25 +151,25 @@ class Model(SageObject):
         """
         return list(getattr(self, '_positive', []))
 
-    def equations(self):
-        r"""The equations of motion of the model.
+    # -- the description format -------------------------------------------
 
-        EXAMPLES: see the subclasses.
-        """
-        raise NotImplementedError("<abstract method equations>")
-
-    def characteristic_functions(self):
+    @classmethod
+    def from_dict(cls, data, source=None):
         r"""
-        The characteristic functions the model has: a dict from names
-        (``'lagrangian'``, ``'hamiltonian'``, ``'mixed_potential'``, ...)
-        to functions of no argument that build them.
+        The model of a description mapping of this kind (what a description
+        file holds); ``source`` names the file in errors.
 
-        EXAMPLES: see the module documentation.
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit.from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
+            Circuit with 2 branches on 2 nodes
         """
-        raise NotImplementedError("<abstract method characteristic_functions>")
+        raise NotImplementedError("<abstract method from_dict>")
 
     def to_dict(self):
-        r"""The description mapping of the model (what ``save`` writes).
+        r"""The description mapping of the model (what ``save`` writes);
+        :meth:`from_dict` reads it back.
 
         EXAMPLES: see the subclasses.
         """
@@ -128,3 +192,77 @@ class Model(SageObject):
         EXAMPLES: see the subclasses.
         """
         raise NotImplementedError("<abstract method result_symbols>")
+
+    # -- equations ---------------------------------------------------------
+
+    def equations(self):
+        r"""The equations of motion of the model.
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method equations>")
+
+    def equations_record(self):
+        r"""
+        The equations as a neutral record of
+        :mod:`sage_dynsym.analysis.motion` (what the analysis and the
+        numerics read).
+
+        EXAMPLES: see the module documentation.
+        """
+        raise NotImplementedError("<abstract method equations_record>")
+
+    def to_linearizer(self):
+        r"""
+        The same as :meth:`equations_record` (the name of earlier
+        versions, after SymPy's mechanics).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: S.to_linearizer().coordinates() == S.equations_record().coordinates()
+            True
+        """
+        return self.equations_record()
+
+    def characteristic_functions(self):
+        r"""
+        The characteristic functions the model has: a dict from names
+        (``'lagrangian'``, ``'hamiltonian'``, ``'mixed_potential'``, ...)
+        to functions of no argument that build them.
+
+        EXAMPLES: see the module documentation.
+        """
+        raise NotImplementedError("<abstract method characteristic_functions>")
+
+    # -- analysis and reports ----------------------------------------------
+
+    def free_linear_system(self, at=None):
+        r"""
+        The linear system of the model with its sources switched off,
+        around the state ``at`` (a dict; default: the zero state, or the
+        model's own reference state): a
+        :class:`~sage_dynsym.analysis.linear.LinearSystem`, what
+        :func:`~sage_dynsym.scale.maps.stability_map` maps.
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method free_linear_system>")
+
+    def report_title(self):
+        r"""The heading of the model's report (one line).
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method report_title>")
+
+    def report_sections(self):
+        r"""
+        The sections of the model's report, in the order they are printed:
+        a list of :class:`ReportSection`.
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method report_sections>")

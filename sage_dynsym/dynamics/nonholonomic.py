@@ -361,7 +361,7 @@ class NonholonomicLagrangian(Lagrangian):
             return None
         return Lagrangian._conserved_energy(self)
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The equations as neutral data, with the velocity constraints and
         their multipliers (see :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`).
@@ -370,7 +370,7 @@ class NonholonomicLagrangian(Lagrangian):
 
             sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
             sage: x, y, dx, dy = var('x y dx dy')
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy]).to_linearizer()
+            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy]).equations_record()
             Second-order equations in (x, y): [ddx - mu1, mu1*y + ddy] == 0 with velocity constraints [-dy*y + dx] == 0
         """
         kinetic = self.mass_matrix() if self.is_natural() else None

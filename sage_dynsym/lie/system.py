@@ -551,7 +551,7 @@ class LiePoissonSystem(Model, NumericalMethods):
                                 name=self._name, reduction=reduction,
                                 positive=[a for a in self._positive if str(a) not in names])
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The equations `\dot x = J(x)\nabla H` as neutral data
         (:class:`~sage_dynsym.analysis.motion.FirstOrderEquations` in
@@ -565,7 +565,7 @@ class LiePoissonSystem(Model, NumericalMethods):
             sage: from sage_dynsym.lie.system import LiePoissonSystem
             sage: M1, M2, M3, a = var('M1 M2 M3 a')
             sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/a)/2)
-            sage: S.to_linearizer()
+            sage: S.equations_record()
             First-order equations x' = F(x) in (M1, M2, M3)
             sage: f = S.numerical_rhs({a: 3})
             sage: f(0, [1.0, 2.0, 3.0])
@@ -590,6 +590,17 @@ class LiePoissonSystem(Model, NumericalMethods):
     # the model interface
 
     kind = 'lie_poisson'
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The model of a description mapping (see :doc:`/description_files`);
+        ``source`` names the file in errors.
+
+        EXAMPLES: see :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
+        """
+        from .description import lie_poisson_from_dict
+        return lie_poisson_from_dict(data, source)
 
     def characteristic_functions(self):
         r"""

@@ -316,6 +316,17 @@ class MechanicalSystem(Model):
 
     kind = 'mechanical'
 
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The model of a description mapping (see :doc:`/description_files`);
+        ``source`` names the file in errors.
+
+        EXAMPLES: see :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`.
+        """
+        from .description import mechanical_system_from_dict
+        return mechanical_system_from_dict(data, source)
+
     def equations(self):
         r"""
         The equations of motion: the Lagrange equations of :meth:`lagrangian`.
@@ -953,7 +964,7 @@ class MechanicalSystem(Model):
                              entry="operating_points")
         return self._operating_points[name]
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The equations as neutral data for the analysis: those of
         :meth:`lagrangian`.
@@ -962,10 +973,10 @@ class MechanicalSystem(Model):
 
             sage: from sage_dynsym import MechanicalSystem, RigidBody
             sage: x, m = var('x m')
-            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x]).to_linearizer()
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x]).equations_record()
             Second-order equations in (x): [ddx*m] == 0
         """
-        return self.lagrangian().to_linearizer()
+        return self.lagrangian().equations_record()
 
     def force_field(self):
         r"""

@@ -2,7 +2,7 @@ r"""
 The numerical methods every model has: right-hand side, simulation, code
 
 :class:`NumericalMethods` is a base class of the models. It works only
-through the model's ``to_linearizer()`` (one of the records of
+through the model's ``equations_record()`` (one of the records of
 :mod:`sage_dynsym.analysis.motion`) and the optional hook
 ``_conserved_energy()`` (a symbolic energy in the state variables and the
 parameters, or ``None``), and gives
@@ -24,7 +24,7 @@ EXAMPLES::
     sage: from sage_dynsym.numerics.methods import NumericalMethods
     sage: x, dx, ddx, k = var('x dx ddx k')
     sage: class Oscillator(NumericalMethods):
-    ....:     def to_linearizer(self):
+    ....:     def equations_record(self):
     ....:         return SecondOrderEquations([ddx + k*x], [x], [dx], [ddx])
     ....:     def _conserved_energy(self):
     ....:         return (dx^2 + k*x^2)/2
@@ -46,7 +46,7 @@ _FORMS = {}
 class NumericalMethods:
     r"""
     Mixin of the models: numerical right-hand side, simulation and code
-    generation from ``to_linearizer()`` (see the module documentation).
+    generation from ``equations_record()`` (see the module documentation).
 
     EXAMPLES: see the module documentation.
     """
@@ -55,12 +55,27 @@ class NumericalMethods:
         r"""The conserved energy of the model, or ``None`` (the default)."""
         return None
 
+    def to_linearizer(self):
+        r"""
+        The same as ``equations_record()``, the neutral record of the
+        equations (the name of earlier versions, after SymPy's mechanics).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: L = Lagrangian(dx^2/2 - x^2/2, [x])
+            sage: L.to_linearizer().equations() == L.equations_record().equations()
+            True
+        """
+        return self.equations_record()
+
     def _numerical_form(self):
         key = id(self)
         cached = _FORMS.get(key)
         if cached is not None and cached[0]() is self:
             return cached[1]
-        form = NumericalForm(self.to_linearizer(), energy=self._conserved_energy())
+        form = NumericalForm(self.equations_record(), energy=self._conserved_energy())
         try:
             ref = weakref.ref(self, lambda _, key=key: _FORMS.pop(key, None))
         except TypeError:       # objects without weak references: no cache
@@ -83,7 +98,7 @@ class NumericalMethods:
             sage: from sage_dynsym.numerics.methods import NumericalMethods
             sage: x, y, w = var('x y w')
             sage: class Rotation(NumericalMethods):
-            ....:     def to_linearizer(self):
+            ....:     def equations_record(self):
             ....:         return FirstOrderEquations([-w*y, w*x], [x, y])
             sage: f = Rotation().numerical_rhs({'w': 2}); f(0, [1.0, 1.0])
             array([-2.,  2.])
@@ -113,7 +128,7 @@ class NumericalMethods:
             sage: from sage_dynsym.numerics.methods import NumericalMethods
             sage: x, a = var('x a')
             sage: class Decay(NumericalMethods):
-            ....:     def to_linearizer(self):
+            ....:     def equations_record(self):
             ....:         return FirstOrderEquations([-a*x], [x])
             sage: T = Decay().simulate({a: 1}, {x: 1}, 1, points=3, method='stiff')
             sage: bool(abs(T.values(x)[-1] - exp(-1.)) < 1e-8)
@@ -142,7 +157,7 @@ class NumericalMethods:
             sage: from sage_dynsym.numerics.methods import NumericalMethods
             sage: x, a = var('x a')
             sage: class Decay(NumericalMethods):
-            ....:     def to_linearizer(self):
+            ....:     def equations_record(self):
             ....:         return FirstOrderEquations([-a*x], [x])
             sage: print(Decay().code('c'))
             /* Right-hand side F of the equations dx/dt = F in x = (x),
