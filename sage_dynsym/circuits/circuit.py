@@ -166,16 +166,6 @@ class Circuit(NumericalMethods, Model):
 
     kind = 'circuit'
 
-    @classmethod
-    def from_dict(cls, data, source=None):
-        r"""
-        The model of a description mapping (see :doc:`/description_files`);
-        ``source`` names the file in errors.
-
-        EXAMPLES: see :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
-        """
-        from .description import circuit_from_dict
-        return circuit_from_dict(data, source)
 
     def equations(self):
         r"""

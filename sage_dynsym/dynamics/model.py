@@ -159,11 +159,7 @@ class Model(SageObject):
         The model of a description mapping of this kind (what a description
         file holds); ``source`` names the file in errors.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Circuit
-            sage: Circuit.from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
-            Circuit with 2 branches on 2 nodes
+        EXAMPLES: see the subclasses.
         """
         raise NotImplementedError("<abstract method from_dict>")
 

@@ -591,16 +591,6 @@ class LiePoissonSystem(Model, NumericalMethods):
 
     kind = 'lie_poisson'
 
-    @classmethod
-    def from_dict(cls, data, source=None):
-        r"""
-        The model of a description mapping (see :doc:`/description_files`);
-        ``source`` names the file in errors.
-
-        EXAMPLES: see :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
-        """
-        from .description import lie_poisson_from_dict
-        return lie_poisson_from_dict(data, source)
 
     def characteristic_functions(self):
         r"""

@@ -316,16 +316,6 @@ class MechanicalSystem(Model):
 
     kind = 'mechanical'
 
-    @classmethod
-    def from_dict(cls, data, source=None):
-        r"""
-        The model of a description mapping (see :doc:`/description_files`);
-        ``source`` names the file in errors.
-
-        EXAMPLES: see :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`.
-        """
-        from .description import mechanical_system_from_dict
-        return mechanical_system_from_dict(data, source)
 
     def equations(self):
         r"""
