@@ -83,6 +83,7 @@ _MOVED = {
     'force_functions': 'mechanics.force_functions',
     'kinematics': 'mechanics.kinematics',
     'mechanical_system': 'mechanics.system',
+    'circuits.inductance': 'circuits.elements.windings',
 }
 
 
@@ -112,7 +113,7 @@ class _MovedModules(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         return None
 
     def create_module(self, spec):
-        return importlib.import_module(f"{__name__}.{_MOVED[spec.name.rpartition('.')[2]]}")
+        return importlib.import_module(f"{__name__}.{_MOVED[spec.name.partition('.')[2]]}")
 
     def exec_module(self, module):
         pass

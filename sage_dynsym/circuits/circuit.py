@@ -53,7 +53,7 @@ from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
 from .graph import CircuitGraph
-from .inductance import inductance_conditions
+from .elements.windings import inductance_conditions
 
 class Circuit(NumericalMethods, Model):
     r"""
