@@ -61,11 +61,10 @@ from ...errors import CircuitError
 from .kinds import (Branch, Resistor, Inductor, Capacitor, VoltageSource, CurrentSource,
                     NonlinearResistor, ELEMENTS, CURRENT, VOLTAGE)
 from .windings import Coupling
-from .entries import (parse_entries, is_coupling_entry, MAX_NODE, LONG_KEYS, MUTUAL_KEYS,
-                      BY_PREFIX)
+from .entries import parse_entries, is_coupling_entry, MAX_NODE, LONG_KEYS, MUTUAL_KEYS
 
 #: element kinds, keyed by the first letter of a short-form name
-PREFIXES = {prefix: cls.kind_name for prefix, cls in BY_PREFIX.items()}
+PREFIXES = {cls.prefix: kind for kind, cls in ELEMENTS.items()}
 #: the short-form prefix of each element kind
 KIND_PREFIX = {kind: prefix for prefix, kind in PREFIXES.items()}
 #: the element kinds of a branch

@@ -36,9 +36,6 @@ from .windings import Coupling
 #: Largest node number.
 MAX_NODE = 10**9
 
-#: The element classes by the first letter of a short-form name.
-BY_PREFIX = {cls.prefix: cls for cls in ELEMENTS.values()}
-
 #: The keys of a long-form branch entry.
 LONG_KEYS = {'from', 'to', 'kind', 'name', 'value'}
 #: The keys of a mutual inductance entry.
@@ -87,7 +84,8 @@ def _check_name(name, entry):
 
 
 def _kind_of_name(name, entry):
-    element = BY_PREFIX.get(name[0])
+    # read from ELEMENTS each time: a kind added to it is known at once
+    element = next((cls for cls in ELEMENTS.values() if cls.prefix == name[0]), None)
     if element is None:
         if name[0] == 'M':
             raise CircuitError(

@@ -9,7 +9,9 @@ an element -- its short-form prefix, its value checks, its state variable,
 its term in the loop and node Lagrangians, in the mixed potential and its
 place in modified nodal analysis -- so that they never test a kind's name.
 The laws are those of the orientation convention of
-:mod:`~sage_dynsym.circuits.elements`.
+:mod:`~sage_dynsym.circuits.elements`. A new kind is one more subclass and
+its entry in :data:`ELEMENTS` (see the section *Adding an element kind* of
+:doc:`the circuits guide </guide_circuits>`).
 
 What the classes answer, by analysis:
 
