@@ -38,7 +38,6 @@ from ..errors import DescriptionError, DynSymError, brief
 from ..io.fields import declared_names, title, MAX_PARAMETERS
 from ..symbols import check_name
 from .circuit import Circuit
-from .elements import PREFIXES
 
 KEYS = {'kind', 'name', 'branches', 'parameters', 'positive', 'results'}
 

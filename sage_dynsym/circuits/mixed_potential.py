@@ -134,7 +134,7 @@ from sage.symbolic.ring import SR
 from sage.matrix.constructor import matrix
 
 from ..errors import CircuitError
-from .elements.kinds import Capacitor, Inductor
+from .elements.kinds import Capacitor, Inductor, state_symbols
 from .elements.windings import winding_matrix
 from .graph import capacitor_order
 
@@ -240,9 +240,7 @@ class MixedPotential:
         inductors = [p for p, b in enumerate(br) if isinstance(b, Inductor)]
         capacitors = capacitor_order(cg)     # a forest here: the circuit is complete
         self._inductors, self._capacitors = inductors, capacitors
-        r = len(inductors)
-        self._symbol = {p: SR.var(f"i{k + 1}") for k, p in enumerate(inductors)}
-        self._symbol.update({p: SR.var(f"u{r + k + 1}") for k, p in enumerate(capacitors)})
+        self._symbol = state_symbols(br, inductors + capacitors)
 
     def _voltage(self, p):
         # voltage of a branch of T_C: a state variable or a source value

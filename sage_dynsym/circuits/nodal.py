@@ -128,7 +128,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import CircuitError
 from ..symbols import t
-from .elements.kinds import ELEMENTS, Capacitor, Inductor
+from .elements.kinds import ELEMENTS, Capacitor, Inductor, state_symbols
 from .elements.windings import winding_matrix
 from .graph import UnionFind, capacitor_order
 
@@ -247,10 +247,7 @@ class NodalAnalysis:
                 self._cut[p].append((k, s))
         self._inductors = [p for p in self._chords if isinstance(br[p], Inductor)]
         self._capacitors = [p for p in caps if p in self._tree]
-        r = len(self._inductors)
-        self._symbol = {p: SR.var(f"i{k + 1}") for k, p in enumerate(self._inductors)}
-        self._symbol.update({p: SR.var(f"u{r + k + 1}")
-                             for k, p in enumerate(self._capacitors)})
+        self._symbol = state_symbols(br, self._inductors + self._capacitors)
         self._solve()
 
     def _source_cut_set(self, cg, p):

@@ -24,7 +24,7 @@ state                       :attr:`~Branch.state`, :meth:`~Branch.state_symbol`,
                             :meth:`~Branch.value_at`, :meth:`~Branch.known_voltage`,
                             :meth:`~Branch.known_current`
 sources                     :meth:`~Branch.fixed_voltage`,
-                            :meth:`~Branch.fixed_current`, :meth:`~Branch.switched_off`
+                            :meth:`~Branch.fixed_current`
 loop and node Lagrangians   :meth:`~Branch.is_linear`, :meth:`~Branch.loop_term`,
                             :meth:`~Branch.node_term`
 mixed potential             :attr:`~Branch.sets_voltage`, :attr:`~Branch.sets_current`,
@@ -394,24 +394,6 @@ class Branch(namedtuple('Branch', 'index name kind tail head value')):
         """
         return None
 
-    def switched_off(self):
-        r"""
-        The branch with its source switched off: a voltage source of value
-        0 (a short circuit), a current source of value 0 (an open
-        circuit); any other element unchanged. A source given by an
-        expression (``E0*sin(w*t)``) is switched off as a whole.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits.elements import Branch
-            sage: E0, w, t = var('E0 w t')
-            sage: Branch(0, 'E1', 'voltage_source', 0, 1, E0*sin(w*t)).switched_off()
-            Branch(index=0, name='E1', kind='voltage_source', tail=0, head=1, value=0)
-            sage: Branch(1, 'R1', 'resistor', 1, 0, var('R1')).switched_off()
-            Branch(index=1, name='R1', kind='resistor', tail=1, head=0, value=R1)
-        """
-        return self
-
     # -- the Lagrangians of linear circuits -----------------------------------
 
     def is_linear(self):
@@ -677,8 +659,8 @@ class VoltageSource(Branch):
 
         sage: from sage_dynsym.circuits.elements import Branch
         sage: E = Branch(0, 'E1', 'voltage_source', 0, 1, var('E1'))
-        sage: E.fixed_voltage(), E.fixed_current(), E.loop_term(), E.switched_off().value
-        (E1, None, None, 0)
+        sage: E.fixed_voltage(), E.fixed_current(), E.loop_term(), E.known_voltage(None)
+        (E1, None, None, E1)
     """
     __slots__ = ()
     kind_name = 'voltage_source'
@@ -691,10 +673,6 @@ class VoltageSource(Branch):
 
     def fixed_voltage(self):
         return self.value
-
-    def switched_off(self):
-        return self._replace(value=SR(0))
-
 
 class CurrentSource(Branch):
     r"""
@@ -719,10 +697,6 @@ class CurrentSource(Branch):
 
     def fixed_current(self):
         return self.value
-
-    def switched_off(self):
-        return self._replace(value=SR(0))
-
     def current(self, voltage):
         return self.value
 
@@ -777,6 +751,23 @@ class NonlinearResistor(Branch):
         if self.value is None:
             return definite_integral(self.current(s), s, 0, voltage, hold=True)
         return _integral(self.current(s), s, voltage)
+
+
+def state_symbols(branches, positions):
+    r"""
+    The state variables of the branches at ``positions`` (inductors and
+    capacitors), numbered `1, 2, \ldots` in that order: a dictionary
+    ``{position: symbol}`` (see :meth:`Branch.state_symbol`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.elements import parse_entries
+        sage: from sage_dynsym.circuits.elements.kinds import state_symbols
+        sage: branches, _ = parse_entries([[1, 2, 'C1'], [2, 3, 'R1'], [3, 1, 'L1']])
+        sage: state_symbols(branches, [2, 0])
+        {0: u2, 2: i1}
+    """
+    return {p: branches[p].state_symbol(k + 1) for k, p in enumerate(positions)}
 
 
 #: The element classes by kind, in the order of the short-form prefixes'
