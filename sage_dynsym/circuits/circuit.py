@@ -277,7 +277,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
         The conditions on the parameters for the circuit to be physical that
         its declared signs leave open: the principal minors of the
         inductance matrix of each group of coupled windings `\ge 0` (see
-        :mod:`~sage_dynsym.circuits.inductance`); ``[]`` when there is none.
+        :mod:`~sage_dynsym.circuits.elements.windings`); ``[]`` when there is none.
         Values given to :meth:`simulate` and :meth:`numerical_rhs` must
         satisfy them.
 
