@@ -97,7 +97,6 @@ the computation) is identical::
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
 import sage.all  # noqa: F401
-import os
 
 import numpy as np
 
@@ -107,7 +106,9 @@ from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..analysis.conditions import as_relational
 from ..errors import AnalysisError, DynSymError
+from ..io.files import write_atomically
 from ..dynamics.model import Model
 from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
@@ -1059,14 +1060,7 @@ class StabilityMap(SageObject):
                       max_real_part=self._alpha, stable=self._stable, classes=self.classes(),
                       fixed_names=np.array([str(k) for k in self._fixed], dtype=str),
                       fixed_values=np.array([float(v) for v in self._fixed.values()]))
-        path = str(path)
-        tmp = f"{path}.{os.getpid()}.tmp.npz"
-        try:
-            np.savez_compressed(tmp, **arrays)
-            os.replace(tmp, path)
-        finally:
-            if os.path.exists(tmp):
-                os.remove(tmp)
+        write_atomically(path, lambda stream: np.savez_compressed(stream, **arrays), binary=True)
 
 
 #: Darker colours of the classes, for points and lines.
@@ -1133,21 +1127,6 @@ def _class_regions(regions):
         return found
     raise AnalysisError(f"expected a dict {{2: region, 1: region}} or a stability verdict, got "
                         f"{regions!r}", entry="StabilityMap")
-
-
-def as_relational(condition):
-    r"""A condition as a relational: an expression ``e`` means ``e > 0``
-    (the convention of the stability criteria); relationals pass unchanged.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.scale.maps import as_relational
-        sage: a = var('a')
-        sage: as_relational(a - 1), as_relational(a != 0)
-        (a - 1 > 0, a != 0)
-    """
-    e = SR(condition)
-    return e if e.is_relational() else e > 0
 
 
 def _legend(axes, entries):
