@@ -208,6 +208,23 @@ class Circuit(NumericalMethods, Model):
             functions['node_lagrangian'] = lambda: self.lagrangian(method="node")
         return functions
 
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The circuit of a description mapping (``kind: circuit``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit.from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
+            Circuit with 2 branches on 2 nodes
+        """
+        # the format module builds on this class: imported when first used
+        from .description import circuit_from_dict
+        return circuit_from_dict(data, source)
+
     def to_dict(self):
         r"""
         The description mapping of the circuit (short form wherever the

@@ -672,6 +672,24 @@ class LiePoissonSystem(Model, NumericalMethods):
             return Derivation('Lie-Poisson', ('H', self.hamiltonian()), rows, None)
         return {'Lie-Poisson': derivation}
 
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The Lie--Poisson system of a description mapping (``kind: lie_poisson``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem.from_dict({'kind': 'lie_poisson', 'algebra': 'so3',
+            ....:                             'hamiltonian': 'M3^2/2'}).equations()
+            [M2*M3, -M1*M3, 0]
+        """
+        # the format module builds on this class: imported when first used
+        from .description import lie_poisson_from_dict
+        return lie_poisson_from_dict(data, source)
+
     def to_dict(self):
         r"""
         The description mapping of the system (``kind: lie_poisson``;

@@ -363,6 +363,25 @@ class MechanicalSystem(Model):
         from ..dynamics.derivations import lagrangian_forms
         return lagrangian_forms(self.lagrangian)
 
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The mechanical system of a description mapping (``kind: mechanical``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: S = MechanicalSystem.from_dict({'kind': 'mechanical', 'coordinates': ['x'],
+            ....:     'parameters': ['m'], 'bodies': [{'name': 'cart', 'joint': ['x', 0, 0], 'mass': 'm'}]})
+            sage: S.lagrangian().expr()
+            1/2*dx^2*m
+        """
+        # the format module builds on this class: imported when first used
+        from .description import mechanical_system_from_dict
+        return mechanical_system_from_dict(data, source)
+
     def to_dict(self):
         r"""
         The description mapping of the system (the inverse of
