@@ -109,6 +109,8 @@ from sage.symbolic.ring import SR
 from ..analysis.conditions import as_relational
 from ..errors import AnalysisError, DynSymError
 from ..io.files import write_atomically
+from ..dynamics.hamiltonian import Hamiltonian
+from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.model import Model
 from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
@@ -341,8 +343,8 @@ def _linear_system(system, at, variables, lhs_matrix):
     if isinstance(system, Model):
         return model_linear_system(system, at)
     # right-hand sides, or a characteristic function (Lagrangian, Routh
-    # function, Hamiltonian: they have coordinates): linearize checks the rest
-    if at is None or not (isinstance(system, (list, tuple)) or hasattr(system, 'coordinates')):
+    # function, Hamiltonian): linearize checks the rest
+    if at is None or not isinstance(system, (list, tuple, Lagrangian, Hamiltonian)):
         raise AnalysisError("expected a linear system (from linearize), or what linearize "
                             "accepts with at=, or a circuit or mechanical model, got "
                             f"{_short(system)}", entry="stability_map")
