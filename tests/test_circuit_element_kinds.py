@@ -19,7 +19,7 @@ ELEMENTS = PACKAGE / "circuits" / "elements"
 
 #: Modules of other layers still being switched to the element objects
 #: (their owners remove them from here when they do).
-PENDING = {"scale/maps.py", "interact/builder.py"}
+PENDING = {"interact/builder.py"}
 
 
 def kind_names():
