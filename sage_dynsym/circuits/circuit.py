@@ -68,7 +68,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
       ``C`` capacitor, ``E`` voltage source, ``I`` current source, ``f``
       nonlinear resistor `i = f(u)`), or long-form dicts
       ``{from, to, kind, name, value}`` and ``{kind: mutual, between:
-      [L1, L2], value: M}`` (see :func:`~sage_dynsym.circuits.elements.parse_entries`)
+      [L1, L2], value: M}`` (see :func:`~sage_dynsym.circuits.elements.entries.parse_entries`)
     - ``name`` -- (optional) a title
     - ``parameters`` -- (optional) extra symbols allowed in long-form values
     - ``positive`` -- (optional) parameters and element values known to be
@@ -134,7 +134,6 @@ class Circuit(StateEquations, NumericalMethods, Model):
     # the model interface
 
     kind = 'circuit'
-
 
     def characteristic_functions(self):
         r"""
@@ -264,7 +263,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
 
     def branches(self):
         r"""
-        The branches, a tuple of :class:`~sage_dynsym.circuits.elements.Branch`.
+        The branches, a tuple of :class:`~sage_dynsym.circuits.elements.kinds.Branch`.
 
         EXAMPLES::
 
@@ -278,7 +277,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
     def couplings(self):
         r"""
         The mutual inductances, a tuple of
-        :class:`~sage_dynsym.circuits.elements.Coupling`.
+        :class:`~sage_dynsym.circuits.elements.windings.Coupling`.
 
         EXAMPLES: a transformer::
 

@@ -134,7 +134,7 @@ class CircuitGraph:
 
     INPUT:
 
-    - ``branches`` -- tuple of :class:`~sage_dynsym.circuits.elements.Branch`
+    - ``branches`` -- tuple of :class:`~sage_dynsym.circuits.elements.kinds.Branch`
     - ``links`` -- (optional) pairs of branch positions coupled by a mutual
       inductance: parts of the graph joined only by such a coupling (a
       transformer with galvanically isolated sides) form one circuit

@@ -33,7 +33,7 @@ class Netlist:
     INPUT:
 
     - ``entries`` -- the branch list (see
-      :func:`~sage_dynsym.circuits.elements.parse_entries`)
+      :func:`~sage_dynsym.circuits.elements.entries.parse_entries`)
     - ``parameters`` -- extra symbols allowed in long-form values
     - ``positive`` -- parameters and element values known to be positive
 
