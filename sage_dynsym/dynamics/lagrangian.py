@@ -779,7 +779,7 @@ class Lagrangian(NumericalMethods, SageObject):
             sage: L.lagrange_equations('nonsense')
             Traceback (most recent call last):
             ...
-            ValueError: form must be 'structured' or 'direct', got 'nonsense'
+            ModelError: form: expected 'structured' or 'direct', got 'nonsense'
         """
         if form is None:
             form = "structured" if self.is_natural() else "direct"
@@ -788,7 +788,7 @@ class Lagrangian(NumericalMethods, SageObject):
         elif form == "direct":
             equations = self._direct_equations()
         else:
-            raise ValueError(f"form must be 'structured' or 'direct', got {form!r}")
+            raise ModelError(f"expected 'structured' or 'direct', got {form!r}", entry='form')
         return [e + extra - force for e, extra, force in
                 zip(equations, self._nonpotential_terms(), self._constraint_forces())]
 
