@@ -516,11 +516,15 @@ class MechanicalSystem(Model):
 
     # numerics: the system's Lagrange equations run through its Lagrangian
 
-    def numerical_rhs(self, values, **options):
+    def numerical_rhs(self, values, algorithm='auto', backend='auto'):
         r"""
-        The compiled right-hand side of the Lagrange equations of
-        :meth:`lagrangian` (see
-        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.numerical_rhs`).
+        The compiled right-hand side `\dot x = f(t, x)`, `x = (q, \dot q)`,
+        with the parameter values ``values``: by the recursive algorithms
+        of rigid-body dynamics (``algorithm='recursive'``), from the
+        Lagrange equations of :meth:`lagrangian` (``'equations'``), or the
+        first when it applies (``'auto'``); see
+        :mod:`~sage_dynsym.mechanics.recursive_numerics` and
+        :func:`~sage_dynsym.numerics.rhs.numerical_rhs`.
 
         EXAMPLES::
 
@@ -530,13 +534,19 @@ class MechanicalSystem(Model):
             ....:                      force_function=-k*x^2/2)
             sage: S.numerical_rhs({m: 2, k: 8})(0, [1.0, 0.5])
             array([ 0.5, -4. ])
+            sage: S.numerical_rhs({m: 2, k: 8}, algorithm='equations')(0, [1.0, 0.5])
+            array([ 0.5, -4. ])
         """
-        return self.lagrangian().numerical_rhs(values, **options)
+        from ..numerics.rhs import RightHandSide
+        from .recursive_numerics import numerical_form
+        return RightHandSide(numerical_form(self, algorithm), values, backend)
 
-    def simulate(self, values, initial, t_end, **options):
+    def simulate(self, values, initial, t_end, algorithm='auto', **options):
         r"""
-        A simulation of the Lagrange equations of :meth:`lagrangian` (see
-        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`).
+        A simulation of the system (see
+        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`),
+        its right-hand side computed by ``algorithm`` (see
+        :meth:`numerical_rhs`).
 
         EXAMPLES: a mass on a spring, `x(t) = \cos 2t`::
 
@@ -548,7 +558,9 @@ class MechanicalSystem(Model):
             sage: [round(v, 8) for v in T.values(x)], T.energy_drift() < 1e-9
             ([1.0, -1.0, 1.0], True)
         """
-        return self.lagrangian().simulate(values, initial, t_end, **options)
+        from ..numerics.simulate import simulate
+        from .recursive_numerics import numerical_form
+        return simulate(numerical_form(self, algorithm), values, initial, t_end, **options)
 
     def code(self, language='python', cse=True):
         r"""

@@ -34,11 +34,74 @@ EXAMPLES::
     sage: N.matrix(), N.vector()
     ([m], [-k*x])
 """
+import functools
+import types
+
 from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
 from ..symbols import t as _t
+
+
+def deferred(value):
+    r"""
+    Whether ``value`` is a function (or method) computing a value later,
+    rather than a value (symbolic expressions are callable too).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.form import deferred
+        sage: x = var('x'); deferred(lambda: x), deferred(x^2), deferred(None)
+        (True, False, False)
+    """
+    return isinstance(value, (types.FunctionType, types.MethodType, functools.partial))
+
+
+def constraint_terms(constraints, coordinates, velocities):
+    r"""
+    The Jacobian `J = \partial f/\partial q` of holonomic constraints
+    `f(q, t) = 0`, the right-hand side `\gamma` of `J\ddot q = \gamma`
+    (see the module documentation) and `\partial f/\partial t`, as
+    ``(J, gamma, f_t)`` (``J`` a list of rows).
+
+    EXAMPLES: a point on a circle turning at the rate `w`::
+
+        sage: from sage_dynsym.numerics.form import constraint_terms
+        sage: x, y, dx, dy, w, t = var('x y dx dy w t')
+        sage: constraint_terms([x*sin(w*t) - y*cos(w*t)], [x, y], [dx, dy])
+        ([[sin(t*w), -cos(t*w)]],
+         [-w^2*y*cos(t*w) + w^2*x*sin(t*w) - 2*dx*w*cos(t*w) - 2*dy*w*sin(t*w)],
+         [w*x*cos(t*w) + w*y*sin(t*w)])
+    """
+    J = [[SR(fj).diff(qi) for qi in coordinates] for fj in constraints]
+    gamma = []
+    for row, fj in zip(J, constraints):
+        Jdq = sum(a * b for a, b in zip(row, velocities))
+        gamma.append(-(sum(SR(Jdq).diff(qk) * dk for qk, dk in zip(coordinates, velocities))
+                       + 2 * SR(Jdq).diff(_t) + SR(fj).diff(_t, 2)))
+    return J, gamma, [SR(fj).diff(_t) for fj in constraints]
+
+
+def as_form(equations):
+    r"""
+    ``equations`` if it is a numerical form already (a
+    :class:`NumericalForm`, or any object with its ``state``/``kernel``
+    methods, such as a :class:`~sage_dynsym.numerics.recursive.RecursiveForm`),
+    else the :class:`NumericalForm` of the record ``equations``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: from sage_dynsym.numerics.form import as_form
+        sage: x = var('x'); N = as_form(FirstOrderEquations([-x], [x])); N
+        Numerical form x' = F in (x), parameters ()
+        sage: as_form(N) is N
+        True
+    """
+    if hasattr(equations, 'kernel') and hasattr(equations, 'state'):
+        return equations
+    return NumericalForm(equations)
 
 
 class NumericalForm:
@@ -51,7 +114,9 @@ class NumericalForm:
 
     - ``record`` -- a :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`
       or :class:`~sage_dynsym.analysis.motion.FirstOrderEquations`
-    - ``energy`` -- (optional) a conserved energy in the state variables
+    - ``energy`` -- (optional) a conserved energy in the state variables,
+      or a function without arguments computing it (called when the energy
+      is first asked for: only an energy drift needs it)
 
     EXAMPLES::
 
@@ -78,7 +143,7 @@ class NumericalForm:
     """
 
     def __init__(self, record, energy=None):
-        self._energy = None if energy is None else SR(energy)
+        self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._constraints, self._J, self._gamma, self._f_t = [], [], [], []
         if hasattr(record, 'accelerations'):
             self._second_order(record)
@@ -107,14 +172,8 @@ class NumericalForm:
         self._n = len(q)
         self._constraints = f
         if f:
-            J = [[fj.diff(qi) for qi in q] for fj in f]
-            gamma = []
-            for row, fj in zip(J, f):
-                Jdq = sum(a * b for a, b in zip(row, dq))
-                gamma.append(-(sum(Jdq.diff(qk) * dk for qk, dk in zip(q, dq))
-                               + 2 * Jdq.diff(_t) + fj.diff(_t, 2)))
+            J, gamma, self._f_t = constraint_terms(f, q, dq)
             self._J, self._gamma = J, gamma
-            self._f_t = [fj.diff(_t) for fj in f]
             m, n = len(f), len(q)
             A = matrix(SR, n + m, n + m)
             A[:n, :n] = M
@@ -177,6 +236,20 @@ class NumericalForm:
         """
         return list(self._b)
 
+    def solve_size(self):
+        r"""The size of the linear system `A y = b` solved at each call
+        (``None`` when `A` is the identity).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: NumericalForm(SecondOrderEquations([ddx + x], [x], [dx], [ddx])).solve_size()
+            1
+        """
+        return None if self._A is None else len(self._b)
+
     def constraints(self):
         r"""
         The holonomic constraints `f_j(q, t)`, their Jacobian `J` (rows) and
@@ -204,13 +277,17 @@ class NumericalForm:
             sage: E = SecondOrderEquations([ddx + x], [x], [dx], [ddx])
             sage: NumericalForm(E, energy=(dx^2 + x^2)/2).energy()
             1/2*dx^2 + 1/2*x^2
+            sage: NumericalForm(E, energy=lambda: x^2).energy()
+            x^2
         """
+        if deferred(self._energy):
+            value = self._energy()
+            self._energy = None if value is None else SR(value)
         return self._energy
 
     def _expressions(self):
         exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
-        exprs += self._constraints + [a for row in self._J for a in row] + self._f_t
-        return exprs + ([] if self._energy is None else [self._energy])
+        return exprs + self._constraints + [a for row in self._J for a in row] + self._f_t
 
     def functions(self):
         r"""
@@ -323,7 +400,10 @@ class NumericalForm:
         new._constraints = [sub(e) for e in self._constraints]
         new._J = [[sub(e) for e in row] for row in self._J]
         new._gamma, new._f_t = [sub(e) for e in self._gamma], [sub(e) for e in self._f_t]
-        new._energy = None if self._energy is None else sub(self._energy)
+        energy = self._energy
+        new._energy = None if energy is None else (
+            lambda: None if self.energy() is None else sub(self.energy())) if deferred(
+                energy) else sub(energy)
         new._parameters = new._find_parameters()
         return new
 

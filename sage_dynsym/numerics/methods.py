@@ -55,7 +55,8 @@ class NumericalMethods:
         cached = _FORMS.get(key)
         if cached is not None and cached[0]() is self:
             return cached[1]
-        form = NumericalForm(self.to_linearizer(), energy=self._conserved_energy())
+        # the energy is computed only if a trajectory's drift asks for it
+        form = NumericalForm(self.to_linearizer(), energy=self._conserved_energy)
         try:
             ref = weakref.ref(self, lambda _, key=key: _FORMS.pop(key, None))
         except TypeError:       # objects without weak references: no cache

@@ -29,7 +29,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from .form import NumericalForm
+from .form import as_form
 
 
 def parameter_values(form, values):
@@ -183,8 +183,9 @@ def numerical_rhs(equations, values, backend='auto'):
 
     INPUT:
 
-    - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion` or a
-      :class:`~sage_dynsym.numerics.form.NumericalForm`
+    - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion`, a
+      :class:`~sage_dynsym.numerics.form.NumericalForm` or a
+      :class:`~sage_dynsym.numerics.recursive.RecursiveForm`
     - ``values`` -- dict of the parameter values (symbols or names as
       keys) and of the definitions of unspecified functions (see
       :meth:`~sage_dynsym.numerics.form.NumericalForm.with_functions`)
@@ -221,5 +222,4 @@ def numerical_rhs(equations, values, backend='auto'):
         ...
         ModelError: values: missing values of the parameters g
     """
-    form = equations if isinstance(equations, NumericalForm) else NumericalForm(equations)
-    return RightHandSide(form, values, backend)
+    return RightHandSide(as_form(equations), values, backend)

@@ -43,7 +43,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError, AnalysisError
 from ..symbols import t as _t
-from .form import NumericalForm
+from .form import as_form
 from .rhs import RightHandSide, real_number
 from .trajectory import Trajectory
 
@@ -158,7 +158,8 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     INPUT:
 
     - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion`, a
-      :class:`~sage_dynsym.numerics.form.NumericalForm` or a
+      :class:`~sage_dynsym.numerics.form.NumericalForm`, a
+      :class:`~sage_dynsym.numerics.recursive.RecursiveForm` or a
       :class:`~sage_dynsym.numerics.rhs.RightHandSide`
     - ``values`` -- dict of the parameter values
     - ``initial`` -- dict over the state variables (coordinates and
@@ -170,8 +171,9 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     - ``rtol``, ``atol`` -- tolerances of the integrator
     - ``backend`` -- of the right-hand side: ``'auto'``, ``'c'``, ``'python'``
     - ``energy`` -- (optional) a conserved energy for
-      :meth:`~sage_dynsym.numerics.trajectory.Trajectory.energy_drift`
-      (default: the one of a ``NumericalForm``)
+      :meth:`~sage_dynsym.numerics.trajectory.Trajectory.energy_drift`, or
+      a function without arguments computing it (default: the one of the
+      form, computed only when the trajectory needs it)
     - other keywords are passed to ``solve_ivp`` (e.g. ``max_step``)
 
     OUTPUT: a :class:`~sage_dynsym.numerics.trajectory.Trajectory`
@@ -207,9 +209,10 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     if isinstance(equations, RightHandSide):
         rhs, form = equations, equations.form()
     else:
-        form = equations if isinstance(equations, NumericalForm) else NumericalForm(equations)
+        form = as_form(equations)
         rhs = RightHandSide(form, values, backend)
-    energy = form.energy() if energy is None else energy
+    # the energy is computed only if the trajectory is asked for it
+    energy = form.energy if energy is None else energy
     if method not in _METHODS and method not in _SCIPY:
         raise ModelError(f"{method!r} is not one of {', '.join(list(_METHODS) + list(_SCIPY))}",
                          entry="method")

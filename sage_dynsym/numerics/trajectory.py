@@ -29,6 +29,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 from ..symbols import t as _t
+from .form import deferred
 
 
 class Trajectory(SageObject):
@@ -42,7 +43,8 @@ class Trajectory(SageObject):
     - ``variables`` -- the state variables (symbols)
     - ``parameters`` -- dict of the parameter values used (symbol -> float)
     - ``energy`` -- (optional) a conserved energy in the variables and
-      parameters, for :meth:`energy_drift`
+      parameters, for :meth:`energy_drift`, or a function without
+      arguments computing it (called when the energy is first needed)
     - ``method`` -- (optional) the integrator's name
 
     EXAMPLES: see the module documentation.
@@ -53,7 +55,7 @@ class Trajectory(SageObject):
         self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
         self._variables = [SR(v) for v in variables]
         self._parameters = {SR(k): float(v) for k, v in parameters.items()}
-        self._energy = None if energy is None else SR(energy)
+        self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._method = method
 
     def __eq__(self, other):
@@ -76,7 +78,7 @@ class Trajectory(SageObject):
                 [str(v) for v in self._variables] == [str(v) for v in other._variables] and
                 {str(k): v for k, v in self._parameters.items()} ==
                 {str(k): v for k, v in other._parameters.items()} and
-                str(self._energy) == str(other._energy))
+                str(self.energy()) == str(other.energy()))
 
     def __ne__(self, other):
         return not self == other
@@ -220,8 +222,18 @@ class Trajectory(SageObject):
             sage: x = var('x')
             sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=x^2).energy()
             x^2
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=lambda: x^3).energy()
+            x^3
         """
+        if deferred(self._energy):
+            energy = self._energy()
+            self._energy = None if energy is None else SR(energy)
         return self._energy
+
+    def __getstate__(self):
+        # a pickled trajectory keeps its energy, not the function computing it
+        self.energy()
+        return self.__dict__
 
     def energy_drift(self):
         r"""
@@ -245,7 +257,7 @@ class Trajectory(SageObject):
             ...
             ModelError: energy_drift: the model has no energy integral (explicit time, dissipation or non-potential forces)
         """
-        if self._energy is None:
+        if self.energy() is None:
             raise ModelError("the model has no energy integral (explicit time, dissipation or "
                              "non-potential forces)", entry="energy_drift")
         E = self._array(self._energy)
