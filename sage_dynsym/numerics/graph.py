@@ -434,7 +434,7 @@ class ExpressionGraph:
         lines.append(f"    return [{', '.join(self._operand(a, names, 'python') for a in outputs)}]")
         return run_python('\n'.join(lines), '_graph')
 
-    def c_functions(self, outputs, prefix='dynsym_part', chunk=1500):
+    def c_functions(self, outputs, prefix='dynsym_part', chunk=300):
         r"""
         C functions computing ``outputs``: ``(source, count, slots)`` where
         ``source`` defines ``count`` functions

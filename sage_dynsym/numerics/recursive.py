@@ -256,9 +256,13 @@ class _Assembly:
         Theta = [[self.convert(body.inertia()[i, j]) for j in range(3)] for i in range(3)]
         return m, h, Theta
 
-    def newton_euler(self):
-        G, n = self.G, self.n
-        forces = {0: (self._zero3, self._zero3)}
+    def body_forces(self):
+        r"""
+        Per body, the force `(f, n)` (about its joint point, in its axes)
+        that its motion at `\ddot q = 0` requires, loads subtracted.
+        """
+        G = self.G
+        forces = {}
         for k, body in enumerate(self.tree.bodies(), 1):
             m, h, Theta = self.inertia(body)
             w, v, alpha, a = self.state[k]
@@ -278,6 +282,13 @@ class _Assembly:
                 T = self.to_body(k, load.axes, self.vector(load.torque))
                 nk = tuple(G.sub(x, y) for x, y in zip(nk, T))
             forces[k] = (f, nk)
+        return forces
+
+    def newton_euler(self):
+        r"""The generalized forces of :meth:`body_forces` (summed from the leaves)."""
+        G, n = self.G, self.n
+        forces = self.body_forces()
+        forces[0] = (self._zero3, self._zero3)
         tau = [[] for _ in range(n)]
         for k in range(len(self.tree.bodies()), 0, -1):
             f, nk = forces[k]
@@ -425,17 +436,220 @@ class _Assembly:
 
     # the forcing and the solution --------------------------------------
 
-    def forcing(self):
-        r"""`F` of `M\ddot q = F` (nodes), without the constraint forces."""
+    def applied_forces(self):
+        r"""
+        The generalized forces besides those of :meth:`body_forces`: the
+        given ones, minus `\partial R/\partial\dot q`, plus the gradient of
+        the force function given as an expression, minus
+        :meth:`velocity_corrections`.
+        """
         G, tree = self.G, self.tree
-        tau = self.newton_euler()
         extra = self.velocity_corrections()
         R, U = tree.dissipation(), tree.potential()
-        out = []
-        for i, (qi, dqi, Q) in enumerate(zip(self.q, self.dq, tree.forces())):
-            rest = Q - R.diff(dqi) + U.diff(qi)
-            out.append(G.sub(self.convert(rest), G.add(tau[i], extra[i])))
-        return out
+        return [G.sub(self.convert(Q - R.diff(dqi) + U.diff(qi)), e)
+                for qi, dqi, Q, e in zip(self.q, self.dq, tree.forces(), extra)]
+
+    def forcing(self):
+        r"""`F` of `M\ddot q = F` (nodes), without the constraint forces."""
+        G = self.G
+        return [G.sub(a, b) for a, b in zip(self.applied_forces(), self.newton_euler())]
+
+    # the articulated-body algorithm ------------------------------------
+
+    def joint_groups(self):
+        r"""
+        The joints of the articulated-body algorithm: runs of consecutive
+        steps of one body that share coordinates, as a dict ``id(last step)
+        -> (steps, coordinates)``; ``None`` when a coordinate moves two
+        bodies (then only the mass matrix can be formed).
+        """
+        owner, groups = {}, {}
+        for k, steps in self.body_steps.items():
+            runs = []
+            for position, step in enumerate(steps):
+                for i in step.columns:
+                    if owner.setdefault(i, k) != k:
+                        return None
+                    runs.append([position, position, {i}])
+            # merge the runs of each coordinate, then the overlapping ones
+            merged = []
+            for run in sorted(runs):
+                for other in merged:
+                    if other[2] & run[2] or other[0] <= run[0] <= other[1]:
+                        other[0], other[1] = min(other[0], run[0]), max(other[1], run[1])
+                        other[2] |= run[2]
+                        break
+                else:
+                    merged.append(run)
+            changed = True
+            while changed:
+                changed = False
+                for a in merged:
+                    for b in merged:
+                        if a is not b and (a[2] & b[2] or not (a[1] < b[0] or b[1] < a[0])):
+                            a[0], a[1], a[2] = min(a[0], b[0]), max(a[1], b[1]), a[2] | b[2]
+                            merged.remove(b)
+                            changed = True
+                            break
+                    if changed:
+                        break
+            for first, last, coordinates in merged:
+                groups[id(steps[last])] = (steps[first:last + 1], sorted(coordinates))
+        return groups
+
+    def _motion_down(self, step, w, v):
+        # a motion vector (w, v) of the previous frame, in this step's frame
+        G = self.G
+        if step.rotation:
+            return (_rotate(G, step.axis, step.c, step.s, w, inverse=True),
+                    _rotate(G, step.axis, step.c, step.s, v, inverse=True))
+        return w, _add(G, v, _cross(G, w, step.r))
+
+    def _inertia_up(self, step, I):
+        # a 6x6 inertia (blocks A, B, C: n = A w + B v, f = B^T w + C v) of
+        # this step's frame, in the previous frame
+        G = self.G
+        A, B, C = I
+        if step.rotation:
+            def turn(X, symmetric):
+                columns = [_rotate(G, step.axis, step.c, step.s, [X[r][c] for r in range(3)])
+                           for c in range(3)]
+                RX = [[columns[c][r] for c in range(3)] for r in range(3)]
+                rows = [_rotate(G, step.axis, step.c, step.s, RX[r]) for r in range(3)]
+                if symmetric:
+                    return [[rows[min(r, c)][max(r, c)] for c in range(3)] for r in range(3)]
+                return rows
+            return turn(A, True), turn(B, False), turn(C, True)
+        r = step.r
+        rx = [[G.zero, G.neg(r[2]), r[1]], [r[2], G.zero, G.neg(r[0])],
+              [G.neg(r[1]), r[0], G.zero]]
+
+        def product(X, Y):
+            return [[G.dot(X[i], [Y[k][j] for k in range(3)]) for j in range(3)]
+                    for i in range(3)]
+        rC = product(rx, C)
+        Bnew = [[G.add(B[i][j], rC[i][j]) for j in range(3)] for i in range(3)]
+        # A - B [r] + [r] B^T - [r] C [r], symmetric
+        Br, rBt, rCr = product(B, rx), product(rx, [list(c) for c in zip(*B)]), product(rC, rx)
+        Anew = [[None] * 3 for _ in range(3)]
+        for i in range(3):
+            for j in range(i, 3):
+                Anew[i][j] = Anew[j][i] = G.sub(G.add(G.sub(A[i][j], Br[i][j]), rBt[i][j]),
+                                                rCr[i][j])
+        return Anew, Bnew, C
+
+    def articulated(self, applied):
+        r"""
+        `\ddot q` by the articulated-body algorithm ([Fea2008]_, Table 7.1)
+        with the bias forces of :meth:`body_forces` and the generalized
+        forces ``applied``; ``None`` when :meth:`joint_groups` is.
+        """
+        G = self.G
+        groups = self.joint_groups()
+        if groups is None:
+            return None
+        zero3, pivots = self._zero3, []
+        bias = self.body_forces()
+        previous, last = {}, {}
+        for k, steps in self.body_steps.items():
+            if not k:
+                continue
+            parent_steps = self.body_steps[self.parent[k]]
+            previous[id(steps[0])] = parent_steps[-1] if parent_steps else None
+            for a, b in zip(steps, steps[1:]):
+                previous[id(b)] = a
+            last[id(steps[-1])] = k
+        zero_inertia = ([[G.zero] * 3 for _ in range(3)],) * 3
+        inertia, force, joint = {}, {}, {}
+        for step in reversed(self.steps):
+            key = id(step)
+            I = inertia.pop(key, zero_inertia)
+            f, nk = force.pop(key, (zero3, zero3))
+            if key in last:
+                m, h, Theta = self.inertia(self.tree.bodies()[last[key] - 1])
+                hx = [[G.zero, G.neg(h[2]), h[1]], [h[2], G.zero, G.neg(h[0])],
+                      [G.neg(h[1]), h[0], G.zero]]
+                mE = [[m if i == j else G.zero for j in range(3)] for i in range(3)]
+                I = tuple([[G.add(X[i][j], Y[i][j]) for j in range(3)] for i in range(3)]
+                          for X, Y in zip(I, (Theta, hx, mE)))
+                f, nk = _add(G, f, bias[last[key]][0]), _add(G, nk, bias[last[key]][1])
+            if key in groups:
+                steps, coordinates = groups[key]
+                S = self._joint_columns(steps, coordinates)
+                A, B, C = I
+                Bt = [list(c) for c in zip(*B)]
+                U = [(_add(G, _matvec(G, Bt, w), _matvec(G, C, v)),
+                      _add(G, _matvec(G, A, w), _matvec(G, B, v))) for w, v in S]
+                D = [[G.add(G.dot(S[r][0], U[c][1]), G.dot(S[r][1], U[c][0]))
+                      for c in range(len(S))] for r in range(len(S))]
+                u = [G.sub(applied[i], G.add(G.dot(w, nk), G.dot(v, f)))
+                     for i, (w, v) in zip(coordinates, S)]
+                Dinv = _inverse(G, D, pivots)
+                # U D^-1 (as 6-vectors f, n) and the updated inertia and force
+                UD = [(tuple(G.sum([G.mul(U[a][0][x], Dinv[a][b]) for a in range(len(S))])
+                             for x in range(3)),
+                       tuple(G.sum([G.mul(U[a][1][x], Dinv[a][b]) for a in range(len(S))])
+                             for x in range(3))) for b in range(len(S))]
+
+                def update(X, left, right, symmetric):
+                    out = [[None] * 3 for _ in range(3)]
+                    for i in range(3):
+                        for j in range(i if symmetric else 0, 3):
+                            out[i][j] = G.sub(X[i][j], G.sum(
+                                [G.mul(UD[b][left][i], U[b][right][j]) for b in range(len(S))]))
+                            if symmetric:
+                                out[j][i] = out[i][j]
+                    return out
+                I = (update(A, 1, 1, True), update(B, 1, 0, False), update(C, 0, 0, True))
+                f = _add(G, f, *[_scale(G, u[b], UD[b][0]) for b in range(len(S))])
+                nk = _add(G, nk, *[_scale(G, u[b], UD[b][1]) for b in range(len(S))])
+                joint[key] = (S, U, Dinv, u, coordinates)
+            before = previous[key]
+            if before is not None:
+                I = self._inertia_up(step, I)
+                f, nk = step.up(G, f, nk)
+                if id(before) in inertia:
+                    other = inertia[id(before)]
+                    I = tuple([[G.add(X[i][j], Y[i][j]) for j in range(3)] for i in range(3)]
+                              for X, Y in zip(I, other))
+                    of, on = force[id(before)]
+                    f, nk = _add(G, f, of), _add(G, nk, on)
+                inertia[id(before)], force[id(before)] = I, (f, nk)
+        ddq = [G.zero] * self.n
+        motion = {}
+        for step in self.steps:
+            before = previous[id(step)]
+            w, v = motion[id(before)] if before is not None else (zero3, zero3)
+            w, v = self._motion_down(step, w, v)
+            if id(step) in joint:
+                S, U, Dinv, u, coordinates = joint[id(step)]
+                rest = [G.sub(u[a], G.add(G.dot(U[a][0], v), G.dot(U[a][1], w)))
+                        for a in range(len(S))]
+                values = [G.dot(row, rest) for row in Dinv]
+                for i, value in zip(coordinates, values):
+                    ddq[i] = value
+                w = _add(G, w, *[_scale(G, x, Sw) for x, (Sw, _) in zip(values, S)])
+                v = _add(G, v, *[_scale(G, x, Sv) for x, (_, Sv) in zip(values, S)])
+            motion[id(step)] = (w, v)
+        return ddq, pivots
+
+    def _joint_columns(self, steps, coordinates):
+        # the motion subspace of a joint in the frame of its last step: one
+        # motion vector (w, v) per coordinate
+        G, columns = self.G, []
+        for i in coordinates:
+            w, v = self._zero3, self._zero3
+            for step in steps:
+                w, v = (w, v) if step is steps[0] else self._motion_down(step, w, v)
+                if i in step.columns:
+                    if step.rotation:
+                        e = [G.zero] * 3
+                        e[step.axis - 1] = step.columns[i]
+                        w = _add(G, w, e)
+                    else:
+                        v = _add(G, v, step.columns[i])
+            columns.append((w, v))
+        return columns
 
     def order(self):
         """The coordinates in the order of the tree (first appearance in a
@@ -446,14 +660,24 @@ class _Assembly:
                 seen.setdefault(i, None)
         return list(seen) + [i for i in range(self.n) if i not in seen]
 
-    def accelerations(self):
+    def accelerations(self, solver='auto'):
         r"""
         The nodes of `\ddot q` (in the order of the coordinates) and of the
-        pivots of the factorizations (zero when the system is singular).
+        pivots of the factorizations (zero when the system is singular),
+        and the solver used: ``'articulated'`` (the articulated-body
+        algorithm: models without constraints whose coordinates each move
+        one body) or ``'ltdl'`` (the mass matrix, factorized).
         """
         from .form import constraint_terms
         G = self.G
         self.build_steps()
+        if solver != 'ltdl' and not self.tree.constraints():
+            result = self.articulated(self.applied_forces())
+            if result is not None:
+                return result + ('articulated',)
+        if solver == 'articulated':
+            raise _Unsupported("the articulated-body algorithm needs a model without "
+                               "constraints whose coordinates each move one body")
         M = self.mass_matrix()
         F = self.forcing()
         order = self.order()
@@ -509,7 +733,19 @@ class _Assembly:
             rhs = [G.sub(gamma[a], G.dot(J[a], ddq)) for a in range(m)]
             mu = _dense_solve(G, S, rhs, pivots)
             ddq = [G.add(ddq[i], G.dot([Y[b][i] for b in range(m)], mu)) for i in range(n)]
-        return ddq, pivots
+        return ddq, pivots, 'ltdl'
+
+
+def _inverse(G, A, pivots):
+    # the inverse of a small symmetric positive definite matrix (Gauss-Jordan
+    # without pivoting); appends the pivots
+    m = len(A)
+    if m == 1:
+        pivots.append(A[0][0])
+        return [[G.div(G.one, A[0][0])]]
+    columns = [[G.one if i == j else G.zero for i in range(m)] for j in range(m)]
+    return [list(x) for x in zip(*[_dense_solve(G, A, b, pivots if j == 0 else [])
+                                   for j, b in enumerate(columns)])]
 
 
 def _dense_solve(G, A, b, pivots):
@@ -600,6 +836,12 @@ class RecursiveForm:
     - ``tree`` -- a :class:`~sage_dynsym.numerics.body_tree.BodyTree`
     - ``energy`` -- (optional) a conserved energy, or a function without
       arguments computing it when it is first asked for
+    - ``solver`` -- ``'auto'`` (default), ``'articulated'`` or ``'ltdl'``:
+      how the accelerations are found, by the articulated-body algorithm
+      ([Fea2008]_, Table 7.1; `O(n)` operations, for models without
+      constraints whose coordinates each move one body, the default for
+      them) or from the mass matrix of the composite rigid-body algorithm
+      factorized as `L^T D L`
 
     Raises :class:`~sage_dynsym.errors.AnalysisError` when the tree is
     outside the recursive form (see :func:`unsupported`).
@@ -627,11 +869,15 @@ class RecursiveForm:
         AnalysisError: numerical_rhs: the recursive form does not apply: the mass, mass centre or inertia of body 1 depends on the coordinates, velocities or t
     """
 
-    def __init__(self, tree, energy=None):
+    def __init__(self, tree, energy=None, solver='auto'):
         reason = unsupported(tree)
         if reason is not None:
             raise AnalysisError(f"the recursive form does not apply: {reason}",
                                 entry="numerical_rhs")
+        if solver not in ('auto', 'articulated', 'ltdl'):
+            raise AnalysisError(f"solver must be 'auto', 'articulated' or 'ltdl', got "
+                                f"{solver!r}", entry="numerical_rhs")
+        self._solver = solver
         self._tree = tree
         self._energy = energy
         self._state = tree.coordinates() + tree.velocities()
@@ -655,6 +901,26 @@ class RecursiveForm:
             Tree of 0 bodies in (), parameters ()
         """
         return self._tree
+
+    def solver(self):
+        r"""
+        The solver: ``'articulated'`` or ``'ltdl'`` once the graph is
+        built (see the class documentation), else the one asked for.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: x, y = var('x y')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, y, 0], mass=1)], [x, y]))
+            sage: F.solver(), F.graph() is not None, F.solver()
+            ('auto', True, 'articulated')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, y, 0], mass=1)], [x, y],
+            ....:                            constraints=[x - y^2]))
+            sage: F.graph() is not None, F.solver()
+            (True, 'ltdl')
+        """
+        return self._solver
 
     def order(self):
         r"""2: the equations are of second order.
@@ -753,7 +1019,7 @@ class RecursiveForm:
         if self._graph is None:
             assembly = _Assembly(self._tree)
             try:
-                ddq, pivots = assembly.accelerations()
+                ddq, pivots, self._solver = assembly.accelerations(self._solver)
             except _Unsupported as error:
                 raise AnalysisError(f"the recursive form does not apply: {error}",
                                     entry="numerical_rhs") from None
