@@ -34,12 +34,10 @@ EXAMPLES::
 """
 import logging
 
-from sage.symbolic.ring import SR
-
 from ..errors import ModelError
 from ..numerics.body_tree import BodyTree, TreeBody, TreeLoad
 from ..numerics.recursive import RecursiveForm, unsupported
-from .force_functions import UniformGravity
+from .force_functions import split_force_terms
 from .loads import body_index
 
 _LOG = logging.getLogger('sage_dynsym.numerics')
@@ -69,15 +67,7 @@ def body_tree(system):
                        velocity=body.velocity(), mass=body.mass(),
                        mass_center=body.mass_center(), inertia=body.inertia(), name=body.name())
               for k, body in enumerate(system.bodies(), 1)]
-    gravity, potential = None, SR(0)
-    for term in system.force_terms():
-        if isinstance(term, UniformGravity):
-            g = term.acceleration()
-            gravity = g if gravity is None else tuple(a + b for a, b in zip(gravity, g))
-        elif hasattr(term, 'evaluate'):
-            potential += term.evaluate(system)
-        else:
-            potential += SR(term)
+    gravity, potential = split_force_terms(system)
     loads = []
     for i, load in enumerate(system.loads()):
         k = body_index(system, load.body(), f"loads[{i}].body")

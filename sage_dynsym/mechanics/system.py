@@ -52,7 +52,7 @@ from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form, is_singular
-from .force_functions import check_force_function
+from .force_functions import check_force_function, split_force_terms, UniformGravity
 from .kinematics import Kinematics
 from .rigid_body import RigidBody
 
@@ -1331,19 +1331,24 @@ class MechanicalSystem(Model):
             terms = sum(e.number_of_terms() for i, row in enumerate(data[1]) for e in row[i:])
             christoffel = ('polynomial' if terms <= _POLYNOMIAL_CHRISTOFFEL_TERMS else
                            'recursive' if kinematics.recursive_applies() else 'symbolic')
-        U = self.force_function()
         if christoffel == 'recursive':
-            A, A1, T0, h = kinematics.recursive_equations()
+            # gravity enters the recursion; only the other terms, not
+            # expanded, are differentiated (nothing of the size of the tree is)
+            gravity, rest = split_force_terms(self)
+            A, A1, T0, h = kinematics.recursive_equations(gravity)
             ddq = [acceleration(q) for q in self._coordinates]
+            U = rest + sum((term.evaluate(self) for term in self.force_terms()
+                            if isinstance(term, UniformGravity)), SR(0))
 
             def recursive_equations():
                 return [SR(0).add(*[a * x for a, x in zip(row, ddq) if not a.is_trivial_zero()])
-                        + e - U.diff(q) for row, e, q in zip(A, h, self._coordinates)]
+                        + e - rest.diff(q) for row, e, q in zip(A, h, self._coordinates)]
             A = matrix(SR, A)
             A.set_immutable()
             decomposition = (A, vector(SR, A1), T0 + U)
             builder = recursive_equations
         else:
+            U = self.force_function()
             decomposition = self.decomposition()
 
         def ring_equations():
