@@ -42,6 +42,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
 from ..symbols import t as _t
+from .expressions import linear_coefficients, symbols_and_functions
 
 
 def deferred(value):
@@ -162,12 +163,7 @@ class NumericalForm:
         q, dq, ddq = record.coordinates(), record.velocities(), record.accelerations()
         mu, f = record.multipliers(), record.constraints()
         E = record.equations()
-        M = matrix(SR, [[e.diff(a) for a in ddq] for e in E]) if E else matrix(SR, 0, 0)
-        if any(entry.has(a) for entry in M.list() for a in ddq + mu):
-            raise AnalysisError("the equations are not linear in the accelerations ("
-                                f"{', '.join(map(str, ddq))})", entry="numerical_rhs")
-        zero = {a: 0 for a in ddq + mu}
-        F = [-e.subs(zero) for e in E]
+        M, F = self._linear_blocks(E, ddq, mu)
         self._state, self._hidden = list(q) + list(dq), list(ddq) + mu
         self._n = len(q)
         self._constraints = f
@@ -182,6 +178,27 @@ class NumericalForm:
             self._A, self._b = A, F + gamma
         else:
             self._A, self._b = M, F
+
+    @staticmethod
+    def _linear_blocks(E, ddq, mu):
+        # M and F of E = M ddq + (terms in mu) - F: read off the terms when
+        # they are products with the accelerations (the equations of large
+        # models share subexpressions: differentiating or substituting in
+        # them would walk every repetition), else by differentiation
+        rows, forcing = [], []
+        for e in E:
+            split = linear_coefficients(e, ddq + mu)
+            if split is None:
+                rows.append([e.diff(a) for a in ddq])
+                if any(x.has(a) for x in rows[-1] for a in ddq + mu):
+                    raise AnalysisError("the equations are not linear in the accelerations ("
+                                        f"{', '.join(map(str, ddq))})", entry="numerical_rhs")
+                forcing.append(-e.subs({a: 0 for a in ddq + mu}))
+            else:
+                coefficients, rest = split
+                rows.append([coefficients.get(a, SR(0)) for a in ddq])
+                forcing.append(-rest)
+        return (matrix(SR, rows) if E else matrix(SR, 0, 0)), forcing
 
     def __repr__(self):
         left = ("M x'' = F" if self._order == 2 else
@@ -304,19 +321,14 @@ class NumericalForm:
             [f]
         """
         if not hasattr(self, '_functions'):
-            found, stack = {}, [SR(e) for e in self._expressions()]
-            while stack:
-                e = stack.pop()
-                op = e.operator()
-                if op is None:
-                    continue
-                if type(op).__name__ == 'NewSymbolicFunction':
-                    found[op.name()] = op
-                elif type(op).__name__ == 'FDerivativeOperator':
-                    found[op.function().name()] = op.function()
-                stack.extend(e.operands())
-            self._functions = [found[k] for k in sorted(found)]
-        return list(self._functions)
+            self._scan()
+        return [f for f, _ in self._functions]
+
+    def _scan(self):
+        symbols, functions = symbols_and_functions(self._expressions())
+        hidden = {str(v) for v in self._state + self._hidden + [_t]}
+        self._parameters = [v for name, v in symbols.items() if name not in hidden]
+        self._functions = list(functions.values())
 
     def with_functions(self, values):
         r"""
@@ -376,14 +388,8 @@ class NumericalForm:
         return variants[key]
 
     def _arity(self, f):
-        stack = [SR(e) for e in self._expressions()]
-        while stack:
-            e = stack.pop()
-            if e.operator() is f:
-                return len(e.operands())
-            if e.operator() is not None:
-                stack.extend(e.operands())
-        return 1
+        self.functions()
+        return dict((g.name(), arity) for g, arity in self._functions).get(f.name(), 1)
 
     def _substituted(self, definitions):
         import copy
@@ -408,13 +414,8 @@ class NumericalForm:
         return new
 
     def _find_parameters(self):
-        hidden = {str(v) for v in self._state + self._hidden + [_t]}
-        found = {}
-        for e in self._expressions():
-            for v in SR(e).variables():
-                if str(v) not in hidden:
-                    found[str(v)] = v
-        return [found[k] for k in sorted(found)]
+        self._scan()
+        return self._parameters
 
     def kernel(self, backend='auto'):
         r"""

@@ -1014,7 +1014,7 @@ class RecursiveForm:
             ....:                            potential=-k*x^2/2))
             sage: G, outputs, pivots = F.graph()
             sage: [G.show(a) for a in outputs], [G.show(a) for a in pivots]
-            (['x[1]', '-((x[0]*p[0])/p[1])'], ['p[1]'])
+            (['x[1]', '-((x[0]*p[0])*(1.0/p[1]))'], ['p[1]'])
         """
         if self._graph is None:
             assembly = _Assembly(self._tree)
