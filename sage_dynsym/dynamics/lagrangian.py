@@ -125,6 +125,7 @@ from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
 from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
 from ..numerics.methods import NumericalMethods
+from ..numerics.expressions import symbols_and_functions
 from .natural_equations import natural_equations, SymbolicCalculus
 from .compact import equations_cse
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
@@ -818,12 +819,29 @@ class Lagrangian(NumericalMethods, SageObject):
             1/2*dx^2 + 1/2*x^2
             sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2)._conserved_energy() is None
             True
+
+        From the decomposition of a mechanical system, `T_2 - T_0 - U`::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).lagrangian()._conserved_energy()
+            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
         """
-        if (self._expr.has(t) or not self._dissipation.is_zero()
-                or any(not f.is_zero() for f in self._forces)
+        if self._structure is not None:
+            # h = T_2 - T_0 - U from the decomposition: nothing expanded (a
+            # memoized walk looks for t: large models share subexpressions)
+            A, A1, A0 = self._structure
+            if str(t) in symbols_and_functions(list(A.list()) + list(A1) + [A0])[0]:
+                return None
+            energy = natural_form(A, [0] * len(self._velocities), -A0, self._velocities)
+        elif self._expr.has(t):
+            return None
+        else:
+            energy = None
+        if (not self._dissipation.is_zero() or any(not f.is_zero() for f in self._forces)
                 or any(SR(f).has(t) for f in self._constraints)):
             return None
-        return self.energy()
+        return self.energy() if energy is None else energy
 
     def to_linearizer(self):
         r"""

@@ -164,14 +164,19 @@ class Trajectory(SageObject):
         if str(expression) in names and expression.is_symbol():
             return self._states[:, names[str(expression)]]
         from .compiler import python_function
+        from .expressions import symbols_and_functions
+        # one memoized walk, the parameters as arguments: the energy of a
+        # large model shares its subexpressions many times over
         known = {str(v) for v in self._variables + list(self._parameters) + [_t]}
-        unknown = sorted({str(v) for v in expression.variables()} - known)
+        unknown = sorted(set(symbols_and_functions([expression])[0]) - known)
         if unknown:
             raise ModelError(f"{expression} depends on {', '.join(unknown)}, which are not state "
                              "variables or parameters of the trajectory", entry="values")
-        f = python_function([expression.subs(self._parameters)], [_t] + self._variables,
-                            entry="values")
-        return np.array([f(s, *row)[0] for s, row in zip(self._times, self._states.tolist())])
+        parameters = list(self._parameters)
+        f = python_function([expression], [_t] + self._variables + parameters, entry="values")
+        values = [self._parameters[p] for p in parameters]
+        return np.array([f(s, *row, *values)[0]
+                         for s, row in zip(self._times, self._states.tolist())])
 
     def values(self, expression):
         r"""
