@@ -31,7 +31,7 @@ import numpy as np
 import pytest
 import sympy
 
-from sage.all import SR, RealField, matrix, vector, sin, cos
+from sage.all import SR, RealField, matrix, vector, sin, cos, dumps, loads
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference.chains import physical_inertia  # noqa: E402
@@ -431,6 +431,7 @@ def test_simulation_keeps_the_energy_computed_only_on_demand():
     initial = {v: 0.1 * (i % 3) for i, v in enumerate(S.coordinates() + S.velocities())}
     T = S.simulate({}, initial, 1.0, points=5)
     assert T.states().shape == (5, 2 * n)
+    assert loads(dumps(S)).coordinates() == S.coordinates()     # no compiled code pickled
     assert not S.lagrangian.cache           # no symbolic equations, no energy yet
     assert T.energy_drift() < 1e-8
     assert S.lagrangian.cache

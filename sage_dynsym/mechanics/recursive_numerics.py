@@ -36,6 +36,7 @@ import logging
 
 from ..errors import ModelError
 from ..numerics.body_tree import BodyTree, TreeBody, TreeLoad
+from ..numerics.methods import object_cache
 from ..numerics.recursive import RecursiveForm, unsupported
 from .force_functions import split_force_terms
 from .loads import body_index
@@ -113,7 +114,7 @@ def numerical_form(system, algorithm='auto'):
     if algorithm not in ALGORITHMS:
         raise ModelError(f"must be 'auto', 'recursive' or 'equations', got {algorithm!r}",
                          entry="algorithm")
-    cache = system.__dict__.setdefault('_numerical_forms', {})
+    cache = object_cache(system)
     if algorithm in cache:
         return cache[algorithm]
     form = None

@@ -16,7 +16,7 @@ nothing at run time.
 :meth:`ExpressionGraph.c_functions` writes the nodes needed by a list of
 outputs as C functions of bounded size (values passed between them
 through a work array), so that even large graphs compile quickly with the
-optimizer switched on; :meth:`ExpressionGraph.python_function` writes one
+optimizer switched on; :meth:`ExpressionGraph.python_source` writes one
 Python function.
 
 EXAMPLES::
@@ -30,7 +30,9 @@ EXAMPLES::
     (7, '(x[1]*sin(x[0])) + (x[1]*sin(x[0]))')
     sage: G.show(G.mul(G.add(x, G.zero), G.one)) == G.show(x)
     True
-    sage: f = G.python_function([e, G.neg(x)]); f(0, [float(1), float(2)], [])
+    sage: from sage_dynsym.numerics.compiler import run_python
+    sage: f = run_python(G.python_source([e, G.neg(x)]), '_graph')
+    sage: f(0, [float(1), float(2)], [])
     [3.365883939231586, -1.0]
 """
 import math
@@ -417,22 +419,30 @@ class ExpressionGraph:
             stack.extend(a for a in self._args[node] if not isinstance(a, str))
         return sorted(needed)
 
-    def python_function(self, outputs):
+    def python_source(self, outputs, name='_graph'):
         r"""
-        A Python function ``f(t, x, p)`` returning the list of the values
-        of ``outputs``. Raises :class:`ZeroDivisionError` where a quotient
-        has a zero denominator.
+        The source of a Python function ``name(t, x, p)`` returning the list
+        of the values of ``outputs`` (functions of the module ``math``; see
+        :func:`~sage_dynsym.numerics.compiler.run_python`). A quotient by
+        zero raises :class:`ZeroDivisionError`.
 
-        EXAMPLES: see the module documentation.
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.graph import ExpressionGraph
+            sage: G = ExpressionGraph(); x = G.input('x', 0)
+            sage: print(G.python_source([G.div(G.one, G.call('cos', x))]))
+            def _graph(t, x, p):
+                v3 = math.cos(x[0])
+                v4 = 1.0/v3
+                return [v4]
         """
-        from .compiler import run_python
         names = {}
-        lines = ['def _graph(t, x, p):']
+        lines = [f'def {name}(t, x, p):']
         for node in self._needed(outputs):
             names[node] = f'v{node}'
             lines.append(f'    v{node} = {self._text(node, names, "python")}')
         lines.append(f"    return [{', '.join(self._operand(a, names, 'python') for a in outputs)}]")
-        return run_python('\n'.join(lines), '_graph')
+        return '\n'.join(lines)
 
     def c_functions(self, outputs, prefix='dynsym_part', chunk=300):
         r"""

@@ -842,6 +842,9 @@ class RecursiveForm:
       constraints whose coordinates each move one body, the default for
       them) or from the mass matrix of the composite rigid-body algorithm
       factorized as `L^T D L`
+    - ``values`` -- (optional) values of parameters to write into the code
+      as numbers (folded with the rest); the others are inputs of the
+      kernel, so that one compilation serves every set of values
 
     Raises :class:`~sage_dynsym.errors.AnalysisError` when the tree is
     outside the recursive form (see :func:`unsupported`).
@@ -861,6 +864,12 @@ class RecursiveForm:
         sage: F.state(), F.parameters(), F.order(), F.solve_size()
         ([x, dx], [m, w], 2, None)
 
+    The same with the rate folded into the code::
+
+        sage: F = RecursiveForm(BodyTree([table, bead], [x]), values={w: 3})
+        sage: F.parameters(), F.kernel('python')(0.0, [2.0, 0.0], [1.0])
+        ([m], array([ 0., 18.]))
+
     TESTS::
 
         sage: RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m*t)], [x]))
@@ -869,7 +878,7 @@ class RecursiveForm:
         AnalysisError: numerical_rhs: the recursive form does not apply: the mass, mass centre or inertia of body 1 depends on the coordinates, velocities or t
     """
 
-    def __init__(self, tree, energy=None, solver='auto'):
+    def __init__(self, tree, energy=None, solver='auto', values=None):
         reason = unsupported(tree)
         if reason is not None:
             raise AnalysisError(f"the recursive form does not apply: {reason}",
@@ -879,6 +888,11 @@ class RecursiveForm:
                                 f"{solver!r}", entry="numerical_rhs")
         self._solver = solver
         self._tree = tree
+        self._values = {}
+        if values:
+            by_name = {str(k): v for k, v in values.items()}
+            self._values = {p: float(by_name[str(p)]) for p in tree.parameters()
+                            if str(p) in by_name}
         self._energy = energy
         self._state = tree.coordinates() + tree.velocities()
         self._kernels = {}
@@ -941,7 +955,7 @@ class RecursiveForm:
 
         EXAMPLES: see the class documentation.
         """
-        return self._tree.parameters()
+        return [p for p in self._tree.parameters() if p not in self._values]
 
     def solve_size(self):
         r"""``None``: the kernel solves for the accelerations itself.
@@ -1017,7 +1031,7 @@ class RecursiveForm:
             (['x[1]', '-((x[0]*p[0])*(1.0/p[1]))'], ['p[1]'])
         """
         if self._graph is None:
-            assembly = _Assembly(self._tree)
+            assembly = _Assembly(self._tree, self._values)
             try:
                 ddq, pivots, self._solver = assembly.accelerations(self._solver)
             except _Unsupported as error:
@@ -1039,7 +1053,7 @@ class RecursiveForm:
 
         EXAMPLES: see the class documentation.
         """
-        from .compiler import Kernel, compile_c, graph_c_source
+        from .compiler import Kernel, compile_c, graph_c_source, run_python
         from sage.misc.verbose import verbose
         if backend not in ('auto', 'c', 'python'):
             raise AnalysisError(f"backend must be 'auto', 'c' or 'python', got {backend!r}",
@@ -1061,7 +1075,7 @@ class RecursiveForm:
             else:
                 kernel = Kernel(self, 'c', library.dynsym_rhs)
         if kernel is None:
-            function = G.python_function(outputs + list(pivots))
+            function = run_python(G.python_source(outputs + list(pivots)), '_graph')
             m = len(outputs)
 
             def evaluate(t, x, p):
