@@ -338,7 +338,7 @@ def main():
         print(json.dumps(WORKERS[tool](desc, chain_values(name, desc))), flush=True)
         return
     sizes = args.n or ((2, 4) if args.quick else SIZES)
-    timeout = args.timeout or (120 if args.quick else 600)
+    timeout = args.timeout or (120 if args.quick else 300)
     print("From a chain's description to a compiled right-hand side: sage_dynsym "
           f"vs Pinocchio and PyDy; one tool at a time, timeout {timeout:g} s per run")
     summary = []
