@@ -516,7 +516,7 @@ class MechanicalSystem(Model):
 
     # numerics: the system's Lagrange equations run through its Lagrangian
 
-    def numerical_rhs(self, values, algorithm='auto', backend='auto'):
+    def numerical_rhs(self, values, backend='auto', algorithm='auto'):
         r"""
         The compiled right-hand side `\dot x = f(t, x)`, `x = (q, \dot q)`,
         with the parameter values ``values``: by the recursive algorithms
@@ -541,12 +541,12 @@ class MechanicalSystem(Model):
         from .recursive_numerics import numerical_form
         return RightHandSide(numerical_form(self, algorithm), values, backend)
 
-    def simulate(self, values, initial, t_end, algorithm='auto', **options):
+    def simulate(self, values, initial, t_end, *args, algorithm='auto', **options):
         r"""
         A simulation of the system (see
-        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`),
-        its right-hand side computed by ``algorithm`` (see
-        :meth:`numerical_rhs`).
+        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`:
+        the same arguments), its right-hand side computed by ``algorithm``
+        (see :meth:`numerical_rhs`).
 
         EXAMPLES: a mass on a spring, `x(t) = \cos 2t`::
 
@@ -560,7 +560,7 @@ class MechanicalSystem(Model):
         """
         from ..numerics.simulate import simulate
         from .recursive_numerics import numerical_form
-        return simulate(numerical_form(self, algorithm), values, initial, t_end, **options)
+        return simulate(numerical_form(self, algorithm), values, initial, t_end, *args, **options)
 
     def code(self, language='python', cse=True):
         r"""

@@ -202,6 +202,9 @@ class _Assembly:
                 c, s = self.convert(theta.cos()), self.convert(theta.sin())
                 dtheta = self.rate(theta)
                 columns = self.columns([dtheta], scalar=True)
+                if columns is None:
+                    raise _Unsupported(f"the rotation angle {theta} of body {k} depends on the "
+                                       "velocities")
                 rate, rate2 = self.convert(dtheta), self.convert(self.rate(dtheta))
                 w_old = _rotate(G, axis, c, s, w, inverse=True)
                 w = list(w_old)
@@ -790,9 +793,9 @@ def unsupported(tree):
         sage: unsupported(BodyTree([TreeBody(0, joint=[x, 0, 0], velocity=[var('dx')^2, 0, 0])], [x]))
         'the relative velocity of body 1 is not linear in the velocities'
         sage: unsupported(BodyTree([TreeBody(0, joint=[function('f')(x), 0, 0])], [x]))
-        'f(x) is not a known function'
+        'f is not a known function (the equations take definitions of functions)'
     """
-    from .expressions import FUNCTIONS, function_name
+    from .expressions import symbols_and_functions
     dynamic = set(tree.coordinates()) | set(tree.velocities()) | {_t}
     for k, body in enumerate(tree.bodies(), 1):
         data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
@@ -803,22 +806,10 @@ def unsupported(tree):
                 not SR(u).diff(a, b).is_zero() for u in body.velocity()
                 for a in tree.velocities() for b in tree.velocities()):
             return f"the relative velocity of body {k} is not linear in the velocities"
-    known = set(FUNCTIONS) | {'sqrt'}
-    stack, seen = [SR(e) for e in tree.expressions()], set()
-    while stack:
-        e = stack.pop()
-        op = e.operator()
-        if op is None:
-            continue
-        name = function_name(op)
-        if name is not None and name not in known and type(op).__name__ in (
-                'NewSymbolicFunction', 'FDerivativeOperator'):
-            return f"{e} is not a known function"
-        for a in e.operands():
-            key = (hash(a), str(a.operator()))
-            if key not in seen:
-                seen.add(key)
-                stack.append(a)
+    functions = symbols_and_functions(tree.expressions())[1]
+    if functions:
+        return (f"{', '.join(functions)} {'is' if len(functions) == 1 else 'are'} not a known "
+                "function (the equations take definitions of functions)")
     return None
 
 
