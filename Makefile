@@ -10,7 +10,7 @@ STAMP  := $(VENV)/.installed
 KERNEL := $(VENV)/share/jupyter/kernels/sagemath/kernel.json
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: run test doctest pytest worksheets docs browser kernel chromium bench venv clean
+.PHONY: run test test-slow doctest pytest worksheets docs browser kernel chromium bench venv clean
 
 venv: $(STAMP)
 
@@ -39,8 +39,15 @@ chromium:
 doctest: $(STAMP)
 	$(SAGE) -t --force-lib -p 2 sage_dynsym doc/*.rst
 
+# two processes (pytest-xdist); the slowest tests listed at the end
+PYTEST := $(PY) -m pytest -q -n 2 --dist loadfile --durations=10
+
 pytest: $(STAMP) kernel
-	$(PY) -m pytest -q tests --ignore=tests/browser
+	$(PYTEST) -m "not slow" tests --ignore=tests/browser
+
+# the long cross-checks (CI runs them after `make test`)
+test-slow: $(STAMP) kernel
+	$(PYTEST) -m slow tests --ignore=tests/browser
 
 worksheets: $(STAMP) kernel
 	$(PY) -m pytest -q tests/test_worksheets.py
@@ -52,11 +59,13 @@ docs: $(STAMP)
 browser: $(STAMP) kernel chromium
 	CHROMIUM=$$(command -v chromium || echo $(CHROMIUM)) $(PY) -m pytest -q tests/browser
 
-test: doctest pytest docs browser
+# every part timed; the times are printed at the end (also when a part fails)
+test:
+	@tests/timed.sh $(MAKE) doctest pytest docs browser
 
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -r requirements-bench.txt
 	for b in bench/bench_*.py; do $(PY) $$b || exit 1; done
 
 clean:
-	rm -rf $(VENV) build *.egg-info doc/_build
+	rm -rf $(VENV) build *.egg-info doc/_build doc/api

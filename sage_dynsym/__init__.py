@@ -24,37 +24,45 @@ The modules of earlier versions (``sage_dynsym.dynamics.lagrangian``,
 names.
 """
 import importlib
+import importlib.abc
+import importlib.util
 import sys
 
-# Symbolic functions, Maxima and the coercion model need the full Sage
-# library initialised, also when the package is used from plain Python.
-import sage.all  # noqa: F401
+#: The public names and the module each comes from. They are imported on
+#: first use (PEP 562), so that ``import sage_dynsym`` and the command
+#: line's ``--help`` do not load Sage; the first name used loads it.
+_PUBLIC = {
+    '.errors': ['DynSymError', 'ModelError', 'DescriptionError', 'ExpressionError',
+                'CircuitError', 'AnalysisError', 'BudgetError'],
+    '.dynamics.lagrangian': ['Lagrangian', 'RouthFunction'],
+    '.dynamics.hamiltonian': ['Hamiltonian'],
+    '.dynamics.dirac': ['DiracConstraints'],
+    '.dynamics.compact': ['equations_cse', 'CompactEquations'],
+    '.mechanics.rigid_body': ['RigidBody'],
+    '.mechanics.force_functions': ['UniformGravity', 'NewtonianField'],
+    '.mechanics.loads': ['Load'],
+    '.mechanics.system': ['MechanicalSystem'],
+    '.description': ['load', 'save'],
+    '.circuits': ['Circuit', 'NodalAnalysis'],
+    '.analysis': ['stationary_solutions', 'stationary_motions', 'ModifiedRouthLyapunov',
+                  'linearize', 'LinearSystem', 'hurwitz_matrix', 'hurwitz_determinants',
+                  'hurwitz_conditions', 'lienard_chipart_conditions',
+                  'real_negative_roots_conditions', 'conservative_stability_conditions',
+                  'sylvester_conditions', 'definiteness_conditions', 'restrict_to_subspace',
+                  'simultaneous_reduction', 'kelvin_chetaev', 'StabilityVerdict',
+                  'equilibrium_family', 'StationarySolution', 'StationarySolutions',
+                  'solve_exactly', 'exists'],
+    '.analysis.trigonometric': ['trig_rational_simplify'],
+    '.lie': ['LiePoissonSystem', 'PoissonStructure', 'lie_algebra', 'poisson_structure',
+             'casimirs', 'polynomial_integrals', 'euler_poisson', 'kirchhoff'],
+    '.numerics': ['NumericalMethods', 'Trajectory', 'numerical_rhs', 'simulate',
+                  'generate_code'],
+    '.scale': ['stability_map', 'StabilityMap', 'sweep', 'Sweep'],
+}
+_SOURCE = {name: module for module, names in _PUBLIC.items() for name in names}
 
-from .errors import (DynSymError, ModelError, DescriptionError, ExpressionError,
-                     CircuitError, AnalysisError, BudgetError)
-from .dynamics.lagrangian import Lagrangian, RouthFunction
-from .dynamics.hamiltonian import Hamiltonian
-from .dynamics.dirac import DiracConstraints
-from .dynamics.compact import equations_cse, CompactEquations
-from .mechanics.rigid_body import RigidBody
-from .mechanics.force_functions import UniformGravity, NewtonianField
-from .mechanics.loads import Load
-from .mechanics.system import MechanicalSystem
-from .description import load, save
-from .circuits import Circuit, NodalAnalysis
-from .analysis import (stationary_solutions, stationary_motions, ModifiedRouthLyapunov,
-                       linearize, LinearSystem, hurwitz_matrix, hurwitz_determinants,
-                       hurwitz_conditions, lienard_chipart_conditions,
-                       real_negative_roots_conditions, conservative_stability_conditions,
-                       sylvester_conditions, definiteness_conditions, restrict_to_subspace,
-                       simultaneous_reduction, kelvin_chetaev, StabilityVerdict,
-                       equilibrium_family, StationarySolution, StationarySolutions,
-                       solve_exactly, exists)
-from .analysis.trigonometric import trig_rational_simplify
-from .lie import (LiePoissonSystem, PoissonStructure, lie_algebra, poisson_structure,
-                  casimirs, polynomial_integrals, euler_poisson, kirchhoff)
-from .numerics import NumericalMethods, Trajectory, numerical_rhs, simulate, generate_code
-from .scale import stability_map, StabilityMap, sweep, Sweep
+#: The public names of the package (its subpackages are public too).
+__all__ = [name for names in _PUBLIC.values() for name in names]
 
 #: Earlier module names and where they live now.
 _MOVED = {
@@ -72,6 +80,39 @@ _MOVED = {
     'kinematics': 'mechanics.kinematics',
     'mechanical_system': 'mechanics.system',
 }
-for _old, _new in _MOVED.items():
-    sys.modules[f"{__name__}.{_old}"] = importlib.import_module(f".{_new}", __name__)
-del _old, _new
+
+
+def __getattr__(name):
+    if name not in _SOURCE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    # symbolic functions, Maxima and the coercion model need the whole Sage
+    # library initialised, also when the package is used from plain Python
+    import sage.all  # noqa: F401
+    value = getattr(importlib.import_module(_SOURCE[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
+
+
+class _MovedModules(importlib.abc.MetaPathFinder, importlib.abc.Loader):
+    r"""Imports an earlier module name (``sage_dynsym.lagrangian``) as the
+    module that lives at its new place, the same module object."""
+
+    def find_spec(self, fullname, path=None, target=None):
+        old = fullname.partition(__name__ + '.')[2]
+        if fullname.startswith(__name__ + '.') and old in _MOVED:
+            return importlib.util.spec_from_loader(fullname, self)
+        return None
+
+    def create_module(self, spec):
+        return importlib.import_module(f"{__name__}.{_MOVED[spec.name.rpartition('.')[2]]}")
+
+    def exec_module(self, module):
+        pass
+
+
+if not any(isinstance(f, _MovedModules) for f in sys.meta_path):
+    sys.meta_path.append(_MovedModules())

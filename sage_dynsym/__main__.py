@@ -9,11 +9,11 @@ traceback; the other files are still reported.
 Options:
 
 - ``--sections LIST`` -- comma-separated report sections (see
-  :data:`sage_dynsym.report.SECTIONS`), e.g. ``lagrangian,equations``;
+  :data:`sage_dynsym.report.sections.SECTIONS`), e.g. ``lagrangian,equations``;
 - ``--no-analysis`` -- leave out the analysis sections (stationary motions,
   stability, dP/dt);
 - ``--budget N`` -- the size budget of each section in polynomial terms
-  (default :data:`sage_dynsym.report.DEFAULT_BUDGET`): a section whose
+  (default :data:`sage_dynsym.report.sections.DEFAULT_BUDGET`): a section whose
   estimated size is larger is replaced by one line saying so;
 - ``--time-limit S`` -- give up on a file after ``S`` seconds (one error
   line, then the next file);
@@ -37,7 +37,7 @@ def _positive_int(text):
 
 
 def _sections(text):
-    from .report import SECTIONS
+    from .report.sections import SECTIONS
     keys = [k.strip() for k in text.split(",") if k.strip()]
     for key in keys:
         if key not in SECTIONS:
@@ -79,7 +79,7 @@ def main(argv=None):
     if argv[:1] == ["map"]:
         from .scale.cli import main as map_main
         return map_main(argv[1:])
-    from .report import DEFAULT_BUDGET
+    from .report.sections import DEFAULT_BUDGET
     parser = argparse.ArgumentParser(
         prog="sage-dynsym",
         description="Derive the equations of the models in description files "

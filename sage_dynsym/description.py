@@ -34,6 +34,9 @@ EXAMPLES::
     sage: results['lagrange_equations'] == S.lagrangian().lagrange_equations()
     True
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# first (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 import os
 import sys
 

@@ -58,6 +58,9 @@ EXAMPLES::
     ...
     ModelError: parameters[0]: the name 'pi' is reserved: the constant pi of the expression parser; choose another name
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# first (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 import keyword
 import re
 

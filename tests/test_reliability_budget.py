@@ -90,7 +90,7 @@ def test_a_raised_budget_computes_the_section():
 
 
 def test_a_failing_section_is_one_line_and_the_rest_prints(monkeypatch):
-    import sage_dynsym.report as R
+    import sage_dynsym.report.writer as R
 
     def broken(*args):
         raise RuntimeError("Singular error: no more memory")
@@ -103,7 +103,7 @@ def test_a_failing_section_is_one_line_and_the_rest_prints(monkeypatch):
 
 
 def test_keyboard_interrupt_is_not_swallowed(monkeypatch):
-    import sage_dynsym.report as R
+    import sage_dynsym.report.writer as R
 
     def interrupted(*args):
         raise KeyboardInterrupt

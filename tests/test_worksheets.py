@@ -53,16 +53,23 @@ class PatientNotebookClient(nbclient.NotebookClient):
         return result
 
 
-@pytest.mark.parametrize("path", WORKSHEETS, ids=[p.stem for p in WORKSHEETS])
-def test_worksheet_runs(path, tmp_path):
+def run_notebook(nb, folder):
+    """Execute the notebook ``nb`` in the SageMath kernel, in ``folder``;
+    a cell that raises fails the calling test. Returns the notebook with
+    its outputs."""
     try:
         KernelSpecManager().get_kernel_spec(KERNEL)
     except NoSuchKernel:
         pytest.fail("the SageMath kernel spec is not installed (make kernel)")
-    nb = nbformat.read(path, as_version=4)
     client = PatientNotebookClient(nb, kernel_name=KERNEL, timeout=600,
-                                   resources={"metadata": {"path": str(tmp_path)}})
+                                   resources={"metadata": {"path": str(folder)}})
     client.execute()
     errors = [out for cell in nb.cells if cell.cell_type == "code"
               for out in cell.get("outputs", []) if out.get("output_type") == "error"]
     assert not errors
+    return nb
+
+
+@pytest.mark.parametrize("path", WORKSHEETS, ids=[p.stem for p in WORKSHEETS])
+def test_worksheet_runs(path, tmp_path):
+    run_notebook(nbformat.read(path, as_version=4), tmp_path)

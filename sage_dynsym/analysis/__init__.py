@@ -9,6 +9,9 @@ variation and quadratic-form criteria, first approximation
 Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
 and families of equilibria by elimination.
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 from .elimination import equilibrium_family, EquilibriumFamily
 from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,

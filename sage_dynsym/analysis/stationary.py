@@ -159,13 +159,26 @@ class StationarySolution(SageObject):
     def _positive(self, positive):
         return self._problem._positive if positive is None else positive
 
+    def _kind(self):
+        r"""What the solution is, for its listing: ``'isolated'``, a family
+        of some dimension in the unknowns, or a family over the variables
+        that were not unknowns (e.g. the coordinates when solving for the
+        cyclic momenta), which its values depend on."""
+        d = self.dimension()
+        solved = {str(u) for u in self._problem._solved}
+        over = [str(x) for x in self._problem._hessian_variables if str(x) not in solved and
+                any(SR(e).has(x) for e in self.point().values())]
+        kind = "isolated" if d == 0 else f"{d}-parameter family"
+        if over:
+            kind = ("a family" if d == 0 else kind) + " over " + ", ".join(over)
+        return kind
+
     def _repr_(self):
         free = {str(l) for l in self.free_multipliers()}
         mult = ', '.join(f"{k} free" if str(k) in free else f"{k} = {v}"
                          for k, v in self.multipliers().items() if str(k) != str(v) or
                          str(k) in free)
-        d = self.dimension()
-        kind = "isolated" if d == 0 else f"{d}-parameter family"
+        kind = self._kind()
         if self.is_equilibrium() is False:
             kind += ", an invariant manifold of non-equilibrium motions"
         if not self.is_explicit():
@@ -587,8 +600,8 @@ class StationarySolution(SageObject):
         existence = simplify_conjunction(self.conditions(), positive) or []
         if region:
             cases.append(StabilityVerdict(
-                'stable', "the second variation of the Lyapunov function is definite "
-                "(Routh-Lyapunov)", method='Routh-Lyapunov', region=region))
+                'stable', "the second variation of the Lyapunov function is definite",
+                method='Routh-Lyapunov', region=region))
         lin = self.linear_system() if self.is_explicit() and \
             self.is_equilibrium() is not False else None
         if lin is not None:
@@ -784,7 +797,7 @@ class StationarySolutions(SolutionList):
             sage: for line in stationary_motions(L, positive=[m, g, l]).report_lines():
             ....:     print(line)
               solution 1 (isolated): theta = 0
-                stability: stable (Routh-Lyapunov): the second variation of the Lyapunov function is definite (Routh-Lyapunov)
+                stability: stable (Routh-Lyapunov): the second variation of the Lyapunov function is definite
               solution 2 (isolated): theta = pi
                 stability: unstable (first approximation): the characteristic polynomial has a root with positive real part (Lyapunov's theorem on the first approximation)
         """
@@ -799,7 +812,7 @@ class StationarySolutions(SolutionList):
                          "possibly not all)")
         for k, s in enumerate(self, 1):
             values = ", ".join(f"{v} = {e}" for v, e in s.point().items() if str(v) != str(e))
-            kind = "isolated" if s.dimension() == 0 else f"{s.dimension()}-parameter family"
+            kind = s._kind()
             if not s.is_explicit():
                 kind += ", implicit"
             lines.append(f"  solution {k} ({kind}): {values or 'given by its equations'}")

@@ -3,6 +3,9 @@ Electrical circuits: graph, Lagrangians (loop and node methods), Brayton--Moser
 mixed potential, state equations of any solvable circuit (modified nodal
 analysis), description files.
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 from .circuit import Circuit
 from .elements import Branch, Coupling
 from .mixed_potential import MixedPotential

@@ -343,7 +343,7 @@ class StabilityStudy(SageObject):
             sage: print(St.note())
             no symbolic conditions (...): stability from the roots; the region plot is a stability map of the characteristic roots (sage_dynsym.scale.stability_map)
             sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 4), (-1, 2))
-            Graphics object consisting of 2 graphics primitives
+            Graphics object consisting of 4 graphics primitives
 
         TESTS:
 
@@ -514,17 +514,21 @@ class StabilityStudy(SageObject):
                                 entry="stability explorer")
         plane = plane or (names + names)[:2]
         controls = {}
+        # labels as wide as their text (the default width cuts "perturbation")
+        label = dict(style={'description_width': 'initial'})
         for p in names:
             lo, hi, default = ranges[p]
             controls[p] = W.FloatSlider(value=default, min=lo, max=hi, step=(hi - lo) / 100,
-                                        description=p, continuous_update=False)
-        controls['plane_x'] = W.Dropdown(options=names, value=plane[0], description='x axis')
-        controls['plane_y'] = W.Dropdown(options=names, value=plane[1], description='y axis')
+                                        description=p, continuous_update=False, **label)
+        controls['plane_x'] = W.Dropdown(options=names, value=plane[0], description='x axis',
+                                         **label)
+        controls['plane_y'] = W.Dropdown(options=names, value=plane[1], description='y axis',
+                                         **label)
         controls['perturbation'] = W.FloatSlider(value=0.05, min=0, max=1, step=0.01,
                                                  description='perturbation',
-                                                 continuous_update=False)
+                                                 continuous_update=False, **label)
         controls['t_end'] = W.FloatSlider(value=t_end, min=1, max=5 * t_end, step=1,
-                                          description='time', continuous_update=False)
+                                          description='time', continuous_update=False, **label)
 
         def page(**values):
             plane_x, plane_y = values.pop('plane_x'), values.pop('plane_y')

@@ -2,3 +2,6 @@ r"""
 Input and output: the safe expression parser, reading YAML description
 files within limits, their common fields, and atomic writing.
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401

@@ -9,6 +9,9 @@ the parameter values where more integrals exist), stationary motions by
 the Routh--Lyapunov method, and the Euler--Poisson and Kirchhoff systems of
 rigid bodies.
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 from .algebras import PoissonStructure, lie_algebra, poisson_structure
 from .integrals import IntegralJump, casimirs, polynomial_integrals
 from .system import LiePoissonSystem

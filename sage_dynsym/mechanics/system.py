@@ -555,11 +555,12 @@ class MechanicalSystem(Model):
             sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
             ....:                      force_function=-k*x^2/2)
             sage: T = S.simulate({m: 2, k: 8}, {x: 1, 'dx': 0}, pi, points=3)
-            sage: [round(v, 8) for v in T.values(x)], T.energy_drift() < 1e-9
-            ([1.0, -1.0, 1.0], True)
+            sage: T.values(x).round(8), T.energy_drift() < 1e-9
+            (array([ 1., -1.,  1.]), True)
         """
         from ..numerics.simulate import simulate
         from .recursive_numerics import numerical_form
+        options.setdefault('name', self._name)
         return simulate(numerical_form(self, algorithm), values, initial, t_end, *args, **options)
 
     def code(self, language='python', cse=True):

@@ -7,6 +7,9 @@ EXAMPLES::
 
     sage: from sage_dynsym.numerics import NumericalMethods, numerical_rhs, simulate, Trajectory
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 from .codegen import generate_code, GeneratedCode
 from .energy import quadratic_energy
 from .form import NumericalForm

@@ -129,7 +129,7 @@ class NumericalMethods:
             ....:     def to_linearizer(self):
             ....:         return FirstOrderEquations([-a*x], [x])
             sage: T = Decay().simulate({a: 1}, {x: 1}, 1, points=3, method='stiff')
-            sage: abs(T.values(x)[-1] - exp(-1.)) < 1e-8
+            sage: bool(abs(T.values(x)[-1] - exp(-1.)) < 1e-8)
             True
             sage: T.energy_drift()
             Traceback (most recent call last):
@@ -137,8 +137,9 @@ class NumericalMethods:
             ModelError: energy_drift: the model has no energy integral (explicit time, dissipation or non-potential forces)
         """
         rhs = self.numerical_rhs(values, backend)
+        name = self.name() if callable(getattr(self, 'name', None)) else None
         return _simulate(rhs, values, initial, t_end, points=points, t0=t0, method=method,
-                         rtol=rtol, atol=atol, **options)
+                         rtol=rtol, atol=atol, name=name, **options)
 
     def code(self, language='python', cse=True):
         r"""

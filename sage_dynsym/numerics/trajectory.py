@@ -18,7 +18,7 @@ EXAMPLES::
     sage: T
     Trajectory in (x, dx): 3 samples, t from 0.0 to 1.0
     sage: T.values(x)
-    [1.0, 0.8775825618903728, 0.5403023058681398]
+    array([1.        , 0.87758256, 0.54030231])
     sage: T.energy_drift() < 1e-15
     True
 """
@@ -46,17 +46,27 @@ class Trajectory(SageObject):
       parameters, for :meth:`energy_drift`, or a function without
       arguments computing it (called when the energy is first needed)
     - ``method`` -- (optional) the integrator's name
+    - ``dense`` -- (optional) the integrator's continuous solution: a list
+      of callables ``f(times) -> states`` (one row per variable, as SciPy's
+      ``OdeSolution``), each valid on the interval between two consecutive
+      entries of ``breaks``; used to draw smooth curves between the samples
+    - ``breaks`` -- the ends of the intervals of ``dense``
+    - ``name`` -- (optional) the model's name, for the titles of pictures
 
     EXAMPLES: see the module documentation.
     """
 
-    def __init__(self, times, states, variables, parameters, energy=None, method=None):
+    def __init__(self, times, states, variables, parameters, energy=None, method=None,
+                 dense=None, breaks=None, name=None):
         self._times = np.array(times, dtype=float)
         self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
         self._variables = [SR(v) for v in variables]
         self._parameters = {SR(k): float(v) for k, v in parameters.items()}
         self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._method = method
+        self._dense = list(dense) if dense else None
+        self._breaks = None if breaks is None else np.array(breaks, dtype=float)
+        self._name = name
 
     def __eq__(self, other):
         r"""
@@ -152,17 +162,20 @@ class Trajectory(SageObject):
         """
         return self._method
 
-    def _array(self, expression):
-        """The values of a variable, its name, or an expression of the state."""
+    def _array(self, expression, times=None, states=None):
+        """The values of a variable, its name, or an expression of the state
+        (at the samples, or at the given ``times`` and ``states``)."""
+        if times is None:
+            times, states = self._times, self._states
         names = {str(v): i for i, v in enumerate(self._variables)}
         if isinstance(expression, str):
             if expression not in names:
                 raise ModelError(f"{expression!r} is not a state variable (they are "
                                  f"{', '.join(names)})", entry="values")
-            return self._states[:, names[expression]]
+            return states[:, names[expression]]
         expression = SR(expression)
         if str(expression) in names and expression.is_symbol():
-            return self._states[:, names[str(expression)]]
+            return states[:, names[str(expression)]]
         from .compiler import python_function
         from .expressions import symbols_and_functions
         # one memoized walk, the parameters as arguments: the energy of a
@@ -175,14 +188,13 @@ class Trajectory(SageObject):
         parameters = list(self._parameters)
         f = python_function([expression], [_t] + self._variables + parameters, entry="values")
         values = [self._parameters[p] for p in parameters]
-        return np.array([f(s, *row, *values)[0]
-                         for s, row in zip(self._times, self._states.tolist())])
+        return np.array([f(s, *row, *values)[0] for s, row in zip(times, states.tolist())])
 
     def values(self, expression):
         r"""
         The values of a state variable (a symbol or its name), or of an
         expression in the state variables, the parameters and ``t``, at the
-        samples (a list of floats).
+        samples (a 1-D NumPy array of floats, like :meth:`times`).
 
         EXAMPLES::
 
@@ -191,7 +203,7 @@ class Trajectory(SageObject):
             sage: T = Trajectory([0, 1], [[1], [2]], [x], {a: 3})
             sage: from sage_dynsym.symbols import t
             sage: T.values('x'), T.values(a*x^2 + t)
-            ([1.0, 2.0], [3.0, 13.0])
+            (array([1., 2.]), array([ 3., 13.]))
 
         TESTS::
 
@@ -204,7 +216,7 @@ class Trajectory(SageObject):
             ...
             ModelError: values: b + x depends on b, which are not state variables or parameters of the trajectory
         """
-        return [float(v) for v in self._array(expression)]
+        return np.array(self._array(expression), dtype=float)
 
     def final_state(self):
         r"""The state at the last sample, as a dict over the variables.
@@ -269,44 +281,126 @@ class Trajectory(SageObject):
         scale = abs(E[0]) if E[0] != 0 else 1.0
         return float(np.max(np.abs(E - E[0])) / scale)
 
+    def dense(self, points=None):
+        r"""
+        Times and states between the samples, from the integrator's
+        continuous solution (its dense output, accurate to the integrator's
+        tolerance): a pair of arrays like :meth:`times` and :meth:`states`,
+        ``points`` of them (default: :data:`DENSE_POINTS`, at least 20 per
+        sample interval). Without a continuous solution (a trajectory built
+        from samples only), the samples themselves.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x = var('x')
+            sage: times, states = Trajectory([0, 1], [[1], [2]], [x], {}).dense()
+            sage: times, states.shape
+            (array([0., 1.]), (2, 1))
+
+        With the integrator's solution of `x' = x`, the values between two
+        samples are `e^t` to the tolerance::
+
+            sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+            sage: from sage_dynsym.numerics.simulate import simulate
+            sage: import numpy as np
+            sage: T = simulate(FirstOrderEquations([x], [x]), {}, {x: 1}, 1, points=2)
+            sage: times, states = T.dense(5)
+            sage: bool(max(abs(states[:, 0] - np.exp(times))) < 1e-8)
+            True
+        """
+        if self._dense is None:
+            return self._times, self._states
+        n = max(DENSE_POINTS, 20 * (len(self._times) - 1)) if points is None else int(points)
+        times = np.linspace(self._times[0], self._times[-1], n)
+        states = np.empty((n, len(self._variables)))
+        piece = np.clip(np.searchsorted(self._breaks, times, side='right') - 1, 0,
+                        len(self._dense) - 1)
+        for k, f in enumerate(self._dense):
+            here = piece == k
+            if here.any():
+                states[here] = np.asarray(f(times[here])).T
+        return times, states
+
+    def _title(self, what):
+        return f"{self._name}: {what}" if self._name else what
+
     def plot(self, *expressions, **options):
         r"""
         The graphs of state variables (default: all) or expressions of the
-        state against time, one colour each.
+        state against time, one colour each, drawn through the integrator's
+        continuous solution (see :meth:`dense`); the quantity on the
+        vertical axis (a legend when there are several) and a title naming
+        the model and the integrator. Options go to Sage's ``line`` (and
+        ``title=`` replaces the title).
 
         EXAMPLES::
 
             sage: from sage_dynsym.numerics.trajectory import Trajectory
             sage: x, dx = var('x dx')
             sage: T = Trajectory([0, 1, 2], [[1, 0], [0, -1], [-1, 0]], [x, dx], {})
-            sage: T.plot(x, dx^2)
+            sage: G = T.plot(x, dx^2); G
             Graphics object consisting of 2 graphics primitives
+            sage: G.axes_labels(), G._extra_kwds['title']
+            (('$t$', '$x$, $\\mathit{dx}^{2}$'), 'trajectory')
         """
         from sage.plot.graphics import Graphics
         from sage.plot.line import line
         from sage.plot.colors import rainbow
         expressions = expressions or tuple(self._variables)
+        title = options.pop('title', None)
         colors = rainbow(max(len(expressions), 1))
+        times, states = self.dense()
+        what = 'trajectory' if self._method is None else f'trajectory ({self._method})'
         G = Graphics()
         for expression, color in zip(expressions, colors):
-            G += line(list(zip(self._times.tolist(), self.values(expression))), color=color,
-                      legend_label=str(expression), **options)
-        G.axes_labels(['$t$', ''])
+            values = self._array(expression, times, states)
+            label = {} if len(expressions) == 1 else {'legend_label': _label(expression)}
+            G += line(list(zip(times.tolist(), values.tolist())), color=color, **label,
+                      **options)
+        G.axes_labels(['$t$', ', '.join(_label(e) for e in expressions)])
+        G._set_extra_kwds({'title': title if title is not None else self._title(what)})
         return G
 
     def phase_portrait(self, x, y, **options):
-        r"""The curve `(x(t), y(t))` of two state variables or expressions.
+        r"""
+        The curve `(x(t), y(t))` of two state variables or expressions,
+        drawn through the integrator's continuous solution (see
+        :meth:`dense`), with both quantities on the axes and a title.
 
         EXAMPLES::
 
             sage: from sage_dynsym.numerics.trajectory import Trajectory
             sage: x, dx = var('x dx')
             sage: T = Trajectory([0, 1, 2], [[1, 0], [0, -1], [-1, 0]], [x, dx], {})
-            sage: T.phase_portrait(x, dx)
+            sage: G = T.phase_portrait(x, dx); G
             Graphics object consisting of 1 graphics primitive
+            sage: G.axes_labels(), G._extra_kwds['title']
+            (('$x$', '$\\mathit{dx}$'), 'phase portrait')
         """
         from sage.plot.line import line
-        G = line(list(zip(self.values(x), self.values(y))), **options)
-        G.axes_labels([f'${SR(x)._latex_()}$' if not isinstance(x, str) else x,
-                       f'${SR(y)._latex_()}$' if not isinstance(y, str) else y])
+        title = options.pop('title', None)
+        times, states = self.dense()
+        G = line(list(zip(self._array(x, times, states).tolist(),
+                          self._array(y, times, states).tolist())),
+                 title=title if title is not None else self._title('phase portrait'),
+                 **options)
+        G.axes_labels([_label(x), _label(y)])
         return G
+
+
+#: Points drawn through the continuous solution by :meth:`Trajectory.plot`
+#: and :meth:`Trajectory.phase_portrait` (at least 20 per sample interval).
+DENSE_POINTS = 2000
+
+
+def _label(expression):
+    r"""The LaTeX of a quantity for an axis or a legend (a name as given).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.trajectory import _label
+        sage: _label(var('theta')), _label('x')
+        ('$\\theta$', 'x')
+    """
+    return expression if isinstance(expression, str) else f'${SR(expression)._latex_()}$'

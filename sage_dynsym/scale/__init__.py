@@ -16,6 +16,26 @@ scheduler when there is one, or plain NumPy in this process:
   :class:`~sage_dynsym.scale.sweep.Sweep`.
 
 See :mod:`sage_dynsym.scale.cluster` for where the chunks run.
+
+The names are imported on first use: the command line
+(:mod:`sage_dynsym.scale.cli`) parses its arguments, and answers
+``--help``, without loading Sage.
 """
-from .maps import stability_map, StabilityMap, model_linear_system
-from .sweep import sweep, Sweep
+import importlib
+
+_SOURCE = {'stability_map': '.maps', 'StabilityMap': '.maps', 'model_linear_system': '.maps',
+           'sweep': '.sweep', 'Sweep': '.sweep'}
+
+__all__ = list(_SOURCE)
+
+
+def __getattr__(name):
+    if name not in _SOURCE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(_SOURCE[name], __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))

@@ -21,12 +21,16 @@ Options:
   coordinates; default 0);
 - ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid;
 - ``--method auto|polynomial|eigvals``;
-- ``--scheduler ADDRESS`` -- a Dask scheduler to use (default: a local
-  cluster), ``--workers N`` for the local cluster, ``--numpy`` for no Dask,
-  ``--timeout S`` to reach the scheduler;
+- ``--scheduler ADDRESS`` -- a Dask scheduler to use (default: this
+  process, or a local cluster when the work is estimated to take longer
+  than :data:`~sage_dynsym.scale.cluster.CLUSTER_THRESHOLD` seconds),
+  ``--cluster`` to always start a local cluster, ``--workers N`` for the
+  local cluster, ``--numpy`` for no Dask, ``--timeout S`` to reach the
+  scheduler;
 - ``--progress`` -- Dask's progress bar;
 - ``-o PREFIX`` -- the output files (default: the file's name with
-  ``_map``, in the current directory).
+  ``_map``, in the current directory); existing files are replaced only
+  with ``--force``.
 
 Errors are one line on standard error and exit status 1.
 
@@ -50,6 +54,9 @@ EXAMPLES::
 import argparse
 import os
 import sys
+
+# the Sage-free part of the package: --help and argument errors answer at once
+from .cluster import CLUSTER_THRESHOLD
 
 
 def _assignment(text, what):
@@ -111,7 +118,11 @@ def parser():
     p = argparse.ArgumentParser(
         prog="sage-dynsym map",
         description="Stability map of the model of a description file over a grid of "
-                    "parameter values, on Dask; writes PREFIX.png and PREFIX.npz.")
+                    "parameter values; writes PREFIX.png and PREFIX.npz. Small maps are "
+                    "computed in this process, large ones on a local Dask cluster "
+                    "(or on --scheduler).",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog=EXAMPLE)
     p.add_argument("file", metavar="FILE", help="description file (circuit or mechanical)")
     p.add_argument("--param", type=_param, action="append", required=True,
                    metavar="NAME=LOW:HIGH:N", help="a parameter of the map and its range")
@@ -122,17 +133,33 @@ def parser():
     p.add_argument("--samples", type=_positive_int, metavar="N",
                    help="N random points instead of the grid")
     p.add_argument("--seed", type=int, default=0, help="seed of the random points")
-    p.add_argument("--method", choices=("auto", "polynomial", "eigvals"), default="auto")
+    p.add_argument("--method", choices=("auto", "polynomial", "eigvals"), default="auto",
+                   help="roots of the compiled characteristic polynomial (polynomial), or "
+                        "eigenvalues of the compiled matrices (eigvals); auto: polynomial "
+                        "up to degree 16")
     where = p.add_mutually_exclusive_group()
     where.add_argument("--scheduler", metavar="ADDRESS", help="address of a Dask scheduler")
     where.add_argument("--numpy", action="store_true", help="compute in this process, no Dask")
+    where.add_argument("--cluster", action="store_true",
+                       help="always start a local Dask cluster (default: only when the "
+                            "work is estimated to take longer than "
+                            f"{CLUSTER_THRESHOLD} s in this process)")
     p.add_argument("--workers", type=_positive_int, metavar="N",
                    help="workers of the local cluster (default: one per core)")
     p.add_argument("--timeout", type=_positive_int, default=10, metavar="S",
                    help="seconds to reach the scheduler (default: 10)")
     p.add_argument("--progress", action="store_true", help="show Dask's progress bar")
-    p.add_argument("-o", "--output", metavar="PREFIX", help="output files PREFIX.png, PREFIX.npz")
+    p.add_argument("-o", "--output", metavar="PREFIX", help="output files PREFIX.png, PREFIX.npz "
+                   "(default: the file's name with _map, in the current directory)")
+    p.add_argument("--force", action="store_true", help="replace existing output files")
     return p
+
+
+#: The example of ``sage-dynsym map --help``: it runs on a bundled file.
+EXAMPLE = """example (the RLC ladder of the bundled examples, in the plane of R1 and R2):
+  sage-dynsym map examples/rlc_ladder.yaml --param R1=-1:2:200 --param R2=-1:2:200 \\
+      --value R3=1 --value R4=2 --value L1=1 --value L2=1 --value L3=1 \\
+      --value C1=1 --value C2=1 --value C3=1 -o ladder"""
 
 
 def main(argv=None):
@@ -171,7 +198,7 @@ def _run(args):
     parameters = dict(args.param)
     if len(parameters) < len(args.param):
         raise DescriptionError("a parameter is given twice", entry="--param")
-    client = False if args.numpy else (args.scheduler or None)
+    client = False if args.numpy else 'local' if args.cluster else (args.scheduler or None)
     S = stability_map(model, parameters, fixed=dict(args.value), client=client,
                       samples=args.samples, seed=args.seed, at=dict(args.at),
                       method=args.method, conditions='lienard-chipart', workers=args.workers,
@@ -183,10 +210,16 @@ def _run(args):
     elif S.note():
         print(S.note())
     prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
+    picture = len(parameters) <= 2 or not S.is_grid()
+    outputs = [prefix + ".png"] * picture + [prefix + ".npz"]
+    existing = [f for f in outputs if os.path.exists(f)]
+    if existing and not args.force:
+        raise DescriptionError(f"{', '.join(existing)} exists already: give --force to replace "
+                               "it, or another -o PREFIX", entry="-o")
     written = []
-    if len(parameters) <= 2 or not S.is_grid():
+    if picture:
         G = S.plot()
-        G.save(prefix + ".png", figsize=[7, 6])
+        G.save(prefix + ".png", figsize=[8, 6])
         written.append(prefix + ".png")
     S.save(prefix + ".npz")
     written.append(prefix + ".npz")

@@ -5,14 +5,27 @@ Running chunks of work on Dask, or in this process
 stop)`` of a computation and hands each result to a collector, in chunk
 order or as they complete. Where it runs is given by ``client``:
 
-- ``None`` -- a :class:`dask.distributed.LocalCluster` of worker processes
-  (one thread each, on 127.0.0.1, without dashboard), one per core unless
-  ``workers=`` says otherwise, started for this computation and closed
-  after it;
+- ``None`` (the default) -- chosen by the cost: the first chunk runs in
+  this process and is timed; when the estimated time of the others, at
+  that pace, exceeds :data:`CLUSTER_THRESHOLD` seconds and the machine has
+  more than one core, a local Dask cluster is started for them (as for
+  ``'local'``), otherwise they run here too. Starting a cluster costs a
+  few seconds, and on a small machine it can at best divide the time by
+  the number of cores, so small computations never pay for it. A note is
+  logged (``logging``, logger ``sage_dynsym.scale``) when a cluster is
+  started;
+- ``'local'`` -- a local Dask cluster, started for this computation and
+  closed after it: a scheduler in this process and worker processes (one
+  thread each, on 127.0.0.1, without dashboard), one per core unless
+  ``workers=`` says otherwise (giving ``workers=`` with ``client=None``
+  also asks for one). The workers are started as fresh Python processes
+  (``python -m dask``), not by :mod:`multiprocessing`: they never
+  import the user's script, so a plain script without an
+  ``if __name__ == '__main__':`` guard works;
 - a :class:`dask.distributed.Client` -- used as given (e.g. connected to a
   scheduler of a cluster), left open;
-- a string -- the address of a scheduler (``'tcp://host:8786'``), connected
-  to for this computation;
+- a string other than ``'local'`` -- the address of a scheduler
+  (``'tcp://host:8786'``), connected to for this computation;
 - ``False`` -- no Dask at all: the chunks run one after the other in this
   process (plain NumPy).
 
@@ -30,16 +43,28 @@ EXAMPLES::
     sage: out = {}
     sage: run_chunks(lambda task, a, b: task * (b - a), 10, chunks(7, 3),
     ....:            lambda i, r: out.__setitem__(i, r), client=False)
+    'this process'
     sage: out
     {0: 30, 1: 30, 2: 10}
 """
 import contextlib
+import logging
 import os
+import time
 import uuid
 
 from ..errors import AnalysisError
 
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
+
+#: Seconds of estimated work (at the pace of the first chunk, in this
+#: process) above which ``client=None`` starts a local cluster for the rest.
+CLUSTER_THRESHOLD = 30
+
+#: Seconds to wait for the workers of a local cluster to start.
+LOCAL_START_TIMEOUT = 120
+
+_log = logging.getLogger('sage_dynsym.scale')
 
 
 def chunks(total, size):
@@ -119,10 +144,11 @@ def _dask():
 
 
 @contextlib.contextmanager
-def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
+def connected(client='local', workers=None, timeout=DEFAULT_TIMEOUT):
     r"""
-    A Dask client for ``client`` (see the module documentation), closed on
-    exit if it was opened here.
+    A Dask client for ``client`` (``'local'``, a ``Client`` or a scheduler
+    address; see the module documentation), closed on exit if it was
+    opened here.
 
     TESTS:
 
@@ -136,7 +162,7 @@ def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
         sage: with connected(42): pass
         Traceback (most recent call last):
         ...
-        AnalysisError: scale: client must be None (a local cluster), False (no Dask), a Dask Client or a scheduler address, got 42
+        AnalysisError: scale: client must be None (chosen by the cost), 'local' (a local cluster), False (no Dask), a Dask Client or a scheduler address, got 42
     """
     distributed = _dask()
     if isinstance(client, distributed.Client):
@@ -145,7 +171,7 @@ def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
         _wait_for_workers(client, timeout, "the scheduler of the given client")
         yield client
         return
-    if isinstance(client, str):
+    if isinstance(client, str) and client != 'local':
         try:
             c = distributed.Client(client, timeout=timeout, set_as_default=False)
         except (OSError, TimeoutError, ValueError) as err:
@@ -155,31 +181,64 @@ def connected(client=None, workers=None, timeout=DEFAULT_TIMEOUT):
             _wait_for_workers(c, timeout, f"the scheduler at {client}")
             yield c
         return
-    if client is not None:
-        raise AnalysisError("client must be None (a local cluster), False (no Dask), a Dask "
-                            f"Client or a scheduler address, got {client!r}", entry="scale")
+    if client != 'local':
+        raise AnalysisError("client must be None (chosen by the cost), 'local' (a local "
+                            "cluster), False (no Dask), a Dask Client or a scheduler "
+                            f"address, got {client!r}", entry="scale")
     n = machine_cores() if workers is None else int(workers)
     if n < 1:
         raise AnalysisError(f"workers must be a positive integer, got {workers!r}", entry="scale")
-    # no dashboard; the scheduler's HTTP endpoints on a free port of 127.0.0.1
-    http = dict(dashboard=False, dashboard_address='127.0.0.1:0')
-    with distributed.LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                  host='127.0.0.1', dashboard_address=None,
-                                  scheduler_kwargs=http) as cluster, \
-            distributed.Client(cluster, set_as_default=False) as c:
+    with local_cluster(n) as cluster, distributed.Client(cluster, set_as_default=False) as c:
+        _wait_for_workers(c, LOCAL_START_TIMEOUT, "the local cluster", n)
         yield c
 
 
-def _wait_for_workers(client, timeout, what):
+def local_cluster(workers):
+    r"""
+    A local Dask cluster of ``workers`` worker processes (one thread each,
+    on 127.0.0.1, no dashboard), its scheduler in this process.
+
+    The workers are fresh interpreters (``python -m dask``, one process
+    each, without a nanny: a chunk lost with a worker is computed again by
+    another one), not children made by
+    :mod:`multiprocessing`: the ``spawn`` and ``forkserver`` start methods
+    import the main script again in every child, which runs an unguarded
+    script once per worker and fails; ``fork`` is unsafe in a process with
+    threads, which a Sage session has.
+
+    EXAMPLES::
+
+        sage: from distributed import Client
+        sage: from sage_dynsym.scale.cluster import local_cluster
+        sage: with local_cluster(1) as cluster, Client(cluster) as c:
+        ....:     c.submit(lambda x: x + 1, 1).result()
+        2
+    """
+    from distributed import Scheduler, SpecCluster
+    from distributed.deploy.subprocess import SubprocessWorker
+    quiet = logging.ERROR
+    worker = {'cls': SubprocessWorker,
+              'options': {'worker_class': 'distributed.Worker',
+                          'worker_kwargs': {'nthreads': 1, 'host': '127.0.0.1',
+                                            'silence_logs': quiet}}}
+    scheduler = {'cls': Scheduler,
+                 'options': {'host': '127.0.0.1', 'dashboard': False,
+                             'dashboard_address': None}}
+    return SpecCluster(scheduler=scheduler, workers={i: worker for i in range(workers)},
+                       worker=worker, silence_logs=quiet, name='sage_dynsym')
+
+
+def _wait_for_workers(client, timeout, what, n=1):
     try:
-        client.wait_for_workers(1, timeout=timeout)
+        client.wait_for_workers(n, timeout=timeout)
     except (TimeoutError, OSError) as err:
         raise AnalysisError(f"{what} has no worker after {timeout} s ({err})",
                             entry="scale") from None
 
 
 def run_chunks(function, task, ranges, collect, client=None, workers=None,
-               timeout=DEFAULT_TIMEOUT, progress=False, label='chunk'):
+               timeout=DEFAULT_TIMEOUT, progress=False, label='chunk',
+               threshold=CLUSTER_THRESHOLD):
     r"""
     Compute ``function(task, start, stop)`` for each ``(start, stop)`` of
     ``ranges`` and call ``collect(i, result)`` for the ``i``-th one.
@@ -196,17 +255,53 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
       documentation)
     - ``progress`` -- show Dask's progress bar
     - ``label`` -- the prefix of the Dask task names
+    - ``threshold`` -- (default: :data:`CLUSTER_THRESHOLD`) with
+      ``client=None``: the estimated seconds of work above which a local
+      cluster is started
+
+    OUTPUT: where the chunks ran: ``'this process'``, ``'local cluster'``
+    or ``'dask'`` (a given client or scheduler)
 
     Errors of a chunk are raised here; a chunk whose workers keep dying is
     an :class:`~sage_dynsym.errors.AnalysisError`.
 
-    EXAMPLES: see the module documentation, and
-    :func:`~sage_dynsym.scale.maps.stability_map`.
+    EXAMPLES:
+
+    Small work stays in this process when the choice is left to the cost::
+
+        sage: from sage_dynsym.scale.cluster import run_chunks, chunks
+        sage: out = {}
+        sage: run_chunks(lambda task, a, b: task * (b - a), 10, chunks(7, 3),
+        ....:            lambda i, r: out.__setitem__(i, r))
+        'this process'
+        sage: out
+        {0: 30, 1: 30, 2: 10}
+
+    See also :func:`~sage_dynsym.scale.maps.stability_map`.
     """
+    first = 0
+    if client is None and workers is None:
+        if not ranges:
+            return 'this process'
+        begin = time.perf_counter()
+        collect(0, function(task, *ranges[0]))
+        elapsed = time.perf_counter() - begin
+        first = 1
+        size = max(1, ranges[0][1] - ranges[0][0])
+        estimate = elapsed * sum(b - a for a, b in ranges[1:]) / size
+        if estimate <= threshold or machine_cores() < 2:
+            client = False
+        else:
+            _log.info("about %.0f s of work left at the pace of the first chunk: "
+                      "starting a local Dask cluster of %d workers", estimate,
+                      machine_cores() if workers is None else workers)
+            client = 'local'
+    elif client is None:
+        client = 'local'
     if client is False:
-        for i, (a, b) in enumerate(ranges):
-            collect(i, function(task, a, b))
-        return
+        for i in range(first, len(ranges)):
+            collect(i, function(task, *ranges[i]))
+        return 'this process'
     distributed = _dask()
     from . import kernel
     shipped = _Shipped(function) if getattr(function, '__module__', None) == kernel.__name__ \
@@ -215,8 +310,8 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
     with connected(client, workers, timeout) as c:
         data = c.submit(_Shipped(kernel.identity), task, key=f"{label}-data-{token}", pure=False)
         futures = [c.submit(shipped, data, a, b, key=f"{label}-{token}-{i}", pure=False)
-                   for i, (a, b) in enumerate(ranges)]
-        index = {f.key: i for i, f in enumerate(futures)}
+                   for i, (a, b) in enumerate(ranges) if i >= first]
+        index = {f.key: first + i for i, f in enumerate(futures)}
         try:
             if progress:
                 _show_progress(c, futures)
@@ -233,6 +328,7 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
             raise
         finally:
             del futures, data
+    return 'local cluster' if client == 'local' else 'dask'
 
 
 def _show_progress(client, futures):

@@ -20,6 +20,9 @@ EXAMPLES::
     sage: run_program(prog, [np.array([1., 2.]), np.array([4., 4.])], 2)
     [array([-1.,  2.]), array([1.68294197, 1.81859485]), array([False, False])]
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# first (this subpackage's face stays Sage-free for the command line)
+import sage.all  # noqa: F401
 import operator
 
 from sage.symbolic.operators import add_vararg, mul_vararg
@@ -30,7 +33,7 @@ from ..numerics.expressions import real_constant, function_name
 from .kernel import FUNCTIONS
 
 #: what a user can do about a symbol or function without a value
-_HINT = "; give it a value in fixed="
+_HINT = "; give it a value in fixed= (--value NAME=NUMBER on the command line)"
 
 _COMPARISONS = {operator.gt: 'gt', operator.ge: 'ge', operator.lt: 'lt',
                 operator.le: 'le', operator.eq: 'eq', operator.ne: 'ne'}
@@ -66,12 +69,12 @@ def compile_expressions(expressions, inputs, entry="stability_map"):
         sage: compile_expressions([x + y], [x])
         Traceback (most recent call last):
         ...
-        AnalysisError: stability_map: no value for y (give it as a parameter or in fixed=)
+        AnalysisError: stability_map: no value for y (give it as a parameter or in fixed=; --param or --value on the command line)
         sage: f = function('f')
         sage: compile_expressions([diff(f(x), x).subs(x=0) * y], [y])
         Traceback (most recent call last):
         ...
-        AnalysisError: stability_map: D[0](f)(0) has no numerical value; give it a value in fixed=
+        AnalysisError: stability_map: D[0](f)(0) has no numerical value; give it a value in fixed= (--value NAME=NUMBER on the command line)
         sage: compile_expressions([I*x], [x])
         Traceback (most recent call last):
         ...
@@ -91,8 +94,8 @@ def compile_expressions(expressions, inputs, entry="stability_map"):
         if e in position:
             r = emit(('input', position[e]))
         elif e.is_symbol():
-            raise AnalysisError(f"no value for {e} (give it as a parameter or in fixed=)",
-                                entry=entry)
+            raise AnalysisError(f"no value for {e} (give it as a parameter or in fixed=; "
+                                "--param or --value on the command line)", entry=entry)
         else:
             op = e.operator()
             if op is None:
@@ -113,8 +116,7 @@ def compile_expressions(expressions, inputs, entry="stability_map"):
             elif function_name(op) in FUNCTIONS:
                 r = emit(('call', function_name(op)) + tuple(walk(o) for o in e.operands()))
             else:
-                raise AnalysisError(f"{e} has no numerical value; give it a value in fixed=",
-                                    entry=entry)
+                raise AnalysisError(f"{e} has no numerical value{_HINT}", entry=entry)
         memo[e] = r
         return r
 

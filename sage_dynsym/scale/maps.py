@@ -50,8 +50,16 @@ included::
 
     sage: S.agreement([c > 0, k > 0])
     1.0
-    sage: S.plot([c > 0, k > 0])
-    Graphics object consisting of 3 graphics primitives
+    sage: G = S.plot([c > 0, k > 0]); G
+    Graphics object consisting of 5 graphics primitives
+
+The picture has a legend naming the colours and the exact boundary, and a
+title with the fixed values::
+
+    sage: sorted(p.options()['legend_label'] for p in G if p.options().get('legend_label'))
+    ['asymptotically stable', 'exact boundary', 'unstable']
+    sage: G._extra_kwds['title']
+    'stability map\n$m = 1$'
 
 The same map on a Dask cluster (here a local one, started and closed for
 the computation) is identical::
@@ -60,11 +68,15 @@ the computation) is identical::
     sage: bool((T.max_real_part() == S.max_real_part()).all())
     True
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# first (this subpackage's face stays Sage-free for the command line)
+import sage.all  # noqa: F401
 import os
 
 import numpy as np
 
 from sage.matrix.constructor import matrix, block_matrix, identity_matrix, zero_matrix
+from sage.misc.latex import latex
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
@@ -101,8 +113,11 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     - ``fixed`` -- dict ``{symbol: number}``, the values of the other
       symbols; a key may also be an expression of the system such as
       ``diff(f(u), u).subs(u=0)``
-    - ``client`` -- ``None`` (a local Dask cluster, started and closed),
-      a Dask ``Client``, a scheduler address, or ``False`` (no Dask); see
+    - ``client`` -- ``None`` (default: in this process, or a local Dask
+      cluster when the estimated work exceeds
+      :data:`~sage_dynsym.scale.cluster.CLUSTER_THRESHOLD` seconds),
+      ``'local'`` (a local Dask cluster, started and closed), a Dask
+      ``Client``, a scheduler address, or ``False`` (no Dask); see
       :mod:`sage_dynsym.scale.cluster`
     - ``samples`` -- (optional) a number of uniform random points in the box
       of the ranges instead of the grid, drawn from ``seed``
@@ -116,7 +131,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
       polynomial with :func:`~sage_dynsym.analysis.hurwitz.lienard_chipart_conditions`
     - ``chunk_size`` -- points per Dask task
     - ``workers`` -- the number of workers of the local cluster (default:
-      one per core)
+      one per core; giving it with ``client=None`` asks for a local cluster)
     - ``timeout`` -- seconds to reach a scheduler and get a worker
     - ``progress`` -- show Dask's progress bar
 
@@ -145,7 +160,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         ....:                   variables=[x, y], client=False)
         Traceback (most recent call last):
         ...
-        AnalysisError: stability_map: no value for b: give it as a parameter or in fixed=
+        AnalysisError: stability_map: no value for b: give it as a parameter or in fixed= (--param or --value on the command line)
         sage: S = stability_map([y, -a*x - b*y], {a: (0, 1, 5)}, fixed={'b': 'one'},
         ....:                   at={x: 0, y: 0}, variables=[x, y], client=False)
         Traceback (most recent call last):
@@ -191,7 +206,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     if missing:
         raise AnalysisError(f"no value for {', '.join(map(str, missing))}: give "
                             f"{'it' if len(missing) == 1 else 'them'} as a parameter or in "
-                            "fixed=", entry=entry)
+                            "fixed= (--param or --value on the command line)", entry=entry)
     lam = SR.symbol()                       # a fresh variable: no clash with the system's
     poly, note = None, None
     if method != 'eigvals' or conditions == 'lienard-chipart':
@@ -219,8 +234,10 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
                timeout=timeout, progress=progress, label='stability-map')
     if conditions == 'lienard-chipart':
         conditions, note = _lienard_chipart(poly, lam, note)
+    name = system.name() if _is_model(system) and callable(getattr(system, 'name', None)) \
+        else None
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
-                        values, method, tol, conditions, note)
+                        values, method, tol, conditions, note, name)
 
 
 # ---------------------------------------------------------------------------
@@ -475,10 +492,11 @@ class StabilityMap(SageObject):
     EXAMPLES: see :func:`stability_map`.
     """
 
-    def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None):
+    def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None,
+                 name=None):
         self._points, self._alpha, self._stable = points, alpha, stable
         self._fixed, self._method, self._tol = dict(fixed), method, tol
-        self._conditions, self._note = conditions, note
+        self._conditions, self._note, self._name = conditions, note, name
 
     def _repr_(self):
         names = ', '.join(map(str, self._points.keys))
@@ -652,23 +670,12 @@ class StabilityMap(SageObject):
         if conditions is None:
             raise AnalysisError("no conditions: give them (e.g. from "
                                 "lienard_chipart_conditions)", entry="StabilityMap")
-        conditions = list(conditions)
-        if conditions and all(isinstance(c, (list, tuple)) for c in conditions):
-            alternatives = [list(c) for c in conditions]
-        else:
-            alternatives = [conditions]
-        flat = [as_relational(SR(c).subs(self._fixed)) for alt in alternatives for c in alt]
-        program = compile_expressions(flat, self._points.keys, entry="StabilityMap.exact")
+        alternatives, program = _compiled_conditions(conditions, self._fixed, self._points.keys,
+                                                     "StabilityMap.exact")
         result = np.empty(self._points.size, dtype=bool)
         for a, b in chunks(self._points.size, CHUNK):
-            held = iter(run_program(program, chunk_points(self._points.layout, a, b), b - a))
-            verdict = np.zeros(b - a, dtype=bool)
-            for alt in alternatives:
-                ok = np.ones(b - a, dtype=bool)
-                for _ in alt:
-                    ok &= next(held)
-                verdict |= ok
-            result[a:b] = verdict
+            result[a:b] = _holds(program, alternatives, chunk_points(self._points.layout, a, b),
+                                 b - a)
         return result.reshape(self._points.shape)
 
     def agreement(self, conditions=None, band=0):
@@ -732,7 +739,7 @@ class StabilityMap(SageObject):
             sage: S = stability_map(LinearSystem([var('x')], J=[[a + b + c]]),
             ....:                   {a: (-1, 1, 5), b: (-1, 1, 5), c: (-1, 1, 3)}, client=False)
             sage: S.plot([-a - b - c], section={c: 0.4})
-            Graphics object consisting of 3 graphics primitives
+            Graphics object consisting of 5 graphics primitives
             sage: S.plot()
             Traceback (most recent call last):
             ...
@@ -760,21 +767,39 @@ class StabilityMap(SageObject):
             raise AnalysisError(f"a map of {len(keys)} parameters: give section={{...}} fixing "
                                 "all but two", entry="StabilityMap.plot")
         stable, alpha = stable[tuple(index)], alpha[tuple(index)]
+        title = options.pop('title', None)
         G = Graphics()
         if len(free) == 1:
             G += self._plot_line(keys[free[0]], axes[free[0]], alpha, stable, options)
-            G.axes_labels([f"${keys[free[0]]}$", "max Re lambda"])
+            G.axes_labels([f"${latex(keys[free[0]])}$", r"max $\mathrm{Re}\,\lambda$"])
         else:
             # a frame with ticks, not axes through the origin
             options = dict(dict(frame=True, axes=False, ticks_integer=False), **options)
-            G += self._plot_plane([keys[i] for i in free], [axes[i] for i in free], alpha,
-                                  stable, options)
-            if conditions is not None:
-                G += _exact_boundary(conditions, fixed, [keys[i] for i in free],
-                                     [axes[i] for i in free], options)
-            G.axes_labels([f"${keys[i]}$" for i in free])
+            plane = [keys[i] for i in free], [axes[i] for i in free]
+            G += self._plot_plane(*plane, alpha, stable, options)
+            boundary = Graphics() if conditions is None else \
+                _exact_boundary(conditions, fixed, *plane, options)
+            G += boundary
+            G += _legend(plane[1], [(_COLOURS[2], 'asymptotically stable'),
+                                    (_COLOURS[0], 'unstable')] +
+                         ([(_COLOURS[1], 'not defined')] if not np.isfinite(alpha).all() else [])
+                         + ([('black', 'exact boundary')] if boundary else []))
+            G.set_legend_options(loc='upper left', bbox_to_anchor=(1.02, 1), borderaxespad=0,
+                                 font_size='small')
+            G.axes_labels([f"${latex(k)}$" for k in plane[0]])
+        G._extra_kwds['title'] = self._title(fixed) if title is None else title
         G.set_aspect_ratio('automatic')
         return G
+
+    def _title(self, fixed):
+        r"""The title of the map's pictures: the system's name and the fixed
+        values (the section's included)."""
+        head = f"{self._name}: stability map" if self._name else "stability map"
+        if not fixed:
+            return head
+        values = ', '.join(f"${latex(k)} = {latex(v)}$" for k, v in
+                           sorted(fixed.items(), key=lambda kv: str(kv[0])))
+        return f"{head}\n{values}"
 
     def _plot_plane(self, keys, axes, alpha, stable, options):
         from matplotlib.colors import ListedColormap
@@ -782,8 +807,7 @@ class StabilityMap(SageObject):
         data = np.where(np.isfinite(alpha), np.where(stable, 2.0, 0.0), 1.0)
         X, Y = axes
         return matrix_plot(data.T, xrange=_extent(X), yrange=_extent(Y), flip_y=False,
-                           cmap=ListedColormap(['#f4cccc', '#dddddd', '#b6e3b6']), vmin=0,
-                           vmax=2, **options)
+                           cmap=ListedColormap(_COLOURS), vmin=0, vmax=2, **options)
 
     def _plot_line(self, key, axis, alpha, stable, options):
         from sage.plot.line import line
@@ -856,6 +880,49 @@ def as_relational(condition):
     return e if e.is_relational() else e > 0
 
 
+#: The colours of the map: unstable, not defined, asymptotically stable.
+_COLOURS = ['#f4cccc', '#dddddd', '#b6e3b6']
+
+
+def _legend(axes, entries):
+    r"""Legend entries (colour, label) for a plane picture: lines of no
+    length at a corner of the box, seen only in the legend (a thick stroke
+    for a colour of the map, a thin one for a boundary)."""
+    from sage.plot.graphics import Graphics
+    from sage.plot.line import line
+    corner = (float(axes[0][0]), float(axes[1][0]))
+    G = Graphics()
+    for colour, label in entries:
+        G += line([corner, corner], color=colour, legend_label=label,
+                  thickness=1.5 if colour == 'black' else 10)
+    return G
+
+
+def _compiled_conditions(conditions, fixed, keys, entry):
+    r"""The alternatives of ``conditions`` (a list of lists of relationals,
+    the fixed values substituted) and their relations compiled in ``keys``."""
+    conditions = list(conditions)
+    if conditions and all(isinstance(c, (list, tuple)) for c in conditions):
+        alternatives = [[as_relational(SR(c).subs(fixed)) for c in alt] for alt in conditions]
+    else:
+        alternatives = [[as_relational(SR(c).subs(fixed)) for c in conditions]]
+    flat = [c for alt in alternatives for c in alt]
+    return alternatives, compile_expressions(flat, keys, entry=entry)
+
+
+def _holds(program, alternatives, inputs, size):
+    r"""Where one of the alternatives holds, at ``size`` points (``inputs``
+    one array per key of the compiled program)."""
+    held = iter(run_program(program, inputs, size))
+    verdict = np.zeros(size, dtype=bool)
+    for alt in alternatives:
+        ok = np.ones(size, dtype=bool)
+        for _ in alt:
+            ok &= next(held)
+        verdict |= ok
+    return verdict
+
+
 def _extent(axis):
     step = (axis[-1] - axis[0]) / (len(axis) - 1) if len(axis) > 1 else 1.0
     return float(axis[0] - step / 2), float(axis[-1] + step / 2)
@@ -881,19 +948,37 @@ def _shift(a, axis, combine):
     return out
 
 
+#: Points per axis of the grid on which the exact region is drawn.
+BOUNDARY_POINTS = 600
+
+
 def _exact_boundary(conditions, fixed, keys, axes, options):
-    from sage.plot.contour_plot import region_plot
+    r"""
+    The boundary of the region where the exact ``conditions`` hold, in the
+    plane of ``keys`` (``fixed`` the other values): the level 1/2 of its
+    indicator on a fine grid, so that only the boundary of the union of the
+    alternatives is drawn -- never a line between two alternatives, nor a
+    line where the conditions hold (or fail) on both sides. Empty when the
+    boundary does not cross the plotted box.
+    """
+    from sage.plot.contour_plot import contour_plot
     from sage.plot.graphics import Graphics
-    conditions = list(conditions)
-    alternatives = ([list(c) for c in conditions] if conditions and
-                    all(isinstance(c, (list, tuple)) for c in conditions) else [conditions])
     (x, y), (X, Y) = keys, axes
-    G = Graphics()
-    for alt in alternatives:
-        rels = [as_relational(SR(c).subs(fixed)) for c in alt]
-        rels = [r for r in rels if set(r.variables()) & {x, y}]
-        if rels:
-            G += region_plot(rels, (x, float(X[0]), float(X[-1])), (y, float(Y[0]), float(Y[-1])),
-                             incol='darkgreen', alpha=0.0, bordercol='black', plot_points=200,
-                             **options)
-    return G
+    alternatives, program = _compiled_conditions(conditions, fixed, [x, y],
+                                                 "StabilityMap.plot")
+    n = BOUNDARY_POINTS
+    xs = np.linspace(float(X[0]), float(X[-1]), n)
+    ys = np.linspace(float(Y[0]), float(Y[-1]), n)
+    gx, gy = np.meshgrid(xs, ys, indexing='ij')
+    inside = _holds(program, alternatives, [gx.ravel(), gy.ravel()], n * n).reshape(n, n)
+    if inside.all() or not inside.any():
+        return Graphics()
+    lookup = inside.astype(float)
+
+    def indicator(u, v):
+        i = min(n - 1, max(0, int(round((u - xs[0]) / (xs[-1] - xs[0]) * (n - 1)))))
+        j = min(n - 1, max(0, int(round((v - ys[0]) / (ys[-1] - ys[0]) * (n - 1)))))
+        return lookup[i, j]
+
+    return contour_plot(indicator, (xs[0], xs[-1]), (ys[0], ys[-1]), contours=[0.5],
+                        fill=False, cmap=['black'], plot_points=n, **options)

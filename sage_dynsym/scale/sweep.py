@@ -38,6 +38,9 @@ EXAMPLES::
            [14.715, 15.465],
            [19.62 , 20.62 ]])
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# first (this subpackage's face stays Sage-free for the command line)
+import sage.all  # noqa: F401
 import math
 
 import numpy as np
@@ -66,8 +69,11 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
     - ``parameters`` -- dict ``{name: (low, high, n)}`` (names, or symbols
       whose names are used), or ``{name: 1-D NumPy array}``; the result is
       indexed in this order
-    - ``client`` -- ``None`` (a local Dask cluster, started and closed), a
-      Dask ``Client``, a scheduler address, or ``False`` (no Dask)
+    - ``client`` -- ``None`` (default: in this process, or a local Dask
+      cluster when the estimated work exceeds
+      :data:`~sage_dynsym.scale.cluster.CLUSTER_THRESHOLD` seconds),
+      ``'local'``, a Dask ``Client``, a scheduler address, or ``False`` (no
+      Dask); see :mod:`sage_dynsym.scale.cluster`
     - ``fixed`` -- dict of further keyword arguments (for a model: further
       values)
     - ``samples``, ``seed`` -- random points instead of the grid, as for

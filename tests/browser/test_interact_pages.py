@@ -19,13 +19,9 @@ from pathlib import Path
 
 import pytest
 
-playwright = pytest.importorskip("playwright.sync_api")
+pytest.importorskip("playwright.sync_api")
 
 ROOT = Path(__file__).resolve().parents[2]
-ARTIFACTS = Path(__file__).resolve().parent / "artifacts"
-CHROMIUM = os.environ.get("CHROMIUM", shutil.which("chromium") or "/usr/bin/chromium")
-FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync"]
 TOKEN = "sage-dynsym-browser-test"
 TIMEOUT_MS = int(os.environ.get("BROWSER_TIMEOUT_MS", "300000"))
 
@@ -37,9 +33,7 @@ def _free_port():
 
 
 @pytest.fixture(scope="module")
-def server(tmp_path_factory):
-    if not os.path.exists(CHROMIUM):
-        pytest.fail(f"no chromium at {CHROMIUM} (make browser installs it)")
+def server(tmp_path_factory, chromium):
     root = tmp_path_factory.mktemp("worksheets")
     for nb in (ROOT / "worksheets").glob("*.ipynb"):
         shutil.copy(nb, root)
@@ -89,21 +83,15 @@ def _set_slider(page, label, value):
     page.keyboard.press("Enter")
 
 
-def test_stability_explorer_renders_and_reacts(server, tmp_path):
-    ARTIFACTS.mkdir(exist_ok=True)
-    with playwright.sync_playwright() as p:
-        context = p.chromium.launch_persistent_context(
-            str(tmp_path / "chromium-profile"), executable_path=CHROMIUM, headless=True,
-            args=FLAGS, viewport={"width": 1280, "height": 2400})
-        page = context.new_page()
-        try:
-            _explore(page, server)
-        finally:
-            page.screenshot(path=str(ARTIFACTS / "last_state.png"), full_page=True)
-            context.close()
+def test_stability_explorer_renders_and_reacts(server, launch, artifacts):
+    page = launch(viewport={"width": 1280, "height": 2400}).new_page()
+    try:
+        _explore(page, server, artifacts)
+    finally:
+        page.screenshot(path=str(artifacts / "last_state.png"), full_page=True)
 
 
-def _explore(page, server):
+def _explore(page, server, artifacts):
     page.goto(f"{server}/notebooks/10_stability_explorer.ipynb?token={TOKEN}")
     page.locator(".jp-Notebook").wait_for(timeout=TIMEOUT_MS)
     page.locator(".jp-Notebook-cell").first.wait_for(timeout=TIMEOUT_MS)
@@ -117,7 +105,7 @@ def _explore(page, server):
     page.locator("mjx-container").first.wait_for(timeout=TIMEOUT_MS)
     page.locator(".jp-OutputArea-output img").first.wait_for(timeout=TIMEOUT_MS)
     page.locator(".widget-slider").first.scroll_into_view_if_needed()
-    page.screenshot(path=str(ARTIFACTS / "stability_explorer.png"), full_page=True)
+    page.screenshot(path=str(artifacts / "stability_explorer.png"), full_page=True)
     # across the boundary 1 - 3 R g s^2 = 0 (R = 2, s = 1): unstable
     _set_slider(page, "g", 0.5)
     page.wait_for_function(
@@ -126,5 +114,5 @@ def _explore(page, server):
         timeout=TIMEOUT_MS)
     page.locator(".jp-OutputArea-output img").first.wait_for(timeout=TIMEOUT_MS)
     time.sleep(2)
-    page.screenshot(path=str(ARTIFACTS / "stability_explorer_unstable.png"), full_page=True)
+    page.screenshot(path=str(artifacts / "stability_explorer_unstable.png"), full_page=True)
     assert page.locator("mjx-container").count() > 0

@@ -29,37 +29,18 @@ EXAMPLES::
     Hamiltonian:
       ...
 """
+# Sage's symbolic functions, Maxima and coercions need the whole library initialised
+# first (the package's face loads it lazily, only when a name is used)
+import sage.all  # noqa: F401
 import operator
 
 from sage.misc.latex import latex
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
-from .errors import DynSymError, BudgetError
+from ..errors import DynSymError, BudgetError
 
-#: Default size budget of one report section: the largest number of
-#: polynomial terms a section may create (estimated before it does).
-DEFAULT_BUDGET = 100_000
-
-#: The sections of a report, in the order they are printed.
-SECTIONS = {
-    'lagrangian': "the Lagrangian (mechanical systems; linear circuits, loop method)",
-    'equations': "the Lagrange equations",
-    'routh': "the Routh function and equations for the cyclic coordinates",
-    'stationary': "stationary motions or equilibria with their stability",
-    'hamiltonian': "the Hamiltonian (Dirac's scheme for a singular Lagrangian)",
-    'mixed_potential': "the Brayton-Moser mixed potential of a circuit",
-    'state_equations': "the state equations of a circuit",
-    'lyapunov': "dP/dt along the state equations of a circuit",
-    'stability': "stability of the free linear circuit (characteristic polynomial, "
-                 "Lienard-Chipart conditions)",
-    'casimirs': "the Casimir functions of a Lie-Poisson system",
-    'integrals': "polynomial first integrals of degree <= 2 of a Lie-Poisson system",
-}
-
-#: The sections that are analysis (left out by ``analysis=False``, the
-#: command line's ``--no-analysis``).
-ANALYSIS_SECTIONS = ('stationary', 'lyapunov', 'stability', 'integrals')
+from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 
 #: Term counts beyond this are reported as this (they are over any budget).
 _TERMS_CAP = 10**30
@@ -245,7 +226,7 @@ def lagrangian_estimate(system):
         ....:                                               mass=(m + k)^3)], [x]))
         16
     """
-    from .mechanics.force_functions import UniformGravity, NewtonianField
+    from ..mechanics.force_functions import UniformGravity, NewtonianField
     depth, data = [0], []
     for k, body in enumerate(system.bodies(), 1):
         turning = sum(1 for _, angle in body.rotations() if SR(angle).variables())
@@ -378,7 +359,7 @@ def _stationary(L, cyclic, lines, positive=()):
     r"""The stationary motions (Routh function at rest, solved for the cyclic
     momenta) or equilibria, each with its existence conditions and a
     stability verdict (Routh--Lyapunov, then first approximation)."""
-    from .analysis import stationary_motions
+    from ..analysis import stationary_motions
     reduced = L.routh(cyclic) if cyclic and len(cyclic) < len(L.coordinates()) else L
     routh = reduced is not L
     what = ("Stationary motions (Routh function at rest, cyclic momenta constant)"
@@ -397,7 +378,7 @@ def _stationary(L, cyclic, lines, positive=()):
 
 
 def _linear_circuit_stability(circuit, L, lines, out):
-    from .analysis import linearize, lienard_chipart_conditions
+    from ..analysis import linearize, lienard_chipart_conditions
     sources = {SR.var(b.name): 0 for b in circuit.branches()
                if b.kind in ('voltage_source', 'current_source')}
     # declared signs, else the symbols of the element values (physical
@@ -435,7 +416,7 @@ def _check_routh_scheme(poly, lam, budget):
     # run it with the budget first (the costly products are not made)
     from sage.rings.rational_field import QQ
     try:
-        from .analysis.hurwitz import _normalized_coefficients, _routh_scheme
+        from ..analysis.hurwitz import _normalized_coefficients, _routh_scheme
     except ImportError:     # without the probe: the products of the coefficients
         if polynomial_terms(poly) ** 2 > budget:
             raise BudgetError("the Lienard-Chipart conditions (the square of the terms of "
@@ -526,7 +507,7 @@ def _constraint_forces(L, lines, out):
 
 
 def _circuit(circuit, out):
-    from .errors import CircuitError
+    from ..errors import CircuitError
     out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
                      f"branches on {len(circuit.nodes())} nodes) ==")
     estimate = circuit_estimate(circuit)
@@ -678,7 +659,7 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
 
 
 def _lie_poisson(system, out):
-    from .lie.description import lie_report
+    from ..lie.description import lie_report
     out.lines.extend(lie_report(system, sections=out.wanted).split("\n"))
 
 
