@@ -219,9 +219,9 @@ class Lagrangian(NumericalMethods, SageObject):
         if decomposition is not None:
             A, A1, A0 = decomposition
             self._structure = (A, A1, SR(A0))
-            if expr is None:
-                expr = natural_form(A, A1, A0, self._velocities)
-        self._expr = SR(expr)
+        # with a decomposition, L itself is formed only when asked for (the
+        # equations of a large model do not need it)
+        self._expression = None if expr is None and decomposition is not None else SR(expr)
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
         if forces is None:
@@ -239,6 +239,13 @@ class Lagrangian(NumericalMethods, SageObject):
                                   + self._forces + self._constraints))
             taken |= {momentum(q) for q in self._coordinates}
             self._multipliers = constraint_multipliers(len(self._constraints), taken)
+
+    @property
+    def _expr(self):
+        if self._expression is None:
+            A, A1, A0 = self._structure
+            self._expression = natural_form(A, A1, A0, self._velocities)
+        return self._expression
 
     def _checked_constraints(self, constraints):
         constraints = [SR(f) for f in constraints]

@@ -30,7 +30,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..symbols import time_derivative, t
-from .frames import FrameTree, FrameVector, cross
+from .frames import FrameTree, FrameVector, cross, held_product
 
 
 class Kinematics:
@@ -345,7 +345,7 @@ class Kinematics:
 
             def down(v, p=p, f=f):
                 # components in f of the vector with components v in p
-                return tree.express(v, p, f)
+                return tree.express(v, p, f, product=held_product)
 
             angle_rate = rate(tree.angle(f))
             w = down(W[p])
@@ -370,9 +370,9 @@ class Kinematics:
             w, e = W[fj], eps[fj]
             a = _add(acc[j], cross(e, r), cross(w, cross(w, r)),
                      [2 * c for c in cross(w, dr)], [rate(c) for c in dr])
-            acc[k] = tree.express(a, fj, fk)
+            acc[k] = tree.express(a, fj, fk, product=held_product)
             V0[k] = tree.express(_add(V0[j], cross(W0[fj], r), [at_rest(c) for c in dr]),
-                                 fj, fk)
+                                 fj, fk, product=held_product)
             dr_partials = [partials(c) for c in dr]
             JV[k] = []
             for i in range(n):
@@ -380,7 +380,7 @@ class Kinematics:
                                      [d[i] for d in dr_partials]) if J is not None]
                 J = _add(*parts)
                 JV[k].append(None if all(x.is_trivial_zero() for x in J)
-                             else tree.express(J, fj, fk))
+                             else tree.express(J, fj, fk, product=held_product))
             if body.is_massless():
                 continue
             m = SR(body.mass())
@@ -429,7 +429,7 @@ def _add(*vectors):
 
 
 def _dot(u, w):
-    return SR(0).add(*[a * b for a, b in zip(u, w)
+    return SR(0).add(*[held_product(a, b) for a, b in zip(u, w)
                        if not (a.is_trivial_zero() or b.is_trivial_zero())])
 
 

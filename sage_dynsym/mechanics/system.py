@@ -53,6 +53,7 @@ from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form, is_singular
 from .force_functions import check_force_function, split_force_terms, UniformGravity
+from .frames import held_product
 from .kinematics import Kinematics
 from .rigid_body import RigidBody
 
@@ -1342,7 +1343,8 @@ class MechanicalSystem(Model):
                             if isinstance(term, UniformGravity)), SR(0))
 
             def recursive_equations():
-                return [SR(0).add(*[a * x for a, x in zip(row, ddq) if not a.is_trivial_zero()])
+                return [SR(0).add(*[held_product(a, x) for a, x in zip(row, ddq)
+                                    if not a.is_trivial_zero()])
                         + e - rest.diff(q) for row, e, q in zip(A, h, self._coordinates)]
             A = matrix(SR, A)
             A.set_immutable()

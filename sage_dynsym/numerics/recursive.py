@@ -94,16 +94,14 @@ def _rotate(G, axis, c, s, v, inverse=False):
     return tuple(out)
 
 
-def _rotate_tensor(G, axis, c, s, A):
-    # R A R^T of a symmetric 3x3 tensor given in the new frame
+def _rotate_matrix(G, axis, c, s, A, symmetric=True):
+    # R A R^T of a 3x3 matrix given in the new frame (R A R^T = (R (R A)^T)^T)
     columns = [_rotate(G, axis, c, s, [A[r][col] for r in range(3)]) for col in range(3)]
     RA = [[columns[col][r] for col in range(3)] for r in range(3)]
     rows = [_rotate(G, axis, c, s, RA[r]) for r in range(3)]
-    out = [[None] * 3 for _ in range(3)]
-    for r in range(3):
-        for col in range(r, 3):
-            out[r][col] = out[col][r] = rows[r][col]
-    return out
+    if symmetric:
+        return [[rows[min(r, col)][max(r, col)] for col in range(3)] for r in range(3)]
+    return [list(row) for row in rows]
 
 
 class _Step:
@@ -140,7 +138,6 @@ class _Assembly:
         self.tree = tree
         q, dq = tree.coordinates(), tree.velocities()
         self.q, self.dq, self.n = q, dq, len(q)
-        self._index = {str(v): i for i, v in enumerate(q)}
         values = values or {}
         inputs = {_t: G.input('t')}
         inputs.update({v: G.input('x', i) for i, v in enumerate(q + dq)})
@@ -164,7 +161,7 @@ class _Assembly:
         out = {}
         for i, v in enumerate(self.dq):
             d = [SR(e).diff(v) for e in exprs]
-            if any(not x.is_zero() for x in d):
+            if any(not x.is_trivial_zero() for x in d):
                 if any(SR(x).has(w) for x in d for w in self.dq):
                     return None
                 out[i] = self.convert(d[0]) if scalar else self.vector(d)
@@ -316,7 +313,7 @@ class _Assembly:
                 at_step[id(step)] = (m, h, Theta)
                 if step.rotation:
                     h = _rotate(G, step.axis, step.c, step.s, h)
-                    Theta = _rotate_tensor(G, step.axis, step.c, step.s, Theta)
+                    Theta = _rotate_matrix(G, step.axis, step.c, step.s, Theta)
                 else:
                     r = step.r
                     rr, rh = G.dot(r, r), G.dot(r, h)
@@ -514,15 +511,8 @@ class _Assembly:
         G = self.G
         A, B, C = I
         if step.rotation:
-            def turn(X, symmetric):
-                columns = [_rotate(G, step.axis, step.c, step.s, [X[r][c] for r in range(3)])
-                           for c in range(3)]
-                RX = [[columns[c][r] for c in range(3)] for r in range(3)]
-                rows = [_rotate(G, step.axis, step.c, step.s, RX[r]) for r in range(3)]
-                if symmetric:
-                    return [[rows[min(r, c)][max(r, c)] for c in range(3)] for r in range(3)]
-                return rows
-            return turn(A, True), turn(B, False), turn(C, True)
+            return tuple(_rotate_matrix(G, step.axis, step.c, step.s, X, symmetric)
+                         for X, symmetric in ((A, True), (B, False), (C, True)))
         r = step.r
         rx = [[G.zero, G.neg(r[2]), r[1]], [r[2], G.zero, G.neg(r[0])],
               [G.neg(r[1]), r[0], G.zero]]
