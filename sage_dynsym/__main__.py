@@ -3,8 +3,8 @@ Command line: ``python -m sage_dynsym FILE [FILE ...]`` (or ``sage-dynsym``).
 
 Loads each description file and prints its report (characteristic
 function and equations, as text and LaTeX, and the analysis). A bad file
-gives a one-line error on standard error and exit status 1, never a
-traceback; the other files are still reported.
+gives a one-line error on standard error naming the file and the entry,
+never a traceback; the other files are still reported.
 
 Options:
 
@@ -17,23 +17,36 @@ Options:
   estimated size is larger is replaced by one line saying so;
 - ``--time-limit S`` -- give up on a file after ``S`` seconds (one error
   line, then the next file);
-- ``-o FILE`` -- also write the reports to ``FILE`` (replaced atomically).
+- ``-o FILE`` -- also write the reports to ``FILE`` (replaced atomically;
+  its folder must exist, which is checked before any report is computed).
+
+Exit status:
+
+- 0 -- every file was reported; a section over the budget (``skipped``:
+  ``--budget`` raises it) or one the model does not have (``not
+  available (...)``, e.g. a Hamiltonian of a constrained system, dP/dt of
+  perfectly coupled windings) is one line saying why, and counts as
+  reported;
+- 1 -- some file could not be read or reported (or ``-o`` not written),
+  each one line on standard error naming the file and the entry or option;
+- 2 -- the command line itself is wrong (an unknown option, a bad number),
+  with argparse's usage message;
+- 3 -- every file was reported, but some section failed on an error that
+  is not the package's own: its line says ``section failed:`` and the
+  error (a defect to report).
 
 ``sage-dynsym map FILE --param NAME=LOW:HIGH:N ...`` computes a stability
 map of the model on Dask instead (see :mod:`sage_dynsym.scale.cli`).
 """
 import argparse
+import os
 import sys
 
+from .arguments import count_option
 
-def _positive_int(text):
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
-    return value
+#: Exit status of a run whose reports all printed but some section of
+#: which failed on an error that is not the package's own.
+INCOMPLETE = 3
 
 
 def _sections(text):
@@ -59,6 +72,9 @@ def main(argv=None):
         0
         sage: main(['/no/such/file.yaml'])   # the message goes to standard error
         1
+        sage: main([example_path('spherical_pendulum.yaml'), '-o', '/no/such/dir/out.txt'])
+        sage-dynsym: error: -o: the folder /no/such/dir does not exist
+        1
         sage: main([example_path('rlc_ladder.yaml'), '--sections', 'lagrangian', '--budget', '5'])
         == RLC ladder with three sections (circuit: 11 branches on 8 nodes) ==
         Lagrangian (loop-current method):
@@ -72,7 +88,7 @@ def main(argv=None):
     The ``map`` subcommand (:mod:`sage_dynsym.scale.cli`)::
 
         sage: main(['map', example_path('rlc_ladder.yaml'), '--param', 'X=0:1:3', '--numpy'])
-        sage-dynsym: error: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
+        sage-dynsym: error: ...rlc_ladder.yaml: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
         1
     """
     argv = sys.argv[1:] if argv is None else list(argv)
@@ -95,28 +111,34 @@ def main(argv=None):
     parser.add_argument("--no-analysis", action="store_true",
                         help="leave out the analysis sections (stationary, lyapunov, "
                              "stability)")
-    parser.add_argument("--budget", type=_positive_int, default=DEFAULT_BUDGET, metavar="N",
+    parser.add_argument("--budget", type=count_option, default=DEFAULT_BUDGET, metavar="N",
                         help="size budget of each section, in polynomial terms "
                              f"(default: {DEFAULT_BUDGET})")
-    parser.add_argument("--time-limit", type=_positive_int, metavar="S",
+    parser.add_argument("--time-limit", type=count_option, metavar="S",
                         help="give up on a file after S seconds")
     args = parser.parse_args(argv)
-
-    from .description import load, write_atomically
-    from .errors import DynSymError, brief
-    from .report import report
-    reports, status = [], 0
 
     def fail(path, message):
         message = " ".join(str(message).split())        # one line, whatever the error
         print(f"sage-dynsym: error: {message}", file=sys.stderr, flush=True)
         return 1
 
+    if args.output is not None:
+        folder = os.path.dirname(args.output) or '.'
+        if not os.path.isdir(folder):
+            return fail(args.output, f"-o: the folder {folder} does not exist")
+        if os.path.isdir(args.output):
+            return fail(args.output, f"-o: {args.output} is a folder, not a file")
+    from .description import load, write_atomically
+    from .errors import DynSymError, brief
+    from .report import report
+    reports, status, failed = [], 0, []
+
     for path in args.files:
         try:
             text = _with_time_limit(args.time_limit, lambda: report(
                 load(path), sections=args.sections, budget=args.budget,
-                analysis=not args.no_analysis))
+                analysis=not args.no_analysis, failed=failed))
         except DynSymError as err:
             status = fail(path, err)
             continue
@@ -136,7 +158,7 @@ def main(argv=None):
             write_atomically(args.output, lambda s: s.write("\n\n".join(reports) + "\n"))
         except DynSymError as err:
             status = fail(args.output, err)
-    return status
+    return status or (INCOMPLETE if failed else 0)
 
 
 class _TimeLimit(Exception):

@@ -47,6 +47,7 @@ from .io.expressions import ExpressionParser
 from .io.fields import MAX_RESULT_LENGTH, title  # noqa: F401
 from .io.files import write_atomically
 from .io.yaml import read_yaml
+# earlier public names of this module
 from .mechanics.description import mechanical_system_from_dict, mechanical_system_to_dict  # noqa: F401
 
 
@@ -123,27 +124,92 @@ def load(path, results=False):
                                f"{brief(str(err))})", source=source) from None
 
 
-def _formats():
-    r"""The description formats, by the ``kind`` of the file: functions
-    that build a model from the mapping (the models of each kind are in
-    layers below this module, which is the only place that knows them
-    all)."""
-    from .circuits.description import circuit_from_dict
-    from .lie.description import lie_poisson_from_dict
-    return {'mechanical': mechanical_system_from_dict, 'circuit': circuit_from_dict,
-            'lie_poisson': lie_poisson_from_dict}
+#: The entry-point group under which other packages register kinds of
+#: models (``[project.entry-points."sage_dynsym.kinds"]``, ``name =
+#: "package.module:ModelClass"``).
+ENTRY_POINTS = 'sage_dynsym.kinds'
+
+_registered = {}
+
+
+def kinds():
+    r"""
+    The registry of the kinds of models: a dict from the ``kind`` of a
+    description file to the model class (a subclass of
+    :class:`~sage_dynsym.dynamics.model.Model`) -- the package's own kinds,
+    those of other packages (entry points of the group
+    :data:`ENTRY_POINTS`) and those given to :func:`register_kind`.
+    ``load``, ``save``, the report, stability maps and the command line
+    find a model's format and methods here, by kind only.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import kinds
+        sage: sorted(kinds())
+        ['circuit', 'lie_poisson', 'mechanical']
+        sage: kinds()['circuit']
+        <class 'sage_dynsym.circuits.circuit.Circuit'>
+    """
+    from importlib.metadata import entry_points
+    from .circuits.circuit import Circuit
+    from .lie.system import LiePoissonSystem
+    from .mechanics.system import MechanicalSystem
+    found = {cls.kind: cls for cls in (MechanicalSystem, Circuit, LiePoissonSystem)}
+    for point in entry_points(group=ENTRY_POINTS):
+        try:
+            cls = point.load()
+        except Exception as err:        # a broken plugin must not break load()
+            raise DescriptionError(f"the kind {point.name!r} of another package cannot be "
+                                   f"loaded from {point.value} ({type(err).__name__}: "
+                                   f"{brief(str(err))})", entry=ENTRY_POINTS) from None
+        found[_checked_kind(cls, point.name)] = cls
+    found.update(_registered)
+    return found
+
+
+def register_kind(cls):
+    r"""
+    Register ``cls`` (a subclass of
+    :class:`~sage_dynsym.dynamics.model.Model` with a :attr:`kind` and the
+    interface's methods) as the model class of description files of its
+    ``kind``, for this session. Returns ``cls``, so that it can decorate
+    the class.
+
+    EXAMPLES: see ``doc/architecture.rst`` (how to add a kind); refused::
+
+        sage: from sage_dynsym.description import register_kind
+        sage: register_kind(int)
+        Traceback (most recent call last):
+        ...
+        DescriptionError: kind: a kind of model is a subclass of Model with a kind name, got <class 'int'>
+    """
+    _registered[_checked_kind(cls)] = cls
+    return cls
+
+
+def _checked_kind(cls, name=None):
+    from .dynamics.model import Model
+    if not (isinstance(cls, type) and issubclass(cls, Model) and isinstance(cls.kind, str)
+            and cls.kind.isidentifier()):
+        raise DescriptionError("a kind of model is a subclass of Model with a kind name, got "
+                               f"{brief(cls)}", entry='kind')
+    if name is not None and name != cls.kind:
+        raise DescriptionError(f"the entry point {name!r} names a class of kind "
+                               f"{cls.kind!r}", entry=ENTRY_POINTS)
+    return cls.kind
 
 
 def model_from_dict(data, source=None):
     r"""
-    The model of a description mapping, by its ``kind``.
+    The model of a description mapping, by its ``kind`` (see
+    :func:`kinds`).
 
     EXAMPLES::
 
         sage: from sage_dynsym.description import model_from_dict
         sage: model_from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
         Circuit with 2 branches on 2 nodes
-        sage: model_from_dict({'kind': 'hydraulic'}, 'h.yaml')
+        sage: model_from_dict({'kind': 'hydraulic'}, source='h.yaml')
         Traceback (most recent call last):
         ...
         DescriptionError: h.yaml: kind: expected one of 'mechanical', 'circuit', 'lie_poisson', got 'hydraulic'
@@ -152,11 +218,26 @@ def model_from_dict(data, source=None):
         raise DescriptionError(f"a description file holds a mapping of keys, got "
                                f"{type(data).__name__}", source=source)
     kind = data.get('kind')
-    formats = _formats()
-    if not isinstance(kind, str) or kind not in formats:
-        raise DescriptionError(f"expected one of {', '.join(map(repr, formats))}, got "
+    registry = kinds()
+    if not isinstance(kind, str) or kind not in registry:
+        raise DescriptionError(f"expected one of {', '.join(map(repr, registry))}, got "
                                f"{brief(kind)}", entry='kind', source=source)
-    return formats[kind](data, source)
+    builtin = _builtin_formats().get(kind)
+    if builtin is not None and registry[kind] is builtin[0]:
+        # the package's own kinds: their formats move onto the classes
+        return builtin[1](data, source)
+    return registry[kind].from_dict(data, source)
+
+
+def _builtin_formats():
+    from .circuits.circuit import Circuit
+    from .circuits.description import circuit_from_dict
+    from .lie.description import lie_poisson_from_dict
+    from .lie.system import LiePoissonSystem
+    from .mechanics.system import MechanicalSystem
+    return {'mechanical': (MechanicalSystem, mechanical_system_from_dict),
+            'circuit': (Circuit, circuit_from_dict),
+            'lie_poisson': (LiePoissonSystem, lie_poisson_from_dict)}
 
 
 def _load(path, results, source):

@@ -26,7 +26,7 @@ like the function). This module lists those names in one place:
   :data:`CIRCUIT_PATTERNS`): multipliers ``lambda<j>`` of the
   Routh--Lyapunov method, deviations ``xi_<x>`` of the second variation,
   the multipliers ``u<k>``, ``v<k>`` of Dirac's scheme, the multipliers
-  ``mu<j>`` of holonomic constraints (:func:`constraint_multipliers`); in circuits the
+  ``mu<j>`` of constraints (:func:`constraint_multipliers`); in circuits the
   state variables ``i<k>`` (inductor currents) and ``u<k>`` (capacitor
   voltages), the loop charges ``q<k>``, the node potentials ``phi<k>`` and
   their velocities and momenta, the placeholders ``i``, ``u`` of an
@@ -204,7 +204,7 @@ COMMON_PATTERNS = (
 MECHANICAL_PATTERNS = COMMON_PATTERNS + (
     (r'u[1-9]\d*', "a multiplier of Dirac's scheme (u<k>)"),
     (r'v[1-9]\d*', "a gauge multiplier of Dirac's scheme (v<k>)"),
-    (r'mu[1-9]\d*', 'a multiplier of a holonomic constraint (mu<j>)'),
+    (r'mu[1-9]\d*', 'a multiplier of a constraint (mu<j>)'),
 )
 
 #: Names created for circuits (with :data:`COMMON_PATTERNS`).
@@ -474,3 +474,28 @@ def sage_numbers(value):
     if operator is None:
         return value
     return operator(*[sage_numbers(a) for a in value.operands()])
+
+
+def is_exact(expr):
+    r"""
+    Whether the expression ``expr`` has no floating-point number in it (a
+    float makes equalities hold only to rounding).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import is_exact
+        sage: x = var('x')
+        sage: is_exact(sqrt(2)/2 + x), is_exact(0.5*x), is_exact(3), is_exact(SR(float(1)))
+        (True, False, True, False)
+    """
+    stack = [SR(expr)]
+    while stack:
+        e = stack.pop()
+        if e.operator() is None:
+            if e.is_numeric():
+                number = e.pyobject()
+                if isinstance(number, (float, complex)) or not number.parent().is_exact():
+                    return False
+        else:
+            stack.extend(e.operands())
+    return True

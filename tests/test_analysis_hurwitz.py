@@ -158,6 +158,11 @@ def test_bad_input():
         hurwitz_conditions(1 / lam + 1, lam)
     with pytest.raises(AnalysisError):
         conservative_stability_conditions(lam**2 + lam + 1, lam)
+    # an even polynomial is never Hurwitz: said, with the way to go
+    k, m = var('k m')
+    for even in (lam**2 + 1, m * lam**4 + k * lam**2 + 1, lam**6 - lam**2):
+        with pytest.raises(AnalysisError, match="conservative_stability_conditions"):
+            hurwitz_conditions(even, lam)
 
 
 def test_simplify_conditions_keeps_equivalence():

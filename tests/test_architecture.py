@@ -17,6 +17,7 @@ PACKAGE = Path(__file__).resolve().parent.parent / "sage_dynsym"
 #: From the bottom up. The first matching prefix gives a module's layer.
 LAYERS = [
     ("errors", ["sage_dynsym.errors"]),
+    ("arguments", ["sage_dynsym.arguments"]),
     ("symbols", ["sage_dynsym.symbols"]),
     ("input", ["sage_dynsym.io"]),
     ("algebra and analysis", ["sage_dynsym.analysis"]),

@@ -172,7 +172,12 @@ def test_cartesian_pendulum_keeps_its_constraint():
 
 def test_inconsistent_initial_state_is_projected():
     record, (x, y, dx, dy, m, g, l) = cartesian_pendulum()
-    T = simulate(record, {m: 1, g: 1, l: 1}, {x: 1.1, y: 0.1, dx: 0.2, dy: 0.5}, 1, points=3)
+    state = {x: 1.1, y: 0.1, dx: 0.2, dy: 0.5}
+    # an initial state off the constraints is refused unless the projection is asked for
+    with pytest.raises(ModelError, match='off the constraints'):
+        simulate(record, {m: 1, g: 1, l: 1}, state, 1, points=3)
+    with pytest.warns(UserWarning, match='projected onto the constraints'):
+        T = simulate(record, {m: 1, g: 1, l: 1}, state, 1, points=3, project=True)
     assert abs(T.values(x ** 2 + y ** 2)[0] - 1) < 1e-12
     assert abs(T.values(x * dx + y * dy)[0]) < 1e-12
 

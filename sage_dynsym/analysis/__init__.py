@@ -6,7 +6,9 @@ solutions and invariant manifolds (Routh--Lyapunov, also the modified
 method with an extended function), their stability by the second
 variation and quadratic-form criteria, first approximation
 (linearization, force structure, characteristic polynomial,
-Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems)
+Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems,
+roots on the imaginary axis, flutter and divergence, the limit of small
+damping), linearization about steady motions with velocity constraints,
 and families of equilibria by elimination.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
@@ -17,10 +19,15 @@ from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
                       conservative_stability_conditions, simplify_conditions)
 from .linear import LinearSystem, linearize
+from .operating_point import OperatingPoint
+from .steady import (steady_linearization, steady_motion_conditions, steady_motions,
+                     SteadyMotion)
 from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
                               restrict_to_subspace, simultaneous_reduction)
 from .solving import solve_exactly, normalize
 from .quantifier_elimination import exists
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
+from .damping_limit import small_damping_limit, DampingLimit
+from .spectrum import spectrum_regions
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, ModifiedRouthLyapunov)

@@ -570,15 +570,31 @@ def hurwitz_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     (all conditions together are equivalent to `a > 0`; this function does
     no semi-algebraic reasoning beyond sign patterns of coefficients.)
 
+    A polynomial even in the variable (every coefficient of an odd power
+    zero: a conservative or gyroscopic system) can never be Hurwitz -- its
+    roots come in pairs `\pm\lambda` --; that is an error, pointing to the
+    conditions for a spectrum on the imaginary axis::
+
+        sage: hurwitz_conditions(m*lam^4 + c*lam^2 + k, lam)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: hurwitz_conditions: every coefficient of an odd power of lam is zero in lam^4*m + c*lam^2 + k: its roots come in pairs +-lam, so they are never all in the left half-plane (no asymptotic stability); for roots on the imaginary axis use conservative_stability_conditions
+
     TESTS::
 
-        sage: hurwitz_conditions(lam^2 + 1, lam)
-        [0]
         sage: hurwitz_conditions(-lam - 1, lam)
         []
+        sage: hurwitz_conditions(lam^3 + lam, lam)
+        [0]
     """
     a = _normalized_coefficients(poly, var)
     n = len(a) - 1
+    if all(a[i] == 0 for i in range(n + 1) if (n - i) % 2):
+        raise AnalysisError(f"every coefficient of an odd power of {var} is zero in {poly}: "
+                            f"its roots come in pairs +-{var}, so they are never all in the "
+                            "left half-plane (no asymptotic stability); for roots on the "
+                            "imaginary axis use conservative_stability_conditions",
+                            entry="hurwitz_conditions")
     deltas = _determinants(a, n - 1, budget)
     conds = [a[0]] + deltas[1:n] + [a[n]]
     return _to_sr(_reduce(conds, positive))
@@ -621,6 +637,14 @@ def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
         sage: [D3] = lienard_chipart_conditions(p, lam, positive=[m1, m2, k1, k2, c1, c2])
         sage: D3.coefficient(c1*c2*k1*k2*m1*m2)
         -2
+
+    TESTS: a coefficient of the wrong sign settles it, whichever set of
+    coefficients is shorter::
+
+        sage: c, a = var('c a')
+        sage: lienard_chipart_conditions(lam^4 + 2*c*lam^3 + a*lam^2 - c*lam + 1, lam,
+        ....:                            positive=[c])
+        [-1]
     """
     a = _normalized_coefficients(poly, var)
     n = len(a) - 1
@@ -628,7 +652,13 @@ def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     deltas = _determinants(a, n - 1, budget) if det_idx else [None]
     first = [a[i] for i in range(n, -1, -2)]
     second = [a[n]] + [a[i] for i in range(n - 1, -1, -2)]
-    coeffs = min((first, second), key=lambda cs: len(_reduce([a[0]] + cs, positive)))
+    reduced = [_reduce([a[0]] + cs, positive) for cs in (first, second)]
+    for r in reduced:
+        # a coefficient of the wrong sign in either set: no root test needed
+        if len(r) == 1 and not isinstance(r[0], _Unexpanded) and len(r[0]) == 1 \
+                and _is_constant(r[0][0]):
+            return _to_sr(r)
+    coeffs = first if len(reduced[0]) <= len(reduced[1]) else second
     return _to_sr(_reduce([a[0]] + coeffs + [deltas[k] for k in det_idx], positive))
 
 

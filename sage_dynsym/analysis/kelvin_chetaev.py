@@ -1,308 +1,358 @@
 r"""
-The Kelvin--Chetaev theorems on the influence of the structure of forces
+Stability of `M\ddot q + (D + 2G)\dot q + (K + P)q = 0`: the structure of
+forces and the first approximation
 
-For `M\ddot z + (D + 2G)\dot z + Kz = 0` with `M > 0` (no
-non-conservative positional forces, `P = 0`) the stability of the
-equilibrium is decided by the signs of `K` and `D` and the presence of `G`
-(Thomson--Tait--Chetaev theorems, as in Merkin, ch. 6):
+For a linear (or linearized) mechanical system with `M > 0` (kinetic),
+`D = D^T` (dissipative), `G = -G^T` (gyroscopic), `K = K^T` (potential)
+and `P = -P^T` (circulatory, non-conservative positional) forces,
+:func:`kelvin_chetaev` gives a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+for every such system, exact, with the regions of the parameters where each
+verdict holds:
 
-1. `K > 0` (isolated minimum of the potential energy): stable for any
-   gyroscopic forces and any dissipation `D \ge 0` (Lagrange--Dirichlet;
-   Kelvin's first theorem);
-2. `K > 0` and complete dissipation `D > 0`: *asymptotically* stable, for
-   any `G` (second theorem);
-3. odd degree of instability (`\det K < 0`): unstable for any `G` and
-   `D \ge 0`; gyroscopic stabilization is impossible (third theorem);
-4. even degree of instability (`\det K > 0`, `K` not positive definite):
-   unstable without gyroscopic forces; with `G \ne 0` and `D = 0`
-   gyroscopic stabilization is *possible* -- it happens when the
-   polynomial in `\lambda^2` of `\det(M\lambda^2 + 2G\lambda + K)` has only
-   real negative roots (the conditions are given); complete dissipation
-   `D > 0` destroys it: unstable (fourth theorem).
+- **Kelvin's theorems** (Thomson--Tait--Chetaev; Merkin, ch. 6), for
+  `P = 0`: with an isolated minimum of the potential energy (`K > 0`) the
+  equilibrium is *stable* for any gyroscopic forces and any dissipation `D
+  \ge 0` (Lagrange--Dirichlet; 1st theorem), *asymptotically stable* with
+  complete dissipation `D > 0` (2nd theorem); an *odd* degree of
+  instability (`\det K < 0`) cannot be stabilized by any gyroscopic or
+  dissipative forces (3rd theorem); an *even* one can be stabilized by
+  gyroscopic forces (``'stable in first approximation'``, under exact
+  conditions), and complete dissipation destroys that (4th theorem).
+- **Gyroscopic stabilization** and **circulatory systems** without damping:
+  the characteristic polynomial is even, and the linearized system is stable
+  iff its polynomial in `\mu = \lambda^2` has only real, negative, simple
+  roots (:mod:`~sage_dynsym.analysis.spectrum`); its boundaries are
+  *flutter* (two roots meet on the imaginary axis: the discriminant
+  vanishes) and *divergence* (a root through zero: `\det(K + P) = 0`).
+  With both gyroscopic and circulatory forces and no damping the roots are
+  on the imaginary axis only where every odd coefficient vanishes.
+- **Damped systems**: the Liénard--Chipart conditions (asymptotic
+  stability), and otherwise a root with positive real part.
 
-With symbolic parameters several cases may be possible; each is returned
-with the conditions (``> 0``) under which it applies.
+The first approximation decides asymptotic stability and instability for
+the nonlinear system too (Lyapunov); ``'stable in first approximation'``
+leaves the nonlinear system open (a critical case), while ``'stable'``
+comes from the energy, a Lyapunov function of the nonlinear mechanical
+system as well. The parts are disjoint, in this precedence:
+asymptotically stable, stable, stable in first approximation, undecided,
+unstable (the rest); the boundaries belong to none. The conditions for
+the kinetic matrix to be positive definite, if any, are part of every
+region; with an indefinite (nonsingular) `M` -- not a mechanical system --
+the first approximation alone decides.
 
 EXAMPLES:
 
-An unstable potential `K = -\mathrm{diag}(a, b)` (even degree of
-instability 2) stabilized by gyroscopic forces: the classical condition
-`2g > \sqrt a + \sqrt b`, here in polynomial form (Merkin, §6.5)::
+**Ziegler's column** (two rigid rods of length `l` with springs `k` at the
+joints, masses `2m` and `m`, a follower load `P` at the free end; Ziegler
+1952): undamped, stable in first approximation up to the flutter load `P =
+(7/2 - \sqrt 2)\,k/l`::
 
     sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
-    sage: a, b, g = var('a b g')
-    sage: M = identity_matrix(SR, 2); Z = zero_matrix(SR, 2)
-    sage: G = matrix([[0, g], [-g, 0]]); K = diagonal_matrix([-a, -b])
-    sage: v = kelvin_chetaev(M, Z, G, K, Z, positive=[a, b]); v
-    gyroscopic stabilization possible if [4*g^2 - a - b, 16*g^4 - 8*a*g^2 - 8*b*g^2 + a^2 - 2*a*b + b^2]: even degree of instability (2) of the potential energy, gyroscopic forces present, no dissipation (Kelvin-Chetaev, 4th theorem); stable in the first approximation under the conditions
-    sage: v.verdict(), v.conditions()
-    ('gyroscopic stabilization possible',
-     [4*g^2 - a - b, 16*g^4 - 8*a*g^2 - 8*b*g^2 + a^2 - 2*a*b + b^2])
+    sage: P, k, l, m = var('P k l m')
+    sage: M = m*l^2*matrix([[3, 1], [1, 1]])
+    sage: W = matrix([[2*k - P*l, P*l - k], [-k, k]])        # K + P, the load is not conservative
+    sage: v = kelvin_chetaev(M, zero_matrix(2), zero_matrix(2), (W + W.T)/2, (W - W.T)/2,
+    ....:                    positive=[k, l, m])
+    sage: v.verdict()
+    'depends on the parameters'
+    sage: for case in v.cases(): print(case.verdict(), case.region())
+    stable in first approximation [[2*P*l - 7*k < 0, 4*P^2*l^2 - 28*P*k*l + 41*k^2 > 0]]
+    unstable [[2*P*l - 7*k > 0], [4*P^2*l^2 - 28*P*k*l + 41*k^2 < 0]]
+    sage: v.boundaries()
+    {'flutter': [4*P^2*l^2 - 28*P*k*l + 41*k^2 == 0]}
+    sage: v.critical_values(P)
+    [-1/2*k*(2*sqrt(2) - 7)/l]
 
-With complete dissipation the stabilization is destroyed::
+**Gyroscopic stabilization** of an unstable potential `K = -\mathrm{diag}(a,
+b)` (degree of instability 2): stable in first approximation iff `2g >
+\sqrt a + \sqrt b` -- here in polynomial form (Merkin, §6.5)::
+
+    sage: a, b, g = var('a b g')
+    sage: I2 = identity_matrix(SR, 2); Z = zero_matrix(SR, 2)
+    sage: G = matrix([[0, g], [-g, 0]]); K = diagonal_matrix([-a, -b])
+    sage: v = kelvin_chetaev(I2, Z, G, K, positive=[a, b]); v.verdict()
+    'depends on the parameters'
+    sage: v.region()
+    [[4*g^2 - a - b > 0, 16*g^4 - 8*a*g^2 - 8*b*g^2 + a^2 - 2*a*b + b^2 > 0]]
+    sage: v.at({a: 1, b: 1, g: 2}), v.at({a: 1, b: 1, g: 1/2})
+    ('stable in first approximation', 'unstable')
+
+With complete dissipation the stabilization is destroyed (Kelvin--Chetaev,
+4th theorem)::
 
     sage: c = var('c')
-    sage: kelvin_chetaev(M, c*M, G, K, Z, positive=[a, b, c]).verdict()
-    'destroyed by dissipation'
+    sage: kelvin_chetaev(I2, c*I2, G, K, positive=[a, b, c]).verdict()
+    'unstable'
+
+A damped pendulum, and the inverted one (odd degree of instability)::
+
+    sage: kelvin_chetaev(matrix([[1]]), matrix([[c]]), matrix([[0]]), matrix([[1]]),
+    ....:                positive=[c]).verdict()
+    'asymptotically stable'
+    sage: kelvin_chetaev(matrix([[1]]), matrix([[c]]), matrix([[0]]), matrix([[-1]]),
+    ....:                positive=[c])
+    unstable: the potential energy has an odd degree of instability (1): ...
 
 REFERENCES:
 
 - D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997,
-  ch. 6 (Kelvin--Chetaev theorems, gyroscopic stabilization).
+  ch. 6 (Kelvin--Chetaev theorems, gyroscopic stabilization,
+  non-conservative positional forces).
 - N. G. Chetaev, *The Stability of Motion*, Pergamon, 1961, ch. V.
 - W. Thomson (Lord Kelvin), P. G. Tait, *Treatise on Natural Philosophy*,
   §345.
+- H. Ziegler, Die Stabilitätskriterien der Elastomechanik, *Ing.-Arch.* 20
+  (1952) 49--56; *Principles of Structural Stability*, Blaisdell, 1968.
+- O. N. Kirillov, *Nonconservative Stability Problems of Modern Physics*,
+  De Gruyter, 2013, ch. 1.
 """
-from sage.matrix.constructor import matrix
-from sage.structure.sage_object import SageObject
+from sage.matrix.constructor import matrix, block_matrix, identity_matrix
 from sage.symbolic.ring import SR
 
-from .hurwitz import simplify_conditions, conservative_stability_conditions
-from .quadratic_forms import sylvester_conditions, _det
+from ..errors import AnalysisError
+from .determinants import fraction_free_det
+from .quadratic_forms import (definiteness_conditions, semidefiniteness_conditions,
+                              _det)
+from .regions import partition, simplify_region, negation, intersection, prune_empty
+from .solving import normalize
+from .spectrum import spectrum_regions
+from .verdict import StabilityVerdict
+
+__all__ = ['kelvin_chetaev', 'StabilityVerdict']
 
 
-class StabilityVerdict(SageObject):
+def _matrices(M, D, G, K, P):
+    M, D, G, K = (matrix(SR, X) for X in (M, D, G, K))
+    n = M.nrows()
+    P = matrix(SR, n, n) if P is None else matrix(SR, P)
+    for name, X in (('M', M), ('D', D), ('G', G), ('K', K), ('P', P)):
+        if X.nrows() != n or X.ncols() != n:
+            raise AnalysisError(f"{name} is {X.nrows()}x{X.ncols()}, expected {n}x{n} "
+                                "like M", entry="kelvin_chetaev")
+    return M, D, G, K, P
+
+
+def state_matrix(M, S, W):
     r"""
-    The outcome of a stability test: a verdict, the conditions (all
-    ``> 0``) under which it holds, and the reason in plain language.
-
-    ``verdict()`` is one of ``'asymptotically stable'``, ``'stable'``,
-    ``'unstable'``, ``'gyroscopic stabilization possible'``, ``'destroyed
-    by dissipation'``, ``'undecided'``. When several cases are possible for
-    different parameter values, the verdict is ``'undecided'`` (or
-    ``'depends on the parameters'``) and :meth:`cases` lists them.
-
-    A verdict may also carry the method that decided it (:meth:`method`)
-    and a *region* (:meth:`region`): a list of alternatives, each a list of
-    relationals, under which it holds.
+    The matrix `A` of `\dot x = Ax`, `x = (q, \dot q)`, for `M\ddot q +
+    S\dot q + Wq = 0`.
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.kelvin_chetaev import StabilityVerdict, kelvin_chetaev
-        sage: a = var('a')
-        sage: StabilityVerdict('stable', 'the potential energy has a minimum', conditions=[a])
-        stable if [a]: the potential energy has a minimum
-        sage: kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
-        unstable: the potential energy has an odd degree of instability (1): ...
+        sage: from sage_dynsym.analysis.kelvin_chetaev import state_matrix
+        sage: m, c, k = var('m c k')
+        sage: state_matrix(matrix([[m]]), matrix([[c]]), matrix([[k]]))
+        [   0    1]
+        [-k/m -c/m]
     """
-
-    def __init__(self, verdict, reason, conditions=(), cases=(), method=None,
-                 region=None):
-        self._verdict = verdict
-        self._reason = reason
-        self._conditions = list(conditions)
-        self._cases = list(cases)
-        self._method = method
-        self._region = region
-
-    def method(self):
-        r"""The method that decided the verdict (``None`` if not recorded).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.kelvin_chetaev import StabilityVerdict
-            sage: StabilityVerdict('stable', 'K > 0', method='Routh-Lyapunov').method()
-            'Routh-Lyapunov'
-        """
-        return self._method
-
-    def region(self):
-        r"""Where the verdict holds: a list of alternatives, each a list of
-        relationals (``[[]]``: everywhere); ``None`` if not recorded.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.kelvin_chetaev import StabilityVerdict
-            sage: a = var('a')
-            sage: StabilityVerdict('stable', 'K > 0', region=[[a > 0]]).region()
-            [[a > 0]]
-        """
-        return None if self._region is None else [list(alt) for alt in self._region]
-
-    def verdict(self):
-        r"""The verdict (a string).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
-            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
-            sage: v.verdict()
-            'unstable'
-        """
-        return self._verdict
-
-    def reason(self):
-        r"""Why, in plain language, with the theorem used.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
-            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
-            sage: v.reason()
-            'the potential energy has an odd degree of instability (1): no gyroscopic or dissipative forces can stabilize it (Kelvin-Chetaev, 3rd theorem)'
-        """
-        return self._reason
-
-    def conditions(self):
-        r"""Conditions (expressions ``> 0``) under which the verdict holds.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
-            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
-            sage: v.conditions()
-            []
-        """
-        return list(self._conditions)
-
-    def cases(self):
-        r"""The possible cases (each a :class:`StabilityVerdict`).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
-            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
-            sage: len(v.cases())
-            1
-        """
-        return list(self._cases) if self._cases else [self]
-
-    def _repr_(self):
-        cond = f" if {self._conditions}" if self._conditions else ""
-        if self._region is not None and self._region != [[]]:
-            cond = " where " + " or ".join(
-                "[" + ", ".join(map(str, alt)) + "]" for alt in self._region)
-        return f"{self._verdict}{cond}: {self._reason}"
+    n = M.nrows()
+    Mi = M.inverse()
+    return block_matrix(SR, [[matrix(SR, n, n), identity_matrix(SR, n)],
+                             [-Mi * W, -Mi * S]], subdivide=False)
 
 
-def _impossible(conds):
-    return len(conds) == 1 and SR(conds[0]).is_constant()
+def _possible(conditions):
+    return conditions is not None
 
 
-def _possible(conds):
-    return not _impossible(conds)
+def _reasons(M, D, G, K, P, spectrum, positive, mechanical=True):
+    r"""The reason of each verdict, from the structure of forces (the
+    theorems on it only for a mechanical system, `M > 0`)."""
+    n = M.nrows()
+    has_D, has_G = not D.is_zero(), not G.is_zero()
+    has_P = not P.is_zero() or not mechanical       # no Kelvin-Chetaev theorems then
+    complete = has_D and _possible(definiteness_conditions(D, positive=positive))
+    detK = _det(K)
+    odd = not has_P and _possible(simplify_region([[detK < 0]], positive) or None)
+    odd_always = odd and simplify_region([[detK < 0]], positive) == [[]]
+    root = "a root of the characteristic polynomial has a positive real part " \
+        "(Lyapunov's theorem on the first approximation)"
+    unstable = []
+    if odd:
+        negative = 1 if n == 1 else _negative_eigenvalues(K)
+        degree = f" ({negative})" if negative is not None else ""
+        where = "" if odd_always else "where det K < 0 "
+        unstable.append(f"{where}the potential energy has an odd degree of instability"
+                        f"{degree}: no gyroscopic or dissipative forces can stabilize it "
+                        "(Thomson-Tait-Chetaev; Kelvin-Chetaev, 3rd theorem)")
+    if not has_P and has_G and complete and not odd_always and n > 1:
+        unstable.append("complete dissipation destroys the gyroscopic stabilization of an "
+                        "even degree of instability (Kelvin-Chetaev, 4th theorem)")
+    if not has_P and not has_G and not odd_always and n > 1:
+        unstable.append("an even degree of instability without gyroscopic forces stays "
+                        "unstable (Kelvin-Chetaev, 4th theorem)")
+    if has_P and mechanical and not has_D:
+        unstable.append("circulatory forces beyond the flutter boundary (two roots meet "
+                        "on the imaginary axis and leave it) or the divergence boundary "
+                        "(a real root through zero)")
+    if not has_D and spectrum.symmetric_degree() == 0:
+        unstable.append("without damping the roots sum to zero: a root off the imaginary "
+                        "axis has a positive real part")
+    unstable.append(root)
+    if odd_always:
+        unstable = unstable[:1]
+    asymptotic = "every root of the characteristic polynomial has a negative real part " \
+        "(Liénard-Chipart conditions; Lyapunov's theorem on the first approximation)"
+    if not has_P and complete:
+        asymptotic += "; with K > 0 and complete dissipation D > 0 this is the 2nd " \
+            "theorem of Kelvin-Chetaev"
+    total = 2 * n - spectrum.symmetric_degree() - spectrum.zero_roots()
+    marginal = ("every root of the characteristic polynomial is on the imaginary axis and "
+                "simple" if total == 0 else
+                "the roots of the characteristic polynomial that come in pairs +-lambda are "
+                "on the imaginary axis and simple, the others have negative real parts")
+    marginal += ": the linearized system is stable, not asymptotically; the first " \
+        "approximation does not decide the stability of the nonlinear system (critical case)"
+    if not has_P and has_G and not has_D:
+        marginal += "; where K is not positive definite this is gyroscopic stabilization " \
+            "of an even degree of instability (Thomson-Tait-Chetaev), destroyed by any " \
+            "complete dissipation (Kelvin-Chetaev, 4th theorem)"
+    if has_P and mechanical and not has_D:
+        marginal += "; circulatory forces: inside the flutter and divergence boundaries " \
+            "(small damping may lower the flutter boundary: small_damping_limit)"
+    if not has_D and spectrum.symmetric_degree() == 0:
+        marginal += "; without damping this happens only where every odd coefficient " \
+            "vanishes"
+    return {
+        'asymptotically stable': asymptotic,
+        'stable': "the total energy is a Lyapunov function: the potential energy has an "
+                  "isolated minimum (K > 0), the dissipation is nonnegative (D >= 0) and "
+                  "gyroscopic forces cannot destroy this stability (Lagrange-Dirichlet; "
+                  "Kelvin-Chetaev, 1st theorem)",
+        'stable in first approximation': marginal,
+        'undecided': "every root is in the closed left half-plane, but a multiple root on "
+                     "the imaginary axis is not semisimple: the linearized solutions grow "
+                     "like t, and the nonlinear terms decide",
+        'unstable': "; ".join(unstable),
+    }
+
+
+def _negative_eigenvalues(K):
+    r"""The number of negative eigenvalues of a numerical ``K`` (``None``
+    for a symbolic one)."""
+    if any(SR(x).variables() for x in K.list()):
+        return None
+    from sage.rings.qqbar import AA
+    try:
+        return sum(1 for e in K.change_ring(AA).eigenvalues() if e < 0)
+    except (TypeError, ValueError):
+        return None
 
 
 def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     r"""
-    Stability of the zero solution of `M\ddot z + (D + 2G)\dot z + (K + P)
-    z = 0` from the structure of forces.
+    The stability of the zero solution of `M\ddot z + (D + 2G)\dot z + (K +
+    P) z = 0`, exact, with the regions of the parameters (see the module
+    documentation).
 
     INPUT:
 
-    - ``M, D, G, K, P`` -- the matrices (see
+    - ``M, D, G, K, P`` -- the square matrices (see
       :class:`~sage_dynsym.analysis.linear.LinearSystem`); ``P`` may be
-      ``None`` or zero
-    - ``positive`` -- parameters known to be positive
+      ``None`` (zero)
+    - ``positive`` -- parameters declared positive
 
-    OUTPUT: a :class:`StabilityVerdict`
+    OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`:
+    ``'asymptotically stable'``, ``'stable'``, ``'stable in first
+    approximation'``, ``'unstable'`` or ``'undecided'`` (with the region
+    where it holds, ``[[]]`` for everywhere), or ``'depends on the
+    parameters'`` with :meth:`~sage_dynsym.analysis.verdict.StabilityVerdict.cases`
+    and the stable set as its region; ``boundaries()`` gives the flutter
+    and divergence boundaries
 
-    EXAMPLES:
-
-    A damped pendulum (`K = mgl > 0`, `D = c > 0`)::
+    EXAMPLES: see the module documentation. A conservative system with a
+    symbolic stiffness::
 
         sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
-        sage: m, g, l, c = var('m g l c')
-        sage: kelvin_chetaev(matrix([[m*l^2]]), matrix([[c]]), matrix([[0]]),
-        ....:                matrix([[m*g*l]]), positive=[m, g, l, c]).verdict()
-        'asymptotically stable'
-        sage: kelvin_chetaev(matrix([[m*l^2]]), matrix([[c]]), matrix([[0]]),
-        ....:                matrix([[-m*g*l]]), positive=[m, g, l, c])
-        unstable: the potential energy has an odd degree of instability (1): no gyroscopic or dissipative forces can stabilize it (Kelvin-Chetaev, 3rd theorem)
-
-    With a symbolic stiffness both cases remain::
-
-        sage: k = var('k')
+        sage: m, k = var('m k')
         sage: v = kelvin_chetaev(matrix([[m]]), matrix([[0]]), matrix([[0]]),
-        ....:                    matrix([[k]]), positive=[m]); v.verdict()
-        'undecided'
-        sage: v.cases()
-        [stable if [k]: the potential energy has an isolated minimum (K > 0)...,
-         unstable if [-k]: the potential energy has an odd degree of instability...]
+        ....:                    matrix([[k]]), positive=[m])
+        sage: v.verdict()
+        'depends on the parameters'
+        sage: [(case.verdict(), case.region()) for case in v.cases()]
+        [('stable', [[k > 0]]), ('unstable', [[k < 0]])]
 
-    Non-conservative positional forces are outside the theorems::
+    An undamped system with gyroscopic and circulatory forces: unstable
+    except where their product vanishes (Kirillov, 2013, ch. 1)::
 
-        sage: p = var('p')
-        sage: kelvin_chetaev(identity_matrix(2), zero_matrix(2), zero_matrix(2),
-        ....:                identity_matrix(2), matrix([[0, p], [-p, 0]])).verdict()
-        'undecided'
+        sage: g, p = var('g p')
+        sage: v = kelvin_chetaev(identity_matrix(2), zero_matrix(2), matrix([[0, g], [-g, 0]]),
+        ....:                    diagonal_matrix([1, 2]), matrix([[0, p], [-p, 0]]))
+        sage: [(case.verdict(), case.region()) for case in v.cases()]
+        [('stable in first approximation',
+          [[16*g^4 + 24*g^2 - 4*p^2 + 1 > 0, g*p == 0]]),
+         ('unstable', [[16*g^4 + 24*g^2 - 4*p^2 + 1 < 0], [p != 0, g != 0]])]
+
+    TESTS: an indefinite kinetic matrix (not a mechanical system: the first
+    approximation alone), and a singular one::
+
+        sage: kelvin_chetaev(matrix([[1, 0], [0, -1]]), zero_matrix(2), zero_matrix(2),
+        ....:                identity_matrix(2)).verdict()
+        'unstable'
+        sage: kelvin_chetaev(matrix([[1, 0], [0, 0]]), zero_matrix(2), zero_matrix(2),
+        ....:                identity_matrix(2))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: kelvin_chetaev: the kinetic matrix M = [(1, 0), (0, 0)] is singular: the equations are not of second order in every coordinate
+        sage: kelvin_chetaev(identity_matrix(2), zero_matrix(2), zero_matrix(2), matrix([[1]]))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: kelvin_chetaev: K is 1x1, expected 2x2 like M
     """
-    M, D, G, K = (matrix(SR, X) for X in (M, D, G, K))
-    n = M.nrows()
-    P = matrix(SR, n, n) if P is None else matrix(SR, P)
-    cM = sylvester_conditions(M, positive=positive)
-    if _impossible(cM):
-        return StabilityVerdict('undecided', "the kinetic matrix M is not positive "
-                                "definite; the Kelvin-Chetaev theorems do not apply")
-    if not P.is_zero():
-        return StabilityVerdict('undecided', "non-conservative positional forces "
-                                "(P != 0) are present; the Kelvin-Chetaev theorems do "
-                                "not apply: use the Hurwitz or Liénard-Chipart "
-                                "conditions of the characteristic polynomial")
+    M, D, G, K, P = _matrices(M, D, G, K, P)
+    positive = list(positive)
+    kinetic = definiteness_conditions(M, positive=positive)
+    mechanical = kinetic is not None
+    if not mechanical:
+        # not a mechanical system: the first approximation still decides,
+        # the theorems on the structure of forces do not apply
+        if normalize(_det(M)).is_zero():
+            raise AnalysisError(f"the kinetic matrix M = {list(M)} is singular: the "
+                                "equations are not of second order in every coordinate",
+                                entry="kelvin_chetaev")
+        kinetic = []
+    domain = [kinetic]
+    S, W = D + 2 * G, K + P
+    lam = SR.symbol()
+    chi = fraction_free_det(M * lam ** 2 + S * lam + W, positive=positive)
+    spectrum = spectrum_regions(chi, lam, positive, matrix=state_matrix(M, S, W))
+    asymptotic, marginal = spectrum.asymptotic(), spectrum.marginal()
+    kelvin = None
+    if mechanical and P.is_zero():
+        K_definite = definiteness_conditions(K, positive=positive)
+        D_semidefinite = semidefiniteness_conditions(D, positive=positive)
+        if D_semidefinite is not None:
+            # Kelvin's theorems: with D >= 0 and det K != 0 asymptotic stability
+            # needs K > 0, and so does any stability without gyroscopic forces
+            outside = negation([D_semidefinite], positive) or []
+            needs_K = ([K_definite] if K_definite is not None else []) + outside + \
+                [[_det(K) == 0]]
+            asymptotic = intersection(asymptotic, needs_K, positive) if asymptotic else None
+            if G.is_zero() and marginal:
+                marginal = intersection(marginal, needs_K, positive)
+            if K_definite is not None:
+                kelvin = [K_definite + D_semidefinite]
+    parts = [('asymptotically stable', asymptotic), ('stable', kelvin),
+             ('stable in first approximation', marginal),
+             ('undecided', spectrum.undecided())]
+    found = [(name, prune_empty(region, positive) if region is not None else None)
+             for name, region in partition(parts, rest='unstable', domain=domain,
+                                           positive=positive)]
+    found = [(name, region) for name, region in found if region != []]
+    reasons = _reasons(M, D, G, K, P, spectrum, positive, mechanical)
+    boundaries = spectrum.boundaries()
     cases = []
-    cK = sylvester_conditions(K, positive=positive)
-    detK = _det(K).expand()
-    has_G = not G.is_zero()
-    has_D = not D.is_zero()
-    cD = sylvester_conditions(D, positive=positive) if has_D else [SR(-1)]
-    complete = has_D and not _impossible(cD)
-    if _possible(cK):
-        if complete:
-            cases.append(StabilityVerdict(
-                'asymptotically stable',
-                "the potential energy has an isolated minimum (K > 0) and the "
-                "dissipation is complete (D > 0), whatever the gyroscopic forces "
-                "(Kelvin-Chetaev, 2nd theorem)", simplify_conditions(cK + cD, positive)))
-        else:
-            what = ("partial dissipation (D >= 0 assumed)" if has_D else
-                    "no dissipation")
-            cases.append(StabilityVerdict(
-                'stable',
-                "the potential energy has an isolated minimum (K > 0); "
-                f"{what}; gyroscopic forces cannot destroy this stability "
-                "(Lagrange-Dirichlet, Kelvin-Chetaev 1st theorem)", cK))
-    odd = simplify_conditions([-detK], positive)
-    if _possible(odd):
-        cases.append(StabilityVerdict(
-            'unstable',
-            "the potential energy has an odd degree of instability"
-            + (" (1)" if n == 1 or not odd else "")
-            + ": no gyroscopic or dissipative forces can stabilize it "
-            "(Kelvin-Chetaev, 3rd theorem)", odd))
-    even = simplify_conditions([detK], positive)
-    if n > 1 and _possible(even) and cK:
-        neg_def = sylvester_conditions(K, sign='negative', positive=positive)
-        degree = f" ({n})" if not neg_def and n % 2 == 0 else ""
-        base = f"even degree of instability{degree} of the potential energy"
-        if not has_G:
-            cases.append(StabilityVerdict(
-                'unstable', base + ", no gyroscopic forces: unstable (Kelvin-Chetaev, "
-                "4th theorem; a real positive root)", even))
-        elif complete:
-            cases.append(StabilityVerdict(
-                'destroyed by dissipation', base + ", gyroscopic forces present, "
-                "complete dissipation (D > 0) destroys any gyroscopic "
-                "stabilization: unstable (Kelvin-Chetaev, 4th theorem)", even + cD))
-        else:
-            lam = SR.var('lambda_')
-            poly = (M * lam ** 2 + 2 * G * lam + K).det().expand()
-            gyro = conservative_stability_conditions(poly, lam, positive=positive)
-            conds = simplify_conditions(even + gyro, positive)
-            if _possible(conds):
-                cases.append(StabilityVerdict(
-                    'gyroscopic stabilization possible',
-                    base + ", gyroscopic forces present, no dissipation (Kelvin-"
-                    "Chetaev, 4th theorem); stable in the first approximation "
-                    "under the conditions", conds))
-            else:
-                cases.append(StabilityVerdict(
-                    'unstable', base + ": the gyroscopic forces are too weak to "
-                    "stabilize (the polynomial in lambda^2 has non-real or positive "
-                    "roots)", even))
+    for name, region in found:
+        method = 'Kelvin-Chetaev' if name == 'stable' else 'first approximation'
+        strict = region is not None and len(region) == 1 and \
+            all(r.operator().__name__ in ('gt', 'lt') for r in region[0])
+        conditions = [(r.lhs() - r.rhs()) if r.operator().__name__ == 'gt' else
+                      (r.rhs() - r.lhs()) for r in region[0]] if strict else []
+        cases.append(StabilityVerdict(name, reasons[name], conditions=conditions,
+                                      method=method, region=region, boundaries=boundaries,
+                                      positive=positive))
     if len(cases) == 1:
         return cases[0]
-    if not cases:
-        return StabilityVerdict('undecided', "none of the Kelvin-Chetaev cases "
-                                "could be established (critical case det K = 0?)")
-    return StabilityVerdict('undecided', "depends on the parameters; see cases()",
-                            cases=cases)
+    return StabilityVerdict('depends on the parameters', "see cases(): " +
+                            ", ".join(c.verdict() for c in cases), cases=cases,
+                            boundaries=boundaries, positive=positive)

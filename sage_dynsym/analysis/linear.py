@@ -50,15 +50,13 @@ A pendulum with a damper, from its Lagrangian::
     AnalysisError: linearize: the point {phi: 1} is not an equilibrium: equation 0 gives g*l*m*sin(1) != 0
 """
 from sage.matrix.constructor import matrix, identity_matrix
-from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_ring
+from .determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
 from .solving import normalize
-from .translation import Translation
 
 
 def _at(expr, point):
@@ -120,68 +118,6 @@ def _check_equilibrium(values, point):
                                 entry="linearize")
 
 
-def _fraction_free_det(A, as_polynomial=False, positive=()):
-    r"""
-    A polynomial with the sign (and the zeros) of ``det(A)``.
-
-    Each row is multiplied by the least common multiple `d_i` of its
-    denominators and the determinant is taken over a polynomial ring
-    (Singular); then `\det A = N/D` with `N = \det(\mathrm{diag}(d) A)`,
-    `D = \prod d_i`, and the result is `N D` with common factors cancelled:
-    no denominator is assumed positive unless its factors are declared in
-    ``positive``. Non-polynomial parts of the entries (unspecified
-    functions and their derivatives, ``cos(alpha)``) are atoms.
-
-    OUTPUT: a symbolic expression, or with ``as_polynomial`` an element of a
-    polynomial ring over `\QQ` in the symbols (sorted by name)
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.linear import _fraction_free_det
-        sage: a, g, lam = var('a g lam'); f = function('f')
-        sage: _fraction_free_det(matrix([[lam, 1], [-a/g, lam]]))
-        g^2*lam^2 + a*g
-        sage: _fraction_free_det(matrix([[lam, 1], [-a/g, lam]]), positive=[g])
-        g*lam^2 + a
-        sage: _fraction_free_det(matrix([[lam - diff(f(a), a)]]))
-        lam - diff(f(a), a)
-    """
-    T = Translation([], [], extra=A.list())
-    R = T.flat_ring()
-    if R is None:
-        det = SR(matrix(QQ, [[QQ(e) for e in row] for row in A.rows()]).det())
-        return to_ring(det, QQ) if as_polynomial else det
-    rows, D = [], R(1)
-    for row in A.rows():
-        fractions = [T.fraction(e) for e in row]
-        d = R(1)
-        for f in fractions:
-            d = d.lcm(R(f.denominator()))
-        D *= d
-        rows.append([R(f * d) for f in fractions])
-    N = matrix(R, rows).det()
-    if not D.is_constant() and not N.is_zero():
-        g = N.gcd(D)
-        N, D = N // g, D // g
-    names = T.positive_names(positive)
-    from ._polynomials import positive_polynomial
-    if D.is_constant():
-        scale = R(QQ(D.constant_coefficient()).sign())
-    else:
-        F = D.factor()
-        scale = R(QQ(F.unit()).sign())
-        for factor, e in F:
-            if e % 2 and not positive_polynomial(factor, names):
-                scale *= factor
-    det = T.symbolic(N * scale)
-    if not as_polynomial:
-        return det
-    if any(not p.is_symbol() for p in T.parameters()):
-        raise AnalysisError("the characteristic matrix is not rational in its "
-                            "symbols; use as_polynomial=False", entry="linearize")
-    return to_ring(det, parameter_ring(det.variables()), "characteristic polynomial")
-
-
 class LinearSystem(SageObject):
     r"""
     A linear system with constant coefficients: second-order
@@ -197,6 +133,9 @@ class LinearSystem(SageObject):
       velocities and coordinates, `M\ddot z + S\dot z + W z = 0`
     - ``J``, ``B`` -- (first order) the Jacobian and the left-hand matrix
       (default identity)
+    - ``steady_motion`` -- (optional) the
+      :class:`~sage_dynsym.analysis.steady.SteadyMotion` the system
+      linearizes (see :meth:`steady_motion`)
 
     EXAMPLES::
 
@@ -213,8 +152,9 @@ class LinearSystem(SageObject):
         g^2*lam^2 + lam^4 + 2*k*lam^2 + k^2
     """
 
-    def __init__(self, variables, M=None, S=None, W=None, J=None, B=None):
+    def __init__(self, variables, M=None, S=None, W=None, J=None, B=None, steady_motion=None):
         self._variables = [SR(v) for v in variables]
+        self._steady_motion = steady_motion
         n = len(self._variables)
         if J is not None:
             self._order = 1
@@ -243,6 +183,24 @@ class LinearSystem(SageObject):
             [x, y]
         """
         return list(self._variables)
+
+    def steady_motion(self):
+        r"""
+        The steady motion this system linearizes, with the independent
+        speeds, the velocities and constraint multipliers along it, the
+        coordinates solved to first order and those left out (a
+        :class:`~sage_dynsym.analysis.steady.SteadyMotion`); ``None`` for a
+        linearization about an equilibrium.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.linear import linearize
+            sage: x, dx = var('x dx')
+            sage: linearize(Lagrangian(dx^2/2 - x^2/2, [x]), {x: 0}).steady_motion() is None
+            True
+        """
+        return self._steady_motion
 
     def order(self):
         r"""1 for `B\dot x = Jx`, 2 for the second-order form.
@@ -508,7 +466,9 @@ class LinearSystem(SageObject):
 
     def kelvin_chetaev(self, positive=()):
         r"""
-        The verdict of the Kelvin--Chetaev theorems, see
+        The stability verdict from the structure of forces and the first
+        approximation (Kelvin--Chetaev theorems, gyroscopic stabilization,
+        circulatory forces), see
         :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`.
 
         EXAMPLES::
@@ -523,6 +483,25 @@ class LinearSystem(SageObject):
         self._second()
         return kelvin_chetaev(self.M(), self.D(), self.G(), self.K(), self.P(),
                               positive=positive)
+
+    def small_damping_limit(self, damping, positive=()):
+        r"""
+        The stability as damping of the shape ``damping`` vanishes, beside
+        the undamped system (the damping `D` of this system is replaced):
+        see :func:`~sage_dynsym.analysis.damping_limit.small_damping_limit`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: k = var('k')
+            sage: Ls = LinearSystem([var('x')], M=[[1]], S=[[0]], W=[[k]])
+            sage: Ls.small_damping_limit(matrix([[1]])).region()
+            [[k > 0]]
+        """
+        from .damping_limit import small_damping_limit
+        self._second()
+        return small_damping_limit(self.M(), damping, self.G(), self.K(), self.P(),
+                                   positive=positive)
 
     def linear_integrals(self):
         r"""
@@ -599,9 +578,10 @@ class LinearSystem(SageObject):
         return result
 
 
-def linearize(system, at, variables=None, lhs_matrix=None):
+def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, speeds=None):
     r"""
-    The first-approximation system around an equilibrium.
+    The first-approximation system around an equilibrium, or around a
+    steady motion (an operating point).
 
     INPUT:
 
@@ -617,6 +597,14 @@ def linearize(system, at, variables=None, lhs_matrix=None):
     - ``lhs_matrix`` -- (optional, first-order systems) the matrix `B`, or
       the list of its diagonal entries; default the identity. E.g. the
       inductances and capacitances of circuit state equations (8).
+    - ``coordinates`` -- (optional) linearize about the steady motion ``at``
+      (an :class:`~sage_dynsym.analysis.operating_point.OperatingPoint`,
+      e.g. ``S.operating_point('upright')``, or a dict over coordinates and
+      velocities) in these coordinates, the others being ignorable or tied
+      to them by holonomic constraints; this is also the way for models
+      with constraints, holonomic or on the velocities (rolling wheels), see
+      :mod:`~sage_dynsym.analysis.steady`
+    - ``speeds`` -- (optional, with ``coordinates``) the independent speeds
 
     OUTPUT: a :class:`LinearSystem`; second-order for a Lagrangian, else
     first-order
@@ -659,8 +647,19 @@ def linearize(system, at, variables=None, lhs_matrix=None):
         ...
         AnalysisError: linearize: the point {theta: 0} is a singularity of the coordinates: a denominator of the equations vanishes at theta = 0 (the chart degenerates there, as Euler angles do at theta = 0); linearize in a regular chart instead (e.g. other angles for the axis)
     """
+    from .operating_point import OperatingPoint
+    data = _record(system)
+    if coordinates is not None or speeds is not None or isinstance(at, OperatingPoint) or (
+            isinstance(data, SecondOrderEquations) and data.velocity_constraints()):
+        from .steady import steady_linearization
+        if not isinstance(data, SecondOrderEquations):
+            raise AnalysisError("steady motions are linearized from second-order equations "
+                                "(a Lagrangian or a mechanical system)", entry="linearize")
+        motion = steady_linearization(data, at, coordinates, speeds)
+        return LinearSystem(motion.coordinates(), M=motion.M(), S=motion.S(), W=motion.W(),
+                            steady_motion=motion)
     at = {SR(k): SR(v) for k, v in at.items()}
-    data = equations_of_motion(system)
+    data = _without_constraints(data)
     if isinstance(data, SecondOrderEquations):
         return _linearize_second_order(data, at)
     if isinstance(data, FirstOrderEquations):
@@ -676,7 +675,7 @@ def linearize(system, at, variables=None, lhs_matrix=None):
 def equations_of_motion(system):
     r"""
     The neutral record of a system's equations (see
-    :mod:`~sage_dynsym.analysis.motion`): ``system.to_linearizer()`` when
+    :mod:`~sage_dynsym.analysis.motion`): ``system.equations_record()`` when
     the object has it; ``None`` for a plain list of right-hand sides.
 
     EXAMPLES::
@@ -689,25 +688,43 @@ def equations_of_motion(system):
         sage: equations_of_motion([x]) is None
         True
 
-    Equations with constraint multipliers are refused (the linearization
-    and the stationary-motion search work in independent coordinates)::
+    Equations with constraint multipliers are refused (the stationary-motion
+    search and the linearization about equilibria work in independent
+    coordinates; :func:`linearize` with ``coordinates=`` eliminates them)::
 
         sage: from sage_dynsym.analysis.linear import linearize
         sage: y, dy = var('y dy')
-        sage: linearize(Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]), {x: 0, y: 0})
+        sage: L = Lagrangian((dx^2 + dy^2)/2 - x^2/2, [x, y], constraints=[x - y])
+        sage: equations_of_motion(L)
         Traceback (most recent call last):
         ...
-        AnalysisError: constraints: the equations have the constraints [x - y] with multipliers [mu1], which the analysis does not handle; reduce the model to independent coordinates first (Lagrangian.reduce)
+        AnalysisError: constraints: the equations have the constraints [x - y] with multipliers [mu1], which the analysis does not handle; reduce the model to independent coordinates first (Lagrangian.reduce), or linearize in chosen coordinates (linearize(..., coordinates=[...]))
+        sage: Ls = linearize(L, {x: 0, y: 0}, coordinates=[x]); Ls.M(), Ls.K()
+        ([2], [1])
     """
-    to_linearizer = getattr(system, 'to_linearizer', None)
-    if to_linearizer is not None:
-        data = to_linearizer()
-        if isinstance(data, SecondOrderEquations) and data.constraints():
-            raise AnalysisError(f"the equations have the constraints {data.constraints()} "
-                                f"with multipliers {data.multipliers()}, which the analysis "
-                                "does not handle; reduce the model to independent "
-                                "coordinates first (Lagrangian.reduce)", entry="constraints")
-        return data
+    return _without_constraints(_record(system))
+
+
+def _without_constraints(data):
+    # the record, refused when it has constraint multipliers
+    if isinstance(data, SecondOrderEquations) and (data.constraints()
+                                                   or data.velocity_constraints()):
+        constraints = data.constraints() + data.velocity_constraints()
+        multipliers = data.multipliers() + data.velocity_multipliers()
+        raise AnalysisError(f"the equations have the constraints {constraints} with "
+                            f"multipliers {multipliers}, which the analysis does not handle; "
+                            "reduce the model to independent coordinates first "
+                            "(Lagrangian.reduce), or linearize in chosen coordinates "
+                            "(linearize(..., coordinates=[...]))", entry="constraints")
+    return data
+
+
+def _record(system):
+    # the neutral record of a model or characteristic function, unchecked
+    # to_linearizer: the name of earlier versions, still honoured for other classes
+    record = getattr(system, 'equations_record', None) or getattr(system, 'to_linearizer', None)
+    if record is not None:
+        return record()
     if hasattr(system, 'lagrange_equations'):
         return SecondOrderEquations(system.lagrange_equations(), system.coordinates(),
                                     system.velocities(), system.accelerations())

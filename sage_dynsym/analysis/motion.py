@@ -4,7 +4,7 @@ Equations of motion as neutral data for the analysis
 The analysis does not know the classes that produce equations (Lagrangians,
 Routh functions, Hamiltonians, circuits, systems on Lie algebras): each of
 them hands over its equations as one of two plain records through a
-method ``to_linearizer()`` -- the pattern of SymPy's mechanics --, and
+method ``equations_record()`` -- the pattern of SymPy's mechanics --, and
 :func:`~sage_dynsym.analysis.linear.linearize`, the stationary-motion
 search and the stability verdicts work on the records only.
 
@@ -49,11 +49,17 @@ class SecondOrderEquations(SageObject):
       ``== 0``
     - ``multipliers`` -- (optional) their multiplier symbols `\mu_j`, one per
       constraint
+    - ``velocity_constraints`` -- (optional) constraints on the velocities
+      `g_k = a_k(q, t)\cdot\dot q + b_k(q, t)`, each ``== 0`` (rolling
+      without slipping, a knife edge)
+    - ``velocity_multipliers`` -- (optional) their multiplier symbols
+      `\lambda_k`, one per velocity constraint
 
     With constraints, the equations `E_i` contain the terms
     `-\sum_j \mu_j \partial f_j/\partial q_i`: for `E = M\ddot q - F` this
     is `M\ddot q = F + J^T\mu` with `J = \partial f/\partial q`, so `J^T\mu`
-    are the generalized constraint forces.
+    are the generalized constraint forces. A velocity constraint `g_k`
+    contributes `-\lambda_k\, \partial g_k/\partial\dot q_i` in the same way.
 
     EXAMPLES::
 
@@ -70,16 +76,32 @@ class SecondOrderEquations(SageObject):
         sage: E.constraints(), E.multipliers()
         ([x - y], [mu1])
 
+    A knife edge (the velocity of its point across the blade vanishes)::
+
+        sage: th, dth, ddth, la = var('theta dtheta ddtheta la')
+        sage: E = SecondOrderEquations([ddx - la*sin(th), ddy + la*cos(th), ddth],
+        ....:                          [x, y, th], [dx, dy, dth], [ddx, ddy, ddth],
+        ....:                          velocity_constraints=[sin(th)*dx - cos(th)*dy],
+        ....:                          velocity_multipliers=[la]); E
+        Second-order equations in (x, y, theta): [-la*sin(theta) + ddx, la*cos(theta) + ddy, ddtheta] == 0 with velocity constraints [-dy*cos(theta) + dx*sin(theta)] == 0
+        sage: E.velocity_constraints(), E.velocity_multipliers()
+        ([-dy*cos(theta) + dx*sin(theta)], [la])
+
     TESTS::
 
         sage: SecondOrderEquations([ddx], [x], [dx], [ddx], constraints=[x], multipliers=[])
         Traceback (most recent call last):
         ...
         AnalysisError: equations of motion: 1 constraints for 0 multipliers
+        sage: SecondOrderEquations([ddx], [x], [dx], [ddx], velocity_constraints=[dx])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: equations of motion: 1 velocity constraints for 0 multipliers
     """
 
     def __init__(self, equations, coordinates, velocities, accelerations, function=None,
-                 kinetic=None, constraints=(), multipliers=()):
+                 kinetic=None, constraints=(), multipliers=(), velocity_constraints=(),
+                 velocity_multipliers=()):
         self._equations = [SR(e) for e in equations]
         self._q = [SR(v) for v in coordinates]
         self._dq = [SR(v) for v in velocities]
@@ -95,12 +117,20 @@ class SecondOrderEquations(SageObject):
             raise AnalysisError(f"{len(self._constraints)} constraints for "
                                 f"{len(self._multipliers)} multipliers",
                                 entry="equations of motion")
+        self._velocity_constraints = [SR(g) for g in velocity_constraints]
+        self._velocity_multipliers = [SR(v) for v in velocity_multipliers]
+        if len(self._velocity_constraints) != len(self._velocity_multipliers):
+            raise AnalysisError(f"{len(self._velocity_constraints)} velocity constraints for "
+                                f"{len(self._velocity_multipliers)} multipliers",
+                                entry="equations of motion")
 
     def _repr_(self):
         text = (f"Second-order equations in ({', '.join(map(str, self._q))}): "
                 f"{self._equations} == 0")
         if self._constraints:
             text += f" with constraints {self._constraints} == 0"
+        if self._velocity_constraints:
+            text += f" with velocity constraints {self._velocity_constraints} == 0"
         return text
 
     def equations(self):
@@ -193,6 +223,32 @@ class SecondOrderEquations(SageObject):
             []
         """
         return list(self._multipliers)
+
+    def velocity_constraints(self):
+        r"""The constraints on the velocities `g_k(q, \dot q, t)`, linear in
+        `\dot q` (each ``== 0``; empty if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: SecondOrderEquations([ddx + x], [x], [dx], [ddx]).velocity_constraints()
+            []
+        """
+        return list(self._velocity_constraints)
+
+    def velocity_multipliers(self):
+        r"""The multipliers `\lambda_k` of the velocity constraints (empty if
+        none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: SecondOrderEquations([ddx + x], [x], [dx], [ddx]).velocity_multipliers()
+            []
+        """
+        return list(self._velocity_multipliers)
 
 
 class FirstOrderEquations(SageObject):

@@ -22,9 +22,12 @@ REFERENCES:
 - D. R. Merkin, *Introduction to the Theory of Stability*, ch. 3.
 """
 from sage.matrix.constructor import matrix
+from sage.misc.misc_c import prod
+from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
+from ._polynomials import positive_polynomial
 from .conditions import positive_conditions_all, nonzero_conditions, conjunction
 from .solving import normalize
 from .translation import Translation
@@ -191,6 +194,81 @@ def sylvester_conditions(quadratic_form_or_matrix, variables=None, sign='positiv
     # as expressions e > 0: f < 0 is -f > 0, f != 0 is f^2 > 0
     as_positive = {'gt': lambda d: d, 'lt': lambda d: -d, 'ne': lambda d: d ** 2}
     return [as_positive[c.operator().__name__](c.lhs() - c.rhs()) for c in conditions]
+
+
+def semidefiniteness_conditions(A, positive=()):
+    r"""
+    Conditions for a symmetric matrix to be positive semidefinite: every
+    principal minor (not only the leading ones) is nonnegative.
+
+    INPUT:
+
+    - ``A`` -- a symmetric matrix
+    - ``positive`` -- parameters declared positive
+
+    OUTPUT: a list of relations ``f >= 0`` (factored; minors that are
+    nonnegative by the declarations, or products of factors already
+    required, are left out), ``[]`` if it always holds, ``None`` if never
+
+    EXAMPLES: a damping matrix acting on one coordinate only::
+
+        sage: from sage_dynsym.analysis.quadratic_forms import semidefiniteness_conditions
+        sage: c, d = var('c d')
+        sage: semidefiniteness_conditions(matrix([[c, 0], [0, 0]]))
+        [c >= 0]
+        sage: semidefiniteness_conditions(matrix([[c + d, -d], [-d, d]]), positive=[c])
+        [d >= 0]
+        sage: semidefiniteness_conditions(matrix([[1, 0], [0, -1]])) is None
+        True
+    """
+    from itertools import combinations
+    A = _symmetric(A, None)
+    n = A.nrows()
+    T = Translation([], [], extra=A.list())
+    F = T.fraction(SR(1)).parent()
+    AF = matrix(F, [[T.fraction(e) for e in row] for row in A.rows()])
+    names = T.positive_names(positive)
+    flat = T.flat_ring()
+    entries = []            # (sign, odd factors) of each minor that can be negative
+    for size in range(1, n + 1):
+        for idx in combinations(range(n), size):
+            d = AF.matrix_from_rows_and_columns(list(idx), list(idx)).det()
+            if d == 0:
+                continue
+            p = d.numerator() * d.denominator()
+            if flat is None or p.is_constant():
+                if QQ(p if flat is None else p.constant_coefficient()) < 0:
+                    return None
+                continue
+            factors = flat(p).factor()
+            sign = QQ(factors.unit()).sign()
+            odd = []
+            for f, e in factors:
+                if positive_polynomial(f, names):
+                    continue
+                if positive_polynomial(-f, names):
+                    sign *= (-1) ** e
+                    continue
+                if e % 2:
+                    if f.lc() < 0:
+                        f, sign = -f, -sign
+                    odd.append(f)
+            if not odd:
+                if sign < 0:
+                    return None
+                continue
+            if (sign, odd) not in entries:
+                entries.append((sign, odd))
+    # variables required >= 0 count as positive in the other minors
+    single = {str(odd[0]) for sign, odd in entries if sign > 0 and len(odd) == 1
+              and odd[0].is_gen()}
+    result = []
+    for sign, odd in entries:
+        if not (sign > 0 and len(odd) == 1 and odd[0].is_gen()) and sign > 0 and \
+                all(str(f) in single or positive_polynomial(f, names | single) for f in odd):
+            continue
+        result.append(T.symbolic(sign * prod(odd)) >= 0)
+    return result
 
 
 def _det(A):

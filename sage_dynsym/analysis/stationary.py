@@ -98,11 +98,10 @@ REFERENCES:
 from sage.matrix.constructor import matrix
 from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
-from sage.symbolic.function_factory import function as symbolic_function
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
-from ..symbols import velocity
+from ..arguments import known_symbols, symbol_arguments
 from .conditions import (positive_conditions, positive_conditions_all, conjunction,
                          simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
@@ -111,6 +110,8 @@ from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
                               _signed_minors)
 from .solving import solve_exactly, normalize, SolutionList
+# the modified method has a module of its own; this import keeps its old path
+from .modified_routh import ModifiedRouthLyapunov  # noqa: F401
 
 
 def check_integral(V, variables, equations, index=0):
@@ -588,6 +589,23 @@ class StationarySolution(SageObject):
              ({theta1: pi, theta2: pi}, 'unstable')]
             sage: stationary_motions(L)[3].stability(positive=[m, l, g]).method()
             'first approximation'
+
+        Where neither method decides, the first approximation may still
+        give stability with simple roots on the imaginary axis: the sleeping
+        top, gyroscopically stabilized for `p^2 > 4Amgl` (the gap `2Amgl <
+        p^2 < 4Amgl` is unstable, but no coefficient shows it)::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+            sage: alpha, beta, phi, A, C = var('alpha beta phi A C')
+            sage: top = RigidBody('top', rotations=[(1, alpha), (2, beta), (3, phi)],
+            ....:                 mass_center=[0, 0, l], mass=m, inertia=diagonal_matrix([A, A, C]))
+            sage: R = MechanicalSystem([top], [alpha, beta, phi], parameters=[A, C, m, g, l],
+            ....:     force_function=UniformGravity([0, 0, -g])).lagrangian().routh([phi])
+            sage: sols = stationary_motions(R, positive=[A, C, m, g, l])
+            sage: v = next(s for s in sols if s.point() == {alpha: 0, beta: 0}).stability()
+            sage: [(case.verdict(), case.region()) for case in v.cases()]
+            [('unstable', [[2*A*g*l*m - p_phi^2 > 0]]),
+             ('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]])]
         """
         positive = self._positive(positive)
         cases = []
@@ -618,6 +636,17 @@ class StationarySolution(SageObject):
                 if alts:
                     cases.append(StabilityVerdict(verdict, why, method='first approximation',
                                                   region=alts))
+            if not region:
+                # where neither decides: roots simple on the imaginary axis
+                alts = [a for a in (simplify_conjunction(existence + alt, positive)
+                                    for alt in _marginal(lin, positive)) if a is not None]
+                if alts:
+                    cases.append(StabilityVerdict(
+                        'stable in first approximation', "the roots of the characteristic "
+                        "polynomial on the imaginary axis are simple (or semisimple), the "
+                        "others have negative real parts: the linearized system is stable; "
+                        "the nonlinear terms decide (critical case)",
+                        method='first approximation', region=alts))
         for case in cases:
             if any(set(map(str, alt)) <= set(map(str, existence)) for alt in case.region()):
                 return case
@@ -686,6 +715,20 @@ def _first_approximation(lin, positive):
         if cond is not None:
             asymptotic.append(cond)
     return asymptotic, unstable
+
+
+def _marginal(lin, positive):
+    r"""The region where ``lin`` is stable in first approximation, not
+    asymptotically (:mod:`.spectrum`); ``[]`` if nowhere or not decided."""
+    from .spectrum import spectrum_regions
+    lam = SR.symbol()
+    p = lin.characteristic_polynomial(lam, positive=positive)
+    if not SR(p).has(lam):
+        return []
+    try:
+        return spectrum_regions(p, lam, positive, matrix=lin.jacobian()).marginal() or []
+    except (AnalysisError, ArithmeticError, ValueError, TypeError, ZeroDivisionError):
+        return []
 
 
 class StationarySolutions(SolutionList):
@@ -1004,7 +1047,9 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
     for V, c in zip(integrals[1:], levels or []):
         if c is not None:
             system.append((V - SR(c)).expand())
-    unknowns = variables + multipliers if solve_for is None else [SR(u) for u in solve_for]
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    unknowns = variables + multipliers if solve_for is None else \
+        _unknowns(solve_for, variables + multipliers, system, "stationary_solutions")
     rhs = [SR(X) for X in equations] if equations is not None else None
 
     def linear(s):
@@ -1064,6 +1109,17 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
           [cos(theta) < 0, sin(theta) != 0])]
         sage: sols[0].stability(positive=var('m l g')).verdict()
         'stable'
+
+    TESTS::
+
+        sage: stationary_motions(R, solve_for=[var('zz')])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_for: zz is not an unknown of the model; the unknowns are theta, g, l, m, p_psi
+        sage: stationary_motions(R, positive=['not a name'])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: positive: expected symbols or their names, got 'not a name'
     """
     from .linear import equations_of_motion
     system = routh_or_lagrangian
@@ -1075,7 +1131,9 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     rest = {v: 0 for v in data.velocities() + data.accelerations()}
     E = data.equations()
     at_rest = [normalize(e.subs(rest)) for e in E]
-    unknowns = list(q) if solve_for is None else [SR(u) for u in solve_for]
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    unknowns = list(q) if solve_for is None else \
+        _unknowns(solve_for, list(q), at_rest, "stationary_motions")
     function = data.function() if data.function() is not None else SR(system.expr())
     W = -function.subs({v: 0 for v in data.velocities()})
     kinetic = data.kinetic_matrix()
@@ -1096,220 +1154,44 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
                                description=what, shown=shown)
 
 
-def _solve_linear(expr, v, what):
-    r"""``v`` from ``expr == 0`` when ``expr`` is linear in ``v``."""
-    expr = SR(expr)
-    a = expr.diff(v)
-    if a.has(v) or a.is_zero():
-        raise AnalysisError(f"cannot solve {expr} == 0 for {v}: it is not linear in it",
-                            entry=what)
-    return normalize(-(expr - a * v).subs({v: 0}) / a) if False else \
-        normalize(-expr.subs({v: 0}) / a)
-
-
-class ModifiedRouthLyapunov(SageObject):
+def _unknowns(solve_for, first, equations, entry):
     r"""
-    The modified Routh--Lyapunov method for families of invariant manifolds
-    of a system with one positional coordinate `q` and a cyclic momentum
-    `c` (Example 3 of :doc:`the method </method>`).
+    The unknowns ``solve_for`` of a problem whose own unknowns are
+    ``first`` and whose ``equations`` are given: each must be one of
+    ``first`` or a symbol of the equations (a parameter solved for), and
+    every equation must involve one of them -- an equation free of the
+    unknowns is a condition on what is held fixed, and "no solution for
+    generic values" would then be a false answer.
 
-    The extended Routh function `\tilde R = R + c\, f(q)\,\dot q` (unknown
-    `f`) has the same equations of motion as `R`. Its stationarity
-    equations are `\partial\tilde R/\partial\dot q = 0` (solved for
-    `\dot q`) and `\partial\tilde R/\partial q = 0`; they define a curve
-    `\dot q = \varphi(q)` -- an invariant manifold -- exactly when the
-    second equation holds identically after substituting the first: an
-    ODE for `f`. Its general solution (Sage's ``desolve``, Maxima) gives the
-    family of IM in explicit form, lifted to the full phase space with the
-    cyclic integrals.
+    EXAMPLES::
 
-    INPUT:
-
-    - ``routh`` -- a :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` with one
-      positional coordinate
-    - ``momentum`` -- (default: the first cyclic momentum) the constant `c`
-    - ``f`` -- (default: ``function('f')``) the unknown function
-    - ``positive`` -- (optional) symbols declared positive, used as
-      assumptions when the ODE is integrated (Maxima); a sign it still
-      needs is an :class:`~sage_dynsym.errors.AnalysisError` naming it
-
-    EXAMPLES: see :mod:`sage_dynsym.analysis.tutorial` (Example 3). ::
-
-        sage: from sage_dynsym import Lagrangian
-        sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-        sage: r, phi, dr, dphi = var('r phi dr dphi')
-        sage: MR = ModifiedRouthLyapunov(Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).routh([phi]))
-        sage: MR.velocity_on_manifold()
-        -p_phi*f(r)
-        sage: TestSuite(MR).run(skip=['_test_pickling'])
+        sage: from sage_dynsym.analysis.stationary import _unknowns
+        sage: x, y, a = var('x y a')
+        sage: _unknowns([a, 'x'], [x, y], [x - a, y], 'stationary_motions')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_for: the equation y == 0 does not involve the unknowns a, x: it is a condition on the symbols held fixed; solve for y as well
+        sage: _unknowns([var('zz')], [x, y], [x - a, y], 'stationary_motions')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: solve_for: zz is not an unknown of the model; the unknowns are x, y, a
     """
+    valid = list(first)
+    for e in equations:
+        for v in sorted(SR(e).variables(), key=str):
+            if all(str(v) != str(u) for u in valid) and str(v) != 't':
+                valid.append(v)
+    unknowns = known_symbols(solve_for, valid, 'solve_for', error=AnalysisError,
+                             what="unknown")
+    if len({str(u) for u in unknowns}) < len(unknowns):
+        raise AnalysisError(f"an unknown is given twice: {unknowns}", entry='solve_for')
+    for e in equations:
+        e = SR(e)
+        if not e.is_zero() and not any(e.has(u) for u in unknowns):
+            raise AnalysisError(f"the equation {e} == 0 does not involve the unknowns "
+                                f"{', '.join(map(str, unknowns))}: it is a condition on the "
+                                "symbols held fixed; solve for "
+                                f"{', '.join(map(str, sorted(e.variables(), key=str)))} as well",
+                                entry='solve_for')
+    return unknowns
 
-    def __init__(self, routh, momentum=None, f=None, positive=()):
-        self._positive = list(positive)
-        q = routh.coordinates()
-        if len(q) != 1:
-            raise AnalysisError("the modified method is implemented for one "
-                                f"positional coordinate, got {q}",
-                                entry="ModifiedRouthLyapunov")
-        self._routh = routh
-        self._q, self._dq = q[0], routh.velocities()[0]
-        self._c = SR(momentum) if momentum is not None else SR(routh.momenta()[0])
-        self._f = f if f is not None else symbolic_function('f')
-        self._Rt = SR(routh.expr()) + self._c * self._f(self._q) * self._dq
-
-    def _repr_(self):
-        return f"Modified Routh-Lyapunov method for {self._Rt}"
-
-    def extended_function(self):
-        r"""`\tilde R = R + c f(q)\dot q`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
-            sage: ModifiedRouthLyapunov(L.routh([phi])).extended_function()
-            dr*p_phi*f(r) + 1/2*dr^2 - 1/2*p_phi^2/r^2 + 1/r
-        """
-        return self._Rt
-
-    def stationarity_equations(self):
-        r"""
-        `[\partial\tilde R/\partial q, \partial\tilde R/\partial\dot q]`
-        (each ``== 0``).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
-            sage: ModifiedRouthLyapunov(L.routh([phi])).stationarity_equations()
-            [dr*p_phi*diff(f(r), r) + p_phi^2/r^3 - 1/r^2, p_phi*f(r) + dr]
-        """
-        return [self._Rt.diff(self._q), self._Rt.diff(self._dq)]
-
-    def velocity_on_manifold(self):
-        r"""`\dot q` from `\partial\tilde R/\partial \dot q = 0`, in terms of `f`.
-
-        EXAMPLES: see the class documentation.
-        """
-        return _solve_linear(self.stationarity_equations()[1], self._dq,
-                             "ModifiedRouthLyapunov")
-
-    def degeneracy_condition(self):
-        r"""
-        The ODE for `f`: the equation `\partial\tilde R/\partial q = 0` with
-        `\dot q` from :meth:`velocity_on_manifold` must hold for every `q`.
-        Returned solved for the derivative, ``diff(f(q), q) == ...``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
-            sage: ModifiedRouthLyapunov(L.routh([phi])).degeneracy_condition()
-            diff(f(r), r) == (p_phi^2 - r)/(p_phi^2*r^3*f(r))
-        """
-        dRq = self.stationarity_equations()[0]
-        e = dRq.subs({self._dq: self.velocity_on_manifold()})
-        fq = self._f(self._q)
-        fp = fq.diff(self._q)
-        tmp = SR.symbol('fprime_')
-        e = e.subs({fp: tmp})
-        try:
-            return fp == _solve_linear(e, tmp, "ModifiedRouthLyapunov").subs({tmp: fp})
-        except AnalysisError:
-            return normalize(e.subs({tmp: fp})) == 0
-
-    def solve_degeneracy(self):
-        r"""
-        The general solution of the degeneracy ODE (``desolve``), as a list
-        of explicit solutions ``f(q) == ...`` (with the integration constant
-        ``_C``; the implicit solution is solved for `f` exactly), or the
-        implicit one if it cannot be solved for `f`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
-            sage: sols = ModifiedRouthLyapunov(L.routh([phi])).solve_degeneracy(); len(sols)
-            2
-
-        TESTS: a sign the integration needs is asked for, not assumed::
-
-            sage: q, dq, a = var('q dq a')
-            sage: La = Lagrangian(dq^2/2 + (q^2 + 1)*dphi^2/2 + arctan(q/sqrt(a))/sqrt(a), [q, phi])
-            sage: ModifiedRouthLyapunov(La.routh([phi])).solve_degeneracy()
-            Traceback (most recent call last):
-            ...
-            AnalysisError: ModifiedRouthLyapunov: Maxima needs the sign of a: declare it with positive=[a]
-            sage: len(ModifiedRouthLyapunov(La.routh([phi]), positive=[a]).solve_degeneracy())
-            2
-        """
-        from sage.calculus.desolvers import desolve
-        from ._polynomials import maxima_without_questions
-        fq = self._f(self._q)
-        with maxima_without_questions("ModifiedRouthLyapunov", self._positive):
-            sol = desolve(self.degeneracy_condition(), fq, ivar=self._q)
-        try:
-            found = solve_exactly([sol], [fq])
-        except AnalysisError:
-            return [sol]
-        explicit = [s for s in found if s.is_explicit() and s.dimension() == 0]
-        return [fq == normalize(s.values()[fq]) for s in explicit] if explicit else [sol]
-
-    def invariant_manifolds(self):
-        r"""
-        The families of IM in explicit form: equations
-        ``dq == phi(q, _C)`` in the phase plane of the Routh system.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
-            sage: [im.lhs() for im in ModifiedRouthLyapunov(L.routh([phi])).invariant_manifolds()]
-            [dr, dr]
-        """
-        v = self.velocity_on_manifold()
-        fq = self._f(self._q)
-        return [self._dq == normalize(v.subs({fq: s.rhs()})) for s in self.solve_degeneracy()]
-
-    def lifted_manifolds(self, lagrangian=None):
-        r"""
-        The families of IM lifted to the full phase space: each IM together
-        with the cyclic integrals `\partial L/\partial \dot q_l = c_l`
-        written as equations for the cyclic velocities.
-
-        INPUT:
-
-        - ``lagrangian`` -- (default: the Lagrangian the Routh function was
-          made from) the full Lagrangian
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.stationary import ModifiedRouthLyapunov
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
-            sage: ModifiedRouthLyapunov(L.routh([phi])).lifted_manifolds()[0][1]
-            dphi == p_phi/r^2
-        """
-        L = lagrangian if lagrangian is not None else self._routh.lagrangian()
-        cyc = self._routh.cyclic_coordinates()
-        momenta = self._routh.momenta()
-        integrals = []
-        for qc, c in zip(cyc, momenta):
-            dqc = velocity(qc)
-            eq = SR(L.expr()).diff(dqc) - c
-            try:
-                integrals.append(dqc == _solve_linear(eq, dqc, "ModifiedRouthLyapunov"))
-            except AnalysisError:
-                integrals.append(eq == 0)
-        return [[im] + integrals for im in self.invariant_manifolds()]

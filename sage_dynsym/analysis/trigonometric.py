@@ -73,6 +73,25 @@ def _is_rational(number):
     return isinstance(number.pyobject(), (Integer, Rational))
 
 
+def _unsigned_angle(angle):
+    r"""
+    ``-angle`` if it is written with a leading minus sign and its negative
+    is not, else ``angle``: `\cos(-a) = \cos a` and `\sin(-a) = -\sin a`
+    then share the pair of `a` (Sage keeps ``cos(-a)`` as it is).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.trigonometric import _unsigned_angle
+        sage: a, b = var('a b')
+        sage: _unsigned_angle(-a), _unsigned_angle(b - a), _unsigned_angle(a - b)
+        (a, a - b, a - b)
+    """
+    angle = SR(angle)
+    if str(angle).startswith('-') and not str(-angle).startswith('-'):
+        return -angle
+    return angle
+
+
 def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
     r"""
     Record what a polynomial ring needs to hold ``expr``: the arguments of
@@ -110,7 +129,7 @@ def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
                 stack.append(base)
                 continue
         elif op is cos or op is sin:
-            angles.setdefault(e.operands()[0])
+            angles.setdefault(_unsigned_angle(e.operands()[0]))
             continue
         if any(e.has(v) for v in dynamic):
             raise NotPolynomial(f"{e} is not polynomial in the rotation variables and "
@@ -293,7 +312,7 @@ class TrigPolynomialRing:
     def __init__(self, angles, symbols, atoms=()):
         self._angles = []
         for angle in angles:
-            angle = SR(angle)
+            angle = _unsigned_angle(angle)
             # no pair for a constant angle whose sine and cosine evaluate
             # (pi/6: sqrt(3) is an atom)
             if angle not in self._angles and (angle.cos().operator() is cos
@@ -312,8 +331,9 @@ class TrigPolynomialRing:
         self._pairs = {angle: (gens[i], gens[k + i]) for i, angle in enumerate(self._angles)}
         self._forward = {}
         for i, angle in enumerate(self._angles):
-            self._forward[angle.cos()] = SR.var(self._cos_names[i])
+            self._forward[angle.cos()] = self._forward[(-angle).cos()] = SR.var(self._cos_names[i])
             self._forward[angle.sin()] = SR.var(self._sin_names[i])
+            self._forward[(-angle).sin()] = -SR.var(self._sin_names[i])
         self._backward = {SR.var(n): a.cos() for n, a in zip(self._cos_names, self._angles)}
         self._backward.update({SR.var(n): a.sin() for n, a in zip(self._sin_names, self._angles)})
         for name, atom in zip(atom_names, self._atoms):
@@ -325,6 +345,8 @@ class TrigPolynomialRing:
                         for name in self.ring.variable_names()]
         # the ring element of every symbol, atom, cosine and sine (fraction())
         self._elements = {value: gen for value, gen in zip(self._values, gens)}
+        for angle, (c, s) in self._pairs.items():
+            self._elements[(-angle).cos()], self._elements[(-angle).sin()] = c, -s
 
     @classmethod
     def for_expressions(cls, expressions, dynamic=(), fractions=False):
@@ -431,10 +453,22 @@ class TrigPolynomialRing:
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.trig(a), R.trig(pi/2)
             ((dynsymcos0, dynsymsin0), (0, 1))
+
+        A negative angle shares the pair of its negative (a rotation back
+        by `-a`)::
+
+            sage: R.trig(-a)
+            (dynsymcos0, -dynsymsin0)
+            sage: from sage_dynsym.analysis.trigonometric import trig_rational_simplify
+            sage: trig_rational_simplify(cos(-a)*cos(a) - sin(-a)*sin(a))
+            1
         """
         angle = SR(angle)
         if angle in self._pairs:
             return self._pairs[angle]
+        if -angle in self._pairs:
+            c, s = self._pairs[-angle]
+            return c, -s
         return self.convert(angle.cos()), self.convert(angle.sin())
 
     def diff(self, element, symbol):

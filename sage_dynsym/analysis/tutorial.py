@@ -232,9 +232,10 @@ classical condition `C^2\omega^2 > 4 A m g l`::
     [0 A], [-1/2*p_phi          0], [     0 -g*l*m]
     )
     sage: v = lin.kelvin_chetaev(positive=[A, C, m, g, l]); v.verdict()
-    'gyroscopic stabilization possible'
-    sage: v.conditions()
-    [-4*A*g*l*m + p_phi^2]
+    'depends on the parameters'
+    sage: for case in v.cases(): print(case.verdict(), case.region())
+    stable in first approximation [[4*A*g*l*m - p_phi^2 < 0]]
+    unstable [[4*A*g*l*m - p_phi^2 > 0]]
 
 With dissipation in both angles
 the stabilization is destroyed::
@@ -243,7 +244,7 @@ the stabilization is destroyed::
     sage: from sage_dynsym.analysis import kelvin_chetaev
     sage: kelvin_chetaev(lin.M(), c*identity_matrix(2), lin.G(), lin.K(),
     ....:                positive=[A, C, m, g, l, c]).verdict()
-    'destroyed by dissipation'
+    'unstable'
 
 **Hurwitz test on polynomials with known roots**: see
 :mod:`sage_dynsym.analysis.hurwitz`.

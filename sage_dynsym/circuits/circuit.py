@@ -53,6 +53,8 @@ from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
 from .graph import CircuitGraph
+from .inductance import inductance_conditions
+from .report import report_title, report_sections
 
 class Circuit(NumericalMethods, Model):
     r"""
@@ -144,6 +146,7 @@ class Circuit(NumericalMethods, Model):
         where = {b.name: p for p, b in enumerate(self._branches)}
         self._cgraph = CircuitGraph(self._branches, links=[
             (where[c.first], where[c.second]) for c in self._couplings])
+        self._conditions = inductance_conditions(self, mutual_entries)
 
     def _repr_(self):
         title = f" {self._name!r}" if self._name else ""
@@ -163,6 +166,7 @@ class Circuit(NumericalMethods, Model):
     # the model interface
 
     kind = 'circuit'
+
 
     def equations(self):
         r"""
@@ -375,6 +379,26 @@ class Circuit(NumericalMethods, Model):
             (Coupling(first='L1', second='L2', value=M),)
         """
         return self._couplings
+
+    def conditions(self):
+        r"""
+        The conditions on the parameters for the circuit to be physical that
+        its declared signs leave open: the principal minors of the
+        inductance matrix of each group of coupled windings `\ge 0` (see
+        :mod:`~sage_dynsym.circuits.inductance`); ``[]`` when there is none.
+        Values given to :meth:`simulate` and :meth:`numerical_rhs` must
+        satisfy them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 0, 'L2'], [0, 2, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
+            ....:             parameters=['M'], positive=['L1', 'L2'])
+            sage: C.conditions()
+            [L1*L2 - M^2 >= 0]
+        """
+        return list(self._conditions)
 
     def nodes(self):
         r"""
@@ -726,6 +750,42 @@ class Circuit(NumericalMethods, Model):
         """
         return self._state_form().state_equations()
 
+    def source_values_off(self):
+        r"""
+        The substitution that switches the sources off: the symbol of each
+        voltage and current source to 0.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit([[0, 1, 'E1'], [1, 0, 'R1'], [1, 0, 'I1']]).source_values_off()
+            {E1: 0, I1: 0}
+        """
+        return {SR.var(b.name): 0 for b in self._branches
+                if b.kind in ('voltage_source', 'current_source')}
+
+    def report_title(self):
+        r"""The heading of the circuit's report (see :mod:`~sage_dynsym.circuits.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']], name='LC').report_title()
+            '== LC (circuit: 2 branches on 2 nodes) =='
+        """
+        return report_title(self)
+
+    def report_sections(self):
+        r"""The sections of the circuit's report (see :mod:`~sage_dynsym.circuits.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: [s.name for s in Circuit([[1, 2, 'L1'], [2, 1, 'C1']]).report_sections()][:3]
+            ['Conditions', 'State equations', 'Mixed potential']
+        """
+        return report_sections(self)
+
     def state_equation_labels(self, latex=False):
         r"""
         The left-hand sides of `B\dot x =` :meth:`state_equations`, row by
@@ -810,9 +870,9 @@ class Circuit(NumericalMethods, Model):
             sage: Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])._conserved_energy() is None
             True
         """
-        return quadratic_energy(self.to_linearizer())
+        return quadratic_energy(self.equations_record())
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The state equations as the neutral record of the analysis:
         :class:`~sage_dynsym.analysis.motion.FirstOrderEquations` with the
@@ -824,7 +884,7 @@ class Circuit(NumericalMethods, Model):
             sage: from sage_dynsym.circuits import Circuit
             sage: from sage_dynsym.analysis.linear import linearize
             sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])
-            sage: F = C.to_linearizer(); F
+            sage: F = C.equations_record(); F
             First-order equations B x' = F(x) in (i1, u2)
             sage: linearize(C, {var('i1'): 0, var('u2'): 0}).jacobian()
             [-R1/L1   1/L1]

@@ -328,6 +328,12 @@ def _mutual(data, entry, parser):
     raw = data.get('value', data.get('name'))
     value = _value(raw, parser, entry)
     check_value('mutual', value, entry)
+    # a constant of the windings: a current or a voltage in it would make
+    # the inductance matrix depend on the state
+    state = sorted({str(v) for v in SR(value).variables()} & {'i', 'u'})
+    if state:
+        raise CircuitError(f"a mutual inductance may depend on parameters and element values "
+                           f"only, got {brief(value)}", entry=f"{entry}.value")
     return Coupling(between[0], between[1], value)
 
 
@@ -376,6 +382,11 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
         Traceback (most recent call last):
         ...
         CircuitError: branches[0]: unknown key(s) ['colour']; ...
+        sage: parse_entries([[1, 2, 'L1'], [2, 1, 'L2'],
+        ....:                {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M*i'}], ['M'])
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[2].value: a mutual inductance may depend on parameters and element values only, got M*i
     """
     entries = list(entries)
     _check_declared(entries, parameters, entry_prefix)

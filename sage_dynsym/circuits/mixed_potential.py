@@ -572,13 +572,27 @@ class MixedPotential:
             ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
             sage: BM.time_derivative()
             -(I1 + i1 - f1(u2))^2/C1 + (R1*i1 - E1 - u2)^2/L1
+
+        TESTS: perfectly coupled windings::
+
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 0, 'L1'], [3, 4, 'L2'], [4, 3, 'R2'],
+            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'sqrt(L1*L2)'}])
+            sage: C.brayton_moser().time_derivative()
+            Traceback (most recent call last):
+            ...
+            CircuitError: dP/dt needs the inverse of the inductance matrix, which is singular: some windings are perfectly coupled (M^2 = L1*L2), so their currents are not independent states
         """
         eqs = self.state_equations()
         r = len(self._inductors)
         Pi, Pu = eqs[:r], eqs[r:]
         if self._circuit.couplings():
             vec = matrix(SR, r, 1, Pi)
-            di = (vec.transpose() * self.inductance_matrix().inverse() * vec)[0, 0]
+            L = self.inductance_matrix()
+            if SR(L.det()).simplify_full().is_zero():
+                raise CircuitError("dP/dt needs the inverse of the inductance matrix, which is "
+                                   "singular: some windings are perfectly coupled (M^2 = "
+                                   "L1*L2), so their currents are not independent states")
+            di = (vec.transpose() * L.inverse() * vec)[0, 0]
         else:
             di = sum(x ** 2 / L for x, L in zip(Pi, self.inductance_matrix().diagonal()))
         return di - sum(x ** 2 / Cl for x, Cl in zip(Pu, self.capacitances()))

@@ -180,7 +180,7 @@ class Hamiltonian(SageObject, NumericalMethods):
         """
         return (Hamiltonian, (self._lagrangian, self._momenta))
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         Hamilton's equations as neutral data for the analysis
         (:class:`~sage_dynsym.analysis.motion.FirstOrderEquations` in the
@@ -190,7 +190,7 @@ class Hamiltonian(SageObject, NumericalMethods):
 
             sage: from sage_dynsym import Lagrangian
             sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian().to_linearizer().rhs()
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian().equations_record().rhs()
             [p_x, -x]
         """
         pairs = self.equations()

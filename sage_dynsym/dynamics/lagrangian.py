@@ -129,7 +129,7 @@ from ..numerics.expressions import symbols_and_functions
 from .natural_equations import natural_equations, SymbolicCalculus
 from .compact import equations_cse
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
-                           is_singular, Elimination)
+                           is_singular, has_full_row_rank, Elimination)
 
 
 class Lagrangian(NumericalMethods, SageObject):
@@ -267,8 +267,8 @@ class Lagrangian(NumericalMethods, SageObject):
                                  "constraint must be a relation f(q, t) = 0 between them",
                                  entry=entry)
         if constraints:
-            J = matrix(SR, [[f.diff(q) for q in self._coordinates] for f in constraints])
-            if len(constraints) > len(self._coordinates) or is_singular(J * J.transpose()):
+            J = [[f.diff(q) for q in self._coordinates] for f in constraints]
+            if len(constraints) > len(self._coordinates) or not has_full_row_rank(J):
                 raise ModelError(f"the constraints {constraints} are redundant: the Jacobian "
                                  f"d(constraints)/d({coords}) has rank less than "
                                  f"{len(constraints)} at a generic point; remove the "
@@ -402,6 +402,34 @@ class Lagrangian(NumericalMethods, SageObject):
             [mu2]
         """
         return list(self._multipliers)
+
+    def nonholonomic_constraints(self):
+        r"""
+        The constraints on the velocities (none here; see
+        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2, [x]).nonholonomic_constraints()
+            []
+        """
+        return []
+
+    def velocity_multipliers(self):
+        r"""
+        The multipliers of the constraints on the velocities (none here;
+        see :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2, [x]).velocity_multipliers()
+            []
+        """
+        return []
 
     # ------------------------------------------------------------------
     # value semantics
@@ -769,9 +797,23 @@ class Lagrangian(NumericalMethods, SageObject):
             equations = self._direct_equations()
         else:
             raise ValueError(f"form must be 'structured' or 'direct', got {form!r}")
+        return [e + extra - force for e, extra, force in
+                zip(equations, self._nonpotential_terms(), self._constraint_forces())]
+
+    def _constraint_forces(self):
+        # the generalized constraint forces J^T mu, one per coordinate
         J = self._constraint_jacobian()
-        return [e + extra - sum(mu * J[j, i] for j, mu in enumerate(self._multipliers))
-                for i, (e, extra) in enumerate(zip(equations, self._nonpotential_terms()))]
+        return [sum(mu * J[j, i] for j, mu in enumerate(self._multipliers))
+                for i in range(len(self._coordinates))]
+
+    def _acceleration_constraints(self):
+        # the constraints at the level of accelerations, G ddq = h: the
+        # holonomic ones differentiated twice; with their multipliers
+        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
+        zero = {v: 0 for v in ddq}
+        h = [-time_derivative(time_derivative(f, q, dq, ddq), q, dq, ddq).subs(zero)
+             for f in self._constraints]
+        return self._constraint_jacobian(), h, list(self._multipliers)
 
     def _constraint_jacobian(self):
         return matrix(SR, len(self._constraints), len(self._coordinates),
@@ -850,7 +892,7 @@ class Lagrangian(NumericalMethods, SageObject):
             return None
         return self.energy() if energy is None else energy
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The equations as neutral data for the analysis
         (:class:`~sage_dynsym.analysis.motion.SecondOrderEquations`, with
@@ -860,10 +902,10 @@ class Lagrangian(NumericalMethods, SageObject):
 
             sage: from sage_dynsym import Lagrangian
             sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).to_linearizer()
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations_record()
             Second-order equations in (x): [ddx + x] == 0
             sage: y, dy = var('y dy')
-            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).to_linearizer()
+            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
             sage: E.constraints(), E.multipliers()
             ([x - y], [mu1])
         """
@@ -978,25 +1020,28 @@ class Lagrangian(NumericalMethods, SageObject):
            3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
            and forces of constraint).
         """
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
+        K, rhs, unknowns = self._acceleration_system()
+        solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
+        return {v: solution[i, 0].simplify_rational() for i, v in enumerate(unknowns)}
+
+    def _acceleration_system(self):
+        # the linear system [[M, -G^T], [G, 0]] (ddq, multipliers) = (F, h),
+        # as (matrix, right-hand side, unknowns)
+        q, ddq = self._coordinates, self._accelerations
         M = self.decomposition()[0]
-        n, m = len(q), len(self._constraints)
-        zero = {v: 0 for v in ddq + self._multipliers}
+        G, h, multipliers = self._acceleration_constraints()
+        n, m = len(q), len(multipliers)
+        zero = {v: 0 for v in ddq + multipliers}
         F = [-e.subs(zero) for e in self.lagrange_equations()]
-        J = self._constraint_jacobian()
-        b = [-time_derivative(time_derivative(f, q, dq, ddq), q, dq, ddq).subs(zero)
-             for f in self._constraints]
         K = matrix(SR, n + m, n + m)
         K.set_block(0, 0, M)
         if m:
-            K.set_block(0, n, -J.transpose())
-            K.set_block(n, 0, J)
+            K.set_block(0, n, -G.transpose())
+            K.set_block(n, 0, G)
         if is_singular(K):
             raise ModelError("the equations cannot be solved for the accelerations and "
                              "multipliers (the matrix [[M, -J^T], [J, 0]] is singular)")
-        solution = K.solve_right(matrix(SR, [[v] for v in F + b]))
-        return {v: solution[i, 0].simplify_rational()
-                for i, v in enumerate(ddq + self._multipliers)}
+        return K, F + h, ddq + multipliers
 
     def reduce(self, independent, parametrization):
         r"""

@@ -1,21 +1,32 @@
 r"""
-Models: the common interface of mechanical systems, circuits and systems on
-Lie algebras
+Models: the interface every kind of model implements
 
-Everything that consumes a model -- description files, reports, the
-interactive pages -- talks to it through this small interface instead of
-asking for its class:
+Everything that consumes a model -- description files, reports, stability
+maps, the command line, the interactive pages -- talks to it through this
+interface and never asks for its class (``isinstance``, ``hasattr`` or a
+test of its ``kind``). A kind of model is a subclass of :class:`Model`
+registered under its :attr:`~Model.kind` (see
+:func:`sage_dynsym.description.kinds`); what it provides:
 
-- :attr:`Model.kind`: the ``kind`` of its description file
-  (``'mechanical'``, ``'circuit'``, ``'lie_poisson'``);
-- :meth:`Model.name`, :meth:`Model.parameters`;
-- :meth:`Model.equations`: its equations of motion;
-- :meth:`Model.characteristic_functions`: the characteristic functions it
-  has, by name -- a Lagrangian only where one exists (a nonlinear circuit
-  has a mixed potential instead, a Lie--Poisson system a Hamiltonian only);
-- :meth:`Model.to_dict`: its description mapping (what ``save`` writes);
-- :meth:`Model.results`: the ``results:`` section of a saved description,
-  and :meth:`Model.result_symbols`, the names such a section may use.
+- identity: :attr:`Model.kind`, :meth:`Model.name`, :meth:`Model.parameters`,
+  :meth:`Model.positive_parameters` (the only signs the analysis may use);
+- its description format, both ways, in one place: the class method
+  :meth:`Model.from_dict` and :meth:`Model.to_dict`; the ``results:``
+  section of a saved file: :meth:`Model.results` and
+  :meth:`Model.result_symbols`;
+- its equations: :meth:`Model.equations`, and
+  :meth:`Model.equations_record`, the neutral record
+  (:mod:`sage_dynsym.analysis.motion`) that the analysis and the numerics
+  read; :meth:`Model.characteristic_functions`;
+- :meth:`Model.free_linear_system`: the linear system with the sources
+  switched off, whose stability :func:`~sage_dynsym.scale.maps.stability_map`
+  maps;
+- :meth:`Model.report_title` and :meth:`Model.report_sections`: the
+  sections of its report
+  (:class:`~sage_dynsym.dynamics.reporting.ReportSection`, each with an
+  estimate of its size and the results of earlier sections it needs), run
+  by the one section runner
+  (:func:`~sage_dynsym.dynamics.reporting.run_sections`) within one budget.
 
 EXAMPLES::
 
@@ -27,6 +38,8 @@ EXAMPLES::
     (True, 'mechanical')
     sage: sorted(S.characteristic_functions())
     ['hamiltonian', 'lagrangian']
+    sage: S.equations_record()
+    Second-order equations in (psi, theta): ...
     sage: C = load(example_path('nonlinear_circuit.yaml'))
     sage: C.kind, sorted(C.characteristic_functions())
     ('circuit', ['mixed_potential'])
@@ -36,9 +49,9 @@ from sage.structure.sage_object import SageObject
 
 class Model(SageObject):
     r"""
-    Base class of the models (see the module documentation). Subclasses
-    set :attr:`kind` and implement :meth:`equations`, :meth:`to_dict`,
-    :meth:`characteristic_functions` and :meth:`results`.
+    Base class of the kinds of models (see the module documentation).
+    Subclasses set :attr:`kind` and implement the methods that raise
+    ``NotImplementedError`` here.
 
     EXAMPLES::
 
@@ -48,8 +61,10 @@ class Model(SageObject):
         ...
         NotImplementedError: <abstract method equations>
     """
-    #: The ``kind`` of the model's description file.
+    #: The ``kind`` of the model's description file (its registry name).
     kind = None
+
+    # -- identity --------------------------------------------------------
 
     def name(self):
         r"""The model's name (``None`` if it has none).
@@ -87,25 +102,21 @@ class Model(SageObject):
         """
         return list(getattr(self, '_positive', []))
 
-    def equations(self):
-        r"""The equations of motion of the model.
+    # -- the description format -------------------------------------------
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The model of a description mapping of this kind (what a description
+        file holds); ``source`` names the file in errors.
 
         EXAMPLES: see the subclasses.
         """
-        raise NotImplementedError("<abstract method equations>")
-
-    def characteristic_functions(self):
-        r"""
-        The characteristic functions the model has: a dict from names
-        (``'lagrangian'``, ``'hamiltonian'``, ``'mixed_potential'``, ...)
-        to functions of no argument that build them.
-
-        EXAMPLES: see the module documentation.
-        """
-        raise NotImplementedError("<abstract method characteristic_functions>")
+        raise NotImplementedError("<abstract method from_dict>")
 
     def to_dict(self):
-        r"""The description mapping of the model (what ``save`` writes).
+        r"""The description mapping of the model (what ``save`` writes);
+        :meth:`from_dict` reads it back.
 
         EXAMPLES: see the subclasses.
         """
@@ -128,3 +139,77 @@ class Model(SageObject):
         EXAMPLES: see the subclasses.
         """
         raise NotImplementedError("<abstract method result_symbols>")
+
+    # -- equations ---------------------------------------------------------
+
+    def equations(self):
+        r"""The equations of motion of the model.
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method equations>")
+
+    def equations_record(self):
+        r"""
+        The equations as a neutral record of
+        :mod:`sage_dynsym.analysis.motion` (what the analysis and the
+        numerics read).
+
+        EXAMPLES: see the module documentation.
+        """
+        raise NotImplementedError("<abstract method equations_record>")
+
+    def to_linearizer(self):
+        r"""
+        The same as :meth:`equations_record` (the name of earlier
+        versions, after SymPy's mechanics).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: S.to_linearizer().coordinates() == S.equations_record().coordinates()
+            True
+        """
+        return self.equations_record()
+
+    def characteristic_functions(self):
+        r"""
+        The characteristic functions the model has: a dict from names
+        (``'lagrangian'``, ``'hamiltonian'``, ``'mixed_potential'``, ...)
+        to functions of no argument that build them.
+
+        EXAMPLES: see the module documentation.
+        """
+        raise NotImplementedError("<abstract method characteristic_functions>")
+
+    # -- analysis and reports ----------------------------------------------
+
+    def free_linear_system(self, at=None):
+        r"""
+        The linear system of the model with its sources switched off,
+        around the state ``at`` (a dict; default: the zero state, or the
+        model's own reference state): a
+        :class:`~sage_dynsym.analysis.linear.LinearSystem`, what
+        :func:`~sage_dynsym.scale.maps.stability_map` maps.
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method free_linear_system>")
+
+    def report_title(self):
+        r"""The heading of the model's report (one line).
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method report_title>")
+
+    def report_sections(self):
+        r"""
+        The sections of the model's report, in the order they are printed:
+        a list of :class:`~sage_dynsym.dynamics.reporting.ReportSection`.
+
+        EXAMPLES: see the subclasses.
+        """
+        raise NotImplementedError("<abstract method report_sections>")

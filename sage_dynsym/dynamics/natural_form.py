@@ -150,6 +150,54 @@ def is_singular(A):
     return A.rank() < n
 
 
+def has_full_row_rank(rows):
+    r"""
+    Whether the symbolic matrix ``rows`` (a matrix or a list of rows) has
+    full row rank at a generic point: at a random point, when the Gram
+    determinant `\det(C C^H)` is clearly nonzero in 200-bit arithmetic
+    (rounding errors, even of terms that cancel, stay near `10^{-60}`
+    relative); else exactly (modulo `\cos^2 + \sin^2 = 1`, see
+    :mod:`~sage_dynsym.analysis.trig_linear`). Cheaper than
+    :func:`is_singular` of `C C^T` on large entries: the product is never
+    formed symbolically.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.natural_form import has_full_row_rank
+        sage: x, y = var('x y')
+        sage: has_full_row_rank([[2*x, 2*y]]), has_full_row_rank([[x, y], [2*x, 2*y]])
+        (True, False)
+        sage: has_full_row_rank([[cos(x)^2 + sin(x)^2 - 1, 0]])
+        False
+        sage: has_full_row_rank([])
+        True
+    """
+    from sage.rings.complex_mpfr import ComplexField
+    rows = [list(row) for row in rows]
+    if not rows:
+        return True
+    variables = sorted(set().union(*(SR(e).variables() for row in rows for e in row)), key=str)
+    rng = random.Random(1)
+    CF = ComplexField(200)
+    point = {v: CF(rng.uniform(0.3, 1.7)) for v in variables}
+    try:
+        C = matrix(CF, [[CF(SR(e).subs(point)) for e in row] for row in rows])
+        gram = C * C.conjugate_transpose()
+        norms = [gram[i, i].real() for i in range(gram.nrows())]
+        # a row of cancelling terms is left with rounding errors near 1e-60
+        if min(norms) > 1e-80 and abs(gram.det()) > 1e-40 * prod(norms):
+            return True
+    except (TypeError, ValueError, ArithmeticError):
+        pass    # not numerical at the point (unknown functions, poles, ...)
+    from ..errors import AnalysisError
+    from ..analysis.trig_linear import TrigFractionField
+    try:
+        K = TrigFractionField([e for row in rows for e in row])
+        return K.rank(K.matrix(rows)) == len(rows)
+    except AnalysisError:   # not rational in the sines and cosines
+        return matrix(SR, rows).rank() == len(rows)
+
+
 class Elimination:
     r"""
     Symmetric Gaussian elimination `P A P^T = L D L^T` of a symmetric

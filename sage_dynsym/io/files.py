@@ -18,7 +18,7 @@ import os
 import stat
 import tempfile
 
-from ..errors import DescriptionError
+from ..errors import DescriptionError, brief
 
 
 def write_atomically(path, write):
@@ -54,15 +54,30 @@ def write_atomically(path, write):
         KeyboardInterrupt
         sage: open(path).read(), os.listdir(folder)
         ('kind: circuit\n', ['f.yaml'])
+
+    TESTS::
+
+        sage: write_atomically('a\x00b.yaml', lambda s: s.write(''))
+        Traceback (most recent call last):
+        ...
+        DescriptionError: 'a\x00b.yaml': cannot write the file: embedded null byte
+        sage: write_atomically(42, lambda s: s.write(''))
+        Traceback (most recent call last):
+        ...
+        DescriptionError: 42: expected a file name, got 42
     """
-    target = os.path.realpath(path)
-    folder = os.path.dirname(target) or '.'
+    if not isinstance(path, (str, os.PathLike)) or not os.fspath(path):
+        raise DescriptionError(f"expected a file name, got {brief(path)}", source=brief(path))
     try:
+        target = os.path.realpath(path)
+        folder = os.path.dirname(target) or '.'
         fd, temporary = tempfile.mkstemp(dir=folder, prefix=f".{os.path.basename(target)}.",
                                          suffix=".tmp")
-    except OSError as err:
-        raise DescriptionError(f"cannot write the file: {err.strerror or err}",
-                               source=str(path)) from None
+    except (OSError, ValueError, TypeError) as err:    # ValueError: a NUL byte in the name
+        reason = err.strerror if isinstance(err, OSError) and err.strerror else err
+        name = str(path)
+        raise DescriptionError(f"cannot write the file: {reason}",
+                               source=name if name.isprintable() else brief(name)) from None
     try:
         with os.fdopen(fd, 'w', encoding='utf-8') as stream:
             write(stream)

@@ -147,9 +147,10 @@ def _variables(name, variables):
     else:
         if isinstance(variables, str):
             variables = [v for v in re.split(r'[\s,]+', variables) if v]
-        variables = list(variables)
+        variables = _listed(variables)
         if len(variables) == nblocks and nblocks < n and all(
-                isinstance(v, str) or SR(v).is_symbol() for v in variables):
+                isinstance(v, str) or getattr(v, 'is_symbol', lambda: False)()
+                for v in variables):
             names = _default_names(name, [str(v) for v in variables])
         elif len(variables) == n:
             names = variables
@@ -162,7 +163,15 @@ def _variables(name, variables):
     return _symbols(names)
 
 
+def _listed(names):
+    r"""``names`` as a list, or a :class:`ModelError` for what is not a list."""
+    if isinstance(names, (str, bytes, dict)) or not hasattr(names, '__iter__'):
+        raise ModelError(f"expected a list of variables, got {brief(names)}", entry="variables")
+    return list(names)
+
+
 def _symbols(names):
+    names = _listed(names)
     out = []
     for i, v in enumerate(names):
         try:
@@ -542,9 +551,9 @@ def structure_constants_matrix(constants, variables):
 
     - ``constants`` -- either a nested list ``c[i][j][k]`` (`n \times n
       \times n`), or a dict ``{(i, j): {k: c}}`` giving the nonzero brackets
-      `[e_i, e_j] = \sum_k c\, e_k` for some pairs (the opposite pairs
-      follow by skew-symmetry); indices are 0-based positions or the
-      variables themselves (symbols or names)
+      `[e_i, e_j] = \sum_k c\, e_k` for some pairs, each pair once (the
+      opposite pairs follow by skew-symmetry); indices are 0-based
+      positions or the variables themselves (symbols or names)
     - ``variables`` -- the coordinates `x_k` (dual to `e_k`)
 
     EXAMPLES::
@@ -560,7 +569,19 @@ def structure_constants_matrix(constants, variables):
         sage: structure_constants_matrix({(0, 1): {1: 1}, (1, 0): {1: 1}}, [x, y])
         Traceback (most recent call last):
         ...
-        ModelError: algebra: the structure constants are not skew-symmetric: [e_0, e_1] = y but [e_1, e_0] = y
+        ModelError: algebra: the structure constants are not skew-symmetric: [x, y] = y but [y, x] = y; give each pair once (the other order follows by skew-symmetry)
+        sage: structure_constants_matrix({(0, 1): {1: 1}, (1, 0): {1: -1}}, [x, y])
+        Traceback (most recent call last):
+        ...
+        ModelError: algebra: the bracket [y, x] is given after [x, y]: give each pair once (the other order follows by skew-symmetry)
+        sage: structure_constants_matrix({(0, 1): {1: 1}, (x, y): {1: 1}}, [x, y])
+        Traceback (most recent call last):
+        ...
+        ModelError: algebra: the bracket [x, y] is given twice: give each pair once (the other order follows by skew-symmetry)
+        sage: structure_constants_matrix({(0, 0): {1: 1}}, [x, y])
+        Traceback (most recent call last):
+        ...
+        ModelError: algebra: the structure constants are not skew-symmetric: [x, x] = y but [x, x] = y
         sage: structure_constants_matrix({(0, 5): {1: 1}}, [x, y])
         Traceback (most recent call last):
         ...
@@ -594,9 +615,21 @@ def structure_constants_matrix(constants, variables):
                                  entry="algebra")
             i, j = index(pair[0]), index(pair[1])
             if not isinstance(value, dict):
-                raise ModelError(f"[e_{i}, e_{j}]: expected a dict {{k: c}}, got "
+                raise ModelError(f"[{x[i]}, {x[j]}]: expected a dict {{k: c}}, got "
                                  f"{brief(value)}", entry="algebra")
-            brackets[i, j] = sum((SR(c) * x[index(k)] for k, c in value.items()), SR(0))
+            b = sum((SR(c) * x[index(k)] for k, c in value.items()), SR(0))
+            once = "give each pair once (the other order follows by skew-symmetry)"
+            if (i, j) in brackets:
+                raise ModelError(f"the bracket [{x[i]}, {x[j]}] is given twice: {once}",
+                                 entry="algebra")
+            if (j, i) in brackets:
+                if not _is_zero(b + brackets[j, i]):
+                    raise ModelError(f"the structure constants are not skew-symmetric: "
+                                     f"[{x[j]}, {x[i]}] = {brackets[j, i]} but [{x[i]}, {x[j]}] "
+                                     f"= {b}; {once}", entry="algebra")
+                raise ModelError(f"the bracket [{x[i]}, {x[j]}] is given after [{x[j]}, "
+                                 f"{x[i]}]: {once}", entry="algebra")
+            brackets[i, j] = b
     else:
         try:
             c = [[list(row) for row in layer] for layer in constants]
@@ -613,8 +646,8 @@ def structure_constants_matrix(constants, variables):
         if (j, i) in brackets:
             if not _is_zero(b + brackets[j, i]):
                 raise ModelError(f"the structure constants are not skew-symmetric: "
-                                 f"[e_{i}, e_{j}] = {b} but [e_{j}, e_{i}] = {brackets[j, i]}",
-                                 entry="algebra")
+                                 f"[{x[i]}, {x[j]}] = {b} but [{x[j]}, {x[i]}] = "
+                                 f"{brackets[j, i]}", entry="algebra")
         else:
             brackets[j, i] = -b
     J = matrix(SR, n, n)

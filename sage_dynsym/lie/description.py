@@ -21,8 +21,9 @@ brackets are zero or follow by skew-symmetry. Expressions are parsed by
 variables and parameters only.
 
 :func:`lie_poisson_from_dict` builds the system from the parsed YAML
-mapping; :func:`lie_report` is its text report (equations, Casimirs,
-polynomial integrals up to degree 2, stationary solutions).
+mapping; :func:`~sage_dynsym.lie.report.lie_report` is its text report
+(equations, Casimirs, polynomial integrals up to degree 2, stationary
+solutions).
 
 EXAMPLES::
 
@@ -54,12 +55,12 @@ EXAMPLES::
           unstable (first approximation) where [(A1 - A2)*(A1 - A3) < 0, M1 != 0]
       ...
 """
-from sage.misc.latex import latex
-
 from ..errors import DescriptionError, DynSymError, brief
 from ..io.expressions import ExpressionParser
 from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
+# the report lived here in earlier versions
+from .report import LIE_SECTIONS, lie_report, lie_estimates  # noqa: F401
 from .system import LiePoissonSystem
 
 #: The keys of a ``kind: lie_poisson`` description.
@@ -69,16 +70,6 @@ LIE_POISSON_KEYS = {'kind', 'name', 'algebra', 'variables', 'parameters', 'posit
 MAX_VARIABLES = 30
 #: Most parameters of a description.
 MAX_PARAMETERS = 500
-
-#: Sections of :func:`lie_report`.
-LIE_SECTIONS = {
-    'hamiltonian': "the Hamiltonian",
-    'equations': "the Lie-Poisson equations",
-    'casimirs': "the polynomial Casimirs of the algebra",
-    'integrals': "the polynomial first integrals of degree <= 2",
-    'stationary': "stationary motions (Routh-Lyapunov) with their stability",
-}
-
 
 def _names(data, key, source, required=False, limit=None):
     value = data.get(key)
@@ -141,6 +132,12 @@ def lie_poisson_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         ModelError: bad.yaml: algebra: the matrix breaks the Jacobi identity: {x, {y, z}} + {y, {z, x}} + {z, {x, y}} = x, not 0
+        sage: lie_poisson_from_dict({'kind': 'lie_poisson', 'variables': ['x', 'y'],
+        ....:     'algebra': {'structure_constants': [['x', 'y', {'y': 1}], ['y', 'x', {'y': -1}]]},
+        ....:     'hamiltonian': 'x*y'}, 'b.yaml')
+        Traceback (most recent call last):
+        ...
+        DescriptionError: b.yaml: algebra.structure_constants[1]: the bracket of y and x is already given in structure_constants[0]: give each pair once (the other order follows by skew-symmetry)
         sage: lie_poisson_from_dict({'kind': 'lie_poisson', 'algebra': 'so3', 'hamiltonian': 'M1',
         ....:                        'colour': 'red'}, 'top.yaml')
         Traceback (most recent call last):
@@ -244,7 +241,7 @@ def _algebra(algebra_data, variables, parser, source):
             raise DescriptionError(f"expected a list of brackets [a, b, {{c: coefficient}}], "
                                    f"got {brief(value)}", entry='algebra.structure_constants',
                                    source=source)
-        constants = {}
+        constants, given = {}, {}
         for i, item in enumerate(value):
             entry = f'algebra.structure_constants[{i}]'
             if not (isinstance(item, list) and len(item) == 3 and isinstance(item[2], dict)
@@ -253,98 +250,15 @@ def _algebra(algebra_data, variables, parser, source):
                 raise DescriptionError(f"expected a bracket [a, b, {{c: coefficient}}] of the "
                                        f"variables {', '.join(variables)}, got {brief(item)}",
                                        entry=entry, source=source)
+            pair = frozenset(item[:2])
+            if pair in given:
+                raise DescriptionError(f"the bracket of {item[0]} and {item[1]} is already given "
+                                       f"in structure_constants[{given[pair]}]: give each pair "
+                                       "once (the other order follows by skew-symmetry)",
+                                       entry=entry, source=source)
+            given[pair] = i
             constants[item[0], item[1]] = {k: parser.parse(c, entry=f'{entry}.{k}')
                                            for k, c in item[2].items()}
         return constants
     raise DescriptionError(f"unknown key {brief(kind)}: expected poisson_matrix or "
                            "structure_constants", entry='algebra', source=source)
-
-
-def _formula(lines, label, expr, indent="  "):
-    lines.append(f"{indent}{label}{expr}")
-    lines.append(f"{indent}  LaTeX: {latex(expr)}")
-
-
-def lie_report(system, sections=None, analysis=True):
-    r"""
-    A text report of a Lie--Poisson system: the Hamiltonian, the equations
-    (text and LaTeX), the Casimirs, the polynomial first integrals of degree
-    `\le 2` besides `H` and the Casimirs, and the stationary motions over
-    `H`, the Casimirs and those integrals, with their stability.
-
-    INPUT:
-
-    - ``system`` -- a :class:`~sage_dynsym.lie.system.LiePoissonSystem`
-    - ``sections`` -- (default: all) keys of :data:`LIE_SECTIONS` (others
-      are ignored)
-    - ``analysis`` -- (default: ``True``) whether to include the
-      stationary motions
-
-    A section that fails is one line saying why; the others are still
-    printed.
-
-    EXAMPLES: see the module documentation. ::
-
-        sage: from sage_dynsym.lie.system import LiePoissonSystem
-        sage: from sage_dynsym.lie.description import lie_report
-        sage: M1 = var('M1')
-        sage: print(lie_report(LiePoissonSystem('so3', M1^2/2), sections=['integrals']))
-        == Lie-Poisson system on so3: variables M1, M2, M3 ==
-        Polynomial first integrals of degree <= 2 besides H and the Casimirs:
-          M1
-            LaTeX: M_{1}
-    """
-    wanted = set(LIE_SECTIONS if sections is None else sections) & set(LIE_SECTIONS)
-    if not analysis:
-        wanted.discard('stationary')
-    what = system.structure().name() or "a Poisson structure"
-    head = f"Lie-Poisson system on {what}: variables {', '.join(map(str, system.variables()))}"
-    lines = [f"== {system.name()} ({head}) ==" if system.name() else f"== {head} =="]
-
-    def run(key, title, body):
-        if key not in wanted:
-            return
-        out = []
-        try:
-            body(out)
-        except DynSymError as err:
-            lines.append(f"{title}: not available ({err})")
-            return
-        except Exception as err:    # one line, never a traceback
-            lines.append(f"{title}: section failed: {type(err).__name__}: {err}")
-            return
-        lines.append(f"{title}:")
-        lines.extend(out)
-
-    run('hamiltonian', "Hamiltonian", lambda out: _formula(out, "H = ", system.hamiltonian()))
-
-    def equations(out):
-        for x, e in zip(system.variables(), system.equations()):
-            _formula(out, f"d{x}/dt = ", e)
-    run('equations', "Lie-Poisson equations dx/dt = {x, H}", equations)
-
-    def casimirs(out):
-        for C in system.casimirs():
-            _formula(out, "", C)
-        if not system.casimirs():
-            out.append("  none")
-    run('casimirs', "Casimirs (polynomial, degree <= 4)", casimirs)
-
-    found = []
-
-    def integrals(out):
-        found.extend(system.polynomial_integrals(2, new_only=True))
-        for F in found:
-            _formula(out, "", F)
-        if not found:
-            out.append("  none (for generic parameter values)")
-    run('integrals', "Polynomial first integrals of degree <= 2 besides H and the Casimirs",
-        integrals)
-    run('stationary', "Stationary motions (Routh-Lyapunov over H, the Casimirs"
-        + (" and the integrals above)" if found else ")"),
-        lambda out: _stationary(system, found, out))
-    return "\n".join(lines)
-
-
-def _stationary(system, integrals, out):
-    out.extend(system.stationary_solutions(integrals).report_lines())

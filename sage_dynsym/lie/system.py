@@ -77,9 +77,12 @@ from ..analysis.motion import FirstOrderEquations
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
+from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
-from .integrals import casimirs as _casimirs, polynomial_integrals as _polynomial_integrals
+from .report import report_title, report_sections
+from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
+                        MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
 
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
@@ -156,7 +159,7 @@ class LiePoissonSystem(Model, NumericalMethods):
     def __init__(self, algebra, hamiltonian, variables=None, parameters=None, name=None,
                  positive=(), reduction=None):
         self._structure = poisson_structure(algebra, variables)
-        self._positive = [SR(a) for a in positive]
+        self._positive = symbol_arguments(positive, 'positive')
         self._reduction = None if reduction is None else dict(reduction)
         x = self._structure.variables()
         try:
@@ -170,7 +173,7 @@ class LiePoissonSystem(Model, NumericalMethods):
                  if self._structure.name() else f"the system ({', '.join(_names_of(x))})")
         others = sorted({a for a in self._H.variables() if str(a) not in names}, key=str)
         if parameters is not None:
-            self._parameters = [SR(a) for a in parameters]
+            self._parameters = symbol_arguments(parameters, 'parameters')
             declared = {str(a) for a in self._parameters}
             for a in others + self._structure.parameters():
                 if str(a) not in declared:
@@ -206,6 +209,28 @@ class LiePoissonSystem(Model, NumericalMethods):
         what = self._structure.name()
         where = r"\mathfrak{%s}" % what if what else r"\mathbb{R}^{%d}" % len(self.variables())
         return r"H = %s \text{ on } %s" % (latex(self._H), where)
+
+    def report_title(self):
+        r"""The heading of the system's report (see :mod:`~sage_dynsym.lie.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2/2).report_title()
+            '== Lie-Poisson system on so3: variables M1, M2, M3 =='
+        """
+        return report_title(self)
+
+    def report_sections(self):
+        r"""The sections of the system's report (see :mod:`~sage_dynsym.lie.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: [s.key for s in LiePoissonSystem('so3', var('M1')^2/2).report_sections()]
+            ['hamiltonian', 'equations', 'casimirs', 'integrals', 'stationary']
+        """
+        return report_sections(self)
 
     def name(self):
         r"""
@@ -352,22 +377,37 @@ class LiePoissonSystem(Model, NumericalMethods):
         """
         return bool(SR(self.poisson_bracket(F, self._H)).is_zero())
 
-    @cached_method
-    def casimirs(self, degree=4):
+    def casimirs(self, degree=4, max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
         r"""
         The independent polynomial Casimirs of the structure up to
         ``degree``, computed from the Poisson matrix
-        (:func:`~sage_dynsym.lie.integrals.casimirs`), by increasing degree.
+        (:func:`~sage_dynsym.lie.integrals.casimirs`), by increasing degree;
+        ``max_degree`` and ``max_basis`` bound the search (the degree, the
+        number of unknown coefficients). Computed once per degree.
 
         EXAMPLES::
 
             sage: from sage_dynsym.lie.system import LiePoissonSystem
             sage: LiePoissonSystem('so31', var('M1')^2).casimirs()
             [M1^2 + M2^2 + M3^2 - p1^2 - p2^2 - p3^2, M1*p1 + M2*p2 + M3*p3]
-        """
-        return _casimirs(self._structure, degree, parameters=self._parameters)
 
-    def polynomial_integrals(self, degree, new_only=False, conditions=False):
+        TESTS::
+
+            sage: LiePoissonSystem('so3', var('M1')^2).casimirs(degree=[])
+            Traceback (most recent call last):
+            ...
+            AnalysisError: casimirs: expected an integer, got [] (list)
+        """
+        degree = check_degree(degree, "casimirs", len(self.variables()), max_degree, max_basis)
+        return list(self._casimirs(degree))
+
+    @cached_method
+    def _casimirs(self, degree):
+        return _casimirs(self._structure, degree, parameters=self._parameters, max_degree=degree,
+                         max_basis=basis_size(len(self.variables()), degree))
+
+    def polynomial_integrals(self, degree, new_only=False, conditions=False, levels=None,
+                             max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
         r"""
         A basis of the polynomial first integrals of degree at most
         ``degree``, modulo constants (products of integrals count); see
@@ -382,7 +422,17 @@ class LiePoissonSystem(Model, NumericalMethods):
         - ``conditions`` -- (default: ``False``) also return the families
           of parameter values on which there are more integrals: a pair
           ``(basis, jumps)``, see
+          :class:`~sage_dynsym.lie.integrals.IntegralJump`; only ``True``
+          or ``False``
+        - ``levels`` -- (optional) a dict ``{g: c}`` of Casimirs or
+          integrals and their values: the integrals on that invariant
+          level, modulo its ideal (:mod:`~sage_dynsym.lie.levels`)
           :class:`~sage_dynsym.lie.integrals.IntegralJump`
+        - ``max_degree``, ``max_basis`` -- (default:
+          :data:`~sage_dynsym.lie.integrals.MAX_DEGREE`,
+          :data:`~sage_dynsym.lie.integrals.MAX_BASIS`) the limits of the
+          search (the degree, the number of unknown coefficients), checked
+          before it starts
 
         EXAMPLES: Kovalevskaya's case, `A = B = 2C`, the centre of mass in
         the equatorial plane at `(x_0, 0, 0)`: a new integral of degree 4,
@@ -400,9 +450,27 @@ class LiePoissonSystem(Model, NumericalMethods):
             16*C^2*g^2*gamma1^2*m^2*x0^2 + 16*C^2*g^2*gamma2^2*m^2*x0^2 - 8*C*M1^2*g*gamma1*m*x0 + 8*C*M2^2*g*gamma1*m*x0 - 16*C*M1*M2*g*gamma2*m*x0 + M1^4 + 2*M1^2*M2^2 + M2^4
             sage: bool(K == (M1^2 - M2^2 - 4*C*m*g*x0*g1)^2 + (2*M1*M2 - 4*C*m*g*x0*g2)^2)
             True
+
+        The Goryachev--Chaplygin case, `A = B = 4C`, has a cubic integral
+        only on the level of the area integral `(M, \gamma) = 0`::
+
+            sage: GC = LiePoissonSystem('e3', (M1^2 + M2^2 + 4*M3^2)/(8*C) + m*g*x0*g1)
+            sage: GC.polynomial_integrals(3, new_only=True)
+            []
+            sage: GC.polynomial_integrals(3, new_only=True, levels={M1*g1 + M2*g2 + M3*g3: 0})
+            [-4*C*M1*g*gamma3*m*x0 + M1^2*M3 + M2^2*M3]
+
+        TESTS::
+
+            sage: GC.polynomial_integrals(2, conditions='yes')
+            Traceback (most recent call last):
+            ...
+            AnalysisError: polynomial_integrals: conditions must be True or False, got 'yes'
         """
         return _polynomial_integrals(self._structure, self._H, degree, new_only=new_only,
-                                     conditions=conditions, parameters=self._parameters)
+                                     conditions=conditions, parameters=self._parameters,
+                                     levels=levels, max_degree=max_degree,
+                                     max_basis=max_basis)
 
     def stationary_solutions(self, integrals=(), levels=None, positive=None, multipliers=None,
                              solve_for=None):
@@ -471,6 +539,29 @@ class LiePoissonSystem(Model, NumericalMethods):
         """
         return _linearize(self.equations(), at, self.variables())
 
+    def free_linear_system(self, at=None):
+        r"""
+        The first-approximation system at ``at`` (a dict over the
+        variables; the others 0, by default the origin): what
+        :func:`~sage_dynsym.scale.maps.stability_map` maps (a Lie--Poisson
+        system has no sources to switch off).
+
+        EXAMPLES: the rotation about the second axis; Euler's classical
+        result `\lambda^2 = -(1/A_2 - 1/A_1)(1/A_2 - 1/A_3) M_2^2` (unstable
+        about the middle axis)::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3, A1, A2, A3, lam = var('M1 M2 M3 A1 A2 A3 lam')
+            sage: S = LiePoissonSystem('so3', (M1^2/A1 + M2^2/A2 + M3^2/A3)/2)
+            sage: p = S.free_linear_system({M2: 1}).characteristic_polynomial(lam)
+            sage: bool((p/(A1^2*A2^2*A3^2)).expand()
+            ....:      == (lam^3 + (1/A2 - 1/A1)*(1/A2 - 1/A3)*lam).expand())
+            True
+        """
+        point = {x: SR(0) for x in self.variables()}
+        point.update({SR(k): SR(v) for k, v in (at or {}).items()})
+        return self.linearize(point)
+
     def subs(self, values):
         r"""
         The system with parameter values substituted (in `H` and in the
@@ -506,7 +597,7 @@ class LiePoissonSystem(Model, NumericalMethods):
                                 name=self._name, reduction=reduction,
                                 positive=[a for a in self._positive if str(a) not in names])
 
-    def to_linearizer(self):
+    def equations_record(self):
         r"""
         The equations `\dot x = J(x)\nabla H` as neutral data
         (:class:`~sage_dynsym.analysis.motion.FirstOrderEquations` in
@@ -520,7 +611,7 @@ class LiePoissonSystem(Model, NumericalMethods):
             sage: from sage_dynsym.lie.system import LiePoissonSystem
             sage: M1, M2, M3, a = var('M1 M2 M3 a')
             sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/a)/2)
-            sage: S.to_linearizer()
+            sage: S.equations_record()
             First-order equations x' = F(x) in (M1, M2, M3)
             sage: f = S.numerical_rhs({a: 3})
             sage: f(0, [1.0, 2.0, 3.0])
@@ -545,6 +636,7 @@ class LiePoissonSystem(Model, NumericalMethods):
     # the model interface
 
     kind = 'lie_poisson'
+
 
     def characteristic_functions(self):
         r"""

@@ -24,6 +24,11 @@ A mechanical system::
     loads:                           # optional forces at body points and torques
       - {body: pendulum, point: [0, 0, l], force: [F, 0, 0], axes: 0}
     constraints: []                  # optional holonomic constraints f(q, t) (== 0)
+    nonholonomic: []                 # optional constraints linear in the velocities (== 0)
+    rolling:                         # optional thin disks rolling on the plane z = 0
+      - {body: wheel, radius: r, axle: 2}
+    operating_points:                # optional named steady motions
+      straight: {at: {lean: 0}, velocities: {dspin: w}, coordinates: [lean]}
     bodies:
       - name: pendulum
         parent: 0                    # 0, a body name or a 1-based body index
@@ -63,7 +68,10 @@ from ..io.fields import check_keys, declared_names, declared_positive, title, MA
 from ..symbols import velocity, acceleration, momentum, check_mechanical_names
 
 MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'positive', 'coordinates', 'force_function',
-                   'dissipation', 'forces', 'loads', 'constraints', 'bodies', 'results'}
+                   'dissipation', 'forces', 'loads', 'constraints', 'nonholonomic', 'rolling',
+                   'operating_points', 'bodies', 'results'}
+ROLLING_KEYS = {'body', 'radius', 'axle'}
+OPERATING_POINT_KEYS = {'at', 'velocities', 'coordinates'}
 REQUIRED_MECHANICAL = ('coordinates', 'bodies')
 BODY_KEYS = {'name', 'parent', 'rotations', 'joint', 'velocity', 'mass_center', 'mass',
              'inertia'}
@@ -191,6 +199,27 @@ def mechanical_system_from_dict(data, source=None):
         Traceback (most recent call last):
         ...
         ModelError: f.yaml: constraints[0]: the constraint k - 1 == 0 does not depend on the coordinates x, z
+
+    Velocity constraints, rolling disks and operating points::
+
+        sage: d['constraints'] = []; d['nonholonomic'] = ['dx - ddz']
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: nonholonomic[0]: ddz is the acceleration of the coordinate z; a description holds no accelerations (in 'dx - ddz')
+        sage: d['nonholonomic'] = ['dx - k*dz']; d['rolling'] = [{'body': 'b', 'radius': 'k', 'axle': 0}]
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ModelError: f.yaml: rolling[0].axle: expected 1, 2 or 3 (the axis of the body along the axle), got 0
+        sage: d['rolling'] = []; d['operating_points'] = {'p': {'at': {'z': 'x'}}}
+        sage: mechanical_system_from_dict(d, 'f.yaml')
+        Traceback (most recent call last):
+        ...
+        ExpressionError: f.yaml: operating_points.p.at.z: x is a coordinate; the values of an operating point are in the parameters (in 'x')
+        sage: d['operating_points'] = {'p': {'at': {'z': 0}, 'velocities': {'dx': 'F'}}}
+        sage: mechanical_system_from_dict(d, 'f.yaml').operating_point('p')
+        Operating point 'p': z = 0, dx = F
     """
     check_keys(data, MECHANICAL_KEYS, None, source, "a mechanical description")
     for key in REQUIRED_MECHANICAL:
@@ -214,6 +243,7 @@ def mechanical_system_from_dict(data, source=None):
                                    refused=_refusals(coordinates, True, "")),
         'constraint': ExpressionParser(parameters + coordinates, refused=_refusals(
             coordinates, False, "a holonomic constraint f(q, t) cannot depend on")),
+        'value': ExpressionParser(parameters, refused=_value_refusals(coordinates)),
     }
     bodies_data = data['bodies']
     if not isinstance(bodies_data, list):
@@ -238,13 +268,19 @@ def mechanical_system_from_dict(data, source=None):
         loads = [_load(d, i, parsers) for i, d in enumerate(_entries(data, 'loads'))]
         constraints = [parsers['constraint'].parse(f, entry=f'constraints[{i}]')
                        for i, f in enumerate(_entries(data, 'constraints'))]
+        nonholonomic = [motion.parse(g, entry=f'nonholonomic[{i}]')
+                        for i, g in enumerate(_entries(data, 'nonholonomic'))]
+        rolling = [_rolling(d, i, parsers) for i, d in enumerate(_entries(data, 'rolling'))]
+        points = _operating_points(data.get('operating_points'), parsers['value'])
         symbols = [motion.parse(q) for q in coordinates]
         return MechanicalSystem(bodies, symbols,
                                 parameters=[motion.parse(p) for p in parameters],
                                 force_function=field, dissipation=dissipation,
                                 forces=forces, name=name,
                                 positive=[motion.parse(p) for p in positive],
-                                loads=loads, constraints=constraints)
+                                loads=loads, constraints=constraints,
+                                nonholonomic=nonholonomic, rolling=rolling,
+                                operating_points=points)
     except DynSymError as err:
         raise err.with_context(source=source) from None
 
@@ -320,6 +356,67 @@ def _entries(data, key):
     return value
 
 
+def _value_refusals(coordinates):
+    # the values of an operating point are in the parameters
+    refused = _refusals(coordinates, False, "cannot appear in the values of an operating point")
+    for q in coordinates:
+        refused[str(q)] = (f"{q} is a coordinate; the values of an operating point are in the "
+                           "parameters")
+    return refused
+
+
+def _rolling(data, index, parsers):
+    entry = f"rolling[{index}]"
+    check_keys(data, ROLLING_KEYS, entry, None, "a rolling disk")
+    for key in sorted(ROLLING_KEYS):
+        if key not in data:
+            raise DescriptionError(f"missing key {key!r} (a rolling disk has the keys "
+                                   f"{', '.join(sorted(ROLLING_KEYS))})", entry=entry)
+    body, axle = data['body'], data['axle']
+    if not isinstance(body, (int, str)) or isinstance(body, bool):
+        raise DescriptionError(f"expected a body name or a 1-based body index, got "
+                               f"{brief(body)}", entry=f"{entry}.body")
+    if isinstance(axle, bool) or axle not in (1, 2, 3):
+        raise ModelError(f"expected 1, 2 or 3 (the axis of the body along the axle), got "
+                         f"{brief(axle)}", entry=f"{entry}.axle")
+    return {'body': body, 'axle': axle,
+            'radius': parsers['geometry'].parse(data['radius'], entry=f"{entry}.radius")}
+
+
+def _operating_points(data, parser):
+    if data is None:
+        return None
+    if not isinstance(data, dict):
+        raise DescriptionError("expected a mapping {name: {at: {...}, velocities: {...}}}, got "
+                               f"{brief(data)}", entry='operating_points')
+    if len(data) > MAX_TERMS:
+        raise DescriptionError(f"{len(data)} entries; a description file has at most "
+                               f"{MAX_TERMS} (MAX_TERMS)", entry='operating_points')
+    points = {}
+    for name, point in data.items():
+        entry = f"operating_points.{name}"
+        if not isinstance(name, str):
+            raise DescriptionError(f"expected a name, got {brief(name)}",
+                                   entry='operating_points')
+        check_keys(point, OPERATING_POINT_KEYS, entry, None, "an operating point")
+        parsed = {}
+        for key in ('at', 'velocities'):
+            values = point.get(key) or {}
+            if not isinstance(values, dict):
+                raise DescriptionError(f"expected a mapping {{name: value}}, got "
+                                       f"{brief(values)}", entry=f"{entry}.{key}")
+            parsed[key] = {str(k): parser.parse(v, entry=f"{entry}.{key}.{k}")
+                           for k, v in values.items()}
+        listed = point.get('coordinates')
+        if listed is not None:
+            if not isinstance(listed, list) or not all(isinstance(k, str) for k in listed):
+                raise DescriptionError(f"expected a list of coordinate names, got "
+                                       f"{brief(listed)}", entry=f"{entry}.coordinates")
+            parsed['coordinates'] = listed
+        points[name] = parsed
+    return points
+
+
 def _load(data, index, parsers):
     entry = f"loads[{index}]"
     check_keys(data, LOAD_KEYS, entry, None, "a load")
@@ -386,10 +483,13 @@ def _force_term(data, parser, where):
     if not isinstance(direction, list) or len(direction) != 3:
         raise DescriptionError(f"expected a list of 3 expressions, got {brief(direction)}",
                                entry=f"{entry}.direction")
-    return NewtonianField(parser.parse(value['nu'], entry=f"{entry}.nu"),
-                          parser.parse(value['r'], entry=f"{entry}.r"),
-                          [parser.parse(c, entry=f"{entry}.direction[{i}]")
-                           for i, c in enumerate(direction)])
+    nu, r = parser.parse(value['nu'], entry=f"{entry}.nu"), parser.parse(value['r'],
+                                                                         entry=f"{entry}.r")
+    e = [parser.parse(c, entry=f"{entry}.direction[{i}]") for i, c in enumerate(direction)]
+    try:
+        return NewtonianField(nu, r, e)
+    except ModelError as err:       # its entry is newtonian.<key>
+        raise err.with_context(entry=where) from None
 
 
 def mechanical_system_to_dict(system):

@@ -141,6 +141,7 @@ class NewtonianField(SageObject):
         self._nu = as_scalar(nu, "newtonian.nu")
         self._r = as_scalar(distance, "newtonian.r")
         self._e = as_vector3(direction, "newtonian.direction")
+        self._conditions = _field_conditions(self._r, self._e)
 
     def _repr_(self):
         return "Newtonian central field nu = {}, distance {}, direction ({})".format(
@@ -157,6 +158,51 @@ class NewtonianField(SageObject):
             (1, 2, (0, 1, 0))
         """
         return self._nu, self._r, self._e
+
+    def conditions(self):
+        r"""
+        The conditions on the parameters that the data of the field leave
+        open: the direction cosines of a unit vector (`e_1^2 + e_2^2 +
+        e_3^2 = 1` when they are symbols), a positive distance (when it is a
+        symbol). Numbers are checked when the field is made: the distance
+        positive, the direction a unit vector (exactly, or to rounding for
+        floating-point components).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import NewtonianField
+            sage: nu, r, a, b = var('nu r a b')
+            sage: NewtonianField(nu, r, [a, b, 0]).conditions()
+            [a^2 + b^2 == 1, r > 0]
+            sage: NewtonianField(nu, 1, [cos(a), sin(a), 0]).conditions()
+            []
+
+        TESTS::
+
+            sage: NewtonianField(nu, 0, [1, 0, 0])
+            Traceback (most recent call last):
+            ...
+            ModelError: newtonian.r: the distance from the attracting centre must be positive, got 0
+            sage: NewtonianField(nu, r, [2, 0, 0])
+            Traceback (most recent call last):
+            ...
+            ModelError: newtonian.direction: the direction must be a unit vector, got (2, 0, 0) of length 2
+            sage: NewtonianField(nu, r, [0, 0, 0])
+            Traceback (most recent call last):
+            ...
+            ModelError: newtonian.direction: the direction must be a unit vector, got the zero vector
+            sage: NewtonianField(nu, 1, [0.6, 0.8, 0]).conditions()
+            []
+            sage: NewtonianField(nu, r, [0.6, 0.8000001, 0])
+            Traceback (most recent call last):
+            ...
+            ModelError: newtonian.direction: the direction must be a unit vector, got (0.600000000000000, 0.800000100000000, 0) of length 1.00000008
+            sage: NewtonianField(nu, r, [var('t'), 0, 0])
+            Traceback (most recent call last):
+            ...
+            ModelError: newtonian.direction: the direction must be a unit vector at all times, got (t, 0, 0) (its squared length is t^2)
+        """
+        return list(self._conditions)
 
     def subs(self, values):
         r"""
@@ -239,6 +285,50 @@ def split_force_terms(system):
     return gravity, rest
 
 
+#: How far from 1 the squared length of a direction given by floating-point
+#: components may be (rounding).
+UNIT_TOLERANCE = 1e-12
+
+
+def _field_conditions(r, e):
+    r"""Check the distance ``r`` and the direction ``e`` of a Newtonian field
+    where they are numbers; return the conditions left on the parameters."""
+    from ..errors import ModelError
+    from ..symbols import is_exact, t
+    conditions = []
+    if not r.variables():
+        try:
+            positive = bool(r > 0) if is_exact(r) else float(r) > 0
+        except (TypeError, ValueError):
+            positive = False
+        if not positive:
+            raise ModelError(f"the distance from the attracting centre must be positive, got "
+                             f"{r}", entry="newtonian.r")
+    shown = f"({', '.join(map(str, e))})"
+    if all(SR(c).is_zero() for c in e):
+        raise ModelError("the direction must be a unit vector, got the zero vector",
+                         entry="newtonian.direction")
+    square = sum(SR(c) ** 2 for c in e)
+    excess = (square - 1).simplify_full() if is_exact(square) else square - 1
+    if not excess.variables():
+        if is_exact(excess):
+            unit = excess.is_zero() or bool(excess == 0)
+        else:
+            unit = abs(float(excess)) <= UNIT_TOLERANCE
+        if not unit:
+            length = float(square) ** 0.5
+            raise ModelError(f"the direction must be a unit vector, got {shown} of length "
+                             f"{length:.9g}", entry="newtonian.direction")
+    elif excess.has(t):
+        raise ModelError(f"the direction must be a unit vector at all times, got {shown} (its "
+                         f"squared length is {square})", entry="newtonian.direction")
+    else:
+        conditions.append(square == 1)
+    if r.variables():
+        conditions.append(r > 0)
+    return conditions
+
+
 def check_force_function(force_function, coordinates, entry="force_function"):
     r"""
     Refuse a force function that depends on velocities or accelerations.
@@ -269,6 +359,10 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         Traceback (most recent call last):
         ...
         ModelError: force_function[0]: the force function U(q, t) cannot depend on the acceleration ddx; velocity-dependent forces belong in the dissipation function or the generalized forces
+        sage: check_force_function([-k*x^2, None], [x])
+        Traceback (most recent call last):
+        ...
+        ModelError: force_function[1]: expected a force field or an expression U(q, t), got None
     """
     from ..errors import ModelError
     from ..symbols import velocity, acceleration
@@ -276,26 +370,67 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         return
     if isinstance(force_function, (list, tuple)):
         for i, term in enumerate(force_function):
+            if term is None or isinstance(term, (list, tuple)):
+                raise ModelError("expected a force field or an expression U(q, t), got "
+                                 f"{term!r}", entry=f"{entry}[{i}]")
             check_force_function(term, coordinates, f"{entry}[{i}]")
         return
     forbidden = {}
     for q in coordinates:
         forbidden[velocity(q)] = f"the velocity {velocity(q)}"
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
-    if isinstance(force_function, UniformGravity):
-        parts = list(force_function.acceleration())
-    elif isinstance(force_function, NewtonianField):
-        nu, r, e = force_function.parameters()
-        parts = [nu, r] + list(e)
-    else:
-        try:
-            parts = [SR(force_function)]
-        except (TypeError, ValueError):
-            raise ModelError("expected a force field or an expression U(q, t), got "
-                             f"{force_function!r}", entry=entry) from None
+    try:
+        parts = force_term_data(force_function)
+    except (TypeError, ValueError):
+        raise ModelError("expected a force field or an expression U(q, t), got "
+                         f"{force_function!r}", entry=entry) from None
     for part in parts:
         for v in SR(part).variables():
             if v in forbidden:
                 raise ModelError(f"the force function U(q, t) cannot depend on {forbidden[v]}; "
                                  "velocity-dependent forces belong in the dissipation function "
                                  "or the generalized forces", entry=entry)
+
+
+def force_term_data(term):
+    r"""
+    The expressions a force-function term is made of: the acceleration of
+    a :class:`UniformGravity`, the parameters of a :class:`NewtonianField`,
+    or the expression itself (what the checks and the size estimates read).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.force_functions import (force_term_data,
+        ....:                                                    UniformGravity, NewtonianField)
+        sage: g, nu, r, k, x = var('g nu r k x')
+        sage: force_term_data(UniformGravity([0, 0, -g])), force_term_data(-k*x^2/2)
+        ([0, 0, -g], [-1/2*k*x^2])
+        sage: force_term_data(NewtonianField(nu, r, [0, 0, 1]))
+        [nu, r, 0, 0, 1]
+    """
+    if isinstance(term, UniformGravity):
+        return list(term.acceleration())
+    if isinstance(term, NewtonianField):
+        nu, r, e = term.parameters()
+        return [nu, r] + list(e)
+    return [SR(term)]
+
+
+def force_term_to_dict(term, text=str):
+    r"""
+    A force-function term as an entry of the ``force_function`` key of a
+    description file; ``text`` writes an expression.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.force_functions import force_term_to_dict, UniformGravity
+        sage: g, k, x = var('g k x')
+        sage: force_term_to_dict(UniformGravity([0, 0, -g])), force_term_to_dict(-k*x^2/2)
+        ({'uniform_gravity': ['0', '0', '-g']}, {'expression': '-1/2*k*x^2'})
+    """
+    if isinstance(term, UniformGravity):
+        return {'uniform_gravity': [text(c) for c in term.acceleration()]}
+    if isinstance(term, NewtonianField):
+        nu, r, e = term.parameters()
+        return {'newtonian': {'nu': text(nu), 'r': text(r), 'direction': [text(c) for c in e]}}
+    return {'expression': text(term)}

@@ -359,6 +359,27 @@ class Load(SageObject):
         return forces
 
 
+def load_list(loads):
+    r"""
+    ``loads`` as a list (of :class:`Load` objects or dictionaries, checked
+    one by one by the system); a :class:`~sage_dynsym.errors.ModelError`
+    for anything that is not a list.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.loads import load_list
+        sage: load_list(())
+        []
+        sage: load_list(0)
+        Traceback (most recent call last):
+        ...
+        ModelError: loads: expected a list of loads, got 0
+    """
+    if isinstance(loads, (str, bytes, dict)) or not hasattr(loads, '__iter__'):
+        raise ModelError(f"expected a list of loads, got {loads!r}", entry="loads")
+    return list(loads)
+
+
 def body_index(system, reference, entry):
     r"""
     The 1-based index in ``system`` of the body ``reference`` (a name, a

@@ -4,7 +4,8 @@ Mechanical systems handed to the recursive numerics
 :func:`body_tree` writes a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`
 as the neutral :class:`~sage_dynsym.numerics.body_tree.BodyTree` of the
 numerics -- bodies, uniform gravity, loads, the other terms of the force
-function as one expression, dissipation, generalized forces, constraints --
+function as one expression, dissipation, generalized forces, constraints
+(holonomic ones and those on the velocities: rolling without slipping) --
 and :func:`numerical_form` chooses how its right-hand side is computed:
 
 - ``'recursive'``: by the recursive algorithms of
@@ -79,7 +80,8 @@ def body_tree(system):
     forces = system._forces
     return BodyTree(bodies, system.coordinates(), gravity=gravity, loads=loads,
                     potential=potential, dissipation=system.dissipation(), forces=forces,
-                    constraints=system.constraints())
+                    constraints=system.constraints(),
+                    velocity_constraints=system.nonholonomic_constraints())
 
 
 def numerical_form(system, algorithm='auto'):

@@ -45,16 +45,23 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import (velocity, acceleration, t, time_derivative, check_mechanical_names,
                        sage_numbers)
+from ..arguments import symbol_arguments
 from ..io.fields import text as _text
+from .report import report_title, report_sections
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
 from ..dynamics.lagrangian import Lagrangian
+from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
-from ..dynamics.natural_form import natural_form, is_singular
+from ..dynamics.natural_form import natural_form, is_singular, has_full_row_rank
+from ..numerics.values import check_model_values
 from .force_functions import check_force_function, split_force_terms, UniformGravity
+from .constraint_set import ConstraintSet
 from .frames import held_product
 from .kinematics import Kinematics
+from .loads import load_list
+from .operating_points import checked_operating_points, operating_point_to_dict
 from .rigid_body import RigidBody
 
 # Above this many terms in the mass matrix, converting the polynomial
@@ -102,6 +109,9 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
     """
     from sage.symbolic.expression import Expression
     from ..symbols import velocity as _velocity
+    if isinstance(constraints, (str, bytes, dict)) or not hasattr(constraints, '__iter__'):
+        raise ModelError(f"expected a list of constraints f(q, t), got {constraints!r}",
+                         entry=entry)
     out = []
     forbidden = {}
     for q in coordinates:
@@ -109,10 +119,13 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
     for i, f in enumerate(constraints):
         sub = f"{entry}[{i}]"
-        if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+        try:
+            if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
+                raise TypeError
+            f = SR(f)
+        except (TypeError, ValueError):
             raise ModelError(f"expected an expression f(q, t) or a relation, got {f!r}",
-                             entry=sub)
-        f = SR(f)
+                             entry=sub) from None
         if f.is_relational():
             f = f.lhs() - f.rhs()
         for v in f.variables():
@@ -129,8 +142,8 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
                              f"{', '.join(map(str, coordinates))}", entry=sub)
         out.append(f)
     if out:
-        J = matrix(SR, [[f.diff(q) for q in coordinates] for f in out])
-        if len(out) > len(coordinates) or is_singular(J * J.transpose()):
+        J = [[f.diff(q) for q in coordinates] for f in out]
+        if len(out) > len(coordinates) or not has_full_row_rank(J):
             raise ModelError(f"the {len(out)} constraints are not independent: their Jacobian "
                              "with respect to the coordinates has rank less than "
                              f"{len(out)} at a generic point; remove the redundant ones",
@@ -166,6 +179,15 @@ class MechanicalSystem(Model):
     - ``constraints`` -- (optional) list of holonomic constraints `f(q, t)`
       (each meaning `f = 0`), passed on to the Lagrangian (Lagrange
       equations of the first kind, one multiplier per constraint)
+    - ``nonholonomic`` -- (optional) list of constraints on the velocities,
+      linear in them (each meaning `= 0`); the Lagrangian is then a
+      :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`
+    - ``rolling`` -- (optional) list of
+      :class:`~sage_dynsym.mechanics.rolling.RollingDisk` (or dicts with
+      the keys ``body``, ``radius``, ``axle``): thin disks rolling without
+      slipping on the plane `z = 0`, see :mod:`~sage_dynsym.mechanics.rolling`
+    - ``operating_points`` -- (optional) dict ``{name: point}`` of steady
+      motions (see :mod:`~sage_dynsym.mechanics.operating_points`)
     - ``name`` -- (optional) a name
     - ``positive`` -- (optional) parameters known to be positive; the
       analysis (stationary motions and their stability in reports) assumes
@@ -246,7 +268,8 @@ class MechanicalSystem(Model):
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
-                 dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=()):
+                 dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=(),
+                 nonholonomic=(), rolling=(), operating_points=None):
         bodies = list(bodies)
         given_names = [b.name() if isinstance(b, RigidBody) else None for b in bodies]
         for i, body in enumerate(bodies):
@@ -272,7 +295,7 @@ class MechanicalSystem(Model):
             raise ModelError(f"expected {n} generalized forces, one per coordinate, got "
                              f"{len(self._forces)}", entry="forces")
         self._name = name
-        self._positive = [SR(p) for p in positive]
+        self._positive = symbol_arguments(positive, 'positive')
         if self._parameters is not None:
             self._check_symbols()
             names = {str(p) for p in self._parameters}
@@ -282,14 +305,19 @@ class MechanicalSystem(Model):
         self._symbolic = Kinematics(self, SymbolicBackend())
         self._tree = self._symbolic.tree
         self._loads = [self._checked_load(load, f"loads[{i}]", given_names)
-                       for i, load in enumerate(loads)]
+                       for i, load in enumerate(load_list(loads))]
         self._constraints = check_constraints(constraints, self._coordinates, self._parameters)
+        self._constraint_set = ConstraintSet(self, self._constraints, nonholonomic, rolling,
+                                             given_names)
+        self._operating_points = checked_operating_points(
+            operating_points, self._coordinates, self._velocities, self._parameters)
 
 
     # ------------------------------------------------------------------
     # the model interface
 
     kind = 'mechanical'
+
 
     def equations(self):
         r"""
@@ -333,7 +361,7 @@ class MechanicalSystem(Model):
             sage: d['bodies'][0]['rotations'], d['force_function']
             ([[3, 'psi'], [1, 'theta']], {'uniform_gravity': ['0', '0', '-g']})
         """
-        from .force_functions import UniformGravity, NewtonianField
+        from .force_functions import force_term_to_dict
         out = {'kind': 'mechanical'}
         if self.name():
             out['name'] = self.name()
@@ -342,16 +370,7 @@ class MechanicalSystem(Model):
         if self._positive:
             out['positive'] = [str(p) for p in self._positive]
         out['coordinates'] = [str(q) for q in self.coordinates()]
-        terms = []
-        for field in self.force_terms():
-            if isinstance(field, UniformGravity):
-                terms.append({'uniform_gravity': [_text(c) for c in field.acceleration()]})
-            elif isinstance(field, NewtonianField):
-                nu, r, e = field.parameters()
-                terms.append({'newtonian': {'nu': _text(nu), 'r': _text(r),
-                                            'direction': [_text(c) for c in e]}})
-            else:
-                terms.append({'expression': _text(field)})
+        terms = [force_term_to_dict(field, _text) for field in self.force_terms()]
         if terms:
             # one term keeps the single-mapping form
             out['force_function'] = terms if isinstance(self._force, list) else terms[0]
@@ -363,6 +382,14 @@ class MechanicalSystem(Model):
             out['loads'] = [load.to_dict() for load in self._loads]
         if self._constraints:
             out['constraints'] = [_text(f) for f in self._constraints]
+        constraints = self._constraint_set
+        if constraints.given_nonholonomic():
+            out['nonholonomic'] = [_text(g) for g in constraints.given_nonholonomic()]
+        if constraints.rolling():
+            out['rolling'] = [disk.to_dict() for disk in constraints.rolling()]
+        if self._operating_points:
+            out['operating_points'] = {name: operating_point_to_dict(point)
+                                       for name, point in self._operating_points.items()}
         bodies = []
         for k, body in enumerate(self.bodies(), 1):
             entry = {'name': body.name(), 'parent': self.parent_index(k),
@@ -417,7 +444,7 @@ class MechanicalSystem(Model):
             symbols += sorted({str(v) for v in self.lagrangian().expr().variables()})
         symbols += q + [str(velocity(SR(v))) for v in q] + [str(acceleration(SR(v))) for v in q]
         symbols += [str(momentum(SR(v))) for v in q]
-        if self._constraints:
+        if self.constraints() or self.nonholonomic_constraints():
             # the Lagrange equations of the first kind hold the multipliers
             symbols += [str(mu) for mu in self.lagrangian().multipliers()]
         return symbols, ()
@@ -491,7 +518,13 @@ class MechanicalSystem(Model):
                                 forces=[sub(f) for f in self._forces], name=self._name,
                                 positive=[p for p in self._positive if p not in substitution],
                                 loads=[load.subs(substitution) for load in self._loads],
-                                constraints=[sub(f) for f in self._constraints])
+                                constraints=[sub(f) for f in self._constraints],
+                                nonholonomic=[sub(g) for g in
+                                              self._constraint_set.given_nonholonomic()],
+                                rolling=[disk.subs(substitution)
+                                         for disk in self._constraint_set.rolling()],
+                                operating_points={name: point.subs(substitution) for name, point
+                                                  in self._operating_points.items()})
 
     def euler_poisson(self, names=None):
         r"""
@@ -540,6 +573,7 @@ class MechanicalSystem(Model):
         """
         from ..numerics.rhs import RightHandSide
         from .recursive_numerics import numerical_form
+        check_model_values(self, values)
         return RightHandSide(numerical_form(self, algorithm), values, backend)
 
     def simulate(self, values, initial, t_end, *args, algorithm='auto', **options):
@@ -558,9 +592,19 @@ class MechanicalSystem(Model):
             sage: T = S.simulate({m: 2, k: 8}, {x: 1, 'dx': 0}, pi, points=3)
             sage: T.values(x).round(8), T.energy_drift() < 1e-9
             (array([ 1., -1.,  1.]), True)
+
+        TESTS::
+
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2, positive=[m, k])
+            sage: S.simulate({m: -2, k: 8}, {x: 1, 'dx': 0}, pi)
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -2
         """
         from ..numerics.simulate import simulate
         from .recursive_numerics import numerical_form
+        check_model_values(self, values)
         options.setdefault('name', self._name)
         return simulate(numerical_form(self, algorithm), values, initial, t_end, *args, **options)
 
@@ -790,6 +834,73 @@ class MechanicalSystem(Model):
             return []
         return list(self._force) if isinstance(self._force, list) else [self._force]
 
+    def conditions(self):
+        r"""
+        The conditions on the parameters for the model to be physical that
+        are not decided by its data: those of its force fields (the
+        direction of a Newtonian field with symbolic direction cosines a
+        unit vector, its distance positive; see
+        :meth:`~sage_dynsym.mechanics.force_functions.NewtonianField.conditions`).
+        Values given to :meth:`simulate` and :meth:`numerical_rhs` must
+        satisfy them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, NewtonianField
+            sage: phi, nu, r, e1, e2 = var('phi nu r e1 e2')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, phi)], mass=1)], [phi],
+            ....:                      force_function=NewtonianField(nu, r, [e1, e2, 0]))
+            sage: S.conditions()
+            [e1^2 + e2^2 == 1, r > 0]
+        """
+        return [c for term in self.force_terms() if hasattr(term, 'conditions')
+                for c in term.conditions()]
+
+    def report_title(self):
+        r"""The heading of the system's report (see :mod:`~sage_dynsym.mechanics.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).report_title()
+            '== spherical pendulum (mechanical system: 1 body, coordinates psi, theta) =='
+        """
+        return report_title(self)
+
+    def report_sections(self):
+        r"""The sections of the system's report (see
+        :mod:`~sage_dynsym.mechanics.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: [s.name for s in load(example_path('spherical_pendulum.yaml')).report_sections()][1:4]
+            ['Lagrangian', 'Constraints', 'Lagrange equations']
+        """
+        return report_sections(self)
+
+    def free_linear_system(self, at=None):
+        r"""
+        The Lagrangian (dissipation included) linearized around the
+        coordinates ``at`` (a dict; by default all coordinates 0), at rest:
+        what :func:`~sage_dynsym.scale.maps.stability_map` maps.
+
+        EXAMPLES: a damped cart pendulum around its lower equilibrium::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('cart_pendulum_spring_damper.yaml'))
+            sage: S.free_linear_system().order(), S.free_linear_system().variables()
+            (2, [y, theta])
+        """
+        from ..analysis import linearize
+        L = self.lagrangian()
+        point = {q: SR(0) for q in L.coordinates()}
+        point.update(at or {})
+        return linearize(L, point)
+
     def loads(self):
         r"""
         The loads on the bodies (:class:`~sage_dynsym.mechanics.loads.Load`;
@@ -807,7 +918,9 @@ class MechanicalSystem(Model):
 
     def constraints(self):
         r"""
-        The holonomic constraints `f_j(q, t)` (each meaning `f_j = 0`).
+        The holonomic constraints `f_j(q, t)` (each meaning `f_j = 0`): those
+        given, then the contact conditions of rolling disks that the
+        coordinates do not impose (see :meth:`constraint_set`).
 
         EXAMPLES::
 
@@ -816,7 +929,95 @@ class MechanicalSystem(Model):
             sage: MechanicalSystem([], [x, y], constraints=[x^2 + y^2 == l^2]).constraints()
             [-l^2 + x^2 + y^2]
         """
-        return list(self._constraints)
+        return self._constraint_set.holonomic()
+
+    def nonholonomic_constraints(self):
+        r"""
+        The constraints on the velocities (each meaning `= 0`): those given,
+        then the no-slip conditions of the rolling disks (see
+        :meth:`constraint_set`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, y, th = var('x y theta')
+            sage: S = MechanicalSystem([RigidBody('blade', joint=[x, y, 0], rotations=[(3, th)])],
+            ....:                      [x, y, th], nonholonomic=['sin(theta)*dx - cos(theta)*dy'])
+            Traceback (most recent call last):
+            ...
+            ModelError: nonholonomic[0]: expected an expression or a relation, got 'sin(theta)*dx - cos(theta)*dy'
+            sage: dx, dy = var('dx dy')
+            sage: S = MechanicalSystem([RigidBody('blade', joint=[x, y, 0], rotations=[(3, th)])],
+            ....:                      [x, y, th], nonholonomic=[sin(th)*dx - cos(th)*dy])
+            sage: S.nonholonomic_constraints(), S.lagrangian().nonholonomic_constraints()
+            ([-dy*cos(theta) + dx*sin(theta)], [-dy*cos(theta) + dx*sin(theta)])
+        """
+        return self._constraint_set.nonholonomic()
+
+    def constraint_set(self):
+        r"""
+        All the constraints with their origins: the
+        :class:`~sage_dynsym.mechanics.constraint_set.ConstraintSet` (the
+        rolling contacts, which conditions are holonomic).
+
+        EXAMPLES: see :mod:`~sage_dynsym.mechanics.constraint_set`.
+        """
+        return self._constraint_set
+
+    def operating_points(self):
+        r"""
+        The named operating points (a dict ``{name: OperatingPoint}``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, v = var('x v')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x],
+            ....:                  operating_points={'moving': {'velocities': {'dx': v}}}).operating_points()
+            {'moving': Operating point 'moving': dx = v}
+        """
+        return dict(self._operating_points)
+
+    def operating_point(self, name):
+        r"""
+        The operating point ``name``, for
+        :func:`~sage_dynsym.analysis.linear.linearize`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, linearize
+            sage: x, m, v = var('x m v')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      operating_points={'moving': {'velocities': {'dx': v}}})
+            sage: linearize(S, S.operating_point('moving'), coordinates=[x]).M()
+            [m]
+
+        TESTS::
+
+            sage: S.operating_point('resting')
+            Traceback (most recent call last):
+            ...
+            ModelError: operating_points: no operating point 'resting'; the operating points are moving
+        """
+        if name not in self._operating_points:
+            raise ModelError(f"no operating point {name!r}; the operating points are "
+                             f"{', '.join(self._operating_points) or '(none)'}",
+                             entry="operating_points")
+        return self._operating_points[name]
+
+    def equations_record(self):
+        r"""
+        The equations as neutral data for the analysis: those of
+        :meth:`lagrangian`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m = var('x m')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x]).equations_record()
+            Second-order equations in (x): [ddx*m] == 0
+        """
+        return self.lagrangian().equations_record()
 
     def force_field(self):
         r"""
@@ -1364,9 +1565,11 @@ class MechanicalSystem(Model):
         if christoffel != 'recursive':
             use_ring = data is not None and christoffel == 'polynomial'
             builder = ring_equations if use_ring else None
-        return Lagrangian(None, self._coordinates, self._velocities,
-                          decomposition=decomposition, dissipation=self._dissipation,
-                          forces=self.generalized_forces(), name=self._name,
-                          equation_builder=builder,
-                          constraints=self._constraints)
+        options = dict(decomposition=decomposition, dissipation=self._dissipation,
+                       forces=self.generalized_forces(), name=self._name,
+                       equation_builder=builder, constraints=self.constraints())
+        if self.nonholonomic_constraints():
+            return NonholonomicLagrangian(None, self._coordinates, self._velocities,
+                                          nonholonomic=self.nonholonomic_constraints(), **options)
+        return Lagrangian(None, self._coordinates, self._velocities, **options)
 

@@ -12,6 +12,7 @@ EXAMPLES::
 import sage.all  # noqa: F401
 from .codegen import generate_code, GeneratedCode
 from .energy import quadratic_energy
+from .events import Event
 from .form import NumericalForm
 from .methods import NumericalMethods
 from .rhs import numerical_rhs, RightHandSide
@@ -19,4 +20,4 @@ from .simulate import simulate
 from .trajectory import Trajectory
 
 __all__ = ['NumericalMethods', 'NumericalForm', 'numerical_rhs', 'RightHandSide', 'simulate',
-           'Trajectory', 'generate_code', 'GeneratedCode', 'quadratic_energy']
+           'Trajectory', 'generate_code', 'GeneratedCode', 'quadratic_energy', 'Event']

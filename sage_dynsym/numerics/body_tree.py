@@ -8,8 +8,9 @@ records -- the fields of a body in :doc:`the method </method>` (parent,
 elementary rotations, joint point, relative velocity, mass centre, mass,
 inertia tensor about the joint point) -- with the forces acting on them:
 uniform gravity, loads (:class:`TreeLoad`), a force function given only as
-an expression, a Rayleigh dissipation function, generalized forces, and
-holonomic constraints.
+an expression, a Rayleigh dissipation function, generalized forces,
+holonomic constraints and constraints on the velocities (rolling without
+slipping).
 
 EXAMPLES: a pendulum of length `l` turning about the `x` axis::
 
@@ -235,12 +236,15 @@ class BodyTree(SageObject):
     - ``dissipation`` -- (default 0) Rayleigh function `R(q, \dot q, t)`
     - ``forces`` -- (optional) generalized forces `Q_i`, one per coordinate
     - ``constraints`` -- (optional) holonomic constraints `f_j(q, t) = 0`
+    - ``velocity_constraints`` -- (optional) constraints on the velocities
+      `g_k = A_k(q, t)\dot q + b_k(q, t) = 0`, linear in them
     - ``parameters`` -- (optional) the parameters in the order wanted;
       default the other symbols, sorted by name
 
     The equations are those of the Lagrangian `T + U` (`U` of gravity and
     ``potential``) with `\partial R/\partial \dot q_i - Q_i` and the
-    constraint forces added.
+    constraint forces added (`J^T\mu` and `A^T\lambda`, the multipliers
+    eliminated).
 
     EXAMPLES: see the module documentation.
 
@@ -251,10 +255,15 @@ class BodyTree(SageObject):
         Traceback (most recent call last):
         ...
         AnalysisError: body tree: the parent of body 1 must be an earlier body or 0, got 2
+        sage: x, dx = var('x dx')
+        sage: BodyTree([], [x], velocity_constraints=[dx^2 - 1])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: body tree: the velocity constraint dx^2 - 1 is not linear in the velocities (dx)
     """
 
     def __init__(self, bodies, coordinates, gravity=None, loads=(), potential=0, dissipation=0,
-                 forces=None, constraints=(), parameters=None):
+                 forces=None, constraints=(), velocity_constraints=(), parameters=None):
         self._bodies = list(bodies)
         for k, body in enumerate(self._bodies, 1):
             if not 0 <= body.parent() < k:
@@ -272,6 +281,12 @@ class BodyTree(SageObject):
             raise AnalysisError(f"expected {n} generalized forces, got {len(self._forces)}",
                                 entry="body tree")
         self._constraints = [SR(f) for f in constraints]
+        self._velocity_constraints = [SR(g) for g in velocity_constraints]
+        for g in self._velocity_constraints:
+            if any(not g.diff(a, b).is_zero() for a in self._dq for b in self._dq):
+                raise AnalysisError(f"the velocity constraint {g} is not linear in the "
+                                    f"velocities ({', '.join(map(str, self._dq))})",
+                                    entry="body tree")
         if parameters is None:
             hidden = {str(v) for v in self._q + self._dq + [_t]}
             found = {}
@@ -386,6 +401,18 @@ class BodyTree(SageObject):
         """
         return list(self._constraints)
 
+    def velocity_constraints(self):
+        r"""The constraints on the velocities `g_k(q, \dot q, t)` (each ``== 0``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: BodyTree([], [x, y], velocity_constraints=[y*dx - dy]).velocity_constraints()
+            [dx*y - dy]
+        """
+        return list(self._velocity_constraints)
+
     def expressions(self):
         r"""Every expression of the tree, for finding its symbols.
 
@@ -401,4 +428,5 @@ class BodyTree(SageObject):
         for load in self._loads:
             out += load.expressions()
         out += list(self._gravity or ()) + [self._potential, self._dissipation]
-        return out + [f for f in self._forces if not f.is_zero()] + self._constraints
+        out += [f for f in self._forces if not f.is_zero()]
+        return out + self._constraints + self._velocity_constraints

@@ -8,7 +8,8 @@ common subexpressions computed once:
 - second order: the mass matrix `M` and the forcing `F` of
   `M \ddot q = F` (and, with holonomic constraints, their Jacobian `J` and
   `\gamma` with `J \ddot q = \gamma`; the accelerations then solve
-  `M \ddot q - J^T \mu = F`, `J \ddot q = \gamma`);
+  `M \ddot q - J^T \mu = F`, `J \ddot q = \gamma`; constraints on the
+  velocities `A\dot q + b = 0` add their rows `A` below those of `J`);
 - first order: the right-hand side `F` and, when it is not the identity,
   the matrix `B` of `B \dot x = F`.
 
@@ -128,6 +129,20 @@ def generate_code(equations, language='python', cse=True, name=None):
             B = [L, 0.0, 0.0, C]
             return F, B
 
+    A velocity constraint (a point moving along `(1, y)`) adds its row to
+    `J`::
+
+        sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+        sage: x, y, dx, dy, ddx, ddy, la = var('x y dx dy ddx ddy la')
+        sage: E = SecondOrderEquations([ddx - la*y, ddy + la], [x, y], [dx, dy], [ddx, ddy],
+        ....:                          velocity_constraints=[y*dx - dy], velocity_multipliers=[la])
+        sage: print(generate_code(E))
+        # Mass matrix M, forcing F, constraint Jacobian J and gamma of the equations M*ddq - J^T*mu = F, J*ddq = gamma in q = (x, y),
+        ...
+            J = [y, -1.0]
+            gamma = [-dx*dy]
+            return M, F, J, gamma
+
     TESTS::
 
         sage: generate_code(FirstOrderEquations([-u], [u]), language='fortran')
@@ -144,8 +159,9 @@ def generate_code(equations, language='python', cse=True, name=None):
     A, b = form.matrix(), form.vector()
     if form.order() == 2:
         n = len(state) // 2
-        constraints, J, _ = form.constraints()
-        m = len(constraints)
+        _, J, _ = form.constraints()
+        J = J + form.velocity_constraints()[1]
+        m = len(J)
         M = [A[i, j] for i in range(n) for j in range(n)]
         blocks = [('M', M), ('F', b[:n])]
         if m:

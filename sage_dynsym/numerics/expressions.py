@@ -21,6 +21,7 @@ EXAMPLES::
     sage: write_code([(x + y)^3/y], {x: 'x', y: 'y'}, language='c')
     ([('_e0', 'x + y')], ['_e0*_e0*_e0/y'])
 """
+import builtins
 import keyword
 import operator
 import re
@@ -42,34 +43,80 @@ FUNCTIONS = {
 }
 
 _IDENTIFIER = re.compile(r'[A-Za-z][A-Za-z0-9_]*\Z')
-#: Names the generated code cannot give to a symbol (C keywords and library
-#: names, Python keywords and builtins used by the code).
-_RESERVED = set(keyword.kwlist) | {
-    'math', 'abs', 'float', 'int', 'range', 'len', 'list', 'tuple', 'print', 'auto',
-    'break', 'case', 'char', 'const', 'continue', 'default', 'do', 'double', 'else', 'enum',
-    'extern', 'for', 'goto', 'if', 'inline', 'long', 'register', 'restrict', 'return',
-    'short', 'signed', 'sizeof', 'static', 'struct', 'switch', 'typedef', 'union',
-    'unsigned', 'void', 'volatile', 'while', 'pow', 'sqrt', 'fabs', 'atan2', 'asin',
-    'acos', 'atan', 'asinh', 'acosh', 'atanh', 'main', 'free', 'malloc', 'numpy', 'np'}
+
+#: The keywords of C (up to C23) and of common extensions.
+C_KEYWORDS = frozenset("""
+    auto break case char const continue default do double else enum extern float for goto if
+    inline int long register restrict return short signed sizeof static struct switch typedef
+    union unsigned void volatile while alignas alignof bool constexpr false nullptr
+    static_assert thread_local true typeof typeof_unqual asm fortran complex imaginary
+    """.split())
+
+_MATH_FUNCTIONS = """
+    acos acosh asin asinh atan atan2 atanh cbrt ceil copysign cos cosh erf erfc exp exp2 expm1
+    fabs fdim floor fma fmax fmin fmod frexp hypot ilogb ldexp lgamma llrint llround log log10
+    log1p log2 logb lrint lround modf nan nearbyint nextafter nexttoward pow remainder remquo
+    rint round scalbln scalbn sin sinh sqrt tan tanh tgamma trunc j0 j1 jn y0 y1 yn gamma drem
+    finite significand scalb exp10 pow10 sincos lgamma_r gamma_r roundeven fmaximum fminimum
+    """.split()
+#: The names ``<math.h>`` defines (C99 to C23 and glibc): its functions with
+#: their ``f`` and ``l`` variants, its macros and types. A symbol of one of
+#: these names would be replaced by the preprocessor or clash with the
+#: library, and the generated C would not compile or would compute something
+#: else. Names of the forms ``M_*``, ``FP_*`` and ``HUGE_VAL*`` are reserved
+#: too (:func:`is_reserved`).
+MATH_H_NAMES = frozenset(
+    _MATH_FUNCTIONS + [f + suffix for f in _MATH_FUNCTIONS for suffix in ('f', 'l')]
+    + """NAN INFINITY HUGE_VAL HUGE_VALF HUGE_VALL MAXFLOAT DOMAIN SING OVERFLOW UNDERFLOW
+    TLOSS PLOSS X_TLOSS MATH_ERRNO MATH_ERREXCEPT math_errhandling signgam float_t double_t
+    isnan isinf isfinite isnormal signbit fpclassify isgreater isgreaterequal isless
+    islessequal islessgreater isunordered iseqsig issignaling issubnormal iszero iscanonical
+    errno""".split())
+_RESERVED_PATTERN = re.compile(r'(M|FP)_\w*\Z|HUGE_VAL\w*\Z')
+
+#: Names the generated code cannot give to a symbol: the C keywords and the
+#: names of ``<math.h>``, the Python keywords and builtins, the modules the
+#: code uses (``math``, ``numpy``), the package's own C functions, and ``E``.
+_RESERVED = (set(keyword.kwlist) | set(dir(builtins)) | C_KEYWORDS | MATH_H_NAMES
+             | {'math', 'numpy', 'np', 'main', 'free', 'malloc', 'dynsym_rhs', 'dynsym_solve',
+                'E'})
 for _python, _c in FUNCTIONS.values():
     _RESERVED.add(_c)
+
+
+def is_reserved(name):
+    r"""
+    Whether ``name`` is reserved in the generated code (C or Python), so
+    that a symbol of that name is renamed there.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import is_reserved
+        sage: [is_reserved(n) for n in ('M_PI', 'NAN', 'int', 'lambda', 'sum', 'x', 'R1')]
+        [True, True, True, True, True, False, False]
+    """
+    return name in _RESERVED or bool(_RESERVED_PATTERN.match(name))
 
 
 def identifier(symbol, index, taken=()):
     r"""
     The name of ``symbol`` in generated code: its own name when it is a
     plain identifier (letters, digits, underscores, not starting with an
-    underscore) that no language keyword or library function uses, else
-    ``_s<index>``.
+    underscore) that is not reserved in C or Python (:func:`is_reserved`:
+    keywords, the names of ``<math.h>`` such as ``M_PI`` or ``NAN``,
+    builtins), else ``_s<index>``. So the C and the Python code accept the
+    same models.
 
     EXAMPLES::
 
         sage: from sage_dynsym.numerics.expressions import identifier
         sage: identifier(var('psi1'), 0), identifier(SR.symbol('lambda'), 1), identifier(SR.symbol('a b'), 2)
         ('psi1', '_s1', '_s2')
+        sage: identifier(var('M_PI'), 3), identifier(var('NAN'), 4)
+        ('_s3', '_s4')
     """
     name = str(symbol)
-    if _IDENTIFIER.match(name) and name not in _RESERVED and name not in taken:
+    if _IDENTIFIER.match(name) and not is_reserved(name) and name not in taken:
         return name
     return f'_s{index}'
 

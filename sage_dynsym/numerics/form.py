@@ -21,7 +21,13 @@ that a numerical right-hand side evaluates at each state and then solves
       + 2\,\frac{\partial J}{\partial t}\dot q
       + \frac{\partial^2 f}{\partial t^2}\Bigr)
 
-  (the second time derivative of the constraints vanishes);
+  (the second time derivative of the constraints vanishes); constraints on
+  the velocities `g_k = A_k\dot q + b_k = 0` with their multipliers
+  `\lambda_k` add the rows `A\ddot q = \gamma_A`, `\gamma_A = -\bigl(
+  \frac{\partial (A\dot q + b)}{\partial q}\dot q + \frac{\partial (A\dot q
+  + b)}{\partial t}\bigr)` (their first time derivative vanishes) and the
+  columns `-A^T` (rolling without slipping, see
+  :mod:`~sage_dynsym.dynamics.nonholonomic`);
 - first order `B \dot x = F(x)`: `B` (skipped when it is the identity) and `F`.
 
 EXAMPLES::
@@ -82,6 +88,28 @@ def constraint_terms(constraints, coordinates, velocities):
         gamma.append(-(sum(SR(Jdq).diff(qk) * dk for qk, dk in zip(coordinates, velocities))
                        + 2 * SR(Jdq).diff(_t) + SR(fj).diff(_t, 2)))
     return J, gamma, [SR(fj).diff(_t) for fj in constraints]
+
+
+def velocity_constraint_terms(constraints, coordinates, velocities):
+    r"""
+    The rows `A = \partial g/\partial \dot q` of constraints on the
+    velocities `g = A(q, t)\dot q + b(q, t) = 0`, the right-hand side
+    `\gamma_A` of `A\ddot q = \gamma_A` (see the module documentation;
+    the first time derivative of `g` vanishes) and `b`, as
+    ``(A, gamma_A, b)`` (``A`` a list of rows).
+
+    EXAMPLES: a point moving along `(1, y)`::
+
+        sage: from sage_dynsym.numerics.form import velocity_constraint_terms
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: velocity_constraint_terms([y*dx - dy], [x, y], [dx, dy])
+        ([[y, -1]], [-dx*dy], [0])
+    """
+    g = [SR(gk) for gk in constraints]
+    rows = [[gk.diff(v) for v in velocities] for gk in g]
+    gamma = [-(sum(gk.diff(qk) * dk for qk, dk in zip(coordinates, velocities)) + gk.diff(_t))
+             for gk in g]
+    return rows, gamma, [gk.subs({v: 0 for v in velocities}) for gk in g]
 
 
 def as_form(equations):
@@ -146,6 +174,7 @@ class NumericalForm:
     def __init__(self, record, energy=None):
         self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._constraints, self._J, self._gamma, self._f_t = [], [], [], []
+        self._velocity_constraints, self._A = [], []
         if hasattr(record, 'accelerations'):
             self._second_order(record)
         else:
@@ -162,20 +191,25 @@ class NumericalForm:
         self._order = 2
         q, dq, ddq = record.coordinates(), record.velocities(), record.accelerations()
         mu, f = record.multipliers(), record.constraints()
+        g = record.velocity_constraints()
+        mu = mu + record.velocity_multipliers()
         E = record.equations()
         M, F = self._linear_blocks(E, ddq, mu)
         self._state, self._hidden = list(q) + list(dq), list(ddq) + mu
         self._n = len(q)
         self._constraints = f
-        if f:
+        self._velocity_constraints = g
+        if f or g:
             J, gamma, self._f_t = constraint_terms(f, q, dq)
-            self._J, self._gamma = J, gamma
-            m, n = len(f), len(q)
+            rows, gamma_velocity, self._b_velocity = velocity_constraint_terms(g, q, dq)
+            self._J, self._A_rows, self._gamma = J, rows, gamma + gamma_velocity
+            m, n = len(f) + len(g), len(q)
+            G = matrix(SR, m, n, J + rows)
             A = matrix(SR, n + m, n + m)
             A[:n, :n] = M
-            A[:n, n:] = -matrix(SR, J).transpose()
-            A[n:, :n] = matrix(SR, J)
-            self._A, self._b = A, F + gamma
+            A[:n, n:] = -G.transpose()
+            A[n:, :n] = G
+            self._A, self._b = A, F + self._gamma
         else:
             self._A, self._b = M, F
 
@@ -205,6 +239,8 @@ class NumericalForm:
                 ("x' = F" if self._A is None else "B x' = F"))
         if self._constraints:
             left += f" with {len(self._constraints)} constraints"
+        if self._velocity_constraints:
+            left += f" with {len(self._velocity_constraints)} velocity constraints"
         coords = self._state[:self._n] if self._order == 2 else self._state
         return (f"Numerical form {left} in ({', '.join(map(str, coords))}), parameters "
                 f"({', '.join(map(str, self._parameters))})")
@@ -283,6 +319,35 @@ class NumericalForm:
         """
         return list(self._constraints), [list(r) for r in self._J], list(self._f_t)
 
+    def velocity_constraints(self):
+        r"""
+        The constraints on the velocities `g_k = A_k(q, t)\dot q + b_k(q,
+        t)`, as ``(g, A, b)`` (``A`` a list of rows; empty lists when there
+        are none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, y, dx, dy, ddx, ddy, la = var('x y dx dy ddx ddy la')
+            sage: N = NumericalForm(SecondOrderEquations([ddx - la*y, ddy + la], [x, y], [dx, dy],
+            ....:                   [ddx, ddy], velocity_constraints=[y*dx - dy],
+            ....:                   velocity_multipliers=[la])); N
+            Numerical form M x'' = F with 1 velocity constraints in (x, y), parameters ()
+            sage: N.velocity_constraints()
+            ([dx*y - dy], [[y, -1]], [0])
+            sage: N.matrix(), N.vector()
+            (
+            [ 1  0 -y]
+            [ 0  1  1]
+            [ y -1  0], [0, 0, -dx*dy]
+            )
+        """
+        if not self._velocity_constraints:
+            return [], [], []
+        return (list(self._velocity_constraints), [list(r) for r in self._A_rows],
+                list(self._b_velocity))
+
     def energy(self):
         r"""The conserved energy given (``None`` if none).
 
@@ -304,7 +369,8 @@ class NumericalForm:
 
     def _expressions(self):
         exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
-        return exprs + self._constraints + [a for row in self._J for a in row] + self._f_t
+        exprs += self._constraints + [a for row in self._J for a in row] + self._f_t
+        return exprs + self._velocity_constraints
 
     def functions(self):
         r"""
@@ -406,6 +472,10 @@ class NumericalForm:
         new._constraints = [sub(e) for e in self._constraints]
         new._J = [[sub(e) for e in row] for row in self._J]
         new._gamma, new._f_t = [sub(e) for e in self._gamma], [sub(e) for e in self._f_t]
+        new._velocity_constraints = [sub(e) for e in self._velocity_constraints]
+        if self._velocity_constraints:
+            new._A_rows = [[sub(e) for e in row] for row in self._A_rows]
+            new._b_velocity = [sub(e) for e in self._b_velocity]
         energy = self._energy
         new._energy = None if energy is None else (
             lambda: None if self.energy() is None else sub(self.energy())) if deferred(
@@ -433,6 +503,9 @@ class NumericalForm:
             Python kernel: 2 states, 1 parameters
         """
         from .compiler import compile_kernel
+        if not isinstance(backend, str):
+            raise AnalysisError(f"backend must be 'auto', 'c' or 'python', got {backend!r}",
+                                entry="numerical_rhs")
         if backend not in self._kernels:
             self._kernels[backend] = compile_kernel(self, backend)
         return self._kernels[backend]

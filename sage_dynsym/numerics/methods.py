@@ -2,7 +2,7 @@ r"""
 The numerical methods every model has: right-hand side, simulation, code
 
 :class:`NumericalMethods` is a base class of the models. It works only
-through the model's ``to_linearizer()`` (one of the records of
+through the model's ``equations_record()`` (one of the records of
 :mod:`sage_dynsym.analysis.motion`) and the optional hook
 ``_conserved_energy()`` (a symbolic energy in the state variables and the
 parameters, or ``None``), and gives
@@ -10,6 +10,10 @@ parameters, or ``None``), and gives
 - :meth:`~NumericalMethods.numerical_rhs` (see :mod:`~sage_dynsym.numerics.rhs`),
 - :meth:`~NumericalMethods.simulate` (see :mod:`~sage_dynsym.numerics.simulate`),
 - :meth:`~NumericalMethods.code` (see :mod:`~sage_dynsym.numerics.codegen`).
+
+The parameter values given are checked against the model's declared signs
+and physical conditions when it has them (see
+:mod:`~sage_dynsym.numerics.values`).
 
 The numerical form of the equations (and its compiled code) is built once
 per model object.
@@ -20,7 +24,7 @@ EXAMPLES::
     sage: from sage_dynsym.numerics.methods import NumericalMethods
     sage: x, dx, ddx, k = var('x dx ddx k')
     sage: class Oscillator(NumericalMethods):
-    ....:     def to_linearizer(self):
+    ....:     def equations_record(self):
     ....:         return SecondOrderEquations([ddx + k*x], [x], [dx], [ddx])
     ....:     def _conserved_energy(self):
     ....:         return (dx^2 + k*x^2)/2
@@ -34,6 +38,7 @@ from .codegen import generate_code
 from .form import NumericalForm
 from .rhs import RightHandSide
 from .simulate import simulate as _simulate
+from .values import check_model_values
 
 _CACHES = {}
 
@@ -69,7 +74,7 @@ def object_cache(obj):
 class NumericalMethods:
     r"""
     Mixin of the models: numerical right-hand side, simulation and code
-    generation from ``to_linearizer()`` (see the module documentation).
+    generation from ``equations_record()`` (see the module documentation).
 
     EXAMPLES: see the module documentation.
     """
@@ -78,11 +83,26 @@ class NumericalMethods:
         r"""The conserved energy of the model, or ``None`` (the default)."""
         return None
 
+    def to_linearizer(self):
+        r"""
+        The same as ``equations_record()``, the neutral record of the
+        equations (the name of earlier versions, after SymPy's mechanics).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: L = Lagrangian(dx^2/2 - x^2/2, [x])
+            sage: L.to_linearizer().equations() == L.equations_record().equations()
+            True
+        """
+        return self.equations_record()
+
     def _numerical_form(self):
         cache = object_cache(self)
         if 'form' not in cache:
             # the energy is computed only if a trajectory's drift asks for it
-            cache['form'] = NumericalForm(self.to_linearizer(), energy=self._conserved_energy)
+            cache['form'] = NumericalForm(self.equations_record(), energy=self._conserved_energy)
         return cache['form']
 
     def numerical_rhs(self, values, backend='auto'):
@@ -100,13 +120,14 @@ class NumericalMethods:
             sage: from sage_dynsym.numerics.methods import NumericalMethods
             sage: x, y, w = var('x y w')
             sage: class Rotation(NumericalMethods):
-            ....:     def to_linearizer(self):
+            ....:     def equations_record(self):
             ....:         return FirstOrderEquations([-w*y, w*x], [x, y])
             sage: f = Rotation().numerical_rhs({'w': 2}); f(0, [1.0, 1.0])
             array([-2.,  2.])
             sage: f.variables()
             [x, y]
         """
+        check_model_values(self, values)
         return RightHandSide(self._numerical_form(), values, backend)
 
     def simulate(self, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
@@ -118,7 +139,10 @@ class NumericalMethods:
         ``values`` the parameter values. See
         :func:`~sage_dynsym.numerics.simulate.simulate` for the integrators
         (``method='auto'``, ``'stiff'``, or a method of SciPy's
-        ``solve_ivp``) and the tolerances.
+        ``solve_ivp``), the tolerances, ``events=[expr, ...]`` (zero
+        crossings, :meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`),
+        the limits (``max_points=``, ``max_evaluations=``) and the
+        constraints (``project=``).
 
         EXAMPLES::
 
@@ -126,7 +150,7 @@ class NumericalMethods:
             sage: from sage_dynsym.numerics.methods import NumericalMethods
             sage: x, a = var('x a')
             sage: class Decay(NumericalMethods):
-            ....:     def to_linearizer(self):
+            ....:     def equations_record(self):
             ....:         return FirstOrderEquations([-a*x], [x])
             sage: T = Decay().simulate({a: 1}, {x: 1}, 1, points=3, method='stiff')
             sage: bool(abs(T.values(x)[-1] - exp(-1.)) < 1e-8)
@@ -155,7 +179,7 @@ class NumericalMethods:
             sage: from sage_dynsym.numerics.methods import NumericalMethods
             sage: x, a = var('x a')
             sage: class Decay(NumericalMethods):
-            ....:     def to_linearizer(self):
+            ....:     def equations_record(self):
             ....:         return FirstOrderEquations([-a*x], [x])
             sage: print(Decay().code('c'))
             /* Right-hand side F of the equations dx/dt = F in x = (x),

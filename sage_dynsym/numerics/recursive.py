@@ -23,7 +23,10 @@ compiled to C:
 - the factorization `M = L^T D L` in the order of the tree, leaves first,
   which creates no fill-in for a tree ([Fea2008]_, Section 6.5, "LTDL"),
   and the solution of `M \ddot q = F` (with holonomic constraints: the
-  multipliers from `J M^{-1} J^T \mu = \gamma - J M^{-1} F`).
+  multipliers from `J M^{-1} J^T \mu = \gamma - J M^{-1} F`; constraints
+  on the velocities `A\dot q + b = 0`, such as rolling without slipping,
+  add their rows `A\ddot q = \gamma_A` to those of `J`, see
+  :mod:`~sage_dynsym.numerics.form`).
 
 The rest of the forcing -- the dissipation `\partial R/\partial \dot q`,
 the generalized forces, the gradient of a force function given as an
@@ -661,10 +664,12 @@ class _Assembly:
         algorithm: models without constraints whose coordinates each move
         one body) or ``'ltdl'`` (the mass matrix, factorized).
         """
-        from .form import constraint_terms
+        from .form import constraint_terms, velocity_constraint_terms
         G = self.G
         self.build_steps()
-        if solver != 'ltdl' and not self.tree.constraints():
+        constraints = self.tree.constraints()
+        velocity_constraints = self.tree.velocity_constraints()
+        if solver != 'ltdl' and not constraints and not velocity_constraints:
             result = self.articulated(self.applied_forces())
             if result is not None:
                 return result + ('articulated',)
@@ -715,11 +720,14 @@ class _Assembly:
             return out
 
         ddq = solve(F)
-        constraints = self.tree.constraints()
-        if constraints:
+        if constraints or velocity_constraints:
+            # the rows J ddq = gamma of the holonomic constraints and A ddq =
+            # gamma_A of those on the velocities take the same multipliers'
+            # elimination (the constraint forces J^T mu + A^T lambda)
             J, gamma, _ = constraint_terms(constraints, self.q, self.dq)
-            J = [[self.convert(e) for e in row] for row in J]
-            gamma = [self.convert(e) for e in gamma]
+            A, gamma_A, _ = velocity_constraint_terms(velocity_constraints, self.q, self.dq)
+            J = [[self.convert(e) for e in row] for row in J + A]
+            gamma = [self.convert(e) for e in gamma + gamma_A]
             Y = [solve(row) for row in J]
             m = len(J)
             S = [[G.dot(J[a], Y[b]) for b in range(m)] for a in range(m)]
@@ -964,6 +972,31 @@ class RecursiveForm:
         f = self._tree.constraints()
         J, _, f_t = constraint_terms(f, self._tree.coordinates(), self._tree.velocities())
         return f, J, f_t
+
+    def velocity_constraints(self):
+        r"""
+        The constraints on the velocities `g_k = A_k\dot q + b_k`, their
+        rows `A` and `b` (as :meth:`NumericalForm.velocity_constraints
+        <sage_dynsym.numerics.form.NumericalForm.velocity_constraints>`).
+
+        EXAMPLES: a point that must move along `(1, y)`, pushed along `x`::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, y, 0], mass=1)], [x, y],
+            ....:                            forces=[1, 0], velocity_constraints=[y*dx - dy]))
+            sage: F.velocity_constraints()
+            ([dx*y - dy], [[y, -1]], [0])
+            sage: F.kernel('python')(0.0, [0.0, 2.0, 1.0, 2.0], [])   # ddx = (1 - y dx dy)/(1 + y^2)
+            array([ 1. ,  2. , -0.6,  0.8])
+            sage: F.solver()
+            'ltdl'
+        """
+        from .form import velocity_constraint_terms
+        g = self._tree.velocity_constraints()
+        A, _, b = velocity_constraint_terms(g, self._tree.coordinates(), self._tree.velocities())
+        return g, A, b
 
     def energy(self):
         r"""The conserved energy (``None`` if none), computed when first asked for.

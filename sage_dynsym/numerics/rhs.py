@@ -28,7 +28,8 @@ import numpy as np
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..errors import ModelError, brief
+from ..arguments import finite_real
 from .form import as_form
 
 
@@ -74,7 +75,7 @@ def parameter_values(form, values):
 def real_number(value, name, entry="values"):
     r"""
     ``value`` (a Python or Sage number, or a constant expression) as a
-    finite float.
+    finite float (see :func:`~sage_dynsym.arguments.finite_real`).
 
     EXAMPLES::
 
@@ -92,17 +93,66 @@ def real_number(value, name, entry="values"):
         Traceback (most recent call last):
         ...
         ModelError: values: the value of k must be a finite real number, got +Infinity
+        sage: real_number('7', 'k')
+        Traceback (most recent call last):
+        ...
+        ModelError: values: the value of k must be a real number, got '7' (str)
     """
-    try:
-        number = complex(SR(value)) if not isinstance(value, (int, float)) else value
-    except (TypeError, ValueError):
-        number = None
-    if number is None or (isinstance(number, complex) and number.imag != 0):
-        raise ModelError(f"the value of {name} must be a real number, got {value}", entry=entry)
-    if not math.isfinite(number.real):
-        raise ModelError(f"the value of {name} must be a finite real number, got {value}",
-                         entry=entry)
-    return float(number.real)
+    return finite_real(value, name, entry=entry)
+
+
+def state_vector(x, size, entry="numerical_rhs"):
+    r"""
+    The state ``x`` (a sequence of ``size`` finite real numbers) as a NumPy
+    array of floats; a :class:`~sage_dynsym.errors.ModelError` for anything
+    else (strings, booleans, complex numbers, ``nan``, a wrong length).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.rhs import state_vector
+        sage: state_vector([1, 1/2], 2)
+        array([1. , 0.5])
+
+    TESTS::
+
+        sage: state_vector(['a', 'b'], 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must be 2 real numbers, got ['a', 'b']
+        sage: state_vector([1.0, float('nan')], 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must be 2 finite real numbers, got [1.0, nan]
+        sage: state_vector([1.0], 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must have 2 entries, got 1
+        sage: state_vector(None, 2)
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must be 2 real numbers, got None
+    """
+    array = None
+    if not isinstance(x, (str, bytes, dict)) and hasattr(x, '__len__'):
+        array = np.asarray(x) if not isinstance(x, np.ndarray) else x
+        if array.dtype.kind == 'O':     # Sage numbers, one by one
+            try:
+                array = np.array([finite_real(v, 'x') for v in array.ravel()], dtype=float) \
+                    if array.ndim == 1 else None
+            except ModelError:
+                array = None
+        elif array.dtype.kind not in 'iuf':
+            array = None
+    if array is None:
+        raise ModelError(f"the state must be {size} real numbers, got {brief(x)}", entry=entry)
+    if array.shape != (size,):
+        got = len(array) if array.ndim == 1 else f"shape {array.shape}"
+        raise ModelError(f"the state must have {size} entries, got {got}", entry=entry)
+    array = np.ascontiguousarray(array, dtype=float)
+    if not np.isfinite(array).all():
+        raise ModelError(f"the state must be {size} finite real numbers, got "
+                         f"{brief(list(map(float, array)))}", entry=entry)
+    return array
 
 
 class RightHandSide(SageObject):
@@ -128,13 +178,21 @@ class RightHandSide(SageObject):
         self._p = parameter_values(form, values)
         self._kernel = form.kernel(backend)
         self._call = self._kernel.bind(self._p)
+        self._shape = (len(form.state()),)
 
     def _repr_(self):
         return (f"Numerical right-hand side x' = f(t, x) in "
                 f"({', '.join(map(str, self._form.state()))})")
 
     def __call__(self, t, x):
-        return self._call(t, x)
+        # the integrators' calls, a float and a NumPy array of floats of the
+        # right length, go straight to the compiled code; anything else is
+        # checked first
+        if (type(x) is np.ndarray and x.dtype == np.float64 and x.shape == self._shape
+                and isinstance(t, float) and math.isfinite(t)):
+            return self._call(t, x)
+        t = finite_real(t, 't', entry="numerical_rhs")
+        return self._call(t, state_vector(x, self._shape[0]))
 
     def variables(self):
         r"""The state variables, in the order of ``x``.

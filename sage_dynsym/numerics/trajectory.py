@@ -52,12 +52,19 @@ class Trajectory(SageObject):
       entries of ``breaks``; used to draw smooth curves between the samples
     - ``breaks`` -- the ends of the intervals of ``dense``
     - ``name`` -- (optional) the model's name, for the titles of pictures
+    - ``events`` -- (optional) the recorded zero crossings, a list of
+      ``(time, index, state)`` with ``state`` an array over the variables
+      (see :mod:`~sage_dynsym.numerics.events`)
+    - ``constraints`` -- (optional) the constraints the motion must keep
+      (expressions in the state, each ``== 0``), for
+      :meth:`constraint_residuals`
 
     EXAMPLES: see the module documentation.
     """
 
     def __init__(self, times, states, variables, parameters, energy=None, method=None,
-                 dense=None, breaks=None, name=None):
+                 dense=None, breaks=None, name=None, events=None, constraints=()):
+        self._constraints = [SR(c) for c in constraints]
         self._times = np.array(times, dtype=float)
         self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
         self._variables = [SR(v) for v in variables]
@@ -67,6 +74,9 @@ class Trajectory(SageObject):
         self._dense = list(dense) if dense else None
         self._breaks = None if breaks is None else np.array(breaks, dtype=float)
         self._name = name
+        self._events = None if events is None else sorted(
+            ((float(t), int(k), np.array(y, dtype=float)) for t, k, y in events),
+            key=lambda e: e[0])
 
     def __eq__(self, other):
         r"""
@@ -88,7 +98,8 @@ class Trajectory(SageObject):
                 [str(v) for v in self._variables] == [str(v) for v in other._variables] and
                 {str(k): v for k, v in self._parameters.items()} ==
                 {str(k): v for k, v in other._parameters.items()} and
-                str(self.energy()) == str(other.energy()))
+                str(self.energy()) == str(other.energy()) and
+                [e[:2] for e in self._events or []] == [e[:2] for e in other._events or []])
 
     def __ne__(self, other):
         return not self == other
@@ -229,6 +240,22 @@ class Trajectory(SageObject):
             {x: 2.0}
         """
         return dict(zip(self._variables, map(float, self._states[-1])))
+
+    def constraint_residuals(self):
+        r"""
+        The values of the constraints along the motion: a dict
+        ``{constraint: NumPy array over the samples}`` (empty when the
+        model has none); zero up to the integration and projection errors.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import Trajectory
+            sage: x, dx = var('x dx')
+            sage: T = Trajectory([0, 1], [[1, 0], [2, 1e-9]], [x, dx], {}, constraints=[dx])
+            sage: T.constraint_residuals()
+            {dx: array([0.e+00, 1.e-09])}
+        """
+        return {c: self._array(c) for c in self._constraints}
 
     def energy(self):
         r"""The conserved energy of the model (``None`` if it has none).
@@ -385,6 +412,140 @@ class Trajectory(SageObject):
                           self._array(y, times, states).tolist())),
                  title=title if title is not None else self._title('phase portrait'),
                  **options)
+        G.axes_labels([_label(x), _label(y)])
+        return G
+
+    # -- events ------------------------------------------------------------
+
+    def _recorded(self, index=None):
+        if self._events is None:
+            raise ModelError("no events were recorded: simulate with events=[...]",
+                             entry="events")
+        return [e for e in self._events if index is None or e[1] == index]
+
+    def events(self, index=None):
+        r"""
+        The recorded zero crossings, in time order: a list of ``(time,
+        index, state)``, ``index`` the position of the event in the list
+        given to :func:`~sage_dynsym.numerics.simulate.simulate` and
+        ``state`` a dict over the state variables at the crossing.
+
+        INPUT:
+
+        - ``index`` -- (optional) only the crossings of that event
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.simulate import simulate
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: T = simulate(SecondOrderEquations([ddx + x], [x], [dx], [ddx]), {},
+            ....:              {x: 1, dx: 0}, 4, events=[x, dx])
+            sage: [(round(t, 9), k) for t, k, _ in T.events()]
+            [(1.570796327, 0), (3.141592654, 1)]
+            sage: t, k, state = T.events(0)[0]; round(state[dx], 9)
+            -1.0
+
+        TESTS::
+
+            sage: simulate(SecondOrderEquations([ddx + x], [x], [dx], [ddx]), {},
+            ....:          {x: 1, dx: 0}, 4).events()
+            Traceback (most recent call last):
+            ...
+            ModelError: events: no events were recorded: simulate with events=[...]
+        """
+        return [(t, k, dict(zip(self._variables, map(float, y))))
+                for t, k, y in self._recorded(index)]
+
+    def event_times(self, index=0):
+        r"""The times of the crossings of one event (a NumPy array).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.simulate import simulate
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: T = simulate(SecondOrderEquations([ddx + x], [x], [dx], [ddx]), {},
+            ....:              {x: 1, dx: 0}, 7, events=[x])
+            sage: T.event_times().round(9)
+            array([1.57079633, 4.71238898])
+        """
+        return np.array([t for t, _, _ in self._recorded(index)])
+
+    def period(self, index=0):
+        r"""
+        The mean time between successive crossings of one event: the
+        period of a periodic motion when the event counts one direction
+        (or a half period when it counts both).
+
+        EXAMPLES: the period of a pendulum against the complete elliptic
+        integral, `4\sqrt{l/g}\,K(\sin^2(\theta_0/2))`::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.simulate import simulate
+            sage: from sage_dynsym.numerics.events import Event
+            sage: th, dth, ddth = var('theta dtheta ddtheta')
+            sage: E = SecondOrderEquations([ddth + sin(th)], [th], [dth], [ddth])
+            sage: T = simulate(E, {}, {th: 2, dth: 0}, 30, events=[Event(th, direction=1)])
+            sage: abs(T.period() - 4*elliptic_kc(sin(1.)^2)) < 1e-9
+            True
+
+        TESTS::
+
+            sage: T = simulate(E, {}, {th: 2, dth: 0}, 1, events=[th])
+            sage: T.period()
+            Traceback (most recent call last):
+            ...
+            ModelError: period: event 0 crossed 0 times; a period needs at least 2 crossings
+        """
+        times = self.event_times(index)
+        if len(times) < 2:
+            raise ModelError(f"event {index} crossed {len(times)} times; a period needs at "
+                             "least 2 crossings", entry="period")
+        return float(np.mean(np.diff(times)))
+
+    def section(self, expressions, index=0):
+        r"""
+        The values of ``expressions`` at the crossings of one event: the
+        points of a Poincaré section (a NumPy array, one row per crossing).
+
+        EXAMPLES: two uncoupled oscillators, cut where `x` increases through
+        zero: the points lie on the ellipse of the energy of `y`::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.simulate import simulate
+            sage: from sage_dynsym.numerics.events import Event
+            sage: x, y, dx, dy, ddx, ddy = var('x y dx dy ddx ddy')
+            sage: E = SecondOrderEquations([ddx + x, ddy + 2*y], [x, y], [dx, dy], [ddx, ddy])
+            sage: T = simulate(E, {}, {x: 1, y: 1, dx: 0, dy: 0}, 60,
+            ....:              events=[Event(x, direction=1)])
+            sage: P = T.section([y, dy]); P.shape
+            (9, 2)
+            sage: bool(max(abs(2*a^2 + b^2 - 2) for a, b in P) < 1e-9)
+            True
+        """
+        rows = self._recorded(index)
+        times = np.array([t for t, _, _ in rows])
+        states = np.array([y for _, _, y in rows]).reshape(len(rows), len(self._variables))
+        return np.array([self._array(e, times, states) for e in expressions]).T \
+            .reshape(len(rows), len(expressions))
+
+    def poincare_section(self, x, y, index=0, **options):
+        r"""The Poincaré section: the points `(x, y)` at the crossings of one
+        event, plotted.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.simulate import simulate
+            sage: x, y, dx, dy, ddx, ddy = var('x y dx dy ddx ddy')
+            sage: E = SecondOrderEquations([ddx + x, ddy + 2*y], [x, y], [dx, dy], [ddx, ddy])
+            sage: T = simulate(E, {}, {x: 1, y: 1, dx: 0, dy: 0}, 30, events=[x])
+            sage: T.poincare_section(y, dy)
+            Graphics object consisting of 1 graphics primitive
+        """
+        from sage.plot.point import point2d
+        G = point2d([tuple(map(float, p)) for p in self.section([x, y], index)], **options)
         G.axes_labels([_label(x), _label(y)])
         return G
 

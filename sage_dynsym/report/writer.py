@@ -8,6 +8,11 @@ loop Lagrangian of a linear circuit) and renders it as readable text with the
 LaTeX form of every formula. The command line ``python -m sage_dynsym`` (or
 ``sage-dynsym``) prints it for each file given.
 
+Every kind of model says what its report holds
+(:meth:`~sage_dynsym.dynamics.model.Model.report_sections`); the sections
+are run here, for every kind alike, by
+:func:`~sage_dynsym.dynamics.reporting.run_sections` within one budget.
+
 EXAMPLES::
 
     sage: from sage_dynsym import load
@@ -32,560 +37,32 @@ EXAMPLES::
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (the package's face loads it lazily, only when a name is used)
 import sage.all  # noqa: F401
-import operator
 
-from sage.misc.latex import latex
-from sage.symbolic.operators import add_vararg, mul_vararg
-from sage.symbolic.ring import SR
-
-from ..errors import DynSymError, BudgetError
+from ..arguments import count
+from ..dynamics.model import Model
+from ..dynamics.reporting import run_sections
+from ..errors import DynSymError
 
 from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 
-#: Term counts beyond this are reported as this (they are over any budget).
-_TERMS_CAP = 10**30
-#: Largest number of partial states of the permanent bound before the
-#: cruder product bound is used.
-_PERMANENT_STATES = 20_000
 
-
-def polynomial_terms(expr):
-    r"""
-    An upper bound of the number of terms of ``expr`` once expanded, from
-    its tree alone (nothing is expanded): sums add, products multiply, a
-    power `a^n` with a positive integer `n` counts the monomials of degree
-    `n` in the terms of `a`; functions and other powers are single atoms.
-    Capped at `10^{30}`.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.report import polynomial_terms
-        sage: x, y, z = var('x y z')
-        sage: polynomial_terms((x + y)*(x + z + 1)), ((x + y)*(x + z + 1)).expand().number_of_operands()
-        (6, 6)
-        sage: polynomial_terms((x + y + z)^10), len(((x + y + z)^10).expand().operands())
-        (66, 66)
-        sage: polynomial_terms(sin(x + y)/(x + y)), polynomial_terms(SR(0))
-        (1, 0)
-    """
-    try:
-        return min(_terms(SR(expr)), _TERMS_CAP)
-    except RecursionError:
-        return _TERMS_CAP
-
-
-def _terms(e):
-    op = e.operator()
-    if op is None:
-        return 0 if e.is_zero() else 1
-    if op is add_vararg:
-        return min(sum(_terms(x) for x in e.operands()), _TERMS_CAP)
-    if op is mul_vararg:
-        count = 1
-        for x in e.operands():
-            count = min(count * _terms(x), _TERMS_CAP)
-        return count
-    if op is operator.pow:
-        base, exponent = e.operands()
-        if exponent.is_integer() and exponent > 0:
-            from sage.arith.misc import binomial
-            k, n = _terms(base), int(min(exponent, 10**6))
-            return min(binomial(k + n - 1, n), _TERMS_CAP) if k > 1 else k
-    return 1
-
-
-def determinant_terms(counts):
-    r"""
-    An upper bound of the number of terms of the expanded determinant of a
-    matrix whose entries have ``counts[i][j]`` terms: the permanent of the
-    counts (each permutation contributes the product of its entries' term
-    counts), computed row by row over the open columns; when that needs
-    too many partial states, the smaller of the products of the row sums
-    and of the column sums.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.report import determinant_terms
-        sage: determinant_terms([[2, 1], [1, 3]])
-        7
-        sage: determinant_terms([[1, 1, 0], [1, 1, 1], [0, 1, 1]])   # tridiagonal
-        3
-        sage: determinant_terms([[1] * 8 for _ in range(8)]) == factorial(8)
-        True
-        sage: determinant_terms([[1] * 40 for _ in range(40)])   # the product bound, capped
-        1000000000000000000000000000000
-        sage: determinant_terms([[1, 0], [1, 0]])
-        0
-    """
-    n = len(counts)
-    last = {}
-    for j in range(n):
-        rows = [i for i in range(n) if counts[i][j]]
-        if not rows:
-            return 0
-        last[j] = rows[-1]
-    states = {frozenset(): 1}
-    for i in range(n):
-        closing = {j for j in range(n) if last[j] == i}
-        new = {}
-        for used, value in states.items():
-            for j in range(n):
-                c = counts[i][j]
-                if c and j not in used:
-                    key = used | {j}
-                    if closing <= key:
-                        key -= closing
-                        new[key] = new.get(key, 0) + value * c
-        states = new
-        if len(states) > _PERMANENT_STATES:
-            rows = 1
-            for row in counts:
-                rows = min(rows * sum(row), _TERMS_CAP)
-            cols = 1
-            for j in range(n):
-                cols = min(cols * sum(counts[i][j] for i in range(n)), _TERMS_CAP)
-            return min(rows, cols)
-    return min(sum(states.values()), _TERMS_CAP)
-
-
-def _matrix_terms(M):
-    return [[polynomial_terms(e) for e in row] for row in M.rows()]
-
-
-class _Report:
-    r"""
-    The lines of a report and its sections: which are wanted, their budget,
-    and :meth:`run`, which turns any failure of a section into one line.
-    """
-
-    def __init__(self, sections, budget):
-        self.lines, self.wanted, self.budget = [], set(sections), budget
-
-    def want(self, *keys):
-        return any(k in self.wanted for k in keys)
-
-    def check(self, what, estimate):
-        if estimate > self.budget:
-            raise BudgetError(what, estimate=estimate, budget=self.budget)
-
-    def run(self, title, body):
-        r"""
-        Run ``body(lines)``; its lines are kept if it succeeds, else one line
-        says why the section is missing: over the budget, not available
-        (the package's error), or failed (any other error, with its class).
-        Returns the body's value, or ``None``. ``KeyboardInterrupt`` is not
-        caught.
-        """
-        lines = []
-        try:
-            value = body(lines)
-        except BudgetError as err:
-            self.lines.append(f"{title}: skipped, {err.message} (raise it with --budget)")
-            return None
-        except DynSymError as err:
-            self.lines.append(f"{title}: not available ({_clip(str(err))})")
-            return None
-        except Exception as err:    # Sage, Maxima, memory, recursion: one line, no traceback
-            self.lines.append(f"{title}: section failed: {type(err).__name__}: "
-                              f"{_clip(str(err))}")
-            return None
-        self.lines.extend(lines)
-        return value
-
-
-def _clip(text, limit=300):
-    text = " ".join(text.split())
-    return text if len(text) <= limit else text[:limit - 3] + "..."
-
-
-def _formula(lines, label, expr, indent="  "):
-    lines.append(f"{indent}{label}{expr}")
-    lines.append(f"{indent}  LaTeX: {latex(expr)}")
-
-
-def lagrangian_estimate(system):
-    r"""
-    The size estimate of a mechanical system's Lagrangian, checked before it
-    is derived: `n^2 2^r T^2` polynomial terms for `n` coordinates (the
-    entries of the mass matrix), `r` the most angles that vary along one
-    chain of bodies from the inertial frame (each such rotation at most
-    doubles the terms of a direction cosine) and `T` the most terms of one
-    datum of the description (a mass, an inertia entry, a vector component,
-    the force function), squared as velocities are.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym import load
-        sage: from sage_dynsym.description import example_path
-        sage: from sage_dynsym.report import lagrangian_estimate
-        sage: lagrangian_estimate(load(example_path('spherical_pendulum.yaml')))
-        16
-        sage: from sage_dynsym import MechanicalSystem, RigidBody
-        sage: x, m, k = var('x m k')
-        sage: lagrangian_estimate(MechanicalSystem([RigidBody('b', joint=[x, 0, 0],
-        ....:                                               mass=(m + k)^3)], [x]))
-        16
-    """
-    from ..mechanics.force_functions import UniformGravity, NewtonianField
-    depth, data = [0], []
-    for k, body in enumerate(system.bodies(), 1):
-        turning = sum(1 for _, angle in body.rotations() if SR(angle).variables())
-        depth.append(depth[system.parent_index(k)] + turning)
-        data += [body.mass()] + body.inertia().list() + list(body.joint())
-        data += list(body.velocity() or ()) + list(body.mass_center())
-    for field in system.force_terms():
-        if isinstance(field, UniformGravity):
-            data += list(field.acceleration())
-        elif isinstance(field, NewtonianField):
-            nu, r, e = field.parameters()
-            data += [nu, r] + list(e)
-        else:
-            data.append(field)
-    for load in system.loads():
-        data += load.expressions()
-    data += system.constraints()
-    largest = max([polynomial_terms(e) for e in data] + [1])
-    n = len(system.coordinates())
-    return min(n ** 2 * 2 ** max(depth) * largest ** 2, _TERMS_CAP)
-
-
-def circuit_estimate(circuit):
-    r"""
-    The size estimate of a circuit's mixed potential and state equations
-    (and of its loop Lagrangian), checked before they are derived: the
-    number of branches times the square of the most terms of one element
-    value (a value is integrated, and multiplied by currents and voltages
-    that are sums over the loops).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.circuits import Circuit
-        sage: from sage_dynsym.report import circuit_estimate
-        sage: circuit_estimate(Circuit([[1, 2, 'R1'], [2, 1, 'C1']]))
-        2
-        sage: circuit_estimate(Circuit([[1, 2, 'R1'], {'from': 2, 'to': 1, 'kind': 'capacitor',
-        ....:     'name': 'C1', 'value': '(u + C0)^2'}], parameters=['C0']))
-        18
-    """
-    values = [b.value for b in circuit.branches() if b.value is not None]
-    values += [c.value for c in circuit.couplings()]
-    largest = max([polynomial_terms(v) for v in values] + [1])
-    return min(len(circuit.branches()) * largest ** 2, _TERMS_CAP)
-
-
-def _mechanical(system, out):
-    coordinates = ", ".join(map(str, system.coordinates()))
-    n = len(system.bodies())
-    out.lines.append(f"== {system.name() or 'mechanical system'} (mechanical system: {n} "
-                     f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
-
-    def lagrangian(lines):
-        out.check("the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a chain, "
-                  "terms of the data)",
-                  lagrangian_estimate(system))
-        L = system.lagrangian()
-        if out.want('lagrangian'):
-            lines.append("Lagrangian L = T + U:")
-            _formula(lines, "", L.expr())
-        return L
-
-    L = out.run("Lagrangian", lagrangian)
-    if L is None:
-        return
-    if out.want('equations'):
-        out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
-        if L.constraints():
-            out.run("Constraint forces", lambda lines: _constraint_forces(L, lines, out))
-    cyclic = L.cyclic_coordinates()
-    # absent from L but not cyclic: a damper, a force or a constraint acts on it
-    acted = [q for q in L.coordinates() if q not in cyclic and not L.expr().has(q)]
-    if acted and out.want('routh', 'stationary'):
-        out.lines.append(f"Not cyclic (absent from L, but the dissipation, a generalized force "
-                         f"or a constraint acts on them): {', '.join(map(str, acted))}")
-    partial = bool(cyclic) and len(cyclic) < len(L.coordinates())
-    R = None
-    if partial and out.want('routh', 'stationary'):
-        R = out.run("Routh function", lambda lines: _routh(L, cyclic, lines, out))
-    if out.want('stationary'):
-        if partial and R is None:
-            out.lines.append("Stationary motions: not available (the Routh function is not)")
-        else:
-            def stationary(lines):
-                # the solver splits the system into cases: up to 2^k for k unknowns
-                F = R or L
-                out.check("the stationary motions (terms of the function at rest times 2^k "
-                          "for k unknowns)",
-                          polynomial_terms(F.expr()) * 2 ** len(F.coordinates()))
-                _stationary(L, cyclic, lines, system.positive_parameters())
-            out.run("Stationary motions" if partial else "Equilibria", stationary)
-    if out.want('hamiltonian'):
-        out.run("Hamiltonian", lambda lines: _hamiltonian(L, lines, out))
-
-
-def _routh(L, cyclic, lines, out):
-    A = L.mass_matrix()
-    index = [L.coordinates().index(q) for q in cyclic]
-    block = A.matrix_from_rows_and_columns(index, index)
-    out.check("the Routh function (determinant of the cyclic block of the mass matrix, "
-              "times the terms of L)",
-              determinant_terms(_matrix_terms(block)) * polynomial_terms(L.expr()))
-    R = L.routh(cyclic)
-    if out.want('routh'):
-        lines.append(f"Routh function for the cyclic coordinates {', '.join(map(str, cyclic))} "
-                     f"(momenta {', '.join(map(str, R.momenta()))}):")
-        _formula(lines, "R = ", R.expr())
-        out.check("the Routh equations", equations_estimate(R))
-        lines.append("Routh equations (E_i = 0):")
-        for q, e in zip(R.coordinates(), R.equations()):
-            _formula(lines, f"[{q}] ", e)
-    return R
-
-
-def _hamiltonian(L, lines, out):
-    n = len(L.coordinates())
-    out.check("the Hamiltonian (n^2 times the determinant of the mass matrix)",
-              n ** 2 * determinant_terms(_matrix_terms(L.mass_matrix())))
-    H = L.hamiltonian()
-    if H.is_singular():
-        D = H.constraints()
-        lines.append(f"Singular Lagrangian: Dirac's scheme ({D}):")
-        for c in D.constraints():
-            _formula(lines, "constraint ", c)
-    lines.append("Hamiltonian:")
-    _formula(lines, "H = ", H.expr())
-
-
-def _stationary(L, cyclic, lines, positive=()):
-    r"""The stationary motions (Routh function at rest, solved for the cyclic
-    momenta) or equilibria, each with its existence conditions and a
-    stability verdict (Routh--Lyapunov, then first approximation)."""
-    from ..analysis import stationary_motions
-    reduced = L.routh(cyclic) if cyclic and len(cyclic) < len(L.coordinates()) else L
-    routh = reduced is not L
-    what = ("Stationary motions (Routh function at rest, cyclic momenta constant)"
-            if routh else "Equilibria (equations at rest)")
-    try:
-        solutions = stationary_motions(reduced, solve_for=reduced.momenta() if routh else None,
-                                       positive=positive)
-    except DynSymError as err:
-        lines.append(f"{what}: not available ({err})")
-        return
-    lines.append(f"{what}:")
-    for e in solutions.equations():
-        _formula(lines, "0 = ", e)
-    lines.extend(solutions.report_lines(
-        lambda out, e: _formula(out, "0 = ", e, indent="    ")))
-
-
-def _linear_circuit_stability(circuit, L, lines, out):
-    from ..analysis import linearize, lienard_chipart_conditions
-    sources = {SR.var(b.name): 0 for b in circuit.branches()
-               if b.kind in ('voltage_source', 'current_source')}
-    # declared signs, else the symbols of the element values (physical
-    # resistances, inductances and capacitances; mutual inductances have no sign)
-    values = circuit.positive_parameters() or sorted(
-        {v for b in circuit.branches() if b.value is not None
-         for v in SR(b.value).variables()} - set(sources), key=str)
-    lam = SR.var('lambda_')
-    free = L.subs(sources) if sources else L
-    out.check("the characteristic polynomial (permanent bound of the determinant)",
-              characteristic_estimate(free))
-    system = linearize(free, {q: 0 for q in free.coordinates()})
-    poly = system.characteristic_polynomial(lam, positive=values)
-    lines.append("Stability of the free circuit (sources off), loop method:")
-    _formula(lines, "characteristic polynomial: ", poly)
-    if poly.subs({lam: 0}).is_zero():
-        lines.append("  lambda = 0 is a root: some loop charge is not fixed by a capacitor, "
-                     "so the zero solution in loop charges is not asymptotically stable "
-                     "(the currents may still decay)")
-        return
-    _check_routh_scheme(poly, lam, out.budget)
-    conditions = lienard_chipart_conditions(poly, lam, positive=values, budget=out.budget)
-    if conditions:
-        lines.append("  Lienard-Chipart conditions (each > 0), element values positive:")
-        for c in conditions:
-            _formula(lines, "", c, indent="    ")
-    else:
-        lines.append("  asymptotically stable for all positive element values "
-                     "(Lienard-Chipart conditions hold identically)")
-
-
-def _check_routh_scheme(poly, lam, budget):
-    # the Hurwitz determinants come from the fraction-free Routh scheme,
-    # which stops before a product of more than ``budget`` pairs of terms:
-    # run it with the budget first (the costly products are not made)
-    from sage.rings.rational_field import QQ
-    try:
-        from ..analysis.hurwitz import _normalized_coefficients, _routh_scheme
-    except ImportError:     # without the probe: the products of the coefficients
-        if polynomial_terms(poly) ** 2 > budget:
-            raise BudgetError("the Lienard-Chipart conditions (the square of the terms of "
-                              "the characteristic polynomial)",
-                              estimate=polynomial_terms(poly) ** 2, budget=budget) from None
-        return
-    a = _normalized_coefficients(poly, lam)
-    n = len(a) - 1
-    if n < 2 or a[0].parent() is QQ:
-        return
-    deltas, reached = _routh_scheme(a, n - 1, budget)
-    if reached < n - 1 and deltas[reached] != 0:
-        raise BudgetError(f"the Lienard-Chipart conditions: a product of the Routh scheme "
-                          f"would multiply more than {budget} pairs of terms, over the budget "
-                          f"of {budget}")
-
-
-def equations_estimate(L):
-    r"""
-    The size estimate of the Lagrange equations of ``L``, checked before
-    they are derived: for each coordinate, the terms of `\partial L/\partial
-    \dot q_i` times `2n + 1` (the total time derivative differentiates each
-    factor in `q, \dot q, t`), plus those of `\partial L/\partial q_i`, of
-    the dissipation and of the generalized force.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym import Lagrangian
-        sage: from sage_dynsym.report import equations_estimate
-        sage: x, dx, m, k = var('x dx m k')
-        sage: equations_estimate(Lagrangian(m*dx^2/2 - k*x^2/2, [x]))
-        4
-    """
-    q, dq = L.coordinates(), L.velocities()
-    expr, R = SR(L.expr()), SR(L.dissipation())
-    n, total = len(q), 0
-    for x, v, Q in zip(q, dq, L.generalized_forces()):
-        total += (polynomial_terms(expr.diff(v)) * (2 * n + 1) + polynomial_terms(expr.diff(x))
-                  + polynomial_terms(R.diff(v)) + polynomial_terms(Q))
-    return total
-
-
-def characteristic_estimate(L):
-    r"""
-    The size estimate of the characteristic polynomial
-    `\det(M\lambda^2 + (D + G)\lambda + K)` of ``L`` linearized at the
-    origin, checked before the linearization: the permanent bound
-    (:func:`determinant_terms`) of the term counts of the second
-    derivatives of `L` and of the dissipation that make up the matrix.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.circuits import Circuit
-        sage: from sage_dynsym.report import characteristic_estimate
-        sage: C = Circuit([[0, 1, 'R1'], [1, 2, 'L1'], [2, 0, 'C1']])
-        sage: characteristic_estimate(C.lagrangian())   # L1*lambda^2 + R1*lambda + 1/C1
-        3
-    """
-    q, dq = L.coordinates(), L.velocities()
-    expr, R = SR(L.expr()), SR(L.dissipation())
-    by_velocity = [expr.diff(v) for v in dq]
-    by_coordinate = [expr.diff(x) for x in q]
-    damping = [R.diff(v) for v in dq]
-    counts = [[polynomial_terms(by_velocity[i].diff(dq[j])) + polynomial_terms(damping[i].diff(dq[j]))
-               + polynomial_terms(by_velocity[i].diff(q[j]))
-               + polynomial_terms(by_coordinate[i].diff(q[j])) for j in range(len(q))]
-              for i in range(len(q))]
-    return determinant_terms(counts)
-
-
-def _lagrangian_equations(L, lines, out):
-    out.check("the Lagrange equations (terms of dL/d(dq_i) times 2n + 1, and of dL/dq_i)",
-              equations_estimate(L))
-    lines.append("Lagrange equations (E_i = 0):")
-    for q, e in zip(L.coordinates(), L.lagrange_equations()):
-        _formula(lines, f"[{q}] ", e)
-    for mu, f in zip(L.multipliers(), L.constraints()):
-        _formula(lines, f"constraint with multiplier {mu} (terms -{mu} df/dq_i): 0 = ", f)
-
-
-def _constraint_forces(L, lines, out):
-    out.check("the accelerations and multipliers (the equations' terms times (n + m)^2)",
-              equations_estimate(L) * (len(L.coordinates()) + len(L.constraints())) ** 2)
-    solved = L.accelerations_and_multipliers()
-    lines.append("Multipliers (constraint forces), solved with the accelerations:")
-    for mu in L.multipliers():
-        _formula(lines, f"{mu} = ", solved[mu])
-
-
-def _circuit(circuit, out):
-    from ..errors import CircuitError
-    out.lines.append(f"== {circuit.name() or 'circuit'} (circuit: {len(circuit.branches())} "
-                     f"branches on {len(circuit.nodes())} nodes) ==")
-    estimate = circuit_estimate(circuit)
-    if out.want('mixed_potential', 'state_equations', 'lyapunov'):
-        def state_equations(lines):
-            out.check("the state equations (branches times the squared terms of the "
-                      "largest element value)", estimate)
-            try:
-                return circuit.state_equations()
-            except CircuitError as err:
-                lines.append(f"No state equations: {err}")
-                return None
-        equations = out.run("State equations", state_equations)
-        # the mixed potential exists for complete circuits only; the others
-        # get their state equations from nodal analysis
-        split = equations is not None and circuit.has_mixed_potential()
-        if split and out.want('mixed_potential'):
-            def potential(lines):
-                lines.append("Mixed potential P(i, u):")
-                _formula(lines, "P = ", circuit.mixed_potential())
-            out.run("Mixed potential", potential)
-        if equations is not None and out.want('state_equations'):
-            def state(lines):
-                lines.append("State equations (L di/dt = dP/di, C du/dt = -dP/du)" if split
-                             else "State equations (nodal analysis; capacitor loops and "
-                                  "inductor cut-sets reduce the state):")
-                for label, e in zip(circuit.state_equation_labels(), equations):
-                    _formula(lines, f"[{label}] ", e)
-            out.run("State equations", state)
-        if split and out.want('lyapunov'):
-            def lyapunov(lines):
-                # dP/dt = sum of (dP/dx_k) dx_k/dt: each state equation squared
-                out.check("dP/dt (the squares of the state equations)",
-                          sum(polynomial_terms(e) ** 2 for e in equations))
-                lines.append("Time derivative of P along the state equations "
-                             "(Lyapunov analogue):")
-                _formula(lines, "dP/dt = ", circuit.brayton_moser().time_derivative())
-            out.run("dP/dt", lyapunov)
-    if not out.want('lagrangian', 'equations', 'stability'):
-        return
-
-    def loop_lagrangian(lines):
-        out.check("the loop Lagrangian (branches times the squared terms of the largest "
-                  "element value)", estimate)
-        try:
-            return circuit.lagrangian(method="loop")
-        except CircuitError as err:
-            lines.append(f"No loop Lagrangian: {err}")
-            return None
-    L = out.run("Loop Lagrangian", loop_lagrangian)
-    if L is None:
-        return
-    if out.want('lagrangian'):
-        def lagrangian(lines):
-            lines.append("Lagrangian (loop-current method):")
-            _formula(lines, "L = ", L.expr())
-        out.run("Lagrangian", lagrangian)
-    if out.want('equations'):
-        out.run("Lagrange equations", lambda lines: _lagrangian_equations(L, lines, out))
-    if out.want('stability'):
-        out.run("Stability of the free circuit",
-                lambda lines: _linear_circuit_stability(circuit, L, lines, out))
-
-
-def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
+def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None):
     r"""
     A text report of ``model`` (see the module documentation).
 
     INPUT:
 
-    - ``model`` -- a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`
-      or a :class:`~sage_dynsym.circuits.circuit.Circuit`
+    - ``model`` -- a model of any kind (a
+      :class:`~sage_dynsym.dynamics.model.Model`)
     - ``sections`` -- (default: all) the keys of :data:`SECTIONS` to print
       (the sections that do not apply to the model are ignored)
     - ``budget`` -- (default: :data:`DEFAULT_BUDGET`) the size budget of
       each section, in polynomial terms
     - ``analysis`` -- (default: ``True``) whether to include the analysis
       sections (:data:`ANALYSIS_SECTIONS`)
+    - ``failed`` -- (optional) a list: the titles of the sections that
+      failed on an error that is not the package's own (``section failed:
+      ...``) are appended to it (the command line's exit status 3)
 
     OUTPUT: a string
 
@@ -636,7 +113,7 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
         sage: report(42)
         Traceback (most recent call last):
         ...
-        DynSymError: cannot report on Integer: expected a model (a mechanical system or a circuit)
+        DynSymError: cannot report on Integer: expected a model (a mechanical system, a circuit, a Lie-Poisson system, ...)
         sage: report(C, sections=['colour'])
         Traceback (most recent call last):
         ...
@@ -649,19 +126,11 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True):
                               f"{', '.join(SECTIONS)}")
     if not analysis:
         wanted = [key for key in wanted if key not in ANALYSIS_SECTIONS]
-    out = _Report(wanted, budget)
-    renderer = _RENDERERS.get(getattr(model, 'kind', None))
-    if renderer is None:
+    budget = count(budget, 'budget', error=DynSymError)
+    if failed is not None and not isinstance(failed, list):
+        raise DynSymError(f"failed must be a list, got {failed!r}")
+    if not isinstance(model, Model):
         raise DynSymError(f"cannot report on {type(model).__name__}: expected a model "
-                          "(a mechanical system or a circuit)")
-    renderer(model, out)
-    return "\n".join(out.lines)
-
-
-def _lie_poisson(system, out):
-    from ..lie.description import lie_report
-    out.lines.extend(lie_report(system, sections=out.wanted).split("\n"))
-
-
-#: How each kind of model is reported (by :attr:`~sage_dynsym.dynamics.model.Model.kind`).
-_RENDERERS = {'mechanical': _mechanical, 'circuit': _circuit, 'lie_poisson': _lie_poisson}
+                          "(a mechanical system, a circuit, a Lie-Poisson system, ...)")
+    return run_sections(model.report_title(), model.report_sections(), wanted=wanted,
+                        budget=budget, analysis=analysis, failed=failed)

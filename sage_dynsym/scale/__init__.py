@@ -24,7 +24,7 @@ The names are imported on first use: the command line
 import importlib
 
 _SOURCE = {'stability_map': '.maps', 'StabilityMap': '.maps', 'model_linear_system': '.maps',
-           'sweep': '.sweep', 'Sweep': '.sweep'}
+           'sweep': '.sweep', 'Sweep': '.sweep', 'stability_class': '.kernel'}
 
 __all__ = list(_SOURCE)
 

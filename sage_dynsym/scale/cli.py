@@ -9,7 +9,11 @@ writes it as a picture (``PREFIX.png``) and as arrays (``PREFIX.npz``, see
 :meth:`~sage_dynsym.scale.maps.StabilityMap.save`). The region of the
 Liénard--Chipart conditions of the characteristic polynomial is drawn over
 the map when they can be derived, and their agreement with the map is
-printed.
+printed; so are the shares of the three classes of the map (asymptotically
+stable, stable in first approximation, unstable: see
+:meth:`~sage_dynsym.scale.maps.StabilityMap.classes`) and, where the exact
+classes can be derived from the characteristic polynomial, the agreement
+of each class with them (off the boundaries).
 
 Options:
 
@@ -19,7 +23,11 @@ Options:
   the system needs a value);
 - ``--at NAME=NUMBER`` -- the point of linearization (state variables or
   coordinates; default 0);
-- ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid;
+- ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid
+  (``S`` a non-negative integer);
+- ``--max-points N`` -- the most points (default
+  :data:`~sage_dynsym.scale.points.MAX_POINTS`), checked before anything
+  is loaded or computed;
 - ``--method auto|polynomial|eigvals``;
 - ``--scheduler ADDRESS`` -- a Dask scheduler to use (default: this
   process, or a local cluster when the work is estimated to take longer
@@ -29,10 +37,14 @@ Options:
   scheduler;
 - ``--progress`` -- Dask's progress bar;
 - ``-o PREFIX`` -- the output files (default: the file's name with
-  ``_map``, in the current directory); existing files are replaced only
-  with ``--force``.
+  ``_map``, in the current directory); the folder must exist (checked
+  first); existing files are replaced only with ``--force``.
 
-Errors are one line on standard error and exit status 1.
+Errors are one line on standard error naming the file and the option or
+the entry of the description, and exit status 1 (2 for a malformed command
+line, with argparse's usage message). A symbol given twice to ``--value``
+or ``--at``, a ``--at`` that names no state variable or coordinate of the
+model, a value breaking the model's declared signs are errors.
 
 EXAMPLES::
 
@@ -45,17 +57,29 @@ EXAMPLES::
     ....:       '--numpy', '-o', prefix])
     RLC ladder with three sections: stability map of 31 x 31 points in (R1, R2): 66.6% asymptotically stable (method: polynomial)
     Lienard-Chipart conditions: agree at 100.0% of the points
+    classes: 66.6% asymptotically stable, 0.0% stable in first approximation, 33.4% unstable
+    exact classes: agree at 100.0% (asymptotically stable), 100.0% (unstable)
     wrote ....png, ....npz
     0
     sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:0', '--numpy'])
-    sage-dynsym: error: parameters[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
+    sage-dynsym: error: ...rlc_ladder.yaml: parameters[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
+    1
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:100000', '--param',
+    ....:       'R2=0:1:100000', '--numpy'])
+    sage-dynsym: error: ...rlc_ladder.yaml: --param: 10000000000 points are more than --max-points 10000000
+    1
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:3', '--numpy', '-o',
+    ....:       '/no/such/dir/out'])
+    sage-dynsym: error: ...rlc_ladder.yaml: -o: the folder /no/such/dir does not exist
     1
 """
 import argparse
+import math
 import os
 import sys
 
 # the Sage-free part of the package: --help and argument errors answer at once
+from ..arguments import count_option
 from .cluster import CLUSTER_THRESHOLD
 
 
@@ -96,16 +120,6 @@ def _value(text):
     return name, _number(value)
 
 
-def _positive_int(text):
-    try:
-        value = int(text)
-    except ValueError:
-        value = 0
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"expected a positive integer, got {text!r}")
-    return value
-
-
 def parser():
     r"""The argument parser of ``sage-dynsym map``.
 
@@ -115,6 +129,8 @@ def parser():
         sage: parser().parse_args(['f.yaml', '--param', 'R=0:5:400', '--value', 'g=0.5']).param
         [('R', (0.0, 5.0, 400))]
     """
+    from .points import MAX_POINTS
+    from .cluster import MAX_WORKERS
     p = argparse.ArgumentParser(
         prog="sage-dynsym map",
         description="Stability map of the model of a description file over a grid of "
@@ -130,9 +146,12 @@ def parser():
                    help="the value of another symbol")
     p.add_argument("--at", type=_value, action="append", default=[], metavar="NAME=NUMBER",
                    help="the point of linearization (default: 0)")
-    p.add_argument("--samples", type=_positive_int, metavar="N",
+    p.add_argument("--samples", type=count_option, metavar="N",
                    help="N random points instead of the grid")
-    p.add_argument("--seed", type=int, default=0, help="seed of the random points")
+    p.add_argument("--seed", type=lambda text: count_option(text, minimum=0), default=0,
+                   help="seed of the random points (a non-negative integer)")
+    p.add_argument("--max-points", type=count_option, default=MAX_POINTS, metavar="N",
+                   help=f"the most points (default: {MAX_POINTS})")
     p.add_argument("--method", choices=("auto", "polynomial", "eigvals"), default="auto",
                    help="roots of the compiled characteristic polynomial (polynomial), or "
                         "eigenvalues of the compiled matrices (eigvals); auto: polynomial "
@@ -144,9 +163,9 @@ def parser():
                        help="always start a local Dask cluster (default: only when the "
                             "work is estimated to take longer than "
                             f"{CLUSTER_THRESHOLD} s in this process)")
-    p.add_argument("--workers", type=_positive_int, metavar="N",
-                   help="workers of the local cluster (default: one per core)")
-    p.add_argument("--timeout", type=_positive_int, default=10, metavar="S",
+    p.add_argument("--workers", type=lambda text: count_option(text, maximum=MAX_WORKERS),
+                   metavar="N", help="workers of the local cluster (default: one per core)")
+    p.add_argument("--timeout", type=count_option, default=10, metavar="S",
                    help="seconds to reach the scheduler (default: 10)")
     p.add_argument("--progress", action="store_true", help="show Dask's progress bar")
     p.add_argument("-o", "--output", metavar="PREFIX", help="output files PREFIX.png, PREFIX.npz "
@@ -172,7 +191,7 @@ def main(argv=None):
         sage: from sage_dynsym.scale.cli import main
         sage: from sage_dynsym.description import example_path
         sage: main([example_path('rlc_ladder.yaml'), '--param', 'X=0:1:3', '--numpy'])
-        sage-dynsym: error: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
+        sage-dynsym: error: ...rlc_ladder.yaml: stability_map: unknown parameter X: the symbols of the system are C1, C2, C3, L1, L2, L3, R1, R2, R3, R4
         1
     """
     args = parser().parse_args(argv)
@@ -180,7 +199,7 @@ def main(argv=None):
     try:
         return _run(args)
     except DynSymError as err:
-        message = str(err)
+        message = str(_located(err, args.file))
     except KeyboardInterrupt:
         print("sage-dynsym: interrupted", file=sys.stderr)
         return 130
@@ -190,25 +209,64 @@ def main(argv=None):
     return 1
 
 
+def _located(err, path):
+    r"""``err`` naming the file (its entry names the option or the entry of
+    the description)."""
+    return err if err.source else err.with_context(source=path)
+
+
+def _checked(args):
+    r"""The parameters and values of the command line, checked before the
+    model is loaded: no symbol twice, at most ``--max-points`` points, the
+    output folder."""
+    from ..errors import DescriptionError
+    for option, what, pairs in (('--param', 'parameter', args.param),
+                                ('--value', 'value', args.value), ('--at', 'point', args.at)):
+        names = [name for name, _ in pairs]
+        twice = sorted({n for n in names if names.count(n) > 1})
+        if twice:
+            raise DescriptionError(f"a {what} is given twice: {', '.join(twice)}", entry=option)
+    size = args.samples if args.samples is not None else math.prod(
+        r[2] for _, r in args.param if len(r) == 3)
+    if size > args.max_points:
+        raise DescriptionError(f"{size} points are more than --max-points {args.max_points}",
+                               entry="--samples" if args.samples is not None else "--param")
+    if args.output:
+        folder = os.path.dirname(args.output) or '.'
+        if not os.path.isdir(folder):
+            raise DescriptionError(f"the folder {folder} does not exist", entry="-o")
+
+
 def _run(args):
     from ..description import load
-    from ..errors import DescriptionError
+    from ..errors import DescriptionError, DynSymError
     from .maps import stability_map
+    _checked(args)
     model = load(args.file)
     parameters = dict(args.param)
-    if len(parameters) < len(args.param):
-        raise DescriptionError("a parameter is given twice", entry="--param")
     client = False if args.numpy else 'local' if args.cluster else (args.scheduler or None)
     S = stability_map(model, parameters, fixed=dict(args.value), client=client,
                       samples=args.samples, seed=args.seed, at=dict(args.at),
-                      method=args.method, conditions='lienard-chipart', workers=args.workers,
-                      timeout=args.timeout, progress=args.progress)
+                      method=args.method, conditions='lienard-chipart', classes='spectrum',
+                      workers=args.workers, timeout=args.timeout, progress=args.progress,
+                      max_points=args.max_points)
     name = model.name() if callable(getattr(model, 'name', None)) else None
     print(f"{name or args.file}: {str(S)[0].lower()}{str(S)[1:]} (method: {S.method()})")
     if S.conditions() is not None:
         print(f"Lienard-Chipart conditions: agree at {100 * S.agreement():.1f}% of the points")
     elif S.note():
         print(S.note())
+    shares = [100 * (S.classes() == k).mean() for k in (2, 1, 0)]
+    print("classes: {:.1f}% asymptotically stable, {:.1f}% stable in first approximation, "
+          "{:.1f}% unstable".format(*shares))
+    try:
+        agree = S.agreement(by_class=True)
+    except DynSymError:
+        agree = None
+    if agree is not None:
+        names = {2: 'asymptotically stable', 1: 'stable in first approximation', 0: 'unstable'}
+        print("exact classes: agree at " + ", ".join(
+            f"{100 * agree[k]:.1f}% ({names[k]})" for k in (2, 1, 0) if agree[k] == agree[k]))
     prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
     picture = len(parameters) <= 2 or not S.is_grid()
     outputs = [prefix + ".png"] * picture + [prefix + ".npz"]
@@ -217,11 +275,17 @@ def _run(args):
         raise DescriptionError(f"{', '.join(existing)} exists already: give --force to replace "
                                "it, or another -o PREFIX", entry="-o")
     written = []
-    if picture:
-        G = S.plot()
-        G.save(prefix + ".png", figsize=[8, 6])
-        written.append(prefix + ".png")
-    S.save(prefix + ".npz")
+    try:
+        if picture:
+            import numpy
+            with numpy.errstate(all='ignore'):     # huge axes overflow in region_plot
+                G = S.plot()
+            G.save(prefix + ".png", figsize=[8, 6])
+            written.append(prefix + ".png")
+        S.save(prefix + ".npz")
+    except OSError as err:
+        raise DescriptionError(f"cannot write {err.filename or prefix}: "
+                               f"{err.strerror or err}", entry="-o") from None
     written.append(prefix + ".npz")
     print("wrote " + ", ".join(written))
     return 0

@@ -54,8 +54,12 @@ import time
 import uuid
 
 from ..errors import AnalysisError
+from ..arguments import count, finite_real, is_integer
 
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
+#: Most worker processes of a local cluster (``workers=``): each is a
+#: Python process; far more than the cores only costs memory.
+MAX_WORKERS = 256
 
 #: Seconds of estimated work (at the pace of the first chunk, in this
 #: process) above which ``client=None`` starts a local cluster for the rest.
@@ -81,12 +85,12 @@ def chunks(total, size):
         Traceback (most recent call last):
         ...
         AnalysisError: scale: chunk_size must be a positive integer, got 0
+        sage: chunks(7, 2.5)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: scale: chunk_size must be a positive integer, got 2.50000000000000
     """
-    try:
-        ok = int(size) == size and size >= 1
-    except (TypeError, ValueError):
-        ok = False
-    if not ok:
+    if not (is_integer(size) and size >= 1):
         raise AnalysisError(f"chunk_size must be a positive integer, got {size!r}", entry="scale")
     size = int(size)
     return [(a, min(total, a + size)) for a in range(0, total, size)]
@@ -163,7 +167,14 @@ def connected(client='local', workers=None, timeout=DEFAULT_TIMEOUT):
         Traceback (most recent call last):
         ...
         AnalysisError: scale: client must be None (chosen by the cost), 'local' (a local cluster), False (no Dask), a Dask Client or a scheduler address, got 42
+        sage: with connected(workers=10^5): pass
+        Traceback (most recent call last):
+        ...
+        AnalysisError: workers: 100000 is more than the limit of 256
     """
+    finite_real(timeout, 'timeout', error=AnalysisError, minimum=0, strict=True)
+    if workers is not None:
+        count(workers, 'workers', maximum=MAX_WORKERS, error=AnalysisError)
     distributed = _dask()
     if isinstance(client, distributed.Client):
         if client.status not in ('running', 'connecting', 'newly-created'):
@@ -186,8 +197,6 @@ def connected(client='local', workers=None, timeout=DEFAULT_TIMEOUT):
                             "cluster), False (no Dask), a Dask Client or a scheduler "
                             f"address, got {client!r}", entry="scale")
     n = machine_cores() if workers is None else int(workers)
-    if n < 1:
-        raise AnalysisError(f"workers must be a positive integer, got {workers!r}", entry="scale")
     with local_cluster(n) as cluster, distributed.Client(cluster, set_as_default=False) as c:
         _wait_for_workers(c, LOCAL_START_TIMEOUT, "the local cluster", n)
         yield c
@@ -221,9 +230,11 @@ def local_cluster(workers):
               'options': {'worker_class': 'distributed.Worker',
                           'worker_kwargs': {'nthreads': 1, 'host': '127.0.0.1',
                                             'silence_logs': quiet}}}
+    # no dashboard; the scheduler's other HTTP endpoints on a free port of
+    # 127.0.0.1 (a fixed port may be taken by another cluster)
     scheduler = {'cls': Scheduler,
                  'options': {'host': '127.0.0.1', 'dashboard': False,
-                             'dashboard_address': None}}
+                             'dashboard_address': '127.0.0.1:0'}}
     return SpecCluster(scheduler=scheduler, workers={i: worker for i in range(workers)},
                        worker=worker, silence_logs=quiet, name='sage_dynsym')
 
@@ -279,6 +290,10 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
 
     See also :func:`~sage_dynsym.scale.maps.stability_map`.
     """
+    # the arguments checked before any chunk runs
+    finite_real(timeout, 'timeout', error=AnalysisError, minimum=0, strict=True)
+    if workers is not None:
+        count(workers, 'workers', maximum=MAX_WORKERS, error=AnalysisError)
     first = 0
     if client is None and workers is None:
         if not ranges:

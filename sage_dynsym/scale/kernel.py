@@ -387,19 +387,78 @@ def _singular_pencil(J, B):
 # chunk functions (the Dask tasks)
 # ---------------------------------------------------------------------------
 
+def classify(alpha, rho, tol, marginal_tol):
+    r"""
+    The stability class of each point from the largest real part
+    ``alpha`` and the largest modulus ``rho`` of its characteristic roots:
+    ``2`` asymptotically stable (`\alpha < -\mathrm{tol}\,\rho`), ``1``
+    stable in first approximation (`|\alpha|` within the tolerances: the
+    roots of largest real part on the imaginary axis), ``0`` unstable
+    (`\alpha > \mathrm{marginal\_tol}\,\rho`), ``-1`` where the system is
+    not defined (``nan``).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.kernel import classify
+        sage: import numpy as np
+        sage: classify(np.array([-1., 0., 1e-12, 0.5, np.nan]), np.ones(5), 1e-9, 1e-7)
+        array([ 2,  1,  1,  0, -1], dtype=int8)
+    """
+    classes = np.full(np.shape(alpha), -1, dtype=np.int8)
+    with np.errstate(invalid='ignore'):
+        classes[alpha > marginal_tol * rho] = 0
+        classes[(alpha >= -tol * rho) & (alpha <= marginal_tol * rho)] = 1
+        classes[alpha < -tol * rho] = 2
+    return classes
+
+
+def stability_class(roots, tol=1e-9, marginal_tol=1e-7):
+    r"""
+    The stability class of one set of characteristic roots (or of the
+    eigenvalues of a square matrix): ``2`` asymptotically stable, ``1``
+    stable in first approximation, ``0`` unstable (see :func:`classify`);
+    for the functions of a :func:`~sage_dynsym.scale.sweep.sweep`.
+
+    INPUT:
+
+    - ``roots`` -- a 1-D array of complex numbers, or a square matrix
+      (2-D array) whose eigenvalues are taken
+    - ``tol``, ``marginal_tol`` -- the tolerances, relative to the largest
+      modulus
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.kernel import stability_class
+        sage: import numpy as np
+        sage: stability_class([-1, -2 + 1j, -2 - 1j]), stability_class(np.array([[0, 1], [-1, 0]]))
+        (2, 1)
+        sage: stability_class([0.1, -3])
+        0
+    """
+    roots = np.asarray(roots)
+    if roots.ndim == 2:
+        roots = np.linalg.eigvals(roots.astype(float))
+    roots = roots.astype(complex)
+    if not len(roots):
+        return 2
+    alpha, rho = roots.real.max(), np.abs(roots).max()
+    return int(classify(np.array([alpha]), np.array([rho]), tol, marginal_tol)[0])
+
+
 def map_chunk(task, start, stop):
     r"""
-    The largest real part of the characteristic roots and the verdict at
-    the points ``start .. stop - 1`` of a stability map.
+    The largest real part of the characteristic roots, the verdict and the
+    stability class at the points ``start .. stop - 1`` of a stability map.
 
     ``task`` is a dict: ``points`` (a point specification), ``method``
     (``'polynomial'`` or ``'eigvals'``), ``program`` (the coefficients of
     the characteristic polynomial, highest degree first; or the entries of
     `J` then of `B`, row by row), ``size`` (the order `k` of the pencil),
-    ``lhs`` (whether `B` is given) and ``tol``. A point is asymptotically
-    stable when ``alpha < -tol * rho``.
+    ``lhs`` (whether `B` is given), ``tol`` and ``marginal_tol`` (default
+    `10^{-7}`). A point is asymptotically stable when ``alpha < -tol *
+    rho``; its class is that of :func:`classify`.
 
-    OUTPUT: ``(alpha, stable)``, arrays of length ``stop - start``
+    OUTPUT: ``(alpha, stable, classes)``, arrays of length ``stop - start``
 
     EXAMPLES: `\lambda^2 + c\lambda + 1` for `c = -1, 0, 1`::
 
@@ -407,9 +466,10 @@ def map_chunk(task, start, stop):
         sage: task = dict(points=('grid', [[-1., 0., 1.]]), method='polynomial', tol=1e-9,
         ....:             program=([('input', 0), ('const', 1.0)], [1, 0, 1], [[], []]))
         sage: map_chunk(task, 0, 3)
-        (array([ 0.5,  0. , -0.5]), array([False, False,  True]))
+        (array([ 0.5,  0. , -0.5]), array([False, False,  True]), array([0, 1, 2], dtype=int8))
     """
     alpha = np.empty(stop - start)
+    rho = np.empty(stop - start)
     stable = np.empty(stop - start, dtype=bool)
     for a in range(start, stop, BATCH):
         b = min(stop, a + BATCH)
@@ -421,10 +481,10 @@ def map_chunk(task, start, stop):
             J = np.stack(values[:k * k], axis=1).reshape(b - a, k, k)
             B = np.stack(values[k * k:], axis=1).reshape(b - a, k, k) if task['lhs'] else None
             al, rh = pencil_abscissa(J, B)
-        alpha[a - start:b - start] = al
+        alpha[a - start:b - start], rho[a - start:b - start] = al, rh
         with np.errstate(invalid='ignore'):
             stable[a - start:b - start] = al < -task['tol'] * rh
-    return alpha, stable
+    return alpha, stable, classify(alpha, rho, task['tol'], task.get('marginal_tol', 1e-7))
 
 
 def sweep_chunk(task, start, stop):

@@ -15,7 +15,13 @@ At each point the map holds the largest real part `\alpha` of the
 characteristic roots and the verdict *asymptotically stable in the first
 approximation*, `\alpha < -\mathrm{tol}\cdot\rho` with `\rho` the largest
 modulus of the roots (default ``tol = 1e-9``): rounding errors do not make
-a critical point (`\alpha = 0`) stable. Two methods compute `\alpha`:
+a critical point (`\alpha = 0`) stable. Its *class*
+(:meth:`StabilityMap.classes`) also tells the points stable in first
+approximation -- the roots of largest real part on the imaginary axis,
+`-\mathrm{tol}\cdot\rho \le \alpha \le \mathrm{marginal\_tol}\cdot\rho`
+(default `10^{-7}`): conservative and gyroscopic systems, circulatory ones
+below flutter -- from the unstable ones: ``2``, ``1``, ``0``. Two methods
+compute `\alpha`:
 
 - ``'polynomial'`` (the default when the characteristic polynomial is
   available): its coefficients are compiled and its roots found by a
@@ -40,7 +46,7 @@ and `k`, without Dask (``client=False``)::
     sage: osc = linearize([y, -(c*y + k*x)/m], {x: 0, y: 0}, [x, y])
     sage: S = stability_map(osc, {c: (-1, 2, 31), k: (-1, 2, 31)}, fixed={m: 1}, client=False)
     sage: S
-    Stability map of 31 x 31 points in (c, k): 41.6% asymptotically stable
+    Stability map of 31 x 31 points in (c, k): 41.6% asymptotically stable, 4.3% stable in first approximation
     sage: S.axes()[c][:3], S.max_real_part().shape
     (array([-1. , -0.9, -0.8]), (31, 31))
 
@@ -51,15 +57,35 @@ included::
     sage: S.agreement([c > 0, k > 0])
     1.0
     sage: G = S.plot([c > 0, k > 0]); G
-    Graphics object consisting of 5 graphics primitives
+    Graphics object consisting of 6 graphics primitives
 
 The picture has a legend naming the colours and the exact boundary, and a
 title with the fixed values::
 
     sage: sorted(p.options()['legend_label'] for p in G if p.options().get('legend_label'))
-    ['asymptotically stable', 'exact boundary', 'unstable']
+    ['asymptotically stable', 'exact boundary', 'stable in first approximation', 'unstable']
     sage: G._extra_kwds['title']
     'stability map\n$m = 1$'
+
+(on the lines `c = 0` and `k = 0` the roots of largest real part are on
+the imaginary axis: those points are stable in first approximation.)
+
+An undamped circulatory system, `\ddot x + x + py = 0`, `\ddot y + ky -
+px = 0`, mapped in three classes: stable in first approximation (class
+``1``) inside its flutter and divergence boundaries; the exact classes come
+from the characteristic polynomial
+(:func:`~sage_dynsym.analysis.spectrum.spectrum_regions`), and off a band
+of one grid step along the boundaries the map agrees with them::
+
+    sage: from sage_dynsym.analysis.linear import LinearSystem
+    sage: p = var('p')
+    sage: W = matrix([[1, p], [-p, k]])
+    sage: C = stability_map(LinearSystem([x, y], M=identity_matrix(2), S=zero_matrix(2), W=W),
+    ....:                   {k: (-1, 3, 41), p: (-1, 1, 41)}, client=False, classes='spectrum')
+    sage: C
+    Stability map of 41 x 41 points in (k, p): 0.0% asymptotically stable, 35.7% stable in first approximation
+    sage: C.agreement(by_class=True, band=1)
+    {0: 1.0, 1: 1.0, 2: nan}
 
 The same map on a Dask cluster (here a local one, started and closed for
 the computation) is identical::
@@ -82,10 +108,12 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
+from ..arguments import known_symbols
+from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
-from .points import parse_points
+from .points import parse_points, check_positive_ranges, MAX_POINTS
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
@@ -93,8 +121,8 @@ MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
 
 def stability_map(system, parameters, fixed=None, client=None, samples=None, *, at=None,
                   variables=None, lhs_matrix=None, seed=0, method='auto', tol=1e-9,
-                  conditions=None, chunk_size=CHUNK, workers=None, timeout=DEFAULT_TIMEOUT,
-                  progress=False):
+                  marginal_tol=1e-7, conditions=None, classes=None, chunk_size=CHUNK,
+                  workers=None, timeout=DEFAULT_TIMEOUT, progress=False, max_points=MAX_POINTS):
     r"""
     The stability map of a linear system over a grid (or random samples)
     of parameter values.
@@ -125,15 +153,30 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
       (see the module documentation)
     - ``tol`` -- the stability margin relative to the largest modulus of
       the roots
+    - ``marginal_tol`` -- (default: `10^{-7}`) how far to the right of the
+      imaginary axis, relative to the largest modulus, the roots of a point
+      of class ``1`` (stable in first approximation) may be computed
     - ``conditions`` -- (optional) the exact stability conditions (see
       :meth:`StabilityMap.exact`), drawn by :meth:`StabilityMap.plot`; or
       ``'lienard-chipart'`` to derive them from the characteristic
       polynomial with :func:`~sage_dynsym.analysis.hurwitz.lienard_chipart_conditions`
+    - ``classes`` -- (optional) the exact regions of the classes (see
+      :meth:`StabilityMap.exact_classes`): a dict ``{2: region, 1:
+      region}``, a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`,
+      or ``'spectrum'`` to derive them from the characteristic polynomial
+      with :func:`~sage_dynsym.analysis.spectrum.spectrum_regions`
     - ``chunk_size`` -- points per Dask task
     - ``workers`` -- the number of workers of the local cluster (default:
       one per core; giving it with ``client=None`` asks for a local cluster)
     - ``timeout`` -- seconds to reach a scheduler and get a worker
     - ``progress`` -- show Dask's progress bar
+    - ``max_points`` -- (default: :data:`~sage_dynsym.scale.points.MAX_POINTS`)
+      the most points, checked before anything is computed
+
+    For a model, the values must respect its declared signs: a parameter
+    declared positive gets a positive value in ``fixed`` and a range of
+    positive values; ``at`` names its state variables (a circuit) or
+    coordinates (a mechanical system).
 
     OUTPUT: a :class:`StabilityMap`
 
@@ -175,6 +218,29 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         Traceback (most recent call last):
         ...
         AnalysisError: stability_map: expected a linear system (from linearize), or what linearize accepts with at=, or a circuit or mechanical model, got x
+        sage: stability_map([y, -a*x - b*y], {a: (0, 1, 10^5), b: (0, 1, 10^5)}, at={x: 0, y: 0},
+        ....:               variables=[x, y], client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: 10000000000 points are more than the limit of 10000000; raise it with max_points= if that is what you want
+
+    A model's declared signs and state variables::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], positive=['L1', 'C1'])
+        sage: stability_map(C, {'R1': (-1, 1, 3)}, fixed={'L1': -1, 'C1': 1}, client=False)
+        Traceback (most recent call last):
+        ...
+        ModelError: fixed: L1 is declared positive, got -1
+        sage: stability_map(C, {'L1': (-1, 1, 3)}, fixed={'R1': 1, 'C1': 1}, client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[L1]: L1 is declared positive: its values must be positive, got the range (-1.0, 1.0, 3)
+        sage: stability_map(C, {'R1': (0, 1, 3)}, fixed={'L1': 1, 'C1': 1}, at={'zz': 1},
+        ....:               client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: zz is not a state variable of the model; the state variables are i1, u2
     """
     entry = "stability_map"
     if method not in ('auto', 'polynomial', 'eigvals'):
@@ -188,6 +254,13 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         raise AnalysisError("tol must be a non-negative number", entry=entry)
     if not isinstance(parameters, dict) or not parameters:
         parse_points(parameters)            # the error for a missing or malformed dict
+    for name, value in (('fixed', fixed), ('at', at)):
+        if not isinstance(value, (dict, type(None))):
+            raise AnalysisError(f"{name}= must be a dict, got {value!r}", entry=entry)
+    if _is_model(system):       # the model's declared signs, before any work
+        check_model_values(system, dict(fixed or {}), entry="fixed")
+        check_positive_ranges(parse_points(parameters, samples, seed, max_points=max_points),
+                              system.positive_parameters())
     linear = _linear_system(system, at, variables, lhs_matrix)
     symbols = _symbols(linear)
     names = {str(s): s for s in symbols}
@@ -200,7 +273,8 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         if key in keys:
             raise AnalysisError(f"{key} is both a parameter and fixed", entry=entry)
         values[key] = _exact_number(v, f"fixed[{k}]")
-    points = parse_points(dict(zip(keys, parameters.values())), samples, seed)
+    points = parse_points(dict(zip(keys, parameters.values())), samples, seed,
+                          max_points=max_points)
     fixed_system = _substitute(linear, values)
     missing = sorted(set(_symbols(fixed_system)) - set(keys), key=str)
     if missing:
@@ -221,23 +295,39 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         lhs = B != identity_matrix(SR, B.nrows())
         task = dict(method='eigvals', size=J.nrows(), lhs=lhs,
                     program=compile_expressions(J.list() + (B.list() if lhs else []), keys, entry))
-    task.update(points=points.layout, tol=tol)
+    try:
+        marginal_tol = float(marginal_tol)
+    except (TypeError, ValueError):
+        marginal_tol = -1.0
+    if not marginal_tol >= 0:
+        raise AnalysisError("marginal_tol must be a non-negative number", entry=entry)
+    task.update(points=points.layout, tol=tol, marginal_tol=marginal_tol)
     alpha = np.empty(points.size)
     stable = np.empty(points.size, dtype=bool)
+    kinds = np.empty(points.size, dtype=np.int8)
 
     def collect(i, result):
         a, b = ranges[i]
-        alpha[a:b], stable[a:b] = result
+        alpha[a:b], stable[a:b], kinds[a:b] = result
 
     ranges = chunks(points.size, chunk_size)
     run_chunks(map_chunk, task, ranges, collect, client=client, workers=workers,
                timeout=timeout, progress=progress, label='stability-map')
     if conditions == 'lienard-chipart':
         conditions, note = _lienard_chipart(poly, lam, note)
+    if isinstance(classes, str):
+        if classes != 'spectrum':
+            raise AnalysisError(f"classes must be 'spectrum', a dict or a verdict, got "
+                                f"{classes!r}", entry=entry)
+        if poly is None:
+            poly, _ = _characteristic_polynomial(fixed_system, lam, True)
+        classes, note = _spectrum_classes(poly, lam, fixed_system, note)
     name = system.name() if _is_model(system) and callable(getattr(system, 'name', None)) \
         else None
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
-                        values, method, tol, conditions, note, name)
+                        values, method, tol, conditions, note, name,
+                        classes=kinds.reshape(points.shape), exact_classes=classes,
+                        marginal_tol=marginal_tol)
 
 
 # ---------------------------------------------------------------------------
@@ -325,6 +415,7 @@ def model_linear_system(model, at=None):
             pairs = None
         if pairs is not None and (hasattr(model, 'lhs_matrix') or not model.couplings()):
             xs = [s for s, _ in pairs]
+            known_symbols(list(at), xs, 'at', error=AnalysisError, what="state variable")
             if hasattr(model, 'lhs_matrix'):
                 B = matrix(SR, model.lhs_matrix()).subs(sources)
             else:
@@ -336,6 +427,7 @@ def model_linear_system(model, at=None):
         L = model.lagrangian().subs(sources) if sources else model.lagrangian()
     else:
         L = model.lagrangian()
+    known_symbols(list(at), L.coordinates(), 'at', error=AnalysisError, what="coordinate")
     point = {q: SR(0) for q in L.coordinates()}
     point.update(at)
     return linearize(L, point)
@@ -476,9 +568,31 @@ def _lienard_chipart(poly, lam, note):
         return None, f"no Lienard-Chipart conditions ({err})"
 
 
+def _spectrum_classes(poly, lam, linear, note):
+    r"""The exact regions of the classes from the characteristic polynomial."""
+    from ..analysis.spectrum import spectrum_regions
+    try:
+        try:
+            S = spectrum_regions(poly, lam)
+        except AnalysisError as err:
+            if 'state matrix' not in str(err):
+                raise
+            J, B = _pencil(linear)      # roots on the axis for all values: semisimple?
+            S = spectrum_regions(poly, lam, matrix=B.inverse() * J)
+    except (DynSymError, ArithmeticError, ValueError, TypeError, ZeroDivisionError) as err:
+        return None, f"no exact classes ({err})"
+    return {2: S.asymptotic() or [], 1: (S.marginal() or []) + (S.undecided() or [])}, note
+
+
 # ---------------------------------------------------------------------------
 # the result
 # ---------------------------------------------------------------------------
+
+#: Colours of the classes (2, 1, 0) and of the points where the system is
+#: not defined, and their names.
+CLASS_COLOURS = {2: '#b6e3b6', 1: '#9fc5e8', 0: '#f4cccc', -1: '#dddddd'}
+CLASS_NAMES = {2: 'asymptotically stable', 1: 'stable in first approximation', 0: 'unstable',
+               -1: 'not defined'}
 
 class StabilityMap(SageObject):
     r"""
@@ -493,17 +607,23 @@ class StabilityMap(SageObject):
     """
 
     def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None,
-                 name=None):
+                 name=None, classes=None, exact_classes=None, marginal_tol=1e-7):
         self._points, self._alpha, self._stable = points, alpha, stable
         self._fixed, self._method, self._tol = dict(fixed), method, tol
         self._conditions, self._note, self._name = conditions, note, name
+        self._classes = classes
+        self._exact_classes, self._marginal_tol = exact_classes, marginal_tol
 
     def _repr_(self):
         names = ', '.join(map(str, self._points.keys))
         share = 100 * self._stable.mean() if self._stable.size else 0
         where = (' x '.join(map(str, self._points.shape)) + " points" if self._points.is_grid()
                  else f"{self._points.size} random points")
-        return f"Stability map of {where} in ({names}): {share:.1f}% asymptotically stable"
+        text = f"Stability map of {where} in ({names}): {share:.1f}% asymptotically stable"
+        marginal = (self.classes() == 1).mean() if self._stable.size else 0
+        if marginal:
+            text += f", {100 * marginal:.1f}% stable in first approximation"
+        return text
 
     def parameters(self):
         r"""The parameters (symbols), in the order of the array indices.
@@ -583,6 +703,85 @@ class StabilityMap(SageObject):
             array([ True, False, False])
         """
         return self._stable
+
+    def classes(self):
+        r"""
+        The class of each point, an integer array: ``2`` asymptotically
+        stable (where :meth:`stable` is true), ``1`` stable in first
+        approximation (the roots of largest real part on the imaginary
+        axis, within the tolerances), ``0`` unstable, ``-1`` where the
+        system is not defined.
+
+        EXAMPLES: `\dot x = y`, `\dot y = -x - cy` for `c = -1, 0, 1`::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: c = var('c')
+            sage: S = stability_map(LinearSystem([var('x'), var('y')], J=[[0, 1], [-1, -c]]),
+            ....:                   {c: (-1, 1, 3)}, client=False)
+            sage: S.classes(), S.stable()
+            (array([0, 1, 2], dtype=int8), array([False, False,  True]))
+        """
+        if self._classes is None:       # a map made without them: from the verdict alone
+            return np.where(self._stable, 2, np.where(np.isfinite(self._alpha),
+                                                      np.where(self._alpha > 0, 0, 1), -1)
+                            ).astype(np.int8)
+        return self._classes
+
+    def exact_classes(self, regions=None):
+        r"""
+        The classes of exact conditions at the points of the map (an
+        integer array of the map's shape, ``2``, ``1``, ``0`` as in
+        :meth:`classes`; ``-1`` on a boundary: where an expression of the
+        regions' relations vanishes, to `10^{-9}` of its largest value on
+        the map).
+
+        INPUT: ``regions`` -- (default: those of the map) a dict ``{2:
+        region, 1: region}`` (each region a list of alternatives, as for
+        :meth:`exact`), or a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+        (its cases: asymptotically stable is ``2``; stable, stable in first
+        approximation and undecided ``1``; unstable ``0``)
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: from sage_dynsym.scale import stability_map
+            sage: c = var('c')
+            sage: S = stability_map(LinearSystem([var('x'), var('y')], J=[[0, 1], [-1, -c]]),
+            ....:                   {c: (-1, 1, 5)}, client=False)
+            sage: S.exact_classes({2: [[c > 0]], 1: [[c == 0]]})
+            array([ 0,  0, -1,  2,  2], dtype=int8)
+        """
+        regions = self._exact_classes if regions is None else regions
+        if regions is None:
+            raise AnalysisError("no exact classes: give them (a dict {2: region, 1: region} "
+                                "or a stability verdict), or map with classes='spectrum'",
+                                entry="StabilityMap")
+        regions = _class_regions(regions)
+        result = np.zeros(self._points.shape, dtype=np.int8)
+        for k in (1, 2):
+            if regions.get(k):
+                result[self.exact(regions[k])] = k
+        relations = [r for k in (1, 2) for alt in regions.get(k, []) for r in alt]
+        if relations:
+            values = self._values([SR(r.lhs() - r.rhs()).subs(self._fixed) for r in relations])
+            for f in values:
+                with np.errstate(invalid='ignore'):
+                    scale = 1 + np.nanmax(np.abs(f)) if np.isfinite(f).any() else 1
+                    result[np.abs(f) <= 1e-9 * scale] = -1
+        return result
+
+    def _values(self, expressions):
+        r"""The values of expressions of the parameters at the points (arrays
+        of the map's shape)."""
+        program = compile_expressions(expressions, self._points.keys,
+                                      entry="StabilityMap.exact_classes")
+        out = [np.empty(self._points.size) for _ in expressions]
+        for a, b in chunks(self._points.size, CHUNK):
+            for o, v in zip(out, run_program(program, chunk_points(self._points.layout, a, b),
+                                             b - a)):
+                o[a:b] = v
+        return [o.reshape(self._points.shape) for o in out]
 
     def fixed(self):
         r"""The values of the other symbols, a dict.
@@ -678,18 +877,24 @@ class StabilityMap(SageObject):
                                  b - a)
         return result.reshape(self._points.shape)
 
-    def agreement(self, conditions=None, band=0):
+    def agreement(self, conditions=None, band=0, by_class=False):
         r"""
         The share of the points where the numerical verdict agrees with
         exact conditions (see :meth:`exact`), among the points where the
-        system is defined.
+        system is defined; with ``by_class=True``, for each class of
+        :meth:`classes`, the share of the points of that exact class
+        (:meth:`exact_classes`) where the map has the same class.
 
         INPUT:
 
-        - ``conditions`` -- as for :meth:`exact`
+        - ``conditions`` -- as for :meth:`exact`; with ``by_class``, as for
+          :meth:`exact_classes`
         - ``band`` -- (default: 0) for a grid, leave out the points within
           ``band`` grid steps (along every axis) of a point where the exact
-          verdict changes: a band of that width along the boundary
+          verdict (or class) changes: a band of that width along the
+          boundary
+        - ``by_class`` -- (default: ``False``) per class: a dict ``{0: share,
+          1: share, 2: share}`` (``nan`` for a class with no point)
 
         EXAMPLES: `\dot x = (a - b^2) x` is stable for `a < b^2`::
 
@@ -702,7 +907,24 @@ class StabilityMap(SageObject):
             (1.0, 0.75...)
             sage: S.agreement([b - a], band=20)
             1.0
+
+        Per class, against the verdict of
+        :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`: an
+        oscillator `\ddot x + c\dot x + kx = 0`::
+
+            sage: from sage_dynsym.analysis import kelvin_chetaev
+            sage: c, k = var('c k')
+            sage: S = stability_map(LinearSystem([var('x')], M=[[1]], S=[[c]], W=[[k]]),
+            ....:                   {c: (-1, 1, 21), k: (-1, 1, 21)}, client=False)
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[c]]), matrix([[0]]), matrix([[k]]))
+            sage: S.agreement(v, by_class=True, band=1)
+            {0: 1.0, 1: nan, 2: 1.0}
+
+        (the exact verdict is stable, not asymptotically, only on the lines
+        `c = 0` and `k = 0`: no point of class ``1`` is off the band.)
         """
+        if by_class:
+            return self._class_agreement(conditions, band)
         exact = self.exact(conditions)
         considered = np.isfinite(self._alpha)
         if band:
@@ -714,11 +936,28 @@ class StabilityMap(SageObject):
             return float('nan')
         return float((exact == self._stable)[considered].mean())
 
+    def _class_agreement(self, regions, band):
+        exact = self.exact_classes(regions)
+        considered = np.isfinite(self._alpha) & (exact >= 0)
+        if band:
+            if not self._points.is_grid():
+                raise AnalysisError("band= needs a grid (the map has random samples)",
+                                    entry="StabilityMap.agreement")
+            for k in (0, 1, 2):
+                considered &= ~_near_change(exact == k, int(band))
+        found = {}
+        for k in (0, 1, 2):
+            inside = considered & (exact == k)
+            found[k] = float((self.classes()[inside] == k).mean()) if inside.any() \
+                else float('nan')
+        return found
+
     def plot(self, conditions=None, section=None, **options):
         r"""
-        The map: stable points green, unstable red, undefined grey, with the
-        boundary of the region of exact conditions (given here or to
-        :func:`stability_map`) drawn over it.
+        The map in its three classes, with a legend: asymptotically stable
+        points green, stable in first approximation blue, unstable red,
+        undefined grey; the boundary of the region of exact conditions
+        (given here or to :func:`stability_map`) drawn over it.
 
         INPUT:
 
@@ -739,7 +978,7 @@ class StabilityMap(SageObject):
             sage: S = stability_map(LinearSystem([var('x')], J=[[a + b + c]]),
             ....:                   {a: (-1, 1, 5), b: (-1, 1, 5), c: (-1, 1, 3)}, client=False)
             sage: S.plot([-a - b - c], section={c: 0.4})
-            Graphics object consisting of 5 graphics primitives
+            Graphics object consisting of 6 graphics primitives
             sage: S.plot()
             Traceback (most recent call last):
             ...
@@ -767,25 +1006,23 @@ class StabilityMap(SageObject):
             raise AnalysisError(f"a map of {len(keys)} parameters: give section={{...}} fixing "
                                 "all but two", entry="StabilityMap.plot")
         stable, alpha = stable[tuple(index)], alpha[tuple(index)]
+        kinds = self.classes()[tuple(index)]
         title = options.pop('title', None)
         G = Graphics()
         if len(free) == 1:
-            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, stable, options)
+            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, kinds, options)
             G.axes_labels([f"${latex(keys[free[0]])}$", r"max $\mathrm{Re}\,\lambda$"])
         else:
             # a frame with ticks, not axes through the origin
             options = dict(dict(frame=True, axes=False, ticks_integer=False), **options)
             plane = [keys[i] for i in free], [axes[i] for i in free]
-            G += self._plot_plane(*plane, alpha, stable, options)
+            G += _class_picture(*plane[1], kinds, options)
             boundary = Graphics() if conditions is None else \
                 _exact_boundary(conditions, fixed, *plane, options)
             G += boundary
-            G += _legend(plane[1], [(_COLOURS[2], 'asymptotically stable'),
-                                    (_COLOURS[0], 'unstable')] +
-                         ([(_COLOURS[1], 'not defined')] if not np.isfinite(alpha).all() else [])
+            G += _legend(plane[1], _class_entries(kinds)
                          + ([('black', 'exact boundary')] if boundary else []))
-            G.set_legend_options(loc='upper left', bbox_to_anchor=(1.02, 1), borderaxespad=0,
-                                 font_size='small')
+            G.set_legend_options(**_LEGEND)
             G.axes_labels([f"${latex(k)}$" for k in plane[0]])
         G._extra_kwds['title'] = self._title(fixed) if title is None else title
         G.set_aspect_ratio('automatic')
@@ -801,33 +1038,32 @@ class StabilityMap(SageObject):
                            sorted(fixed.items(), key=lambda kv: str(kv[0])))
         return f"{head}\n{values}"
 
-    def _plot_plane(self, keys, axes, alpha, stable, options):
-        from matplotlib.colors import ListedColormap
-        from sage.plot.matrix_plot import matrix_plot
-        data = np.where(np.isfinite(alpha), np.where(stable, 2.0, 0.0), 1.0)
-        X, Y = axes
-        return matrix_plot(data.T, xrange=_extent(X), yrange=_extent(Y), flip_y=False,
-                           cmap=ListedColormap(_COLOURS), vmin=0, vmax=2, **options)
-
-    def _plot_line(self, key, axis, alpha, stable, options):
+    def _plot_line(self, key, axis, alpha, kinds, options):
         from sage.plot.line import line
         from sage.plot.point import point
         G = line([(float(a), float(b)) for a, b in zip(axis, alpha) if np.isfinite(b)],
                  color='black', **options)
-        G += point([(float(a), float(b)) for a, b, s in zip(axis, alpha, stable)
-                    if s and np.isfinite(b)], color='green', size=10)
+        for k in (2, 1):
+            chosen = [(float(a), float(b)) for a, b, c in zip(axis, alpha, kinds) if c == k]
+            if chosen:
+                G += point(chosen, color=_DARK[k], size=10, legend_label=CLASS_NAMES[k])
         return G
 
     def _plot_samples(self, keys, options):
+        from sage.plot.graphics import Graphics
         from sage.plot.point import point
         if len(keys) != 2:
             raise AnalysisError("a map of random samples is drawn in two parameters",
                                 entry="StabilityMap.plot")
         n = min(self._points.size, 20000)        # enough points to see the regions
         X, Y = chunk_points(self._points.layout, 0, n)
-        s = self._stable[:n]
-        G = point(list(zip(X[s], Y[s])), color='green', size=4, **options)
-        G += point(list(zip(X[~s], Y[~s])), color='red', size=4)
+        kinds = self.classes()[:n]
+        G = Graphics()
+        for k in (2, 1, 0):
+            s = kinds == k
+            if s.any():
+                G += point(list(zip(X[s], Y[s])), color=_DARK[k], size=4,
+                           legend_label=CLASS_NAMES[k], **options)
         G.axes_labels([f"${keys[0]}$", f"${keys[1]}$"])
         return G
 
@@ -852,7 +1088,7 @@ class StabilityMap(SageObject):
         """
         arrays = {f"axis_{i}": a for i, a in enumerate(self.axes().values())}
         arrays.update(parameters=np.array([str(k) for k in self._points.keys]),
-                      max_real_part=self._alpha, stable=self._stable,
+                      max_real_part=self._alpha, stable=self._stable, classes=self.classes(),
                       fixed_names=np.array([str(k) for k in self._fixed], dtype=str),
                       fixed_values=np.array([float(v) for v in self._fixed.values()]))
         path = str(path)
@@ -863,6 +1099,72 @@ class StabilityMap(SageObject):
         finally:
             if os.path.exists(tmp):
                 os.remove(tmp)
+
+
+#: Darker colours of the classes, for points and lines.
+_DARK = {2: 'green', 1: 'blue', 0: 'red', -1: 'grey'}
+
+
+def class_plot(X, Y, classes, options=None):
+    r"""
+    A picture of stability classes on a grid (``classes[i, j]`` at
+    ``X[i], Y[j]``; ``2``, ``1``, ``0``, ``-1`` as in
+    :meth:`StabilityMap.classes`), with a legend of the classes present;
+    also for the results of a :func:`~sage_dynsym.scale.sweep.sweep`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.maps import class_plot
+        sage: import numpy as np
+        sage: X = Y = np.linspace(0, 1, 3)
+        sage: class_plot(X, Y, np.array([[2, 2, 1], [2, 1, 0], [1, 0, 0]]))
+        Graphics object consisting of 4 graphics primitives
+    """
+    kinds = np.asarray(classes)
+    G = _class_picture(X, Y, kinds, dict(options or {}))
+    G += _legend((X, Y), _class_entries(kinds))
+    G.set_legend_options(**_LEGEND)
+    return G
+
+
+def _class_picture(X, Y, kinds, options):
+    from matplotlib.colors import ListedColormap
+    from sage.plot.matrix_plot import matrix_plot
+    colours = ListedColormap([CLASS_COLOURS[k] for k in (-1, 0, 1, 2)])
+    return matrix_plot((np.asarray(kinds).T + 1).astype(float), xrange=_extent(X),
+                       yrange=_extent(Y), flip_y=False, cmap=colours, vmin=0, vmax=3, **options)
+
+
+def _class_entries(kinds):
+    r"""Legend entries (colour, name) of the classes present."""
+    return [(CLASS_COLOURS[k], CLASS_NAMES[k]) for k in (2, 1, 0, -1) if (kinds == k).any()]
+
+
+#: Where the legend of a plane picture goes: outside the box, on the right.
+_LEGEND = dict(loc='upper left', bbox_to_anchor=(1.02, 1), borderaxespad=0, font_size='small')
+
+
+def _class_regions(regions):
+    r"""``{2: region, 1: region}`` from a dict or a stability verdict."""
+    if isinstance(regions, dict):
+        unknown = [k for k in regions if k not in (1, 2)]
+        if unknown:
+            raise AnalysisError(f"the classes with exact regions are 2 and 1, got {unknown}",
+                                entry="StabilityMap")
+        return {k: [list(alt) for alt in v] for k, v in regions.items()}
+    if hasattr(regions, 'cases') and hasattr(regions, 'verdict'):
+        found = {2: [], 1: []}
+        for case in regions.cases():
+            k = {'asymptotically stable': 2, 'stable': 1, 'stable in first approximation': 1,
+                 'undecided': 1}.get(case.verdict())
+            if k is not None:
+                if case.region() is None:
+                    raise AnalysisError(f"the case {case.verdict()} has no region",
+                                        entry="StabilityMap")
+                found[k] += [list(alt) for alt in case.region()]
+        return found
+    raise AnalysisError(f"expected a dict {{2: region, 1: region}} or a stability verdict, got "
+                        f"{regions!r}", entry="StabilityMap")
 
 
 def as_relational(condition):
@@ -878,10 +1180,6 @@ def as_relational(condition):
     """
     e = SR(condition)
     return e if e.is_relational() else e > 0
-
-
-#: The colours of the map: unstable, not defined, asymptotically stable.
-_COLOURS = ['#f4cccc', '#dddddd', '#b6e3b6']
 
 
 def _legend(axes, entries):

@@ -10,7 +10,14 @@ A range is ``(low, high, n)``: ``n`` equally spaced values from ``low`` to
 ``high``, both included (``n = 1``: ``low`` alone, then ``high`` must equal
 ``low``). A 1-D NumPy array gives the values of an axis explicitly. With
 ``samples=N`` the points are ``N`` uniform random points in the box of the
-ranges (``(low, high)``; an ``n`` is ignored), drawn from ``seed``.
+ranges (``(low, high)``; an ``n`` is ignored), drawn from ``seed`` (a
+non-negative integer).
+
+Everything is checked before any array is made: bounds finite real numbers
+(not strings, not booleans) whose difference is finite, ``n`` and
+``samples`` integers (not ``True``, not ``2.0``), and the number of points
+at most :data:`MAX_POINTS` (``max_points=`` raises it; a point costs 9
+bytes of results in a stability map, more in a sweep).
 
 EXAMPLES::
 
@@ -22,11 +29,15 @@ EXAMPLES::
     sage: parse_points({'a': (0, 1)}, samples=1000, seed=5)
     1000 points: random samples in (a)
 """
-import numbers
+import math
 
 import numpy as np
 
 from ..errors import AnalysisError
+from ..arguments import count, is_integer
+
+#: Most points of a map or a sweep (``max_points=`` raises it).
+MAX_POINTS = 10**7
 
 
 class Points:
@@ -48,7 +59,7 @@ class Points:
 
     def __init__(self, keys, layout, shape):
         self.keys, self.layout, self.shape = list(keys), layout, tuple(shape)
-        self.size = int(np.prod(self.shape, dtype=np.int64))
+        self.size = math.prod(self.shape)
 
     def is_grid(self):
         r"""Whether the points form a grid (else random samples).
@@ -79,10 +90,11 @@ class Points:
         return f"{self.size} points: random samples in ({names})"
 
 
-def parse_points(parameters, samples=None, seed=0, entry="parameters"):
+def parse_points(parameters, samples=None, seed=0, entry="parameters", max_points=MAX_POINTS):
     r"""
-    Check ``parameters`` (a dict ``{key: range}``) and ``samples`` and
-    return the :class:`Points`.
+    Check ``parameters`` (a dict ``{key: range}``), ``samples`` and
+    ``seed``, and the number of points against ``max_points``, and return
+    the :class:`Points`.
 
     TESTS::
 
@@ -116,24 +128,63 @@ def parse_points(parameters, samples=None, seed=0, entry="parameters"):
         Traceback (most recent call last):
         ...
         AnalysisError: parameters[a]: empty range: an array of values must be 1-D, finite and not empty
+        sage: parse_points({'a': (0, 1, True)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: expected (low, high, n) with real numbers low, high and an integer n, got (0, 1, True)
+        sage: parse_points({'a': ('0', 1, 3)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: expected (low, high, n) with real numbers low, high and an integer n, got ('0', 1, 3)
+        sage: parse_points({'a': (float(-1e308), float(1e308), 5)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[a]: the range (-1e+308, 1e+308, 5) is too wide for floating point (high - low overflows)
+        sage: parse_points({'a': (0, 1, 10^5), 'b': (0, 1, 10^5)})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: 10000000000 points are more than the limit of 10000000; raise it with max_points= if that is what you want
+        sage: parse_points({'a': (0, 1)}, samples=10^10)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: samples: 10000000000 points are more than the limit of 10000000; raise it with max_points= if that is what you want
+        sage: parse_points({'a': (0, 1)}, samples=5, seed=-1)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: seed: expected at least 0, got -1
     """
     if not isinstance(parameters, dict) or not parameters:
         raise AnalysisError("no parameters: expected a dict {parameter: (low, high, n)}",
                             entry=entry)
+    max_points = count(max_points, 'max_points', error=AnalysisError)
     if samples is not None:
-        if not _is_integer(samples) or int(samples) < 1:
+        if not is_integer(samples) or int(samples) < 1:
             raise AnalysisError(f"expected a positive number of random points, got {samples!r}",
                                 entry="samples")
+        samples = count(samples, 'samples', maximum=max_points, error=AnalysisError,
+                        what="points", raise_with="max_points=")
+        seed = count(seed, 'seed', minimum=0, error=AnalysisError)
         lows, highs = [], []
         for key, axis_range in parameters.items():
             low, high, _ = _range(key, axis_range, entry, samples=True)
             lows.append(low)
             highs.append(high)
-        return Points(parameters, ('samples', lows, highs, int(seed)), (int(samples),))
+        return Points(parameters, ('samples', lows, highs, seed), (samples,))
+    shape = []
+    for key, axis_range in parameters.items():
+        if isinstance(axis_range, np.ndarray):
+            shape.append(len(axis_range) if axis_range.ndim == 1 else 0)
+        else:
+            shape.append(_range(key, axis_range, entry)[2])
+    count(math.prod(shape), entry, maximum=max_points, error=AnalysisError, what="points",
+          raise_with="max_points=", minimum=0)
     axes = []
     for key, axis_range in parameters.items():
         if isinstance(axis_range, np.ndarray):
-            values = np.asarray(axis_range, dtype=float)
+            try:
+                values = np.asarray(axis_range, dtype=float)
+            except (TypeError, ValueError):
+                values = np.array([])
             if values.ndim != 1 or not len(values) or not np.isfinite(values).all():
                 raise AnalysisError("empty range: an array of values must be 1-D, finite and "
                                     "not empty", entry=f"{entry}[{key}]")
@@ -144,16 +195,15 @@ def parse_points(parameters, samples=None, seed=0, entry="parameters"):
     return Points(parameters, ('grid', axes), [len(a) for a in axes])
 
 
-def _is_integer(x):
-    return isinstance(x, numbers.Integral) or (hasattr(x, 'is_integer') and not isinstance(x, float)
-                                               and _true(x.is_integer))
-
-
-def _true(method):
+def _bound(value):
+    r"""``value`` as a float (possibly not finite), ``None`` if it is not a
+    real number (a string, a boolean, a symbol, a complex number)."""
+    if isinstance(value, (str, bytes, bool)) or value is None:
+        return None
     try:
-        return bool(method())
-    except (TypeError, ValueError):
-        return False
+        return float(value)
+    except (TypeError, ValueError, OverflowError):
+        return None
 
 
 def _range(key, axis_range, entry, samples=False):
@@ -161,22 +211,55 @@ def _range(key, axis_range, entry, samples=False):
     shape = "(low, high)" if samples else "(low, high, n)"
     ok = (isinstance(axis_range, (tuple, list))
           and len(axis_range) in ((2, 3) if samples else (3,)))
-    try:
-        low, high = float(axis_range[0]), float(axis_range[1])
-        n = int(axis_range[2]) if ok and len(axis_range) == 3 else 2
-        ok = ok and (len(axis_range) == 2 or _is_integer(axis_range[2]))
-    except (TypeError, ValueError, IndexError, KeyError):
-        ok = False
+    if ok:
+        low, high = _bound(axis_range[0]), _bound(axis_range[1])
+        ok = (low is not None and high is not None
+              and (len(axis_range) == 2 or is_integer(axis_range[2])))
     if not ok:
         raise AnalysisError(f"expected {shape} with real numbers low, high"
                             f"{'' if samples else ' and an integer n'}, got {axis_range!r}",
                             entry=where)
-    if not (np.isfinite(low) and np.isfinite(high)):
+    if not (math.isfinite(low) and math.isfinite(high)):
         raise AnalysisError(f"the bounds must be finite, got {tuple(axis_range)!r}", entry=where)
+    n = int(axis_range[2]) if len(axis_range) == 3 else 2
     if n < 1:
         raise AnalysisError(f"empty range {tuple(axis_range)!r}: n must be a positive integer",
                             entry=where)
     if not (low < high or (low == high and n == 1 and not samples)):
         raise AnalysisError(f"empty range {tuple(axis_range)!r}: expected low < high (or low = "
                             "high with n = 1)", entry=where)
+    if not math.isfinite(high - low):
+        raise AnalysisError(f"the range {tuple(axis_range)!r} is too wide for floating point "
+                            "(high - low overflows)", entry=where)
     return low, high, n
+
+
+def check_positive_ranges(points, positive, entry="parameters"):
+    r"""
+    Check that the parameters of ``points`` declared positive (in the list
+    ``positive``) only take positive values.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.points import parse_points, check_positive_ranges
+        sage: m, k = var('m k')
+        sage: check_positive_ranges(parse_points({m: (1, 2, 3), k: (-1, 1, 3)}), [m])
+        sage: check_positive_ranges(parse_points({m: (0, 2, 3)}), [m])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[m]: m is declared positive: its values must be positive, got the range (0.0, 2.0, 3)
+    """
+    declared = {str(p) for p in positive}
+    for i, key in enumerate(points.keys):
+        if str(key) not in declared:
+            continue
+        if points.is_grid():
+            axis = points.layout[1][i]
+            low = float(np.min(axis))
+            shown = f"the range ({float(axis[0])!r}, {float(axis[-1])!r}, {len(axis)})"
+        else:
+            low = float(points.layout[1][i])
+            shown = f"the range ({low!r}, {float(points.layout[2][i])!r})"
+        if not low > 0:
+            raise AnalysisError(f"{key} is declared positive: its values must be positive, got "
+                                f"{shown}", entry=f"{entry}[{key}]")

@@ -37,6 +37,27 @@ EXAMPLES::
     array([[ 9.81 , 10.31 ],
            [14.715, 15.465],
            [19.62 , 20.62 ]])
+
+**Stability classes.** A function returning
+:func:`~sage_dynsym.scale.kernel.stability_class` (``2`` asymptotically
+stable, ``1`` stable in first approximation, ``0`` unstable; the classes of
+:meth:`~sage_dynsym.scale.maps.StabilityMap.classes`) sweeps the stability
+of anything whose roots or matrix the function computes, and
+:meth:`Sweep.plot` draws the classes with a legend. A damped oscillator::
+
+    sage: import numpy as np
+    sage: from sage_dynsym.scale import stability_class
+    sage: def oscillator(c, k):
+    ....:     return stability_class(np.array([[0, 1], [-k, -c]]))
+    sage: W = sweep(oscillator, {'c': (-1, 1, 5), 'k': (-1, 1, 5)}, client=False)
+    sage: W.values()
+    array([[0, 0, 0, 0, 0],
+           [0, 0, 0, 0, 0],
+           [0, 0, 1, 1, 1],
+           [0, 0, 1, 2, 2],
+           [0, 0, 1, 2, 2]])
+    sage: W.plot()
+    Graphics object consisting of 4 graphics primitives
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
@@ -48,15 +69,16 @@ import numpy as np
 from sage.structure.sage_object import SageObject
 
 from ..errors import AnalysisError
+from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .kernel import sweep_chunk, chunk_points
 from .maps import CHUNK
-from .points import parse_points
+from .points import parse_points, check_positive_ranges, MAX_POINTS
 
 
 def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0,
           vectorized=False, simulate=None, reduce=None, on_error='raise', chunk_size=None,
-          workers=None, timeout=DEFAULT_TIMEOUT, progress=False):
+          workers=None, timeout=DEFAULT_TIMEOUT, progress=False, max_points=MAX_POINTS):
     r"""
     Evaluate ``function`` (or a model's simulation) at the points of a grid
     or of random samples of parameter values.
@@ -90,8 +112,12 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
       in an array of objects)
     - ``chunk_size`` -- points per Dask task (default: at most 1024, about
       64 chunks for small sweeps; `2^{15}` when vectorized)
-    - ``workers``, ``timeout``, ``progress`` -- as for
+    - ``workers``, ``timeout``, ``progress``, ``max_points`` -- as for
       :func:`~sage_dynsym.scale.maps.stability_map`
+
+    A model's declared signs are checked before anything runs: a parameter
+    declared positive gets a positive value in ``fixed`` and a range of
+    positive values.
 
     OUTPUT: a :class:`Sweep`
 
@@ -142,10 +168,25 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
         Traceback (most recent call last):
         ...
         AnalysisError: sweep: a is both a parameter and fixed
+        sage: sweep(lambda a, b: a*b, {'a': (0, 1, 10^5), 'b': (0, 1, 10^5)}, client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: 10000000000 points are more than the limit of 10000000; raise it with max_points= if that is what you want
+        sage: from sage_dynsym.circuits import Circuit
+        sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], positive=['L1', 'R1', 'C1'])
+        sage: sweep(C, {'R1': (-1, 1, 3)}, fixed={'L1': 1, 'C1': 1}, client=False,
+        ....:       simulate=dict(initial={'i1': 1, 'u2': 0}, t_end=1))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters[R1]: R1 is declared positive: its values must be positive, got the range (-1.0, 1.0, 3)
     """
     entry = "sweep"
     if on_error not in ('raise', 'nan'):
         raise AnalysisError(f"on_error must be 'raise' or 'nan', got {on_error!r}", entry=entry)
+    if not isinstance(parameters, dict) or not parameters:
+        parse_points(parameters)            # the error for a missing or malformed dict
+    if not isinstance(fixed, (dict, type(None))):
+        raise AnalysisError(f"fixed= must be a dict, got {fixed!r}", entry=entry)
     keys = list(parameters)
     names = [str(k) for k in keys]
     for name in names:
@@ -157,7 +198,12 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
     for k in fixed:
         if str(k) in names:
             raise AnalysisError(f"{k} is both a parameter and fixed", entry=entry)
-    if hasattr(function, 'simulate') and callable(function.simulate):
+    model = hasattr(function, 'simulate') and callable(function.simulate)
+    if model:
+        check_model_values(function, fixed, entry="fixed")
+        if simulate is not None and not isinstance(simulate, dict):
+            raise AnalysisError(f"simulate= must be a dict of the arguments of simulate, got "
+                                f"{simulate!r}", entry=entry)
         call = ModelRun(function, dict(zip(names, keys)), fixed, simulate or {}, reduce)
         fixed = {}
     elif callable(function):
@@ -169,7 +215,10 @@ def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0
     else:
         raise AnalysisError("expected a function of the parameters or a model with a simulate "
                             f"method, got {function!r}", entry=entry)
-    points = parse_points(dict(zip(names, parameters.values())), samples, seed)
+    points = parse_points(dict(zip(names, parameters.values())), samples, seed,
+                          max_points=max_points)
+    if model and callable(getattr(function, 'positive_parameters', None)):
+        check_positive_ranges(points, function.positive_parameters())
     if chunk_size is None:
         chunk_size = CHUNK if vectorized else max(1, min(1024, math.ceil(points.size / 64)))
     ranges = chunks(points.size, chunk_size)
@@ -316,3 +365,42 @@ class Sweep(SageObject):
             array([1. , 1.5, 2. ])
         """
         return self._values
+
+    def plot(self, **options):
+        r"""
+        The values against one parameter (a line), or, for two parameters
+        on a grid and values that are stability classes (``2``, ``1``,
+        ``0``, ``-1``), the picture of the classes with a legend (see
+        :func:`~sage_dynsym.scale.maps.class_plot`).
+
+        EXAMPLES: see the module documentation; one parameter::
+
+            sage: from sage_dynsym.scale import sweep
+            sage: sweep(lambda a: a^2, {'a': (0, 1, 5)}, client=False).plot()
+            Graphics object consisting of 1 graphics primitive
+
+        TESTS::
+
+            sage: sweep(lambda a, b: a*b, {'a': (0, 1, 3), 'b': (0, 1, 3)}, client=False).plot()
+            Traceback (most recent call last):
+            ...
+            AnalysisError: Sweep.plot: draws numbers against one parameter, or stability classes (2, 1, 0, -1) over two on a grid
+        """
+        values = self._values
+        numeric = values.dtype.kind in 'biuf'
+        if numeric and len(self._keys) == 1 and self._points.is_grid() and values.ndim == 1:
+            from sage.plot.line import line
+            G = line(list(zip(map(float, self._points.axes()[0]), map(float, values))),
+                     **options)
+            G.axes_labels([f"${self._keys[0]}$", ""])
+            return G
+        is_class = numeric and values.size and np.all(np.isin(values, (-1, 0, 1, 2)))
+        if is_class and len(self._keys) == 2 and self._points.is_grid() and values.ndim == 2:
+            from .maps import class_plot
+            X, Y = self._points.axes()
+            options = dict(dict(frame=True, axes=False, ticks_integer=False), **options)
+            G = class_plot(X, Y, values.astype(int), options)
+            G.axes_labels([f"${k}$" for k in self._keys])
+            return G
+        raise AnalysisError("draws numbers against one parameter, or stability classes (2, 1, "
+                            "0, -1) over two on a grid", entry="Sweep.plot")
