@@ -16,7 +16,9 @@ loads -- are checked at random states against
   in 150-bit arithmetic (linear in the accelerations).
 
 Both solvers (articulated-body algorithm, and mass matrix + L^T D L) must
-agree to 1e-10 relative. The rest of the model format (dissipation,
+agree to 1e-10 relative. With holonomic constraints and constraints on the
+velocities, the reference's mass matrix and forcing are completed by the
+constraint rows and their right-hand sides differentiated here with SymPy. The rest of the model format (dissipation,
 generalized forces, force functions given as expressions or Newtonian
 fields, prescribed joint velocities, constraints) is checked against the
 symbolic equations.
@@ -226,6 +228,17 @@ class Reference:
         return out
 
     def accelerations(self, q, dq, t):
+        M, F = self.mass_and_forcing(q, dq, t)
+        return np.linalg.solve(M, F)
+
+    def constrained_accelerations(self, q, dq, t, G, gamma):
+        """ddq of M ddq - G^T lam = F, G ddq = gamma (constraint forces G^T lam)."""
+        M, F = self.mass_and_forcing(q, dq, t)
+        n, m = len(q), len(gamma)
+        K = np.block([[M, -np.asarray(G).T], [np.asarray(G), np.zeros((m, m))]])
+        return np.linalg.solve(K, np.concatenate([F, gamma]))[:n]
+
+    def mass_and_forcing(self, q, dq, t):
         n = len(q)
         motion = self._series(q, dq, t, 1.0)
         partial = [self._series(q, [float(i == j) for j in range(n)], t, 0.0) for i in range(n)]
@@ -253,7 +266,7 @@ class Reference:
                     E0[i] -= np.array(force) @ (O1 + R1 @ np.array(point))
                 if torque is not None:
                     E0[i] -= np.array(torque) @ (R0 @ _vee(R0.T @ R1))
-        return np.linalg.solve(M, -E0)
+        return M, -E0
 
 
 # ----------------------------------------------------------------------
@@ -435,3 +448,74 @@ def test_simulation_keeps_the_energy_computed_only_on_demand():
     assert not S.lagrangian.cache           # no symbolic equations, no energy yet
     assert T.energy_drift() < 1e-8
     assert S.lagrangian.cache
+
+
+def _constraint_rows(desc, holonomic, nonholonomic, q, dq, t):
+    """Independently of the package (SymPy): the rows G and the right-hand
+    sides gamma of G ddq = gamma, from d^2 f/dt^2 = 0 of holonomic
+    constraints f(q, t) and d g/dt = 0 of velocity constraints g(q, dq, t)."""
+    names = desc['coordinates']
+    Q = sympy.symbols(names)
+    D = sympy.symbols(['d' + c for c in names])
+    T = sympy.Symbol('t')
+    point = dict(zip(Q, q)) | dict(zip(D, dq)) | {T: t} | {
+        sympy.Symbol(k): v for k, v in desc['values'].items()}
+
+    def dt(e):      # d/dt along the motion at zero accelerations
+        return sum(e.diff(a) * b for a, b in zip(Q, D)) + e.diff(T)
+    rows, gamma = [], []
+    for text in holonomic:
+        f = sympy.sympify(text, locals={str(s): s for s in Q + [T]})
+        velocity = dt(f)
+        rows.append([float(velocity.diff(b).subs(point)) for b in D])
+        gamma.append(-float(dt(velocity).subs(point)))
+    for text in nonholonomic:
+        g = sympy.sympify(text, locals={str(s): s for s in Q + D + [T]})
+        rows.append([float(g.diff(b).subs(point)) for b in D])
+        gamma.append(-float(dt(g).subs(point)))
+    return np.array(rows), np.array(gamma)
+
+
+@pytest.mark.parametrize("seed,n_bodies", [(30, 3), (31, 4)])
+def test_velocity_constraints_against_independent_kane(seed, n_bodies):
+    """Constraints on the velocities (not integrable, depending on q and t)
+    with a holonomic one: the rows are appended to the factorized mass
+    matrix (the multipliers eliminated in the generated code)."""
+    desc = random_tree(seed, n_bodies)
+    c = desc['coordinates']
+    holonomic = [f"{c[0]} + {c[1]}**2/3 - sin({c[-1]})/2"]
+    nonholonomic = [f"cos({c[0]})*d{c[1]} - {c[1]}*sin({c[0]})*d{c[0]} + d{c[-1]}/3 "
+                    f"+ sin(t)/10",
+                    f"d{c[2]} - {c[0]}*d{c[-1]} + w*{c[1]}"]
+    S = _system(desc, constraints=[SR(f) for f in holonomic],
+                nonholonomic=[SR(g) for g in nonholonomic])
+    form = numerical_form(S)
+    assert type(form).__name__ == 'RecursiveForm'
+    f = S.numerical_rhs(desc['values'])
+    assert f.form() is form and form.solver() == 'ltdl'
+    reference = Reference(desc, desc['values'])
+    rng = random.Random(seed)
+    n = len(c)
+    for _ in range(2):
+        q = [rng.uniform(-1.5, 1.5) for _ in range(n)]
+        dq = [rng.uniform(-1, 1) for _ in range(n)]
+        t = rng.uniform(0, 2)
+        G, gamma = _constraint_rows(desc, holonomic, nonholonomic, q, dq, t)
+        expected = reference.constrained_accelerations(q, dq, t, G, gamma)
+        assert _relative(f(t, np.array(q + dq))[n:], expected) < 1e-10
+
+
+def test_whipple_bicycle_takes_the_recursive_form():
+    """Rolling wheels (a holonomic contact condition and no-slip conditions
+    on the velocities): the recursive form by default, the same
+    accelerations as the Lagrange equations with multipliers (SymPy's
+    bicycle checks the default in tests/test_whipple_bicycle_sympy.py)."""
+    from sage_dynsym import load
+    from sage_dynsym.description import example_path
+    S = load(example_path('whipple_bicycle.yaml'))
+    assert type(numerical_form(S)).__name__ == 'RecursiveForm'
+    values = dict(w=1.02, c=0.08, lam=math.pi / 10, g=9.81, rR=0.3, mR=2, IRxx=0.0603,
+                  IRyy=0.12, xB=0.3, zB=-0.9, mB=85, IBxx=9.2, IByy=11, IBzz=2.8, IBxz=2.4,
+                  xH=0.9, zH=-0.7, mH=4, IHxx=0.05892, IHyy=0.06, IHzz=0.00708, IHxz=-0.00756,
+                  rF=0.35, mF=3, IFxx=0.1405, IFyy=0.28, v=5)
+    _against_equations(S, values, solvers=('ltdl',))
