@@ -348,6 +348,41 @@ class MechanicalSystem(Model):
         return {'lagrangian': self.lagrangian,
                 'hamiltonian': lambda: self.lagrangian().hamiltonian()}
 
+    def equation_forms(self):
+        r"""
+        The forms of the system's equations: Lagrange, Routh and Hamilton
+        (see :mod:`~sage_dynsym.dynamics.derivations`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: S.equation_forms()['Hamilton']().equations[0]
+            ('\\dot{\\psi}', p_psi/(l^2*m*sin(theta)^2))
+        """
+        from ..dynamics.derivations import lagrangian_forms
+        return lagrangian_forms(self.lagrangian)
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The mechanical system of a description mapping (``kind: mechanical``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: S = MechanicalSystem.from_dict({'kind': 'mechanical', 'coordinates': ['x'],
+            ....:     'parameters': ['m'], 'bodies': [{'name': 'cart', 'joint': ['x', 0, 0], 'mass': 'm'}]})
+            sage: S.lagrangian().expr()
+            1/2*dx^2*m
+        """
+        # the format module builds on this class: imported when first used
+        from .description import mechanical_system_from_dict
+        return mechanical_system_from_dict(data, source)
+
     def to_dict(self):
         r"""
         The description mapping of the system (the inverse of
@@ -896,10 +931,9 @@ class MechanicalSystem(Model):
             (2, [y, theta])
         """
         from ..analysis import linearize
+        from ..dynamics.model import linearization_point
         L = self.lagrangian()
-        point = {q: SR(0) for q in L.coordinates()}
-        point.update(at or {})
-        return linearize(L, point)
+        return linearize(L, linearization_point(at, L.coordinates(), "coordinate"))
 
     def loads(self):
         r"""
