@@ -58,6 +58,7 @@ from ..dynamics.natural_form import natural_form, is_singular, has_full_row_rank
 from ..numerics.values import check_model_values
 from .force_functions import check_force_function, split_force_terms, UniformGravity
 from .constraint_set import ConstraintSet
+from .format import read_mechanical_system
 from .frames import held_product
 from .kinematics import Kinematics
 from .loads import load_list
@@ -369,7 +370,7 @@ class MechanicalSystem(Model):
         r"""
         The mechanical system of a description mapping (``kind: mechanical``); ``source``
         names the file in errors. The format is read by
-        :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`.
+        :func:`~sage_dynsym.mechanics.format.read_mechanical_system`.
 
         EXAMPLES::
 
@@ -379,9 +380,7 @@ class MechanicalSystem(Model):
             sage: S.lagrangian().expr()
             1/2*dx^2*m
         """
-        # the format module builds on this class: imported when first used
-        from .description import mechanical_system_from_dict
-        return mechanical_system_from_dict(data, source)
+        return read_mechanical_system(cls, data, source)
 
     def to_dict(self):
         r"""
