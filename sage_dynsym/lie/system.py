@@ -79,6 +79,7 @@ from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
+from .format import read_lie_poisson_system
 from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
                         MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
@@ -677,7 +678,7 @@ class LiePoissonSystem(Model, NumericalMethods):
         r"""
         The Lie--Poisson system of a description mapping (``kind: lie_poisson``); ``source``
         names the file in errors. The format is read by
-        :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
+        :func:`~sage_dynsym.lie.format.read_lie_poisson_system`.
 
         EXAMPLES::
 
@@ -686,9 +687,7 @@ class LiePoissonSystem(Model, NumericalMethods):
             ....:                             'hamiltonian': 'M3^2/2'}).equations()
             [M2*M3, -M1*M3, 0]
         """
-        # the format module builds on this class: imported when first used
-        from .description import lie_poisson_from_dict
-        return lie_poisson_from_dict(data, source)
+        return read_lie_poisson_system(cls, data, source)
 
     def to_dict(self):
         r"""
