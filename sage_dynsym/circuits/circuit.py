@@ -49,6 +49,7 @@ from ..errors import CircuitError
 from ..dynamics.model import Model
 from ..numerics.methods import NumericalMethods
 from .elements.windings import inductance_conditions
+from .format import read_circuit, circuit_mapping, circuit_results, result_symbols
 from .forms import circuit_forms
 from .free_system import free_linear_system
 from .graph import CircuitGraph
@@ -159,7 +160,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
         r"""
         The circuit of a description mapping (``kind: circuit``); ``source``
         names the file in errors. The format is read by
-        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+        :func:`~sage_dynsym.circuits.format.read_circuit`.
 
         EXAMPLES::
 
@@ -167,15 +168,13 @@ class Circuit(StateEquations, NumericalMethods, Model):
             sage: Circuit.from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
             Circuit with 2 branches on 2 nodes
         """
-        # the format module builds on this class: imported when first used
-        from .description import circuit_from_dict
-        return circuit_from_dict(data, source)
+        return read_circuit(cls, data, source)
 
     def to_dict(self):
         r"""
         The description mapping of the circuit (short form wherever the
         element's value is its own symbol), the inverse of
-        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+        :meth:`from_dict`.
 
         EXAMPLES::
 
@@ -190,7 +189,6 @@ class Circuit(StateEquations, NumericalMethods, Model):
              'kind': 'circuit',
              'parameters': ['M']}
         """
-        from .format import circuit_mapping
         return circuit_mapping(self)
 
     def results(self):
@@ -208,7 +206,6 @@ class Circuit(StateEquations, NumericalMethods, Model):
             ['mixed_potential_latex', 'mixed_potential_text', 'state_equations',
              'state_equations_latex', 'state_variables']
         """
-        from .format import circuit_results
         return circuit_results(self)
 
     def result_symbols(self, results):
@@ -228,7 +225,6 @@ class Circuit(StateEquations, NumericalMethods, Model):
             sage: 'L1' in symbols, functions
             (True, ['f1', 'f4', 'f2', 'f3'])
         """
-        from .format import result_symbols
         return result_symbols(self, results)
 
     def _graph(self):

@@ -1,13 +1,18 @@
 r"""
-A circuit as a description: its mapping and its results
+The description format of circuits (read and write)
 
-The writing side of the circuit description format (the reading side is
-:func:`~sage_dynsym.circuits.description.circuit_from_dict`):
-:func:`circuit_mapping` gives the description mapping of a circuit (each
+A circuit description (format: :doc:`/description_files`) is a mapping
+with the keys ``kind: circuit``, ``name``, ``branches`` (the branch list
+of :mod:`~sage_dynsym.circuits.elements`), ``parameters``, ``positive``
+and ``results`` (written by ``save``, ignored when reading).
+:func:`read_circuit` builds a circuit from it (what
+:meth:`Circuit.from_dict <sage_dynsym.circuits.circuit.Circuit.from_dict>`
+calls), :func:`circuit_mapping` gives the mapping of a circuit (each
 element in the short form wherever its value is its own symbol),
 :func:`circuit_results` the ``results:`` section ``save`` writes, and
 :func:`result_symbols` the names such a section may use when it is read
-back.
+back. This module imports neither the circuit class nor its earlier
+format functions (:mod:`~sage_dynsym.circuits.description`).
 
 EXAMPLES::
 
@@ -25,8 +30,81 @@ EXAMPLES::
 """
 from sage.misc.latex import latex
 
-from ..errors import CircuitError, DescriptionError, brief
-from ..symbols import velocity, acceleration, momentum
+from ..errors import CircuitError, DescriptionError, DynSymError, brief
+from ..io.fields import declared_names, title, MAX_PARAMETERS
+from ..symbols import check_name, velocity, acceleration, momentum
+
+#: The keys of a circuit description.
+KEYS = {'kind', 'name', 'branches', 'parameters', 'positive', 'results'}
+
+#: Most branches (entries of ``branches``) of a circuit description.
+MAX_BRANCHES = 2000
+
+
+def read_circuit(cls, data, source=None):
+    r"""
+    The circuit of class ``cls`` described by the mapping ``data``
+    (``source``: the file, named in errors); every key is checked, the
+    branch list by the circuit.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: from sage_dynsym.circuits.format import read_circuit
+        sage: read_circuit(Circuit, {'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']],
+        ....:                        'positive': ['L1']}).positive_parameters()
+        [L1]
+
+    TESTS: see :func:`~sage_dynsym.circuits.description.circuit_from_dict`, and::
+
+        sage: read_circuit(Circuit, {'kind': 'circuit', 'branches': [[1, 2, 'L1']], 'name': 3})
+        Traceback (most recent call last):
+        ...
+        DescriptionError: name: expected a text, got 3
+    """
+    if not isinstance(data, dict):
+        raise DescriptionError(f"a circuit description is a mapping, got {type(data).__name__}",
+                               source=source)
+    for key in data:
+        if key not in KEYS:
+            raise DescriptionError("unknown key; a circuit description has keys "
+                                   f"{', '.join(sorted(KEYS))}", entry=str(key)[:60],
+                                   source=source)
+    if data.get('kind') != 'circuit':
+        raise DescriptionError(f"expected 'circuit', got {brief(data.get('kind'))}",
+                               entry='kind', source=source)
+    if 'branches' not in data:
+        raise DescriptionError("missing key 'branches' (a list of [from, to, element])",
+                               entry='branches', source=source)
+    branches = data['branches']
+    if not isinstance(branches, list) or not branches:
+        raise DescriptionError(f"expected a non-empty list of branches, got {brief(branches)}",
+                               entry='branches', source=source)
+    if len(branches) > MAX_BRANCHES:
+        raise DescriptionError(f"{len(branches)} branches; a description file has at most "
+                               f"{MAX_BRANCHES} (MAX_BRANCHES)", entry='branches', source=source)
+    name = data.get('name')
+    if name is not None and not isinstance(name, str):
+        raise DescriptionError(f"expected a text, got {brief(name)}", entry='name', source=source)
+    name = title(data, 'name', source)
+    parameters = data.get('parameters', [])
+    if not isinstance(parameters, list) or not all(
+            isinstance(p, str) and p.isidentifier() for p in parameters):
+        raise DescriptionError(f"expected a list of symbol names, got {brief(parameters)}",
+                               entry='parameters', source=source)
+    if len(parameters) > MAX_PARAMETERS:
+        raise DescriptionError(f"{len(parameters)} names; a description file has at most "
+                               f"{MAX_PARAMETERS} (MAX_PARAMETERS)", entry='parameters',
+                               source=source)
+    for i, p in enumerate(parameters):
+        check_name(p, f"parameters[{i}]", source=source)
+    positive = declared_names(data, 'positive', source, required=False, limit=MAX_PARAMETERS)
+    try:
+        return cls(branches, name=name, parameters=parameters, positive=positive)
+    except DynSymError as err:
+        raise err.with_context(source=source) from None
+
+
 
 
 def circuit_mapping(circuit):
