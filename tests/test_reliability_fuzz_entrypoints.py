@@ -27,8 +27,6 @@ from sage_dynsym import (DynSymError, Lagrangian, LiePoissonSystem, MechanicalSy
 from sage_dynsym.circuits import Circuit
 from sage_dynsym.numerics.trajectory import Trajectory
 
-# hundreds of random calls of the entry points: `make test-slow` (CI) runs it
-pytestmark = pytest.mark.slow
 
 SECONDS = 30
 
