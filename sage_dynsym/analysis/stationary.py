@@ -5,7 +5,7 @@ For `\dot x = X(x)` with first integrals `V_0, \dots, V_k`, stationary
 solutions are conditional extrema of the integrals: the stationarity
 equations `\partial K/\partial x_i = 0` of `K = V_0 + \sum_{j\ge1}
 \lambda_j V_j`, together with the levels `V_j = c_j` that are prescribed.
-Their solution set is computed exactly (:mod:`.solving`): it is decomposed
+Their solution set is computed exactly (:mod:`~sage_dynsym.algebra.solving`): it is decomposed
 into irreducible components, each with its dimension -- `0` for an
 isolated solution, `k > 0` for a `k`-parameter family of stationary
 solutions, a candidate *stationary invariant manifold* --, explicit values
@@ -102,14 +102,14 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
 from ..arguments import known_symbols, symbol_arguments
-from .conditions import (positive_conditions, positive_conditions_all, conjunction,
+from ..algebra.conditions import (positive_conditions, positive_conditions_all, conjunction,
                          simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
 from .linear import LinearSystem
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
-                              _signed_minors)
-from .solving import solve_exactly, normalize, SolutionList
+                              signed_leading_minors)
+from ..algebra.solving import solve_exactly, normalize, SolutionList
 # the modified method has a module of its own; this import keeps its old path
 from .modified_routh import ModifiedRouthLyapunov  # noqa: F401
 
@@ -350,7 +350,7 @@ class StationarySolution(SageObject):
         return self._solution.real_points()
 
     def solution(self):
-        r"""The underlying :class:`~sage_dynsym.analysis.solving.AlgebraicSolution`.
+        r"""The underlying :class:`~sage_dynsym.algebra.solving.AlgebraicSolution`.
 
         EXAMPLES::
 
@@ -489,11 +489,11 @@ class StationarySolution(SageObject):
         r"""Alternatives (without the existence conditions) where some
         choice of the free multipliers makes the restricted second
         variation definite."""
-        from .quantifier_elimination import exists
+        from ..algebra.quantifier_elimination import exists
         form, free, pivots = self._restricted()
-        exprs = _signed_minors(form_matrix(form, free), sign) if free else []
+        exprs = signed_leading_minors(form_matrix(form, free), sign) if free else []
         if self._problem._kinetic is not None:
-            exprs += _signed_minors(self._kinetic_at(), 'positive')
+            exprs += signed_leading_minors(self._kinetic_at(), 'positive')
         exprs = [self._at(e) for e in exprs]
         multipliers = [l for l in self.free_multipliers()
                        if any(e.has(l) for e in exprs)]
@@ -685,7 +685,7 @@ def _first_approximation(lin, positive):
     r"""Regions (alternatives) of asymptotic stability and of instability
     from the characteristic polynomial of ``lin``."""
     from .hurwitz import lienard_chipart_conditions
-    from .translation import Translation
+    from ..algebra.translation import Translation
     lam = SR.var('lambda_')
     p = lin.characteristic_polynomial(lam, positive=positive)
     if not SR(p).has(lam):          # no dynamics left (e.g. a zero Lagrangian)

@@ -36,7 +36,7 @@ import sage.all  # noqa: F401
 from sage.misc.latex import latex
 from sage.symbolic.ring import SR
 
-from ..analysis.size import polynomial_terms, TERMS_CAP as _TERMS_CAP
+from ..algebra.size import polynomial_terms, TERMS_CAP as _TERMS_CAP
 from ..errors import DynSymError, BudgetError
 from ..arguments import count
 
@@ -539,7 +539,7 @@ def _stability_conditions(poly, lam, positive, lines, out):
     # the Lienard--Chipart conditions of the roots other than lambda = 0;
     # sines and cosines of parameters (a steer axis tilt) are symbols there
     from ..analysis import lienard_chipart_conditions
-    from ..analysis.trigonometric import TrigPolynomialRing
+    from ..algebra.trigonometric import TrigPolynomialRing
     zeros = 0
     while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:
         poly, zeros = (poly / lam).expand(), zeros + 1

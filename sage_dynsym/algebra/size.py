@@ -8,7 +8,7 @@ create from the trees of their inputs, without expanding anything.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.size import polynomial_terms
+    sage: from sage_dynsym.algebra.size import polynomial_terms
     sage: x, y = var('x y')
     sage: polynomial_terms((x + y)^200)
     201
@@ -32,7 +32,7 @@ def polynomial_terms(expr):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.size import polynomial_terms
+        sage: from sage_dynsym.algebra.size import polynomial_terms
         sage: x, y, z = var('x y z')
         sage: polynomial_terms((x + y)*(x + z + 1)), ((x + y)*(x + z + 1)).expand().number_of_operands()
         (6, 6)
