@@ -90,12 +90,12 @@ def test_a_raised_budget_computes_the_section():
 
 
 def test_a_failing_section_is_one_line_and_the_rest_prints(monkeypatch):
-    import sage_dynsym.report.writer as R
+    import sage_dynsym.circuits.report as R
 
     def broken(*args):
         raise RuntimeError("Singular error: no more memory")
 
-    monkeypatch.setattr(R, "_lagrangian_equations", broken)
+    monkeypatch.setattr(R, "equations_lines", broken)
     text = report(load(example_path("rlc_ladder.yaml")))
     assert "Lagrange equations: section failed: RuntimeError: Singular error: no more memory" \
         in text
@@ -103,12 +103,12 @@ def test_a_failing_section_is_one_line_and_the_rest_prints(monkeypatch):
 
 
 def test_keyboard_interrupt_is_not_swallowed(monkeypatch):
-    import sage_dynsym.report.writer as R
+    import sage_dynsym.circuits.report as R
 
     def interrupted(*args):
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(R, "_lagrangian_equations", interrupted)
+    monkeypatch.setattr(R, "equations_lines", interrupted)
     with pytest.raises(KeyboardInterrupt):
         report(load(example_path("rlc_ladder.yaml")))
 

@@ -157,11 +157,11 @@ def test_a_section_that_is_not_available_says_why(files, capsys):
 
 
 def test_a_failed_section_gives_exit_status_3(files, capsys, monkeypatch):
-    import sage_dynsym.report.writer as R
+    import sage_dynsym.mechanics.report as R
 
     def broken(*args):
         raise ZeroDivisionError("division by zero")
-    monkeypatch.setattr(R, "_hamiltonian", broken)
+    monkeypatch.setattr(R, "hamiltonian_lines", broken)
     status = main([example_path('spherical_pendulum.yaml'), '--sections', 'hamiltonian'])
     out = capsys.readouterr()
     assert status == 3

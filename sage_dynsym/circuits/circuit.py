@@ -54,6 +54,7 @@ from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
 from .graph import CircuitGraph
 from .inductance import inductance_conditions
+from .report import report_title, report_sections
 
 class Circuit(NumericalMethods, Model):
     r"""
@@ -748,6 +749,42 @@ class Circuit(NumericalMethods, Model):
             CircuitError: branches[0]: no Brayton-Moser split: ...; no explicit state equations: ...
         """
         return self._state_form().state_equations()
+
+    def source_values_off(self):
+        r"""
+        The substitution that switches the sources off: the symbol of each
+        voltage and current source to 0.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit([[0, 1, 'E1'], [1, 0, 'R1'], [1, 0, 'I1']]).source_values_off()
+            {E1: 0, I1: 0}
+        """
+        return {SR.var(b.name): 0 for b in self._branches
+                if b.kind in ('voltage_source', 'current_source')}
+
+    def report_title(self):
+        r"""The heading of the circuit's report (see :mod:`~sage_dynsym.circuits.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']], name='LC').report_title()
+            '== LC (circuit: 2 branches on 2 nodes) =='
+        """
+        return report_title(self)
+
+    def report_sections(self):
+        r"""The sections of the circuit's report (see :mod:`~sage_dynsym.circuits.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: [s.name for s in Circuit([[1, 2, 'L1'], [2, 1, 'C1']]).report_sections()][:3]
+            ['Conditions', 'State equations', 'Mixed potential']
+        """
+        return report_sections(self)
 
     def state_equation_labels(self, latex=False):
         r"""

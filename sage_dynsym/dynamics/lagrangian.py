@@ -395,6 +395,34 @@ class Lagrangian(NumericalMethods, SageObject):
         """
         return list(self._multipliers)
 
+    def nonholonomic_constraints(self):
+        r"""
+        The constraints on the velocities (none here; see
+        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2, [x]).nonholonomic_constraints()
+            []
+        """
+        return []
+
+    def velocity_multipliers(self):
+        r"""
+        The multipliers of the constraints on the velocities (none here;
+        see :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2, [x]).velocity_multipliers()
+            []
+        """
+        return []
+
     # ------------------------------------------------------------------
     # value semantics
 

@@ -22,10 +22,11 @@ registered under its :attr:`~Model.kind` (see
   switched off, whose stability :func:`~sage_dynsym.scale.maps.stability_map`
   maps;
 - :meth:`Model.report_title` and :meth:`Model.report_sections`: the
-  sections of its report (:class:`ReportSection`, each with an estimate of
-  its size and the results of earlier sections it needs), run by the one
-  section runner of :func:`~sage_dynsym.report.writer.report` within one
-  budget.
+  sections of its report
+  (:class:`~sage_dynsym.dynamics.reporting.ReportSection`, each with an
+  estimate of its size and the results of earlier sections it needs), run
+  by the one section runner
+  (:func:`~sage_dynsym.dynamics.reporting.run_sections`) within one budget.
 
 EXAMPLES::
 
@@ -44,56 +45,6 @@ EXAMPLES::
     ('circuit', ['mixed_potential'])
 """
 from sage.structure.sage_object import SageObject
-
-
-class ReportSection(SageObject):
-    r"""
-    One section of a model's report (see :meth:`Model.report_sections`).
-
-    INPUT:
-
-    - ``key`` -- the name under which the command line's ``--sections``
-      selects it (see :data:`sage_dynsym.report.sections.SECTIONS`); several
-      sections may share a key
-    - ``name`` -- the section's name in the one line that replaces it when
-      it is skipped or cannot be computed (``Lagrangian: skipped, ...``)
-    - ``compute`` -- a function of ``results`` (a dict of what earlier
-      sections computed, by key; a section may add its own) returning the
-      section's lines (its heading included), or ``None`` when the section
-      does not apply to the model
-    - ``estimate`` -- (optional) a function of ``results`` returning the
-      number of polynomial terms the section would create, computed
-      without creating them; the runner skips the section when it exceeds
-      the budget
-    - ``what`` -- (default: ``name``) what the estimate counts, for the line
-      that says why the section was skipped
-    - ``analysis`` -- (default: ``False``) whether the section is analysis
-      (left out by ``analysis=False``, the command line's ``--no-analysis``)
-    - ``needs`` -- (default: none) keys of ``results`` the section needs:
-      when an earlier section could not provide one, this section is one
-      line saying so
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.dynamics.model import ReportSection
-        sage: def equations(results):
-        ....:     results['equations'] = "x'' = -x"
-        ....:     return ["Equations:", "  x'' = -x"]
-        sage: s = ReportSection('equations', 'Equations', equations, estimate=lambda r: 2); s
-        Report section 'equations' (Equations)
-        sage: found = {}
-        sage: s.compute(found), s.estimate(found), found
-        (['Equations:', "  x'' = -x"], 2, {'equations': "x'' = -x"})
-    """
-
-    def __init__(self, key, name, compute, estimate=None, what=None, analysis=False,
-                 needs=()):
-        self.key, self.name, self.compute = key, name, compute
-        self.estimate, self.what, self.analysis = estimate, what or name, analysis
-        self.needs = tuple(needs)
-
-    def _repr_(self):
-        return f"Report section {self.key!r} ({self.name})"
 
 
 class Model(SageObject):
@@ -257,7 +208,7 @@ class Model(SageObject):
     def report_sections(self):
         r"""
         The sections of the model's report, in the order they are printed:
-        a list of :class:`ReportSection`.
+        a list of :class:`~sage_dynsym.dynamics.reporting.ReportSection`.
 
         EXAMPLES: see the subclasses.
         """

@@ -21,8 +21,9 @@ brackets are zero or follow by skew-symmetry. Expressions are parsed by
 variables and parameters only.
 
 :func:`lie_poisson_from_dict` builds the system from the parsed YAML
-mapping; :func:`lie_report` is its text report (equations, Casimirs,
-polynomial integrals up to degree 2, stationary solutions).
+mapping; :func:`~sage_dynsym.lie.report.lie_report` is its text report
+(equations, Casimirs, polynomial integrals up to degree 2, stationary
+solutions).
 
 EXAMPLES::
 
@@ -54,12 +55,12 @@ EXAMPLES::
           unstable (first approximation) where [(A1 - A2)*(A1 - A3) < 0, M1 != 0]
       ...
 """
-from sage.misc.latex import latex
-
-from ..errors import BudgetError, DescriptionError, DynSymError, brief
+from ..errors import DescriptionError, DynSymError, brief
 from ..io.expressions import ExpressionParser
 from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
+# the report lived here in earlier versions
+from .report import LIE_SECTIONS, lie_report, lie_estimates  # noqa: F401
 from .system import LiePoissonSystem
 
 #: The keys of a ``kind: lie_poisson`` description.
@@ -69,16 +70,6 @@ LIE_POISSON_KEYS = {'kind', 'name', 'algebra', 'variables', 'parameters', 'posit
 MAX_VARIABLES = 30
 #: Most parameters of a description.
 MAX_PARAMETERS = 500
-
-#: Sections of :func:`lie_report`.
-LIE_SECTIONS = {
-    'hamiltonian': "the Hamiltonian",
-    'equations': "the Lie-Poisson equations",
-    'casimirs': "the polynomial Casimirs of the algebra",
-    'integrals': "the polynomial first integrals of degree <= 2",
-    'stationary': "stationary motions (Routh-Lyapunov) with their stability",
-}
-
 
 def _names(data, key, source, required=False, limit=None):
     value = data.get(key)
@@ -271,167 +262,3 @@ def _algebra(algebra_data, variables, parser, source):
         return constants
     raise DescriptionError(f"unknown key {brief(kind)}: expected poisson_matrix or "
                            "structure_constants", entry='algebra', source=source)
-
-
-def _formula(lines, label, expr, indent="  "):
-    lines.append(f"{indent}{label}{expr}")
-    lines.append(f"{indent}  LaTeX: {latex(expr)}")
-
-
-def lie_report(system, sections=None, analysis=True, budget=None, failed=None):
-    r"""
-    A text report of a Lie--Poisson system: the Hamiltonian, the equations
-    (text and LaTeX), the Casimirs, the polynomial first integrals of degree
-    `\le 2` besides `H` and the Casimirs, and the stationary motions over
-    `H`, the Casimirs and those integrals, with their stability.
-
-    INPUT:
-
-    - ``system`` -- a :class:`~sage_dynsym.lie.system.LiePoissonSystem`
-    - ``sections`` -- (default: all) keys of :data:`LIE_SECTIONS` (others
-      are ignored)
-    - ``analysis`` -- (default: ``True``) whether to include the
-      stationary motions
-    - ``budget`` -- (optional) the size budget of each section, in
-      polynomial terms (see :func:`lie_estimates`): a section whose estimate
-      is larger is one line saying so
-    - ``failed`` -- (optional) a list: the titles of the sections that
-      failed on an error that is not the package's own are appended to it
-
-    A section that fails is one line saying why; the others are still
-    printed.
-
-    EXAMPLES: see the module documentation. ::
-
-        sage: from sage_dynsym.lie.system import LiePoissonSystem
-        sage: from sage_dynsym.lie.description import lie_report
-        sage: M1 = var('M1')
-        sage: print(lie_report(LiePoissonSystem('so3', M1^2/2), sections=['integrals']))
-        == Lie-Poisson system on so3: variables M1, M2, M3 ==
-        Polynomial first integrals of degree <= 2 besides H and the Casimirs:
-          M1
-            LaTeX: M_{1}
-
-    The budget bounds every section::
-
-        sage: M2, M3 = var('M2 M3')
-        sage: print(lie_report(LiePoissonSystem('so3', (M1 + 2*M2 + 3*M3)^200), budget=10^5))
-        == Lie-Poisson system on so3: variables M1, M2, M3 ==
-        Hamiltonian:
-        ...
-        Lie-Poisson equations dx/dt = {x, H}: skipped, the Lie-Poisson equations (terms of J_ij times those of dH/dx_j): about 1.21e+05 polynomial terms, over the budget of 100000 (raise it with --budget)
-        Casimirs (polynomial, degree <= 4):
-          M1^2 + M2^2 + M3^2
-            LaTeX: M_{1}^{2} + M_{2}^{2} + M_{3}^{2}
-        Polynomial first integrals of degree <= 2 besides H and the Casimirs: skipped, ...
-        Stationary motions (Routh-Lyapunov over H, the Casimirs): skipped, ...
-    """
-    wanted = set(LIE_SECTIONS if sections is None else sections) & set(LIE_SECTIONS)
-    if not analysis:
-        wanted.discard('stationary')
-    failed = [] if failed is None else failed
-    estimates = lie_estimates(system) if budget is not None else {}
-    what = system.structure().name() or "a Poisson structure"
-    head = f"Lie-Poisson system on {what}: variables {', '.join(map(str, system.variables()))}"
-    lines = [f"== {system.name()} ({head}) ==" if system.name() else f"== {head} =="]
-
-    def run(key, title, body):
-        if key not in wanted:
-            return
-        out = []
-        try:
-            if key in estimates and estimates[key][1] > budget:
-                raise BudgetError(estimates[key][0], estimate=estimates[key][1], budget=budget)
-            body(out)
-        except BudgetError as err:
-            lines.append(f"{title}: skipped, {err.message} (raise it with --budget)")
-            return
-        except DynSymError as err:
-            lines.append(f"{title}: not available ({err})")
-            return
-        except Exception as err:    # one line, never a traceback
-            lines.append(f"{title}: section failed: {type(err).__name__}: {err}")
-            failed.append(title)
-            return
-        lines.append(f"{title}:")
-        lines.extend(out)
-
-    run('hamiltonian', "Hamiltonian", lambda out: _formula(out, "H = ", system.hamiltonian()))
-
-    def equations(out):
-        for x, e in zip(system.variables(), system.equations()):
-            _formula(out, f"d{x}/dt = ", e)
-    run('equations', "Lie-Poisson equations dx/dt = {x, H}", equations)
-
-    def casimirs(out):
-        for C in system.casimirs():
-            _formula(out, "", C)
-        if not system.casimirs():
-            out.append("  none")
-    run('casimirs', "Casimirs (polynomial, degree <= 4)", casimirs)
-
-    found = []
-
-    def integrals(out):
-        found.extend(system.polynomial_integrals(2, new_only=True))
-        for F in found:
-            _formula(out, "", F)
-        if not found:
-            out.append("  none (for generic parameter values)")
-    run('integrals', "Polynomial first integrals of degree <= 2 besides H and the Casimirs",
-        integrals)
-    run('stationary', "Stationary motions (Routh-Lyapunov over H, the Casimirs"
-        + (" and the integrals above)" if found else ")"),
-        lambda out: _stationary(system, found, out))
-    return "\n".join(lines)
-
-
-def lie_estimates(system):
-    r"""
-    The size estimates of the sections of :func:`lie_report`, in polynomial
-    terms (see :func:`~sage_dynsym.algebra.size.polynomial_terms`),
-    computed from the data alone, before the sections: a dict from the
-    section keys to pairs ``(what, estimate)``.
-
-    - ``equations`` -- `\sum_{ij}` (terms of `J_{ij}`) (terms of
-      `\partial H/\partial x_j`): the expanded right-hand sides;
-    - ``casimirs`` -- the monomials of degree `\le 4` in the `n` variables
-      times the terms of `J`: the coefficient matrix of the search;
-    - ``integrals`` -- the monomials of degree `\le 2` times the terms of the
-      equations, and the Casimirs of degree `\le 2`;
-    - ``stationary`` -- the terms of `H` times `2^n` (the exact solver
-      splits the system into cases), and the Casimirs.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.lie.system import LiePoissonSystem
-        sage: from sage_dynsym.lie.description import lie_estimates
-        sage: M1, M2, M3 = var('M1 M2 M3')
-        sage: E = lie_estimates(LiePoissonSystem('so3', (M1^2 + M2^2 + M3^2)/2))
-        sage: {key: estimate for key, (_, estimate) in E.items()}
-        {'casimirs': 204, 'equations': 6, 'integrals': 108, 'stationary': 228}
-    """
-    from ..algebra.size import polynomial_terms
-    from .integrals import basis_size
-    x, J = system.variables(), system.poisson_matrix()
-    n = len(x)
-    H = system.hamiltonian()
-    structure = sum(polynomial_terms(e) for e in J.list())
-    equations = sum(polynomial_terms(J[i, j]) * polynomial_terms(H.diff(x[j]))
-                    for i in range(n) for j in range(n) if not J[i, j].is_zero())
-    # at least one term per variable: an abelian algebra (J = 0) still builds
-    # the whole basis
-    casimirs = basis_size(n, 4) * max(structure, n)
-    return {
-        'equations': ("the Lie-Poisson equations (terms of J_ij times those of dH/dx_j)",
-                      equations),
-        'casimirs': ("the Casimirs of degree <= 4 (monomials times the terms of J)", casimirs),
-        'integrals': ("the integrals of degree <= 2 (monomials times the terms of the "
-                      "equations)", basis_size(n, 2) * max(equations + structure, n)),
-        'stationary': ("the stationary motions (terms of H times 2^n for n variables, and the "
-                       "Casimirs)", polynomial_terms(H) * 2 ** n + casimirs),
-    }
-
-
-def _stationary(system, integrals, out):
-    out.extend(system.stationary_solutions(integrals).report_lines())

@@ -80,6 +80,7 @@ from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
+from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
                         MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
 
@@ -208,6 +209,28 @@ class LiePoissonSystem(Model, NumericalMethods):
         what = self._structure.name()
         where = r"\mathfrak{%s}" % what if what else r"\mathbb{R}^{%d}" % len(self.variables())
         return r"H = %s \text{ on } %s" % (latex(self._H), where)
+
+    def report_title(self):
+        r"""The heading of the system's report (see :mod:`~sage_dynsym.lie.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem('so3', var('M1')^2/2).report_title()
+            '== Lie-Poisson system on so3: variables M1, M2, M3 =='
+        """
+        return report_title(self)
+
+    def report_sections(self):
+        r"""The sections of the system's report (see :mod:`~sage_dynsym.lie.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: [s.key for s in LiePoissonSystem('so3', var('M1')^2/2).report_sections()]
+            ['hamiltonian', 'equations', 'casimirs', 'integrals', 'stationary']
+        """
+        return report_sections(self)
 
     def name(self):
         r"""
@@ -515,6 +538,29 @@ class LiePoissonSystem(Model, NumericalMethods):
             lam^3 - 1/12*lam
         """
         return _linearize(self.equations(), at, self.variables())
+
+    def free_linear_system(self, at=None):
+        r"""
+        The first-approximation system at ``at`` (a dict over the
+        variables; the others 0, by default the origin): what
+        :func:`~sage_dynsym.scale.maps.stability_map` maps (a Lie--Poisson
+        system has no sources to switch off).
+
+        EXAMPLES: the rotation about the second axis; Euler's classical
+        result `\lambda^2 = -(1/A_2 - 1/A_1)(1/A_2 - 1/A_3) M_2^2` (unstable
+        about the middle axis)::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3, A1, A2, A3, lam = var('M1 M2 M3 A1 A2 A3 lam')
+            sage: S = LiePoissonSystem('so3', (M1^2/A1 + M2^2/A2 + M3^2/A3)/2)
+            sage: p = S.free_linear_system({M2: 1}).characteristic_polynomial(lam)
+            sage: bool((p/(A1^2*A2^2*A3^2)).expand()
+            ....:      == (lam^3 + (1/A2 - 1/A1)*(1/A2 - 1/A3)*lam).expand())
+            True
+        """
+        point = {x: SR(0) for x in self.variables()}
+        point.update({SR(k): SR(v) for k, v in (at or {}).items()})
+        return self.linearize(point)
 
     def subs(self, values):
         r"""

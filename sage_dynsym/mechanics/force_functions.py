@@ -347,20 +347,58 @@ def check_force_function(force_function, coordinates, entry="force_function"):
     for q in coordinates:
         forbidden[velocity(q)] = f"the velocity {velocity(q)}"
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
-    if isinstance(force_function, UniformGravity):
-        parts = list(force_function.acceleration())
-    elif isinstance(force_function, NewtonianField):
-        nu, r, e = force_function.parameters()
-        parts = [nu, r] + list(e)
-    else:
-        try:
-            parts = [SR(force_function)]
-        except (TypeError, ValueError):
-            raise ModelError("expected a force field or an expression U(q, t), got "
-                             f"{force_function!r}", entry=entry) from None
+    try:
+        parts = force_term_data(force_function)
+    except (TypeError, ValueError):
+        raise ModelError("expected a force field or an expression U(q, t), got "
+                         f"{force_function!r}", entry=entry) from None
     for part in parts:
         for v in SR(part).variables():
             if v in forbidden:
                 raise ModelError(f"the force function U(q, t) cannot depend on {forbidden[v]}; "
                                  "velocity-dependent forces belong in the dissipation function "
                                  "or the generalized forces", entry=entry)
+
+
+def force_term_data(term):
+    r"""
+    The expressions a force-function term is made of: the acceleration of
+    a :class:`UniformGravity`, the parameters of a :class:`NewtonianField`,
+    or the expression itself (what the checks and the size estimates read).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.force_functions import (force_term_data,
+        ....:                                                    UniformGravity, NewtonianField)
+        sage: g, nu, r, k, x = var('g nu r k x')
+        sage: force_term_data(UniformGravity([0, 0, -g])), force_term_data(-k*x^2/2)
+        ([0, 0, -g], [-1/2*k*x^2])
+        sage: force_term_data(NewtonianField(nu, r, [0, 0, 1]))
+        [nu, r, 0, 0, 1]
+    """
+    if isinstance(term, UniformGravity):
+        return list(term.acceleration())
+    if isinstance(term, NewtonianField):
+        nu, r, e = term.parameters()
+        return [nu, r] + list(e)
+    return [SR(term)]
+
+
+def force_term_to_dict(term, text=str):
+    r"""
+    A force-function term as an entry of the ``force_function`` key of a
+    description file; ``text`` writes an expression.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.force_functions import force_term_to_dict, UniformGravity
+        sage: g, k, x = var('g k x')
+        sage: force_term_to_dict(UniformGravity([0, 0, -g])), force_term_to_dict(-k*x^2/2)
+        ({'uniform_gravity': ['0', '0', '-g']}, {'expression': '-1/2*k*x^2'})
+    """
+    if isinstance(term, UniformGravity):
+        return {'uniform_gravity': [text(c) for c in term.acceleration()]}
+    if isinstance(term, NewtonianField):
+        nu, r, e = term.parameters()
+        return {'newtonian': {'nu': text(nu), 'r': text(r), 'direction': [text(c) for c in e]}}
+    return {'expression': text(term)}

@@ -47,6 +47,7 @@ from ..symbols import (velocity, acceleration, t, time_derivative, check_mechani
                        sage_numbers)
 from ..arguments import symbol_arguments
 from ..io.fields import text as _text
+from .report import report_title, report_sections
 from ..algebra.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
 from ..dynamics.lagrangian import Lagrangian
@@ -359,7 +360,7 @@ class MechanicalSystem(Model):
             sage: d['bodies'][0]['rotations'], d['force_function']
             ([[3, 'psi'], [1, 'theta']], {'uniform_gravity': ['0', '0', '-g']})
         """
-        from .force_functions import UniformGravity, NewtonianField
+        from .force_functions import force_term_to_dict
         out = {'kind': 'mechanical'}
         if self.name():
             out['name'] = self.name()
@@ -368,16 +369,7 @@ class MechanicalSystem(Model):
         if self._positive:
             out['positive'] = [str(p) for p in self._positive]
         out['coordinates'] = [str(q) for q in self.coordinates()]
-        terms = []
-        for field in self.force_terms():
-            if isinstance(field, UniformGravity):
-                terms.append({'uniform_gravity': [_text(c) for c in field.acceleration()]})
-            elif isinstance(field, NewtonianField):
-                nu, r, e = field.parameters()
-                terms.append({'newtonian': {'nu': _text(nu), 'r': _text(r),
-                                            'direction': [_text(c) for c in e]}})
-            else:
-                terms.append({'expression': _text(field)})
+        terms = [force_term_to_dict(field, _text) for field in self.force_terms()]
         if terms:
             # one term keeps the single-mapping form
             out['force_function'] = terms if isinstance(self._force, list) else terms[0]
@@ -849,6 +841,51 @@ class MechanicalSystem(Model):
         """
         return [c for term in self.force_terms() if hasattr(term, 'conditions')
                 for c in term.conditions()]
+
+    def report_title(self):
+        r"""The heading of the system's report (see :mod:`~sage_dynsym.mechanics.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).report_title()
+            '== spherical pendulum (mechanical system: 1 body, coordinates psi, theta) =='
+        """
+        return report_title(self)
+
+    def report_sections(self):
+        r"""The sections of the system's report (see
+        :mod:`~sage_dynsym.mechanics.report`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: [s.name for s in load(example_path('spherical_pendulum.yaml')).report_sections()][1:4]
+            ['Lagrangian', 'Constraints', 'Lagrange equations']
+        """
+        return report_sections(self)
+
+    def free_linear_system(self, at=None):
+        r"""
+        The Lagrangian (dissipation included) linearized around the
+        coordinates ``at`` (a dict; by default all coordinates 0), at rest:
+        what :func:`~sage_dynsym.scale.maps.stability_map` maps.
+
+        EXAMPLES: a damped cart pendulum around its lower equilibrium::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('cart_pendulum_spring_damper.yaml'))
+            sage: S.free_linear_system().order(), S.free_linear_system().variables()
+            (2, [y, theta])
+        """
+        from ..analysis import linearize
+        L = self.lagrangian()
+        point = {q: SR(0) for q in L.coordinates()}
+        point.update(at or {})
+        return linearize(L, point)
 
     def loads(self):
         r"""

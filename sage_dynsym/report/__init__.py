@@ -4,8 +4,9 @@ a model as plain text with LaTeX
 
 - :mod:`~sage_dynsym.report.sections` -- the sections a report offers and
   its default size budget (what the command line shows; no Sage);
-- :mod:`~sage_dynsym.report.writer` -- :func:`report`, each section
-  estimated against the budget before it is computed.
+- :mod:`~sage_dynsym.report.writer` -- :func:`report`: the sections each
+  kind of model names (:meth:`~sage_dynsym.dynamics.model.Model.report_sections`),
+  each estimated against the budget before it is computed.
 
 The names are imported on first use, so that the command line answers
 ``--help`` without loading Sage.
@@ -20,9 +21,15 @@ import importlib
 
 from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 
-_SOURCE = {name: '.writer' for name in (
-    'report', 'polynomial_terms', 'determinant_terms', 'lagrangian_estimate',
-    'circuit_estimate', 'equations_estimate', 'characteristic_estimate')}
+_SOURCE = {
+    'report': '.writer',
+    # the size estimates live with what they estimate; importable from here
+    # as in earlier versions
+    'polynomial_terms': '..analysis.size', 'determinant_terms': '..analysis.size',
+    'lagrangian_estimate': '..mechanics.report', 'circuit_estimate': '..circuits.report',
+    'equations_estimate': '..dynamics.lagrangian_report',
+    'characteristic_estimate': '..dynamics.lagrangian_report',
+}
 
 __all__ = ['DEFAULT_BUDGET', 'SECTIONS', 'ANALYSIS_SECTIONS'] + list(_SOURCE)
 

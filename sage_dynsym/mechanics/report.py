@@ -1,0 +1,310 @@
+r"""
+The report of a mechanical system
+
+The sections (see :mod:`sage_dynsym.dynamics.reporting`) of the report of
+a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`: its Lagrangian,
+the constraints, the Lagrange equations and the constraint forces, the
+Routh function for the cyclic coordinates, the stationary motions (or
+equilibria, or the steady motions of its operating points, linearized)
+with their stability, and the Hamiltonian. The Lagrangian's size is
+estimated from the description (:func:`lagrangian_estimate`) before it is
+derived.
+
+EXAMPLES::
+
+    sage: from sage_dynsym import load
+    sage: from sage_dynsym.description import example_path
+    sage: S = load(example_path('spherical_pendulum.yaml'))
+    sage: S.report_title()
+    '== spherical pendulum (mechanical system: 1 body, coordinates psi, theta) =='
+    sage: [s.key for s in S.report_sections()][:4]
+    [None, 'lagrangian', ('lagrangian', 'equations'), 'equations']
+"""
+from sage.symbolic.ring import SR
+
+from ..algebra.size import polynomial_terms, determinant_terms, TERMS_CAP
+from ..dynamics.lagrangian_report import (equations_lines, constraint_forces_lines,
+                                          routh_function, routh_lines, hamiltonian_lines,
+                                          stationary_estimate, stationary_lines,
+                                          equations_estimate, check_routh_scheme)
+from ..dynamics.reporting import ReportSection, formula_lines, conditions_lines
+from .force_functions import force_term_data
+
+
+def lagrangian_estimate(system):
+    r"""
+    The size estimate of a mechanical system's Lagrangian, checked before it
+    is derived: `n^2 2^r T^2` polynomial terms for `n` coordinates (the
+    entries of the mass matrix), `r` the most angles that vary along one
+    chain of bodies from the inertial frame (each such rotation at most
+    doubles the terms of a direction cosine) and `T` the most terms of one
+    datum of the description (a mass, an inertia entry, a vector component,
+    the force function), squared as velocities are.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: from sage_dynsym.mechanics.report import lagrangian_estimate
+        sage: lagrangian_estimate(load(example_path('spherical_pendulum.yaml')))
+        16
+        sage: from sage_dynsym import MechanicalSystem, RigidBody
+        sage: x, m, k = var('x m k')
+        sage: lagrangian_estimate(MechanicalSystem([RigidBody('b', joint=[x, 0, 0],
+        ....:                                               mass=(m + k)^3)], [x]))
+        16
+    """
+    depth, data = [0], []
+    for k, body in enumerate(system.bodies(), 1):
+        turning = sum(1 for _, angle in body.rotations() if SR(angle).variables())
+        depth.append(depth[system.parent_index(k)] + turning)
+        data += [body.mass()] + body.inertia().list() + list(body.joint())
+        data += list(body.velocity() or ()) + list(body.mass_center())
+    for term in system.force_terms():
+        data += force_term_data(term)
+    for load in system.loads():
+        data += load.expressions()
+    # the constraints given (the derived contact conditions of rolling disks
+    # enter the equations linearly, through their multipliers)
+    data += system.constraint_set().given_holonomic()
+    largest = max([polynomial_terms(e) for e in data] + [1])
+    n = len(system.coordinates())
+    return min(n ** 2 * 2 ** max(depth) * largest ** 2, TERMS_CAP)
+
+
+def report_title(system):
+    r"""
+    The heading of the report of ``system``.
+
+    EXAMPLES: see the module documentation.
+    """
+    coordinates = ", ".join(map(str, system.coordinates()))
+    n = len(system.bodies())
+    return (f"== {system.name() or 'mechanical system'} (mechanical system: {n} "
+            f"bod{'y' if n == 1 else 'ies'}, coordinates {coordinates}) ==")
+
+
+def report_sections(system):
+    r"""
+    The sections of the report of the mechanical system ``system`` (see the
+    module documentation), in order.
+
+    EXAMPLES: see the module documentation, and
+    :func:`~sage_dynsym.report.writer.report`.
+    """
+    positive = system.positive_parameters()
+
+    def lagrangian(context):
+        L = context.results['lagrangian'] = system.lagrangian()
+        cyclic = L.cyclic_coordinates()
+        context.results['cyclic'] = cyclic
+        # some but not all coordinates cyclic: a Routh function reduces the system
+        context.results['partial'] = bool(cyclic) and len(cyclic) < len(L.coordinates())
+        return ["Lagrangian L = T + U:"] + formula_lines("", L.expr())
+
+    def constraints(context):
+        if not system.constraint_set().lines():
+            return None
+        return (["Constraints (holonomic: f(q, t) = 0; on the velocities: linear in them, "
+                 "not integrable):"] + ["  " + line for line in system.constraint_set().lines()])
+
+    def not_cyclic(context):
+        L, cyclic = context.results['lagrangian'], context.results['cyclic']
+        # absent from L but not cyclic: a damper, a force or a constraint acts on it
+        acted = [q for q in L.coordinates() if q not in cyclic and not L.expr().has(q)]
+        if not acted:
+            return None
+        return [f"Not cyclic (absent from L, but the dissipation, a generalized force or a "
+                f"constraint acts on them): {', '.join(map(str, acted))}"]
+
+    def routh(context):
+        L, cyclic = context.results['lagrangian'], context.results['cyclic']
+        if not context.results['partial']:
+            return None
+        R = context.results['routh'] = routh_function(L, cyclic, context)
+        return routh_lines(R, cyclic, context) if context.shown else []
+
+    sections = [
+        ReportSection(None, "Conditions", lambda context: conditions_lines(system)),
+        ReportSection('lagrangian', "Lagrangian", lagrangian,
+                      estimate=lambda context: lagrangian_estimate(system),
+                      what="the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a "
+                           "chain, terms of the data)"),
+        ReportSection(('lagrangian', 'equations'), "Constraints", constraints,
+                      needs=['lagrangian']),
+        ReportSection('equations', "Lagrange equations",
+                      lambda context: equations_lines(context.results['lagrangian'], context),
+                      needs=['lagrangian']),
+        ReportSection('equations', "Constraint forces",
+                      lambda context: constraint_forces_lines(context.results['lagrangian'],
+                                                              context),
+                      needs=['lagrangian']),
+        ReportSection(('routh', 'stationary'), "Not cyclic", not_cyclic, needs=['lagrangian']),
+        ReportSection('routh', "Routh function", routh, needs=['lagrangian']),
+    ]
+    points = system.operating_points()
+    for name, point in points.items():
+        sections += _operating_point_sections(system, name, point, positive)
+    if system.nonholonomic_constraints():
+        if not points:
+            sections.append(ReportSection(
+                'stationary', "Stationary motions",
+                lambda context: ["Stationary motions: give operating points "
+                                 "(operating_points:) to linearize about steady motions with "
+                                 "velocity constraints"], analysis=True))
+    else:
+        sections.append(_stationary_section(positive))
+    sections.append(ReportSection(
+        'hamiltonian', "Hamiltonian",
+        lambda context: hamiltonian_lines(context.results['lagrangian'], context),
+        needs=['lagrangian']))
+    return sections
+
+
+def _stationary_section(positive):
+    def stationary(context):
+        L, R = context.results['lagrangian'], context.results.get('routh')
+        if context.results['partial'] and R is None:
+            return ["Stationary motions: not available (the Routh function is not)"]
+        F = R if R is not None else L
+        context.check("the stationary motions (terms of the function at rest times 2^k for "
+                      "k unknowns)", stationary_estimate(F))
+        return stationary_lines(L, R, positive)
+
+    return ReportSection(
+        'stationary',
+        lambda results: "Stationary motions" if results.get('partial') else "Equilibria",
+        stationary, needs=['lagrangian'], uses=['routh'], analysis=True)
+
+
+def _operating_point_sections(system, name, point, positive):
+    key = f"operating point {name!r}"
+
+    def motion(context):
+        lines, found = operating_point_lines(system, context.results['lagrangian'], point,
+                                             context)
+        context.results[key] = found
+        return lines
+
+    def stability(context):
+        return stability_condition_lines(*context.results[key], positive, context)
+
+    return [ReportSection(('stationary', key), f"Stationary motions ({key})", motion,
+                          needs=['lagrangian'], analysis=True),
+            ReportSection('stationary', f"Stability conditions ({key})", stability,
+                          needs=[key], analysis=True)]
+
+
+def operating_point_lines(system, L, point, context):
+    r"""
+    A steady motion of ``system`` (its operating ``point``): the
+    linearization in the coordinates of the operating point, and its
+    characteristic polynomial. Returns the lines and the pair
+    ``(polynomial, variable)``.
+
+    EXAMPLES: the report of ``examples/whipple_bicycle.yaml``
+    (``sage-dynsym examples/whipple_bicycle.yaml``); see also
+    :mod:`~sage_dynsym.analysis.steady`.
+    """
+    from ..analysis import linearize
+    context.check("the linearization about the operating point (the terms of the Lagrange "
+                  "equations)", equations_estimate(L))
+    linear = linearize(system, point)
+    motion = linear.steady_motion()
+    given = ", ".join(f"{k} = {v}" for k, v in list(point.at().items())
+                      + list(point.velocities().items()))
+    lines = [f"Stationary motions (operating point {point.name()!r}: {given}), linearized "
+             f"in {', '.join(map(str, motion.coordinates()))}:"]
+    lines.append(f"  independent speeds: {', '.join(map(str, motion.speeds()))}"
+                 + "".join(f"; {k} = {v} to first order"
+                           for k, v in motion.dependent_coordinates().items())
+                 + (f"; left out (ignorable): {', '.join(map(str, motion.dropped()))}"
+                    if motion.dropped() else "")
+                 + (f"; decoupled speeds: {', '.join(map(str, motion.decoupled_speeds()))}"
+                    if motion.decoupled_speeds() else ""))
+    lines.append("  velocities along the motion: " + ", ".join(
+        f"{k} = {v}" for k, v in motion.velocities().items()))
+    if motion.multipliers():
+        lines.append("  constraint multipliers along the motion: " + ", ".join(
+            f"{k} = {v}" for k, v in motion.multipliers().items()))
+    lines.append("  M z'' + S z' + W z = 0 with")
+    for label, X in (("M", linear.M()), ("S", linear.S()), ("W", linear.W())):
+        lines += formula_lines(f"{label} = ", [list(row) for row in X.rows()], indent="    ")
+    lam = SR.var('lambda_')
+    context.check("the characteristic polynomial (permanent bound of the determinant)",
+                  determinant_terms([[polynomial_terms(a) + polynomial_terms(b)
+                                      + polynomial_terms(c) for a, b, c in zip(*rows)]
+                                     for rows in zip(linear.M().rows(), linear.S().rows(),
+                                                     linear.W().rows())]))
+    poly = linear.characteristic_polynomial(lam).expand()
+    lines += formula_lines("characteristic polynomial: ", poly)
+    return lines, (poly, lam)
+
+
+def stability_condition_lines(poly, lam, positive, context):
+    r"""
+    The stability conditions of a characteristic polynomial ``poly`` in
+    ``lam`` with the parameters ``positive`` declared positive: the
+    Liénard--Chipart conditions of its roots other than `\lambda = 0`, or,
+    when it is even (no dissipation), the conditions for simple purely
+    imaginary roots. Sines and cosines of parameters (a steer axis tilt)
+    are symbols there.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.report import stability_condition_lines
+        sage: from sage_dynsym.dynamics.reporting import ReportContext
+        sage: lam, c, k = var('lam c k')
+        sage: stability_condition_lines(lam^3 + c*lam^2 + k*lam, lam, [], ReportContext({}, 100))
+        ['  lambda = 0 is a root of multiplicity 1 (neutral directions: a family of steady motions); the conditions concern the other roots',
+         '  Lienard-Chipart conditions (each > 0) for asymptotic stability:',
+         '    k',
+         '      LaTeX: k',
+         '    c',
+         '      LaTeX: c']
+    """
+    from ..analysis import lienard_chipart_conditions, real_negative_roots_conditions
+    from ..algebra.trigonometric import TrigPolynomialRing
+    lines = []
+    zeros = 0
+    while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:
+        poly, zeros = (poly / lam).expand(), zeros + 1
+    if zeros:
+        lines.append(f"  lambda = 0 is a root of multiplicity {zeros} (neutral directions: a "
+                     "family of steady motions); the conditions concern the other roots")
+    if poly.degree(lam) < 1:
+        return lines
+    ring = TrigPolynomialRing.for_expressions([poly], [lam], fractions=True)
+    symbols = {}
+    for angle in ring.angles():
+        tag = len(symbols) // 2
+        symbols[SR(angle).cos()] = SR.var(f'dynsym_cos{tag}')
+        symbols[SR(angle).sin()] = SR.var(f'dynsym_sin{tag}')
+    back = {v: k for k, v in symbols.items()}
+    flat = poly.subs(symbols)
+    odd = [flat.coefficient(lam, k) for k in range(1, flat.degree(lam) + 1, 2)]
+    declared = ", with the declared positive parameters:" if positive else ":"
+    if all(SR(c).is_zero() for c in odd):
+        # no dissipation: stable in first approximation when the roots are
+        # simple and purely imaginary, i.e. h(mu) of p = h(lambda^2) has
+        # simple negative real roots
+        mu = SR.var('mu_')
+        even = flat.subs({lam: mu.sqrt()}).expand()
+        check_routh_scheme(even, mu, context.budget)
+        conditions = real_negative_roots_conditions(even, mu, positive=positive,
+                                                    budget=context.budget)
+        lines.append("  no asymptotic stability (the odd coefficients vanish: no dissipation);"
+                     " the roots are simple and purely imaginary iff (each > 0)" + declared)
+    else:
+        check_routh_scheme(flat, lam, context.budget)
+        conditions = lienard_chipart_conditions(flat, lam, positive=positive,
+                                                budget=context.budget)
+        if not conditions:
+            lines.append("  asymptotically stable for all admissible parameters (the "
+                         "Lienard-Chipart conditions hold identically)")
+            return lines
+        lines.append("  Lienard-Chipart conditions (each > 0) for asymptotic stability"
+                     + declared)
+    for c in conditions:
+        lines += formula_lines("", SR(c).subs(back), indent="    ")
+    return lines
