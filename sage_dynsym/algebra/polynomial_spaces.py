@@ -38,6 +38,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+#: Most minors of one block the rank-drop conditions may enumerate.
+MAX_MINORS = 200_000
+
 
 class PolynomialContext:
     r"""

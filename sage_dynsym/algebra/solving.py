@@ -424,6 +424,22 @@ class AlgebraicSolution(SageObject):
                 entry="conditions")
         return list(self._conditions)
 
+    def known_conditions(self):
+        r"""
+        The conditions found for this solution to exist: those of
+        :meth:`conditions`, without its refusal when whether an implicit
+        solution is real could not be decided (then only the conditions
+        found, e.g. nonzero denominators, for listing the solution).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.solving import solve_exactly
+            sage: x, a, b = var('x a b')
+            sage: solve_exactly([a*x - b], [x])[0].known_conditions()
+            [a != 0]
+        """
+        return list(self._conditions)
+
     def real_points(self):
         r"""
         For an implicit solution without parameters: its real points, exact
@@ -1259,7 +1275,7 @@ def solve_transcendental(equations, unknowns, reason=None, positive=()):
         with maxima_without_questions("solve_exactly", positive):
             found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
     except AnalysisError:
-        raise
+        raise       # Maxima asked for a sign (an AnalysisError is also a ValueError)
     except (TypeError, ValueError, NotImplementedError, RuntimeError):
         raise failure from None
     solutions = []

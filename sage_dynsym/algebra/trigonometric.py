@@ -46,14 +46,16 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+from ..errors import AnalysisError
 
 _ZERO, _ONE = SR(0), SR(1)
 
 
-class NotPolynomial(ValueError):
+class NotPolynomial(AnalysisError):
     r"""
     Raised when an expression cannot be written in a
     :class:`TrigPolynomialRing`; callers then work in the symbolic ring.
+    An :class:`~sage_dynsym.errors.AnalysisError` (so also a ``ValueError``).
 
     EXAMPLES::
 
@@ -64,8 +66,9 @@ class NotPolynomial(ValueError):
         ....: except NotPolynomial as error:
         ....:     print(error)
         sqrt(a) is not polynomial in the rotation variables and parameters
-        sage: issubclass(NotPolynomial, ValueError)
-        True
+        sage: from sage_dynsym.errors import AnalysisError
+        sage: issubclass(NotPolynomial, AnalysisError), issubclass(NotPolynomial, ValueError)
+        (True, True)
     """
 
 

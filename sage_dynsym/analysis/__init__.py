@@ -32,4 +32,5 @@ from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
 from .damping_limit import small_damping_limit, DampingLimit
 from .spectrum import spectrum_regions
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
-                         StationarySolution, StationarySolutions, ModifiedRouthLyapunov)
+                         StationarySolution, StationarySolutions, StationaryProblem,
+                         solve_stationary, ModifiedRouthLyapunov)

@@ -85,15 +85,15 @@ from sage.structure.element import Element
 
 from ..errors import AnalysisError
 from ..algebra.conditions import Unexpanded, reduce_conditions, conditions_as_expressions
-# simplify_conditions moved to the algebra; its old place still serves it
+# simplify_conditions and FACTOR_LIMIT moved to the algebra; their old place still serves them
 from ..algebra.conditions import simplify_conditions  # noqa: F401
+from ..algebra.polynomials import FACTOR_LIMIT  # noqa: F401
 from ..algebra.polynomials import (parameter_ring, to_sr, is_constant, constant_value,
                                    is_polynomial_ring)
 
 #: Default limit on the term multiplications of one product in the
 #: fraction-free Routh scheme before determinants are left unexpanded.
 DEFAULT_BUDGET = 5 * 10**6
-
 
 
 # ---------------------------------------------------------------------------

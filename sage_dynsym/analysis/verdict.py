@@ -42,7 +42,6 @@ EXAMPLES::
     'unstable'
 """
 from sage.structure.sage_object import SageObject
-from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..algebra.conditions import region_holds

@@ -63,12 +63,10 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..arguments import count, flag
-from ..algebra.polynomial_spaces import (LinearProblem, Reducer, degree, primitive, products,
-                                         rank_modulo, generic_point, minors,
+from ..algebra.polynomial_spaces import (LinearProblem, MAX_MINORS, Reducer, degree, primitive,
+                                         products, rank_modulo, generic_point, minors,
                                          schur_after_constant_pivots)
 
-#: Most minors of one block the rank-drop conditions may enumerate.
-MAX_MINORS = 200_000
 #: How deep the search for families inside families goes.
 MAX_LEVELS = 3
 #: Largest degree searched (``max_degree=`` raises it).
