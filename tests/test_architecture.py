@@ -60,6 +60,15 @@ def package_of(name):
     return found[2] if found else None
 
 
+def imported_from(node, base):
+    r"""The absolute name of the module a ``from ... import`` statement
+    ``node`` reads, in a module of the package ``base`` (its name parts)."""
+    if node.level:
+        parent = base[:len(base) - node.level + 1] if node.level > 1 else base
+        return ".".join(parent + ([node.module] if node.module else []))
+    return node.module or ""
+
+
 def imports(name, path, known):
     r"""The package modules that ``name`` imports (resolved): ``from P
     import x`` depends on the module ``P.x`` where there is one, else on
@@ -77,11 +86,7 @@ def imports(name, path, known):
         if isinstance(node, ast.Import):
             found |= {resolve(a.name) for a in node.names}
         elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                parent = base[:len(base) - node.level + 1] if node.level > 1 else base
-                stem = ".".join(parent + ([node.module] if node.module else []))
-            else:
-                stem = node.module or ""
+            stem = imported_from(node, base)
             for a in node.names:
                 candidate = f"{stem}.{a.name}"
                 found.add(candidate if candidate in known else resolve(stem))
@@ -199,11 +204,7 @@ def private_uses(name, source, known, is_package=False):
                     if private_module_outside(a.name):
                         found.append((node.lineno, a.name))
         elif isinstance(node, ast.ImportFrom):
-            if node.level:
-                parent = base[:len(base) - node.level + 1] if node.level > 1 else base
-                stem = ".".join(parent + ([node.module] if node.module else []))
-            else:
-                stem = node.module or ""
+            stem = imported_from(node, base)
             if not stem.startswith("sage_dynsym"):
                 continue
             if private_module_outside(stem):
