@@ -29,7 +29,7 @@ from .conditions import (positive_conditions, positive_conditions_all, nonzero_c
 from .determinants import fraction_free_det
 from .quantifier_elimination import exists
 from .regions import simplify_region, intersection, negation, partition
-from .size import polynomial_terms
+from .size import polynomial_terms, determinant_terms, matrix_terms
 from .solving import solve_exactly, normalize
 from .translation import Translation, NotAlgebraic
 from .trig_linear import TrigFractionField
@@ -38,6 +38,6 @@ from .trigonometric import TrigPolynomialRing, trig_rational_simplify
 __all__ = ['positive_conditions', 'positive_conditions_all', 'nonzero_conditions',
            'simplify_conditions', 'simplify_conjunction', 'conjunction', 'as_relational',
            'fraction_free_det', 'exists', 'simplify_region', 'intersection', 'negation',
-           'partition', 'polynomial_terms', 'solve_exactly', 'normalize', 'Translation',
-           'NotAlgebraic', 'TrigFractionField', 'TrigPolynomialRing',
-           'trig_rational_simplify']
+           'partition', 'polynomial_terms', 'determinant_terms', 'matrix_terms',
+           'solve_exactly', 'normalize', 'Translation', 'NotAlgebraic', 'TrigFractionField',
+           'TrigPolynomialRing', 'trig_rational_simplify']

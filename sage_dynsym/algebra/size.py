@@ -94,7 +94,7 @@ def determinant_terms(counts):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.size import determinant_terms
+        sage: from sage_dynsym.algebra.size import determinant_terms
         sage: determinant_terms([[2, 1], [1, 3]])
         7
         sage: determinant_terms([[1, 1, 0], [1, 1, 1], [0, 1, 1]])   # tridiagonal
@@ -144,7 +144,7 @@ def matrix_terms(M):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.size import matrix_terms
+        sage: from sage_dynsym.algebra.size import matrix_terms
         sage: x, y = var('x y')
         sage: matrix_terms(matrix([[x + y, 0], [1, x*y]]))
         [[2, 0], [1, 1]]
