@@ -222,22 +222,7 @@ def model_from_dict(data, source=None):
     if not isinstance(kind, str) or kind not in registry:
         raise DescriptionError(f"expected one of {', '.join(map(repr, registry))}, got "
                                f"{brief(kind)}", entry='kind', source=source)
-    builtin = _builtin_formats().get(kind)
-    if builtin is not None and registry[kind] is builtin[0]:
-        # the package's own kinds: their formats move onto the classes
-        return builtin[1](data, source)
     return registry[kind].from_dict(data, source)
-
-
-def _builtin_formats():
-    from .circuits.circuit import Circuit
-    from .circuits.description import circuit_from_dict
-    from .lie.description import lie_poisson_from_dict
-    from .lie.system import LiePoissonSystem
-    from .mechanics.system import MechanicalSystem
-    return {'mechanical': (MechanicalSystem, mechanical_system_from_dict),
-            'circuit': (Circuit, circuit_from_dict),
-            'lie_poisson': (LiePoissonSystem, lie_poisson_from_dict)}
 
 
 def _load(path, results, source):

@@ -52,6 +52,8 @@ from ..dynamics.model import Model
 from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
 from .elements import parse_entries
+from .forms import circuit_forms
+from .free_system import free_linear_system
 from .graph import CircuitGraph
 from .inductance import inductance_conditions
 from .report import report_title, report_sections
@@ -205,6 +207,23 @@ class Circuit(NumericalMethods, Model):
             functions['lagrangian'] = lambda: self.lagrangian(method="loop")
             functions['node_lagrangian'] = lambda: self.lagrangian(method="node")
         return functions
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The circuit of a description mapping (``kind: circuit``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: Circuit.from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
+            Circuit with 2 branches on 2 nodes
+        """
+        # the format module builds on this class: imported when first used
+        from .description import circuit_from_dict
+        return circuit_from_dict(data, source)
 
     def to_dict(self):
         r"""
@@ -763,6 +782,36 @@ class Circuit(NumericalMethods, Model):
         """
         return {SR.var(b.name): 0 for b in self._branches
                 if b.kind in ('voltage_source', 'current_source')}
+
+    def equation_forms(self):
+        r"""
+        The forms of the circuit's equations: Brayton--Moser, Lagrange
+        (loop and node), Hamilton (loop); see :mod:`~sage_dynsym.circuits.forms`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 0, 'C1']])
+            sage: C.equation_forms()['Lagrange (node)']().equations
+            [('0', C1*ddphi2 - (E1 - dphi2)/R1)]
+        """
+        return circuit_forms(self)
+
+    def free_linear_system(self, at=None):
+        r"""
+        The state equations with the sources off, linearized around the
+        zero state (``at``: other state values): what
+        :func:`~sage_dynsym.scale.maps.stability_map` maps (see
+        :mod:`~sage_dynsym.circuits.free_system`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Circuit
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 0, 'C1']])
+            sage: S = C.free_linear_system(); S.variables(), S.jacobian()
+            ([u1], [-1/(C1*R1)])
+        """
+        return free_linear_system(self, at)
 
     def report_title(self):
         r"""The heading of the circuit's report (see :mod:`~sage_dynsym.circuits.report`).

@@ -125,6 +125,7 @@ from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
 from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
 from ..numerics.methods import NumericalMethods
+from ..numerics.expressions import symbols_and_functions
 from .natural_equations import natural_equations, SymbolicCalculus
 from .compact import equations_cse
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
@@ -218,9 +219,9 @@ class Lagrangian(NumericalMethods, SageObject):
         if decomposition is not None:
             A, A1, A0 = decomposition
             self._structure = (A, A1, SR(A0))
-            if expr is None:
-                expr = natural_form(A, A1, A0, self._velocities)
-        self._expr = SR(expr)
+        # with a decomposition, L itself is formed only when asked for (the
+        # equations of a large model do not need it)
+        self._expression = None if expr is None and decomposition is not None else SR(expr)
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
         if forces is None:
@@ -238,6 +239,13 @@ class Lagrangian(NumericalMethods, SageObject):
                                   + self._forces + self._constraints))
             taken |= {momentum(q) for q in self._coordinates}
             self._multipliers = constraint_multipliers(len(self._constraints), taken)
+
+    @property
+    def _expr(self):
+        if self._expression is None:
+            A, A1, A0 = self._structure
+            self._expression = natural_form(A, A1, A0, self._velocities)
+        return self._expression
 
     def _checked_constraints(self, constraints):
         constraints = [SR(f) for f in constraints]
@@ -779,7 +787,7 @@ class Lagrangian(NumericalMethods, SageObject):
             sage: L.lagrange_equations('nonsense')
             Traceback (most recent call last):
             ...
-            ValueError: form must be 'structured' or 'direct', got 'nonsense'
+            ModelError: form: expected 'structured' or 'direct', got 'nonsense'
         """
         if form is None:
             form = "structured" if self.is_natural() else "direct"
@@ -788,7 +796,7 @@ class Lagrangian(NumericalMethods, SageObject):
         elif form == "direct":
             equations = self._direct_equations()
         else:
-            raise ValueError(f"form must be 'structured' or 'direct', got {form!r}")
+            raise ModelError(f"expected 'structured' or 'direct', got {form!r}", entry='form')
         return [e + extra - force for e, extra, force in
                 zip(equations, self._nonpotential_terms(), self._constraint_forces())]
 
@@ -860,12 +868,29 @@ class Lagrangian(NumericalMethods, SageObject):
             1/2*dx^2 + 1/2*x^2
             sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2)._conserved_energy() is None
             True
+
+        From the decomposition of a mechanical system, `T_2 - T_0 - U`::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).lagrangian()._conserved_energy()
+            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
         """
-        if (self._expr.has(t) or not self._dissipation.is_zero()
-                or any(not f.is_zero() for f in self._forces)
+        if self._structure is not None:
+            # h = T_2 - T_0 - U from the decomposition: nothing expanded (a
+            # memoized walk looks for t: large models share subexpressions)
+            A, A1, A0 = self._structure
+            if str(t) in symbols_and_functions(list(A.list()) + list(A1) + [A0])[0]:
+                return None
+            energy = natural_form(A, [0] * len(self._velocities), -A0, self._velocities)
+        elif self._expr.has(t):
+            return None
+        else:
+            energy = None
+        if (not self._dissipation.is_zero() or any(not f.is_zero() for f in self._forces)
                 or any(SR(f).has(t) for f in self._constraints)):
             return None
-        return self.energy()
+        return self.energy() if energy is None else energy
 
     def equations_record(self):
         r"""

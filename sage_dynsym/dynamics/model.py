@@ -17,7 +17,8 @@ registered under its :attr:`~Model.kind` (see
 - its equations: :meth:`Model.equations`, and
   :meth:`Model.equations_record`, the neutral record
   (:mod:`sage_dynsym.analysis.motion`) that the analysis and the numerics
-  read; :meth:`Model.characteristic_functions`;
+  read; :meth:`Model.characteristic_functions`; :meth:`Model.equation_forms`
+  (the classical forms of the equations, for pages and worksheets);
 - :meth:`Model.free_linear_system`: the linear system with the sources
   switched off, whose stability :func:`~sage_dynsym.scale.maps.stability_map`
   maps;
@@ -184,6 +185,19 @@ class Model(SageObject):
         """
         raise NotImplementedError("<abstract method characteristic_functions>")
 
+    def equation_forms(self):
+        r"""
+        The classical forms of the model's equations: a dict from the
+        name of each form (in the order a page offers them) to a function
+        building its :class:`~sage_dynsym.dynamics.derivations.Derivation`
+        (the keyword ``cyclic`` names the cyclic coordinates of a Routh
+        form).
+
+        EXAMPLES: see the subclasses and
+        :mod:`~sage_dynsym.dynamics.derivations`.
+        """
+        raise NotImplementedError("<abstract method equation_forms>")
+
     # -- analysis and reports ----------------------------------------------
 
     def free_linear_system(self, at=None):
@@ -213,3 +227,38 @@ class Model(SageObject):
         EXAMPLES: see the subclasses.
         """
         raise NotImplementedError("<abstract method report_sections>")
+
+
+def linearization_point(at, variables, what="state variable"):
+    r"""
+    The point of a :meth:`Model.free_linear_system`: every variable 0,
+    then the values of ``at`` (a dict over ``variables``, symbols or their
+    names); a name that is not one of ``variables`` is refused before any
+    work.
+
+    INPUT:
+
+    - ``at`` -- a dict or ``None``
+    - ``variables`` -- the state variables (or coordinates) of the system
+    - ``what`` -- (default: ``"state variable"``) what they are, for the
+      message
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.model import linearization_point
+        sage: x, y = var('x y')
+        sage: linearization_point({'y': 1}, [x, y])
+        {x: 0, y: 1}
+        sage: linearization_point({var('z'): 1}, [x, y], what="coordinate")
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: z is not a coordinate of the model; the coordinates are x, y
+    """
+    from sage.symbolic.ring import SR
+    from ..arguments import known_symbols
+    from ..errors import AnalysisError
+    at = at or {}
+    keys = known_symbols(list(at), list(variables), 'at', error=AnalysisError, what=what)
+    point = {v: SR(0) for v in variables}
+    point.update({k: SR(v) for k, v in zip(keys, at.values())})
+    return point

@@ -28,42 +28,33 @@ EXAMPLES::
     0 &= {\ddot{\theta}} l^{2} m - ...
     \end{aligned}
 """
-from collections import namedtuple
-
 from sage.misc.latex import latex
-from sage.symbolic.ring import SR
 
+from ..dynamics.derivations import Derivation, lagrangian_forms  # noqa: F401 (Derivation's earlier home)
+from ..dynamics.model import Model
 from ..errors import ModelError
 
-#: ``function`` is a pair (name, expression); ``equations`` a list of pairs
-#: ``(lhs, rhs)`` meaning ``lhs = rhs`` (``lhs`` a LaTeX string).
-Derivation = namedtuple("Derivation", ["form", "function", "equations", "note"])
-Derivation.__doc__ = r"""
-One form of the equations of a model, as returned by :func:`derive`.
 
-EXAMPLES::
+def equation_forms(model):
+    r"""
+    The forms of the equations of ``model``: a dict from names to builders
+    of :class:`~sage_dynsym.dynamics.derivations.Derivation` -- the model's
+    own :meth:`~sage_dynsym.dynamics.model.Model.equation_forms`, or for a
+    Lagrangian (or Routh function) given directly its Lagrange, Routh and
+    Hamilton forms.
 
-    sage: from sage_dynsym import load
-    sage: from sage_dynsym.description import example_path
-    sage: from sage_dynsym.interact.forms import derive
-    sage: d = derive(load(example_path('spherical_pendulum.yaml')), 'Lagrange')
-    sage: d.form, d.function, d.note
-    ('Lagrange', ('L', 1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)), None)
-    sage: d.equations[1]
-    ('0', -dpsi^2*l^2*m*cos(theta)*sin(theta) + ddtheta*l^2*m - g*l*m*sin(theta))
-"""
+    EXAMPLES::
 
-MECHANICAL_FORMS = ['Lagrange', 'Routh', 'Hamilton']
-CIRCUIT_FORMS = ['Brayton-Moser', 'Lagrange (loop)', 'Lagrange (node)', 'Hamilton (loop)']
-
-
-def _is_circuit(model):
-    return getattr(model, 'kind', None) == 'circuit'
-
-
-def _is_characteristic_function(model):
-    # a Lagrangian (or Routh function) given directly, not a model
-    return getattr(model, 'kind', None) is None and hasattr(model, 'lagrange_equations')
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.interact.forms import equation_forms
+        sage: from sage_dynsym.symbols import velocity
+        sage: x = var('x')
+        sage: list(equation_forms(Lagrangian(velocity(x)^2/2 - x^2/2, [x])))
+        ['Lagrange', 'Routh', 'Hamilton']
+    """
+    if isinstance(model, Model):
+        return model.equation_forms()
+    return lagrangian_forms(lambda: model)
 
 
 def available_forms(model):
@@ -78,26 +69,7 @@ def available_forms(model):
         sage: available_forms(load(example_path('rlc_ladder.yaml')))
         ['Brayton-Moser', 'Lagrange (loop)', 'Lagrange (node)', 'Hamilton (loop)']
     """
-    return list(CIRCUIT_FORMS if _is_circuit(model) else MECHANICAL_FORMS)
-
-
-def _lagrangian(model, form):
-    if _is_circuit(model):
-        return model.lagrangian(method="node" if "node" in form else "loop")
-    return model.lagrangian()
-
-
-def _zero_equations(coordinates, equations):
-    return [("0", e) for e in equations]
-
-
-def _state_equations(circuit):
-    rows = list(zip(circuit.state_equation_labels(latex=True), circuit.state_equations()))
-    if circuit.has_mixed_potential():
-        return Derivation('Brayton-Moser', ('P', circuit.mixed_potential()), rows, None)
-    return Derivation('Brayton-Moser', ('B', circuit.lhs_matrix()), rows,
-                      "no mixed potential (capacitor loops or inductor cut-sets, or no "
-                      "Brayton-Moser split): the state equations B x' = F by nodal analysis")
+    return list(equation_forms(model))
 
 
 def derive(model, form, cyclic=()):
@@ -106,8 +78,8 @@ def derive(model, form, cyclic=()):
 
     INPUT:
 
-    - ``model`` -- a mechanical system, a circuit or a
-      :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
+    - ``model`` -- a model (mechanical system, circuit, Lie--Poisson
+      system, ...) or a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
     - ``form`` -- one of :func:`available_forms` (a Lagrangian accepts the
       mechanical forms)
     - ``cyclic`` -- (default: ``()``) the cyclic coordinates for the Routh
@@ -152,36 +124,10 @@ def derive(model, form, cyclic=()):
         ...
         ModelError: unknown form 'Routh': expected one of Brayton-Moser, Lagrange (loop), Lagrange (node), Hamilton (loop)
     """
-    forms = MECHANICAL_FORMS if _is_characteristic_function(model) else available_forms(model)
+    forms = equation_forms(model)
     if form not in forms:
         raise ModelError(f"unknown form {form!r}: expected one of {', '.join(forms)}")
-    if form == 'Brayton-Moser':
-        return _state_equations(model)
-    L = model if _is_characteristic_function(model) else _lagrangian(model, form)
-    if form.startswith('Lagrange'):
-        return Derivation(form, ('L', L.expr()),
-                          _zero_equations(L.coordinates(), L.lagrange_equations()), None)
-    if form == 'Routh':
-        names = {str(c) for c in cyclic}
-        chosen = [q for q in L.coordinates() if str(q) in names] if names \
-            else L.cyclic_coordinates()
-        if not chosen:
-            raise ModelError("the Routh form needs at least one cyclic coordinate; "
-                             f"this Lagrangian has none among {L.coordinates()}")
-        R = L.routh(chosen)
-        return Derivation(form, ('R', R.expr()),
-                          _zero_equations(R.coordinates(), R.equations()), None)
-    H = L.hamiltonian()
-    if H.is_singular():
-        D = H.constraints()
-        rows = [("0", c) for c in D.constraints()]
-        return Derivation(form, ('H', H.expr()), rows,
-                          f"singular Lagrangian, Dirac's scheme: {D}")
-    rows = []
-    for q, p, (dq, dp) in zip(H.coordinates(), H.momenta(), H.equations()):
-        rows.append((f"\\dot{{{latex(q)}}}", dq))
-        rows.append((f"\\dot{{{latex(p)}}}", dp))
-    return Derivation(form, ('H', H.expr()), rows, None)
+    return forms[form](cyclic=cyclic)
 
 
 def derivation_latex(derivation):

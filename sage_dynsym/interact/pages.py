@@ -32,6 +32,7 @@ EXAMPLES::
     sage: [c.description for c in w.kwargs_widgets]
     ['form']
 """
+from ..dynamics.model import Model
 from ..errors import DynSymError
 
 
@@ -58,23 +59,21 @@ def equations_explorer(model):
     import ipywidgets as W
     from IPython.display import display, Math
     from sage.repl.ipython_kernel.interact import sage_interactive
-    from .forms import (available_forms, derive, derivation_latex, _is_circuit,
-                        _is_characteristic_function, MECHANICAL_FORMS)
-    direct = _is_characteristic_function(model)
-    forms = MECHANICAL_FORMS if direct else available_forms(model)
-    if _is_circuit(model):
-        coordinates = []
-    else:
-        L = model if direct else model.lagrangian()
+    from .forms import derive, derivation_latex, equation_forms
+    forms = list(equation_forms(model))
+    coordinates = []
+    if 'Routh' in forms:            # a Lagrangian form: the choice of cyclic coordinates
+        L = model.characteristic_functions()['lagrangian']() if isinstance(model, Model) \
+            else model
         coordinates = [str(q) for q in L.coordinates()]
         cyclic = [str(q) for q in L.cyclic_coordinates()]
-    name = getattr(model, 'name', lambda: None)() or 'the model'
+    name = (model.name() if isinstance(model, Model) else None) or 'the model'
     controls = {'form': W.ToggleButtons(options=forms, value=forms[0], description='form')}
     if coordinates:
         controls['cyclic'] = W.SelectMultiple(options=coordinates, value=cyclic,
                                               description='cyclic', rows=min(4, len(coordinates)))
 
-    def page(form, **cyclic_choice):     # no cyclic control for circuits
+    def page(form, **cyclic_choice):     # no cyclic control without a Routh form
         cyclic = cyclic_choice.get('cyclic', ())
         print(f"{form} equations of {name}")
         try:

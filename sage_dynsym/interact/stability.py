@@ -65,6 +65,8 @@ from sage.plot.graphics import Graphics
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..analysis.solving import AlgebraicSolution
+from ..analysis.stationary import StationarySolution
 from ..errors import AnalysisError
 
 
@@ -105,10 +107,10 @@ class StabilityStudy(SageObject):
     def __init__(self, rhs, variables, at, lhs_matrix=None, positive=()):
         from sage.matrix.constructor import matrix
         self._variables = [SR(v) for v in variables]
-        if hasattr(at, 'values') and callable(at.values) and hasattr(at, 'conditions'):
+        if isinstance(at, AlgebraicSolution):
             at = at.values()        # a solution of the exact core (solve_exactly)
-        elif hasattr(at, 'point') and callable(at.point):
-            at = at.point()         # a stationary solution
+        elif isinstance(at, StationarySolution):
+            at = at.point()
         at = {SR(k): SR(v) for k, v in at.items()}
         fixed = {k: v for k, v in at.items() if k not in self._variables}
         self._rhs = [SR(f).subs(fixed) for f in rhs]

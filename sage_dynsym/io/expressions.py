@@ -24,14 +24,11 @@ import numbers
 import re
 from fractions import Fraction
 
-from sage.misc.latex import latex
 from sage.misc.parser import Parser
 from sage.symbolic.ring import SR
 from sage.symbolic.function_factory import function as symbolic_function
 from sage.rings.integer import Integer
 from sage.rings.rational_field import QQ
-from sage.functions import all as sage_functions
-from sage.symbolic.constants import pi, e as euler_e, I as imaginary_unit
 
 from ..errors import ExpressionError, brief
 from ..symbols import t, ALLOWED_FUNCTIONS, CONSTANTS

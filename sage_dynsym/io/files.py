@@ -21,7 +21,7 @@ import tempfile
 from ..errors import DescriptionError, brief
 
 
-def write_atomically(path, write):
+def write_atomically(path, write, binary=False):
     r"""
     Write a text file so that it is either the old file or the complete new
     one, whatever happens (an exception, Ctrl-C, a killed process, a crash
@@ -37,7 +37,9 @@ def write_atomically(path, write):
     INPUT:
 
     - ``path`` -- the file name
-    - ``write`` -- a function of a text stream (UTF-8)
+    - ``write`` -- a function of a text stream (UTF-8), or of a binary
+      stream with ``binary=True``
+    - ``binary`` -- (default: ``False``) whether the file is binary
 
     EXAMPLES::
 
@@ -54,6 +56,9 @@ def write_atomically(path, write):
         KeyboardInterrupt
         sage: open(path).read(), os.listdir(folder)
         ('kind: circuit\n', ['f.yaml'])
+        sage: write_atomically(path, lambda s: s.write(b'\x00\x01'), binary=True)
+        sage: open(path, 'rb').read()
+        b'\x00\x01'
 
     TESTS::
 
@@ -79,7 +84,7 @@ def write_atomically(path, write):
         raise DescriptionError(f"cannot write the file: {reason}",
                                source=name if name.isprintable() else brief(name)) from None
     try:
-        with os.fdopen(fd, 'w', encoding='utf-8') as stream:
+        with (os.fdopen(fd, 'wb') if binary else os.fdopen(fd, 'w', encoding='utf-8')) as stream:
             write(stream)
             stream.flush()
             os.fsync(stream.fileno())

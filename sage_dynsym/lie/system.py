@@ -69,7 +69,6 @@ import re
 
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
-from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..analysis import linearize as _linearize
@@ -80,6 +79,7 @@ from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
+from .format import read_lie_poisson_system
 from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
                         MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
@@ -558,9 +558,8 @@ class LiePoissonSystem(Model, NumericalMethods):
             ....:      == (lam^3 + (1/A2 - 1/A1)*(1/A2 - 1/A3)*lam).expand())
             True
         """
-        point = {x: SR(0) for x in self.variables()}
-        point.update({SR(k): SR(v) for k, v in (at or {}).items()})
-        return self.linearize(point)
+        from ..dynamics.model import linearization_point
+        return self.linearize(linearization_point(at, self.variables()))
 
     def subs(self, values):
         r"""
@@ -651,6 +650,44 @@ class LiePoissonSystem(Model, NumericalMethods):
             M1^2/A
         """
         return {'hamiltonian': self.hamiltonian}
+
+    def equation_forms(self):
+        r"""
+        The form of the system's equations: the Lie--Poisson equations
+        `\dot x_i = \{x_i, H\}` (a
+        :class:`~sage_dynsym.dynamics.derivations.Derivation`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3')
+            sage: d = LiePoissonSystem('so3', (M1^2 + M2^2)/2 + M3^2).equation_forms()['Lie-Poisson']()
+            sage: d.function, d.equations[0]
+            (('H', 1/2*M1^2 + 1/2*M2^2 + M3^2), ('\\dot{M_{1}}', M2*M3))
+        """
+        from sage.misc.latex import latex
+        from ..dynamics.derivations import Derivation
+
+        def derivation(cyclic=()):
+            rows = [(f"\\dot{{{latex(x)}}}", f) for x, f in zip(self.variables(), self.equations())]
+            return Derivation('Lie-Poisson', ('H', self.hamiltonian()), rows, None)
+        return {'Lie-Poisson': derivation}
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The Lie--Poisson system of a description mapping (``kind: lie_poisson``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.lie.format.read_lie_poisson_system`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem.from_dict({'kind': 'lie_poisson', 'algebra': 'so3',
+            ....:                             'hamiltonian': 'M3^2/2'}).equations()
+            [M2*M3, -M1*M3, 0]
+        """
+        return read_lie_poisson_system(cls, data, source)
 
     def to_dict(self):
         r"""

@@ -253,6 +253,38 @@ class NewtonianField(SageObject):
         return U
 
 
+def split_force_terms(system):
+    r"""
+    The terms of the force function of ``system`` in two parts: the summed
+    acceleration of its uniform gravity fields (``None`` if there is none)
+    and the sum of the other terms' force functions, not expanded (see
+    :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.force_terms`).
+    Recursive assemblies take gravity as an acceleration of the inertial
+    frame and differentiate only the rest.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+        sage: from sage_dynsym.mechanics.force_functions import split_force_terms
+        sage: z, m, g, k = var('z m g k')
+        sage: S = MechanicalSystem([RigidBody('b', joint=[0, 0, z], mass=m)], [z],
+        ....:                      force_function=[UniformGravity([0, 0, -g]), -k*z^2/2,
+        ....:                                      UniformGravity([1, 0, 0])])
+        sage: split_force_terms(S)
+        ((1, 0, -g), -1/2*k*z^2)
+    """
+    gravity, rest = None, SR(0)
+    for term in system.force_terms():
+        if isinstance(term, UniformGravity):
+            g = term.acceleration()
+            gravity = g if gravity is None else tuple(a + b for a, b in zip(gravity, g))
+        elif hasattr(term, 'evaluate'):
+            rest += term.evaluate(system)
+        else:
+            rest += SR(term)
+    return gravity, rest
+
+
 #: How far from 1 the squared length of a direction given by floating-point
 #: components may be (rounding).
 UNIT_TOLERANCE = 1e-12

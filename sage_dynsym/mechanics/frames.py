@@ -32,7 +32,10 @@ EXAMPLES::
     sage: r.components(0)
     (sin(psi)*sin(theta), -cos(psi)*sin(theta), cos(theta))
 """
+import operator
+
 from sage.matrix.constructor import matrix
+from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
 from ..algebra.trigonometric import symbolic_trig
@@ -75,20 +78,43 @@ def cross(u, w):
     return (u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0])
 
 
-def _rotate(components, axis, trig, inverse=False):
+def _rotate(components, axis, trig, inverse=False, product=operator.mul):
     r"""
     Apply the elementary rotation (or its inverse) to a 3-tuple: only the two
     components orthogonal to the axis change. ``trig`` is the pair
-    `(\cos, \sin)` of the angle.
+    `(\cos, \sin)` of the angle; ``product`` multiplies.
     """
     c, s = trig
     if inverse:
         s = -s
     i, j = {1: (1, 2), 2: (2, 0), 3: (0, 1)}[axis]
     out = list(components)
-    out[i] = c * components[i] - s * components[j]
-    out[j] = s * components[i] + c * components[j]
+    # -s, not the product, is negated: negating a held product evaluates it
+    out[i] = product(c, components[i]) + product(-s, components[j])
+    out[j] = product(s, components[i]) + product(c, components[j])
     return tuple(out)
+
+
+def held_product(a, b):
+    r"""
+    `a b`, left unevaluated when a factor is a sum (and none a number): Sage's
+    evaluation of a product of large nested sums costs far more than the
+    product itself (tenths of a second each for the chain of 15 links with
+    numerical data of ``bench/bench_pipeline.py``), and the recursive
+    equations multiply such sums throughout.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.frames import held_product
+        sage: x, y = var('x y')
+        sage: held_product(x + y, x - y), held_product(x, y), held_product(2, x + y)
+        ((x + y)*(x - y), x*y, 2*x + 2*y)
+    """
+    a, b = SR(a), SR(b)
+    if a.is_numeric() or b.is_numeric() or not (a.operator() is add_vararg
+                                                or b.operator() is add_vararg):
+        return a * b
+    return a.mul(b, hold=True)
 
 
 class FrameTree:
@@ -215,10 +241,11 @@ class FrameTree:
             a, b = self._parent[a], self._parent[b]
         return a
 
-    def express(self, components, source, target):
+    def express(self, components, source, target, product=operator.mul):
         r"""
         Components in frame ``target`` of the vector with ``components`` in
-        frame ``source``; rotates only through the frames between them.
+        frame ``source``; rotates only through the frames between them
+        (``product``: the multiplication, e.g. :func:`held_product`).
 
         EXAMPLES::
 
@@ -232,14 +259,14 @@ class FrameTree:
         top = self.common_ancestor(source, target)
         v = tuple(components)
         while source != top:
-            v = _rotate(v, self._axis[source], self._trig[source])
+            v = _rotate(v, self._axis[source], self._trig[source], product=product)
             source = self._parent[source]
         down = []
         while target != top:
             down.append(target)
             target = self._parent[target]
         for frame in reversed(down):
-            v = _rotate(v, self._axis[frame], self._trig[frame], inverse=True)
+            v = _rotate(v, self._axis[frame], self._trig[frame], inverse=True, product=product)
         return v
 
     def direction_cosines(self, frame, reference=0):

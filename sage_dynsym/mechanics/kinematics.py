@@ -30,7 +30,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..symbols import time_derivative, t
-from .frames import FrameTree, FrameVector, cross
+from .frames import FrameTree, FrameVector, cross, held_product
 
 
 class Kinematics:
@@ -244,10 +244,14 @@ class Kinematics:
         return True
 
     @cached_method
-    def recursive_equations(self):
+    def recursive_equations(self, gravity=None):
         r"""
         The kinetic part of the equations (5), assembled body by body over the
-        symbolic ring (Newton--Euler recursion; see :meth:`recursive_applies`).
+        symbolic ring (Newton--Euler recursion; see :meth:`recursive_applies`);
+        with ``gravity`` (a triple: the acceleration of a uniform field, in the inertial
+        axes) also the field's terms `-\partial U/\partial q_i`, as an
+        acceleration `-g` of the inertial frame [Fea2008]_ (Section 5.3), so
+        that the force function is never differentiated.
 
         With the partial velocities `\partial V_{0k}/\partial\dot q_i` and
         `\partial W_k/\partial\dot q_i` of the joint and the body, its
@@ -275,7 +279,8 @@ class Kinematics:
 
         OUTPUT: a tuple ``(A, A1, T0, h)``: the decomposition (4) of the
         kinetic energy (nested lists and an expression) and the list of `h_i`,
-        so that `\sum_r A_{ir}\ddot q_r + h_i` is the kinetic part of `E_i`.
+        so that `\sum_r A_{ir}\ddot q_r + h_i` is the kinetic part of `E_i`
+        (with the gravity terms when ``gravity`` is given).
 
         EXAMPLES: the spherical pendulum (equations (9) of Example 1, without
         gravity)::
@@ -289,6 +294,12 @@ class Kinematics:
             sage: A, h
             ([[l^2*m*sin(theta)^2, 0], [0, l^2*m]],
              [2*dpsi*dtheta*l^2*m*cos(theta)*sin(theta), -dpsi^2*l^2*m*cos(theta)*sin(theta)])
+
+        With gravity, `-\partial U/\partial\theta = g l m\sin\theta`
+        is added::
+
+            sage: K.recursive_equations((0, 0, -var('g')))[3][1]
+            -dpsi^2*l^2*m*cos(theta)*sin(theta) - g*l*m*sin(theta)
 
         TESTS:
 
@@ -334,7 +345,7 @@ class Kinematics:
 
             def down(v, p=p, f=f):
                 # components in f of the vector with components v in p
-                return tree.express(v, p, f)
+                return tree.express(v, p, f, product=held_product)
 
             angle_rate = rate(tree.angle(f))
             w = down(W[p])
@@ -347,7 +358,8 @@ class Kinematics:
                      for J, d in zip(JW[p], partials(angle_rate))]
         # per body, in its own axes: V0k at rest, a0k at zero accelerations,
         # the partial velocities
-        V0, acc, JV = {0: _ZERO3}, {0: _ZERO3}, {0: [None] * n}
+        base = _ZERO3 if gravity is None else tuple(-SR(g) for g in gravity)
+        V0, acc, JV = {0: _ZERO3}, {0: base}, {0: [None] * n}
         A = [[[] for _ in range(n)] for _ in range(n)]
         A1, T0, h = [[] for _ in range(n)], [], [[] for _ in range(n)]
         for k, body in enumerate(self._bodies, 1):
@@ -358,9 +370,9 @@ class Kinematics:
             w, e = W[fj], eps[fj]
             a = _add(acc[j], cross(e, r), cross(w, cross(w, r)),
                      [2 * c for c in cross(w, dr)], [rate(c) for c in dr])
-            acc[k] = tree.express(a, fj, fk)
+            acc[k] = tree.express(a, fj, fk, product=held_product)
             V0[k] = tree.express(_add(V0[j], cross(W0[fj], r), [at_rest(c) for c in dr]),
-                                 fj, fk)
+                                 fj, fk, product=held_product)
             dr_partials = [partials(c) for c in dr]
             JV[k] = []
             for i in range(n):
@@ -368,16 +380,19 @@ class Kinematics:
                                      [d[i] for d in dr_partials]) if J is not None]
                 J = _add(*parts)
                 JV[k].append(None if all(x.is_trivial_zero() for x in J)
-                             else tree.express(J, fj, fk))
+                             else tree.express(J, fj, fk, product=held_product))
             if body.is_massless():
                 continue
             m = SR(body.mass())
             c = [SR(x) for x in body.mass_center()]
             inertia = body.inertia()
 
+            # the nonzero entries (a symbolic truth test would try to prove them nonzero)
+            rows = [[(b, inertia[a, b]) for b in range(3) if not inertia[a, b].is_trivial_zero()]
+                    for a in range(3)]
+
             def Theta(u):
-                return [zero.add(*[inertia[a, b] * u[b] for b in range(3) if inertia[a, b]])
-                        for a in range(3)]
+                return [zero.add(*[x * u[b] for b, x in row]) for row in rows]
 
             def momentum(V, Wv):
                 # the linear and angular momentum (about O_k) of velocities V, W
@@ -414,7 +429,7 @@ def _add(*vectors):
 
 
 def _dot(u, w):
-    return SR(0).add(*[a * b for a, b in zip(u, w)
+    return SR(0).add(*[held_product(a, b) for a, b in zip(u, w)
                        if not (a.is_trivial_zero() or b.is_trivial_zero())])
 
 

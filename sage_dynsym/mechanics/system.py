@@ -56,8 +56,10 @@ from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form, is_singular, has_full_row_rank
 from ..numerics.values import check_model_values
-from .force_functions import check_force_function
+from .force_functions import check_force_function, split_force_terms, UniformGravity
 from .constraint_set import ConstraintSet
+from .format import read_mechanical_system
+from .frames import held_product
 from .kinematics import Kinematics
 from .loads import load_list
 from .operating_points import checked_operating_points, operating_point_to_dict
@@ -347,6 +349,39 @@ class MechanicalSystem(Model):
         return {'lagrangian': self.lagrangian,
                 'hamiltonian': lambda: self.lagrangian().hamiltonian()}
 
+    def equation_forms(self):
+        r"""
+        The forms of the system's equations: Lagrange, Routh and Hamilton
+        (see :mod:`~sage_dynsym.dynamics.derivations`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: S.equation_forms()['Hamilton']().equations[0]
+            ('\\dot{\\psi}', p_psi/(l^2*m*sin(theta)^2))
+        """
+        from ..dynamics.derivations import lagrangian_forms
+        return lagrangian_forms(self.lagrangian)
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The mechanical system of a description mapping (``kind: mechanical``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.mechanics.format.read_mechanical_system`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: S = MechanicalSystem.from_dict({'kind': 'mechanical', 'coordinates': ['x'],
+            ....:     'parameters': ['m'], 'bodies': [{'name': 'cart', 'joint': ['x', 0, 0], 'mass': 'm'}]})
+            sage: S.lagrangian().expr()
+            1/2*dx^2*m
+        """
+        return read_mechanical_system(cls, data, source)
+
     def to_dict(self):
         r"""
         The description mapping of the system (the inverse of
@@ -549,11 +584,15 @@ class MechanicalSystem(Model):
 
     # numerics: the system's Lagrange equations run through its Lagrangian
 
-    def numerical_rhs(self, values, **options):
+    def numerical_rhs(self, values, backend='auto', algorithm='auto'):
         r"""
-        The compiled right-hand side of the Lagrange equations of
-        :meth:`lagrangian` (see
-        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.numerical_rhs`).
+        The compiled right-hand side `\dot x = f(t, x)`, `x = (q, \dot q)`,
+        with the parameter values ``values``: by the recursive algorithms
+        of rigid-body dynamics (``algorithm='recursive'``), from the
+        Lagrange equations of :meth:`lagrangian` (``'equations'``), or the
+        first when it applies (``'auto'``); see
+        :mod:`~sage_dynsym.mechanics.recursive_numerics` and
+        :func:`~sage_dynsym.numerics.rhs.numerical_rhs`.
 
         EXAMPLES::
 
@@ -563,14 +602,20 @@ class MechanicalSystem(Model):
             ....:                      force_function=-k*x^2/2)
             sage: S.numerical_rhs({m: 2, k: 8})(0, [1.0, 0.5])
             array([ 0.5, -4. ])
+            sage: S.numerical_rhs({m: 2, k: 8}, algorithm='equations')(0, [1.0, 0.5])
+            array([ 0.5, -4. ])
         """
+        from ..numerics.rhs import RightHandSide
+        from .recursive_numerics import numerical_form
         check_model_values(self, values)
-        return self.lagrangian().numerical_rhs(values, **options)
+        return RightHandSide(numerical_form(self, algorithm), values, backend)
 
-    def simulate(self, values, initial, t_end, **options):
+    def simulate(self, values, initial, t_end, *args, algorithm='auto', **options):
         r"""
-        A simulation of the Lagrange equations of :meth:`lagrangian` (see
-        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`).
+        A simulation of the system (see
+        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`:
+        the same arguments), its right-hand side computed by ``algorithm``
+        (see :meth:`numerical_rhs`).
 
         EXAMPLES: a mass on a spring, `x(t) = \cos 2t`::
 
@@ -591,8 +636,11 @@ class MechanicalSystem(Model):
             ...
             ModelError: values: m is declared positive, got -2
         """
+        from ..numerics.simulate import simulate
+        from .recursive_numerics import numerical_form
         check_model_values(self, values)
-        return self.lagrangian().simulate(values, initial, t_end, **options)
+        options.setdefault('name', self._name)
+        return simulate(numerical_form(self, algorithm), values, initial, t_end, *args, **options)
 
     def code(self, language='python', cse=True):
         r"""
@@ -882,10 +930,9 @@ class MechanicalSystem(Model):
             (2, [y, theta])
         """
         from ..analysis import linearize
+        from ..dynamics.model import linearization_point
         L = self.lagrangian()
-        point = {q: SR(0) for q in L.coordinates()}
-        point.update(at or {})
-        return linearize(L, point)
+        return linearize(L, linearization_point(at, L.coordinates(), "coordinate"))
 
     def loads(self):
         r"""
@@ -1520,19 +1567,25 @@ class MechanicalSystem(Model):
             terms = sum(e.number_of_terms() for i, row in enumerate(data[1]) for e in row[i:])
             christoffel = ('polynomial' if terms <= _POLYNOMIAL_CHRISTOFFEL_TERMS else
                            'recursive' if kinematics.recursive_applies() else 'symbolic')
-        U = self.force_function()
         if christoffel == 'recursive':
-            A, A1, T0, h = kinematics.recursive_equations()
+            # gravity enters the recursion; only the other terms, not
+            # expanded, are differentiated (nothing of the size of the tree is)
+            gravity, rest = split_force_terms(self)
+            A, A1, T0, h = kinematics.recursive_equations(gravity)
             ddq = [acceleration(q) for q in self._coordinates]
+            U = rest + sum((term.evaluate(self) for term in self.force_terms()
+                            if isinstance(term, UniformGravity)), SR(0))
 
             def recursive_equations():
-                return [SR(0).add(*[a * x for a, x in zip(row, ddq) if not a.is_trivial_zero()])
-                        + e - U.diff(q) for row, e, q in zip(A, h, self._coordinates)]
+                return [SR(0).add(*[held_product(a, x) for a, x in zip(row, ddq)
+                                    if not a.is_trivial_zero()])
+                        + e - rest.diff(q) for row, e, q in zip(A, h, self._coordinates)]
             A = matrix(SR, A)
             A.set_immutable()
             decomposition = (A, vector(SR, A1), T0 + U)
             builder = recursive_equations
         else:
+            U = self.force_function()
             decomposition = self.decomposition()
 
         def ring_equations():

@@ -7,9 +7,12 @@ with common subexpressions (:func:`~sage_dynsym.numerics.expressions.write_code`
 and returns a :class:`Kernel` computing `\dot x` from `(t, x)` and the
 parameter values:
 
-- ``'c'``: a C function that evaluates the blocks and solves `A y = b` by
-  Gaussian elimination with partial pivoting, compiled by the system's C
-  compiler (``$CC``, else ``cc``) into a shared library loaded with
+- ``'c'``: C functions that evaluate the blocks (an
+  :class:`~sage_dynsym.numerics.graph.ExpressionGraph` of the expressions,
+  written as functions of bounded size, so that the optimizer stays on
+  and fast for large models) and solve `A y = b` by Gaussian elimination
+  with partial pivoting, compiled by the system's C compiler (``$CC``,
+  else ``cc``) at ``-O2`` into a shared library loaded with
   :mod:`ctypes`. Libraries are cached by the hash of their source in
   ``$SAGE_DYNSYM_CACHE`` (default: a directory of the system's temporary
   directory), written atomically, so a model is compiled once;
@@ -49,8 +52,6 @@ from .expressions import identifier, write_code
 _LIBRARIES = {}
 _PROTOTYPE = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p,
                               ctypes.c_void_p)
-#: sources longer than this (characters) are compiled without optimization
-_OPTIMIZE_BELOW = 50000
 _PRIVATE = None
 
 _SOLVE_C = r"""
@@ -122,11 +123,77 @@ def _header(form, language):
             f"({', '.join(map(str, coords))})")
 
 
+def graph_c_source(graph, outputs, header, solve=None, pivots=()):
+    r"""
+    The C source of ``int dynsym_rhs(double t, const double *x, const double
+    *p, double *out)`` computing the nodes ``outputs`` of ``graph`` (an
+    :class:`~sage_dynsym.numerics.graph.ExpressionGraph` over the inputs
+    ``t``, ``x``, ``p``), in functions of bounded size.
+
+    - without ``solve``: ``out[i]`` is ``outputs[i]``; the function returns
+      1 when one of the ``pivots`` (nodes) is zero or an output is not
+      finite;
+    - with ``solve = (k, lead, size)``: the first ``k`` outputs are `b`,
+      the next ``k*k`` the matrix `A` (by rows) of `A y = b`, solved by
+      Gaussian elimination (returns 1 when `A` is singular); ``out`` (of
+      ``size`` entries) is the last ``lead`` entries of ``x`` followed by
+      the first entries of `y`.
+
+    A header comment ``header`` opens the source.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.graph import ExpressionGraph
+        sage: from sage_dynsym.numerics.compiler import graph_c_source
+        sage: G = ExpressionGraph(); x = G.input('x', 0)
+        sage: print(graph_c_source(G, [G.neg(G.call('sin', x))], 'an example'))
+        // an example
+        #include <math.h>
+        static void dynsym_part0(double t, const double *x, const double *p, double *w)
+        {
+            const double v3 = sin(x[0]);
+            const double v4 = -v3;
+            w[0] = v4;
+        }
+        int dynsym_rhs(double t, const double *x, const double *p, double *out)
+        {
+            static _Thread_local double w[1];
+            dynsym_part0(t, x, p, w);
+            out[0] = w[0];
+            for (int i = 0; i < 1; i++) if (!isfinite(out[i])) return 1;
+            return 0;
+        }
+    """
+    parts, count, slots = graph.c_functions(list(outputs) + list(pivots))
+    size = max(slots, default=-1) + 1
+    lines = [f'// {header}', '#include <math.h>']
+    if solve is not None:
+        lines.append(_SOLVE_C.strip('\n'))
+    lines += [parts, 'int dynsym_rhs(double t, const double *x, const double *p, double *out)',
+              '{', f'    static _Thread_local double w[{max(size, 1)}];']
+    lines += [f'    dynsym_part{i}(t, x, p, w);' for i in range(count)]
+    if solve is None:
+        m = len(outputs)
+        lines += [f'    if (!(w[{slot}] != 0.0)) return 1;' for slot in slots[m:]]
+        lines += [f'    out[{i}] = w[{slot}];' for i, slot in enumerate(slots[:m])]
+        lines.append(f'    for (int i = 0; i < {m}; i++) if (!isfinite(out[i])) return 1;')
+    else:
+        k, lead, size = solve
+        lines.append(f'    double _A[{k * k}], _b[{k}];')
+        lines += [f'    _b[{i}] = w[{slot}];' for i, slot in enumerate(slots[:k])]
+        lines += [f'    _A[{i}] = w[{slot}];' for i, slot in enumerate(slots[k:k + k * k])]
+        lines.append(f'    if (dynsym_solve({k}, _A, _b)) return 1;')
+        lines += [f'    out[{i}] = x[{size - lead + i}];' for i in range(lead)]
+        lines += [f'    out[{lead + i}] = _b[{i}];' for i in range(size - lead)]
+    lines += ['    return 0;', '}', '']
+    return '\n'.join(lines)
+
+
 def c_source(form):
     r"""
     The C source of the right-hand side of ``form``: a function
     ``int dynsym_rhs(double t, const double *x, const double *p, double *xdot)``
-    (returns 1 when the matrix is singular).
+    (returns 1 when the matrix is singular), see :func:`graph_c_source`.
 
     EXAMPLES::
 
@@ -135,44 +202,40 @@ def c_source(form):
         sage: from sage_dynsym.numerics.compiler import c_source
         sage: x, dx, ddx, k = var('x dx ddx k')
         sage: src = c_source(NumericalForm(SecondOrderEquations([ddx + k*sin(x)], [x], [dx], [ddx])))
-        sage: print(src[src.index('int dynsym_rhs'):])
-        int dynsym_rhs(double _t, const double *_x, const double *_p, double *_out)
+        sage: print(src[src.index('static void'):])
+        static void dynsym_part0(double t, const double *x, const double *p, double *w)
         {
-            const double t = _t;
-            const double x = _x[0];
-            const double dx = _x[1];
-            const double k = _p[0];
+            const double v6 = sin(x[0]);
+            const double v8 = p[0]*v6;
+            const double v9 = -v8;
+            w[0] = v9;
+            w[1] = 1.0;
+        }
+        int dynsym_rhs(double t, const double *x, const double *p, double *out)
+        {
+            static _Thread_local double w[2];
+            dynsym_part0(t, x, p, w);
             double _A[1], _b[1];
-            _b[0] = -k*sin(x);
-            _A[0] = 1.0;
+            _b[0] = w[0];
+            _A[0] = w[1];
             if (dynsym_solve(1, _A, _b)) return 1;
-            _out[0] = _x[1];
-            _out[1] = _b[0];
+            out[0] = x[1];
+            out[1] = _b[0];
             return 0;
         }
     """
-    inputs, exprs, k, solve = _layout(form)
-    names = symbol_names(inputs)
-    temps, results = write_code(exprs, names, 'c', entry='numerical_rhs')
-    state = form.state()
-    lines = [_header(form, 'c'), '#include <math.h>', _SOLVE_C,
-             'int dynsym_rhs(double _t, const double *_x, const double *_p, double *_out)', '{',
-             f'    const double {names[_t]} = _t;']
-    lines += [f'    const double {names[v]} = _x[{i}];' for i, v in enumerate(state)]
-    lines += [f'    const double {names[v]} = _p[{i}];' for i, v in enumerate(form.parameters())]
-    lines += [f'    const double {name} = {text};' for name, text in temps]
+    from .graph import ExpressionGraph, SymbolicConverter
+    G = ExpressionGraph()
+    state, params = form.state(), form.parameters()
+    inputs = {_t: G.input('t')}
+    inputs.update({v: G.input('x', i) for i, v in enumerate(state)})
+    inputs.update({v: G.input('p', i) for i, v in enumerate(params)})
+    convert = SymbolicConverter(G, inputs)
+    _, exprs, k, solve = _layout(form)
+    outputs = [convert(e) for e in exprs]
     lead = len(state) // 2 if form.order() == 2 else 0
-    if solve:
-        lines.append(f'    double _A[{k * k}], _b[{k}];')
-        lines += [f'    _b[{i}] = {text};' for i, text in enumerate(results[:k])]
-        lines += [f'    _A[{i}] = {text};' for i, text in enumerate(results[k:])]
-        lines.append(f'    if (dynsym_solve({k}, _A, _b)) return 1;')
-        lines += [f'    _out[{i}] = _x[{len(state) - lead + i}];' for i in range(lead)]
-        lines += [f'    _out[{lead + i}] = _b[{i}];' for i in range(len(state) - lead)]
-    else:
-        lines += [f'    _out[{i}] = {text};' for i, text in enumerate(results)]
-    lines += ['    return 0;', '}', '']
-    return '\n'.join(lines)
+    return graph_c_source(G, outputs, _header(form, 'c').lstrip('/ '),
+                          solve=(k, lead, len(state)) if solve else None)
 
 
 def python_source(form):
@@ -358,8 +421,8 @@ class Kernel:
         self._backend = backend
         self._function = function
         self._size = len(form.state())
-        self._k = len(form.vector())
-        self._solve = form.matrix() is not None
+        self._k = form.solve_size()
+        self._solve = self._k is not None
         self._lead = self._size // 2 if form.order() == 2 else 0
         self._n_params = len(form.parameters())
         if backend == 'c':
@@ -429,9 +492,15 @@ class Kernel:
             if self._function(t, x.ctypes.data, p.ctypes.data, out.ctypes.data):
                 self._singular(t, x)
             return out
-        b, A = self._function(float(t), x.tolist(), [float(v) for v in p])
+        try:
+            b, A = self._function(float(t), x.tolist(), [float(v) for v in p])
+        except ZeroDivisionError:
+            self._singular(t, x)
         if not self._solve:
-            return np.array(b, dtype=float)
+            out = np.array(b, dtype=float)
+            if not np.all(np.isfinite(out)):
+                self._singular(t, x)
+            return out
         try:
             y = np.linalg.solve(np.array(A, dtype=float).reshape(self._k, self._k), b)
         except np.linalg.LinAlgError:
@@ -477,9 +546,7 @@ def compile_kernel(form, backend='auto'):
     if backend in ('auto', 'c'):
         source = c_source(form)
         try:
-            # optimizing a very long straight-line function costs the compiler
-            # seconds and gains little against the cost of the call itself
-            library = compile_c(source, ('-O2',) if len(source) < _OPTIMIZE_BELOW else ('-O0',))
+            library = compile_c(source)
         except (AnalysisError, OSError) as error:
             if backend == 'c':
                 raise

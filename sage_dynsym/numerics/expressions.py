@@ -393,3 +393,105 @@ def _is_number(text):
     except ValueError:
         return False
     return True
+
+
+def symbols_and_functions(expressions):
+    r"""
+    The symbols and the unspecified functions of ``expressions``, found by
+    one walk that visits every distinct subexpression once (large equations
+    of motion share their subexpressions many times over).
+
+    OUTPUT: two dicts, name -> symbol and name -> ``(function, arity)``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import symbols_and_functions
+        sage: x, y = var('x y'); f = function('f')
+        sage: symbols_and_functions([x*f(x, y) + diff(f(x, y), x), sin(y)])
+        ({'x': x, 'y': y}, {'f': (f, 2)})
+    """
+    symbols, functions, seen = {}, {}, set()
+    stack = [SR(e) for e in expressions]
+    while stack:
+        e = stack.pop()
+        key = _Key(e)
+        if key in seen:
+            continue
+        seen.add(key)
+        op = e.operator()
+        if op is None:
+            if e.is_symbol():
+                symbols[str(e)] = e
+            continue
+        kind = type(op).__name__
+        if kind == 'NewSymbolicFunction':
+            functions[op.name()] = (op, len(e.operands()))
+        elif kind == 'FDerivativeOperator':
+            functions.setdefault(op.function().name(), (op.function(), len(e.operands())))
+        stack.extend(e.operands())
+    return dict(sorted(symbols.items())), dict(sorted(functions.items()))
+
+
+def linear_coefficients(expression, unknowns):
+    r"""
+    ``expression`` as `\sum_j c_j u_j + r` in the symbols ``unknowns``
+    `u_j`, read off its terms without differentiating or substituting (a
+    walk that visits every distinct subexpression once): the dict
+    `u_j \mapsto c_j` (nonzero ones) and `r`; ``None`` when a term is not a
+    product of one unknown with factors free of them.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import linear_coefficients
+        sage: a, b, x, y = var('a b x y')
+        sage: linear_coefficients(a*sin(b)*x + x + b*y + cos(a), [x, y])
+        ({x: a*sin(b) + 1, y: b}, cos(a))
+        sage: linear_coefficients(x^2 + y, [x, y]) is None, linear_coefficients(x*sin(y), [x, y]) is None
+        (True, True)
+    """
+    unknowns = [SR(u) for u in unknowns]
+    targets = {_Key(u) for u in unknowns}
+    memo = {}
+
+    def mentions(e):
+        # post-order walk with a memo: does e contain an unknown?
+        stack = [(e, False)]
+        while stack:
+            node, expanded = stack.pop()
+            key = _Key(node)
+            if key in memo:
+                continue
+            if key in targets:
+                memo[key] = True
+            elif node.operator() is None:
+                memo[key] = False
+            elif expanded:
+                memo[key] = any(memo[_Key(o)] for o in node.operands())
+            else:
+                stack.append((node, True))
+                stack.extend((o, False) for o in node.operands())
+        return memo[_Key(e)]
+
+    expression = SR(expression)
+    terms = expression.operands() if expression.operator() is add_vararg else [expression]
+    coefficients, rest = {}, []
+    for term in terms:
+        if not mentions(term):
+            rest.append(term)
+            continue
+        if _Key(term) in targets:
+            unknown, factor = term, SR(1)
+        elif term.operator() is mul_vararg:
+            hits = [f for f in term.operands() if _Key(f) in targets]
+            others = [f for f in term.operands() if _Key(f) not in targets]
+            if len(hits) != 1 or any(mentions(f) for f in others):
+                return None
+            unknown, factor = hits[0], SR(1).mul(*others) if others else SR(1)
+        else:
+            return None
+        coefficients.setdefault(_Key(unknown), []).append(factor)
+    out = {}
+    for u in unknowns:
+        if _Key(u) in coefficients:
+            out[u] = SR(0).add(*coefficients[_Key(u)])
+    return out, SR(0).add(*rest)

@@ -40,11 +40,97 @@ EXAMPLES::
     sage: N.matrix(), N.vector()
     ([m], [-k*x])
 """
+import functools
+import types
+
 from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
 from ..symbols import t as _t
+from .expressions import linear_coefficients, symbols_and_functions
+
+
+def deferred(value):
+    r"""
+    Whether ``value`` is a function (or method) computing a value later,
+    rather than a value (symbolic expressions are callable too).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.form import deferred
+        sage: x = var('x'); deferred(lambda: x), deferred(x^2), deferred(None)
+        (True, False, False)
+    """
+    return isinstance(value, (types.FunctionType, types.MethodType, functools.partial))
+
+
+def constraint_terms(constraints, coordinates, velocities):
+    r"""
+    The Jacobian `J = \partial f/\partial q` of holonomic constraints
+    `f(q, t) = 0`, the right-hand side `\gamma` of `J\ddot q = \gamma`
+    (see the module documentation) and `\partial f/\partial t`, as
+    ``(J, gamma, f_t)`` (``J`` a list of rows).
+
+    EXAMPLES: a point on a circle turning at the rate `w`::
+
+        sage: from sage_dynsym.numerics.form import constraint_terms
+        sage: x, y, dx, dy, w, t = var('x y dx dy w t')
+        sage: constraint_terms([x*sin(w*t) - y*cos(w*t)], [x, y], [dx, dy])
+        ([[sin(t*w), -cos(t*w)]],
+         [-w^2*y*cos(t*w) + w^2*x*sin(t*w) - 2*dx*w*cos(t*w) - 2*dy*w*sin(t*w)],
+         [w*x*cos(t*w) + w*y*sin(t*w)])
+    """
+    J = [[SR(fj).diff(qi) for qi in coordinates] for fj in constraints]
+    gamma = []
+    for row, fj in zip(J, constraints):
+        Jdq = sum(a * b for a, b in zip(row, velocities))
+        gamma.append(-(sum(SR(Jdq).diff(qk) * dk for qk, dk in zip(coordinates, velocities))
+                       + 2 * SR(Jdq).diff(_t) + SR(fj).diff(_t, 2)))
+    return J, gamma, [SR(fj).diff(_t) for fj in constraints]
+
+
+def velocity_constraint_terms(constraints, coordinates, velocities):
+    r"""
+    The rows `A = \partial g/\partial \dot q` of constraints on the
+    velocities `g = A(q, t)\dot q + b(q, t) = 0`, the right-hand side
+    `\gamma_A` of `A\ddot q = \gamma_A` (see the module documentation;
+    the first time derivative of `g` vanishes) and `b`, as
+    ``(A, gamma_A, b)`` (``A`` a list of rows).
+
+    EXAMPLES: a point moving along `(1, y)`::
+
+        sage: from sage_dynsym.numerics.form import velocity_constraint_terms
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: velocity_constraint_terms([y*dx - dy], [x, y], [dx, dy])
+        ([[y, -1]], [-dx*dy], [0])
+    """
+    g = [SR(gk) for gk in constraints]
+    rows = [[gk.diff(v) for v in velocities] for gk in g]
+    gamma = [-(sum(gk.diff(qk) * dk for qk, dk in zip(coordinates, velocities)) + gk.diff(_t))
+             for gk in g]
+    return rows, gamma, [gk.subs({v: 0 for v in velocities}) for gk in g]
+
+
+def as_form(equations):
+    r"""
+    ``equations`` if it is a numerical form already (a
+    :class:`NumericalForm`, or any object with its ``state``/``kernel``
+    methods, such as a :class:`~sage_dynsym.numerics.recursive.RecursiveForm`),
+    else the :class:`NumericalForm` of the record ``equations``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: from sage_dynsym.numerics.form import as_form
+        sage: x = var('x'); N = as_form(FirstOrderEquations([-x], [x])); N
+        Numerical form x' = F in (x), parameters ()
+        sage: as_form(N) is N
+        True
+    """
+    if hasattr(equations, 'kernel') and hasattr(equations, 'state'):
+        return equations
+    return NumericalForm(equations)
 
 
 class NumericalForm:
@@ -57,7 +143,9 @@ class NumericalForm:
 
     - ``record`` -- a :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`
       or :class:`~sage_dynsym.analysis.motion.FirstOrderEquations`
-    - ``energy`` -- (optional) a conserved energy in the state variables
+    - ``energy`` -- (optional) a conserved energy in the state variables,
+      or a function without arguments computing it (called when the energy
+      is first asked for: only an energy drift needs it)
 
     EXAMPLES::
 
@@ -84,7 +172,7 @@ class NumericalForm:
     """
 
     def __init__(self, record, energy=None):
-        self._energy = None if energy is None else SR(energy)
+        self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._constraints, self._J, self._gamma, self._f_t = [], [], [], []
         self._velocity_constraints, self._A = [], []
         if hasattr(record, 'accelerations'):
@@ -106,39 +194,45 @@ class NumericalForm:
         g = record.velocity_constraints()
         mu = mu + record.velocity_multipliers()
         E = record.equations()
-        M = matrix(SR, [[e.diff(a) for a in ddq] for e in E]) if E else matrix(SR, 0, 0)
-        if any(entry.has(a) for entry in M.list() for a in ddq + mu):
-            raise AnalysisError("the equations are not linear in the accelerations ("
-                                f"{', '.join(map(str, ddq))})", entry="numerical_rhs")
-        zero = {a: 0 for a in ddq + mu}
-        F = [-e.subs(zero) for e in E]
+        M, F = self._linear_blocks(E, ddq, mu)
         self._state, self._hidden = list(q) + list(dq), list(ddq) + mu
         self._n = len(q)
         self._constraints = f
         self._velocity_constraints = g
         if f or g:
-            J = [[fj.diff(qi) for qi in q] for fj in f]
-            gamma = []
-            for row, fj in zip(J, f):
-                Jdq = sum(a * b for a, b in zip(row, dq))
-                gamma.append(-(sum(Jdq.diff(qk) * dk for qk, dk in zip(q, dq))
-                               + 2 * Jdq.diff(_t) + fj.diff(_t, 2)))
-            # velocity constraints: A ddq + (dg/dq) dq + dg/dt = 0
-            rows = [[gk.diff(v) for v in dq] for gk in g]
-            gamma += [-(sum(gk.diff(qk) * dk for qk, dk in zip(q, dq)) + gk.diff(_t))
-                      for gk in g]
-            self._J, self._A_rows, self._gamma = J, rows, gamma
-            self._f_t = [fj.diff(_t) for fj in f]
-            self._b_velocity = [gk.subs({v: 0 for v in dq}) for gk in g]
+            J, gamma, self._f_t = constraint_terms(f, q, dq)
+            rows, gamma_velocity, self._b_velocity = velocity_constraint_terms(g, q, dq)
+            self._J, self._A_rows, self._gamma = J, rows, gamma + gamma_velocity
             m, n = len(f) + len(g), len(q)
             G = matrix(SR, m, n, J + rows)
             A = matrix(SR, n + m, n + m)
             A[:n, :n] = M
             A[:n, n:] = -G.transpose()
             A[n:, :n] = G
-            self._A, self._b = A, F + gamma
+            self._A, self._b = A, F + self._gamma
         else:
             self._A, self._b = M, F
+
+    @staticmethod
+    def _linear_blocks(E, ddq, mu):
+        # M and F of E = M ddq + (terms in mu) - F: read off the terms when
+        # they are products with the accelerations (the equations of large
+        # models share subexpressions: differentiating or substituting in
+        # them would walk every repetition), else by differentiation
+        rows, forcing = [], []
+        for e in E:
+            split = linear_coefficients(e, ddq + mu)
+            if split is None:
+                rows.append([e.diff(a) for a in ddq])
+                if any(x.has(a) for x in rows[-1] for a in ddq + mu):
+                    raise AnalysisError("the equations are not linear in the accelerations ("
+                                        f"{', '.join(map(str, ddq))})", entry="numerical_rhs")
+                forcing.append(-e.subs({a: 0 for a in ddq + mu}))
+            else:
+                coefficients, rest = split
+                rows.append([coefficients.get(a, SR(0)) for a in ddq])
+                forcing.append(-rest)
+        return (matrix(SR, rows) if E else matrix(SR, 0, 0)), forcing
 
     def __repr__(self):
         left = ("M x'' = F" if self._order == 2 else
@@ -194,6 +288,20 @@ class NumericalForm:
         EXAMPLES: see the class documentation.
         """
         return list(self._b)
+
+    def solve_size(self):
+        r"""The size of the linear system `A y = b` solved at each call
+        (``None`` when `A` is the identity).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: from sage_dynsym.numerics.form import NumericalForm
+            sage: x, dx, ddx = var('x dx ddx')
+            sage: NumericalForm(SecondOrderEquations([ddx + x], [x], [dx], [ddx])).solve_size()
+            1
+        """
+        return None if self._A is None else len(self._b)
 
     def constraints(self):
         r"""
@@ -251,14 +359,18 @@ class NumericalForm:
             sage: E = SecondOrderEquations([ddx + x], [x], [dx], [ddx])
             sage: NumericalForm(E, energy=(dx^2 + x^2)/2).energy()
             1/2*dx^2 + 1/2*x^2
+            sage: NumericalForm(E, energy=lambda: x^2).energy()
+            x^2
         """
+        if deferred(self._energy):
+            value = self._energy()
+            self._energy = None if value is None else SR(value)
         return self._energy
 
     def _expressions(self):
         exprs = list(self._b) + ([] if self._A is None else list(self._A.list()))
         exprs += self._constraints + [a for row in self._J for a in row] + self._f_t
-        exprs += self._velocity_constraints
-        return exprs + ([] if self._energy is None else [self._energy])
+        return exprs + self._velocity_constraints
 
     def functions(self):
         r"""
@@ -275,19 +387,14 @@ class NumericalForm:
             [f]
         """
         if not hasattr(self, '_functions'):
-            found, stack = {}, [SR(e) for e in self._expressions()]
-            while stack:
-                e = stack.pop()
-                op = e.operator()
-                if op is None:
-                    continue
-                if type(op).__name__ == 'NewSymbolicFunction':
-                    found[op.name()] = op
-                elif type(op).__name__ == 'FDerivativeOperator':
-                    found[op.function().name()] = op.function()
-                stack.extend(e.operands())
-            self._functions = [found[k] for k in sorted(found)]
-        return list(self._functions)
+            self._scan()
+        return [f for f, _ in self._functions]
+
+    def _scan(self):
+        symbols, functions = symbols_and_functions(self._expressions())
+        hidden = {str(v) for v in self._state + self._hidden + [_t]}
+        self._parameters = [v for name, v in symbols.items() if name not in hidden]
+        self._functions = list(functions.values())
 
     def with_functions(self, values):
         r"""
@@ -347,14 +454,8 @@ class NumericalForm:
         return variants[key]
 
     def _arity(self, f):
-        stack = [SR(e) for e in self._expressions()]
-        while stack:
-            e = stack.pop()
-            if e.operator() is f:
-                return len(e.operands())
-            if e.operator() is not None:
-                stack.extend(e.operands())
-        return 1
+        self.functions()
+        return dict((g.name(), arity) for g, arity in self._functions).get(f.name(), 1)
 
     def _substituted(self, definitions):
         import copy
@@ -375,18 +476,16 @@ class NumericalForm:
         if self._velocity_constraints:
             new._A_rows = [[sub(e) for e in row] for row in self._A_rows]
             new._b_velocity = [sub(e) for e in self._b_velocity]
-        new._energy = None if self._energy is None else sub(self._energy)
+        energy = self._energy
+        new._energy = None if energy is None else (
+            lambda: None if self.energy() is None else sub(self.energy())) if deferred(
+                energy) else sub(energy)
         new._parameters = new._find_parameters()
         return new
 
     def _find_parameters(self):
-        hidden = {str(v) for v in self._state + self._hidden + [_t]}
-        found = {}
-        for e in self._expressions():
-            for v in SR(e).variables():
-                if str(v) not in hidden:
-                    found[str(v)] = v
-        return [found[k] for k in sorted(found)]
+        self._scan()
+        return self._parameters
 
     def kernel(self, backend='auto'):
         r"""

@@ -40,7 +40,35 @@ from .rhs import RightHandSide
 from .simulate import simulate as _simulate
 from .values import check_model_values
 
-_FORMS = {}
+_CACHES = {}
+
+
+def object_cache(obj):
+    r"""
+    A dict of computed data attached to ``obj`` for its lifetime, kept
+    outside the object (so that pickling it does not carry compiled code);
+    a new empty dict for objects without weak references.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.methods import object_cache
+        sage: class Thing:
+        ....:     pass
+        sage: a = Thing(); object_cache(a)['x'] = 1
+        sage: object_cache(a), object_cache(Thing())
+        ({'x': 1}, {})
+    """
+    key = id(obj)
+    cached = _CACHES.get(key)
+    if cached is not None and cached[0]() is obj:
+        return cached[1]
+    cache = {}
+    try:
+        ref = weakref.ref(obj, lambda _, key=key: _CACHES.pop(key, None))
+    except TypeError:       # objects without weak references: no cache
+        return cache
+    _CACHES[key] = (ref, cache)
+    return cache
 
 
 class NumericalMethods:
@@ -71,17 +99,11 @@ class NumericalMethods:
         return self.equations_record()
 
     def _numerical_form(self):
-        key = id(self)
-        cached = _FORMS.get(key)
-        if cached is not None and cached[0]() is self:
-            return cached[1]
-        form = NumericalForm(self.equations_record(), energy=self._conserved_energy())
-        try:
-            ref = weakref.ref(self, lambda _, key=key: _FORMS.pop(key, None))
-        except TypeError:       # objects without weak references: no cache
-            return form
-        _FORMS[key] = (ref, form)
-        return form
+        cache = object_cache(self)
+        if 'form' not in cache:
+            # the energy is computed only if a trajectory's drift asks for it
+            cache['form'] = NumericalForm(self.equations_record(), energy=self._conserved_energy)
+        return cache['form']
 
     def numerical_rhs(self, values, backend='auto'):
         r"""

@@ -30,7 +30,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError, brief
 from ..arguments import finite_real
-from .form import NumericalForm
+from .form import as_form
 
 
 def parameter_values(form, values):
@@ -241,8 +241,9 @@ def numerical_rhs(equations, values, backend='auto'):
 
     INPUT:
 
-    - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion` or a
-      :class:`~sage_dynsym.numerics.form.NumericalForm`
+    - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion`, a
+      :class:`~sage_dynsym.numerics.form.NumericalForm` or a
+      :class:`~sage_dynsym.numerics.recursive.RecursiveForm`
     - ``values`` -- dict of the parameter values (symbols or names as
       keys) and of the definitions of unspecified functions (see
       :meth:`~sage_dynsym.numerics.form.NumericalForm.with_functions`)
@@ -279,5 +280,4 @@ def numerical_rhs(equations, values, backend='auto'):
         ...
         ModelError: values: missing values of the parameters g
     """
-    form = equations if isinstance(equations, NumericalForm) else NumericalForm(equations)
-    return RightHandSide(form, values, backend)
+    return RightHandSide(as_form(equations), values, backend)

@@ -60,7 +60,7 @@ from sage.symbolic.ring import SR
 from ..errors import DynSymError, ModelError, AnalysisError
 from ..arguments import choice, count, finite_real, flag
 from ..symbols import t as _t
-from .form import NumericalForm
+from .form import as_form
 from .rhs import RightHandSide, real_number
 from .trajectory import Trajectory
 
@@ -254,7 +254,8 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     INPUT:
 
     - ``equations`` -- a record of :mod:`sage_dynsym.analysis.motion`, a
-      :class:`~sage_dynsym.numerics.form.NumericalForm` or a
+      :class:`~sage_dynsym.numerics.form.NumericalForm`, a
+      :class:`~sage_dynsym.numerics.recursive.RecursiveForm` or a
       :class:`~sage_dynsym.numerics.rhs.RightHandSide`
     - ``values`` -- dict of the parameter values
     - ``initial`` -- dict over the state variables (coordinates and
@@ -266,8 +267,9 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     - ``rtol``, ``atol`` -- tolerances of the integrator
     - ``backend`` -- of the right-hand side: ``'auto'``, ``'c'``, ``'python'``
     - ``energy`` -- (optional) a conserved energy for
-      :meth:`~sage_dynsym.numerics.trajectory.Trajectory.energy_drift`
-      (default: the one of a ``NumericalForm``)
+      :meth:`~sage_dynsym.numerics.trajectory.Trajectory.energy_drift`, or
+      a function without arguments computing it (default: the one of the
+      form, computed only when the trajectory needs it)
     - ``name`` -- (optional) the model's name, for the titles of the
       trajectory's pictures
     - ``events`` -- (optional) a list of expressions in ``t``, the state
@@ -415,9 +417,10 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     if isinstance(equations, RightHandSide):
         rhs, form = equations, equations.form()
     else:
-        form = equations if isinstance(equations, NumericalForm) else NumericalForm(equations)
+        form = as_form(equations)
         rhs = RightHandSide(form, values, backend)
-    energy = form.energy() if energy is None else energy
+    # the energy is computed only if the trajectory is asked for it
+    energy = form.energy if energy is None else energy
     x = initial_state(form, initial)
     parameters = rhs.parameters()
     constraints = form.constraints()[0] + form.velocity_constraints()[0]

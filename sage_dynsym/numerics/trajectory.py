@@ -29,6 +29,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 from ..symbols import t as _t
+from .form import deferred
 
 
 class Trajectory(SageObject):
@@ -42,7 +43,8 @@ class Trajectory(SageObject):
     - ``variables`` -- the state variables (symbols)
     - ``parameters`` -- dict of the parameter values used (symbol -> float)
     - ``energy`` -- (optional) a conserved energy in the variables and
-      parameters, for :meth:`energy_drift`
+      parameters, for :meth:`energy_drift`, or a function without
+      arguments computing it (called when the energy is first needed)
     - ``method`` -- (optional) the integrator's name
     - ``dense`` -- (optional) the integrator's continuous solution: a list
       of callables ``f(times) -> states`` (one row per variable, as SciPy's
@@ -67,7 +69,7 @@ class Trajectory(SageObject):
         self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
         self._variables = [SR(v) for v in variables]
         self._parameters = {SR(k): float(v) for k, v in parameters.items()}
-        self._energy = None if energy is None else SR(energy)
+        self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._method = method
         self._dense = list(dense) if dense else None
         self._breaks = None if breaks is None else np.array(breaks, dtype=float)
@@ -96,7 +98,7 @@ class Trajectory(SageObject):
                 [str(v) for v in self._variables] == [str(v) for v in other._variables] and
                 {str(k): v for k, v in self._parameters.items()} ==
                 {str(k): v for k, v in other._parameters.items()} and
-                str(self._energy) == str(other._energy) and
+                str(self.energy()) == str(other.energy()) and
                 [e[:2] for e in self._events or []] == [e[:2] for e in other._events or []])
 
     def __ne__(self, other):
@@ -186,14 +188,18 @@ class Trajectory(SageObject):
         if str(expression) in names and expression.is_symbol():
             return states[:, names[str(expression)]]
         from .compiler import python_function
+        from .expressions import symbols_and_functions
+        # one memoized walk, the parameters as arguments: the energy of a
+        # large model shares its subexpressions many times over
         known = {str(v) for v in self._variables + list(self._parameters) + [_t]}
-        unknown = sorted({str(v) for v in expression.variables()} - known)
+        unknown = sorted(set(symbols_and_functions([expression])[0]) - known)
         if unknown:
             raise ModelError(f"{expression} depends on {', '.join(unknown)}, which are not state "
                              "variables or parameters of the trajectory", entry="values")
-        f = python_function([expression.subs(self._parameters)], [_t] + self._variables,
-                            entry="values")
-        return np.array([f(s, *row)[0] for s, row in zip(times, states.tolist())])
+        parameters = list(self._parameters)
+        f = python_function([expression], [_t] + self._variables + parameters, entry="values")
+        values = [self._parameters[p] for p in parameters]
+        return np.array([f(s, *row, *values)[0] for s, row in zip(times, states.tolist())])
 
     def values(self, expression):
         r"""
@@ -260,8 +266,18 @@ class Trajectory(SageObject):
             sage: x = var('x')
             sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=x^2).energy()
             x^2
+            sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=lambda: x^3).energy()
+            x^3
         """
+        if deferred(self._energy):
+            energy = self._energy()
+            self._energy = None if energy is None else SR(energy)
         return self._energy
+
+    def __getstate__(self):
+        # a pickled trajectory keeps its energy, not the function computing it
+        self.energy()
+        return self.__dict__
 
     def energy_drift(self):
         r"""
@@ -285,7 +301,7 @@ class Trajectory(SageObject):
             ...
             ModelError: energy_drift: the model has no energy integral (explicit time, dissipation or non-potential forces)
         """
-        if self._energy is None:
+        if self.energy() is None:
             raise ModelError("the model has no energy integral (explicit time, dissipation or "
                              "non-potential forces)", entry="energy_drift")
         E = self._array(self._energy)

@@ -97,18 +97,21 @@ the computation) is identical::
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
 import sage.all  # noqa: F401
-import os
 
 import numpy as np
 
-from sage.matrix.constructor import matrix, block_matrix, identity_matrix, zero_matrix
+from sage.matrix.constructor import block_matrix, identity_matrix, zero_matrix
 from sage.misc.latex import latex
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..analysis.conditions import as_relational
 from ..errors import AnalysisError, DynSymError
-from ..arguments import known_symbols
+from ..io.files import write_atomically
+from ..dynamics.hamiltonian import Hamiltonian
+from ..dynamics.lagrangian import Lagrangian
+from ..dynamics.model import Model
 from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
@@ -257,7 +260,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     for name, value in (('fixed', fixed), ('at', at)):
         if not isinstance(value, (dict, type(None))):
             raise AnalysisError(f"{name}= must be a dict, got {value!r}", entry=entry)
-    if _is_model(system):       # the model's declared signs, before any work
+    if isinstance(system, Model):       # the model's declared signs, before any work
         check_model_values(system, dict(fixed or {}), entry="fixed")
         check_positive_ranges(parse_points(parameters, samples, seed, max_points=max_points),
                               system.positive_parameters())
@@ -322,8 +325,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         if poly is None:
             poly, _ = _characteristic_polynomial(fixed_system, lam, True)
         classes, note = _spectrum_classes(poly, lam, fixed_system, note)
-    name = system.name() if _is_model(system) and callable(getattr(system, 'name', None)) \
-        else None
+    name = system.name() if isinstance(system, Model) else None
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
                         values, method, tol, conditions, note, name,
                         classes=kinds.reshape(points.shape), exact_classes=classes,
@@ -338,11 +340,11 @@ def _linear_system(system, at, variables, lhs_matrix):
     from ..analysis import LinearSystem, linearize
     if isinstance(system, LinearSystem):
         return system
-    if _is_model(system):
+    if isinstance(system, Model):
         return model_linear_system(system, at)
     # right-hand sides, or a characteristic function (Lagrangian, Routh
-    # function, Hamiltonian: they have coordinates): linearize checks the rest
-    if at is None or not (isinstance(system, (list, tuple)) or hasattr(system, 'coordinates')):
+    # function, Hamiltonian): linearize checks the rest
+    if at is None or not isinstance(system, (list, tuple, Lagrangian, Hamiltonian)):
         raise AnalysisError("expected a linear system (from linearize), or what linearize "
                             "accepts with at=, or a circuit or mechanical model, got "
                             f"{_short(system)}", entry="stability_map")
@@ -352,12 +354,6 @@ def _linear_system(system, at, variables, lhs_matrix):
 def _short(obj):
     text = str(obj)
     return text if len(text) < 80 else text[:77] + '...'
-
-
-def _is_model(system):
-    return (hasattr(system, 'branches') and hasattr(system, 'state_equations')) or \
-        (hasattr(system, 'lagrangian') and hasattr(system, 'coordinates')
-         and hasattr(system, 'bodies'))
 
 
 def _point(at):
@@ -377,17 +373,13 @@ def _point(at):
 def model_linear_system(model, at=None):
     r"""
     The linear system whose stability :func:`stability_map` maps for a
-    model (also the ``map`` command line).
-
-    - A circuit: its free state equations `B\dot x = F(x)` (sources set to
-      zero), linearized around the zero state (``at`` may give other state
-      values). `B` is the circuit's ``lhs_matrix()`` when it has one, else
-      the diagonal of the inductances and capacitances; a circuit whose
-      state equations are not available (or with mutual inductances and no
-      ``lhs_matrix()``) is linearized from its loop Lagrangian, as in the
-      report.
-    - A mechanical system: its Lagrangian (dissipation included) linearized
-      around ``at``, by default all coordinates 0.
+    model (also the ``map`` command line): the model's
+    :meth:`~sage_dynsym.dynamics.model.Model.free_linear_system` -- for a
+    circuit its free state equations `B\dot x = F(x)` (sources off)
+    around the zero state, for a mechanical system its Lagrangian
+    (dissipation included) around all coordinates 0, for a Lie--Poisson
+    system its first approximation at the origin; ``at`` gives other
+    values to the state variables (or coordinates).
 
     EXAMPLES::
 
@@ -401,36 +393,15 @@ def model_linear_system(model, at=None):
         [ 0  0  0 C3  0  0]
         [ 0  0  0  0 C1  0]
         [ 0  0  0  0  0 C2]
+
+    TESTS::
+
+        sage: model_linear_system(load(example_path('spherical_pendulum.yaml')), {'zz': 1})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: zz is not a coordinate of the model; the coordinates are psi, theta
     """
-    from ..analysis import linearize
-    from ..errors import CircuitError
-    at = _point(at)
-    if hasattr(model, 'branches'):
-        sources = {SR.var(b.name): 0 for b in model.branches()
-                   if b.kind in ('voltage_source', 'current_source')}
-        try:
-            pairs = model.state_variables()
-            rhs = [SR(f).subs(sources) for f in model.state_equations()]
-        except CircuitError:
-            pairs = None
-        if pairs is not None and (hasattr(model, 'lhs_matrix') or not model.couplings()):
-            xs = [s for s, _ in pairs]
-            known_symbols(list(at), xs, 'at', error=AnalysisError, what="state variable")
-            if hasattr(model, 'lhs_matrix'):
-                B = matrix(SR, model.lhs_matrix()).subs(sources)
-            else:
-                value = {b.name: SR(b.value) for b in model.branches()}
-                B = matrix.diagonal(SR, [value[name] for _, name in pairs])
-            point = {x: SR(0) for x in xs}
-            point.update(at)
-            return linearize(rhs, point, xs, lhs_matrix=B)
-        L = model.lagrangian().subs(sources) if sources else model.lagrangian()
-    else:
-        L = model.lagrangian()
-    known_symbols(list(at), L.coordinates(), 'at', error=AnalysisError, what="coordinate")
-    point = {q: SR(0) for q in L.coordinates()}
-    point.update(at)
-    return linearize(L, point)
+    return model.free_linear_system(_point(at))
 
 
 def linear_symbols(linear):
@@ -1091,14 +1062,7 @@ class StabilityMap(SageObject):
                       max_real_part=self._alpha, stable=self._stable, classes=self.classes(),
                       fixed_names=np.array([str(k) for k in self._fixed], dtype=str),
                       fixed_values=np.array([float(v) for v in self._fixed.values()]))
-        path = str(path)
-        tmp = f"{path}.{os.getpid()}.tmp.npz"
-        try:
-            np.savez_compressed(tmp, **arrays)
-            os.replace(tmp, path)
-        finally:
-            if os.path.exists(tmp):
-                os.remove(tmp)
+        write_atomically(path, lambda stream: np.savez_compressed(stream, **arrays), binary=True)
 
 
 #: Darker colours of the classes, for points and lines.
@@ -1165,21 +1129,6 @@ def _class_regions(regions):
         return found
     raise AnalysisError(f"expected a dict {{2: region, 1: region}} or a stability verdict, got "
                         f"{regions!r}", entry="StabilityMap")
-
-
-def as_relational(condition):
-    r"""A condition as a relational: an expression ``e`` means ``e > 0``
-    (the convention of the stability criteria); relationals pass unchanged.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.scale.maps import as_relational
-        sage: a = var('a')
-        sage: as_relational(a - 1), as_relational(a != 0)
-        (a - 1 > 0, a != 0)
-    """
-    e = SR(condition)
-    return e if e.is_relational() else e > 0
 
 
 def _legend(axes, entries):

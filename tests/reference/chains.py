@@ -103,3 +103,26 @@ def spatial_chain(n):
                            inertia=[[f"A{k}", 0, 0], [0, f"A{k}", 0], [0, 0, f"C{k}"]]))
     return dict(bodies=bodies, coordinates=coords, parameters=params,
                 gravity=[0, 0, "-g"], values={})
+
+
+def offset_chain(n):
+    """
+    A second N-link chain, unlike :func:`spatial_chain`: link k turns about
+    y by ``a<k>`` then about the new z by ``b<k>``; its joint is offset from
+    the previous link's axis, ``(1/5, -1/10, 3/4)`` in the parent's axes;
+    mass centre ``(1/10, 1/20, 2/5)``; a full inertia tensor about the joint
+    (products of inertia included, physically possible); numbers for every
+    datum but gravity ``(0, 0, -g)``.
+    """
+    bodies, coords = [], []
+    for k in range(1, n + 1):
+        coords += [f"a{k}", f"b{k}"]
+        rng = random.Random(1000 + k)
+        mass = Fraction(2 + k % 3, 2)
+        center = [Fraction(1, 10), Fraction(1, 20), Fraction(2, 5)]
+        joint = [Fraction(1, 5), Fraction(-1, 10), Fraction(3, 4)] if k > 1 else [0, 0, 0]
+        bodies.append(dict(parent=k - 1, rotations=[(2, f"a{k}"), (3, f"b{k}")], joint=joint,
+                           mass_center=center, mass=mass,
+                           inertia=physical_inertia(rng, mass, center)))
+    return dict(bodies=bodies, coordinates=coords, parameters=['g'], gravity=[0, 0, "-g"],
+                values={})
