@@ -16,6 +16,11 @@ Non-polynomial parts (``cos(alpha)``, ``sqrt(g*l)``, derivatives of
 unspecified functions) are kept as atoms; square roots count as positive
 (they are taken where they are real).
 
+Lists of conditions ``f > 0`` on polynomials (the Hurwitz and
+Liénard--Chipart conditions) are simplified without leaving the polynomial
+rings by :func:`reduce_conditions` (:func:`simplify_conditions` for
+symbolic input).
+
 EXAMPLES::
 
     sage: from sage_dynsym.algebra.conditions import positive_conditions, nonzero_conditions

@@ -103,7 +103,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError, DynSymError
 from ..arguments import known_symbols, symbol_arguments
 from ..algebra.conditions import (positive_conditions, positive_conditions_all, conjunction,
-                         simplify_conjunction)
+                                  simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
 from .linear import LinearSystem
 from .motion import SecondOrderEquations

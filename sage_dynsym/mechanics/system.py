@@ -49,7 +49,7 @@ from ..arguments import symbol_arguments
 from ..io.fields import text as _text
 from .report import report_title, report_sections
 from ..algebra.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
-                                      trig_rational_simplify)
+                                     trig_rational_simplify)
 from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
