@@ -122,7 +122,7 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
                        constraint_multipliers, sage_numbers)
-from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
+from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import SecondOrderEquations
 from ..numerics.methods import NumericalMethods
 from ..numerics.expressions import symbols_and_functions

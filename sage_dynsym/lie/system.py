@@ -78,7 +78,7 @@ from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
-from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
+from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
 from .format import read_lie_poisson_system
 from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
@@ -87,7 +87,7 @@ from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomi
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
 _COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
-_DEFAULT_NAMES = {n for name in NAMED for n in _default_names(name)}
+_DEFAULT_NAMES = {n for name in NAMED for n in default_names(name)}
 
 
 class LiePoissonSystem(Model, NumericalMethods):

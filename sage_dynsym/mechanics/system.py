@@ -48,8 +48,8 @@ from ..symbols import (velocity, acceleration, t, time_derivative, check_mechani
 from ..arguments import symbol_arguments
 from ..io.fields import text as _text
 from .report import report_title, report_sections
-from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
-                                      trig_rational_simplify)
+from ..algebra.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
+                                     trig_rational_simplify)
 from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
@@ -1319,7 +1319,7 @@ class MechanicalSystem(Model):
     @cached_method
     def _polynomial_kinematics(self):
         r"""
-        The kinematics over a :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`
+        The kinematics over a :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`
         when the model is polynomial in the sines and cosines of its angles
         and in its parameters (the usual case), else ``None``.
         """

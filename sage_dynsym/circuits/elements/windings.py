@@ -364,7 +364,7 @@ def inductance_conditions(circuit, entries=None):
         sage: inductance_conditions(C)
         [L1*L2 - M^2 >= 0, L2*L3 - M^2 >= 0, L1*L2*L3 - (L1 + L3)*M^2 >= 0]
     """
-    from ...analysis.conditions import positive_conditions
+    from ...algebra.conditions import positive_conditions
     positive = circuit.positive_parameters()
     conditions = []
     for names, k in coupled_groups(circuit):
