@@ -295,7 +295,6 @@ SIZE_ALLOWED = {
     # each being split by the work that owns its module (not by the exact algebra's)
     "sage_dynsym.mechanics.system.MechanicalSystem",
     "sage_dynsym.dynamics.lagrangian.Lagrangian",
-    "sage_dynsym.numerics.recursive._Assembly",
 }
 
 
