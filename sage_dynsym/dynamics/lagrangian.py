@@ -128,11 +128,12 @@ from ..numerics.methods import NumericalMethods
 from ..numerics.expressions import symbols_and_functions
 from .natural_equations import natural_equations, SymbolicCalculus
 from .compact import equations_cse
+from .holonomic import HolonomicConstraints
 from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
                            is_singular, has_full_row_rank, Elimination)
 
 
-class Lagrangian(NumericalMethods, SageObject):
+class Lagrangian(HolonomicConstraints, NumericalMethods, SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
     generalized forces.
@@ -187,15 +188,15 @@ class Lagrangian(NumericalMethods, SageObject):
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
         Traceback (most recent call last):
         ...
-        ModelError: constraints: the constraints [x - y, -2*x + 2*y] are redundant: the Jacobian d(constraints)/d(x, y) has rank less than 2 at a generic point; remove the dependent ones
+        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
         Traceback (most recent call last):
         ...
-        ModelError: constraints[1]: l - 1 does not depend on the coordinates (x, y): a constraint must be a relation f(q, t) = 0 between them
+        ModelError: constraints[1]: the constraint l - 1 == 0 does not depend on the coordinates x, y
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
         Traceback (most recent call last):
         ...
-        ModelError: constraints[0]: dx - y depends on the velocity dx: only holonomic constraints f(q, t) = 0 are supported
+        ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dx
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
         [x - y]
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
@@ -232,13 +233,7 @@ class Lagrangian(NumericalMethods, SageObject):
                              f"coordinate, got {len(forces)}", entry="forces")
         self._forces = [SR(f) for f in forces]
         self._name = name
-        self._constraints = self._checked_constraints(constraints)
-        self._multipliers = []
-        if self._constraints:
-            taken = set().union(*(SR(e).variables() for e in [self._expr, self._dissipation]
-                                  + self._forces + self._constraints))
-            taken |= {momentum(q) for q in self._coordinates}
-            self._multipliers = constraint_multipliers(len(self._constraints), taken)
+        self._set_constraints(constraints)
 
     @property
     def _expr(self):
@@ -246,34 +241,6 @@ class Lagrangian(NumericalMethods, SageObject):
             A, A1, A0 = self._structure
             self._expression = natural_form(A, A1, A0, self._velocities)
         return self._expression
-
-    def _checked_constraints(self, constraints):
-        constraints = [SR(f) for f in constraints]
-        motion = self._velocities + self._accelerations
-        coords = ", ".join(map(str, self._coordinates))
-        for j, f in enumerate(constraints):
-            entry = f"constraints[{j}]"
-            if f.is_relational():
-                if f.operator() is not operator.eq:
-                    raise ModelError(f"expected an expression f meaning f = 0 or an equation, "
-                                     f"got the relation {f}", entry=entry)
-                f = constraints[j] = f.lhs() - f.rhs()
-            for v in motion:
-                if f.has(v):
-                    raise ModelError(f"{f} depends on the velocity {v}: only holonomic "
-                                     "constraints f(q, t) = 0 are supported", entry=entry)
-            if not any(f.has(q) for q in self._coordinates):
-                raise ModelError(f"{f} does not depend on the coordinates ({coords}): a "
-                                 "constraint must be a relation f(q, t) = 0 between them",
-                                 entry=entry)
-        if constraints:
-            J = [[f.diff(q) for q in self._coordinates] for f in constraints]
-            if len(constraints) > len(self._coordinates) or not has_full_row_rank(J):
-                raise ModelError(f"the constraints {constraints} are redundant: the Jacobian "
-                                 f"d(constraints)/d({coords}) has rank less than "
-                                 f"{len(constraints)} at a generic point; remove the "
-                                 "dependent ones", entry="constraints")
-        return constraints
 
     # ------------------------------------------------------------------
     # accessors
@@ -365,72 +332,6 @@ class Lagrangian(NumericalMethods, SageObject):
         """
         return self._name
 
-    def constraints(self):
-        r"""
-        The holonomic constraints `f_j(q, t)`, each meaning `f_j = 0` (a new
-        list, empty if none).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, l = var('x y dx dy l')
-            sage: L = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: L.constraints()
-            [-l^2 + x^2 + y^2]
-            sage: Lagrangian(dx^2, [x]).constraints()
-            []
-        """
-        return list(self._constraints)
-
-    def multipliers(self):
-        r"""
-        The multipliers `\mu_j`, one per constraint: symbols ``mu1, mu2,
-        ...`` that occur nowhere else in the model (see
-        :func:`~sage_dynsym.symbols.constraint_multipliers`).
-
-        The equations contain `-\sum_j \mu_j \partial f_j/\partial q_i`,
-        so `\mu_j \partial f_j/\partial q` is the generalized force of the
-        constraint `j`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, mu1 = var('x y dx dy mu1')
-            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).multipliers()
-            [mu1]
-            sage: Lagrangian((dx^2 + dy^2)/2 + mu1*x, [x, y], constraints=[x - y]).multipliers()
-            [mu2]
-        """
-        return list(self._multipliers)
-
-    def nonholonomic_constraints(self):
-        r"""
-        The constraints on the velocities (none here; see
-        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2, [x]).nonholonomic_constraints()
-            []
-        """
-        return []
-
-    def velocity_multipliers(self):
-        r"""
-        The multipliers of the constraints on the velocities (none here;
-        see :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2, [x]).velocity_multipliers()
-            []
-        """
-        return []
-
     # ------------------------------------------------------------------
     # value semantics
 
@@ -503,11 +404,6 @@ class Lagrangian(NumericalMethods, SageObject):
         coords = ", ".join(str(q) for q in self._coordinates)
         of = f" of {self._name}" if self._name else ""
         return f"Lagrangian{of} in coordinates ({coords}) : {self._expr}{self._subject_to()}"
-
-    def _subject_to(self):
-        if not self._constraints:
-            return ""
-        return ", subject to " + ", ".join(f"{f} == 0" for f in self._constraints)
 
     def _latex_(self):
         return "L = " + latex(self._expr) + "".join(
@@ -800,25 +696,6 @@ class Lagrangian(NumericalMethods, SageObject):
         return [e + extra - force for e, extra, force in
                 zip(equations, self._nonpotential_terms(), self._constraint_forces())]
 
-    def _constraint_forces(self):
-        # the generalized constraint forces J^T mu, one per coordinate
-        J = self._constraint_jacobian()
-        return [sum(mu * J[j, i] for j, mu in enumerate(self._multipliers))
-                for i in range(len(self._coordinates))]
-
-    def _acceleration_constraints(self):
-        # the constraints at the level of accelerations, G ddq = h: the
-        # holonomic ones differentiated twice; with their multipliers
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        zero = {v: 0 for v in ddq}
-        h = [-time_derivative(time_derivative(f, q, dq, ddq), q, dq, ddq).subs(zero)
-             for f in self._constraints]
-        return self._constraint_jacobian(), h, list(self._multipliers)
-
-    def _constraint_jacobian(self):
-        return matrix(SR, len(self._constraints), len(self._coordinates),
-                      [[f.diff(q) for q in self._coordinates] for f in self._constraints])
-
     def equations(self):
         r"""
         The equations of motion: :meth:`lagrange_equations` (the name every
@@ -966,170 +843,6 @@ class Lagrangian(NumericalMethods, SageObject):
         rest = matrix(SR, [[-e.subs(zero)] for e in self.lagrange_equations()])
         solution = A.solve_right(rest)
         return [solution[i, 0].simplify_rational() for i in range(A.nrows())]
-
-    @cached_method
-    def accelerations_and_multipliers(self):
-        r"""
-        The accelerations and the multipliers, solved from the `n` equations
-        together with the twice-differentiated constraints (Lagrange's
-        equations of the first kind).
-
-        With `E = M\ddot q - F - J^T\mu` and
-        `\ddot f = J\ddot q + b(q, \dot q, t)`, the linear system
-        `\begin{pmatrix} M & -J^T \\ J & 0\end{pmatrix}
-        \begin{pmatrix}\ddot q \\ \mu\end{pmatrix}
-        = \begin{pmatrix} F \\ -b\end{pmatrix}` is solved exactly.
-        `J^T\mu` is the generalized constraint force.
-
-        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}`` of functions of `q`,
-        `\dot q` and `t` (valid on the constraint surface, where
-        `f = \dot f = 0`).
-
-        EXAMPLES:
-
-        A pendulum of length `l` in Cartesian coordinates: with
-        `x = l\sin\theta`, `y = -l\cos\theta` the tension of the rod is
-        `-2\mu_1 l = m(l\dot\theta^2 + g\cos\theta)` [Gol2002]_::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, m, g, l, th, dth = var('x y dx dy m g l theta dtheta')
-            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: sol = L.accelerations_and_multipliers(); sol
-            {ddx: (g*x*y - (dx^2 + dy^2)*x)/(x^2 + y^2),
-             ddy: -(g*x^2 + (dx^2 + dy^2)*y)/(x^2 + y^2),
-             mu1: 1/2*(g*m*y - (dx^2 + dy^2)*m)/(x^2 + y^2)}
-            sage: polar = {x: l*sin(th), y: -l*cos(th), dx: l*cos(th)*dth, dy: l*sin(th)*dth}
-            sage: (-2*sol[L.multipliers()[0]]*l).subs(polar).full_simplify()
-            dtheta^2*l*m + g*m*cos(theta)
-
-        Without constraints, the accelerations alone::
-
-            sage: Lagrangian(m*dx^2/2 - x^2/2, [x]).accelerations_and_multipliers()
-            {ddx: -x/m}
-
-        TESTS::
-
-            sage: Lagrangian(-sqrt(1 - dx^2), [x], constraints=[x - var('t')]).accelerations_and_multipliers()
-            Traceback (most recent call last):
-            ...
-            ModelError: the Lagrangian is not quadratic in the velocities (dx)
-
-        REFERENCES:
-
-        .. [Gol2002] H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
-           3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
-           and forces of constraint).
-        """
-        K, rhs, unknowns = self._acceleration_system()
-        solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
-        return {v: solution[i, 0].simplify_rational() for i, v in enumerate(unknowns)}
-
-    def _acceleration_system(self):
-        # the linear system [[M, -G^T], [G, 0]] (ddq, multipliers) = (F, h),
-        # as (matrix, right-hand side, unknowns)
-        q, ddq = self._coordinates, self._accelerations
-        M = self.decomposition()[0]
-        G, h, multipliers = self._acceleration_constraints()
-        n, m = len(q), len(multipliers)
-        zero = {v: 0 for v in ddq + multipliers}
-        F = [-e.subs(zero) for e in self.lagrange_equations()]
-        K = matrix(SR, n + m, n + m)
-        K.set_block(0, 0, M)
-        if m:
-            K.set_block(0, n, -G.transpose())
-            K.set_block(n, 0, G)
-        if is_singular(K):
-            raise ModelError("the equations cannot be solved for the accelerations and "
-                             "multipliers (the matrix [[M, -J^T], [J, 0]] is singular)")
-        return K, F + h, ddq + multipliers
-
-    def reduce(self, independent, parametrization):
-        r"""
-        The Lagrangian in independent coordinates: the constrained
-        coordinates are replaced by functions of the independent ones.
-
-        INPUT:
-
-        - ``independent`` -- the `n - m` independent coordinates `s_k`: kept
-          coordinates of `L` or new symbols
-        - ``parametrization`` -- a dict ``{q_i: phi_i(s, t)}`` giving every
-          other coordinate; the constraints must hold identically under it
-
-        OUTPUT: a :class:`Lagrangian` in ``independent`` without
-        constraints: `L(\varphi(s, t), \dot\varphi, t)`, the dissipation
-        function substituted the same way, and the generalized forces by
-        virtual work, `Q'_k = \sum_i Q_i\,\partial\varphi_i/\partial s_k`.
-
-        EXAMPLES:
-
-        The Cartesian pendulum reduced to its angle::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
-            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: P = L.reduce([th], {x: l*sin(th), y: -l*cos(th)})
-            sage: P.lagrange_equations()[0].simplify_full()
-            ddtheta*l^2*m + g*l*m*sin(theta)
-
-        TESTS::
-
-            sage: L.reduce([th], {x: l*sin(th), y: l*sin(th)})
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: the constraint constraints[0] = -l^2 + x^2 + y^2 does not hold identically under the parametrization {x: l*sin(theta), y: l*sin(theta)}
-            sage: L.reduce([x, th], {y: th})
-            Traceback (most recent call last):
-            ...
-            ModelError: independent: expected 1 independent coordinate(s) (2 coordinates, 1 constraint(s)), got [x, theta]
-            sage: L.reduce([th], {x: l*sin(th)})
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: the coordinate y is neither independent nor given
-        """
-        independent = symbol_list(independent, "independent")
-        sub = {SR(k): SR(v) for k, v in parametrization.items()}
-        n, m = len(self._coordinates), len(self._constraints)
-        if len(independent) != n - m:
-            raise ModelError(f"expected {n - m} independent coordinate(s) ({n} coordinates, "
-                             f"{m} constraint(s)), got {independent}", entry="independent")
-        for k in sub:
-            if k not in self._coordinates:
-                raise ModelError(f"{k} is not a coordinate of the Lagrangian; coordinates "
-                                 f"are {self._coordinates}", entry="parametrization")
-            if k in independent:
-                raise ModelError(f"the coordinate {k} is both independent and given",
-                                 entry="parametrization")
-        parts = [self._expr, self._dissipation] + self._forces + self._constraints
-        for q in self._coordinates:
-            if q not in sub and q not in independent:
-                raise ModelError(f"the coordinate {q} is neither independent nor given",
-                                 entry="parametrization")
-        for s_k in independent:
-            if s_k not in self._coordinates and any(p.has(s_k) for p in parts):
-                raise ModelError(f"the new coordinate {s_k} is already a symbol of the model",
-                                 entry="independent")
-        removed = [q for q in self._coordinates if q in sub]
-        for k, v in sub.items():
-            bad = [w for w in removed + self._velocities if v.has(w)]
-            if bad:
-                raise ModelError(f"the value of {k} depends on {bad[0]}; give it in the "
-                                 "independent coordinates and t", entry="parametrization")
-        ds = [velocity(s_k) for s_k in independent]
-        position = {q: sub.get(q, q) for q in self._coordinates}
-        rate = {dq: time_derivative(position[q], independent, ds)
-                for q, dq in zip(self._coordinates, self._velocities)}
-        for j, f in enumerate(self._constraints):
-            if not bool(f.subs(position).simplify_full() == 0):
-                raise ModelError(f"the constraint constraints[{j}] = {f} does not hold "
-                                 f"identically under the parametrization {sub}",
-                                 entry="parametrization")
-        full = {**position, **rate}
-        forces = [sum(Q.subs(full) * position[q].diff(s_k)
-                      for q, Q in zip(self._coordinates, self._forces))
-                  for s_k in independent]
-        return Lagrangian(self._expr.subs(full), independent, ds,
-                          dissipation=self._dissipation.subs(full), forces=forces,
-                          name=self._name)
 
     def first_order_system(self):
         r"""

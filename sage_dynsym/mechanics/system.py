@@ -51,6 +51,7 @@ from .report import report_title, report_sections
 from ..analysis.trigonometric import (SymbolicBackend, TrigPolynomialRing, NotPolynomial,
                                       trig_rational_simplify)
 from ..dynamics.lagrangian import Lagrangian
+from ..dynamics.holonomic import check_constraints
 from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.model import Model
 from ..dynamics.natural_equations import natural_equations
@@ -69,89 +70,6 @@ from .rigid_body import RigidBody
 # Christoffel coefficients back to symbolic expressions dominates the
 # derivation (see bench/bench_chain.py); see lagrangian().
 _POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
-
-
-def check_constraints(constraints, coordinates, parameters=None, entry="constraints"):
-    r"""
-    The holonomic constraints `f_j(q, t)` as expressions (a relation
-    ``lhs == rhs`` becomes ``lhs - rhs``), checked: each depends on a
-    coordinate and on no velocity; with ``parameters`` (a list) no other
-    symbol than coordinates, parameters and ``t``; and the Jacobian
-    `\partial f_j / \partial q_i` has full rank `m` at a generic point
-    (:func:`~sage_dynsym.dynamics.natural_form.is_singular`), so that no
-    constraint is redundant (checked again by the Lagrangian; here the
-    error comes at construction, naming the entry).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.mechanics.system import check_constraints
-        sage: x, y, z, l = var('x y z l')
-        sage: check_constraints([x^2 + y^2 == l^2], [x, y])
-        [-l^2 + x^2 + y^2]
-
-    TESTS::
-
-        sage: check_constraints([x^2 + y^2 - l^2, 2*x^2 + 2*y^2 - 2*l^2], [x, y])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
-        sage: check_constraints([x - y, y - z, x - z], [x, y, z])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints: the 3 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 3 at a generic point; remove the redundant ones
-        sage: check_constraints([x - z], [x], parameters=[l])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: undeclared symbol z; declared are: l, t
-        sage: check_constraints(["x"], [x])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: expected an expression f(q, t) or a relation, got 'x'
-    """
-    from sage.symbolic.expression import Expression
-    from ..symbols import velocity as _velocity
-    if isinstance(constraints, (str, bytes, dict)) or not hasattr(constraints, '__iter__'):
-        raise ModelError(f"expected a list of constraints f(q, t), got {constraints!r}",
-                         entry=entry)
-    out = []
-    forbidden = {}
-    for q in coordinates:
-        forbidden[_velocity(q)] = f"the velocity {_velocity(q)}"
-        forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
-    for i, f in enumerate(constraints):
-        sub = f"{entry}[{i}]"
-        try:
-            if isinstance(f, str) or not isinstance(f, (Expression, numbers.Number)):
-                raise TypeError
-            f = SR(f)
-        except (TypeError, ValueError):
-            raise ModelError(f"expected an expression f(q, t) or a relation, got {f!r}",
-                             entry=sub) from None
-        if f.is_relational():
-            f = f.lhs() - f.rhs()
-        for v in f.variables():
-            if v in forbidden:
-                raise ModelError("a holonomic constraint f(q, t) cannot depend on "
-                                 f"{forbidden[v]}", entry=sub)
-            if parameters is not None and v not in coordinates and v not in parameters \
-                    and v != t:
-                raise ModelError(f"undeclared symbol {v}; declared are: "
-                                 + ", ".join(sorted(map(str, list(parameters) + [t]))),
-                                 entry=sub)
-        if not any(f.has(q) for q in coordinates):
-            raise ModelError(f"the constraint {f} == 0 does not depend on the coordinates "
-                             f"{', '.join(map(str, coordinates))}", entry=sub)
-        out.append(f)
-    if out:
-        J = [[f.diff(q) for q in coordinates] for f in out]
-        if len(out) > len(coordinates) or not has_full_row_rank(J):
-            raise ModelError(f"the {len(out)} constraints are not independent: their Jacobian "
-                             "with respect to the coordinates has rank less than "
-                             f"{len(out)} at a generic point; remove the redundant ones",
-                             entry=entry)
-    return out
-
-
 
 
 class MechanicalSystem(Model):
