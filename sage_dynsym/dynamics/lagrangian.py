@@ -110,30 +110,24 @@ The Kepler problem in polar coordinates::
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
 """
-import operator
-
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
-from sage.modules.free_module_element import vector
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
-                       constraint_multipliers, sage_numbers)
-from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
-from ..analysis.motion import SecondOrderEquations
+from ..symbols import velocity, acceleration, momentum, t, sage_numbers
 from ..numerics.methods import NumericalMethods
-from ..numerics.expressions import symbols_and_functions
-from .natural_equations import natural_equations, SymbolicCalculus
-from .compact import equations_cse
 from .holonomic import HolonomicConstraints
-from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
-                           is_singular, has_full_row_rank, Elimination)
+from .lagrange_equations import LagrangeEquations
+from .legendre import LegendreTransform
+from .natural_form import symbol_list, is_at_most_quadratic, natural_form
+from .routh import CyclicCoordinates, check_cyclic, routh_reduction
 
 
-class Lagrangian(HolonomicConstraints, NumericalMethods, SageObject):
+class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, CyclicCoordinates,
+                 NumericalMethods, SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
     generalized forces.
@@ -542,324 +536,8 @@ class Lagrangian(HolonomicConstraints, NumericalMethods, SageObject):
         return matrix(SR, n, n, lambda i, j:
                       self._expr.diff(self._velocities[i], self._velocities[j]))
 
-    def is_singular(self):
-        r"""
-        Whether `\det(\partial^2 L/\partial \dot q^2) = 0` identically: then
-        the Legendre transform is not invertible and
-        :meth:`hamiltonian` applies Dirac's scheme.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).is_singular()
-            True
-            sage: Lagrangian(dx^2 + dy^2, [x, y]).is_singular()
-            False
-        """
-        return is_singular(self.mass_matrix())
-
-    def generalized_momenta(self):
-        r"""
-        The expressions `p_i = \partial L / \partial \dot q_i`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, e, A = var('x dx m e A')
-            sage: Lagrangian(m*dx^2/2 + e*A*x*dx, [x]).generalized_momenta()
-            [A*e*x + dx*m]
-        """
-        return [self._expr.diff(v) for v in self._velocities]
-
-    def energy(self):
-        r"""
-        The generalized energy (Jacobi integral)
-        `h = \sum \dot q_i \partial L/\partial \dot q_i - L`;
-        conserved when `L` does not depend on `t` and there are no
-        non-potential forces. For a natural Lagrangian `h = T_2 - T_0 - U`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).energy()
-            1/2*dx^2*m + 1/2*k*x^2
-        """
-        h = sum(v * p for v, p in zip(self._velocities, self.generalized_momenta()))
-        return (h - self._expr).expand() if self.is_natural() else h - self._expr
-
-    def cyclic_coordinates(self):
-        r"""
-        The coordinates `q_l` whose momentum is conserved, exactly those
-        :meth:`routh` accepts: `q_l` appears neither in `L` nor in the
-        dissipation function, the generalized forces or the constraints,
-        the dissipation function does not depend on `\dot q_l`, and no
-        generalized force acts on `q_l`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).cyclic_coordinates()
-            [phi]
-
-        A damper on a cart makes its position non-cyclic::
-
-            sage: x, dx, c = var('x dx c')
-            sage: L = Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi], dissipation=c*dx^2/2)
-            sage: L.cyclic_coordinates()
-            []
-        """
-        return [q for q in self._coordinates if self._not_cyclic(q) is None]
-
-    def _not_cyclic(self, q):
-        r"""
-        Why the coordinate ``q`` is not cyclic, or ``None`` if it is.
-        """
-        i = self._coordinates.index(q)
-        if self._expr.has(q):
-            return "the Lagrangian depends on it"
-        if self._dissipation.diff(self._velocities[i]) != 0:
-            return ("the dissipation function depends on its velocity, so its momentum "
-                    "is not conserved")
-        if self._forces[i] != 0:
-            return "a generalized force acts on it"
-        for what, parts in (("the dissipation function", [self._dissipation]),
-                            ("a generalized force", self._forces),
-                            ("a constraint", self._constraints)):
-            if any(p.has(q) for p in parts):
-                return f"{what} depends on it"
-        return None
-
     # ------------------------------------------------------------------
     # equations
-
-    def _nonpotential_terms(self):
-        return [self._dissipation.diff(v) - Q
-                for v, Q in zip(self._velocities, self._forces)]
-
-    @cached_method
-    def lagrange_equations(self, form=None):
-        r"""
-        The Lagrange equations of the second kind (5), with dissipation and
-        generalized forces: a list of expressions `E_i` meaning `E_i = 0`.
-
-        INPUT:
-
-        - ``form`` -- (default: ``"structured"`` for a natural Lagrangian,
-          ``"direct"`` otherwise) ``"structured"`` assembles (5) from the
-          decomposition (4); ``"direct"`` differentiates
-          `d/dt (\partial L/\partial \dot q_i) - \partial L/\partial q_i`.
-          Both are equal as functions.
-
-        With constraints, `E_i` contains `-\sum_j \mu_j \partial f_j/\partial
-        q_i` (`M\ddot q = F + J^T\mu`, see the module documentation).
-
-        EXAMPLES:
-
-        The structured form keeps the mass matrix entries as factors of the
-        accelerations::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
-            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi])
-            sage: L.lagrange_equations()
-            [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
-
-        A relativistic particle (not natural) is differentiated directly::
-
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(-sqrt(1 - dx^2), [x]).lagrange_equations()
-            [ddx*(dx^2/(-dx^2 + 1)^(3/2) + 1/sqrt(-dx^2 + 1))]
-
-        TESTS::
-
-            sage: t = var('t')
-            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 + r*dphi*t, [r, phi])
-            sage: S, D = L.lagrange_equations('structured'), L.lagrange_equations('direct')
-            sage: all(bool((s - d).expand() == 0) for s, d in zip(S, D))
-            True
-            sage: L.lagrange_equations('nonsense')
-            Traceback (most recent call last):
-            ...
-            ModelError: form: expected 'structured' or 'direct', got 'nonsense'
-        """
-        if form is None:
-            form = "structured" if self.is_natural() else "direct"
-        if form == "structured":
-            equations = self._structured_equations()
-        elif form == "direct":
-            equations = self._direct_equations()
-        else:
-            raise ModelError(f"expected 'structured' or 'direct', got {form!r}", entry='form')
-        return [e + extra - force for e, extra, force in
-                zip(equations, self._nonpotential_terms(), self._constraint_forces())]
-
-    def equations(self):
-        r"""
-        The equations of motion: :meth:`lagrange_equations` (the name every
-        model and characteristic function of the package shares).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations()
-            [ddx + x]
-        """
-        return self.lagrange_equations()
-
-    def equations_cse(self):
-        r"""
-        The Lagrange equations written with their common subexpressions
-        (see :func:`~sage_dynsym.dynamics.compact.equations_cse`): a compact
-        form for the largest models, exactly equal to
-        :meth:`lagrange_equations` after ``expand()``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: psi, theta, dpsi, dtheta, m, l, g = var('psi theta dpsi dtheta m l g')
-            sage: L = Lagrangian(m*l^2*(dtheta^2 + sin(theta)^2*dpsi^2)/2 + m*g*l*cos(theta),
-            ....:                [psi, theta])
-            sage: C = L.equations_cse(); C.subexpressions()
-            [(x1_, cos(theta)), (x2_, sin(theta))]
-            sage: C.expand() == L.lagrange_equations()
-            True
-        """
-        return equations_cse(self.lagrange_equations())
-
-    def _conserved_energy(self):
-        r"""
-        The generalized energy (:meth:`energy`) when it is an integral of
-        the motion -- no explicit time in `L` or the constraints, no
-        dissipation, no generalized forces --, else ``None``; what
-        ``simulate(...).energy_drift()`` measures.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, c = var('x dx c')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x])._conserved_energy()
-            1/2*dx^2 + 1/2*x^2
-            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2)._conserved_energy() is None
-            True
-
-        From the decomposition of a mechanical system, `T_2 - T_0 - U`::
-
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: load(example_path('spherical_pendulum.yaml')).lagrangian()._conserved_energy()
-            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
-        """
-        if self._structure is not None:
-            # h = T_2 - T_0 - U from the decomposition: nothing expanded (a
-            # memoized walk looks for t: large models share subexpressions)
-            A, A1, A0 = self._structure
-            if str(t) in symbols_and_functions(list(A.list()) + list(A1) + [A0])[0]:
-                return None
-            energy = natural_form(A, [0] * len(self._velocities), -A0, self._velocities)
-        elif self._expr.has(t):
-            return None
-        else:
-            energy = None
-        if (not self._dissipation.is_zero() or any(not f.is_zero() for f in self._forces)
-                or any(SR(f).has(t) for f in self._constraints)):
-            return None
-        return self.energy() if energy is None else energy
-
-    def equations_record(self):
-        r"""
-        The equations as neutral data for the analysis
-        (:class:`~sage_dynsym.analysis.motion.SecondOrderEquations`, with
-        the Lagrangian and its kinetic matrix).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations_record()
-            Second-order equations in (x): [ddx + x] == 0
-            sage: y, dy = var('y dy')
-            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
-            sage: E.constraints(), E.multipliers()
-            ([x - y], [mu1])
-        """
-        kinetic = self.mass_matrix() if self.is_natural() else None
-        return SecondOrderEquations(self.lagrange_equations(), self._coordinates,
-                                    self._velocities, self._accelerations,
-                                    function=self._expr, kinetic=kinetic,
-                                    constraints=self._constraints,
-                                    multipliers=self._multipliers)
-
-    def _direct_equations(self):
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        return [time_derivative(p, q, dq, ddq) - self._expr.diff(qi)
-                for qi, p in zip(q, self.generalized_momenta())]
-
-    def _structured_equations(self):
-        r"""
-        Equations (5) from `A, A_1, A_0`, see
-        :mod:`~sage_dynsym.dynamics.natural_equations`.
-        """
-        if self._equation_builder is not None:
-            return self._equation_builder()
-        A, A1, A0 = self.decomposition()
-        return natural_equations([list(row) for row in A.rows()], list(A1), A0,
-                                 self._coordinates, self._velocities, self._accelerations,
-                                 SymbolicCalculus(self._coordinates))
-
-    def accelerations_solved(self):
-        r"""
-        The equations solved for the accelerations: a list of expressions
-        `\ddot q_i = f_i(q, \dot q, t)` (only for natural Lagrangians with an
-        invertible mass matrix). With constraints: the accelerations of
-        :meth:`accelerations_and_multipliers` (valid on the constraint
-        surface).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).accelerations_solved()
-            [-k*x/m]
-
-        TESTS::
-
-            sage: y, dy = var('y dy')
-            sage: Lagrangian(dx^2 + x*dy, [x, y]).accelerations_solved()
-            Traceback (most recent call last):
-            ...
-            ModelError: the mass matrix is singular: the accelerations cannot be solved for
-        """
-        if self._constraints:
-            solution = self.accelerations_and_multipliers()
-            return [solution[a] for a in self._accelerations]
-        A = self.mass_matrix()
-        if is_singular(A):
-            raise ModelError("the mass matrix is singular: the accelerations cannot be solved for")
-        zero = {a: 0 for a in self._accelerations}
-        rest = matrix(SR, [[-e.subs(zero)] for e in self.lagrange_equations()])
-        solution = A.solve_right(rest)
-        return [solution[i, 0].simplify_rational() for i in range(A.nrows())]
-
-    def first_order_system(self):
-        r"""
-        The equations as a first-order system `\dot x = F(x, t)` with state
-        `x = (q, \dot q)`.
-
-        OUTPUT: a pair ``(state, rhs)`` of lists.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).first_order_system()
-            ([x, dx], [dx, -k*x/m])
-        """
-        state = self._coordinates + self._velocities
-        return state, list(self._velocities) + self.accelerations_solved()
 
     # ------------------------------------------------------------------
     # other forms
@@ -879,34 +557,6 @@ class Lagrangian(HolonomicConstraints, NumericalMethods, SageObject):
             1/2*dr^2*m - 1/2*k*r^2 - 1/2*p_phi^2/(m*r^2)
         """
         return RouthFunction(self, cyclic)
-
-    def hamiltonian(self):
-        r"""
-        The Hamiltonian by the Legendre transform; for a singular Lagrangian
-        the result carries Dirac's constraint analysis.
-
-        See :class:`~sage_dynsym.dynamics.hamiltonian.Hamiltonian`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian().expr()
-            1/2*k*x^2 + 1/2*p_x^2/m
-
-        TESTS::
-
-            sage: Lagrangian(m*dx^2/2, [x], constraints=[x - var('t')]).hamiltonian()
-            Traceback (most recent call last):
-            ...
-            ModelError: constraints: the Legendre transform of a constrained Lagrangian is not supported: reduce it to independent coordinates first (reduce)
-        """
-        if self._constraints:
-            raise ModelError("the Legendre transform of a constrained Lagrangian is not "
-                             "supported: reduce it to independent coordinates first "
-                             "(reduce)", entry="constraints")
-        from .hamiltonian import Hamiltonian
-        return Hamiltonian(self)
 
 
 class RouthFunction(Lagrangian):
@@ -967,73 +617,17 @@ class RouthFunction(Lagrangian):
     def __init__(self, lagrangian, cyclic, momenta=None):
         if not isinstance(lagrangian, Lagrangian):
             raise ModelError("expected a Lagrangian object", entry="lagrangian")
-        self._check_cyclic(lagrangian, cyclic)
-        q_all, dq_all = lagrangian.coordinates(), lagrangian.velocities()
+        check_cyclic(lagrangian, cyclic)
         self._cyclic = [SR(c) for c in cyclic]
-        index = [q_all.index(c) for c in self._cyclic]
-        positional = [i for i in range(len(q_all)) if i not in index]
         if momenta is None:
             momenta = [momentum(c) for c in self._cyclic]
         self._momenta = [SR(c) for c in momenta]
         self._lagrangian = lagrangian
-
-        A, A1, A0 = lagrangian.decomposition()
-        # p_cyc = A_cc dq_c + A_cp dq_p + A1_c = c; with u = c - A1_c - A_cp dq_p,
-        # dq_c = A_cc^{-1} u and R = L - c.dq_c = 1/2 dq_p A_pp dq_p + A1_p.dq_p
-        # + A0 - 1/2 u A_cc^{-1} u, collected by the positional velocities:
-        # each coefficient simplified, the momentum part as a sum of squares
-        A_cc = A.matrix_from_rows_and_columns(index, index)
-        if is_singular(A_cc):
-            raise ModelError("the momentum equations cannot be solved for the cyclic "
-                             "velocities (the block of the mass matrix is singular)",
-                             entry="cyclic")
-        try:
-            elimination = Elimination(A_cc)
-        except NotPolynomial:
-            # inexact numbers, or entries too large to simplify: GiNaC's
-            # normalization (it may miss zero pivots modulo cos^2+sin^2 = 1)
-            elimination = Elimination(A_cc, simplify=lambda e: SR(e).normalize())
-        dq_p = [dq_all[j] for j in positional]
-        v = [c - A1[i] for c, i in zip(self._momenta, index)]
-        X = {j: [A[i, j] for i in index] for j in positional}
-        n = len(positional)
-        M = matrix(SR, n, n)
-        for a, j in enumerate(positional):
-            for b in range(a, n):
-                k = positional[b]
-                M[a, b] = M[b, a] = trig_rational_simplify(
-                    A[j, k] - SR(0).add(*elimination.products(X[j], X[k])))
-        M.set_immutable()
-        B = vector(SR, [linear_collected(A1[j] + SR(0).add(*elimination.products(X[j], v)),
-                                          self._momenta) for j in positional])
-        R0 = trig_rational_simplify(A0) - SR(0).add(
-            *elimination.squares(v, self._momenta)) / 2
-        # dq_c = A_cc^{-1} u = -dR/dc, in the (compact) form of R
-        routh = natural_form(M, B, R0, dq_p)
-        self._solved_velocities = [-routh.diff(c) for c in self._momenta]
-        cyclic_velocities = [dq_all[i] for i in index]
-        substitution = dict(zip(cyclic_velocities, self._solved_velocities))
-        dissipation = lagrangian.dissipation().subs(substitution)
-        forces = [lagrangian.generalized_forces()[i].subs(substitution) for i in positional]
-        Lagrangian.__init__(self, None, [q_all[i] for i in positional], dq_p,
-                            dissipation=dissipation, forces=forces, name=lagrangian.name(),
-                            decomposition=(M, B, R0), constraints=lagrangian.constraints())
-
-    @staticmethod
-    def _check_cyclic(lagrangian, cyclic):
-        coordinates = lagrangian.coordinates()
-        velocities = dict(zip(coordinates, lagrangian.velocities()))
-        for c in cyclic:
-            c = SR(c)
-            if c not in velocities:
-                raise ModelError(f"{c} is not a coordinate of the Lagrangian; "
-                                 f"coordinates are {coordinates}", entry="cyclic")
-            reason = lagrangian._not_cyclic(c)
-            if reason is not None:
-                raise ModelError(f"{c} is not cyclic: {reason}", entry="cyclic")
-            if not lagrangian.is_natural():
-                raise ModelError("Routh reduction needs a Lagrangian quadratic in the "
-                                 "velocities", entry="lagrangian")
+        coordinates, velocities, decomposition, self._solved_velocities, dissipation, forces = \
+            routh_reduction(lagrangian, self._cyclic, self._momenta)
+        Lagrangian.__init__(self, None, coordinates, velocities, dissipation=dissipation,
+                            forces=forces, name=lagrangian.name(), decomposition=decomposition,
+                            constraints=lagrangian.constraints())
 
     def _repr_(self):
         coords = ", ".join(map(str, self.coordinates()))
