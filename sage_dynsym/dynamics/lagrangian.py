@@ -124,6 +124,14 @@ from .lagrange_equations import LagrangeEquations
 from .legendre import LegendreTransform
 from .natural_form import symbol_list, is_at_most_quadratic, natural_form
 from .routh import CyclicCoordinates, check_cyclic, routh_reduction
+# names earlier versions of this module held, importable from it as before
+from .compact import equations_cse
+from .natural_equations import natural_equations, SymbolicCalculus
+from .natural_form import linear_collected, is_singular, has_full_row_rank, Elimination
+
+__all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations',
+           'SymbolicCalculus', 'symbol_list', 'is_at_most_quadratic', 'natural_form',
+           'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
 
 
 class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, CyclicCoordinates,
@@ -537,10 +545,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
                       self._expr.diff(self._velocities[i], self._velocities[j]))
 
     # ------------------------------------------------------------------
-    # equations
-
-    # ------------------------------------------------------------------
-    # other forms
+    # the Routh function (the reduction itself: dynamics.routh)
 
     def routh(self, cyclic):
         r"""

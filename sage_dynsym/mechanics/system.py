@@ -56,6 +56,8 @@ from .system_kinematics import SystemKinematics
 from .system_lagrangian import SystemLagrangian
 from .system_numerics import MechanicalNumerics
 
+__all__ = ['MechanicalSystem', 'check_constraints']
+
 
 class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemConstraints,
                        SystemOperatingPoints, MechanicalFormat, MechanicalNumerics, Model):
@@ -365,7 +367,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         return euler_poisson(self, names)
 
     # ------------------------------------------------------------------
-    # description
+    # the system's data
 
     def _repr_(self):
         n = len(self._bodies)
