@@ -1,7 +1,7 @@
 # Two entry points (see README):  `make run`  and  `make test`.
 # Both create the project .venv with passagemath on first use; `make test`
-# also registers the SageMath Jupyter kernel in the .venv and installs
-# Debian's chromium for the browser test (idempotent).
+# also registers the SageMath Jupyter kernel in the .venv; `make test-slow`
+# installs Debian's chromium for the browser test (idempotent).
 PYTHON ?= python3.11
 VENV   := .venv
 PY     := $(VENV)/bin/python
@@ -10,7 +10,7 @@ STAMP  := $(VENV)/.installed
 KERNEL := $(VENV)/share/jupyter/kernels/sagemath/kernel.json
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: run test test-slow doctest pytest worksheets docs browser kernel chromium bench venv clean
+.PHONY: run test test-slow doctest doctest-long pytest pytest-slow worksheets docs browser kernel chromium bench venv clean
 
 venv: $(STAMP)
 
@@ -39,14 +39,22 @@ chromium:
 doctest: $(STAMP)
 	$(SAGE) -t --force-lib -p 2 sage_dynsym doc/*.rst
 
+# the examples marked `# long time` (pictures), in the files that have them
+doctest-long: $(STAMP)
+	$(SAGE) -t --force-lib --long -p 2 $$(grep -rl --include='*.py' --include='*.rst' '# long time' sage_dynsym doc --exclude-dir=_build)
+
 # two processes (pytest-xdist); the slowest tests listed at the end
 PYTEST := $(PY) -m pytest -q -n 2 --dist loadfile --durations=10
 
 pytest: $(STAMP) kernel
 	$(PYTEST) -m "not slow" tests --ignore=tests/browser
 
-# the long cross-checks (CI runs them after `make test`)
-test-slow: $(STAMP) kernel
+# the long cross-checks, every worksheet, the pictures of the doctests, the
+# documentation (Sphinx -W) and the browser test (CI runs them after `make test`)
+test-slow:
+	@tests/timed.sh $(MAKE) pytest-slow doctest-long docs browser
+
+pytest-slow: $(STAMP) kernel
 	$(PYTEST) -m slow tests --ignore=tests/browser
 
 worksheets: $(STAMP) kernel
@@ -61,7 +69,7 @@ browser: $(STAMP) kernel chromium
 
 # every part timed; the times are printed at the end (also when a part fails)
 test:
-	@tests/timed.sh $(MAKE) doctest pytest docs browser
+	@tests/timed.sh $(MAKE) doctest pytest
 
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -r requirements-bench.txt

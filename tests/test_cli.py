@@ -6,6 +6,7 @@ import subprocess
 import sys
 
 import pytest
+from conftest import slow_except  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = sorted(glob.glob(os.path.join(ROOT, "examples", "*.yaml")))
@@ -16,7 +17,12 @@ def run(*args):
                           capture_output=True, text=True, timeout=600)
 
 
-@pytest.mark.parametrize("path", EXAMPLES, ids=os.path.basename)
+# the three smallest examples in `make test`; every example in `make test-slow` (CI)
+FAST_EXAMPLES = [p for p in EXAMPLES if os.path.basename(p) in
+                 ('spherical_pendulum.yaml', 'rlc_ladder.yaml', 'nonlinear_circuit.yaml')]
+
+
+@pytest.mark.parametrize("path", slow_except(EXAMPLES, FAST_EXAMPLES, ids=os.path.basename))
 def test_report_for_every_example(path):
     result = run(path)
     assert result.returncode == 0, result.stderr

@@ -27,6 +27,7 @@ from sage.all import SR, fast_callable, RDF  # noqa: E402
 from sage_dynsym.dynamics.compact import equations_cse  # noqa: E402
 from sage_dynsym.symbols import check_mechanical_names  # noqa: E402
 from sage_dynsym.errors import ModelError  # noqa: E402
+from conftest import slow_except  # noqa: E402
 
 
 def _rheonomic():
@@ -99,7 +100,7 @@ def _size(exprs):
     return sum(len(str(e).replace(' ', '')) for e in exprs)
 
 
-@pytest.mark.parametrize('name', list(CASES))
+@pytest.mark.parametrize('name', slow_except(list(CASES), list(CASES)[:2]))
 def test_recursive_equations_agree_with_kane(name):
     """fr + frstar of SymPy's KanesMethod is minus the Lagrange equations."""
     desc = CASES[name]
@@ -137,6 +138,7 @@ def test_kane_reference_agrees_with_lagrange_reference():
     _assert_close(_sympy_values(L, point), [-v for v in _sympy_values(K, point)], 'references')
 
 
+@pytest.mark.slow
 def test_auto_takes_the_recursive_form_for_long_chains():
     """The 5-link chain of bench/bench_chain.py: 'auto' gives the recursive
     equations, shorter than the 'symbolic' ones 'auto' gave before."""

@@ -33,6 +33,7 @@ from sage_chains import sage_chain as sage_system  # noqa: E402
 from sage.all import SR, fast_callable, RDF  # noqa: E402
 from sage_dynsym.symbols import velocity
 from sage_dynsym.symbols import acceleration  # noqa: E402
+from conftest import slow_except  # noqa: E402
 
 MAX_COORDINATES = 4
 N_RANDOM = 20
@@ -101,6 +102,8 @@ def _two_roots_and_slider():
 CASES = {'spherical_pendulum': _spherical_pendulum(),
          'two_roots_and_slider': _two_roots_and_slider(),
          **_random_cases()}
+#: what `make test` cross-checks; the other random cases run in `make test-slow`
+FAST_CASES = {'spherical_pendulum', 'two_roots_and_slider', *list(CASES)[2:4]}
 
 
 def test_case_set_covers_the_issue():
@@ -166,7 +169,7 @@ def _assert_close(a, b, what):
         f"{what}: sage_dynsym {a} != SymPy {b} (difference {a - b})")
 
 
-@pytest.mark.parametrize('name', list(CASES))
+@pytest.mark.parametrize('name', slow_except(list(CASES), FAST_CASES))
 def test_symbols_follow_the_conventions(name):
     desc = CASES[name]
     L, _, _ = _sage_results(name)
@@ -176,7 +179,7 @@ def test_symbols_follow_the_conventions(name):
     assert [str(x) for x in L.accelerations()] == ddq == [str(acceleration(SR.var(c))) for c in q]
 
 
-@pytest.mark.parametrize('name', list(CASES))
+@pytest.mark.parametrize('name', slow_except(list(CASES), FAST_CASES))
 def test_lagrangian_agrees_with_sympy(name):
     desc = CASES[name]
     q, dq, _, params = _names(desc)
@@ -189,7 +192,7 @@ def test_lagrangian_agrees_with_sympy(name):
 
 
 @pytest.mark.parametrize('christoffel', ['polynomial', 'symbolic', 'recursive'])
-@pytest.mark.parametrize('name', list(CASES))
+@pytest.mark.parametrize('name', slow_except(list(CASES), FAST_CASES))
 def test_lagrange_equations_agree_with_sympy(name, christoffel):
     """The three ways of forming the equations (the automatic choice takes
     the polynomial one for chains this small)."""

@@ -50,6 +50,7 @@ def test_readme_block_as_a_script(tmp_path):
     check_output(run.stdout, folder)
 
 
+@pytest.mark.slow       # a Jupyter kernel of its own; `make test-slow` (CI)
 def test_readme_block_in_the_sage_kernel(tmp_path):
     nbformat = pytest.importorskip("nbformat")
     from test_worksheets import run_notebook

@@ -57,6 +57,7 @@ def test_budget_skips_the_stability_of_a_large_ladder_and_the_rest_prints(big_la
     assert sum(line.startswith("  [q") for line in lines) == 41
 
 
+@pytest.mark.slow
 def test_cli_on_a_large_ladder(big_ladder):
     run = subprocess.run([sys.executable, "-m", "sage_dynsym", big_ladder], capture_output=True,
                          text=True, timeout=300)

@@ -187,6 +187,7 @@ def _run(*args):
                           text=True, timeout=240, preexec_fn=_limits)
 
 
+@pytest.mark.slow
 def test_report_processes_with_limits(files):
     run = _run("--time-limit", "60", files['abelian'], files['power'], files['perfect'],
                "/no/such/file.yaml")

@@ -24,6 +24,9 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from hostile.corpus import cases, write  # noqa: E402
 
+# the whole hostile corpus, each file in a process of its own: `make test-slow` (CI) runs it
+pytestmark = pytest.mark.slow
+
 SECONDS = 60                # per file: a hang detector, far above the usual seconds
 MEGABYTES = 2048            # RLIMIT_DATA of each process
 CASES = cases()

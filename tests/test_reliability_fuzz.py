@@ -9,7 +9,7 @@ of every size, operators, functions (allowed or not), nesting, junk
 characters; mechanical and circuit descriptions with every key, values of
 every YAML type, bodies, rotations, inertia tensors, branches in both
 forms -- so that most examples get deep into the reader. Runs are
-deterministic (``derandomize``) and small enough for ``make test``.
+deterministic (``derandomize``); ``make test-slow`` runs them.
 """
 import copy
 import math
@@ -25,6 +25,9 @@ from sage_dynsym import load, DynSymError
 from sage_dynsym.io.expressions import ExpressionParser
 from sage_dynsym.description import mechanical_system_from_dict
 from sage_dynsym.circuits.description import circuit_from_dict
+
+# hundreds of random descriptions: `make test-slow` (CI) runs it
+pytestmark = pytest.mark.slow
 
 SECONDS = 20        # per example: a hang fails the test
 

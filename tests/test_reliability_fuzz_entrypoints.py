@@ -27,6 +27,7 @@ from sage_dynsym import (DynSymError, Lagrangian, LiePoissonSystem, MechanicalSy
 from sage_dynsym.circuits import Circuit
 from sage_dynsym.numerics.trajectory import Trajectory
 
+
 SECONDS = 30
 
 

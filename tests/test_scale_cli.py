@@ -122,6 +122,7 @@ def test_report_command_line_unchanged(capsys):
     assert "Lagrangian (loop-current method):" in capsys.readouterr().out
 
 
+@pytest.mark.slow       # starts a local cluster; `make test-slow` (CI)
 def test_console_with_a_local_cluster(tmp_path):
     prefix = str(tmp_path / "cluster")
     run = subprocess.run([sys.executable, '-m', 'sage_dynsym', 'map', LADDER,

@@ -102,6 +102,7 @@ def test_model_sweep_on_dask(clients):
     ("sweep-", lambda ladder, c: sweep(scale_helpers.slow_product, {'a': (0, 1, 4), 'b': (0, 1, 4)},
                                        fixed={'delay': 0.05}, client=c, chunk_size=1)),
 ])
+@pytest.mark.slow       # real worker processes killed and restarted; `make test-slow` (CI)
 def test_worker_killed_in_the_middle(tmp_path, ladder, label, run):
     marker = tmp_path / "killed"
     with cluster(2) as two, Client(two, set_as_default=False) as c:

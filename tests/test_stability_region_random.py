@@ -193,6 +193,7 @@ def test_one_free_multiplier_in_several_minors(seed, qepcad_calls):
     assert qepcad_calls
 
 
+@pytest.mark.slow
 def test_both_outcomes_occur_across_problems():
     # the random problems above must not all be trivially (in)definite
     counts = {True: 0, False: 0}

@@ -67,6 +67,7 @@ def axis_of(s):
     return [k for k, M in enumerate(MS) if str(s.point()[M]) == str(M)][0]
 
 
+@pytest.mark.slow
 def test_euler_top_rest_point_and_three_lines_of_rotations():
     X, H, V = euler(AS)
     sols = stationary_solutions([H, V], MS, equations=X, positive=AS)

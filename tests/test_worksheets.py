@@ -13,6 +13,7 @@ import pytest
 nbformat = pytest.importorskip("nbformat")
 nbclient = pytest.importorskip("nbclient")
 from jupyter_client.kernelspec import KernelSpecManager, NoSuchKernel  # noqa: E402
+from conftest import slow_except  # noqa: E402
 
 WORKSHEETS = sorted((Path(__file__).resolve().parent.parent / "worksheets").glob("*.ipynb"))
 KERNEL = "sagemath"
@@ -70,6 +71,7 @@ def run_notebook(nb, folder):
     return nb
 
 
-@pytest.mark.parametrize("path", WORKSHEETS, ids=[p.stem for p in WORKSHEETS])
+# one worksheet in `make test`; all of them in `make test-slow` (CI) and `make worksheets`
+@pytest.mark.parametrize("path", slow_except(WORKSHEETS, WORKSHEETS[:1], ids=lambda p: p.stem))
 def test_worksheet_runs(path, tmp_path):
     run_notebook(nbformat.read(path, as_version=4), tmp_path)

@@ -12,7 +12,7 @@ for part in "$@"; do
   [ "$status" -ne 0 ] && break
 done
 echo
-echo "== where the time went (make test) =="
+echo "== where the time went =="
 for i in "${!names[@]}"; do printf '  %-10s %5d s\n' "${names[$i]}" "${times[$i]}"; done
 printf '  %-10s %5d s\n' total $(( $(date +%s) - start_all ))
 [ "$status" -ne 0 ] && echo "  (stopped: $part failed)"

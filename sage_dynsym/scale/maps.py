@@ -56,15 +56,15 @@ included::
 
     sage: S.agreement([c > 0, k > 0])
     1.0
-    sage: G = S.plot([c > 0, k > 0]); G
+    sage: G = S.plot([c > 0, k > 0]); G  # long time
     Graphics object consisting of 6 graphics primitives
 
 The picture has a legend naming the colours and the exact boundary, and a
 title with the fixed values::
 
-    sage: sorted(p.options()['legend_label'] for p in G if p.options().get('legend_label'))
+    sage: sorted(p.options()['legend_label'] for p in G if p.options().get('legend_label'))  # long time
     ['asymptotically stable', 'exact boundary', 'stable in first approximation', 'unstable']
-    sage: G._extra_kwds['title']
+    sage: G._extra_kwds['title']  # long time
     'stability map\n$m = 1$'
 
 (on the lines `c = 0` and `k = 0` the roots of largest real part are on
@@ -948,7 +948,7 @@ class StabilityMap(SageObject):
             sage: a, b, c = var('a b c')
             sage: S = stability_map(LinearSystem([var('x')], J=[[a + b + c]]),
             ....:                   {a: (-1, 1, 5), b: (-1, 1, 5), c: (-1, 1, 3)}, client=False)
-            sage: S.plot([-a - b - c], section={c: 0.4})
+            sage: S.plot([-a - b - c], section={c: 0.4})  # long time
             Graphics object consisting of 6 graphics primitives
             sage: S.plot()
             Traceback (most recent call last):
