@@ -26,6 +26,14 @@ in the structured form (5): mass-matrix entries times accelerations, Christoffel
 coefficients times products of velocities, gyroscopic and non-stationary
 terms; nothing is expanded. Any other Lagrangian is differentiated directly.
 
+The class is assembled from base classes, one concern each: the equations
+(:mod:`~sage_dynsym.dynamics.lagrange_equations`), the holonomic
+constraints and their multipliers (:mod:`~sage_dynsym.dynamics.holonomic`),
+the momenta, energy and Legendre transform
+(:mod:`~sage_dynsym.dynamics.legendre`), the cyclic coordinates and the
+Routh reduction (:mod:`~sage_dynsym.dynamics.routh`), and the numerics
+(:class:`~sage_dynsym.numerics.methods.NumericalMethods`).
+
 EXAMPLES:
 
 A particle on a rotating hoop, given directly::

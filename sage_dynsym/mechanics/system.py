@@ -9,6 +9,15 @@ energy (1), the force function ((2) or (3)) and the Lagrangian (4) are
 derived; the Lagrangian object then gives the Lagrange, Routh and Hamilton
 equations.
 
+The class is assembled from base classes, one concern each: the checks of
+its construction (:mod:`~sage_dynsym.mechanics.system_checks`), the
+kinematics (:mod:`~sage_dynsym.mechanics.system_kinematics`), the energies
+and the Lagrangian (:mod:`~sage_dynsym.mechanics.system_lagrangian`), the
+constraints (:mod:`~sage_dynsym.mechanics.system_constraints`), the
+operating points (:mod:`~sage_dynsym.mechanics.operating_points`), the
+description format (:mod:`~sage_dynsym.mechanics.format`) and the numerics
+(:mod:`~sage_dynsym.mechanics.system_numerics`).
+
 EXAMPLES:
 
 Example 1 of :doc:`the method </method>`, the spherical pendulum::
