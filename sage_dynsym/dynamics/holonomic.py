@@ -19,7 +19,6 @@ EXAMPLES::
     sage: L.constraints(), L.multipliers()
     ([-l^2 + x^2 + y^2], [mu1])
 """
-import numbers
 import operator
 
 from sage.matrix.constructor import matrix
@@ -80,6 +79,10 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
         Traceback (most recent call last):
         ...
         ModelError: constraints[0]: expected an expression f(q, t) or an equation, got 'x'
+        sage: check_constraints([None], [x])
+        Traceback (most recent call last):
+        ...
+        ModelError: constraints[0]: expected an expression f(q, t) or an equation, got None
         sage: check_constraints([x < y], [x, y])
         Traceback (most recent call last):
         ...
@@ -106,10 +109,14 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
     out = []
     for i, f in enumerate(constraints):
         sub = f"{entry}[{i}]"
-        if not isinstance(f, (Expression, numbers.Number)):
+        try:
+            # text is parsed by the description reader, never here
+            if isinstance(f, (str, bytes)):
+                raise TypeError
+            f = SR(f)
+        except (TypeError, ValueError):
             raise ModelError(f"expected an expression f(q, t) or an equation, got {f!r}",
-                             entry=sub)
-        f = SR(f)
+                             entry=sub) from None
         if f.is_relational():
             if f.operator() is not operator.eq:
                 raise ModelError("expected an expression f meaning f = 0 or an equation, "
