@@ -557,8 +557,8 @@ class MechanicalFormat:
             out['force_function'] = terms if isinstance(self.force_field(), list) else terms[0]
         if not self.dissipation().is_zero():
             out['dissipation'] = _text(self.dissipation())
-        if any(not f.is_zero() for f in self._forces):
-            out['forces'] = [_text(f) for f in self._forces]
+        if any(not f.is_zero() for f in self.given_forces()):
+            out['forces'] = [_text(f) for f in self.given_forces()]
         if self.loads():
             out['loads'] = [load.to_dict() for load in self.loads()]
         constraints = self.constraint_set()

@@ -610,3 +610,18 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             forces = [a + b for a, b in zip(forces, load.generalized_forces(self, f"loads[{i}]"))]
         return forces
 
+    def given_forces(self):
+        r"""
+        The generalized forces given as ``forces`` (zeros if none), without
+        those of the :meth:`loads`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, F = var('x F')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x], forces=[1],
+            ....:                  loads=[{'body': 'b', 'force': [F, 0, 0]}]).given_forces()
+            [1]
+        """
+        return list(self._forces)
+
