@@ -8,7 +8,9 @@ layer importing only the ones below it:
   the package's symbols and reserved names;
 - :mod:`sage_dynsym.io` -- the safe expression parser and the reading and
   writing of files;
-- :mod:`sage_dynsym.analysis` -- exact algebra and qualitative analysis;
+- :mod:`sage_dynsym.algebra` -- exact algebra (solving, conditions,
+  quantifier elimination, trigonometric polynomials);
+- :mod:`sage_dynsym.analysis` -- qualitative analysis;
 - :mod:`sage_dynsym.dynamics` -- characteristic functions and equations
   (Lagrangian, Routh function, Hamiltonian, Dirac's scheme) and the common
   interface of models;
@@ -19,9 +21,9 @@ layer importing only the ones below it:
 - :mod:`~sage_dynsym.report`, :mod:`sage_dynsym.interact` -- reports and
   interactive pages; ``__main__`` -- the command line.
 
-The modules of earlier versions (``sage_dynsym.dynamics.lagrangian``,
-``sage_dynsym.mechanics.system``, ...) remain importable under their old
-names.
+The modules of earlier versions (``sage_dynsym.lagrangian``,
+``sage_dynsym.mechanical_system``, ``sage_dynsym.analysis.solving``, ...)
+remain importable under their old names.
 """
 import importlib
 import importlib.abc
@@ -56,7 +58,7 @@ _PUBLIC = {
                   'equilibrium_family', 'StationarySolution', 'StationarySolutions',
                   'solve_exactly', 'exists', 'small_damping_limit', 'spectrum_regions',
                   'OperatingPoint', 'steady_motion_conditions', 'steady_motions'],
-    '.analysis.trigonometric': ['trig_rational_simplify'],
+    '.algebra.trigonometric': ['trig_rational_simplify'],
     '.lie': ['LiePoissonSystem', 'PoissonStructure', 'lie_algebra', 'poisson_structure',
              'casimirs', 'polynomial_integrals', 'euler_poisson', 'kirchhoff'],
     '.numerics': ['NumericalMethods', 'Trajectory', 'numerical_rhs', 'simulate',
@@ -72,7 +74,7 @@ __all__ = [name for names in _PUBLIC.values() for name in names]
 _MOVED = {
     'names': 'symbols',
     'expressions': 'io.expressions',
-    'trig': 'analysis.trigonometric',
+    'trig': 'algebra.trigonometric',
     'lagrangian': 'dynamics.lagrangian',
     'routh': 'dynamics.lagrangian',
     'natural_equations': 'dynamics.natural_equations',
@@ -83,6 +85,19 @@ _MOVED = {
     'force_functions': 'mechanics.force_functions',
     'kinematics': 'mechanics.kinematics',
     'mechanical_system': 'mechanics.system',
+    'circuits.inductance': 'circuits.elements.windings',
+    'analysis._polynomials': 'algebra.polynomials',
+    'analysis.conditions': 'algebra.conditions',
+    'analysis.decomposition': 'algebra.decomposition',
+    'analysis.determinants': 'algebra.determinants',
+    'analysis.quantifier_elimination': 'algebra.quantifier_elimination',
+    'analysis.regions': 'algebra.regions',
+    'analysis.size': 'algebra.size',
+    'analysis.solving': 'algebra.solving',
+    'analysis.translation': 'algebra.translation',
+    'analysis.trig_linear': 'algebra.trig_linear',
+    'analysis.trigonometric': 'algebra.trigonometric',
+    'lie._polynomials': 'algebra.polynomial_spaces',
 }
 
 
@@ -112,7 +127,7 @@ class _MovedModules(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         return None
 
     def create_module(self, spec):
-        return importlib.import_module(f"{__name__}.{_MOVED[spec.name.rpartition('.')[2]]}")
+        return importlib.import_module(f"{__name__}.{_MOVED[spec.name.partition('.')[2]]}")
 
     def exec_module(self, module):
         pass

@@ -17,17 +17,20 @@ import sage.all  # noqa: F401
 from .elimination import equilibrium_family, EquilibriumFamily
 from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
-                      conservative_stability_conditions, simplify_conditions)
+                      conservative_stability_conditions)
 from .linear import LinearSystem, linearize
 from .operating_point import OperatingPoint
 from .steady import (steady_linearization, steady_motion_conditions, steady_motions,
                      SteadyMotion)
 from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
                               restrict_to_subspace, simultaneous_reduction)
-from .solving import solve_exactly, normalize
-from .quantifier_elimination import exists
+# the exact algebra's entry points, also served here
+from ..algebra.conditions import simplify_conditions
+from ..algebra.solving import solve_exactly, normalize
+from ..algebra.quantifier_elimination import exists
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
 from .damping_limit import small_damping_limit, DampingLimit
 from .spectrum import spectrum_regions
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
-                         StationarySolution, StationarySolutions, ModifiedRouthLyapunov)
+                         StationarySolution, StationarySolutions, StationaryProblem,
+                         solve_stationary, ModifiedRouthLyapunov)

@@ -1,7 +1,7 @@
 r"""
 Critical values of a parameter on the boundary of a stable set
 
-A stable set is given by a region (see :mod:`~sage_dynsym.analysis.regions`)
+A stable set is given by a region (see :mod:`~sage_dynsym.algebra.regions`)
 and its boundaries, polynomial equations `f = 0` (the flutter and
 divergence boundaries of :mod:`~sage_dynsym.analysis.spectrum`). Along one
 parameter `p`, the stability can change only at a root of a boundary
@@ -28,7 +28,7 @@ from sage.symbolic.relation import solve
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .conditions import region_holds
+from ..algebra.conditions import region_holds
 
 
 def _candidates(boundaries, parameter):

@@ -49,9 +49,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from .critical import critical_values
-from .determinants import fraction_free_det
-from .kelvin_chetaev import kelvin_chetaev, _matrices
-from .regions import simplify_region, prune_empty
+from ..algebra.determinants import fraction_free_det
+from .kelvin_chetaev import kelvin_chetaev, force_matrices
+from ..algebra.regions import simplify_region, prune_empty
 from .spectrum import spectrum_regions
 
 _OPS = {'gt': lambda e: e > 0, 'lt': lambda e: e < 0, 'ne': lambda e: e != 0}
@@ -87,7 +87,7 @@ class DampingLimit(SageObject):
     """
 
     def __init__(self, M, D0, G, K, P=None, positive=()):
-        M, D0, G, K, P = _matrices(M, D0, G, K, P)
+        M, D0, G, K, P = force_matrices(M, D0, G, K, P)
         if D0.is_zero():
             raise AnalysisError("the shape of the damping matrix is zero", entry="damping")
         self._D0 = D0

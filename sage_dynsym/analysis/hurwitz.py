@@ -78,23 +78,22 @@ REFERENCES:
   ch. 5 (Hurwitz and Liénard--Chipart criteria, conservative systems).
 """
 from sage.matrix.constructor import matrix
-from sage.misc.misc_c import prod
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
-from sage.rings.polynomial.polynomial_ring import PolynomialRing_generic
-from sage.rings.polynomial.multi_polynomial_ring_base import MPolynomialRing_base
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 from sage.structure.element import Element
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_ring, to_sr, positive_polynomial
+from ..algebra.conditions import Unexpanded, reduce_conditions, conditions_as_expressions
+# simplify_conditions and FACTOR_LIMIT moved to the algebra; their old place still serves them
+from ..algebra.conditions import simplify_conditions  # noqa: F401
+from ..algebra.polynomials import FACTOR_LIMIT  # noqa: F401
+from ..algebra.polynomials import (parameter_ring, to_sr, is_constant, constant_value,
+                                   is_polynomial_ring)
 
 #: Default limit on the term multiplications of one product in the
 #: fraction-free Routh scheme before determinants are left unexpanded.
 DEFAULT_BUDGET = 5 * 10**6
-
-#: Polynomials with more terms than this are not factored.
-FACTOR_LIMIT = 3000
 
 
 # ---------------------------------------------------------------------------
@@ -140,7 +139,7 @@ def polynomial_coefficients(poly, var):
     """
     name = str(var)
     parent = poly.parent() if isinstance(poly, Element) else None
-    if _is_polynomial_ring(parent) and name in parent.variable_names():
+    if is_polynomial_ring(parent) and name in parent.variable_names():
         names = parent.variable_names()
         if len(names) == 1:
             coeffs = poly.list()[::-1]
@@ -193,22 +192,9 @@ def polynomial_coefficients(poly, var):
     return coeffs, den
 
 
-def _is_polynomial_ring(parent):
-    return parent is not None and parent is not SR and \
-        (parent is QQ or isinstance(parent, (PolynomialRing_generic, MPolynomialRing_base)))
-
-
-def _is_constant(f):
-    return f.parent() is QQ or f.is_constant()
-
-
-def _constant(f):
-    return QQ(f) if f.parent() is QQ else QQ(f.constant_coefficient())
-
-
 def _normalized_coefficients(poly, var):
     a, _ = polynomial_coefficients(poly, var)
-    if _is_constant(a[0]) and _constant(a[0]) < 0:
+    if is_constant(a[0]) and constant_value(a[0]) < 0:
         a = [-c for c in a]
     return a
 
@@ -248,13 +234,6 @@ def hurwitz_matrix(poly, var):
     """
     a, _ = polynomial_coefficients(poly, var)
     return _hurwitz_matrix_of(a).change_ring(SR)
-
-
-class _Unexpanded:
-    """A Hurwitz determinant kept as a polynomial in the coefficients."""
-
-    def __init__(self, expr):
-        self.expr = expr
 
 
 def _generic_determinants(n, upto):
@@ -340,8 +319,39 @@ def hurwitz_determinants(poly, var, upto=None, budget=DEFAULT_BUDGET):
         [0, -1, -1]
     """
     a = _normalized_coefficients(poly, var)
-    return [to_sr(d) if not isinstance(d, _Unexpanded) else d.expr
+    return [to_sr(d) if not isinstance(d, Unexpanded) else d.expr
             for d in _determinants(a, upto or len(a) - 1, budget)[1:]]
+
+
+def routh_scheme_fits(poly, var, budget=DEFAULT_BUDGET):
+    r"""
+    Whether the fraction-free Routh scheme gives every Hurwitz determinant
+    `\Delta_1, \dots, \Delta_{n-1}` of ``poly`` expanded within ``budget``
+    -- no product of more than ``budget`` pairs of terms --, checked by
+    running the scheme with that budget (the costly products are not
+    made). A vanishing pivot (the determinants then come from the Hurwitz
+    matrix directly) and numeric coefficients count as fitting.
+
+    INPUT: as for :func:`hurwitz_determinants`
+
+    OUTPUT: a boolean
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.hurwitz import routh_scheme_fits
+        sage: lam = var('lam'); a = var('a0 a1 a2 a3 a4')
+        sage: p = sum(a[i]*lam^(4 - i) for i in range(5))
+        sage: routh_scheme_fits(p, lam), routh_scheme_fits(p, lam, budget=1)
+        (True, False)
+        sage: routh_scheme_fits(lam^3 + 2*lam + 1, lam, budget=1)
+        True
+    """
+    a = _normalized_coefficients(poly, var)
+    n = len(a) - 1
+    if n < 2 or a[0].parent() is QQ:
+        return True
+    deltas, reached = _routh_scheme(a, n - 1, budget)
+    return reached >= n - 1 or deltas[reached] == 0
 
 
 def _determinants(a, upto, budget):
@@ -357,167 +367,9 @@ def _determinants(a, upto, budget):
         else:
             hring, generic = _generic_determinants(n, upto)
             subs = {SR.var("h%d" % i): to_sr(c) for i, c in enumerate(a)}
-            deltas += [_Unexpanded(SR(generic[k]).subs(subs))
+            deltas += [Unexpanded(SR(generic[k]).subs(subs))
                        for k in range(reached + 1, upto + 1)]
     return deltas
-
-
-# ---------------------------------------------------------------------------
-# simplification of condition lists
-# ---------------------------------------------------------------------------
-
-def _positive_names(positive):
-    return {str(p) for p in positive}
-
-
-def _simplify_one(f, positive):
-    r"""
-    Reduce the condition ``f > 0`` to ``g > 0`` (a polynomial or unexpanded
-    expression), or ``None`` if it always holds. Returns ``(g, factors)``
-    where ``factors`` is the set of odd-power factors kept.
-    """
-    if isinstance(f, _Unexpanded):
-        return f.expr, None
-    if _is_constant(f):
-        c = _constant(f)
-        return (None, None) if c > 0 else (f.parent()(c.sign()), None)
-    if positive_polynomial(f, positive):
-        return None, None
-    if positive_polynomial(-f, positive):
-        return f.parent()(-1), None
-    if len(f.dict()) > FACTOR_LIMIT:
-        return f, frozenset([f])
-    F = f.factor()
-    sign = QQ(F.unit()).sign()
-    kept = []
-    for g, e in F:
-        if positive_polynomial(g, positive):
-            continue
-        if positive_polynomial(-g, positive):
-            sign = sign * (-1) ** e
-            continue
-        if e % 2:
-            if g.lc() < 0:      # canonical sign, so that equal factors match
-                g, sign = -g, -sign
-            kept.append(g)
-    if not kept:
-        return (None, None) if sign > 0 else (f.parent()(-1), None)
-    product = sign
-    for g in kept:
-        product *= g
-    if len(kept) == 1 and sign < 0:
-        kept = [-kept[0]]
-        sign = 1
-    return product, (frozenset(kept) if sign > 0 else frozenset([product]))
-
-
-def simplify_conditions(conditions, positive=()):
-    r"""
-    Simplify a list of polynomial conditions ``f > 0``.
-
-    INPUT:
-
-    - ``conditions`` -- list of polynomials (or symbolic expressions
-      polynomial in their variables)
-    - ``positive`` -- (default: ``()``) variables known to be positive
-
-    OUTPUT: list of symbolic expressions, all to be ``> 0``, equivalent to
-    the input (up to the zero sets of even-power factors); if a condition
-    can never hold the list is just one nonpositive constant
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.hurwitz import simplify_conditions
-        sage: a, b, m = var('a b m')
-        sage: simplify_conditions([m^2*(a - b), 2*m*a, a - b, a*b], positive=[m])
-        [a - b, a, b]
-        sage: simplify_conditions([a, -3*m, a*b], positive=[m])
-        [-1]
-        sage: simplify_conditions([a, b, 4*a*b], positive=[m])
-        [a, b]
-
-    A condition implied by another one (their difference is positive on
-    the positive variables) is removed::
-
-        sage: simplify_conditions([a^2 - 2*m*b, a^2 - 4*m*b, b], positive=[m, b])
-        [a^2 - 4*b*m]
-    """
-    native = lambda f: isinstance(f, _Unexpanded) or (
-        isinstance(f, Element) and _is_polynomial_ring(f.parent()))
-    symbols = set()
-    for f in conditions:
-        if not native(f):
-            symbols |= set(SR(f).variables())
-    ring = parameter_ring(symbols)
-    polys = [f if native(f) else to_ring(SR(f), ring, "condition") for f in conditions]
-    return _to_sr(_reduce(polys, positive))
-
-
-def _reduce(polys, positive):
-    r"""
-    Simplified conditions as a list of entries: a tuple of factors (a
-    product of polynomials, all required ``> 0`` together), or an
-    :class:`_Unexpanded`. Stays in the polynomial rings.
-    """
-    positive = _positive_names(positive)
-    result = []
-    known = []          # single factors already required to be positive
-    for f in polys:
-        g, fs = _simplify_one(f, positive)
-        if g is None:
-            continue
-        if fs is None:
-            result.append(_Unexpanded(g) if isinstance(f, _Unexpanded) else (g,))
-            continue
-        rest = [h for h in fs if h not in known]
-        if not rest:
-            continue
-        if len(rest) == 1:
-            known.append(rest[0])
-        result.append(tuple(sorted(rest, key=_order_key)))
-    impossible = [e for e in result if not isinstance(e, _Unexpanded)
-                  and len(e) == 1 and _is_constant(e[0])]
-    return impossible[:1] if impossible else _drop_implied(result, positive)
-
-
-def _drop_implied(entries, positive):
-    r"""
-    Remove single-factor conditions `f > 0` implied by another one
-    `g > 0`: when `f - c g` (for some `c > 0`) has only positive
-    coefficients and only variables known to be positive.
-    """
-    single = [e[0] for e in entries if not isinstance(e, _Unexpanded) and len(e) == 1]
-
-    def implied_by(f, g):
-        if f.parent() is not g.parent() or len(g.dict()) > 50:
-            return False
-        # the multiple c of g must cancel every term of f outside the
-        # positive variables: try the ratios of common coefficients
-        for monomial, coefficient in g.dict().items():
-            c = f.dict().get(monomial, 0) / coefficient
-            if c <= 0:
-                continue
-            d = f - c * g
-            if (not d.is_zero() and all(str(v) in positive for v in d.variables())
-                    and all(a > 0 for a in d.coefficients())):
-                return True
-        return False
-
-    dropped = {i for i, f in enumerate(single)
-               if any(j != i and implied_by(f, g) for j, g in enumerate(single))}
-    drop = [single[i] for i in dropped]
-    return [e for e in entries if isinstance(e, _Unexpanded) or len(e) != 1
-            or e[0] not in drop]
-
-
-def _order_key(f):
-    n = len(f.dict())
-    return (n, str(f) if n < 1000 else '')
-
-
-def _to_sr(entries):
-    return [e.expr if isinstance(e, _Unexpanded) else prod(to_sr(h) for h in e)
-            for e in entries]
 
 
 # ---------------------------------------------------------------------------
@@ -597,7 +449,7 @@ def hurwitz_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
                             entry="hurwitz_conditions")
     deltas = _determinants(a, n - 1, budget)
     conds = [a[0]] + deltas[1:n] + [a[n]]
-    return _to_sr(_reduce(conds, positive))
+    return conditions_as_expressions(reduce_conditions(conds, positive))
 
 
 def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
@@ -652,14 +504,14 @@ def lienard_chipart_conditions(poly, var, positive=(), budget=DEFAULT_BUDGET):
     deltas = _determinants(a, n - 1, budget) if det_idx else [None]
     first = [a[i] for i in range(n, -1, -2)]
     second = [a[n]] + [a[i] for i in range(n - 1, -1, -2)]
-    reduced = [_reduce([a[0]] + cs, positive) for cs in (first, second)]
+    reduced = [reduce_conditions([a[0]] + cs, positive) for cs in (first, second)]
     for r in reduced:
         # a coefficient of the wrong sign in either set: no root test needed
-        if len(r) == 1 and not isinstance(r[0], _Unexpanded) and len(r[0]) == 1 \
-                and _is_constant(r[0][0]):
-            return _to_sr(r)
+        if len(r) == 1 and not isinstance(r[0], Unexpanded) and len(r[0]) == 1 \
+                and is_constant(r[0][0]):
+            return conditions_as_expressions(r)
     coeffs = first if len(reduced[0]) <= len(reduced[1]) else second
-    return _to_sr(_reduce([a[0]] + coeffs + [deltas[k] for k in det_idx], positive))
+    return conditions_as_expressions(reduce_conditions([a[0]] + coeffs + [deltas[k] for k in det_idx], positive))
 
 
 # ---------------------------------------------------------------------------

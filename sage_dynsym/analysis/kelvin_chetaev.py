@@ -110,18 +110,33 @@ from sage.matrix.constructor import matrix, block_matrix, identity_matrix
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .determinants import fraction_free_det
-from .quadratic_forms import (definiteness_conditions, semidefiniteness_conditions,
-                              _det)
-from .regions import partition, simplify_region, negation, intersection, prune_empty
-from .solving import normalize
+from ..algebra.determinants import fraction_free_det
+from .quadratic_forms import definiteness_conditions, semidefiniteness_conditions
+from ..algebra.regions import partition, simplify_region, negation, intersection, prune_empty
+from ..algebra.solving import normalize
 from .spectrum import spectrum_regions
 from .verdict import StabilityVerdict
 
 __all__ = ['kelvin_chetaev', 'StabilityVerdict']
 
 
-def _matrices(M, D, G, K, P):
+def force_matrices(M, D, G, K, P=None):
+    r"""
+    The matrices `M, D, G, K, P` of the forces of `M\ddot q + (D + 2G)\dot q
+    + (K + P)q = 0` over ``SR``, checked to be square of the same size
+    (``P = None`` is the zero matrix).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.kelvin_chetaev import force_matrices
+        sage: m, k = var('m k')
+        sage: force_matrices([[m]], [[0]], [[0]], [[k]])
+        ([m], [0], [0], [k], [0])
+        sage: force_matrices(identity_matrix(2), zero_matrix(2), zero_matrix(2), [[k]])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: kelvin_chetaev: K is 1x1, expected 2x2 like M
+    """
     M, D, G, K = (matrix(SR, X) for X in (M, D, G, K))
     n = M.nrows()
     P = matrix(SR, n, n) if P is None else matrix(SR, P)
@@ -162,7 +177,7 @@ def _reasons(M, D, G, K, P, spectrum, positive, mechanical=True):
     has_D, has_G = not D.is_zero(), not G.is_zero()
     has_P = not P.is_zero() or not mechanical       # no Kelvin-Chetaev theorems then
     complete = has_D and _possible(definiteness_conditions(D, positive=positive))
-    detK = _det(K)
+    detK = fraction_free_det(K)
     odd = not has_P and _possible(simplify_region([[detK < 0]], positive) or None)
     odd_always = odd and simplify_region([[detK < 0]], positive) == [[]]
     root = "a root of the characteristic polynomial has a positive real part " \
@@ -299,14 +314,14 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
         ...
         AnalysisError: kelvin_chetaev: K is 1x1, expected 2x2 like M
     """
-    M, D, G, K, P = _matrices(M, D, G, K, P)
+    M, D, G, K, P = force_matrices(M, D, G, K, P)
     positive = list(positive)
     kinetic = definiteness_conditions(M, positive=positive)
     mechanical = kinetic is not None
     if not mechanical:
         # not a mechanical system: the first approximation still decides,
         # the theorems on the structure of forces do not apply
-        if normalize(_det(M)).is_zero():
+        if normalize(fraction_free_det(M)).is_zero():
             raise AnalysisError(f"the kinetic matrix M = {list(M)} is singular: the "
                                 "equations are not of second order in every coordinate",
                                 entry="kelvin_chetaev")
@@ -326,7 +341,7 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
             # needs K > 0, and so does any stability without gyroscopic forces
             outside = negation([D_semidefinite], positive) or []
             needs_K = ([K_definite] if K_definite is not None else []) + outside + \
-                [[_det(K) == 0]]
+                [[fraction_free_det(K) == 0]]
             asymptotic = intersection(asymptotic, needs_K, positive) if asymptotic else None
             if G.is_zero() and marginal:
                 marginal = intersection(marginal, needs_K, positive)

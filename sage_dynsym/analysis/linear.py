@@ -54,9 +54,9 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .determinants import fraction_free_det as _fraction_free_det
+from ..algebra.determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
-from .solving import normalize
+from ..algebra.solving import normalize
 
 
 def _at(expr, point):

@@ -86,7 +86,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..symbols import velocity
 from .linear import equations_of_motion
-from .solving import solve_exactly, normalize
+from ..algebra.solving import solve_exactly, normalize
 
 #: Random complex points at which an equation of motion that Sage does not
 #: simplify to zero is evaluated on a family.
@@ -413,7 +413,7 @@ class ModifiedRouthLyapunov(SageObject):
 
     def _solve_ode(self):
         from sage.calculus.desolvers import desolve
-        from ._polynomials import maxima_without_questions
+        from ..algebra.polynomials import maxima_without_questions
         fq = self._fs[0]
         with maxima_without_questions(_WHAT, self._positive):
             sol = desolve(self.degeneracy_condition(), fq, ivar=self._q)

@@ -27,10 +27,10 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import positive_polynomial
-from .conditions import positive_conditions_all, nonzero_conditions, conjunction
-from .solving import normalize
-from .translation import Translation
+from ..algebra.polynomials import positive_polynomial
+from ..algebra.conditions import positive_conditions_all, nonzero_conditions, conjunction
+from ..algebra.solving import normalize
+from ..algebra.translation import Translation
 
 
 def form_matrix(form, variables):
@@ -110,12 +110,35 @@ def definiteness_conditions(quadratic_form_or_matrix, variables=None, sign='posi
         raise AnalysisError(f"sign must be 'positive' or 'negative', got {sign!r}",
                             entry="sylvester_conditions")
     A = _symmetric(quadratic_form_or_matrix, variables)
-    return positive_conditions_all(_signed_minors(A, sign), positive)
+    return positive_conditions_all(signed_leading_minors(A, sign), positive)
 
 
-def _signed_minors(A, sign):
-    r"""Expressions with the signs of the leading principal minors
-    (times `(-1)^k` for negative definiteness)."""
+def signed_leading_minors(A, sign='positive'):
+    r"""
+    Expressions with the signs of the leading principal minors
+    `\Delta_1, \dots, \Delta_n` of ``A`` (times `(-1)^k` for
+    ``sign='negative'``): all positive iff ``A`` is definite of that sign
+    (Sylvester). Each is the numerator times the denominator of the exact
+    minor, so no denominator is assumed positive.
+
+    INPUT:
+
+    - ``A`` -- a square symbolic matrix
+    - ``sign`` -- ``'positive'`` (default) or ``'negative'``
+
+    OUTPUT: a list of symbolic expressions
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.quadratic_forms import signed_leading_minors
+        sage: a, b, g = var('a b g')
+        sage: signed_leading_minors(matrix([[a, b], [b, 1/g]]))
+        [a, -b^2*g^2 + a*g]
+        sage: signed_leading_minors(matrix([[a, 0], [0, 1]]), sign='negative')
+        [-a, a]
+        sage: signed_leading_minors(matrix(SR, 0, 0))
+        []
+    """
     n = A.nrows()
     if not n:
         return []
@@ -271,17 +294,6 @@ def semidefiniteness_conditions(A, positive=()):
     return result
 
 
-def _det(A):
-    r"""An expression with the sign of `\det A` (the numerator times the
-    denominator of the exact determinant), `1` for an empty matrix."""
-    if not A.nrows():
-        return SR(1)
-    T = Translation([], [], extra=A.list())
-    F = T.fraction(SR(1)).parent()
-    d = matrix(F, [[T.fraction(e) for e in row] for row in A.rows()]).det()
-    return T.symbolic(F(d.numerator() * d.denominator()))
-
-
 def restrict_to_subspace(quadratic_form_or_matrix, constraints, variables,
                          with_conditions=False):
     r"""
@@ -404,7 +416,7 @@ def simultaneous_reduction(A, B, positive=()):
         sage: T.transpose()*B*T == 1, T.transpose()*A*T == diagonal_matrix(mu)
         (True, True)
     """
-    from ._polynomials import maxima_without_questions
+    from ..algebra.polynomials import maxima_without_questions
     with maxima_without_questions("simultaneous_reduction", positive):
         return _simultaneous_reduction(_symmetric(A, None), _symmetric(B, None))
 

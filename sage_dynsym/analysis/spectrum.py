@@ -90,12 +90,12 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_ring, to_sr
-from .conditions import nonzero_conditions
+from ..algebra.polynomials import parameter_ring, to_ring, to_sr
+from ..algebra.conditions import nonzero_conditions
 from .hurwitz import (lienard_chipart_conditions, real_negative_roots_conditions,
                       hurwitz_determinants)
-from .regions import simplify_region
-from .translation import Translation
+from ..algebra.regions import simplify_region
+from ..algebra.translation import Translation
 
 
 class _Atoms:

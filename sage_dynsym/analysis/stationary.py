@@ -5,7 +5,7 @@ For `\dot x = X(x)` with first integrals `V_0, \dots, V_k`, stationary
 solutions are conditional extrema of the integrals: the stationarity
 equations `\partial K/\partial x_i = 0` of `K = V_0 + \sum_{j\ge1}
 \lambda_j V_j`, together with the levels `V_j = c_j` that are prescribed.
-Their solution set is computed exactly (:mod:`.solving`): it is decomposed
+Their solution set is computed exactly (:mod:`~sage_dynsym.algebra.solving`): it is decomposed
 into irreducible components, each with its dimension -- `0` for an
 isolated solution, `k > 0` for a `k`-parameter family of stationary
 solutions, a candidate *stationary invariant manifold* --, explicit values
@@ -102,14 +102,14 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
 from ..arguments import known_symbols, symbol_arguments
-from .conditions import (positive_conditions, positive_conditions_all, conjunction,
-                         simplify_conjunction)
+from ..algebra.conditions import (positive_conditions, positive_conditions_all, conjunction,
+                                  simplify_conjunction)
 from .kelvin_chetaev import StabilityVerdict
 from .linear import LinearSystem
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
-                              _signed_minors)
-from .solving import solve_exactly, normalize, SolutionList
+                              signed_leading_minors)
+from ..algebra.solving import solve_exactly, normalize, SolutionList
 # the modified method has a module of its own; this import keeps its old path
 from .modified_routh import ModifiedRouthLyapunov  # noqa: F401
 
@@ -137,6 +137,128 @@ def check_integral(V, variables, equations, index=0):
                             entry="stationary_solutions")
 
 
+class StationaryProblem:
+    r"""
+    What a list of stationary solutions solves, the data its solutions read:
+    the function `K = V_0 + \sum_j \lambda_j V_j` (for stationary motions,
+    the amended potential `W`) and the variables of its Hessian, the
+    equations and their unknowns, the multipliers and the integrals, and
+    what the stability tests need. Built by :func:`stationary_solutions`
+    and :func:`stationary_motions`, solved by :func:`solve_stationary`;
+    nothing is computed here.
+
+    INPUT:
+
+    - ``function`` -- `K`, or `W`
+    - ``variables`` -- the variables of the Hessian of ``function``
+    - ``unknowns`` -- the unknowns of ``equations`` (variables, multipliers,
+      or parameters solved for)
+    - ``multipliers`` -- the multipliers `\lambda_1, \dots` (``[]`` for
+      stationary motions)
+    - ``equations`` -- the equations solved, each ``== 0``
+    - ``integrals`` -- (default: ``()``) the integrals `V_0, \dots, V_k`;
+      those after the first constrain the second variation
+    - ``kinetic`` -- (optional) the kinetic matrix of stationary motions:
+      it must be positive definite as well (Routh's theorem)
+    - ``signs`` -- (default: both) the signs of definiteness of the second
+      variation that give stability
+    - ``linear`` -- (optional) a function giving the first-approximation
+      system at a solution, from the solution's evaluation map
+    - ``rhs`` -- (optional) the right-hand sides `X(x)` of the equations of
+      motion
+    - ``positive`` -- the symbols declared positive
+    - ``description`` -- (optional) what is solved, for the listing
+      (default: ``K = ...``)
+    - ``shown`` -- (optional) the equations as they are shown, if not as
+      solved
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.stationary import StationaryProblem, solve_stationary
+        sage: x, y, l = var('x y l')
+        sage: P = StationaryProblem(x^2 + l*(x^2 + y^2), [x, y], [x, y, l], [l],
+        ....:                       [4*x + 2*l*x, 2*l*y], integrals=[x^2, x^2 + y^2])
+        sage: P.solved_variables(), P.constraint_integrals()
+        ([x, y], [x^2 + y^2])
+        sage: solve_stationary(P)
+        3 stationary solutions of K = (x^2 + y^2)*l + x^2
+    """
+
+    def __init__(self, function, variables, unknowns, multipliers, equations, integrals=(),
+                 kinetic=None, signs=('positive', 'negative'), linear=None, rhs=None,
+                 positive=(), description=None, shown=None):
+        self.function = SR(function)
+        self.variables = [SR(x) for x in variables]
+        self.unknowns = [SR(u) for u in unknowns]
+        self.multipliers = [SR(l) for l in multipliers]
+        self.equations = [SR(e) for e in equations]
+        self.integrals = [SR(V) for V in integrals]
+        self.kinetic = kinetic
+        self.signs = tuple(signs)
+        self.rhs = None if rhs is None else [SR(X) for X in rhs]
+        self.positive = list(positive)
+        self.description = description or f"K = {self.function}"
+        self.shown = self.equations if shown is None else [SR(e) for e in shown]
+        self._linear = linear
+
+    def solved_variables(self):
+        r"""The unknowns that are not multipliers (the counted dimensions).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import StationaryProblem
+            sage: x, l = var('x l')
+            sage: StationaryProblem(x^2 + l*x, [x], [x, l], [l], [2*x + l]).solved_variables()
+            [x]
+        """
+        return [u for u in self.unknowns if all(str(u) != str(l) for l in self.multipliers)]
+
+    def constraint_integrals(self):
+        r"""The integrals after the first, whose level sets the second
+        variation is restricted to.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import StationaryProblem
+            sage: x, y, l = var('x y l')
+            sage: P = StationaryProblem(x + l*y, [x, y], [x, y], [l], [1, l], integrals=[x, y])
+            sage: P.constraint_integrals()
+            [y]
+        """
+        return self.integrals[1:]
+
+    def hessian(self):
+        r"""The Hessian matrix of the function (symbolic).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import StationaryProblem
+            sage: x, y, a = var('x y a')
+            sage: StationaryProblem(x^2 + a*x*y, [x, y], [x, y], [], []).hessian()
+            [2 a]
+            [a 0]
+        """
+        v = self.variables
+        return matrix(SR, [[self.function.diff(x).diff(y) for y in v] for x in v])
+
+    def linear_system(self, evaluate):
+        r"""
+        The first-approximation system at a solution, given the solution's
+        evaluation map ``evaluate`` (an expression to its value on the
+        solution); ``None`` when the equations of motion are not known.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: s = stationary_solutions([(x^2 + y^2)/2], [x, y], equations=[y, -x])[0]
+            sage: s.stationary_problem().linear_system(s.solution().evaluate).jacobian()
+            [ 0  1]
+            [-1  0]
+        """
+        return None if self._linear is None else self._linear(evaluate)
+
+
 class StationarySolution(SageObject):
     r"""
     One stationary solution: a real branch of an irreducible component of
@@ -158,7 +280,7 @@ class StationarySolution(SageObject):
         self._solution = solution
 
     def _positive(self, positive):
-        return self._problem._positive if positive is None else positive
+        return self._problem.positive if positive is None else positive
 
     def _kind(self):
         r"""What the solution is, for its listing: ``'isolated'``, a family
@@ -166,8 +288,8 @@ class StationarySolution(SageObject):
         that were not unknowns (e.g. the coordinates when solving for the
         cyclic momenta), which its values depend on."""
         d = self.dimension()
-        solved = {str(u) for u in self._problem._solved}
-        over = [str(x) for x in self._problem._hessian_variables if str(x) not in solved and
+        solved = {str(u) for u in self._problem.unknowns}
+        over = [str(x) for x in self._problem.variables if str(x) not in solved and
                 any(SR(e).has(x) for e in self.point().values())]
         kind = "isolated" if d == 0 else f"{d}-parameter family"
         if over:
@@ -184,7 +306,7 @@ class StationarySolution(SageObject):
             kind += ", an invariant manifold of non-equilibrium motions"
         if not self.is_explicit():
             kind += ", implicit: see equations()"
-        conds = self._solution._conditions
+        conds = self._solution.known_conditions()
         if conds:
             kind += ", if " + " and ".join(map(str, conds))
         return f"Stationary solution {self.point()}" + (f", {mult}" if mult else "") + \
@@ -218,7 +340,7 @@ class StationarySolution(SageObject):
             {x: x, y: 0}
         """
         values = self._solution.values()
-        return {x: values[x] for x in self._problem._solved_variables()}
+        return {x: values[x] for x in self._problem.solved_variables()}
 
     def multipliers(self):
         r"""
@@ -234,7 +356,7 @@ class StationarySolution(SageObject):
             ({lambda1: lambda1}, {lambda1: -1/2})
         """
         values = self._solution.values()
-        return {l: values.get(l, l) for l in self._problem._multipliers}
+        return {l: values.get(l, l) for l in self._problem.multipliers}
 
     def free_multipliers(self):
         r"""The multipliers that the stationarity equations leave free.
@@ -247,7 +369,7 @@ class StationarySolution(SageObject):
             [lambda1]
         """
         free = {str(u) for u in self._solution.free_unknowns()}
-        return [l for l in self._problem._multipliers if str(l) in free]
+        return [l for l in self._problem.multipliers if str(l) in free]
 
     def equations(self):
         r"""
@@ -329,7 +451,7 @@ class StationarySolution(SageObject):
             sage: [(s.dimension(), s.is_equilibrium()) for s in sols]
             [(1, True), (3, False)]
         """
-        rhs = self._problem._rhs
+        rhs = self._problem.rhs
         if rhs is None:
             return None
         return all(normalize(self._at(X)).is_zero() for X in rhs)
@@ -350,7 +472,7 @@ class StationarySolution(SageObject):
         return self._solution.real_points()
 
     def solution(self):
-        r"""The underlying :class:`~sage_dynsym.analysis.solving.AlgebraicSolution`.
+        r"""The underlying :class:`~sage_dynsym.algebra.solving.AlgebraicSolution`.
 
         EXAMPLES::
 
@@ -360,6 +482,18 @@ class StationarySolution(SageObject):
             Solution {x: 0} (dimension 0)
         """
         return self._solution
+
+    def stationary_problem(self):
+        r"""The :class:`StationaryProblem` the solution solves.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: stationary_solutions([x^2], [x])[0].stationary_problem().equations
+            [2*x]
+        """
+        return self._problem
 
     def _at(self, expr):
         return self._solution.evaluate(expr)
@@ -377,7 +511,7 @@ class StationarySolution(SageObject):
             [xi_x, xi_y]
         """
         return [SR.var('xi_' + str(x), latex_name=r'\xi_{%s}' % latex(x))
-                for x in self._problem._hessian_variables]
+                for x in self._problem.variables]
 
     def hessian(self):
         r"""
@@ -417,9 +551,9 @@ class StationarySolution(SageObject):
             [2*x*xi_x]
         """
         xi = self.deviations()
-        variables = self._problem._hessian_variables
+        variables = self._problem.variables
         return [sum(self._at(SR(V).diff(x)) * d for x, d in zip(variables, xi))
-                for V in self._problem._constraint_integrals]
+                for V in self._problem.constraint_integrals()]
 
     def _restricted(self):
         r"""The restricted second variation, its free deviations and the
@@ -450,11 +584,11 @@ class StationarySolution(SageObject):
         return restrict_to_subspace(form, [], xi)[0]
 
     def _check_sign(self, sign):
-        if sign not in self._problem._signs:
-            raise AnalysisError(f"sign must be one of {self._problem._signs}, got {sign!r}"
+        if sign not in self._problem.signs:
+            raise AnalysisError(f"sign must be one of {self._problem.signs}, got {sign!r}"
                                 + (" (the kinetic energy is positive: only a positive "
                                    "definite amended potential gives stability)"
-                                   if self._problem._kinetic is not None else ""),
+                                   if self._problem.kinetic is not None else ""),
                                 entry="stability")
 
     def stability_conditions(self, positive=None, sign='positive'):
@@ -478,22 +612,22 @@ class StationarySolution(SageObject):
         positive = self._positive(positive)
         form, free, _ = self._restricted()
         conds = sylvester_conditions(form, free, sign=sign, positive=positive) if free else []
-        if self._problem._kinetic is not None:
+        if self._problem.kinetic is not None:
             conds = conds + sylvester_conditions(self._kinetic_at(), positive=positive)
         return conds
 
     def _kinetic_at(self):
-        return self._problem._kinetic.apply_map(self._at)
+        return self._problem.kinetic.apply_map(self._at)
 
     def _definiteness_region(self, positive, sign):
         r"""Alternatives (without the existence conditions) where some
         choice of the free multipliers makes the restricted second
         variation definite."""
-        from .quantifier_elimination import exists
+        from ..algebra.quantifier_elimination import exists
         form, free, pivots = self._restricted()
-        exprs = _signed_minors(form_matrix(form, free), sign) if free else []
-        if self._problem._kinetic is not None:
-            exprs += _signed_minors(self._kinetic_at(), 'positive')
+        exprs = signed_leading_minors(form_matrix(form, free), sign) if free else []
+        if self._problem.kinetic is not None:
+            exprs += signed_leading_minors(self._kinetic_at(), 'positive')
         exprs = [self._at(e) for e in exprs]
         multipliers = [l for l in self.free_multipliers()
                        if any(e.has(l) for e in exprs)]
@@ -557,7 +691,7 @@ class StationarySolution(SageObject):
             [ 0  1]
             [-1  0]
         """
-        return self._problem._linear_system(self)
+        return self._problem.linear_system(self._at)
 
     def stability(self, positive=None):
         r"""
@@ -609,7 +743,7 @@ class StationarySolution(SageObject):
         """
         positive = self._positive(positive)
         cases = []
-        signs = self._problem._signs
+        signs = self._problem.signs
         region = []
         for sign in signs:
             for alt in self.stability_region(positive, sign):
@@ -685,7 +819,7 @@ def _first_approximation(lin, positive):
     r"""Regions (alternatives) of asymptotic stability and of instability
     from the characteristic polynomial of ``lin``."""
     from .hurwitz import lienard_chipart_conditions
-    from .translation import Translation
+    from ..algebra.translation import Translation
     lam = SR.var('lambda_')
     p = lin.characteristic_polynomial(lam, positive=positive)
     if not SR(p).has(lam):          # no dynamics left (e.g. a zero Lagrangian)
@@ -735,7 +869,14 @@ class StationarySolutions(SolutionList):
     r"""
     The stationary solutions of a problem (iterable): created by
     :func:`stationary_solutions` (conditional extrema of first integrals)
-    or :func:`stationary_motions` (a Lagrangian or Routh function at rest).
+    or :func:`stationary_motions` (a Lagrangian or Routh function at rest),
+    through :func:`solve_stationary`. It holds the results only.
+
+    INPUT:
+
+    - ``problem`` -- the :class:`StationaryProblem` solved
+    - ``solutions`` -- its solution set, a
+      :class:`~sage_dynsym.algebra.solving.SolutionSet`
 
     EXAMPLES::
 
@@ -746,33 +887,13 @@ class StationarySolutions(SolutionList):
         sage: TestSuite(sols).run(skip=['_test_pickling'])
     """
 
-    def __init__(self, function, hessian_variables, solved, multipliers, equations,
-                 constraint_integrals=(), kinetic=None, signs=('positive', 'negative'),
-                 linear=None, rhs=None, positive=(), description=None, shown=None):
-        self._function = SR(function)
-        self._hessian_variables = [SR(x) for x in hessian_variables]
-        self._solved = [SR(u) for u in solved]
-        self._multipliers = [SR(l) for l in multipliers]
-        self._equations = [SR(e) for e in equations]
-        self._constraint_integrals = [SR(V) for V in constraint_integrals]
-        self._kinetic = kinetic
-        self._signs = tuple(signs)
-        self._linear = linear
-        self._rhs = rhs
-        self._description = description
-        self._shown = shown
-        self._positive = list(positive)
-        counted = [u for u in self._solved if all(str(u) != str(l) for l in self._multipliers)]
-        extra = [self._function] + list(rhs or [])
-        self._set = solve_exactly(self._equations, self._solved, counted=counted,
-                                  positive=positive, extra=extra, transcendental=True)
-        self._solutions = [StationarySolution(self, s) for s in self._set]
-
-    def _solved_variables(self):
-        return [u for u in self._solved if all(str(u) != str(l) for l in self._multipliers)]
+    def __init__(self, problem, solutions):
+        self._problem = problem
+        self._set = solutions
+        self._solutions = [StationarySolution(problem, s) for s in solutions]
 
     def _repr_(self):
-        what = self._description or f"K = {self._function}"
+        what = self._problem.description
         if not self._solutions:
             return ("No stationary solutions: the equations are inconsistent (for "
                     "generic parameter values)")
@@ -783,14 +904,14 @@ class StationarySolutions(SolutionList):
 
     def __eq__(self, other):
         return isinstance(other, StationarySolutions) and \
-            str(self._equations) == str(other._equations) and \
-            str(self._solved) == str(other._solved)
+            str(self._problem.equations) == str(other._problem.equations) and \
+            str(self._problem.unknowns) == str(other._problem.unknowns)
 
     def __ne__(self, other):
         return not self == other
 
     def __hash__(self):
-        return hash((str(self._equations), str(self._solved)))
+        return hash((str(self._problem.equations), str(self._problem.unknowns)))
 
     def is_complete(self):
         r"""Whether the list is known to be complete (always, unless the
@@ -892,7 +1013,7 @@ class StationarySolutions(SolutionList):
             sage: stationary_solutions([x^2 + y^2, x], [x, y], levels=[c]).equations()
             [lambda1 + 2*x, 2*y, -c + x]
         """
-        return list(self._shown if self._shown is not None else self._equations)
+        return list(self._problem.shown)
 
     def integrals(self):
         r"""The integrals `V_0, \dots, V_k` (``[]`` for stationary motions).
@@ -904,8 +1025,7 @@ class StationarySolutions(SolutionList):
             sage: stationary_solutions([x^2 + y^2, x], [x, y]).integrals()
             [x^2 + y^2, x]
         """
-        return [self._function.subs({l: 0 for l in self._multipliers})] * 0 + \
-            list(self._integrals) if hasattr(self, '_integrals') else []
+        return list(self._problem.integrals)
 
     def variables(self):
         r"""The variables of the stationary set (without the multipliers).
@@ -917,7 +1037,7 @@ class StationarySolutions(SolutionList):
             sage: stationary_solutions([x^2 + y^2], [x, y]).variables()
             [x, y]
         """
-        return self._solved_variables()
+        return self._problem.solved_variables()
 
     def multipliers(self):
         r"""The multipliers `\lambda_1, \dots`.
@@ -929,20 +1049,38 @@ class StationarySolutions(SolutionList):
             sage: stationary_solutions([x^2 + y^2, x], [x, y]).multipliers()
             [lambda1]
         """
-        return list(self._multipliers)
+        return list(self._problem.multipliers)
 
-    def K(self):
-        r"""`K = V_0 + \sum_{j\ge1}\lambda_j V_j` (for stationary motions,
-        the amended potential `W`).
+    def lyapunov_function(self):
+        r"""The Lyapunov function whose critical points are the solutions:
+        `K = V_0 + \sum_{j\ge1}\lambda_j V_j` (for stationary motions, the
+        amended potential `W = -R|_{\dot q = 0}`). ``K()`` is an alias.
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.stationary import stationary_solutions
             sage: x, y, a = var('x y a')
-            sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]).K()
+            sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
+            sage: sols.lyapunov_function()
             1/2*a*y^2 + (x^2 + y^2)*lambda1 + 1/2*x^2
+            sage: bool(sols.K() == sols.lyapunov_function())
+            True
         """
-        return self._function
+        return self._problem.function
+
+    K = lyapunov_function
+
+    def stationary_problem(self):
+        r"""The :class:`StationaryProblem` solved.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y = var('x y')
+            sage: stationary_solutions([x^2 + y^2, x], [x, y]).stationary_problem().unknowns
+            [x, y, lambda1]
+        """
+        return self._problem
 
     def stationarity_equations(self):
         r"""The expressions `\partial K/\partial x_i` (each ``== 0``).
@@ -954,7 +1092,7 @@ class StationarySolutions(SolutionList):
             sage: stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]).stationarity_equations()
             [2*lambda1*x + x, a*y + 2*lambda1*y]
         """
-        return [self._function.diff(x).expand() for x in self._hessian_variables]
+        return [self._problem.function.diff(x).expand() for x in self._problem.variables]
 
     def hessian(self):
         r"""The Hessian matrix of `K` (symbolic).
@@ -967,11 +1105,32 @@ class StationarySolutions(SolutionList):
             [2*lambda1 + 1             0]
             [            0 a + 2*lambda1]
         """
-        v = self._hessian_variables
-        return matrix(SR, [[self._function.diff(x).diff(y) for y in v] for x in v])
+        return self._problem.hessian()
 
-    def _linear_system(self, solution):
-        return None if self._linear is None else self._linear(solution)
+
+def solve_stationary(problem):
+    r"""
+    The stationary solutions of ``problem`` (a :class:`StationaryProblem`):
+    its equations solved exactly (:func:`~sage_dynsym.algebra.solving.solve_exactly`,
+    with Maxima's ``solve`` as the fallback for transcendental equations),
+    the dimensions counted in the unknowns that are not multipliers.
+
+    OUTPUT: a :class:`StationarySolutions`
+
+    EXAMPLES: the critical points of `x^3/3 - a x`::
+
+        sage: from sage_dynsym.analysis.stationary import StationaryProblem, solve_stationary
+        sage: x, a = var('x a')
+        sage: sols = solve_stationary(StationaryProblem(x^3/3 - a*x, [x], [x], [], [x^2 - a],
+        ....:                                           positive=[a]))
+        sage: [s.point() for s in sols]
+        [{x: sqrt(a)}, {x: -sqrt(a)}]
+    """
+    found = solve_exactly(problem.equations, problem.unknowns,
+                          counted=problem.solved_variables(), positive=problem.positive,
+                          extra=[problem.function] + list(problem.rhs or []),
+                          transcendental=True)
+    return StationarySolutions(problem, found)
 
 
 def stationary_solutions(integrals, variables, equations=None, multipliers=None,
@@ -1052,17 +1211,13 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
         _unknowns(solve_for, variables + multipliers, system, "stationary_solutions")
     rhs = [SR(X) for X in equations] if equations is not None else None
 
-    def linear(s):
-        if rhs is None:
-            return None
-        J = matrix(SR, [[s._at(X.diff(x)) for x in variables] for X in rhs])
+    def linear(at):
+        J = matrix(SR, [[at(X.diff(x)) for x in variables] for X in rhs])
         return LinearSystem(variables, J=J)
 
-    result = StationarySolutions(K, variables, unknowns, multipliers, system,
-                                 constraint_integrals=integrals[1:], linear=linear,
-                                 rhs=rhs, positive=positive)
-    result._integrals = integrals
-    return result
+    return solve_stationary(StationaryProblem(
+        K, variables, unknowns, multipliers, system, integrals=integrals,
+        linear=None if rhs is None else linear, rhs=rhs, positive=positive))
 
 
 def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
@@ -1140,18 +1295,18 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     if kinetic is None and hasattr(system, 'mass_matrix'):
         kinetic = matrix(SR, system.mass_matrix())
 
-    def linear(s):
+    def linear(at):
         def mat(xs):
-            return matrix(SR, [[s._at(e.diff(x).subs(rest)) for x in xs] for e in E])
+            return matrix(SR, [[at(e.diff(x).subs(rest)) for x in xs] for e in E])
         return LinearSystem(q, M=mat(data.accelerations()), S=mat(data.velocities()),
                             W=mat(q))
 
     what = "equations at rest of " + ("the Routh function" if hasattr(system, 'momenta')
                                       else "the Lagrangian")
     shown = [normalize(e, angles=q, factor=True) for e in at_rest]
-    return StationarySolutions(W, q, unknowns, [], at_rest, kinetic=kinetic,
-                               signs=('positive',), linear=linear, positive=positive,
-                               description=what, shown=shown)
+    return solve_stationary(StationaryProblem(
+        W, q, unknowns, [], at_rest, kinetic=kinetic, signs=('positive',), linear=linear,
+        positive=positive, description=what, shown=shown))
 
 
 def _unknowns(solve_for, first, equations, entry):

@@ -36,7 +36,7 @@ the listed coordinates `z`,
 
 rows being Kane's equations of their velocities. Every step is exact, in
 rational functions of the parameters and of the sines and cosines (see
-:mod:`~sage_dynsym.analysis.trig_linear`).
+:mod:`~sage_dynsym.algebra.trig_linear`).
 
 EXAMPLES:
 
@@ -72,7 +72,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..symbols import t as _t, time_derivative
 from .operating_point import OperatingPoint
-from .trig_linear import TrigFractionField
+from ..algebra.trig_linear import TrigFractionField
 
 
 def _names(symbols):
@@ -601,7 +601,7 @@ def steady_motion_conditions(system, point, speeds=None):
     Kane's equations of the independent speeds along it (see the module
     documentation), each meaning ``== 0``; the values of the operating point
     may be unknowns (symbols) to solve for, e.g. with
-    :func:`~sage_dynsym.analysis.solving.solve_exactly`.
+    :func:`~sage_dynsym.algebra.solving.solve_exactly`.
 
     INPUT:
 
@@ -655,7 +655,7 @@ def steady_motions(system, point, solve_for, positive=(), speeds=None):
     r"""
     The steady motions of the form ``point`` whose values ``solve_for``
     are unknown: the real solutions of :func:`steady_motion_conditions`,
-    exactly (:func:`~sage_dynsym.analysis.solving.solve_exactly`), with the
+    exactly (:func:`~sage_dynsym.algebra.solving.solve_exactly`), with the
     conditions for them to exist.
 
     INPUT:
@@ -664,7 +664,7 @@ def steady_motions(system, point, solve_for, positive=(), speeds=None):
     - ``solve_for`` -- the unknowns (symbols in the values of ``point``)
     - ``positive`` -- parameters declared positive
 
-    OUTPUT: a :class:`~sage_dynsym.analysis.solving.SolutionSet`
+    OUTPUT: a :class:`~sage_dynsym.algebra.solving.SolutionSet`
 
     EXAMPLES: the disk of :func:`steady_motion_conditions` rolling on a
     circle, its spin rate for a given tilt and turning rate::
@@ -684,7 +684,7 @@ def steady_motions(system, point, solve_for, positive=(), speeds=None):
         sage: s, = steady_motions(S, point, [om], positive=[m, r, A, C, g]); s.conditions()
         [cos(theta0) != 0, Omega != 0]
     """
-    from .solving import solve_exactly
+    from ..algebra.solving import solve_exactly
     conditions = [e for e in steady_motion_conditions(system, point, speeds).values()
                   if not e.is_zero()]
     return solve_exactly(conditions, solve_for, positive=positive)

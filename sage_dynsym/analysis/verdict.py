@@ -26,7 +26,7 @@ A :class:`StabilityVerdict` is the answer of a stability test: one of
   nonlinear terms decide); :meth:`~StabilityVerdict.reason` says why.
 
 A region is a list of alternatives, each a list of relations (see
-:mod:`~sage_dynsym.analysis.regions`).
+:mod:`~sage_dynsym.algebra.regions`).
 
 EXAMPLES::
 
@@ -42,10 +42,9 @@ EXAMPLES::
     'unstable'
 """
 from sage.structure.sage_object import SageObject
-from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .conditions import region_holds
+from ..algebra.conditions import region_holds
 
 #: The verdicts that count as stable (the stable set of a verdict that
 #: depends on the parameters is the union of their regions).

@@ -12,3 +12,6 @@ from .mixed_potential import MixedPotential
 from .linear import LoopAnalysis, NodeAnalysis
 from .nodal import NodalAnalysis
 from .description import circuit_from_dict, circuit_to_dict
+
+__all__ = ['Circuit', 'Branch', 'Coupling', 'MixedPotential', 'LoopAnalysis', 'NodeAnalysis',
+           'NodalAnalysis', 'circuit_from_dict', 'circuit_to_dict']

@@ -43,22 +43,22 @@ The node-potential method gives Kirchhoff's current law instead::
 """
 
 from sage.misc.cachefunc import cached_method
-from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import CircuitError
-from ..symbols import CIRCUIT_VARIABLES, sage_numbers
 from ..dynamics.model import Model
-from ..numerics.energy import quadratic_energy
 from ..numerics.methods import NumericalMethods
-from .elements import parse_entries
+from .elements.windings import inductance_conditions
+from .format import read_circuit, circuit_mapping, circuit_results, result_symbols
 from .forms import circuit_forms
 from .free_system import free_linear_system
 from .graph import CircuitGraph
-from .inductance import inductance_conditions
+from .netlist import Netlist
 from .report import report_title, report_sections
+from .state import StateEquations
 
-class Circuit(NumericalMethods, Model):
+
+class Circuit(StateEquations, NumericalMethods, Model):
     r"""
     An electrical circuit given as a list of branches.
 
@@ -69,7 +69,7 @@ class Circuit(NumericalMethods, Model):
       ``C`` capacitor, ``E`` voltage source, ``I`` current source, ``f``
       nonlinear resistor `i = f(u)`), or long-form dicts
       ``{from, to, kind, name, value}`` and ``{kind: mutual, between:
-      [L1, L2], value: M}`` (see :func:`~sage_dynsym.circuits.elements.parse_entries`)
+      [L1, L2], value: M}`` (see :func:`~sage_dynsym.circuits.elements.entries.parse_entries`)
     - ``name`` -- (optional) a title
     - ``parameters`` -- (optional) extra symbols allowed in long-form values
     - ``positive`` -- (optional) parameters and element values known to be
@@ -108,47 +108,14 @@ class Circuit(NumericalMethods, Model):
     """
 
     def __init__(self, branches, name=None, parameters=(), positive=()):
-        entries = list(branches)
-        self._parameters = tuple(str(p) for p in parameters)
-        self._branches, self._couplings = parse_entries(entries, self._parameters)
-        seen = set()
-        for b in self._branches:
-            if b.name in seen:
-                raise CircuitError(f"duplicate element name {b.name!r}",
-                                   entry=f"branches[{b.index}]")
-            if CIRCUIT_VARIABLES.match(b.name):
-                raise CircuitError(f"the name {b.name!r} is reserved for variables "
-                                   "(i, u, t, i<k>, u<k>, q<k>, phi...)",
-                                   entry=f"branches[{b.index}]")
-            seen.add(b.name)
-        kind = {b.name: b.kind for b in self._branches}
-        pairs = set()
-        mutual_entries = [k for k, e in enumerate(entries)
-                          if isinstance(e, dict) and e.get('kind') == 'mutual']
-        for k, c in zip(mutual_entries, self._couplings):
-            for x in (c.first, c.second):
-                if kind.get(x) != 'inductor':
-                    raise CircuitError(f"a mutual inductance couples two inductors; {x} "
-                                       "is not an inductor", entry=f"branches[{k}]")
-            pair = frozenset((c.first, c.second))
-            if len(pair) != 2 or pair in pairs:
-                raise CircuitError("a mutual inductance couples two different inductors, "
-                                   "once", entry=f"branches[{k}]")
-            pairs.add(pair)
+        self._netlist = netlist = Netlist(branches, parameters, positive)
         self._name = name
-        symbols = set(self._parameters) | {b.name for b in self._branches
-                                           if b.kind != 'nonlinear_resistor'}
-        self._positive = []
-        for k, p in enumerate(positive):
-            if str(p) not in symbols:
-                raise CircuitError(f"{p} is neither a parameter nor an element value of the "
-                                   "circuit (positive lists symbols known to be positive)",
-                                   entry=f"positive[{k}]")
-            self._positive.append(SR.var(str(p)))
+        self._parameters, self._positive = netlist.parameters, netlist.positive
+        self._branches, self._couplings = netlist.branches, netlist.couplings
         where = {b.name: p for p, b in enumerate(self._branches)}
         self._cgraph = CircuitGraph(self._branches, links=[
             (where[c.first], where[c.second]) for c in self._couplings])
-        self._conditions = inductance_conditions(self, mutual_entries)
+        self._conditions = inductance_conditions(self, netlist.coupling_entries)
 
     def _repr_(self):
         title = f" {self._name!r}" if self._name else ""
@@ -169,26 +136,6 @@ class Circuit(NumericalMethods, Model):
 
     kind = 'circuit'
 
-
-    def equations(self):
-        r"""
-        The equations of motion: the right-hand sides of the state
-        equations (:meth:`state_equations`; raises
-        :class:`~sage_dynsym.errors.CircuitError` for a circuit without
-        unique or explicit solution).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: load(example_path('nonlinear_circuit.yaml')).equations()[0]
-            -u3 + u4 + u6
-        """
-        return self.state_equations()
-
-    def _is_linear(self):
-        return not self.elements('nonlinear_resistor')
-
     def characteristic_functions(self):
         r"""
         The characteristic functions of the circuit: the mixed potential,
@@ -203,7 +150,7 @@ class Circuit(NumericalMethods, Model):
             ['lagrangian', 'mixed_potential', 'node_lagrangian']
         """
         functions = {'mixed_potential': self.mixed_potential}
-        if self._is_linear():
+        if all(b.is_linear() for b in self._branches):
             functions['lagrangian'] = lambda: self.lagrangian(method="loop")
             functions['node_lagrangian'] = lambda: self.lagrangian(method="node")
         return functions
@@ -213,7 +160,7 @@ class Circuit(NumericalMethods, Model):
         r"""
         The circuit of a description mapping (``kind: circuit``); ``source``
         names the file in errors. The format is read by
-        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+        :func:`~sage_dynsym.circuits.format.read_circuit`.
 
         EXAMPLES::
 
@@ -221,15 +168,13 @@ class Circuit(NumericalMethods, Model):
             sage: Circuit.from_dict({'kind': 'circuit', 'branches': [[1, 2, 'L1'], [2, 1, 'C1']]})
             Circuit with 2 branches on 2 nodes
         """
-        # the format module builds on this class: imported when first used
-        from .description import circuit_from_dict
-        return circuit_from_dict(data, source)
+        return read_circuit(cls, data, source)
 
     def to_dict(self):
         r"""
         The description mapping of the circuit (short form wherever the
         element's value is its own symbol), the inverse of
-        :func:`~sage_dynsym.circuits.description.circuit_from_dict`.
+        :meth:`from_dict`.
 
         EXAMPLES::
 
@@ -244,31 +189,7 @@ class Circuit(NumericalMethods, Model):
              'kind': 'circuit',
              'parameters': ['M']}
         """
-        from .elements import PREFIXES
-        out = {'kind': 'circuit'}
-        if self.name():
-            out['name'] = self.name()
-        if self.parameters():
-            out['parameters'] = list(self.parameters())
-        if self._positive:
-            out['positive'] = [str(p) for p in self._positive]
-        branches = []
-        for b in self.branches():
-            short = PREFIXES.get(b.name[0]) == b.kind and (
-                b.value is None if b.kind == 'nonlinear_resistor'
-                else b.value.is_symbol() and str(b.value) == b.name)
-            if short:
-                branches.append([b.tail, b.head, b.name])
-            else:
-                entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}
-                if b.value is not None:
-                    entry['value'] = str(b.value)
-                branches.append(entry)
-        for c in self.couplings():
-            branches.append({'kind': 'mutual', 'between': [c.first, c.second],
-                             'value': str(c.value)})
-        out['branches'] = branches
-        return out
+        return circuit_mapping(self)
 
     def results(self):
         r"""
@@ -285,29 +206,7 @@ class Circuit(NumericalMethods, Model):
             ['mixed_potential_latex', 'mixed_potential_text', 'state_equations',
              'state_equations_latex', 'state_variables']
         """
-        from sage.misc.latex import latex
-        results = {}
-        try:
-            equations = self.state_equations()
-        except CircuitError:
-            pass
-        else:
-            results['state_variables'] = [str(v) for v, _ in self.state_variables()]
-            results['state_equations'] = [str(e) for e in equations]
-            results['state_equations_latex'] = [str(latex(e)) for e in equations]
-            if self.has_mixed_potential():
-                results['mixed_potential_text'] = str(self.mixed_potential())
-                results['mixed_potential_latex'] = str(latex(self.mixed_potential()))
-        if self._is_linear():
-            try:
-                L = self.lagrangian(method="loop")
-            except CircuitError:
-                pass
-            else:
-                results['lagrangian'] = str(L.expr())
-                results['lagrangian_latex'] = str(latex(L.expr()))
-                results['lagrange_equations'] = [str(e) for e in L.lagrange_equations()]
-        return results
+        return circuit_results(self)
 
     def result_symbols(self, results):
         r"""
@@ -326,19 +225,7 @@ class Circuit(NumericalMethods, Model):
             sage: 'L1' in symbols, functions
             (True, ['f1', 'f4', 'f2', 'f3'])
         """
-        from ..errors import DescriptionError, brief
-        from ..symbols import velocity, acceleration, momentum
-        q = [str(v) for v in self.lagrangian().coordinates()] if 'lagrangian' in results else []
-        states = results.get('state_variables', [])
-        expected = [str(v) for v, _ in self.state_variables()] if states else []
-        if states != expected:
-            raise DescriptionError(f"expected the state variables {expected} of the circuit, "
-                                   f"got {brief(states)}", entry='results.state_variables')
-        symbols = list(self.parameters()) + states
-        symbols += [b.name for b in self.branches() if b.kind != 'nonlinear_resistor']
-        symbols += q + [str(velocity(v)) for v in q] + [str(acceleration(v)) for v in q]
-        symbols += [str(momentum(v)) for v in q]
-        return symbols, self.elements('nonlinear_resistor')
+        return result_symbols(self, results)
 
     def _graph(self):
         return self._cgraph
@@ -372,7 +259,7 @@ class Circuit(NumericalMethods, Model):
 
     def branches(self):
         r"""
-        The branches, a tuple of :class:`~sage_dynsym.circuits.elements.Branch`.
+        The branches, a tuple of :class:`~sage_dynsym.circuits.elements.kinds.Branch`.
 
         EXAMPLES::
 
@@ -386,7 +273,7 @@ class Circuit(NumericalMethods, Model):
     def couplings(self):
         r"""
         The mutual inductances, a tuple of
-        :class:`~sage_dynsym.circuits.elements.Coupling`.
+        :class:`~sage_dynsym.circuits.elements.windings.Coupling`.
 
         EXAMPLES: a transformer::
 
@@ -404,7 +291,7 @@ class Circuit(NumericalMethods, Model):
         The conditions on the parameters for the circuit to be physical that
         its declared signs leave open: the principal minors of the
         inductance matrix of each group of coupled windings `\ge 0` (see
-        :mod:`~sage_dynsym.circuits.inductance`); ``[]`` when there is none.
+        :mod:`~sage_dynsym.circuits.elements.windings`); ``[]`` when there is none.
         Values given to :meth:`simulate` and :meth:`numerical_rhs` must
         satisfy them.
 
@@ -456,18 +343,6 @@ class Circuit(NumericalMethods, Model):
         """
         return [b.name for b in self._branches if kind is None or b.kind == kind]
 
-    def _check_source_loops(self):
-        # voltage sources alone must not form a loop (KVL would fix a sum of sources)
-        sources = [p for p, b in enumerate(self._branches) if b.kind == 'voltage_source']
-        try:
-            self._cgraph.components(sources)
-        except ValueError as err:
-            loop = self._cgraph.cycle_through(sources[:sources.index(err.args[0])],
-                                              err.args[0])
-            raise CircuitError(f"the voltage sources {', '.join(loop)} form a loop: "
-                               "Kirchhoff's voltage law cannot hold for arbitrary "
-                               "source values") from None
-
     def subs(self, values):
         r"""
         The circuit with parameter and element values substituted.
@@ -505,30 +380,8 @@ class Circuit(NumericalMethods, Model):
             ...
             CircuitError: branches[1].value: a resistance of 0 is a short circuit: join its two nodes into one instead
         """
-        if not isinstance(values, dict):
-            raise CircuitError(f"expected a dictionary {{symbol: value}}, got {values!r}",
-                               entry="subs")
-        symbols = list(self._parameters) + [b.name for b in self._branches
-                                            if b.kind != 'nonlinear_resistor']
-        substitution = {}
-        for key, value in values.items():
-            symbol = SR.var(key) if isinstance(key, str) else SR(key)
-            if not symbol.is_symbol() or str(symbol) not in symbols:
-                raise CircuitError(f"{symbol} is not a parameter or element value of the "
-                                   f"circuit; they are: {', '.join(symbols)}", entry="subs")
-            substitution[symbol] = SR(sage_numbers(value))
-        entries = []
-        for b in self._branches:
-            entry = {'from': b.tail, 'to': b.head, 'kind': b.kind, 'name': b.name}
-            if b.value is not None:
-                entry['value'] = SR(b.value).subs(substitution)
-            entries.append(entry)
-        entries += [{'kind': 'mutual', 'between': [c.first, c.second],
-                     'value': SR(c.value).subs(substitution)} for c in self._couplings]
-        done = {str(x) for x in substitution}
-        return Circuit(entries, name=self._name,
-                       parameters=[p for p in self._parameters if p not in done],
-                       positive=[p for p in self._positive if str(p) not in done])
+        entries, parameters, positive = self._netlist.subs(values)
+        return Circuit(entries, name=self._name, parameters=parameters, positive=positive)
 
     @cached_method
     def loop_analysis(self):
@@ -668,107 +521,6 @@ class Circuit(NumericalMethods, Model):
         from .nodal import NodalAnalysis
         return NodalAnalysis(self)
 
-    def has_mixed_potential(self):
-        r"""
-        Whether the circuit is complete (has the Brayton--Moser split);
-        then :meth:`state_equations` come from the mixed potential, else
-        from :meth:`nodal_analysis`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']]).has_mixed_potential()
-            True
-            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1'], [2, 1, 'C2']]).has_mixed_potential()
-            False
-        """
-        try:
-            self.brayton_moser()
-        except CircuitError:
-            return False
-        return True
-
-    def _state_form(self):
-        # the mixed potential for a complete circuit, else nodal analysis
-        try:
-            return self.brayton_moser()
-        except CircuitError as split:
-            try:
-                return self.nodal_analysis()
-            except CircuitError as err:
-                from .nodal import NOT_EXPLICIT
-                if not err.message.startswith(NOT_EXPLICIT):
-                    raise
-                raise CircuitError(f"{split.message}; {err.message}",
-                                   entry=split.entry or err.entry) from None
-
-    def state_variables(self):
-        r"""
-        The state variables, pairs ``(symbol, element name)``: inductor
-        currents ``i1, ..., ir`` first, then capacitor voltages. A loop of
-        capacitors (and voltage sources) or a cut-set of inductors (and
-        current sources) leaves out one of its elements: the state is a
-        maximal set of independent capacitor voltages and inductor currents
-        (see :mod:`~sage_dynsym.circuits.nodal`).
-
-        EXAMPLES: a loop of an inductor, a resistor and a capacitor::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
-            sage: C.state_variables()
-            [(i1, 'L1'), (u2, 'C1')]
-
-        Two capacitors in parallel have one voltage::
-
-            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1'], [2, 1, 'C2']]).state_variables()
-            [(i1, 'L1'), (u2, 'C1')]
-        """
-        return self._state_form().state_variables()
-
-    def state_equations(self):
-        r"""
-        The right-hand sides `F` of `B\dot x = F(x)`, `B` the
-        :meth:`lhs_matrix`, in the order of :meth:`state_variables`. For a
-        complete circuit these are `\partial P/\partial i_k` and
-        `-\partial P/\partial u_l` of the mixed potential (the equations
-        `L_k\, di_k/dt = \partial P/\partial i_k`, `C_l\, du_l/dt =
-        -\partial P/\partial u_l`); otherwise they come from
-        :meth:`nodal_analysis`.
-
-        Raises :class:`~sage_dynsym.errors.CircuitError` for a circuit
-        without unique solution (a loop of voltage sources, a cut-set of
-        current sources) and for nonlinear resistors whose relations cannot
-        be solved explicitly, naming the elements.
-
-        EXAMPLES: a loop of an inductor, a resistor and a capacitor::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']], name='RLC')
-            sage: C.state_equations()     # L1 di1/dt = u2 - R1 i1, C1 du2/dt = -i1
-            [-R1*i1 + u2, -i1]
-
-        Two capacitors in parallel::
-
-            sage: C = Circuit([[1, 2, 'L1'], [2, 1, 'C1'], [2, 1, 'C2']])
-            sage: C.state_equations(), C.lhs_matrix()
-            (
-                        [     L1       0]
-            [u2, -i1], [      0 C1 + C2]
-            )
-
-        TESTS::
-
-            sage: Circuit([[1, 2, 'E1'], [2, 1, 'E2'], [1, 2, 'C1']]).state_equations()
-            Traceback (most recent call last):
-            ...
-            CircuitError: branches[1]: the voltage sources E2, E1 form a loop: ...
-            sage: Circuit([[1, 2, 'f1'], [2, 3, 'R1'], [3, 1, 'C1']]).state_equations()
-            Traceback (most recent call last):
-            ...
-            CircuitError: branches[0]: no Brayton-Moser split: ...; no explicit state equations: ...
-        """
-        return self._state_form().state_equations()
-
     def source_values_off(self):
         r"""
         The substitution that switches the sources off: the symbol of each
@@ -780,8 +532,7 @@ class Circuit(NumericalMethods, Model):
             sage: Circuit([[0, 1, 'E1'], [1, 0, 'R1'], [1, 0, 'I1']]).source_values_off()
             {E1: 0, I1: 0}
         """
-        return {SR.var(b.name): 0 for b in self._branches
-                if b.kind in ('voltage_source', 'current_source')}
+        return {SR.var(b.name): 0 for b in self._netlist.sources()}
 
     def equation_forms(self):
         r"""
@@ -834,112 +585,3 @@ class Circuit(NumericalMethods, Model):
             ['Conditions', 'State equations', 'Mixed potential']
         """
         return report_sections(self)
-
-    def state_equation_labels(self, latex=False):
-        r"""
-        The left-hand sides of `B\dot x =` :meth:`state_equations`, row by
-        row, as text (``latex=True``: LaTeX), e.g. ``C1 du2/dt`` or, for a
-        state reduced by a capacitor loop, ``(C1 + C2) du2/dt``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: C = Circuit([[1, 2, 'C1'], [2, 3, 'C2'], [3, 1, 'E1'], [1, 3, 'L1'], [2, 3, 'R1']])
-            sage: C.state_equation_labels()
-            ['L1 di1/dt', '(C1 + C2) du2/dt']
-            sage: C.state_equation_labels(latex=True)[1]
-            '\\left(C_{1} + C_{2}\\right) \\frac{d u_{2}}{dt}'
-        """
-        from sage.misc.latex import latex as to_latex
-        B = self.lhs_matrix()
-        x = [v for v, _ in self.state_variables()]
-        labels = []
-        for i in range(B.nrows()):
-            terms = []
-            for b, v in zip(B.row(i), x):
-                if b.is_zero():
-                    continue
-                b = SR(b)
-                simple = b.is_symbol() or b.is_numeric()
-                if latex:
-                    factor = "" if b == 1 else (to_latex(b) if simple
-                                                else f"\\left({to_latex(b)}\\right)")
-                    terms.append(f"{factor} \\frac{{d {to_latex(v)}}}{{dt}}".strip())
-                else:
-                    factor = "" if b == 1 else (f"{b} " if simple else f"({b}) ")
-                    terms.append(f"{factor}d{v}/dt")
-            labels.append(" + ".join(terms))
-        return labels
-
-    def lhs_matrix(self):
-        r"""
-        The matrix `B` of `B\dot x = F(x)`, `F` the :meth:`state_equations`,
-        rows and columns in the order of :meth:`state_variables`: the
-        inductance matrix (mutual inductances included) and the
-        capacitances, block-diagonal; for a reduced state (capacitor loops,
-        inductor cut-sets) the effective matrices of
-        :meth:`~sage_dynsym.circuits.nodal.NodalAnalysis.lhs_matrix`.
-
-        EXAMPLES: a transformer with galvanically isolated sides::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: C = Circuit([[0, 1, 'E1'], [1, 0, 'L1'], [2, 3, 'L2'], [3, 2, 'R2'],
-            ....:              {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}],
-            ....:             parameters=['M'])
-            sage: C.lhs_matrix(), C.state_equations()
-            (
-            [L1  M]
-            [ M L2], [E1, -R2*i2]
-            )
-        """
-        form = self._state_form()
-        if hasattr(form, 'lhs_matrix'):
-            return form.lhs_matrix()
-        from sage.matrix.special import block_diagonal_matrix
-        from sage.matrix.constructor import matrix
-        from sage.symbolic.ring import SR
-        B = block_diagonal_matrix([form.inductance_matrix(),
-                                   matrix.diagonal(SR, form.capacitances())], subdivide=False)
-        B.set_immutable()
-        return B
-
-    def _conserved_energy(self):
-        r"""
-        The stored energy `\tfrac12 x^T B x` (`B` the :meth:`lhs_matrix`:
-        inductances with their mutual terms, capacitances) when the state
-        equations are lossless and linear (see
-        :func:`~sage_dynsym.numerics.energy.quadratic_energy`), else
-        ``None``; what ``simulate(...).energy_drift()`` measures.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: Circuit([[1, 2, 'L1'], [2, 1, 'C1']])._conserved_energy()
-            1/2*L1*i1^2 + 1/2*C1*u2^2
-            sage: Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])._conserved_energy() is None
-            True
-        """
-        return quadratic_energy(self.equations_record())
-
-    def equations_record(self):
-        r"""
-        The state equations as the neutral record of the analysis:
-        :class:`~sage_dynsym.analysis.motion.FirstOrderEquations` with the
-        right-hand sides, the state variables and `B` (:meth:`lhs_matrix`).
-        This is what :func:`~sage_dynsym.analysis.linear.linearize` uses.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.circuits import Circuit
-            sage: from sage_dynsym.analysis.linear import linearize
-            sage: C = Circuit([[1, 2, 'L1'], [2, 3, 'R1'], [3, 1, 'C1']])
-            sage: F = C.equations_record(); F
-            First-order equations B x' = F(x) in (i1, u2)
-            sage: linearize(C, {var('i1'): 0, var('u2'): 0}).jacobian()
-            [-R1/L1   1/L1]
-            [ -1/C1      0]
-        """
-        from ..analysis.motion import FirstOrderEquations
-        return FirstOrderEquations(self.state_equations(),
-                                   [x for x, _ in self.state_variables()],
-                                   lhs_matrix=self.lhs_matrix())

@@ -14,9 +14,14 @@ with the keys
 - ``results`` (optional): written by ``save``; ignored when reading.
 
 The generic ``sage_dynsym.load`` reads the YAML file safely and hands the
-mapping to :func:`circuit_from_dict`; ``save`` writes
-:func:`circuit_to_dict` plus a ``results:`` section. Expressions are parsed
-by :class:`~sage_dynsym.io.expressions.ExpressionParser`, never evaluated.
+mapping to :meth:`Circuit.from_dict
+<sage_dynsym.circuits.circuit.Circuit.from_dict>` (the format is read by
+:func:`~sage_dynsym.circuits.format.read_circuit`); ``save`` writes
+:meth:`Circuit.to_dict <sage_dynsym.circuits.circuit.Circuit.to_dict>`
+plus a ``results:`` section. Expressions are parsed by
+:class:`~sage_dynsym.io.expressions.ExpressionParser`, never evaluated.
+:func:`circuit_from_dict` and :func:`circuit_to_dict` are the earlier
+names of these methods.
 
 EXAMPLES::
 
@@ -34,22 +39,15 @@ EXAMPLES::
     ...
     CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
 """
-from ..errors import DescriptionError, DynSymError, brief
-from ..io.fields import declared_names, title, MAX_PARAMETERS
-from ..symbols import check_name
 from .circuit import Circuit
-from .elements import PREFIXES
-
-KEYS = {'kind', 'name', 'branches', 'parameters', 'positive', 'results'}
-
-#: Most branches (entries of ``branches``) of a circuit description.
-MAX_BRANCHES = 2000
+from .format import KEYS, MAX_BRANCHES  # noqa: F401
 
 
 def circuit_from_dict(data, source=None):
     r"""
     Build a :class:`~sage_dynsym.circuits.circuit.Circuit` from a
-    description mapping.
+    description mapping: :meth:`Circuit.from_dict
+    <sage_dynsym.circuits.circuit.Circuit.from_dict>`.
 
     INPUT:
 
@@ -100,47 +98,7 @@ def circuit_from_dict(data, source=None):
         ...
         CircuitError: x.yaml: positive[0]: R2 is neither a parameter nor an element value of the circuit (positive lists symbols known to be positive)
     """
-    if not isinstance(data, dict):
-        raise DescriptionError(f"a circuit description is a mapping, got {type(data).__name__}",
-                               source=source)
-    for key in data:
-        if key not in KEYS:
-            raise DescriptionError("unknown key; a circuit description has keys "
-                                   f"{', '.join(sorted(KEYS))}", entry=str(key)[:60],
-                                   source=source)
-    if data.get('kind') != 'circuit':
-        raise DescriptionError(f"expected 'circuit', got {brief(data.get('kind'))}",
-                               entry='kind', source=source)
-    if 'branches' not in data:
-        raise DescriptionError("missing key 'branches' (a list of [from, to, element])",
-                               entry='branches', source=source)
-    branches = data['branches']
-    if not isinstance(branches, list) or not branches:
-        raise DescriptionError(f"expected a non-empty list of branches, got {brief(branches)}",
-                               entry='branches', source=source)
-    if len(branches) > MAX_BRANCHES:
-        raise DescriptionError(f"{len(branches)} branches; a description file has at most "
-                               f"{MAX_BRANCHES} (MAX_BRANCHES)", entry='branches', source=source)
-    name = data.get('name')
-    if name is not None and not isinstance(name, str):
-        raise DescriptionError(f"expected a text, got {brief(name)}", entry='name', source=source)
-    name = title(data, 'name', source)
-    parameters = data.get('parameters', [])
-    if not isinstance(parameters, list) or not all(
-            isinstance(p, str) and p.isidentifier() for p in parameters):
-        raise DescriptionError(f"expected a list of symbol names, got {brief(parameters)}",
-                               entry='parameters', source=source)
-    if len(parameters) > MAX_PARAMETERS:
-        raise DescriptionError(f"{len(parameters)} names; a description file has at most "
-                               f"{MAX_PARAMETERS} (MAX_PARAMETERS)", entry='parameters',
-                               source=source)
-    for i, p in enumerate(parameters):
-        check_name(p, f"parameters[{i}]", source=source)
-    positive = declared_names(data, 'positive', source, required=False, limit=MAX_PARAMETERS)
-    try:
-        return Circuit(branches, name=name, parameters=parameters, positive=positive)
-    except DynSymError as err:
-        raise err.with_context(source=source) from None
+    return Circuit.from_dict(data, source)
 
 
 def circuit_to_dict(circuit):

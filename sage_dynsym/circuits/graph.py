@@ -9,11 +9,11 @@ drawing: non-planar circuits are handled like any other.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.circuits.elements import parse_entries
+    sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
     sage: from sage_dynsym.circuits.graph import CircuitGraph
     sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
     sage: CG = CircuitGraph(branches)
-    sage: tree = CG.spanning_tree(priority=['voltage_source', 'capacitor'])
+    sage: tree = CG.spanning_tree(priority=[VoltageSource, Capacitor])
     sage: sorted(tree)
     [1, 3]
     sage: T = CG.rooted(tree)
@@ -23,6 +23,7 @@ EXAMPLES::
 from sage.graphs.graph import Graph
 
 from ..errors import CircuitError
+from .elements.kinds import Capacitor
 
 
 class UnionFind:
@@ -108,7 +109,7 @@ def capacitor_order(cgraph):
     """
     adjacency = {v: [] for v in cgraph.nodes}
     for p, b in enumerate(cgraph.branches):
-        if b.kind == 'capacitor':
+        if isinstance(b, Capacitor):
             adjacency[b.tail].append((b.head, p))
             adjacency[b.head].append((b.tail, p))
     order, seen = [], set()
@@ -124,7 +125,7 @@ def capacitor_order(cgraph):
                     order.append(p)
                     queue.append(w)
     return order + [p for p, b in enumerate(cgraph.branches)
-                    if b.kind == 'capacitor' and p not in order]
+                    if isinstance(b, Capacitor) and p not in order]
 
 
 class CircuitGraph:
@@ -133,7 +134,7 @@ class CircuitGraph:
 
     INPUT:
 
-    - ``branches`` -- tuple of :class:`~sage_dynsym.circuits.elements.Branch`
+    - ``branches`` -- tuple of :class:`~sage_dynsym.circuits.elements.kinds.Branch`
     - ``links`` -- (optional) pairs of branch positions coupled by a mutual
       inductance: parts of the graph joined only by such a coupling (a
       transformer with galvanically isolated sides) form one circuit
@@ -192,28 +193,30 @@ class CircuitGraph:
         several parts) as a set of branch positions.
 
         Kruskal's algorithm (Sage's ``min_spanning_tree``) with branches of
-        the kinds listed first in ``priority`` preferred, then the others,
-        ties broken by branch order; branches of the kinds in ``exclude``
-        are never taken. Returns ``None`` when the remaining branches do not
-        connect the nodes of each part.
+        the element classes listed first in ``priority`` preferred, then
+        the others, ties broken by branch order; branches of the element
+        classes in ``exclude`` are never taken. Returns ``None`` when the
+        remaining branches do not connect the nodes of each part.
 
         EXAMPLES::
 
-            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.elements import parse_entries, Capacitor, CurrentSource
             sage: from sage_dynsym.circuits.graph import CircuitGraph
             sage: CG = CircuitGraph(parse_entries([[1, 2, 'L1'], [1, 2, 'C1'], [2, 3, 'I1']])[0])
-            sage: sorted(CG.spanning_tree(priority=['capacitor'])), CG.spanning_tree(exclude=['current_source'])
+            sage: sorted(CG.spanning_tree(priority=[Capacitor])), CG.spanning_tree(exclude=[CurrentSource])
             ([1, 2], None)
         """
-        rank = {kind: r for r, kind in enumerate(priority)}
+        def rank(b):
+            return next((r for r, cls in enumerate(priority) if isinstance(b, cls)),
+                        len(priority))
         m = len(self.branches)
         kept = [(b.tail, b.head, pos) for pos, b in enumerate(self.branches)
-                if b.kind not in exclude]
+                if not isinstance(b, tuple(exclude))]
         sub = Graph(kept, multiedges=True, loops=False, format='list_of_edges')
         sub.add_vertices(self.nodes)
         if sub.connected_components_number() != self.graph.connected_components_number():
             return None
-        weight = {pos: rank.get(self.branches[pos].kind, len(rank)) * m + pos
+        weight = {pos: rank(self.branches[pos]) * m + pos
                   for _, _, pos in kept}
         tree = sub.min_spanning_tree(weight_function=lambda e: weight[e[2]],
                                      algorithm='Kruskal')
@@ -262,6 +265,30 @@ class CircuitGraph:
                 raise ValueError(pos)
         return uf
 
+    def check_source_loops(self):
+        r"""
+        Refuse a loop of voltage sources alone (Kirchhoff's voltage law
+        would fix a sum of source values).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.graph import CircuitGraph
+            sage: CircuitGraph(parse_entries([[1, 2, 'E1'], [2, 1, 'R1']])[0]).check_source_loops()
+            sage: CircuitGraph(parse_entries([[1, 2, 'E1'], [2, 1, 'E2']])[0]).check_source_loops()
+            Traceback (most recent call last):
+            ...
+            CircuitError: the voltage sources E2, E1 form a loop: Kirchhoff's voltage law cannot hold for arbitrary source values
+        """
+        sources = [p for p, b in enumerate(self.branches) if b.fixed_voltage() is not None]
+        try:
+            self.components(sources)
+        except ValueError as err:
+            loop = self.cycle_through(sources[:sources.index(err.args[0])], err.args[0])
+            raise CircuitError(f"the voltage sources {', '.join(loop)} form a loop: "
+                               "Kirchhoff's voltage law cannot hold for arbitrary "
+                               "source values") from None
+
     def cycle_through(self, positions, pos):
         r"""
         A cycle made of the branch ``pos`` and branches of ``positions``
@@ -298,11 +325,11 @@ class RootedTree:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.circuits.elements import parse_entries
+        sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
         sage: from sage_dynsym.circuits.graph import CircuitGraph
         sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
         sage: CG = CircuitGraph(branches)
-        sage: T = CG.rooted(CG.spanning_tree(priority=['voltage_source', 'capacitor']))
+        sage: T = CG.rooted(CG.spanning_tree(priority=[VoltageSource, Capacitor]))
         sage: [branches[k].name for k in sorted(T.positions)]
         ['C1', 'E1']
         sage: [(b.name, s) for b, s in T.path(2, 1)]    # along C1, against E1
@@ -343,11 +370,11 @@ class RootedTree:
         EXAMPLES: the tree of the module's example: ``C1`` (from node 2 to
         3) and ``E1`` (from 1 to 3)::
 
-            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
             sage: from sage_dynsym.circuits.graph import CircuitGraph
             sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
             sage: CG = CircuitGraph(branches)
-            sage: T = CG.rooted(CG.spanning_tree(priority=['voltage_source', 'capacitor']))
+            sage: T = CG.rooted(CG.spanning_tree(priority=[VoltageSource, Capacitor]))
             sage: [(b.name, s) for b, s in T.path(1, 2)]
             [('E1', 1), ('C1', -1)]
         """
@@ -371,11 +398,11 @@ class RootedTree:
         EXAMPLES: the tree of the module's example: ``C1`` (from node 2 to
         3) and ``E1`` (from 1 to 3)::
 
-            sage: from sage_dynsym.circuits.elements import parse_entries
+            sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
             sage: from sage_dynsym.circuits.graph import CircuitGraph
             sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
             sage: CG = CircuitGraph(branches)
-            sage: T = CG.rooted(CG.spanning_tree(priority=['voltage_source', 'capacitor']))
+            sage: T = CG.rooted(CG.spanning_tree(priority=[VoltageSource, Capacitor]))
             sage: [(b.name, s) for b, s in T.loop(branches[0])]     # R1
             [('R1', 1), ('C1', 1), ('E1', -1)]
             sage: [(b.name, s) for b, s in T.loop(branches[2])]     # L1

@@ -48,7 +48,15 @@ from sage.symbolic.integration.integral import definite_integral
 
 from ..errors import CircuitError
 from ..symbols import velocity, t
-from .graph import UnionFind, node_key
+from .elements.kinds import ELEMENTS, CurrentSource, Inductor
+from .elements.windings import winding_groups, winding_matrix
+from .graph import node_key
+
+#: The loop method's spanning tree prefers voltage sources, then
+#: capacitors, resistors, nonlinear resistors and inductors (the order of
+#: the normal tree, :attr:`~.elements.kinds.Branch.tree_rank`); it never
+#: takes a current source.
+_LOOP_TREE = sorted(ELEMENTS.values(), key=lambda cls: cls.tree_rank)
 
 
 def source_integral(value):
@@ -76,21 +84,17 @@ def source_integral(value):
 
 def _check_linear(circuit, method):
     for b in circuit.branches():
-        nonlinear = b.kind == 'nonlinear_resistor' or (
-            b.kind in ('inductor', 'capacitor') and
-            ({'i', 'u'} & {str(v) for v in b.value.variables()}))
-        if nonlinear:
+        if not b.is_linear():
             raise CircuitError(f"the {method} method needs a linear circuit, but "
                                f"{b.name} is nonlinear; use mixed_potential()",
                                entry=f"branches[{b.index}]")
 
 
-def _quadratic(rows, values, n, weight):
-    # n x n matrix sum_b weight(value_b) * row_b row_b^T, each row a sparse
+def _quadratic(rows, weights, n):
+    # n x n matrix sum_b weight_b * row_b row_b^T, each row a sparse
     # {coordinate index: sign}
     M = matrix(SR, n, n, sparse=True)
-    for row, val in zip(rows, values):
-        w = weight(val)
+    for row, w in zip(rows, weights):
         for k, sk in row.items():
             for l, sl in row.items():
                 M[k, l] += sk * sl * w
@@ -101,9 +105,17 @@ class _BranchAnalysis:
     r"""
     What the loop and the node descriptions of a linear circuit share: the
     coordinates, the branch-to-coordinate incidence ``_rows`` (one dict
-    ``{coordinate index: sign}`` per branch), the energies and the
-    generalized forces, assembled branch by branch by the subclasses.
+    ``{coordinate index: sign}`` per branch), each branch's term ``_terms``
+    (``(role, weight)`` or ``None``, see
+    :meth:`~sage_dynsym.circuits.elements.kinds.Branch.loop_term`), the
+    energies and the generalized forces, assembled branch by branch by the
+    subclasses.
     """
+
+    def _energy(self, role, variables):
+        # sum of w_b x_b^2 / 2 over the branches whose term has this role
+        return SR(sum(term[1] * x ** 2 / 2 for term, x in zip(self._terms, variables)
+                      if term is not None and term[0] == role))
 
     def coordinates(self):
         r"""The coordinates: loop charges ``q1, q2, ...`` (loop method) or
@@ -120,10 +132,10 @@ class _BranchAnalysis:
         """
         return list(self._coordinates)
 
-    def _matrix(self, kind, weight):
-        sel = [p for p, k in enumerate(self._kinds) if k == kind]
-        return _quadratic([self._rows[p] for p in sel], [self._br[p].value for p in sel],
-                          len(self._coordinates), weight)
+    def _matrix(self, role):
+        sel = [p for p, term in enumerate(self._terms) if term is not None and term[0] == role]
+        return _quadratic([self._rows[p] for p in sel], [self._terms[p][1] for p in sel],
+                          len(self._coordinates))
 
     def source_vector(self):
         r"""The generalized forces of the sources: loop electromotive forces
@@ -202,16 +214,14 @@ class LoopAnalysis(_BranchAnalysis):
         _check_linear(circuit, "loop-current")
         cg = circuit._graph()
         br = cg.branches
-        tree = cg.spanning_tree(priority=['voltage_source', 'capacitor', 'resistor',
-                                          'nonlinear_resistor', 'inductor'],
-                                exclude=['current_source'])
+        tree = cg.spanning_tree(priority=_LOOP_TREE, exclude=[CurrentSource])
         if tree is None:
             raise CircuitError("the current sources form a cut-set: Kirchhoff's "
                                "current law cannot hold for arbitrary source values")
-        circuit._check_source_loops()
+        cg.check_source_loops()
         rooted = cg.rooted(tree)
         chords = [p for p in range(len(br)) if p not in tree]
-        coords = [p for p in chords if br[p].kind != 'current_source']
+        coords = [p for p in chords if br[p].fixed_current() is None]
         self._coordinates = [SR.var(f"q{k + 1}") for k in range(len(coords))]
         index = {p: k for k, p in enumerate(coords)}
         pos_of = {b.name: p for p, b in enumerate(br)}
@@ -225,30 +235,27 @@ class LoopAnalysis(_BranchAnalysis):
                 self._loops.append(loop)
                 x, X = velocity(self._coordinates[index[c]]), self._coordinates[index[c]]
             else:
-                x, X = br[c].value, source_integral(br[c].value)
+                x, X = br[c].fixed_current(), source_integral(br[c].fixed_current())
             for b, sign in loop:
                 p = pos_of[b.name]
                 current[p] += sign * x
                 charge[p] += sign * X
                 if c in index:
                     rows[p][index[c]] = sign
-        kinds = [b.kind for b in br]
-        T = sum(br[p].value * current[p] ** 2 / 2
-                for p in range(len(br)) if kinds[p] == 'inductor')
+        self._terms = [b.loop_term() for b in br]
+        T = self._energy('kinetic', current)
         for cp in circuit.couplings():
             T += cp.value * current[pos_of[cp.first]] * current[pos_of[cp.second]]
         self._T = SR(T)
-        self._Pi = SR(sum(charge[p] ** 2 / (2 * br[p].value)
-                          for p in range(len(br)) if kinds[p] == 'capacitor'))
-        self._R = SR(sum(br[p].value * current[p] ** 2 / 2
-                         for p in range(len(br)) if kinds[p] == 'resistor'))
+        self._Pi = self._energy('potential', charge)
+        self._R = self._energy('dissipation', current)
         forces = [SR(0)] * len(coords)
-        for p in range(len(br)):
-            if kinds[p] == 'voltage_source':
+        for p, b in enumerate(br):
+            if b.fixed_voltage() is not None:
                 for k, sign in rows[p].items():
-                    forces[k] += sign * br[p].value
+                    forces[k] += sign * b.fixed_voltage()
         self._forces = forces
-        self._br, self._kinds, self._circuit = br, kinds, circuit
+        self._circuit = circuit
         self._pos_of = pos_of
 
     def loops(self):
@@ -279,7 +286,7 @@ class LoopAnalysis(_BranchAnalysis):
             [L1  0]
             [ 0  0]
         """
-        M = self._matrix('inductor', lambda v: v)
+        M = self._matrix('kinetic')
         for cp in self._circuit.couplings():
             ra, rb = self._rows[self._pos_of[cp.first]], self._rows[self._pos_of[cp.second]]
             for k, sk in ra.items():
@@ -300,7 +307,7 @@ class LoopAnalysis(_BranchAnalysis):
             [ 1/C1 -1/C1]
             [-1/C1  1/C1]
         """
-        return self._matrix('capacitor', lambda v: 1 / v)
+        return self._matrix('potential')
 
     def resistance_matrix(self):
         r"""The loop resistance matrix `R_{ij}`.
@@ -314,7 +321,7 @@ class LoopAnalysis(_BranchAnalysis):
             [R1  0]
             [ 0 R2]
         """
-        return self._matrix('resistor', lambda v: v)
+        return self._matrix('dissipation')
 
 class NodeAnalysis(_BranchAnalysis):
     r"""
@@ -350,15 +357,13 @@ class NodeAnalysis(_BranchAnalysis):
             ground = 0 if 0 in nodes else nodes[-1]
         if ground not in nodes:
             raise CircuitError(f"the ground node {ground!r} is not a node of the circuit")
-        circuit._check_source_loops()
-        sources = [p for p, b in enumerate(br) if b.kind == 'voltage_source']
-        uf = UnionFind(nodes)
+        cg.check_source_loops()
         adjacency = {v: [] for v in nodes}
-        for p in sources:
-            b = br[p]
-            uf.union(b.tail, b.head)
-            adjacency[b.tail].append((b.head, b.value))
-            adjacency[b.head].append((b.tail, -b.value))
+        for b in br:
+            E = b.fixed_voltage()
+            if E is not None:
+                adjacency[b.tail].append((b.head, E))
+                adjacency[b.head].append((b.tail, -E))
         # one grounded node per part of the graph (parts joined only by mutual
         # inductances): the given one, and each other part's highest node
         grounds = [ground] + [max(part, key=node_key) for part in
@@ -393,13 +398,13 @@ class NodeAnalysis(_BranchAnalysis):
                     k = index[rep[v]]
                     row[k] = row.get(k, 0) + sign
             rows.append({k: s for k, s in row.items() if s})
-        kinds = [b.kind for b in br]
         delta = [flux[b.head] - flux[b.tail] for b in br]
         ddelta = [dflux[b.head] - dflux[b.tail] for b in br]
-        self._T = SR(sum(br[p].value * ddelta[p] ** 2 / 2
-                         for p in range(len(br)) if kinds[p] == 'capacitor'))
-        self._R = SR(sum(ddelta[p] ** 2 / (2 * br[p].value)
-                         for p in range(len(br)) if kinds[p] == 'resistor'))
+        self._terms = [b.node_term() for b in br]
+        self._T = self._energy('kinetic', ddelta)
+        self._R = self._energy('dissipation', ddelta)
+        # the potential energy of the windings: the inverse inductance
+        # matrix of each group of coupled inductors
         self._gamma_blocks = self._inverse_inductance(circuit, br)
         Pi = SR(0)
         for block, G in self._gamma_blocks:
@@ -408,40 +413,28 @@ class NodeAnalysis(_BranchAnalysis):
         self._Pi = Pi
         forces = [SR(0)] * len(reps)
         for b in br:
-            if b.kind == 'current_source':
+            if b.fixed_current() is not None:
                 for v, sign in ((b.head, 1), (b.tail, -1)):
                     if rep[v] in index:
-                        forces[index[rep[v]]] += sign * b.value
+                        forces[index[rep[v]]] += sign * b.fixed_current()
         self._forces = forces
-        self._br, self._kinds, self._ground = br, kinds, ground
+        self._ground = ground
         self._reps = reps
 
     @staticmethod
     def _inverse_inductance(circuit, br):
-        # inverse inductance matrix, block by block of mutually coupled inductors
-        ind = [p for p, b in enumerate(br) if b.kind == 'inductor']
+        # inverse inductance matrix, block by block of mutually coupled
+        # inductors (an uncoupled one: its node term 1/L)
         pos_of = {b.name: p for p, b in enumerate(br)}
-        uf = UnionFind(ind)
-        for cp in circuit.couplings():
-            uf.union(pos_of[cp.first], pos_of[cp.second])
-        groups = {}
-        for p in ind:
-            groups.setdefault(uf.find(p), []).append(p)
         blocks = []
-        for block in groups.values():
-            if len(block) == 1:
-                blocks.append((block, matrix(SR, [[1 / br[block[0]].value]])))
-                continue
-            where = {p: k for k, p in enumerate(block)}
-            Lm = matrix(SR, len(block), len(block))
-            for p in block:
-                Lm[where[p], where[p]] = br[p].value
-            for cp in circuit.couplings():
-                a, b = pos_of[cp.first], pos_of[cp.second]
-                if a in where:
-                    Lm[where[a], where[b]] += cp.value
-                    Lm[where[b], where[a]] += cp.value
-            blocks.append((block, Lm.inverse().simplify_rational()))
+        for group in winding_groups([b for b in br if isinstance(b, Inductor)],
+                                    circuit.couplings()):
+            block = [pos_of[b.name] for b in group]
+            if len(group) == 1:
+                blocks.append((block, matrix(SR, [[group[0].node_term()[1]]])))
+            else:
+                Lm = winding_matrix(group, circuit.couplings())
+                blocks.append((block, Lm.inverse().simplify_rational()))
         return blocks
 
     def ground(self):
@@ -482,7 +475,7 @@ class NodeAnalysis(_BranchAnalysis):
             [ 0  0]
             [ 0 C1]
         """
-        return self._matrix('capacitor', lambda v: v)
+        return self._matrix('kinetic')
 
     def conductance_matrix(self):
         r"""The node conductance matrix `(1/R)_{ij}`.
@@ -496,7 +489,7 @@ class NodeAnalysis(_BranchAnalysis):
             [1/R1    0]
             [   0 1/R2]
         """
-        return self._matrix('resistor', lambda v: 1 / v)
+        return self._matrix('dissipation')
 
     def inverse_inductance_matrix(self):
         r"""The node inverse-inductance matrix `(1/L)_{ij}` (mutual inductances included).

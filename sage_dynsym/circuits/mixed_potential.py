@@ -131,24 +131,12 @@ REFERENCES:
   Quart. Appl. Math. 22 (1964) 1--33.
 """
 from sage.symbolic.ring import SR
-from sage.symbolic.function_factory import function as symbolic_function
-from sage.symbolic.integration.integral import definite_integral
 from sage.matrix.constructor import matrix
 
 from ..errors import CircuitError
-from .elements import own_variable
+from .elements.kinds import Capacitor, Inductor, state_symbols
+from .elements.windings import winding_matrix
 from .graph import capacitor_order
-
-RESISTIVE = ('resistor', 'nonlinear_resistor', 'current_source')
-
-
-def _integral(expr, var, upper):
-    # int_0^upper expr d var; polynomials in var integrate exactly, anything
-    # else Maxima cannot do is kept as an unevaluated integral
-    try:
-        return expr.integral(var, 0, upper)
-    except (ValueError, TypeError, RuntimeError, NotImplementedError):
-        return definite_integral(expr, var, 0, upper, hold=True)
 
 
 class MixedPotential:
@@ -196,7 +184,7 @@ class MixedPotential:
         cg = circuit._graph()
         self._branches = br = cg.branches
         self._pos = pos_of = {b.name: p for p, b in enumerate(br)}
-        tc = [p for p, b in enumerate(br) if b.kind in ('capacitor', 'voltage_source')]
+        tc = [p for p, b in enumerate(br) if b.sets_voltage]
         try:
             forest = cg.components(tc)
         except ValueError as err:
@@ -208,10 +196,9 @@ class MixedPotential:
         omega_u, omega_i, tree = [], [], list(tc)
         for p, b in enumerate(br):
             fixed_voltage = forest.find(b.tail) == forest.find(b.head)
-            if b.kind in ('capacitor', 'voltage_source') or (
-                    b.kind in RESISTIVE and fixed_voltage):
+            if b.sets_voltage or (b.voltage_controlled and fixed_voltage):
                 omega_u.append(p)
-            elif b.kind == 'nonlinear_resistor':
+            elif not (b.sets_current or b.current_controlled):
                 raise CircuitError(
                     f"no Brayton-Moser split: the nonlinear resistor {b.name} is "
                     "voltage-controlled (i = f(u)) but its voltage is not fixed by "
@@ -219,14 +206,14 @@ class MixedPotential:
                     entry=f"branches[{b.index}]")
             else:
                 omega_i.append(p)
-                if b.kind == 'resistor':
+                if b.current_controlled:    # a resistor: its current from the loops
                     tree.append(p)
         self._omega_u, self._omega_i = omega_u, omega_i
         try:
             kforest = cg.components(tree)
         except ValueError as err:
             loop = cg.cycle_through(tree[:tree.index(err.args[0])], err.args[0])
-            res = [n for n in loop if br[pos_of[n]].kind == 'resistor']
+            res = [n for n in loop if br[pos_of[n]].current_controlled]
             raise CircuitError(
                 f"no Brayton-Moser split: the resistors {', '.join(res)} lie in a loop "
                 f"{', '.join(loop)} of resistors, capacitors and voltage sources; their "
@@ -250,65 +237,54 @@ class MixedPotential:
 
     def _name_states(self, cg):
         br = self._branches
-        inductors = [p for p, b in enumerate(br) if b.kind == 'inductor']
+        inductors = [p for p, b in enumerate(br) if isinstance(b, Inductor)]
         capacitors = capacitor_order(cg)     # a forest here: the circuit is complete
         self._inductors, self._capacitors = inductors, capacitors
-        r = len(inductors)
-        self._symbol = {p: SR.var(f"i{k + 1}") for k, p in enumerate(inductors)}
-        self._symbol.update({p: SR.var(f"u{r + k + 1}") for k, p in enumerate(capacitors)})
+        self._symbol = state_symbols(br, inductors + capacitors)
 
     def _voltage(self, p):
         # voltage of a branch of T_C: a state variable or a source value
-        b = self._branches[p]
-        return self._symbol[p] if b.kind == 'capacitor' else b.value
+        return self._branches[p].known_voltage(self._symbol.get(p))
 
     def _current(self, p):
         # current of an inductor or current source of Omega_i
-        b = self._branches[p]
-        return self._symbol[p] if b.kind == 'inductor' else b.value
+        return self._branches[p].known_current(self._symbol.get(p))
 
     def _build(self):
         br, tree, tc, pos_of = self._branches, self._tree, self._tc, self._pos
         used = {str(v) for b in br if b.value is not None for v in b.value.variables()}
         used |= {str(x) for x in self._symbol.values()}
         s = SR.var('s_' if 's' in used else 's')
-        self._loops = {p: tree.loop(br[p]) for p in self._omega_i
-                       if br[p].kind in ('inductor', 'current_source')}
+        self._loops = {p: tree.loop(br[p]) for p in self._omega_i if br[p].sets_current}
         alpha = {}          # currents of the Omega_i resistors, from the loops
         for p, loop in self._loops.items():
             for sigma, sign in loop[1:]:
-                if sigma.kind == 'resistor':
+                if sigma.current_controlled:
                     q = pos_of[sigma.name]
                     alpha[q] = alpha.get(q, 0) + sign * self._current(p)
         F = SR(0)
         for q in self._omega_i:
-            if br[q].kind == 'resistor':
-                F += -br[q].value * alpha.get(q, 0) ** 2 / 2
+            term = br[q].current_potential(alpha.get(q, 0))
+            if term is not None:
+                F += term
         G = SR(0)
         for p in self._omega_u:
             b = br[p]
-            if b.kind not in RESISTIVE:
+            if not b.voltage_controlled:
                 continue
             beta = -sum(sign * self._voltage(pos_of[sigma.name])
                         for sigma, sign in tree.loop(b)[1:])
-            if b.kind == 'resistor':
-                G += -beta ** 2 / (2 * b.value)
-            elif b.kind == 'current_source':
-                G += b.value * beta
-            elif b.value is None:
-                G += definite_integral(symbolic_function(b.name)(s), s, 0, beta, hold=True)
-            else:
-                G += _integral(b.value.subs({own_variable(b.kind): s}), s, beta)
+            G += b.voltage_potential(beta, s)
         J = SR(0)
         for p, loop in self._loops.items():
-            if br[p].kind == 'inductor':
+            I = br[p].fixed_current()
+            if I is None:       # an inductor
                 J += self._symbol[p] * sum(sign * self._voltage(pos_of[sigma.name])
                                            for sigma, sign in loop[1:]
                                            if pos_of[sigma.name] in tc)
             else:   # a current source of Omega_i; constant terms dropped
-                G -= br[p].value * sum(sign * self._symbol[pos_of[sigma.name]]
-                                       for sigma, sign in loop[1:]
-                                       if sigma.kind == 'capacitor')
+                G -= I * sum(sign * self._symbol[pos_of[sigma.name]]
+                             for sigma, sign in loop[1:] if isinstance(sigma, Capacitor))
         self._F, self._G, self._J = F, G, J
         self._P = F - G + J
 
@@ -484,7 +460,7 @@ class MixedPotential:
         for p in self._inductors:
             row = {q: 0 for q in self._capacitors}
             for sigma, sign in self._loops[p][1:]:
-                if sigma.kind == 'capacitor':
+                if isinstance(sigma, Capacitor):
                     row[self._pos[sigma.name]] += sign
             rows.append([row[q] for q in self._capacitors])
         return matrix(SR, len(self._inductors), len(self._capacitors), rows)
@@ -516,16 +492,8 @@ class MixedPotential:
             [L1]
         """
         br, ind = self._branches, self._inductors
-        n = len(ind)
-        M = matrix(SR, n, n)
-        for k, p in enumerate(ind):
-            M[k, k] = br[p].value.subs({own_variable('inductor'): self._symbol[p]})
-        index = {br[p].name: k for k, p in enumerate(ind)}
-        for c in self._circuit.couplings():
-            a, b = index[c.first], index[c.second]
-            M[a, b] += c.value
-            M[b, a] += c.value
-        return M
+        return winding_matrix([br[p] for p in ind], self._circuit.couplings(),
+                              currents=[self._symbol[p] for p in ind])
 
     def capacitances(self):
         r"""The capacitances `C_l(u_l)`, in the order of the state variables.
@@ -539,8 +507,29 @@ class MixedPotential:
             [C1]
         """
         br = self._branches
-        return [br[p].value.subs({own_variable('capacitor'): self._symbol[p]})
-                for p in self._capacitors]
+        return [br[p].value_at(self._symbol[p]) for p in self._capacitors]
+
+    def lhs_matrix(self):
+        r"""
+        The matrix `B` of `B\dot x =` :meth:`state_equations`: the
+        :meth:`inductance_matrix` and the :meth:`capacitances`,
+        block-diagonal, rows and columns in the order of
+        :meth:`state_variables`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: BM = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1'],
+            ....:              [3, 0, 'f1'], [0, 3, 'I1']]).brayton_moser()
+            sage: BM.lhs_matrix()
+            [L1  0]
+            [ 0 C1]
+        """
+        from sage.matrix.special import block_diagonal_matrix
+        B = block_diagonal_matrix([self.inductance_matrix(),
+                                   matrix.diagonal(SR, self.capacitances())], subdivide=False)
+        B.set_immutable()
+        return B
 
     def state_equations(self):
         r"""

@@ -104,11 +104,11 @@ Bad input is named::
     sage: Circuit([[1, 2, 'f1'], [2, 3, 'R1'], [3, 1, 'C1']]).nodal_analysis()
     Traceback (most recent call last):
     ...
-    CircuitError: branches[0]: no explicit state equations: the voltage of the nonlinear resistor f1 depends on its own current i = f1(u) through the resistor R1 (an implicit equation)
+    NotExplicitError: branches[0]: no explicit state equations: the voltage of the nonlinear resistor f1 depends on its own current i = f1(u) through the resistor R1 (an implicit equation)
     sage: Circuit([[1, 2, 'I1'], [2, 3, 'f1'], [3, 1, 'C1'], [3, 1, 'L1']]).nodal_analysis()
     Traceback (most recent call last):
     ...
-    CircuitError: branches[1]: no explicit state equations: the voltage of the nonlinear resistor f1 is fixed by no capacitor, voltage source or resistor (its current is; i = f1(u) would have to be inverted)
+    NotExplicitError: branches[1]: no explicit state equations: the voltage of the nonlinear resistor f1 is fixed by no capacitor, voltage source or resistor (its current is; i = f1(u) would have to be inverted)
 
 REFERENCES:
 
@@ -125,19 +125,36 @@ from sage.rings.real_double import RDF
 from sage.rings.real_mpfr import RR
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.symbolic.ring import SR
-from sage.symbolic.function_factory import function as symbolic_function
 
 from ..errors import CircuitError
 from ..symbols import t
-from .elements import own_variable
+from .elements.kinds import ELEMENTS, Capacitor, Inductor, state_symbols
+from .elements.windings import winding_matrix
 from .graph import UnionFind, capacitor_order
 
-#: the order in which the normal tree takes the branches
-TREE_ORDER = ('voltage_source', 'capacitor', 'resistor', 'nonlinear_resistor',
-              'inductor', 'current_source')
+#: the order in which the normal tree takes the branches (by kind; see
+#: :attr:`~sage_dynsym.circuits.elements.kinds.Branch.tree_rank`)
+TREE_ORDER = tuple(sorted(ELEMENTS, key=lambda kind: ELEMENTS[kind].tree_rank))
 
 #: how the errors of implicit (not explicitly solvable) circuits begin
 NOT_EXPLICIT = "no explicit state equations"
+
+
+class NotExplicitError(CircuitError):
+    r"""
+    The state equations of a circuit exist but are implicit: the
+    relations of its nonlinear resistors cannot be solved explicitly.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits import Circuit
+        sage: from sage_dynsym.circuits.nodal import NotExplicitError
+        sage: try:
+        ....:     Circuit([[1, 2, 'f1'], [2, 3, 'R1'], [3, 1, 'C1']]).nodal_analysis()
+        ....: except NotExplicitError as err:
+        ....:     print(err.entry)
+        branches[0]
+    """
 
 
 def _inexact(expr):
@@ -202,17 +219,16 @@ class NodalAnalysis:
         cg = circuit._graph()
         self._branches = br = cg.branches
         caps = capacitor_order(cg)
-        rank = {kind: r for r, kind in enumerate(TREE_ORDER)}
         tie = {p: k for k, p in enumerate(caps)}
-        order = sorted(range(len(br)), key=lambda p: (rank[br[p].kind], tie.get(p, p)))
+        order = sorted(range(len(br)), key=lambda p: (br[p].tree_rank, tie.get(p, p)))
         uf, tree = UnionFind(cg.nodes), []
         for p in order:
             b = br[p]
             if uf.union(b.tail, b.head):
-                if b.kind == 'current_source':
+                if b.fixed_current() is not None:
                     self._source_cut_set(cg, p)
                 tree.append(p)
-            elif b.kind == 'voltage_source':
+            elif b.fixed_voltage() is not None:
                 loop = cg.cycle_through(tree, p)
                 raise CircuitError(f"the voltage sources {', '.join(loop)} form a loop: "
                                    "Kirchhoff's voltage law cannot hold for arbitrary "
@@ -229,12 +245,9 @@ class NodalAnalysis:
             self._loops[k] = [(pos_of[b.name], s) for b, s in rooted.loop(br[k])[1:]]
             for p, s in self._loops[k]:
                 self._cut[p].append((k, s))
-        self._inductors = [p for p in self._chords if br[p].kind == 'inductor']
+        self._inductors = [p for p in self._chords if isinstance(br[p], Inductor)]
         self._capacitors = [p for p in caps if p in self._tree]
-        r = len(self._inductors)
-        self._symbol = {p: SR.var(f"i{k + 1}") for k, p in enumerate(self._inductors)}
-        self._symbol.update({p: SR.var(f"u{r + k + 1}")
-                             for k, p in enumerate(self._capacitors)})
+        self._symbol = state_symbols(br, self._inductors + self._capacitors)
         self._solve()
 
     def _source_cut_set(self, cg, p):
@@ -243,7 +256,7 @@ class NodalAnalysis:
         br = self._branches
         uf = UnionFind(cg.nodes)
         for b in br:
-            if b.kind != 'current_source':
+            if b.fixed_current() is None:
                 uf.union(b.tail, b.head)
         side = uf.find(br[p].tail)
         cut = [b for b in br if (uf.find(b.tail) == side) != (uf.find(b.head) == side)]
@@ -258,17 +271,18 @@ class NodalAnalysis:
     def _known(self, p, what):
         # a known branch quantity: a state variable or a source value
         b = self._branches[p]
-        if b.kind in ('capacitor', 'inductor'):
-            return self._symbol[p]
-        if (what, b.kind) in (('u', 'voltage_source'), ('i', 'current_source')):
-            return SR(b.value)
-        raise AssertionError(f"{b.name}: {what} is not known")    # excluded by the tree
+        known = (b.known_voltage if what == 'u' else b.known_current)(self._symbol.get(p))
+        if known is None:
+            raise AssertionError(f"{b.name}: {what} is not known")    # excluded by the tree
+        return SR(known)
 
     def _solve(self):
         br = self._branches
-        res = [p for p, b in enumerate(br) if b.kind in ('resistor', 'nonlinear_resistor')]
-        unknowns = [('u', p) for p in res] + [('i', p) for p in res
-                                              if br[p].kind == 'resistor']
+        res = [p for p, b in enumerate(br) if b.resistive]
+        # the currents of the linear resistors are unknowns, those of the
+        # nonlinear ones known functions of their voltages
+        linear = [p for p in res if br[p].resistance() is not None]
+        unknowns = [('u', p) for p in res] + [('i', p) for p in linear]
         where = {x: k for k, x in enumerate(unknowns)}
         columns, rows = {}, []          # known quantity -> column; rows (A part, K part)
 
@@ -292,13 +306,13 @@ class NodalAnalysis:
                 for q, s in self._loops[p]:
                     term(row, 'u', q, s)
             rows.append(row)
-            if br[p].kind == 'resistor':
+            if p in linear:
                 row = ({}, {})
                 term(row, 'u', p, 1)
-                term(row, 'i', p, br[p].value)
+                term(row, 'i', p, br[p].resistance())
                 rows.append(row)
         n = len(unknowns)
-        ring = coefficient_ring([br[p].value for p in res if br[p].kind == 'resistor'])
+        ring = coefficient_ring([br[p].resistance() for p in linear])
         A = matrix(ring, n, n, {(j, k): c for j, (a, _) in enumerate(rows)
                                 for k, c in a.items()})
         K = matrix(ring, n, len(columns), {(j, k): -c for j, (_, a) in enumerate(rows)
@@ -306,7 +320,7 @@ class NodalAnalysis:
         if n and A.rank() < n:
             self._singular(A, unknowns)
         X = A.solve_right(K) if n else K
-        value = {key: None if key[0] == 'i' and br[key[1]].kind == 'nonlinear_resistor'
+        value = {key: None if key[0] == 'i' and key[1] in res
                  else self._known(key[1], key[0]) for key in columns}
         keys = list(columns)
         row_of = {x: X.row(where[x]) for x in unknowns}
@@ -320,18 +334,13 @@ class NodalAnalysis:
             return sum((to_sr(v[columns[key]]) * value[key] for key in keys
                         if v[columns[key]] != 0), SR(0))
 
-        nonlinear = [p for p in res if br[p].kind == 'nonlinear_resistor']
+        nonlinear = [p for p in res if p not in linear]
         depends = {p: [g for g in nonlinear if ('i', g) in columns and
                        row_of[('u', p)][columns[('i', g)]] != 0] for p in nonlinear}
         for p in self._explicit_order(nonlinear, depends):
-            u = combination(('u', p))
-            b = br[p]
-            if b.value is None:
-                value[('i', p)] = symbolic_function(b.name)(u)
-            else:
-                value[('i', p)] = b.value.subs({own_variable(b.kind): u})
+            value[('i', p)] = br[p].current(combination(('u', p)))
         self._voltage = {p: combination(('u', p)) for p in res}
-        self._current = {p: combination(('i', p)) if br[p].kind == 'resistor'
+        self._current = {p: combination(('i', p)) if p in linear
                          else value.get(('i', p)) for p in res}
 
     def _singular(self, A, unknowns):
@@ -339,10 +348,10 @@ class NodalAnalysis:
         kernel = A.right_kernel_matrix()
         free = sorted({unknowns[k][1] for v in kernel.rows() for k, c in enumerate(v)
                        if c != 0})
-        nonlinear = [p for p in free if br[p].kind == 'nonlinear_resistor']
+        nonlinear = [p for p in free if br[p].resistance() is None]
         if nonlinear:
             p = nonlinear[0]
-            raise CircuitError(f"{NOT_EXPLICIT}: the voltage of the nonlinear resistor "
+            raise NotExplicitError(f"{NOT_EXPLICIT}: the voltage of the nonlinear resistor "
                                f"{br[p].name} is fixed by no capacitor, voltage source or "
                                f"resistor (its current is; i = {br[p].name}(u) would have "
                                "to be inverted)", entry=f"branches[{br[p].index}]")
@@ -378,7 +387,7 @@ class NodalAnalysis:
         for p in cycle:
             near = self._cut[p] if p in self._tree else self._loops[p]
             involved += [br[q].name for q, _ in near
-                         if br[q].kind == 'resistor' and br[q].name not in involved]
+                         if br[q].resistance() is not None and br[q].name not in involved]
         f = ', '.join(br[p].name for p in cycle)
         what = (f"the voltage of the nonlinear resistor {f} depends on its own current "
                 f"i = {f}(u)" if len(cycle) == 1 else
@@ -386,7 +395,7 @@ class NodalAnalysis:
                 "currents i = f(u)")
         through = (f" through the resistor{'s' if len(involved) > 1 else ''} "
                    f"{', '.join(involved)}" if involved else "")
-        raise CircuitError(f"{NOT_EXPLICIT}: {what}{through} (an implicit equation)",
+        raise NotExplicitError(f"{NOT_EXPLICIT}: {what}{through} (an implicit equation)",
                            entry=f"branches[{br[cycle[0]].index}]")
 
     # ------------------------------------------------------------------
@@ -443,7 +452,7 @@ class NodalAnalysis:
         br = self._branches
         current = {p: self._symbol[p] for p in self._inductors}
         for p, b in enumerate(br):
-            if b.kind == 'inductor' and p in self._tree:
+            if isinstance(b, Inductor) and p in self._tree:
                 current[p] = sum((s * self._chord_current(k) for k, s in self._cut[p]), SR(0))
         return current
 
@@ -451,7 +460,7 @@ class NodalAnalysis:
         br = self._branches
         voltage = {p: self._symbol[p] for p in self._capacitors}
         for p, b in enumerate(br):
-            if b.kind == 'capacitor' and p not in self._tree:
+            if isinstance(b, Capacitor) and p not in self._tree:
                 voltage[p] = -sum((s * self._tree_voltage(q) for q, s in self._loops[p]),
                                   SR(0))
         return voltage
@@ -459,42 +468,35 @@ class NodalAnalysis:
     def _inductor_blocks(self):
         # (P_L^T L P_L, P_L^T L Q_L, the chord current sources)
         br = self._branches
-        inductors = [p for p, b in enumerate(br) if b.kind == 'inductor']
+        inductors = [p for p, b in enumerate(br) if isinstance(b, Inductor)]
         index = {p: a for a, p in enumerate(inductors)}
         current = self._inductor_currents()
-        L = matrix(SR, len(inductors), len(inductors))
-        for p in inductors:
-            L[index[p], index[p]] = br[p].value.subs({own_variable('inductor'): current[p]})
-        pos_of = {b.name: p for p, b in enumerate(br)}
-        for c in self._circuit.couplings():
-            a, b = index[pos_of[c.first]], index[pos_of[c.second]]
-            L[a, b] += c.value
-            L[b, a] += c.value
-        sources = [k for k in self._chords if br[k].kind == 'current_source'
-                   and any(br[q].kind == 'inductor' for q, _ in self._loops[k])]
+        L = winding_matrix([br[p] for p in inductors], self._circuit.couplings(),
+                           currents=[current[p] for p in inductors])
+        sources = [k for k in self._chords if br[k].fixed_current() is not None
+                   and any(isinstance(br[q], Inductor) for q, _ in self._loops[k])]
         P = matrix(SR, len(inductors), len(self._inductors))
         Q = matrix(SR, len(inductors), len(sources))
         for j, k in enumerate(self._inductors):
             P[index[k], j] = 1
             for q, s in self._loops[k]:
-                if br[q].kind == 'inductor':
+                if isinstance(br[q], Inductor):
                     P[index[q], j] += s
         for j, k in enumerate(sources):
             for q, s in self._loops[k]:
-                if br[q].kind == 'inductor':
+                if isinstance(br[q], Inductor):
                     Q[index[q], j] += s
         return P.transpose() * L * P, P.transpose() * L * Q, sources
 
     def _capacitor_blocks(self):
         # (P_C^T C P_C, P_C^T C Q_C, the tree voltage sources)
         br = self._branches
-        capacitors = [p for p, b in enumerate(br) if b.kind == 'capacitor']
+        capacitors = [p for p, b in enumerate(br) if isinstance(b, Capacitor)]
         index = {p: a for a, p in enumerate(capacitors)}
         voltage = self._capacitor_voltages()
-        Cd = matrix.diagonal(SR, [br[p].value.subs({own_variable('capacitor'): voltage[p]})
-                                  for p in capacitors])
-        sources = sorted({q for k in self._chords if br[k].kind == 'capacitor'
-                          for q, _ in self._loops[k] if br[q].kind == 'voltage_source'})
+        Cd = matrix.diagonal(SR, [br[p].value_at(voltage[p]) for p in capacitors])
+        sources = sorted({q for k in self._chords if isinstance(br[k], Capacitor)
+                          for q, _ in self._loops[k] if br[q].fixed_voltage() is not None})
         column = {q: j for j, q in enumerate(self._capacitors)}
         scol = {q: j for j, q in enumerate(sources)}
         P = matrix(SR, len(capacitors), len(self._capacitors))
@@ -502,7 +504,7 @@ class NodalAnalysis:
         for q in self._capacitors:
             P[index[q], column[q]] = 1
         for k in self._chords:
-            if br[k].kind == 'capacitor':
+            if isinstance(br[k], Capacitor):
                 for q, s in self._loops[k]:
                     if q in column:
                         P[index[k], column[q]] -= s
@@ -568,14 +570,14 @@ class NodalAnalysis:
         rhs = []
         for j, k in enumerate(self._inductors):
             F = sum((s * self._tree_voltage(q) for q, s in self._loops[k]
-                     if br[q].kind != 'inductor'), SR(0))
+                     if not isinstance(br[q], Inductor)), SR(0))
             if isources:
                 F -= (LQ * rate(isources))[j, 0]
             rhs.append(F)
         column = {q: j for j, q in enumerate(self._capacitors)}
         currents = [SR(0)] * len(self._capacitors)
         for k in self._chords:
-            if br[k].kind != 'capacitor':
+            if not isinstance(br[k], Capacitor):
                 for q, s in self._loops[k]:
                     if q in column:
                         currents[column[q]] -= s * self._chord_current(k)

@@ -22,7 +22,7 @@ EXAMPLES::
 """
 from sage.symbolic.ring import SR
 
-from ..analysis.size import polynomial_terms, TERMS_CAP
+from ..algebra.size import polynomial_terms, TERMS_CAP
 from ..dynamics.lagrangian_report import (equations_lines, characteristic_estimate,
                                           check_routh_scheme)
 from ..dynamics.reporting import ReportSection, formula_lines, conditions_lines

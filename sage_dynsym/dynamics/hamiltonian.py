@@ -34,7 +34,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 from ..symbols import momentum, t as _t
-from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
+from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import FirstOrderEquations
 from ..numerics.methods import NumericalMethods
 from .brackets import poisson_bracket

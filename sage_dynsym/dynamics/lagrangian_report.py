@@ -20,10 +20,9 @@ EXAMPLES::
       [x] ddx*m + k*x
         LaTeX: {\ddot{x}} m + k x
 """
-from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
-from ..analysis.size import polynomial_terms, determinant_terms, matrix_terms
+from ..algebra.size import polynomial_terms, determinant_terms, matrix_terms
 from ..errors import BudgetError, DynSymError
 from .reporting import formula_lines
 
@@ -58,7 +57,7 @@ def characteristic_estimate(L):
     The size estimate of the characteristic polynomial
     `\det(M\lambda^2 + (D + G)\lambda + K)` of ``L`` linearized at the
     origin, checked before the linearization: the permanent bound
-    (:func:`~sage_dynsym.analysis.size.determinant_terms`) of the term
+    (:func:`~sage_dynsym.algebra.size.determinant_terms`) of the term
     counts of the second derivatives of `L` and of the dissipation that make
     up the matrix.
 
@@ -272,13 +271,8 @@ def check_routh_scheme(poly, lam, budget):
         ...
         BudgetError: the Lienard-Chipart conditions: a product of the Routh scheme would multiply more than 10 pairs of terms, over the budget of 10
     """
-    from ..analysis.hurwitz import _normalized_coefficients, _routh_scheme
-    a = _normalized_coefficients(poly, lam)
-    n = len(a) - 1
-    if n < 2 or a[0].parent() is QQ:
-        return
-    deltas, reached = _routh_scheme(a, n - 1, budget)
-    if reached < n - 1 and deltas[reached] != 0:
+    from ..analysis.hurwitz import routh_scheme_fits
+    if not routh_scheme_fits(poly, lam, budget):
         raise BudgetError(f"the Lienard-Chipart conditions: a product of the Routh scheme "
                           f"would multiply more than {budget} pairs of terms, over the budget "
                           f"of {budget}")

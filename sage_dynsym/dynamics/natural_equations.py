@@ -23,7 +23,7 @@ multiplied by its velocity monomial, so the result keeps the structure of
 products of velocities. Nothing is expanded.
 
 The coefficients live in the ring of a *calculus*: :class:`SymbolicCalculus`
-(any expressions), or :class:`~sage_dynsym.analysis.trigonometric.RingCalculus` (polynomials
+(any expressions), or :class:`~sage_dynsym.algebra.trigonometric.RingCalculus` (polynomials
 in the sines and cosines of the angles, where the combination of the three
 derivatives in `\Gamma` cancels exactly).
 
@@ -148,7 +148,7 @@ def natural_equations(A, A1, A0, coordinates, velocities, accelerations, calculu
       list and an element of the calculus' ring
     - ``coordinates``, ``velocities``, ``accelerations`` -- symbols
     - ``calculus`` -- a :class:`SymbolicCalculus` or
-      :class:`~sage_dynsym.analysis.trigonometric.RingCalculus`
+      :class:`~sage_dynsym.algebra.trigonometric.RingCalculus`
     - ``mass_matrix`` -- (optional) the symbolic form of ``A``, if the
       caller has it already (it saves converting every entry again)
 

@@ -25,7 +25,7 @@ from sage.rings.real_double import RDF
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..analysis.trigonometric import trig_rational_simplify
+from ..algebra.trigonometric import trig_rational_simplify
 
 
 def symbol_list(symbols, what):
@@ -100,7 +100,7 @@ def linear_collected(expr, symbols):
     r"""
     ``expr``, linear in ``symbols``, as `\sum_s c_s s + c_0` with every
     coefficient simplified by
-    :func:`~sage_dynsym.analysis.trigonometric.trig_rational_simplify`.
+    :func:`~sage_dynsym.algebra.trigonometric.trig_rational_simplify`.
 
     EXAMPLES::
 
@@ -157,7 +157,7 @@ def has_full_row_rank(rows):
     determinant `\det(C C^H)` is clearly nonzero in 200-bit arithmetic
     (rounding errors, even of terms that cancel, stay near `10^{-60}`
     relative); else exactly (modulo `\cos^2 + \sin^2 = 1`, see
-    :mod:`~sage_dynsym.analysis.trig_linear`). Cheaper than
+    :mod:`~sage_dynsym.algebra.trig_linear`). Cheaper than
     :func:`is_singular` of `C C^T` on large entries: the product is never
     formed symbolically.
 
@@ -190,7 +190,7 @@ def has_full_row_rank(rows):
     except (TypeError, ValueError, ArithmeticError):
         pass    # not numerical at the point (unknown functions, poles, ...)
     from ..errors import AnalysisError
-    from ..analysis.trig_linear import TrigFractionField
+    from ..algebra.trig_linear import TrigFractionField
     try:
         K = TrigFractionField([e for row in rows for e in row])
         return K.rank(K.matrix(rows)) == len(rows)
@@ -214,16 +214,16 @@ class Elimination:
     INPUT:
 
     - ``A`` -- a symmetric invertible matrix over ``SR``
-    - ``simplify`` -- (default: :func:`~sage_dynsym.analysis.trigonometric.trig_rational_simplify`
+    - ``simplify`` -- (default: :func:`~sage_dynsym.algebra.trigonometric.trig_rational_simplify`
       with ``strict=True``) the simplification of every entry, which must
       turn zero into zero (the pivots are tested); the default raises
-      :class:`~sage_dynsym.analysis.trigonometric.NotPolynomial` where it cannot decide
+      :class:`~sage_dynsym.algebra.trigonometric.NotPolynomial` where it cannot decide
       (inexact numbers, too large fractions)
 
     EXAMPLES::
 
         sage: from sage_dynsym.dynamics.lagrangian import Elimination
-        sage: from sage_dynsym.analysis.trigonometric import trig_rational_simplify
+        sage: from sage_dynsym.algebra.trigonometric import trig_rational_simplify
         sage: a, A, C, p, q = var('a A C p q')
         sage: E = Elimination(matrix([[A*sin(a)^2 + C*cos(a)^2, C*cos(a)], [C*cos(a), C]]))
         sage: E.squares([p, q])

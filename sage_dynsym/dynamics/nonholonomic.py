@@ -69,7 +69,7 @@ from ..errors import AnalysisError, ModelError
 from ..symbols import acceleration, constraint_multipliers, momentum, sage_numbers, t
 from ..symbols import time_derivative
 from ..analysis.motion import SecondOrderEquations
-from ..analysis.trig_linear import TrigFractionField
+from ..algebra.trig_linear import TrigFractionField
 from .lagrangian import Lagrangian
 from .natural_form import has_full_row_rank
 
@@ -308,7 +308,7 @@ class NonholonomicLagrangian(Lagrangian):
         <sage_dynsym.dynamics.lagrangian.Lagrangian.accelerations_and_multipliers>`);
         exactly, modulo `\cos^2 + \sin^2 = 1`, where the equations are
         rational in the sines and cosines (see
-        :mod:`~sage_dynsym.analysis.trig_linear`).
+        :mod:`~sage_dynsym.algebra.trig_linear`).
 
         OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}``, valid where the
         constraints hold

@@ -53,7 +53,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
 from ..symbols import t, time_derivative
-from ..analysis.trig_linear import TrigFractionField
+from ..algebra.trig_linear import TrigFractionField
 from .natural_form import is_singular
 
 
@@ -260,7 +260,7 @@ class ReducedEquations(SageObject):
 
 
 def _tidy(expr):
-    from ..analysis.trigonometric import trig_rational_simplify
+    from ..algebra.trigonometric import trig_rational_simplify
     return trig_rational_simplify(SR(expr))
 
 

@@ -25,7 +25,7 @@ from sage.modules.free_module_element import vector
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial
+from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from .natural_form import natural_form, linear_collected, is_singular, Elimination
 
 

@@ -65,7 +65,7 @@ from sage.plot.graphics import Graphics
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..analysis.solving import AlgebraicSolution
+from ..algebra.solving import AlgebraicSolution
 from ..analysis.stationary import StationarySolution
 from ..errors import AnalysisError
 
@@ -81,7 +81,7 @@ class StabilityStudy(SageObject):
     - ``at`` -- the equilibrium, ``{variable: value}``; it may also give
       parameters as functions of others (e.g. a source fixed by the
       equilibrium), which are then eliminated; or a solution of
-      :func:`~sage_dynsym.analysis.solving.solve_exactly` (an equilibrium
+      :func:`~sage_dynsym.algebra.solving.solve_exactly` (an equilibrium
       found exactly) or a stationary solution
     - ``lhs_matrix`` -- (optional) `B`, or the list of its diagonal
     - ``positive`` -- parameters known to be positive (simplifies the

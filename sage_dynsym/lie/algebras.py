@@ -94,9 +94,9 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..analysis.solving import normalize
+from ..algebra.solving import normalize
 from ..errors import AnalysisError, ModelError, brief
-from ._polynomials import PolynomialContext, _sr_monomial
+from ..algebra.polynomial_spaces import PolynomialContext, monomial_expression
 
 #: The named algebras: name -> (description, block names, block sizes).
 NAMED = {
@@ -130,7 +130,22 @@ def algebra_name(name):
     return key if key in NAMED else None
 
 
-def _default_names(name, prefixes=None):
+def default_names(name, prefixes=None):
+    r"""
+    The default coordinate names of the named algebra ``name`` (a key of
+    ``NAMED``), block by block, each block's names made of its prefix (or
+    of the given ``prefixes``) and an index.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lie.algebras import default_names
+        sage: default_names('e3')
+        ['M1', 'M2', 'M3', 'gamma1', 'gamma2', 'gamma3']
+        sage: default_names('so3', ['L'])
+        ['L1', 'L2', 'L3']
+        sage: default_names('e4')[:3], default_names('e4')[-1]
+        (['M12', 'M13', 'M14'], 'p4')
+    """
     _, blocks, sizes = NAMED[name]
     prefixes = blocks if prefixes is None else prefixes
     if name == 'e4':
@@ -143,7 +158,7 @@ def _variables(name, variables):
     n = sum(NAMED[name][2])
     nblocks = len(NAMED[name][1])
     if variables is None:
-        names = _default_names(name)
+        names = default_names(name)
     else:
         if isinstance(variables, str):
             variables = [v for v in re.split(r'[\s,]+', variables) if v]
@@ -151,11 +166,11 @@ def _variables(name, variables):
         if len(variables) == nblocks and nblocks < n and all(
                 isinstance(v, str) or getattr(v, 'is_symbol', lambda: False)()
                 for v in variables):
-            names = _default_names(name, [str(v) for v in variables])
+            names = default_names(name, [str(v) for v in variables])
         elif len(variables) == n:
             names = variables
         else:
-            expected = f"{n} coordinates ({', '.join(_default_names(name))})"
+            expected = f"{n} coordinates ({', '.join(default_names(name))})"
             if nblocks > 1:
                 expected += f" or {nblocks} prefixes (e.g. {list(NAMED[name][1])})"
             raise ModelError(f"{name} has {expected}, got {len(variables)} variables: "
@@ -443,7 +458,7 @@ class PoissonStructure(SageObject):
 
     def context(self, parameters=()):
         r"""
-        A :class:`~sage_dynsym.lie._polynomials.PolynomialContext` on the
+        A :class:`~sage_dynsym.algebra.polynomial_spaces.PolynomialContext` on the
         coordinates, with the parameters of the matrix and ``parameters``.
 
         EXAMPLES::
@@ -487,7 +502,7 @@ def collect(e, variables):
         f, d = P.element(e, "expression")
     except AnalysisError:
         return _normal(e)
-    return sum((SR(c / d).factor() * _sr_monomial(P.variables, m)
+    return sum((SR(c / d).factor() * monomial_expression(P.variables, m)
                 for m, c in P.split(f).items()), SR(0))
 
 

@@ -241,3 +241,100 @@ def _algebra(algebra_data, variables, parser, source):
         return constants
     raise DescriptionError(f"unknown key {brief(kind)}: expected poisson_matrix or "
                            "structure_constants", entry='algebra', source=source)
+
+
+class LiePoissonFormat:
+    r"""
+    The description format of :class:`~sage_dynsym.lie.system.LiePoissonSystem`,
+    both ways: the class inherits it (the model interface's ``from_dict``,
+    ``to_dict``, ``results`` and ``result_symbols``).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.lie.format import LiePoissonFormat
+        sage: from sage_dynsym.lie.system import LiePoissonSystem
+        sage: issubclass(LiePoissonSystem, LiePoissonFormat)
+        True
+    """
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The Lie--Poisson system of a description mapping (``kind: lie_poisson``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.lie.format.read_lie_poisson_system`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: LiePoissonSystem.from_dict({'kind': 'lie_poisson', 'algebra': 'so3',
+            ....:                             'hamiltonian': 'M3^2/2'}).equations()
+            [M2*M3, -M1*M3, 0]
+        """
+        return read_lie_poisson_system(cls, data, source)
+
+    def to_dict(self):
+        r"""
+        The description mapping of the system (``kind: lie_poisson``;
+        expressions as text), the inverse of
+        :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: LiePoissonSystem('so3', M1^2/A, positive=[A], name='top').to_dict()
+            {'algebra': 'so3',
+             'hamiltonian': 'M1^2/A',
+             'kind': 'lie_poisson',
+             'name': 'top',
+             'parameters': ['A'],
+             'positive': ['A'],
+             'variables': ['M1', 'M2', 'M3']}
+        """
+        structure = self.structure()
+        algebra = structure.name() or {'poisson_matrix': [[str(c) for c in row]
+                                                          for row in structure.matrix().rows()]}
+        data = {'kind': 'lie_poisson'}
+        if self.name():
+            data['name'] = self.name()
+        data.update({'algebra': algebra, 'variables': [str(x) for x in self.variables()],
+                     'parameters': [str(a) for a in self.parameters()]})
+        if self.positive_parameters():
+            data['positive'] = [str(a) for a in self.positive_parameters()]
+        data['hamiltonian'] = str(self.hamiltonian())
+        return data
+
+    def results(self):
+        r"""
+        The ``results:`` section of a saved description: the equations and
+        the Casimirs (of degree at most 2), as text and LaTeX.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: R = LiePoissonSystem('so3', M1^2/A).results(); R['casimirs']
+            ['M1^2 + M2^2 + M3^2']
+        """
+        from sage.misc.latex import latex
+        equations = self.equations()
+        casimirs = self.casimirs(degree=2)
+        return {'equations': [str(e) for e in equations],
+                'equations_latex': [str(latex(e)) for e in equations],
+                'casimirs': [str(c) for c in casimirs],
+                'casimirs_latex': [str(latex(c)) for c in casimirs]}
+
+    def result_symbols(self, results):
+        r"""
+        The names a ``results:`` section of this system may use: its
+        variables and parameters; no functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, A = var('M1 A')
+            sage: LiePoissonSystem('so3', M1^2/A).result_symbols({})
+            (['M1', 'M2', 'M3', 'A'], ())
+        """
+        return [str(x) for x in self.variables()] + [str(a) for a in self.parameters()], ()

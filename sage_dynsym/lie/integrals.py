@@ -6,7 +6,7 @@ Casimir of the Poisson matrix `J` if `J\nabla F = 0`, a first integral of
 `\dot x = J\nabla H` if `\{F, H\} = 0`. Both conditions are linear in the
 coefficients, with coefficients polynomial in the parameters: the
 solutions form the kernel of a matrix over the field `\mathbb{Q}(a)` of
-the parameters. It is block diagonal (see :mod:`._polynomials`), and its
+the parameters. It is block diagonal (see :mod:`~sage_dynsym.algebra.polynomial_spaces`), and its
 kernel is computed block by block, exactly.
 
 - The kernel, modulo constants, is the space of integrals of degree
@@ -63,8 +63,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..arguments import count, flag
-from ._polynomials import (LinearProblem, MAX_MINORS, Reducer, degree, primitive, products,
-                           rank_modulo, generic_point, _minors, _schur_after_constant_pivots)
+from ..algebra.polynomial_spaces import (LinearProblem, MAX_MINORS, Reducer, degree, primitive,
+                                         products, rank_modulo, generic_point, minors,
+                                         schur_after_constant_pivots)
 
 #: How deep the search for families inside families goes.
 MAX_LEVELS = 3
@@ -639,7 +640,7 @@ def _jumps(search, problem, d, new_only, generic):
     blocks = []
     for block in problem.blocks:
         if any(problem.images[j] for j in block):
-            S, _ = _schur_after_constant_pivots(problem.block_matrix(block, coeffs))
+            S, _ = schur_after_constant_pivots(problem.block_matrix(block, coeffs))
             if S is not None:
                 blocks.append(S)
     generic_ranks = [rank_modulo(S, coeffs.ideal(0)) for S in blocks]
@@ -686,7 +687,7 @@ def _minors_checked(S, r):
                             f"{S.nrows()}x{S.ncols()} block (at most {MAX_MINORS}; "
                             "MAX_MINORS): lower the degree or fix some parameters",
                             entry="polynomial_integrals")
-    return _minors(S, r)
+    return minors(S, r)
 
 
 def _contains(big, small):

@@ -47,7 +47,7 @@ from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import LinearProblem
+from ..algebra.polynomial_spaces import LinearProblem
 
 
 class InvariantLevel:

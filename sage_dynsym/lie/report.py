@@ -168,7 +168,7 @@ def lie_report(system, sections=None, analysis=True, budget=None, failed=None):
 def lie_estimates(system):
     r"""
     The size estimates of the sections of :func:`lie_report`, in polynomial
-    terms (see :func:`~sage_dynsym.analysis.size.polynomial_terms`),
+    terms (see :func:`~sage_dynsym.algebra.size.polynomial_terms`),
     computed from the data alone, before the sections: a dict from the
     section keys to pairs ``(what, estimate)``.
 
@@ -190,7 +190,7 @@ def lie_estimates(system):
         sage: {key: estimate for key, (_, estimate) in E.items()}
         {'casimirs': 204, 'equations': 6, 'integrals': 108, 'stationary': 228}
     """
-    from ..analysis.size import polynomial_terms
+    from ..algebra.size import polynomial_terms
     from .integrals import basis_size
     x, J = system.variables(), system.poisson_matrix()
     n = len(x)

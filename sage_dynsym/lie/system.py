@@ -78,8 +78,8 @@ from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
-from .algebras import NAMED, PoissonStructure, _default_names, poisson_structure
-from .format import read_lie_poisson_system
+from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
+from .format import LiePoissonFormat
 from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
                         MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
@@ -87,10 +87,10 @@ from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomi
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
 _COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
-_DEFAULT_NAMES = {n for name in NAMED for n in _default_names(name)}
+_DEFAULT_NAMES = {n for name in NAMED for n in default_names(name)}
 
 
-class LiePoissonSystem(Model, NumericalMethods):
+class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
     r"""
     A Hamiltonian system `\dot x = J(x)\nabla H` on a Lie algebra (or any
     Poisson structure).
@@ -672,88 +672,6 @@ class LiePoissonSystem(Model, NumericalMethods):
             rows = [(f"\\dot{{{latex(x)}}}", f) for x, f in zip(self.variables(), self.equations())]
             return Derivation('Lie-Poisson', ('H', self.hamiltonian()), rows, None)
         return {'Lie-Poisson': derivation}
-
-    @classmethod
-    def from_dict(cls, data, source=None):
-        r"""
-        The Lie--Poisson system of a description mapping (``kind: lie_poisson``); ``source``
-        names the file in errors. The format is read by
-        :func:`~sage_dynsym.lie.format.read_lie_poisson_system`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.lie.system import LiePoissonSystem
-            sage: LiePoissonSystem.from_dict({'kind': 'lie_poisson', 'algebra': 'so3',
-            ....:                             'hamiltonian': 'M3^2/2'}).equations()
-            [M2*M3, -M1*M3, 0]
-        """
-        return read_lie_poisson_system(cls, data, source)
-
-    def to_dict(self):
-        r"""
-        The description mapping of the system (``kind: lie_poisson``;
-        expressions as text), the inverse of
-        :func:`~sage_dynsym.lie.description.lie_poisson_from_dict`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.lie.system import LiePoissonSystem
-            sage: M1, A = var('M1 A')
-            sage: LiePoissonSystem('so3', M1^2/A, positive=[A], name='top').to_dict()
-            {'algebra': 'so3',
-             'hamiltonian': 'M1^2/A',
-             'kind': 'lie_poisson',
-             'name': 'top',
-             'parameters': ['A'],
-             'positive': ['A'],
-             'variables': ['M1', 'M2', 'M3']}
-        """
-        structure = self.structure()
-        algebra = structure.name() or {'poisson_matrix': [[str(c) for c in row]
-                                                          for row in structure.matrix().rows()]}
-        data = {'kind': 'lie_poisson'}
-        if self.name():
-            data['name'] = self.name()
-        data.update({'algebra': algebra, 'variables': [str(x) for x in self.variables()],
-                     'parameters': [str(a) for a in self.parameters()]})
-        if self.positive_parameters():
-            data['positive'] = [str(a) for a in self.positive_parameters()]
-        data['hamiltonian'] = str(self.hamiltonian())
-        return data
-
-    def results(self):
-        r"""
-        The ``results:`` section of a saved description: the equations and
-        the Casimirs (of degree at most 2), as text and LaTeX.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.lie.system import LiePoissonSystem
-            sage: M1, A = var('M1 A')
-            sage: R = LiePoissonSystem('so3', M1^2/A).results(); R['casimirs']
-            ['M1^2 + M2^2 + M3^2']
-        """
-        from sage.misc.latex import latex
-        equations = self.equations()
-        casimirs = self.casimirs(degree=2)
-        return {'equations': [str(e) for e in equations],
-                'equations_latex': [str(latex(e)) for e in equations],
-                'casimirs': [str(c) for c in casimirs],
-                'casimirs_latex': [str(latex(c)) for c in casimirs]}
-
-    def result_symbols(self, results):
-        r"""
-        The names a ``results:`` section of this system may use: its
-        variables and parameters; no functions.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.lie.system import LiePoissonSystem
-            sage: M1, A = var('M1 A')
-            sage: LiePoissonSystem('so3', M1^2/A).result_symbols({})
-            (['M1', 'M2', 'M3', 'A'], ())
-        """
-        return [str(x) for x in self.variables()] + [str(a) for a in self.parameters()], ()
 
 
 def _names_of(symbols):

@@ -38,7 +38,7 @@ from sage.matrix.constructor import matrix
 from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
-from ..analysis.trigonometric import symbolic_trig
+from ..algebra.trigonometric import symbolic_trig
 
 
 def rotation_matrix(axis, angle):
@@ -125,7 +125,7 @@ class FrameTree:
     INPUT:
 
     - ``trig`` -- (default:
-      :func:`~sage_dynsym.analysis.trigonometric.symbolic_trig`) a function giving the
+      :func:`~sage_dynsym.algebra.trigonometric.symbolic_trig`) a function giving the
       pair `(\cos\theta, \sin\theta)` of an angle, as elements of the
       ring the components live in
     - ``zero`` -- (default: ``SR(0)``) the zero of that ring

@@ -8,7 +8,7 @@ angular velocities `W_k`, the joint velocities
 and mass centres, and the decomposition (4) of each body's kinetic energy
 (1) (formulas of :doc:`the method </method>`), all as
 :class:`~sage_dynsym.mechanics.frames.FrameVector` over either the symbolic ring or a
-:class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`.
+:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`.
 
 For large systems, :meth:`Kinematics.recursive_equations` assembles the
 equations (5) body by body from the same kinematics (Newton--Euler
@@ -19,7 +19,7 @@ EXAMPLES::
     sage: from sage_dynsym import load
     sage: from sage_dynsym.description import example_path
     sage: from sage_dynsym.mechanics.kinematics import Kinematics
-    sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+    sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
     sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
     sage: K.angular_velocity(1).components(K.body_frame(1))
     (dtheta, dpsi*sin(theta), dpsi*cos(theta))
@@ -37,15 +37,15 @@ class Kinematics:
     r"""
     Velocities, positions and kinetic-energy decompositions of the bodies of
     ``system``, with the arithmetic of ``backend``
-    (:class:`~sage_dynsym.analysis.trigonometric.SymbolicBackend` or
-    :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`).
+    (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend` or
+    :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`).
 
     EXAMPLES::
 
         sage: from sage_dynsym import load
         sage: from sage_dynsym.description import example_path
         sage: from sage_dynsym.mechanics.kinematics import Kinematics
-        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+        sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
         sage: S = load(example_path('spherical_pendulum.yaml'))
         sage: R = TrigPolynomialRing([var('psi'), var('theta')],
         ....:                        [var(n) for n in 'm l g dpsi dtheta psi theta t'.split()])
@@ -68,18 +68,18 @@ class Kinematics:
                                                         body.rotations()))
 
     def backend(self):
-        r"""The arithmetic backend (:class:`~sage_dynsym.analysis.trigonometric.SymbolicBackend`
-        or :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`).
+        r"""The arithmetic backend (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`
+        or :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`).
 
         EXAMPLES::
 
             sage: from sage_dynsym import load
             sage: from sage_dynsym.description import example_path
             sage: from sage_dynsym.mechanics.kinematics import Kinematics
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: S = load(example_path('spherical_pendulum.yaml'))
             sage: Kinematics(S, SymbolicBackend()).backend()
-            <sage_dynsym.analysis.trigonometric.SymbolicBackend object at 0x...>
+            <sage_dynsym.algebra.trigonometric.SymbolicBackend object at 0x...>
         """
         return self._backend
 
@@ -92,7 +92,7 @@ class Kinematics:
             sage: from sage_dynsym import load
             sage: from sage_dynsym.description import example_path
             sage: from sage_dynsym.mechanics.kinematics import Kinematics
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
             sage: f = K.body_frame(1); K.body_frame(0), K.tree.axis(f), K.tree.angle(f)
             (0, 1, theta)
@@ -157,7 +157,7 @@ class Kinematics:
             sage: from sage_dynsym import load
             sage: from sage_dynsym.description import example_path
             sage: from sage_dynsym.mechanics.kinematics import Kinematics
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
             sage: r = K.mass_center_position(1)
             sage: r.components(K.body_frame(1)), r.components(0)
@@ -226,7 +226,7 @@ class Kinematics:
 
             sage: from sage_dynsym import MechanicalSystem, RigidBody
             sage: from sage_dynsym.mechanics.kinematics import Kinematics
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: x, m = var('x m')
             sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])
             sage: Kinematics(S, SymbolicBackend()).recursive_applies()
@@ -288,7 +288,7 @@ class Kinematics:
             sage: from sage_dynsym import load
             sage: from sage_dynsym.description import example_path
             sage: from sage_dynsym.mechanics.kinematics import Kinematics
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
             sage: A, A1, T0, h = K.recursive_equations()
             sage: A, h

@@ -346,7 +346,7 @@ class Load(SageObject):
             sage: drag.generalized_forces(S)
             [-c*da*l^2]
         """
-        from ..analysis.trigonometric import trig_rational_simplify
+        from ..algebra.trigonometric import trig_rational_simplify
         F, v, M, W = self._vectors(system, entry)
         forces = []
         for dq in system.velocities():

@@ -22,7 +22,7 @@ EXAMPLES::
 """
 from sage.symbolic.ring import SR
 
-from ..analysis.size import polynomial_terms, determinant_terms, TERMS_CAP
+from ..algebra.size import polynomial_terms, determinant_terms, TERMS_CAP
 from ..dynamics.lagrangian_report import (equations_lines, constraint_forces_lines,
                                           routh_function, routh_lines, hamiltonian_lines,
                                           stationary_estimate, stationary_lines,
@@ -264,7 +264,7 @@ def stability_condition_lines(poly, lam, positive, context):
          '      LaTeX: c']
     """
     from ..analysis import lienard_chipart_conditions, real_negative_roots_conditions
-    from ..analysis.trigonometric import TrigPolynomialRing
+    from ..algebra.trigonometric import TrigPolynomialRing
     lines = []
     zeros = 0
     while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:

@@ -61,7 +61,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..analysis.trigonometric import trig_rational_simplify, NotPolynomial, TrigPolynomialRing
+from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial, TrigPolynomialRing
 from .frames import cross
 from .rigid_body import RigidBody, as_scalar
 

@@ -48,7 +48,7 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import velocity, momentum, t, check_mechanical_names, sage_numbers
 from ..arguments import symbol_arguments
-from ..analysis.trigonometric import SymbolicBackend
+from ..algebra.trigonometric import SymbolicBackend
 from ..dynamics.holonomic import check_constraints
 from ..dynamics.model import Model
 from .force_functions import check_force_function

@@ -25,7 +25,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 from ..symbols import acceleration, t, time_derivative
-from ..analysis.trigonometric import TrigPolynomialRing, NotPolynomial, trig_rational_simplify
+from ..algebra.trigonometric import TrigPolynomialRing, NotPolynomial, trig_rational_simplify
 from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.natural_equations import natural_equations
@@ -88,7 +88,7 @@ class SystemLagrangian:
     @cached_method
     def _polynomial_kinematics(self):
         r"""
-        The kinematics over a :class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing`
+        The kinematics over a :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`
         when the model is polynomial in the sines and cosines of its angles
         and in its parameters (the usual case), else ``None``.
         """

@@ -121,9 +121,22 @@ def identifier(symbol, index, taken=()):
     return f'_s{index}'
 
 
-class _Key:
-    """A symbolic expression as a dictionary key compared by structure
-    (``==`` of Sage expressions builds an equation)."""
+class StructuralKey:
+    r"""
+    A symbolic expression as a dictionary key, compared by structure
+    (``==`` of Sage expressions builds an equation, not a truth value):
+    shared subexpressions are found once when expressions are walked.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.expressions import StructuralKey
+        sage: x = var('x')
+        sage: seen = {StructuralKey(sin(x)^2): 1}
+        sage: StructuralKey(sin(x)^2) in seen, StructuralKey(sin(x)*sin(x)) in seen
+        (True, True)
+        sage: StructuralKey(cos(x)) in seen
+        False
+    """
     __slots__ = ('expr', 'hash')
 
     def __init__(self, expr):
@@ -238,7 +251,7 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
     if language not in ('python', 'c'):
         raise AnalysisError(f"language must be 'python' or 'c', got {language!r}", entry=entry)
     python = language == 'python'
-    names = {_Key(SR(k)): v for k, v in names.items()}
+    names = {StructuralKey(SR(k)): v for k, v in names.items()}
     exprs = [SR(e) for e in expressions]
 
     # pass 1: how often each compound subexpression is used
@@ -248,7 +261,7 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
         e = stack.pop()
         if e.operator() is None:
             continue
-        key = _Key(e)
+        key = StructuralKey(e)
         uses[key] = uses.get(key, 0) + 1
         if uses[key] == 1:
             stack.extend(e.operands())
@@ -266,7 +279,7 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
         text, prec = render(e)
         if prec == 3 and re.match(r'[A-Za-z_0-9.]+\Z', text):
             return text
-        key = _Key(e)
+        key = StructuralKey(e)
         return done[key][0] if key in done else store(key, text)[0]
 
     def wrap(item, level):
@@ -277,14 +290,14 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
         """``(text, precedence)``: 3 atom, 2 product, 1 sum or negative."""
         op = e.operator()
         if op is None:
-            key = _Key(e)
+            key = StructuralKey(e)
             if key in names:
                 return names[key], 3
             if e.is_symbol():
                 raise AnalysisError(f"no value for the symbol {e}", entry=entry)
             value = real_constant(e, entry)
             return _literal(value), (3 if value >= 0 else 1)
-        key = _Key(e)
+        key = StructuralKey(e)
         if key in done:
             return done[key]
         if not e.variables():
@@ -307,8 +320,8 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
 
     def _signed(e):
         """``(negative, text, precedence)`` of a term of a sum."""
-        if e.operator() is mul_vararg and _Key(e) not in done and not (
-                cse and uses.get(_Key(e), 0) > 1):
+        if e.operator() is mul_vararg and StructuralKey(e) not in done and not (
+                cse and uses.get(StructuralKey(e), 0) > 1):
             factors = e.operands()
             coefficient = [f for f in factors if f.operator() is None and f.is_numeric()]
             if coefficient and real_constant(coefficient[0], entry) < 0:
@@ -343,8 +356,8 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
                     rest.append(f)
             factors = rest
         for f in factors:
-            if (f.operator() is operator.pow and _Key(f) not in done and
-                    not (cse and uses.get(_Key(f), 0) > 1)):
+            if (f.operator() is operator.pow and StructuralKey(f) not in done and
+                    not (cse and uses.get(StructuralKey(f), 0) > 1)):
                 base, exponent = f.operands()
                 if exponent.is_numeric() and exponent < 0:
                     denominator.append(_power(base, -exponent))
@@ -414,7 +427,7 @@ def symbols_and_functions(expressions):
     stack = [SR(e) for e in expressions]
     while stack:
         e = stack.pop()
-        key = _Key(e)
+        key = StructuralKey(e)
         if key in seen:
             continue
         seen.add(key)
@@ -450,7 +463,7 @@ def linear_coefficients(expression, unknowns):
         (True, True)
     """
     unknowns = [SR(u) for u in unknowns]
-    targets = {_Key(u) for u in unknowns}
+    targets = {StructuralKey(u) for u in unknowns}
     memo = {}
 
     def mentions(e):
@@ -458,7 +471,7 @@ def linear_coefficients(expression, unknowns):
         stack = [(e, False)]
         while stack:
             node, expanded = stack.pop()
-            key = _Key(node)
+            key = StructuralKey(node)
             if key in memo:
                 continue
             if key in targets:
@@ -466,11 +479,11 @@ def linear_coefficients(expression, unknowns):
             elif node.operator() is None:
                 memo[key] = False
             elif expanded:
-                memo[key] = any(memo[_Key(o)] for o in node.operands())
+                memo[key] = any(memo[StructuralKey(o)] for o in node.operands())
             else:
                 stack.append((node, True))
                 stack.extend((o, False) for o in node.operands())
-        return memo[_Key(e)]
+        return memo[StructuralKey(e)]
 
     expression = SR(expression)
     terms = expression.operands() if expression.operator() is add_vararg else [expression]
@@ -479,19 +492,19 @@ def linear_coefficients(expression, unknowns):
         if not mentions(term):
             rest.append(term)
             continue
-        if _Key(term) in targets:
+        if StructuralKey(term) in targets:
             unknown, factor = term, SR(1)
         elif term.operator() is mul_vararg:
-            hits = [f for f in term.operands() if _Key(f) in targets]
-            others = [f for f in term.operands() if _Key(f) not in targets]
+            hits = [f for f in term.operands() if StructuralKey(f) in targets]
+            others = [f for f in term.operands() if StructuralKey(f) not in targets]
             if len(hits) != 1 or any(mentions(f) for f in others):
                 return None
             unknown, factor = hits[0], SR(1).mul(*others) if others else SR(1)
         else:
             return None
-        coefficients.setdefault(_Key(unknown), []).append(factor)
+        coefficients.setdefault(StructuralKey(unknown), []).append(factor)
     out = {}
     for u in unknowns:
-        if _Key(u) in coefficients:
-            out[u] = SR(0).add(*coefficients[_Key(u)])
+        if StructuralKey(u) in coefficients:
+            out[u] = SR(0).add(*coefficients[StructuralKey(u)])
     return out, SR(0).add(*rest)

@@ -551,11 +551,11 @@ class SymbolicConverter:
 
     def __init__(self, graph, inputs, values=None, entry="numerical_rhs"):
         from sage.symbolic.ring import SR
-        from .expressions import _Key
-        self._graph, self._entry, self._key = graph, entry, _Key
-        self._done = {_Key(SR(symbol)): node for symbol, node in inputs.items()}
+        from .expressions import StructuralKey
+        self._graph, self._entry, self._key = graph, entry, StructuralKey
+        self._done = {StructuralKey(SR(symbol)): node for symbol, node in inputs.items()}
         for symbol, value in (values or {}).items():
-            self._done[_Key(SR(symbol))] = graph.constant(value)
+            self._done[StructuralKey(SR(symbol))] = graph.constant(value)
 
     def __call__(self, expr):
         from sage.symbolic.ring import SR

@@ -25,7 +25,7 @@ _SOURCE = {
     'report': '.writer',
     # the size estimates live with what they estimate; importable from here
     # as in earlier versions
-    'polynomial_terms': '..analysis.size', 'determinant_terms': '..analysis.size',
+    'polynomial_terms': '..algebra.size', 'determinant_terms': '..algebra.size',
     'lagrangian_estimate': '..mechanics.report', 'circuit_estimate': '..circuits.report',
     'equations_estimate': '..dynamics.lagrangian_report',
     'characteristic_estimate': '..dynamics.lagrangian_report',

@@ -106,7 +106,7 @@ from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..analysis.conditions import as_relational
+from ..algebra.conditions import as_relational
 from ..errors import AnalysisError, DynSymError
 from ..io.files import write_atomically
 from ..dynamics.hamiltonian import Hamiltonian

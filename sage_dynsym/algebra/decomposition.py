@@ -26,7 +26,7 @@ real roots `\zeta` of `F`, exact real algebraic numbers.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.decomposition import minimal_primes
+    sage: from sage_dynsym.algebra.decomposition import minimal_primes
     sage: R.<x, y> = QQ[]
     sage: I = R.ideal([x*(x^2 + y^2 - 1), x*y*(y - 2)])
     sage: sorted(minimal_primes(I), key=str)
@@ -83,7 +83,7 @@ def minimal_primes(I, shapes=False, split_points=True):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.decomposition import minimal_primes
+        sage: from sage_dynsym.algebra.decomposition import minimal_primes
         sage: K = Frac(QQ['a']); a = K.gen()
         sage: R.<x> = PolynomialRing(K, 1)
         sage: minimal_primes(R.ideal([x^3 - a*x]))
@@ -180,7 +180,7 @@ def separating_form(I, attempts=SEPARATING_ATTEMPTS):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.decomposition import separating_form
+        sage: from sage_dynsym.algebra.decomposition import separating_form
         sage: R.<x, y> = QQ[]
         sage: u, F, rad, basis, M = separating_form(R.ideal([x^2 - 1, y^2 - 1]))
         sage: F.degree()
@@ -238,7 +238,7 @@ class ShapePrime:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+        sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
         sage: R.<x, y> = QQ[]
         sage: I = R.ideal([(x^5 - x - 1)*(x - 2), y - x^2])
         sage: [Q for Q, sh in _zero_dimensional_primes(I)]
@@ -257,7 +257,7 @@ class ShapePrime:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.ring()
@@ -272,7 +272,7 @@ class ShapePrime:
         EXAMPLES: the prime `(y - x^2, x^5 - x - 1)` comes from a part that
         also holds the point `(2, 4)`::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.gens()
@@ -286,7 +286,7 @@ class ShapePrime:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.defining_polynomial()
@@ -301,7 +301,7 @@ class ShapePrime:
         EXAMPLES: the equations of the prime reduce to zero, ``x - 2`` (zero
         only at the other point of the part) does not::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.reduce(y - x^2), P.reduce(x^5 - x - 1)
@@ -316,7 +316,7 @@ class ShapePrime:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.dimension()
@@ -329,7 +329,7 @@ class ShapePrime:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.vector_space_dimension()
@@ -342,7 +342,7 @@ class ShapePrime:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.decomposition import _zero_dimensional_primes
+            sage: from sage_dynsym.algebra.decomposition import _zero_dimensional_primes
             sage: R.<x, y> = QQ[]
             sage: P = _zero_dimensional_primes(R.ideal([(x^5 - x - 1)*(x - 2), y - x^2]))[1][0]
             sage: P.is_one()
@@ -390,7 +390,7 @@ def triangular_sets(I):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.decomposition import triangular_sets
+        sage: from sage_dynsym.algebra.decomposition import triangular_sets
         sage: R.<x, y> = QQ[]
         sage: triangular_sets(R.ideal([x^2 - y, y^2 - 1]))
         [[y - 1, x - 1], [y - 1, x + 1], [y + 1, x^2 + 1]]
@@ -413,7 +413,7 @@ def shape(prime):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.decomposition import shape
+        sage: from sage_dynsym.algebra.decomposition import shape
         sage: R.<x, y> = QQ[]
         sage: u, F, g = shape(R.ideal([x^2 - 2, y - x]))
         sage: F, g

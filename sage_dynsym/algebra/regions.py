@@ -10,13 +10,13 @@ a strict condition is zero, belong to none of them: they are sets of
 measure zero where the first approximation changes).
 
 The helpers here join, negate and partition regions, simplifying each
-conjunction with :func:`~sage_dynsym.analysis.conditions.simplify_conjunction`
+conjunction with :func:`~sage_dynsym.algebra.conditions.simplify_conjunction`
 (signs known from one relation are used in the others, contradictions
 drop the alternative, declared positive symbols are used).
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.regions import negation, intersection, partition
+    sage: from sage_dynsym.algebra.regions import negation, intersection, partition
     sage: a, b = var('a b')
     sage: negation([[a > 0, b > 0]])
     [[a < 0], [b < 0]]
@@ -71,7 +71,7 @@ def simplify_region(alternatives, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.regions import simplify_region
+        sage: from sage_dynsym.algebra.regions import simplify_region
         sage: a, b, m = var('a b m')
         sage: simplify_region([[a > 0, a < 0], [m*b > 0], [b > 0, a > 1]], positive=[m])
         [[b > 0]]
@@ -133,7 +133,7 @@ def intersection(first, second, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.regions import intersection
+        sage: from sage_dynsym.algebra.regions import intersection
         sage: a, b = var('a b')
         sage: intersection([[a > 0], [b > 0]], [[a < 0]])
         [[b > 0, a < 0]]
@@ -155,7 +155,7 @@ def negation(alternatives, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.regions import negation
+        sage: from sage_dynsym.algebra.regions import negation
         sage: a, b = var('a b')
         sage: negation([[a > 0], [b == 0, a < 1]])
         [[a < 0, b != 0]]
@@ -227,7 +227,7 @@ def prune_empty(alternatives, positive=(), seed=0):
     EXAMPLES: with `a, b > 0` the first alternative is empty, because
     `(a - b)^2 < (a + b)^2`::
 
-        sage: from sage_dynsym.analysis.regions import prune_empty
+        sage: from sage_dynsym.algebra.regions import prune_empty
         sage: a, b, x = var('a b x')
         sage: prune_empty([[x - a - b > 0, 2*(a + b)*x - (a - b)^2 < 0], [x > 0]],
         ....:             positive=[a, b])
@@ -271,7 +271,7 @@ def partition(parts, rest=None, domain=((),), positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.regions import partition
+        sage: from sage_dynsym.algebra.regions import partition
         sage: a, b = var('a b')
         sage: partition([('A', [[a > 0]]), ('B', [[b > 0]])], rest='C', domain=[[b != 1]])
         [('A', [[a > 0, b - 1 != 0]]),

@@ -21,7 +21,7 @@ reduction to symbolic rational expressions (Routh functions, Hamiltonians).
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+    sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
     sage: a, b, m = var('a b m')
     sage: R = TrigPolynomialRing([a, b], [m])
     sage: (ca, sa), (cb, sb) = R.trig(a), R.trig(b)
@@ -46,26 +46,29 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+from ..errors import AnalysisError
 
 _ZERO, _ONE = SR(0), SR(1)
 
 
-class NotPolynomial(ValueError):
+class NotPolynomial(AnalysisError):
     r"""
     Raised when an expression cannot be written in a
     :class:`TrigPolynomialRing`; callers then work in the symbolic ring.
+    An :class:`~sage_dynsym.errors.AnalysisError` (so also a ``ValueError``).
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing, NotPolynomial
+        sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing, NotPolynomial
         sage: a = var('a')
         sage: try:
         ....:     TrigPolynomialRing([a], []).convert(sqrt(a))
         ....: except NotPolynomial as error:
         ....:     print(error)
         sqrt(a) is not polynomial in the rotation variables and parameters
-        sage: issubclass(NotPolynomial, ValueError)
-        True
+        sage: from sage_dynsym.errors import AnalysisError
+        sage: issubclass(NotPolynomial, AnalysisError), issubclass(NotPolynomial, ValueError)
+        (True, True)
     """
 
 
@@ -81,7 +84,7 @@ def _unsigned_angle(angle):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import _unsigned_angle
+        sage: from sage_dynsym.algebra.trigonometric import _unsigned_angle
         sage: a, b = var('a b')
         sage: _unsigned_angle(-a), _unsigned_angle(b - a), _unsigned_angle(a - b)
         (a, a - b, a - b)
@@ -163,10 +166,26 @@ def _content(element):
     return content if element.lc() > 0 else -content
 
 
-def _circle_reduce(element, pairs, zero):
+def circle_reduce(element, pairs, zero):
     r"""
     ``element`` with `c^2` replaced by `1 - s^2` for every pair ``(c, s)``:
     a linear-time normal form modulo the ideal `(c^2 + s^2 - 1)`.
+
+    INPUT:
+
+    - ``element`` -- a polynomial
+    - ``pairs`` -- pairs ``(c, s)`` of generators of its ring, the cosine
+      and the sine of one angle
+    - ``zero`` -- the zero of the ring
+
+    OUTPUT: a polynomial of degree at most one in each ``c``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import circle_reduce
+        sage: R.<c, s, m> = QQ[]
+        sage: circle_reduce(m*c^2 + m*s^2 + c^3, [(c, s)], R.zero())
+        -c*s^2 + c + m
     """
     # Singular's normal form (and its division) is quadratic in the length
     # of the polynomial: minutes for the 50,000-term entries of a 6-link
@@ -197,7 +216,7 @@ def symbolic_trig(angle):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import symbolic_trig
+        sage: from sage_dynsym.algebra.trigonometric import symbolic_trig
         sage: symbolic_trig(var('a'))
         (cos(a), sin(a))
     """
@@ -211,7 +230,7 @@ class SymbolicBackend:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+        sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
         sage: B = SymbolicBackend(); x, dx = var('x dx')
         sage: B.diff(B.convert(x*dx), dx), B.at_zero(x*dx + x, [dx]), B.trig(x)
         (x, x, (cos(x), sin(x)))
@@ -223,7 +242,7 @@ class SymbolicBackend:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: B = SymbolicBackend(); a, l, da = var('a l da')
             sage: B.convert(1).parent()
             Symbolic Ring
@@ -236,7 +255,7 @@ class SymbolicBackend:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: B = SymbolicBackend(); a, l, da = var('a l da')
             sage: B.trig(a)
             (cos(a), sin(a))
@@ -248,7 +267,7 @@ class SymbolicBackend:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: B = SymbolicBackend(); a, l, da = var('a l da')
             sage: B.diff(l^2*da^2/2, da)
             da*l^2
@@ -260,7 +279,7 @@ class SymbolicBackend:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: B = SymbolicBackend(); a, l, da = var('a l da')
             sage: B.at_zero(l*da + l^2, [da])
             l^2
@@ -272,7 +291,7 @@ class SymbolicBackend:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import SymbolicBackend
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
             sage: B = SymbolicBackend(); a, l, da = var('a l da')
             sage: B.to_symbolic(l*cos(a))
             l*cos(a)
@@ -297,7 +316,7 @@ class TrigPolynomialRing:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+        sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
         sage: a, l, da = var('a l da')
         sage: R = TrigPolynomialRing([a], [l, da])
         sage: c, s = R.trig(a)
@@ -370,7 +389,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, w, t, a, m = var('x w t a m')
             sage: R = TrigPolynomialRing.for_expressions([a*cos(w*t)*x + sqrt(2)/m], [x, t])
             sage: R.angles(), R.atoms()
@@ -402,7 +421,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: TrigPolynomialRing([var('a'), pi/2, var('a'), 1], []).angles()
             [a, 1]
 
@@ -417,7 +436,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: TrigPolynomialRing([], [], [pi]).atoms()
             [pi]
         """
@@ -429,7 +448,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, l, da = var('a l da')
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.convert(l*da*cos(a))
@@ -448,7 +467,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, l, da = var('a l da')
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.trig(a), R.trig(pi/2)
@@ -459,7 +478,7 @@ class TrigPolynomialRing:
 
             sage: R.trig(-a)
             (dynsymcos0, -dynsymsin0)
-            sage: from sage_dynsym.analysis.trigonometric import trig_rational_simplify
+            sage: from sage_dynsym.algebra.trigonometric import trig_rational_simplify
             sage: trig_rational_simplify(cos(-a)*cos(a) - sin(-a)*sin(a))
             1
         """
@@ -477,7 +496,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, l, da = var('a l da')
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.to_symbolic(R.diff(R.convert(l^2*da^2/2)*c, da))
@@ -490,7 +509,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, l, da = var('a l da')
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.to_symbolic(R.at_zero(R.convert(l*da + l^2)*c, [da]))
@@ -505,7 +524,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: R = TrigPolynomialRing([var('a')], [])
             sage: c, s = R.trig(var('a'))
             sage: R.reduce(c^3)
@@ -521,7 +540,7 @@ class TrigPolynomialRing:
             ....:     f = R.ring.random_element(degree=7, terms=30)
             ....:     assert R.reduce(f) == I.reduce(f), f
         """
-        return _circle_reduce(element, self._pairs.values(), self.zero)
+        return circle_reduce(element, self._pairs.values(), self.zero)
 
     def to_symbolic(self, element, reduced=False):
         r"""
@@ -534,7 +553,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, m, l = var('a m l')
             sage: R = TrigPolynomialRing([a], [m, l])
             sage: c, s = R.trig(a)
@@ -592,7 +611,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, m = var('a m')
             sage: e = m/sin(a) + cos(a)/(m*sin(a))
             sage: R = TrigPolynomialRing.for_expressions([e], fractions=True)
@@ -658,7 +677,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, b, m = var('a b m')
             sage: R = TrigPolynomialRing([a, b], [m])
             sage: (c, s), (cb, sb) = R.trig(a), R.trig(b)
@@ -677,8 +696,8 @@ class TrigPolynomialRing:
 
         def form(flips):
             rule = [(s, c) if flip else (c, s) for (c, s), flip in zip(pairs, flips)]
-            n = _circle_reduce(numerator, rule, self.zero)
-            d = _circle_reduce(denominator, rule, self.zero)
+            n = circle_reduce(numerator, rule, self.zero)
+            d = circle_reduce(denominator, rule, self.zero)
             if not (n.is_zero() or d.is_constant()):
                 g = n.gcd(d)
                 n, d = n // g, d // g
@@ -736,7 +755,7 @@ class TrigPolynomialRing:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: a, l = var('a l')
             sage: C = TrigPolynomialRing([a], [l]).calculus([a])
             sage: c, s = C.ring.trig(a)
@@ -761,7 +780,7 @@ class RingCalculus:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+        sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
         sage: x, z, w, t = var('x z w t')
         sage: R = TrigPolynomialRing([x + w*t], [z, w, t])
         sage: C = R.calculus([x, z])
@@ -795,7 +814,7 @@ class RingCalculus:
 
         EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, z, w, t = var('x z w t')
             sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
             sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
@@ -826,7 +845,7 @@ class RingCalculus:
 
         EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, z, w, t = var('x z w t')
             sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
             sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
@@ -847,7 +866,7 @@ class RingCalculus:
 
         EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, z, w, t = var('x z w t')
             sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
             sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
@@ -866,7 +885,7 @@ class RingCalculus:
 
         EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, z, w, t = var('x z w t')
             sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
             sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
@@ -882,7 +901,7 @@ class RingCalculus:
 
         EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, z, w, t = var('x z w t')
             sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
             sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
@@ -896,7 +915,7 @@ class RingCalculus:
 
         EXAMPLES: `z^2\cos(x + \omega t)` with the coordinates `x, z`::
 
-            sage: from sage_dynsym.analysis.trigonometric import TrigPolynomialRing
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: x, z, w, t = var('x z w t')
             sage: R = TrigPolynomialRing([x + w*t], [z, w, t]); C = R.calculus([x, z])
             sage: c, s = R.trig(x + w*t); p = c*C.convert(z^2)
@@ -926,7 +945,7 @@ def trig_rational_simplify(expr, strict=False):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trigonometric import trig_rational_simplify
+        sage: from sage_dynsym.algebra.trigonometric import trig_rational_simplify
         sage: w, t, x, m = var('w t x m')
         sage: trig_rational_simplify(cos(w*t)^4 + 2*cos(w*t)^2*sin(w*t)^2 + sin(w*t)^4)
         1

@@ -1,10 +1,22 @@
 r"""
 Conversions between symbolic expressions and Sage polynomial rings
 
-Internal helpers of :mod:`sage_dynsym.analysis`: the heavy algebra is done
-over polynomial rings with rational coefficients (Singular), and only the
-results are converted back to ``SR``.
+The heavy algebra of the package is done over polynomial rings with
+rational coefficients (Singular), and only the results are converted back
+to ``SR``. This module holds the conversions, a few tests on ring elements
+and the guard around Maxima's questions about signs.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.algebra.polynomials import parameter_ring, to_ring, to_sr
+    sage: a, b = var('a b')
+    sage: R = parameter_ring([a, b]); f = to_ring(a^2 - b/2, R); f, f.parent() is R
+    (a^2 - 1/2*b, True)
+    sage: to_sr(f)
+    a^2 - 1/2*b
 """
+from sage.rings.polynomial.multi_polynomial_ring_base import MPolynomialRing_base
+from sage.rings.polynomial.polynomial_ring import PolynomialRing_generic
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
@@ -15,6 +27,9 @@ from contextlib import contextmanager, nullcontext
 
 from ..errors import AnalysisError
 
+#: Polynomials with more terms than this are not factored.
+FACTOR_LIMIT = 3000
+
 
 def parameter_ring(symbols, extra=()):
     r"""
@@ -22,7 +37,7 @@ def parameter_ring(symbols, extra=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis._polynomials import parameter_ring
+        sage: from sage_dynsym.algebra.polynomials import parameter_ring
         sage: parameter_ring([var('b'), var('a')])
         Multivariate Polynomial Ring in a, b over Rational Field
     """
@@ -40,7 +55,7 @@ def to_ring(expr, ring, what="expression"):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis._polynomials import to_ring
+        sage: from sage_dynsym.algebra.polynomials import to_ring
         sage: R = PolynomialRing(QQ, 'x,y')
         sage: to_ring(SR('x^2/2 + y'), R)
         1/2*x^2 + y
@@ -69,7 +84,7 @@ def to_sr(poly):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis._polynomials import to_sr
+        sage: from sage_dynsym.algebra.polynomials import to_sr
         sage: R.<x,y> = QQ[]
         sage: e = to_sr(x*y^2 - 1/2); e, e.parent()
         (x*y^2 - 1/2, Symbolic Ring)
@@ -90,7 +105,7 @@ def polynomial_to_sr(poly, images):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis._polynomials import polynomial_to_sr
+        sage: from sage_dynsym.algebra.polynomials import polynomial_to_sr
         sage: R.<a, b> = QQ[]
         sage: polynomial_to_sr(a^2*b - 3, [sin(x), 2])
         2*sin(x)^2 - 3
@@ -107,6 +122,50 @@ def polynomial_to_sr(poly, images):
     return SR.sum(terms) if terms else SR(0)
 
 
+def is_polynomial_ring(parent):
+    r"""
+    Whether ``parent`` is `\QQ` or a polynomial ring (not ``SR``).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomials import is_polynomial_ring
+        sage: is_polynomial_ring(QQ['x, y']), is_polynomial_ring(QQ), is_polynomial_ring(SR)
+        (True, True, False)
+        sage: is_polynomial_ring(None)
+        False
+    """
+    return parent is not None and parent is not SR and \
+        (parent is QQ or isinstance(parent, (PolynomialRing_generic, MPolynomialRing_base)))
+
+
+def is_constant(f):
+    r"""
+    Whether the polynomial (or rational number) ``f`` is a constant.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomials import is_constant
+        sage: R.<a> = QQ[]
+        sage: is_constant(R(3)), is_constant(a), is_constant(QQ(1/2))
+        (True, False, True)
+    """
+    return f.parent() is QQ or f.is_constant()
+
+
+def constant_value(f):
+    r"""
+    The rational value of a constant polynomial (or rational number) ``f``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomials import constant_value
+        sage: R.<a> = QQ[]
+        sage: v = constant_value(R(-3/2)); v, v.parent()
+        (-3/2, Rational Field)
+    """
+    return QQ(f) if f.parent() is QQ else QQ(f.constant_coefficient())
+
+
 def positive_polynomial(f, positive):
     r"""
     Whether the polynomial ``f`` is positive for all positive values of the
@@ -116,7 +175,7 @@ def positive_polynomial(f, positive):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis._polynomials import positive_polynomial
+        sage: from sage_dynsym.algebra.polynomials import positive_polynomial
         sage: R.<a,b> = QQ[]
         sage: positive_polynomial(a*b + 2, {'a', 'b'}), positive_polynomial(a - b, {'a', 'b'})
         (True, False)
@@ -150,7 +209,7 @@ def maxima_without_questions(entry, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis._polynomials import maxima_without_questions
+        sage: from sage_dynsym.algebra.polynomials import maxima_without_questions
         sage: q, a = var('q a')
         sage: with maxima_without_questions("integral"):
         ....:     integrate(1/(q^2 + a), q)

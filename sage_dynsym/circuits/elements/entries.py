@@ -1,42 +1,14 @@
 r"""
-Circuit elements and branch entries
+Branch entries: from the entries of a branch list to element objects
 
-A circuit is a list of *elementary branches*, each joining two nodes and
-holding exactly one element, plus optional couplings (mutual inductances)
-between inductors. This module turns user entries -- short form
-``[from, to, name]`` or long form ``{from: .., to: .., kind: .., ...}`` --
-into :class:`Branch` and :class:`Coupling` records.
-
-**Orientation convention** (the same for every element). A branch entered
-as ``[a, b, X]`` is oriented from node ``a`` to node ``b``:
-
-- its current `i_b` counts positive from ``a`` to ``b`` through the element;
-- its voltage is the potential *rise* along the orientation,
-  `u_b = \varphi(b) - \varphi(a)`.
-
-With these branch variables the element laws read
-
-============================  ==========================================================================
-kind (short-form prefix)      law
-============================  ==========================================================================
-resistor (``R``)              `u_b = -R\, i_b`
-inductor (``L``)              `u_b = -L(i_b)\, di_b/dt`
-capacitor (``C``)             `i_b = -C(u_b)\, du_b/dt`
-voltage_source (``E``)        `u_b = E`  (the source raises the potential from ``a`` to ``b`` by `E`)
-current_source (``I``)        `i_b = I`  (the source drives `I` from ``a`` to ``b``)
-nonlinear_resistor (``f``)    `i_b = f(u_b)`
-============================  ==========================================================================
-
-i.e. passive elements obey the usual laws for the voltage *drop*
-`\varphi(a) - \varphi(b) = -u_b` in the direction of the current, while
-sources and the characteristic `f` are written directly in `(u_b, i_b)`.
-This is the convention under which Example 2 of
-:doc:`the method </method>` is reproduced exactly (there the source
-``I0`` is entered as ``[5, 2, I0]``).
-
-A mutual inductance couples two inductors ``L1, L2`` (long form only,
-``{kind: mutual, between: [L1, L2], value: M12}``): then
-`u_1 = -(L_1\, di_1/dt + M_{12}\, di_2/dt)` and symmetrically.
+A branch list holds short-form entries ``[from, to, name]`` (the kind
+follows the first letter of ``name``, :attr:`~.kinds.Branch.prefix`),
+long-form entries ``{from, to, kind, name, value}`` and mutual
+inductances ``{kind: mutual, between: [L1, L2], value: M}``.
+:func:`parse_entries` turns them into the element objects of
+:mod:`~sage_dynsym.circuits.elements.kinds` and the
+:class:`~sage_dynsym.circuits.elements.windings.Coupling` records, each
+checked by its kind (:meth:`~.kinds.Branch.check`).
 
 EXAMPLES::
 
@@ -52,83 +24,22 @@ EXAMPLES::
     sage: couplings
     (Coupling(first='L1', second='L1b', value=M),)
 """
-from collections import namedtuple
-
-from sage.symbolic.ring import SR
 from sage.rings.integer import Integer
+from sage.symbolic.ring import SR
 
-from ..errors import CircuitError, ExpressionError, brief
-from ..symbols import CIRCUIT_VARIABLES
-from ..io.expressions import ExpressionParser
-from ..symbols import check_names, check_name, MAX_NAME_LENGTH
-
-#: element kinds, keyed by the first letter of a short-form name
-PREFIXES = {'R': 'resistor', 'L': 'inductor', 'C': 'capacitor',
-            'E': 'voltage_source', 'I': 'current_source',
-            'f': 'nonlinear_resistor'}
-KIND_PREFIX = {kind: prefix for prefix, kind in PREFIXES.items()}
-BRANCH_KINDS = tuple(PREFIXES.values())
-#: the symbol standing for an element's own variable inside its value
-OWN_VARIABLE = {'inductor': 'i', 'capacitor': 'u', 'nonlinear_resistor': 'u'}
+from ...errors import CircuitError, ExpressionError, brief
+from ...io.expressions import ExpressionParser
+from ...symbols import CIRCUIT_VARIABLES, MAX_NAME_LENGTH, check_name, check_names
+from .kinds import CURRENT, VOLTAGE, ELEMENTS, Branch
+from .windings import Coupling
 
 #: Largest node number.
 MAX_NODE = 10**9
 
-#: what to do instead of a zero element value
-_ZERO_VALUE = {
-    'resistor': "a resistance of 0 is a short circuit: join its two nodes into one instead",
-    'inductor': "an inductance of 0 is a short circuit: join its two nodes into one instead",
-    'capacitor': "a capacitance of 0 is an open circuit: remove the branch instead",
-}
-
+#: The keys of a long-form branch entry.
 LONG_KEYS = {'from', 'to', 'kind', 'name', 'value'}
+#: The keys of a mutual inductance entry.
 MUTUAL_KEYS = {'kind', 'name', 'between', 'value'}
-
-Branch = namedtuple('Branch', 'index name kind tail head value')
-Branch.__doc__ = r"""
-One elementary branch: position ``index`` of its entry in the branch list, element
-``name`` (also its symbol), ``kind`` (see :data:`BRANCH_KINDS`), oriented
-from node ``tail`` to node ``head``; ``value`` is the element's symbolic
-value (for a nonlinear resistor: ``None`` for the unknown function
-``function(name)``, or its characteristic as an expression in ``u``).
-
-EXAMPLES::
-
-    sage: from sage_dynsym.circuits.elements import parse_entries
-    sage: branches, _ = parse_entries([[1, 2, 'L1'], [2, 1, 'C1']])
-    sage: b = branches[0]; b
-    Branch(index=0, name='L1', kind='inductor', tail=1, head=2, value=L1)
-    sage: b.kind, b.tail, b.head
-    ('inductor', 1, 2)
-"""
-Coupling = namedtuple('Coupling', 'first second value')
-Coupling.__doc__ = r"""
-A mutual inductance ``value`` between inductors ``first`` and ``second``.
-
-EXAMPLES::
-
-    sage: from sage_dynsym.circuits.elements import parse_entries
-    sage: _, (c,) = parse_entries([[1, 2, 'L1'], [2, 1, 'L2'],
-    ....:     {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'}], ['M'])
-    sage: c, c.value
-    (Coupling(first='L1', second='L2', value=M), M)
-"""
-
-
-def own_variable(kind):
-    r"""
-    Return the placeholder symbol for the element's own variable in a
-    value expression (``i`` for inductors, ``u`` for capacitors and
-    nonlinear resistors), or ``None``.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.circuits.elements import own_variable
-        sage: own_variable('capacitor'), own_variable('resistor')
-        (u, None)
-    """
-    name = OWN_VARIABLE.get(kind)
-    return SR.var(name) if name else None
 
 
 def _check_node(node, entry):
@@ -139,7 +50,7 @@ def _check_node(node, entry):
 
     TESTS::
 
-        sage: from sage_dynsym.circuits.elements import _check_node
+        sage: from sage_dynsym.circuits.elements.entries import _check_node
         sage: _check_node(3, 'b'), _check_node('out', 'b')
         (3, 'out')
         sage: _check_node(-1, 'branches[0]')
@@ -172,75 +83,23 @@ def _check_name(name, entry):
     return check_name(name, entry, CircuitError)
 
 
-def check_value(kind, value, entry):
-    r"""
-    Check the physical sense of an element value: real (no ``I``); a
-    *numeric* resistance, inductance or capacitance positive (a zero one is
-    refused with what to do instead). Symbolic values are not assumed to
-    have any sign.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.circuits.elements import check_value
-        sage: check_value('resistor', SR(2), 'b'); check_value('resistor', var('R0'), 'b')
-        sage: check_value('resistor', SR(0), 'branches[1]')
-        Traceback (most recent call last):
-        ...
-        CircuitError: branches[1].value: a resistance of 0 is a short circuit: join its two nodes into one instead
-        sage: check_value('capacitor', SR(0), 'branches[1]')
-        Traceback (most recent call last):
-        ...
-        CircuitError: branches[1].value: a capacitance of 0 is an open circuit: remove the branch instead
-        sage: check_value('inductor', SR(-1), 'branches[1]')
-        Traceback (most recent call last):
-        ...
-        CircuitError: branches[1].value: the inductance must be positive, got -1
-        sage: check_value('resistor', SR(-1), 'branches[1]')
-        Traceback (most recent call last):
-        ...
-        CircuitError: branches[1].value: the resistance must be positive, got -1; an active element is a nonlinear resistor (kind: nonlinear_resistor) with its characteristic
-        sage: check_value('voltage_source', I*var('E0'), 'branches[1]')
-        Traceback (most recent call last):
-        ...
-        CircuitError: branches[1].value: the value must be real, got I*E0
-    """
-    if value is None:
-        return
-    value = SR(value)
-    if value.has(SR.I()) or (value.is_numeric() and not value.is_real()):
-        raise CircuitError(f"the value must be real, got {brief(value)}", entry=f"{entry}.value")
-    if kind not in _ZERO_VALUE or value.variables():
-        return
-    if value.is_zero():
-        raise CircuitError(_ZERO_VALUE[kind], entry=f"{entry}.value")
-    try:
-        negative = bool(value < 0)
-    except (TypeError, ValueError):
-        return
-    if negative:
-        what = {'resistor': 'resistance', 'inductor': 'inductance',
-                'capacitor': 'capacitance'}[kind]
-        hint = ("; an active element is a nonlinear resistor (kind: nonlinear_resistor) with "
-                "its characteristic" if kind == 'resistor' else "")
-        raise CircuitError(f"the {what} must be positive, got {brief(value)}{hint}",
-                           entry=f"{entry}.value")
-
-
 def _kind_of_name(name, entry):
-    kind = PREFIXES.get(name[0])
-    if kind is None:
+    # read from ELEMENTS each time: a kind added to it is known at once
+    element = next((cls for cls in ELEMENTS.values() if cls.prefix == name[0]), None)
+    if element is None:
         if name[0] == 'M':
             raise CircuitError(
                 f"unknown element prefix 'M' in {name!r}: a mutual inductance "
                 "needs the long form {kind: mutual, between: [L1, L2], value: M}",
                 entry=entry)
+        known = ", ".join(f"{cls.prefix} ({cls.kind_name.replace('_', ' ')})"
+                          for cls in ELEMENTS.values())
+        known = " or ".join(known.rsplit(", ", 1))
         raise CircuitError(
             f"unknown element prefix {name[0]!r} in {name!r}; expected a name "
-            "starting with R (resistor), L (inductor), C (capacitor), "
-            "E (voltage source), I (current source) or f (nonlinear resistor), "
-            "or the long form {from: .., to: .., kind: .., value: ..}",
-            entry=entry)
-    return kind
+            f"starting with {known}, or the long form {{from: .., to: .., kind: .., "
+            "value: ..}", entry=entry)
+    return element
 
 
 def _short(entry_data, index, entry):
@@ -249,10 +108,9 @@ def _short(entry_data, index, entry):
                            f"element_name], got {list(entry_data)!r}", entry=entry)
     tail, head, name = entry_data
     name = _check_name(name, entry)
-    kind = _kind_of_name(name, entry)
-    value = None if kind == 'nonlinear_resistor' else SR.var(name)
-    return Branch(index, name, kind, _check_node(tail, entry),
-                  _check_node(head, entry), value)
+    element = _kind_of_name(name, entry)
+    return Branch(index, name, element.kind_name, _check_node(tail, entry),
+                  _check_node(head, entry), element.default_value(name))
 
 
 def _value(raw, parser, entry):
@@ -271,8 +129,7 @@ def _value(raw, parser, entry):
 
 
 def _long(data, index, entry, parser):
-    kind = data.get('kind')
-    if kind == 'mutual':
+    if data.get('kind') == Coupling.kind_name:
         return _mutual(data, entry, parser)
     unknown = set(data) - LONG_KEYS
     if unknown:
@@ -282,9 +139,11 @@ def _long(data, index, entry, parser):
     for key in ('from', 'to', 'kind'):
         if key not in data:
             raise CircuitError(f"missing key {key!r}", entry=entry)
-    if kind not in BRANCH_KINDS:
+    kind = data['kind']
+    element = ELEMENTS.get(kind) if isinstance(kind, str) else None
+    if element is None:
         raise CircuitError(f"unknown kind {kind!r}; expected one of "
-                           f"{', '.join(BRANCH_KINDS + ('mutual',))}",
+                           f"{', '.join(list(ELEMENTS) + [Coupling.kind_name])}",
                            entry=f"{entry}.kind")
     raw = data.get('value')
     name = data.get('name')
@@ -294,20 +153,10 @@ def _long(data, index, entry, parser):
         elif raw is None:
             raise CircuitError("give the element a 'name' or a 'value'", entry=entry)
         else:
-            name = f"{KIND_PREFIX[kind]}_{index}"
+            name = f"{element.prefix}_{index}"
     name = _check_name(name, f"{entry}.name")
-    if raw is None and kind != 'nonlinear_resistor':
-        value = SR.var(name)
-    else:
-        value = _value(raw, parser, entry)
-    own = OWN_VARIABLE.get(kind)
-    allowed = {own} if own else set()
-    extra = {str(v) for v in (value.variables() if value is not None else ())}
-    extra &= {'i', 'u'} - allowed
-    if extra:
-        raise CircuitError(f"the value of a {kind} cannot depend on "
-                           f"{', '.join(sorted(extra))}", entry=f"{entry}.value")
-    check_value(kind, value, entry)
+    value = element.default_value(name) if raw is None else _value(raw, parser, entry)
+    element.check(value, entry)
     return Branch(index, name, kind, _check_node(data['from'], entry),
                   _check_node(data['to'], entry), value)
 
@@ -325,16 +174,25 @@ def _mutual(data, entry, parser):
                            f"[L1, L2], got {between!r}", entry=f"{entry}.between")
     if 'value' not in data and 'name' not in data:
         raise CircuitError("a mutual inductance needs a 'value'", entry=entry)
-    raw = data.get('value', data.get('name'))
-    value = _value(raw, parser, entry)
-    check_value('mutual', value, entry)
-    # a constant of the windings: a current or a voltage in it would make
-    # the inductance matrix depend on the state
-    state = sorted({str(v) for v in SR(value).variables()} & {'i', 'u'})
-    if state:
-        raise CircuitError(f"a mutual inductance may depend on parameters and element values "
-                           f"only, got {brief(value)}", entry=f"{entry}.value")
+    value = _value(data.get('value', data.get('name')), parser, entry)
+    Coupling.check(value, entry)
     return Coupling(between[0], between[1], value)
+
+
+def is_coupling_entry(item):
+    r"""
+    Whether the branch-list entry ``item`` is a mutual inductance
+    (``{kind: mutual, ...}``).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.circuits.elements import is_coupling_entry
+        sage: is_coupling_entry({'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M'})
+        True
+        sage: is_coupling_entry([1, 2, 'L1']), is_coupling_entry({'kind': 'inductor'})
+        (False, False)
+    """
+    return isinstance(item, dict) and item.get('kind') == Coupling.kind_name
 
 
 def parse_entries(entries, parameters=(), entry_prefix="branches"):
@@ -353,7 +211,9 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
       current/voltage in inductors/capacitors/nonlinear resistors)
     - ``entry_prefix`` -- name used in error messages
 
-    OUTPUT: a pair (tuple of :class:`Branch`, tuple of :class:`Coupling`)
+    OUTPUT: a pair (tuple of :class:`~.kinds.Branch`, tuple of
+    :class:`~.windings.Coupling`), each branch an instance of the class of
+    its kind
 
     EXAMPLES::
 
@@ -369,7 +229,7 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
         sage: parse_entries([[1, 2, 'X1']])
         Traceback (most recent call last):
         ...
-        CircuitError: branches[0]: unknown element prefix 'X' in 'X1'; ...
+        CircuitError: branches[0]: unknown element prefix 'X' in 'X1'; expected a name starting with R (resistor), L (inductor), C (capacitor), E (voltage source), I (current source) or f (nonlinear resistor), or the long form {from: .., to: .., kind: .., value: ..}
         sage: parse_entries([[1, 2, 'R1'], [2, 3]])
         Traceback (most recent call last):
         ...
@@ -382,6 +242,10 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
         Traceback (most recent call last):
         ...
         CircuitError: branches[0]: unknown key(s) ['colour']; ...
+        sage: parse_entries([{'from': 1, 'to': 2, 'kind': 'diode', 'value': 'D1'}])
+        Traceback (most recent call last):
+        ...
+        CircuitError: branches[0].kind: unknown kind 'diode'; expected one of resistor, inductor, capacitor, voltage_source, current_source, nonlinear_resistor, mutual
         sage: parse_entries([[1, 2, 'L1'], [2, 1, 'L2'],
         ....:                {'kind': 'mutual', 'between': ['L1', 'L2'], 'value': 'M*i'}], ['M'])
         Traceback (most recent call last):
@@ -399,8 +263,8 @@ def parse_entries(entries, parameters=(), entry_prefix="branches"):
             for key in ('name', 'value'):
                 if isinstance(item.get(key), str) and item[key].isidentifier():
                     names.add(item[key])
-    names -= {'i', 'u'}
-    parser = ExpressionParser(sorted(names | {'i', 'u'}))
+    own = {CURRENT, VOLTAGE}
+    parser = ExpressionParser(sorted((names - own) | own))
     branches, couplings = [], []
     for k, item in enumerate(entries):
         entry = f"{entry_prefix}[{k}]"
@@ -425,7 +289,7 @@ def _check_declared(entries, parameters, entry_prefix):
         name = None
         if isinstance(item, (list, tuple)) and len(item) == 3:
             name = item[2]
-        elif isinstance(item, dict) and item.get('kind') != 'mutual':
+        elif isinstance(item, dict) and not is_coupling_entry(item):
             name = item.get('name')
             if name is None and isinstance(item.get('value'), str) and \
                     item['value'].isidentifier():

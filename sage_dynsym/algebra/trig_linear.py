@@ -7,7 +7,7 @@ parameters and of the sines and cosines of angles. Solving them in the
 symbolic ring is slow (every pivot goes through a general simplifier) and
 can miss a zero hidden by `\cos^2 + \sin^2 = 1`. :class:`TrigFractionField`
 writes every entry as a fraction of polynomials of a
-:class:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing` (Singular's
+:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing` (Singular's
 arithmetic, greatest common divisors cancelled), reduces numerators and
 denominators modulo `\cos^2 + \sin^2 - 1` after every operation -- a normal
 form, so that an entry is zero exactly when it is zero as a function -- and
@@ -20,7 +20,7 @@ the simplest rationals that round to them.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+    sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
     sage: a, r = var('a r')
     sage: K = TrigFractionField([cos(a), sin(a), r])
     sage: A = K.matrix([[cos(a), -sin(a)], [sin(a), cos(a)]])
@@ -32,18 +32,18 @@ EXAMPLES::
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .trigonometric import TrigPolynomialRing, NotPolynomial, _circle_reduce
+from .trigonometric import TrigPolynomialRing, NotPolynomial, circle_reduce
 from .translation import exact_rational
 
 
 def exact_numbers(expr):
     r"""
     ``expr`` with every inexact number replaced by the simplest rational
-    that rounds to it (see :func:`~sage_dynsym.analysis.translation.exact_rational`).
+    that rounds to it (see :func:`~sage_dynsym.algebra.translation.exact_rational`).
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trig_linear import exact_numbers
+        sage: from sage_dynsym.algebra.trig_linear import exact_numbers
         sage: exact_numbers(0.25*var('x') + sin(0.5*var('y')))
         1/4*x + sin(1/2*y)
     """
@@ -78,7 +78,7 @@ class TrigFractionField:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+        sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
         sage: b, m = var('b m')
         sage: K = TrigFractionField([m*cos(b)^2 + m*sin(b)^2 - m])
         sage: K.is_zero(K(m*cos(b)^2 + m*sin(b)^2 - m)), K.expression(K(m/sin(b))*K(sin(b)))
@@ -100,7 +100,7 @@ class TrigFractionField:
         self.zero, self.one = self._field.zero(), self._field.one()
 
     def _reduced(self, polynomial):
-        return _circle_reduce(polynomial, self._pairs, self._ring.zero)
+        return circle_reduce(polynomial, self._pairs, self._ring.zero)
 
     def normal(self, x):
         r"""
@@ -109,7 +109,7 @@ class TrigFractionField:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: a = var('a'); K = TrigFractionField([cos(a)])
             sage: c, s = K(cos(a)), K(sin(a))
             sage: K.normal(c^2 + s^2) == K.one
@@ -132,7 +132,7 @@ class TrigFractionField:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: a = var('a'); K = TrigFractionField([cos(a)])
             sage: K.is_zero(K(cos(a))^2 + K(sin(a))^2 - 1)
             True
@@ -142,11 +142,11 @@ class TrigFractionField:
     def expression(self, x):
         r"""
         ``x`` as a symbolic expression, in the shortest form found (see
-        :meth:`~sage_dynsym.analysis.trigonometric.TrigPolynomialRing.simplest_fraction`).
+        :meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.simplest_fraction`).
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: a, r = var('a r'); K = TrigFractionField([r*cos(a)])
             sage: K.expression(K(r*cos(a)) / K(r))
             cos(a)
@@ -160,7 +160,7 @@ class TrigFractionField:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: K = TrigFractionField([var('x')])
             sage: K.expressions(K.matrix(matrix([[x, 1]])))
             [[x, 1]]
@@ -183,7 +183,7 @@ class TrigFractionField:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: a = var('a'); K = TrigFractionField([cos(a)])
             sage: R = K.matrix([[cos(a), -sin(a)], [sin(a), cos(a)]])
             sage: Rt = K.matrix([[cos(a), sin(a)], [-sin(a), cos(a)]])
@@ -236,7 +236,7 @@ class TrigFractionField:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.trig_linear import TrigFractionField
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: x = var('x'); K = TrigFractionField([x])
             sage: A = K.matrix([[1, 0], [0, x], [1, x]])
             sage: K.expressions(K.solve(A, K.matrix([[1], [x], [1 + x]])))

@@ -1,9 +1,11 @@
 r"""
 Polynomials over the field of the parameters, and linear algebra on them
 
-The searches of :mod:`.integrals` are linear problems in the coefficients
-of an unknown polynomial: the *image* of each monomial under a linear map
-(`F \mapsto \{F, H\}`, `F \mapsto J\nabla F`) is computed in one Singular
+A search for polynomials with a linear property (the polynomial integrals
+of :mod:`~sage_dynsym.lie.integrals`, the Casimir functions) is a linear
+problem in the coefficients of an unknown polynomial: the *image* of each
+monomial under a linear map (`F \mapsto \{F, H\}`, `F \mapsto J\nabla F`)
+is computed in one Singular
 ring `\mathbb{Q}[a, x]` (parameters `a` first, then the variables `x`),
 and its coefficients are polynomials in the parameters. The matrix of the
 map is block diagonal after a permutation: monomials that share no image
@@ -18,7 +20,7 @@ exponent tuple over the variables, a coefficient an element of
 
 EXAMPLES::
 
-    sage: from sage_dynsym.lie._polynomials import PolynomialContext
+    sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
     sage: x, y, a = var('x y a')
     sage: P = PolynomialContext([x, y], [a])
     sage: f, d = P.element(x^2/a + y, 'F'); f, d
@@ -47,7 +49,7 @@ class PolynomialContext:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import PolynomialContext
+        sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
         sage: P = PolynomialContext(var('x y'), [])
         sage: P.monomials(2)
         [(2, 0), (1, 1), (0, 2), (1, 0), (0, 1)]
@@ -88,6 +90,13 @@ class PolynomialContext:
         polynomial in the parameters, ``expr = f/d``. Raises
         :class:`AnalysisError` if ``expr`` is not a polynomial in the
         variables with coefficients rational in the parameters.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.element(x*y/(a + 1) - x, 'F')
+            (-a*x + x*y - x, a + 1)
         """
         def refuse():
             return AnalysisError(
@@ -103,17 +112,39 @@ class PolynomialContext:
         return num, self.coefficient(den)
 
     def coefficient(self, f):
-        r"""A ring element free of the variables, as a coefficient."""
+        r"""A ring element free of the variables, as a coefficient.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: c = P.coefficient(P.ring('a^2 - 1')); c, c.parent() is P.coefficients
+            (a^2 - 1, True)
+        """
         if not self.np:
             return QQ(f.constant_coefficient())
         return self.coefficients({e[:self.np]: c for e, c in f.dict().items()})
 
     def lift(self, c):
-        r"""A coefficient (a polynomial in the parameters) as a ring element."""
+        r"""A coefficient (a polynomial in the parameters) as a ring element.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, a = var('x a')
+            sage: P = PolynomialContext([x], [a])
+            sage: f = P.lift(P.field('a^2 + 1')); f, f.parent() is P.ring
+            (a^2 + 1, True)
+            sage: P.lift(P.field('1/a'))
+            Traceback (most recent call last):
+            ...
+            AnalysisError: coefficient: expected a polynomial in the parameters, got 1/a
+        """
         if self.np:
             c = self.field(c)
             if c.denominator() != 1:
-                raise ValueError(f"{c} is not a polynomial in the parameters")
+                raise AnalysisError(f"expected a polynomial in the parameters, got {c}",
+                                    entry="coefficient")
             c = c.numerator()
         return self.ring(c)
 
@@ -121,6 +152,13 @@ class PolynomialContext:
         r"""
         ``f`` as ``{monomial: coefficient}``, coefficients polynomials in
         the parameters.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: sorted(P.split(P.ring('a*x^2 + x^2 - y')).items())
+            [((0, 1), -1), ((2, 0), a + 1)]
         """
         out = {}
         np = self.np
@@ -135,11 +173,27 @@ class PolynomialContext:
         return {k: QQ(v) for k, v in out.items() if v}
 
     def degree(self, f):
-        r"""The total degree of a ring element in the variables."""
+        r"""The total degree of a ring element in the variables.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.degree(P.ring('a^5*x + y^2'))
+            2
+        """
         return max((sum(e[self.np:]) for e in f.exponents()), default=0)
 
     def monomial(self, m):
-        r"""The ring element `x^m`."""
+        r"""The ring element `x^m`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.monomial((1, 2))
+            x*y^2
+        """
         r = self.ring.one()
         for g, k in zip(self.variable_gens, m):
             if k:
@@ -150,6 +204,13 @@ class PolynomialContext:
         r"""
         Exponent tuples of degree `1, \dots,` ``degree``, by decreasing
         degree (then lexicographically decreasing): the column order.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.monomials(2)
+            [(2, 0), (1, 1), (0, 2), (1, 0), (0, 1)]
         """
         out = []
         for d in range(degree, 0, -1):
@@ -157,17 +218,41 @@ class PolynomialContext:
         return out
 
     def polynomial(self, vector):
-        r"""A vector with polynomial coefficients as a ring element."""
+        r"""A vector with polynomial coefficients as a ring element.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.polynomial({(1, 0): P.field('a'), (0, 2): 1})
+            a*x + y^2
+        """
         return sum((self.lift(c) * self.monomial(m) for m, c in vector.items()),
                    self.ring.zero())
 
     def vector(self, f):
-        r"""A ring element as a vector over the field, constant term dropped."""
+        r"""A ring element as a vector over the field, constant term dropped.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.vector(P.ring('a*x + 3'))
+            {(1, 0): a}
+        """
         return {m: self.field(c) for m, c in self.split(f).items() if any(m)}
 
     def to_sr(self, vector):
-        r"""A vector as a symbolic expression."""
-        return sum((SR(c) * _sr_monomial(self.variables, m) for m, c in vector.items()),
+        r"""A vector as a symbolic expression.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext
+            sage: x, y, a = var('x y a'); P = PolynomialContext([x, y], [a])
+            sage: P.to_sr({(1, 1): P.field('1/a'), (0, 1): 2})
+            x*y/a + 2*y
+        """
+        return sum((SR(c) * monomial_expression(self.variables, m) for m, c in vector.items()),
                    SR(0))
 
 
@@ -181,7 +266,16 @@ def _compositions(d, n):
             yield (k,) + rest
 
 
-def _sr_monomial(variables, m):
+def monomial_expression(variables, m):
+    r"""
+    The monomial with exponent tuple ``m`` in the symbolic ``variables``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomial_spaces import monomial_expression
+        sage: monomial_expression(var('x y z'), (2, 0, 1))
+        x^2*z
+    """
     r = SR(1)
     for v, k in zip(variables, m):
         if k:
@@ -190,7 +284,14 @@ def _sr_monomial(variables, m):
 
 
 def degree(m):
-    r"""Total degree of an exponent tuple."""
+    r"""Total degree of an exponent tuple.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomial_spaces import degree
+        sage: degree((2, 0, 1))
+        3
+    """
     return sum(m)
 
 
@@ -203,7 +304,7 @@ def primitive(vector, field):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import primitive
+        sage: from sage_dynsym.algebra.polynomial_spaces import primitive
         sage: F = PolynomialRing(QQ, 'a').fraction_field(); a = F.gen()
         sage: sorted(primitive({(2,): -1/a, (1,): 2/a^2}, F).items())
         [((1,), -2), ((2,), a)]
@@ -241,7 +342,7 @@ class Reducer:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import Reducer
+        sage: from sage_dynsym.algebra.polynomial_spaces import Reducer
         sage: R = Reducer(QQ)
         sage: R.add({(2,): 1, (1,): 1}), R.add({(2,): 2, (1,): 2}), R.add({(1,): 1}), R.rank()
         (True, False, True, 2)
@@ -252,9 +353,28 @@ class Reducer:
         self.rows = []
 
     def rank(self):
+        r"""The number of vectors kept.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import Reducer
+            sage: R = Reducer(QQ); R.add({(1,): 1}); R.rank()
+            True
+            1
+        """
         return len(self.rows)
 
     def reduce(self, v):
+        r"""``v`` reduced by the vectors kept: ``{}`` iff ``v`` is in their span.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import Reducer
+            sage: R = Reducer(QQ); R.add({(2,): 1, (1,): 1})
+            True
+            sage: R.reduce({(2,): 3, (1,): 3}), R.reduce({(2,): 1})
+            ({}, {(1,): -1})
+        """
         v = {m: self.field(c) for m, c in v.items() if c}
         for p, e in self.rows:
             c = v.get(p)
@@ -268,6 +388,15 @@ class Reducer:
         return v
 
     def add(self, v):
+        r"""Keep ``v`` if it is independent of the vectors kept; whether it was.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import Reducer
+            sage: R = Reducer(QQ)
+            sage: R.add({(1, 0): 1}), R.add({(1, 0): -2}), R.add({(0, 1): 1})
+            (True, False, True)
+        """
         v = self.reduce(v)
         if not v:
             return False
@@ -291,7 +420,7 @@ def blocks(images):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import blocks
+        sage: from sage_dynsym.algebra.polynomial_spaces import blocks
         sage: blocks([{'a': 1}, {'b': 1}, {'a': 2, 'c': 1}, {}])
         [[0, 2], [1], [3]]
     """
@@ -332,7 +461,7 @@ class LinearProblem:
 
     EXAMPLES: the integrals of degree `\le 2` of `\dot x = y,\ \dot y = -x`::
 
-        sage: from sage_dynsym.lie._polynomials import PolynomialContext, LinearProblem
+        sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext, LinearProblem
         sage: x, y = var('x y'); P = PolynomialContext([x, y], [])
         sage: X = [P.element(y, 'X')[0], P.element(-x, 'X')[0]]
         sage: cols = P.monomials(2)
@@ -351,7 +480,19 @@ class LinearProblem:
         self._kernel = self._rational = None
 
     def block_matrix(self, block, ring=None):
-        r"""The matrix of one block (rows in a fixed order) over ``ring``."""
+        r"""The matrix of one block (rows in a fixed order) over ``ring``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext, LinearProblem
+            sage: P = PolynomialContext(var('x y'), [])
+            sage: L = LinearProblem(P, [(1, 0), (0, 1)], [{'u': 1}, {'u': 2, 'v': 1}])
+            sage: L.blocks, L.block_matrix([0, 1])
+            (
+                        [1 2]
+            [[0, 1]],   [0 1]
+            )
+        """
         ring = ring or self.context.field
         rows = sorted({k for j in block for k in self.images[j]}, key=repr)
         index = {k: i for i, k in enumerate(rows)}
@@ -368,6 +509,15 @@ class LinearProblem:
         generators of the module of syzygies over `\mathbb{Q}[a]`
         (Singular's ``syz``: fraction-free, no growth of rational
         functions), which span the kernel over `\mathbb{Q}(a)`. Cached.
+
+        EXAMPLES: the kernel of `(c_1, c_2) \mapsto c_1 a - c_2` over
+        `\mathbb{Q}(a)`::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext, LinearProblem
+            sage: P = PolynomialContext(var('x y'), [var('a')])
+            sage: L = LinearProblem(P, [(1, 0), (0, 1)], [{'u': P.coefficients('a')}, {'u': -1}])
+            sage: [P.to_sr(v) for v in L.kernel()]
+            [a*y + x]
         """
         if self._kernel is None:
             out = []
@@ -393,6 +543,18 @@ class LinearProblem:
         A basis of the kernel vectors with rational coefficients (integrals
         for all parameter values): the common kernel of the coefficients
         of each power product of the parameters. Cached.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.polynomial_spaces import PolynomialContext, LinearProblem
+            sage: P = PolynomialContext(var('x y'), [var('a')])
+            sage: c = P.coefficients('a')
+            sage: L = LinearProblem(P, [(1, 0), (0, 1)], [{'u': c}, {'u': c^0}])
+            sage: L.rational_kernel()
+            []
+            sage: L = LinearProblem(P, [(1, 0), (0, 1)], [{'u': c}, {'u': -c}])
+            sage: [P.to_sr(v) for v in L.rational_kernel()]
+            [x + y]
         """
         if self._rational is None:
             out = []
@@ -423,14 +585,25 @@ def _syzygies(A):
     return [list(z) for z in (Z.columns() if hasattr(Z, 'columns') else Z) if any(z)]
 
 
-def _minors(S, r):
-    # Singular's minor() computes the r x r minors by Bareiss elimination
+def minors(S, r):
+    r"""
+    The nonzero `r \times r` minors of the polynomial matrix ``S``
+    (Singular's ``minor``: Bareiss elimination).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomial_spaces import minors
+        sage: R.<a, b> = QQ[]
+        sage: S = matrix(R, [[a, b], [0, a]])
+        sage: minors(S, 2), minors(S, 1)
+        ([a^2], [a, b, a])
+    """
     if r == 1:
         return [c for c in S.list() if c]
     return [m for m in singular_function('minor')(S, r) if m]
 
 
-def _schur_after_constant_pivots(A):
+def schur_after_constant_pivots(A):
     r"""
     Eliminate with every nonzero constant entry as a pivot; return the
     remaining matrix (rows and columns without a pivot) and the number of
@@ -438,9 +611,9 @@ def _schur_after_constant_pivots(A):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import _schur_after_constant_pivots
+        sage: from sage_dynsym.algebra.polynomial_spaces import schur_after_constant_pivots
         sage: R.<a> = QQ[]
-        sage: _schur_after_constant_pivots(matrix(R, [[1, a], [a, 1]]))
+        sage: schur_after_constant_pivots(matrix(R, [[1, a], [a, 1]]))
         ([-a^2 + 1], 1)
     """
     A = A.__copy__()
@@ -480,7 +653,7 @@ def rank_modulo(A, prime):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import rank_modulo
+        sage: from sage_dynsym.algebra.polynomial_spaces import rank_modulo
         sage: R.<a, b> = QQ[]
         sage: A = matrix(R, [[a, b], [b, a]])
         sage: rank_modulo(A, R.ideal(0)), rank_modulo(A, R.ideal(a - b)), rank_modulo(A, R.ideal(a, b))
@@ -515,7 +688,7 @@ def products(generators, max_degree):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.lie._polynomials import products
+        sage: from sage_dynsym.algebra.polynomial_spaces import products
         sage: R.<x, y> = QQ[]
         sage: products([(x, 1), (y^2, 2)], 3)
         [x, x^2, x^3, x*y^2, y^2]
@@ -537,6 +710,13 @@ def generic_point(parameters, seed=0):
     r"""
     A reproducible random rational point for the parameters (used only to
     test functional independence, where a zero is a probability-zero event).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomial_spaces import generic_point
+        sage: a, b = var('a b')
+        sage: generic_point([a, b]) == generic_point([a, b]), sorted(generic_point([a, b]))
+        (True, [a, b])
     """
     import random
     rng = random.Random(seed)

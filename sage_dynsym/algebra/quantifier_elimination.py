@@ -24,7 +24,7 @@ list of relationals (``[]`` is "always", an empty list of alternatives is
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.quantifier_elimination import exists
+    sage: from sage_dynsym.algebra.quantifier_elimination import exists
     sage: l, a, b = var('l a b')
     sage: exists([l], [a*l^2 + b*l + 1 > 0, l*a - b < 0, l > 0], positive=[a])
     [[b > 0]]
@@ -93,7 +93,7 @@ def exists(quantified, conditions, positive=(), timeout=QEPCAD_TIMEOUT):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.quantifier_elimination import exists
+        sage: from sage_dynsym.algebra.quantifier_elimination import exists
         sage: l, a = var('l a')
         sage: exists([l], [l^2 - a > 0])          # closed form
         [[]]
@@ -340,8 +340,8 @@ def exists_real_solution(translation, prime, positive=(), timeout=QEPCAD_TIMEOUT
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.translation import Translation
-        sage: from sage_dynsym.analysis.quantifier_elimination import exists_real_solution
+        sage: from sage_dynsym.algebra.translation import Translation
+        sage: from sage_dynsym.algebra.quantifier_elimination import exists_real_solution
         sage: x, a = var('x a')
         sage: T = Translation([x^4 - a], [x])
         sage: exists_real_solution(T, T.ring().ideal(T.equations()))

@@ -9,7 +9,7 @@ assuming any denominator positive.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.determinants import fraction_free_det
+    sage: from sage_dynsym.algebra.determinants import fraction_free_det
     sage: m, k, lam = var('m k lam')
     sage: fraction_free_det(matrix([[lam, -1], [k/m, lam]]))
     lam^2*m^2 + k*m
@@ -19,7 +19,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import parameter_ring, to_ring, positive_polynomial
+from .polynomials import parameter_ring, to_ring, positive_polynomial
 from .translation import Translation
 
 
@@ -40,7 +40,7 @@ def fraction_free_det(A, as_polynomial=False, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.determinants import fraction_free_det
+        sage: from sage_dynsym.algebra.determinants import fraction_free_det
         sage: a, g, lam = var('a g lam'); f = function('f')
         sage: fraction_free_det(matrix([[lam, 1], [-a/g, lam]]))
         g^2*lam^2 + a*g

@@ -16,9 +16,14 @@ Non-polynomial parts (``cos(alpha)``, ``sqrt(g*l)``, derivatives of
 unspecified functions) are kept as atoms; square roots count as positive
 (they are taken where they are real).
 
+Lists of conditions ``f > 0`` on polynomials (the Hurwitz and
+Liénard--Chipart conditions) are simplified without leaving the polynomial
+rings by :func:`reduce_conditions` (:func:`simplify_conditions` for
+symbolic input).
+
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.conditions import positive_conditions, nonzero_conditions
+    sage: from sage_dynsym.algebra.conditions import positive_conditions, nonzero_conditions
     sage: R, w, g, m = var('R w g m')
     sage: positive_conditions(R^2*w^4 - g^2, positive=[R, w, g])
     [R*w^2 - g > 0]
@@ -33,16 +38,12 @@ EXAMPLES::
 """
 from sage.misc.misc_c import prod
 from sage.rings.rational_field import QQ
+from sage.structure.element import Element
 from sage.symbolic.ring import SR
 
-from .hurwitz import _reduce, _is_constant, _constant, FACTOR_LIMIT
-from ._polynomials import positive_polynomial
-from .translation import Translation
-
-
-def _translate(expressions):
-    T = Translation([], [], extra=expressions)
-    return T, [T.fraction(e) for e in expressions]
+from .polynomials import (positive_polynomial, parameter_ring, to_ring, to_sr, is_constant,
+                          constant_value, is_polynomial_ring, FACTOR_LIMIT)
+from .translation import translate_expressions
 
 
 def _relational(T, factors, op):
@@ -50,18 +51,225 @@ def _relational(T, factors, op):
     coefficient on the left (``-f > 0`` is written ``f < 0``)."""
     flip = {'>': '<', '<': '>', '!=': '!=', '==': '=='}
     p = prod(factors)
-    if not _is_constant(p) and p.lc() < 0:
+    if not is_constant(p) and p.lc() < 0:
         p, op = -p, flip[op]
-    e = _factored_symbolic(T, p)
+    e = T.factored(p)
     return {'>': e > 0, '<': e < 0, '!=': e != 0, '==': e == 0}[op]
 
 
-def _factored_symbolic(T, p):
-    if _is_constant(p) or len(p.dict()) > FACTOR_LIMIT:
-        return T.symbolic(p)
-    F = p.factor()
-    return SR(F.unit()) * prod((T.symbolic(f) ** e for f, e in F), SR(1))
+# ---------------------------------------------------------------------------
+# lists of polynomial conditions f > 0, in the polynomial rings
+# ---------------------------------------------------------------------------
 
+class Unexpanded:
+    r"""
+    A condition ``expr > 0`` kept as a symbolic expression, not expanded
+    into a polynomial (a Hurwitz determinant over the budget, written in
+    the coefficients): :func:`reduce_conditions` passes it through as it
+    is.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.conditions import (Unexpanded, reduce_conditions,
+        ....:                                             conditions_as_expressions)
+        sage: a, b = var('a b')
+        sage: R.<a, b> = QQ[]
+        sage: entries = reduce_conditions([a*b^2, Unexpanded(SR('(a - 1)*(b + 1)'))], [])
+        sage: conditions_as_expressions(entries)
+        [a, (a - 1)*(b + 1)]
+    """
+
+    def __init__(self, expr):
+        self.expr = expr
+
+
+def _positive_names(positive):
+    return {str(p) for p in positive}
+
+
+def _simplify_one(f, positive):
+    r"""
+    Reduce the condition ``f > 0`` to ``g > 0`` (a polynomial or unexpanded
+    expression), or ``None`` if it always holds. Returns ``(g, factors)``
+    where ``factors`` is the set of odd-power factors kept.
+    """
+    if isinstance(f, Unexpanded):
+        return f.expr, None
+    if is_constant(f):
+        c = constant_value(f)
+        return (None, None) if c > 0 else (f.parent()(c.sign()), None)
+    if positive_polynomial(f, positive):
+        return None, None
+    if positive_polynomial(-f, positive):
+        return f.parent()(-1), None
+    if len(f.dict()) > FACTOR_LIMIT:
+        return f, frozenset([f])
+    F = f.factor()
+    sign = QQ(F.unit()).sign()
+    kept = []
+    for g, e in F:
+        if positive_polynomial(g, positive):
+            continue
+        if positive_polynomial(-g, positive):
+            sign = sign * (-1) ** e
+            continue
+        if e % 2:
+            if g.lc() < 0:      # canonical sign, so that equal factors match
+                g, sign = -g, -sign
+            kept.append(g)
+    if not kept:
+        return (None, None) if sign > 0 else (f.parent()(-1), None)
+    product = sign
+    for g in kept:
+        product *= g
+    if len(kept) == 1 and sign < 0:
+        kept = [-kept[0]]
+        sign = 1
+    return product, (frozenset(kept) if sign > 0 else frozenset([product]))
+
+
+def simplify_conditions(conditions, positive=()):
+    r"""
+    Simplify a list of polynomial conditions ``f > 0``.
+
+    INPUT:
+
+    - ``conditions`` -- list of polynomials (or symbolic expressions
+      polynomial in their variables)
+    - ``positive`` -- (default: ``()``) variables known to be positive
+
+    OUTPUT: list of symbolic expressions, all to be ``> 0``, equivalent to
+    the input (up to the zero sets of even-power factors); if a condition
+    can never hold the list is just one nonpositive constant
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.conditions import simplify_conditions
+        sage: a, b, m = var('a b m')
+        sage: simplify_conditions([m^2*(a - b), 2*m*a, a - b, a*b], positive=[m])
+        [a - b, a, b]
+        sage: simplify_conditions([a, -3*m, a*b], positive=[m])
+        [-1]
+        sage: simplify_conditions([a, b, 4*a*b], positive=[m])
+        [a, b]
+
+    A condition implied by another one (their difference is positive on
+    the positive variables) is removed::
+
+        sage: simplify_conditions([a^2 - 2*m*b, a^2 - 4*m*b, b], positive=[m, b])
+        [a^2 - 4*b*m]
+    """
+    native = lambda f: isinstance(f, Unexpanded) or (
+        isinstance(f, Element) and is_polynomial_ring(f.parent()))
+    symbols = set()
+    for f in conditions:
+        if not native(f):
+            symbols |= set(SR(f).variables())
+    ring = parameter_ring(symbols)
+    polys = [f if native(f) else to_ring(SR(f), ring, "condition") for f in conditions]
+    return conditions_as_expressions(reduce_conditions(polys, positive))
+
+
+def reduce_conditions(polys, positive):
+    r"""
+    The conditions ``f > 0`` for ``f`` in ``polys`` (polynomials over `\QQ`,
+    or :class:`Unexpanded`), simplified as :func:`simplify_conditions`
+    does, without leaving the polynomial rings.
+
+    INPUT:
+
+    - ``polys`` -- a list of polynomials (or :class:`Unexpanded`)
+    - ``positive`` -- the variables (or their names) known to be positive
+
+    OUTPUT: a list of entries, each a tuple of factors (their product is
+    required ``> 0``) or an :class:`Unexpanded`; a single entry with one
+    nonpositive constant when the conditions cannot hold
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.conditions import reduce_conditions
+        sage: R.<a, b, m> = QQ[]
+        sage: reduce_conditions([m^2*(a - b), 2*m*a, a*b], ['m'])
+        [(a - b,), (a,), (b,)]
+        sage: reduce_conditions([a, -m], ['m'])
+        [(-1,)]
+    """
+    positive = _positive_names(positive)
+    result = []
+    known = []          # single factors already required to be positive
+    for f in polys:
+        g, fs = _simplify_one(f, positive)
+        if g is None:
+            continue
+        if fs is None:
+            result.append(Unexpanded(g) if isinstance(f, Unexpanded) else (g,))
+            continue
+        rest = [h for h in fs if h not in known]
+        if not rest:
+            continue
+        if len(rest) == 1:
+            known.append(rest[0])
+        result.append(tuple(sorted(rest, key=_order_key)))
+    impossible = [e for e in result if not isinstance(e, Unexpanded)
+                  and len(e) == 1 and is_constant(e[0])]
+    return impossible[:1] if impossible else _drop_implied(result, positive)
+
+
+def _drop_implied(entries, positive):
+    r"""
+    Remove single-factor conditions `f > 0` implied by another one
+    `g > 0`: when `f - c g` (for some `c > 0`) has only positive
+    coefficients and only variables known to be positive.
+    """
+    single = [e[0] for e in entries if not isinstance(e, Unexpanded) and len(e) == 1]
+
+    def implied_by(f, g):
+        if f.parent() is not g.parent() or len(g.dict()) > 50:
+            return False
+        # the multiple c of g must cancel every term of f outside the
+        # positive variables: try the ratios of common coefficients
+        for monomial, coefficient in g.dict().items():
+            c = f.dict().get(monomial, 0) / coefficient
+            if c <= 0:
+                continue
+            d = f - c * g
+            if (not d.is_zero() and all(str(v) in positive for v in d.variables())
+                    and all(a > 0 for a in d.coefficients())):
+                return True
+        return False
+
+    dropped = {i for i, f in enumerate(single)
+               if any(j != i and implied_by(f, g) for j, g in enumerate(single))}
+    drop = [single[i] for i in dropped]
+    return [e for e in entries if isinstance(e, Unexpanded) or len(e) != 1
+            or e[0] not in drop]
+
+
+def _order_key(f):
+    n = len(f.dict())
+    return (n, str(f) if n < 1000 else '')
+
+
+def conditions_as_expressions(entries):
+    r"""
+    The entries of :func:`reduce_conditions` as symbolic expressions (each
+    ``> 0``): the product of an entry's factors, an unexpanded one as it is.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.conditions import (reduce_conditions,
+        ....:                                             conditions_as_expressions)
+        sage: R.<a, b> = QQ[]
+        sage: conditions_as_expressions(reduce_conditions([a^3*b], []))
+        [a*b]
+    """
+    return [e.expr if isinstance(e, Unexpanded) else prod(to_sr(h) for h in e)
+            for e in entries]
+
+
+# ---------------------------------------------------------------------------
+# conditions on symbolic expressions, as relationals
+# ---------------------------------------------------------------------------
 
 def positive_conditions(expr, positive=()):
     r"""
@@ -76,7 +284,7 @@ def positive_conditions(expr, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import positive_conditions
+        sage: from sage_dynsym.algebra.conditions import positive_conditions
         sage: a, b = var('a b')
         sage: positive_conditions((a - b)/b^3)
         [(a - b)*b > 0]
@@ -95,7 +303,7 @@ def positive_conditions_all(expressions, positive=(), nonzero=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import positive_conditions_all
+        sage: from sage_dynsym.algebra.conditions import positive_conditions_all
         sage: a, b, m = var('a b m')
         sage: positive_conditions_all([a, a*b, m*b], positive=[m])
         [a > 0, b > 0]
@@ -104,7 +312,7 @@ def positive_conditions_all(expressions, positive=(), nonzero=()):
     """
     if not expressions and not nonzero:
         return []
-    T, fractions = _translate(list(expressions) + list(nonzero))
+    T, fractions = translate_expressions(list(expressions) + list(nonzero))
     required = fractions[len(expressions):]
     fractions = fractions[:len(expressions)]
     polys = [f.numerator() * f.denominator() for f in fractions]
@@ -118,7 +326,7 @@ def positive_conditions_all(expressions, positive=(), nonzero=()):
         num = flat(f.numerator())
         if num == 0:
             return None
-        if not _is_constant(num):
+        if not is_constant(num):
             for g, _ in num.factor():
                 g = g if g.lc() > 0 else -g
                 if not positive_polynomial(g, names) and all(g != h for h in nonzero):
@@ -129,9 +337,9 @@ def positive_conditions_all(expressions, positive=(), nonzero=()):
         for g in even:
             if all(g != h for h in nonzero):
                 nonzero.append(g)
-    entries = _reduce(odd, names) if odd else []
-    if len(entries) == 1 and len(entries[0]) == 1 and _is_constant(entries[0][0]):
-        if _constant(entries[0][0]) <= 0:
+    entries = reduce_conditions(odd, names) if odd else []
+    if len(entries) == 1 and len(entries[0]) == 1 and is_constant(entries[0][0]):
+        if constant_value(entries[0][0]) <= 0:
             return None
         entries = []
     entries = _propagate_signs(entries, nonzero, names)
@@ -144,7 +352,7 @@ def positive_conditions_all(expressions, positive=(), nonzero=()):
 def _propagate_signs(entries, nonzero, names):
     r"""
     Simplify a conjunction of conditions ``product > 0`` (``entries`` from
-    :func:`~sage_dynsym.analysis.hurwitz._reduce`) with the signs that
+    :func:`reduce_conditions`) with the signs that
     other conditions fix: in ``a < 0, a*b > 0`` the second becomes
     ``b < 0`` (likewise for a product of several factors whose sign is
     known); a factor that is a sum of even powers with positive
@@ -220,8 +428,7 @@ def _split_even_factors(p, names):
     r"""``p`` without its factors of even multiplicity (that are not
     positive by the declarations), and those factors: `f^2 g > 0` iff
     `g > 0` and `f \ne 0`."""
-    from ._polynomials import positive_polynomial
-    if _is_constant(p) or len(p.dict()) > FACTOR_LIMIT:
+    if is_constant(p) or len(p.dict()) > FACTOR_LIMIT:
         return p, []
     F = p.factor()
     rest, even = p.parent()(F.unit()), []
@@ -242,22 +449,21 @@ def nonzero_conditions(expr, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import nonzero_conditions
+        sage: from sage_dynsym.algebra.conditions import nonzero_conditions
         sage: a, b = var('a b')
         sage: nonzero_conditions(a^2*b/(a + 1))
         [b != 0, a != 0]
         sage: nonzero_conditions(SR(0)) is None, nonzero_conditions(3)
         (True, [])
     """
-    T, (f,) = _translate([expr])
+    T, (f,) = translate_expressions([expr])
     num = f.numerator()
     if num == 0:
         return None
     flat = T.flat_ring()
-    if flat is None or _is_constant(flat(num)):
+    if flat is None or is_constant(flat(num)):
         return []
     names = T.positive_names(positive)
-    from ._polynomials import positive_polynomial
     result = []
     for factor, _ in flat(num).factor():
         if positive_polynomial(factor, names) or positive_polynomial(-factor, names):
@@ -274,7 +480,7 @@ def simplify_conjunction(conditions, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import simplify_conjunction
+        sage: from sage_dynsym.algebra.conditions import simplify_conjunction
         sage: a, b = var('a b')
         sage: simplify_conjunction([a < 0, a*b > 0, b != 1])
         [a < 0, b < 0, b - 1 != 0]
@@ -319,7 +525,7 @@ def conjunction(*lists):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import conjunction
+        sage: from sage_dynsym.algebra.conditions import conjunction
         sage: a = var('a')
         sage: conjunction([a > 0], [a > 0, a != 1]), conjunction([a > 0], None)
         ([a > 0, a != 1], None)
@@ -343,7 +549,7 @@ def holds(condition, values):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import holds
+        sage: from sage_dynsym.algebra.conditions import holds
         sage: a, b = var('a b')
         sage: holds(a - b > 0, {a: 2, b: 1}), holds(a != 1, {a: 1})
         (True, False)
@@ -359,7 +565,7 @@ def region_holds(alternatives, values):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import region_holds
+        sage: from sage_dynsym.algebra.conditions import region_holds
         sage: a = var('a')
         sage: region_holds([[a > 1], [a < -1]], {a: -2}), region_holds([], {a: 0})
         (True, False)
@@ -374,7 +580,7 @@ def as_relational(expr):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.conditions import as_relational
+        sage: from sage_dynsym.algebra.conditions import as_relational
         sage: a = var('a')
         sage: as_relational(a - 1), as_relational(a != 0)
         (a - 1 > 0, a != 0)

@@ -44,7 +44,7 @@ diameter: besides the bottom and the top, the equilibria
 `\cos\theta = g/(R w^2)` exist only when `R w^2 > g` (Goldstein, *Classical
 Mechanics*, 3rd ed., §2.6, exercise; Arnold, *Mathematical Methods*, §25)::
 
-    sage: from sage_dynsym.analysis.solving import solve_exactly
+    sage: from sage_dynsym.algebra.solving import solve_exactly
     sage: theta, R, w, g = var('theta R w g')
     sage: sols = solve_exactly([R*w^2*sin(theta)*cos(theta) - g*sin(theta)], [theta],
     ....:                      positive=[R, w, g])
@@ -75,7 +75,6 @@ TESTS::
 """
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
-from sage.misc.misc_c import prod
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.term_order import TermOrder
@@ -89,7 +88,7 @@ from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
 from .decomposition import minimal_primes, shape, ShapePrime, triangular_sets
-from .translation import Translation, NotAlgebraic
+from .translation import Translation, NotAlgebraic, translate_expressions
 
 
 #: Zero-dimensional components with parameters of a larger degree are not
@@ -121,7 +120,7 @@ def normalize(expr, angles=(), factor=False):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import normalize
+        sage: from sage_dynsym.algebra.solving import normalize
         sage: a, b, q, r = var('a b q r')
         sage: normalize((a^2 - b^2)/(a + b) + sqrt(a)^3/sqrt(a))
         2*a - b
@@ -139,10 +138,8 @@ def normalize(expr, angles=(), factor=False):
         f = T.fraction(expr)
         if not factor or T.flat_ring() is None:
             return T.symbolic(f)
-        from .conditions import _factored_symbolic
         flat = T.flat_ring()
-        return _factored_symbolic(T, flat(f.numerator())) / \
-            _factored_symbolic(T, flat(f.denominator()))
+        return T.factored(flat(f.numerator())) / T.factored(flat(f.denominator()))
     except AnalysisError:
         return expr
 
@@ -169,10 +166,8 @@ def _shortest_trigonometric(expr, angles, factor):
     forms = []
     for c in candidates:
         if factor and T.flat_ring() is not None:
-            from .conditions import _factored_symbolic
             flat = T.flat_ring()
-            forms.append(_factored_symbolic(T, flat(c.numerator())) /
-                         _factored_symbolic(T, flat(c.denominator())))
+            forms.append(T.factored(flat(c.numerator())) / T.factored(flat(c.denominator())))
         else:
             forms.append(T.symbolic(c))
     return min(forms, key=lambda e: len(str(e)))
@@ -186,7 +181,7 @@ class SolutionList(SageObject):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import solve_exactly, SolutionList
+        sage: from sage_dynsym.algebra.solving import solve_exactly, SolutionList
         sage: x = var('x')
         sage: S = solve_exactly([x^2 - 1], [x]); isinstance(S, SolutionList), len(S)
         (True, 2)
@@ -209,7 +204,7 @@ class SolutionSet(SolutionList):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import solve_exactly
+        sage: from sage_dynsym.algebra.solving import solve_exactly
         sage: x, y = var('x y')
         sage: S = solve_exactly([x*y], [x, y]); S
         2 solution components of 1 equation in x, y
@@ -234,7 +229,7 @@ class SolutionSet(SolutionList):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: solve_exactly([x^2 - 1], [x]).is_complete()
             True
@@ -246,7 +241,7 @@ class SolutionSet(SolutionList):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: solve_exactly([x^2 + 1], [x]).is_empty()
             True
@@ -254,11 +249,11 @@ class SolutionSet(SolutionList):
         return not self._solutions
 
     def translation(self):
-        r"""The :class:`~sage_dynsym.analysis.translation.Translation` used.
+        r"""The :class:`~sage_dynsym.algebra.translation.Translation` used.
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, a = var('x a')
             sage: solve_exactly([x - a], [x]).translation().parameters()
             [a]
@@ -273,7 +268,7 @@ class SolutionSet_transcendental(SolutionSet):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import solve_transcendental
+        sage: from sage_dynsym.algebra.solving import solve_transcendental
         sage: x = var('x')
         sage: S = solve_transcendental([exp(x) - 2], [x]); S
         1 solution of 1 transcendental equation in x, found by Maxima's solve (the list may be incomplete)
@@ -297,7 +292,7 @@ class SolutionSet_transcendental(SolutionSet):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_transcendental
+            sage: from sage_dynsym.algebra.solving import solve_transcendental
             sage: x = var('x')
             sage: solve_transcendental([exp(x) - 2], [x]).is_complete()
             False
@@ -312,7 +307,7 @@ class AlgebraicSolution(SageObject):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import solve_exactly
+        sage: from sage_dynsym.algebra.solving import solve_exactly
         sage: x, a = var('x a')
         sage: s = solve_exactly([x^2 - a], [x])[0]; s
         Solution {x: sqrt(a)} (dimension 0, if a > 0)
@@ -346,7 +341,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, y = var('x y')
             sage: solve_exactly([y - x^2], [x, y])[0].values()
             {x: x, y: x^2}
@@ -359,7 +354,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, y = var('x y')
             sage: solve_exactly([y - x^2], [x, y])[0].free_unknowns()
             [x]
@@ -372,7 +367,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, y, l = var('x y l')
             sage: S = solve_exactly([x*l, y], [x, y, l], counted=[x, y])
             sage: [(s.values(), s.dimension()) for s in S]
@@ -387,7 +382,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: s = solve_exactly([x^5 - x - 1], [x])[0]
             sage: s.is_explicit(), s.equations()
@@ -402,7 +397,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: solve_exactly([x - 1], [x])[0].is_explicit()
             True
@@ -417,7 +412,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, a, b = var('x a b')
             sage: solve_exactly([a*x - b], [x])[0].conditions()
             [a != 0]
@@ -429,6 +424,22 @@ class AlgebraicSolution(SageObject):
                 entry="conditions")
         return list(self._conditions)
 
+    def known_conditions(self):
+        r"""
+        The conditions found for this solution to exist: those of
+        :meth:`conditions`, without its refusal when whether an implicit
+        solution is real could not be decided (then only the conditions
+        found, e.g. nonzero denominators, for listing the solution).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.solving import solve_exactly
+            sage: x, a, b = var('x a b')
+            sage: solve_exactly([a*x - b], [x])[0].known_conditions()
+            [a != 0]
+        """
+        return list(self._conditions)
+
     def real_points(self):
         r"""
         For an implicit solution without parameters: its real points, exact
@@ -436,7 +447,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: solve_exactly([x^5 - x - 1], [x])[0].real_points()
             [{x: 1.167303978261419?}]
@@ -448,7 +459,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: solve_exactly([x^2 - 2], [x])[0].ideal()
             Ideal (x0^2 - 2) of Multivariate Polynomial Ring in x0 over Rational Field
@@ -460,7 +471,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x = var('x')
             sage: solve_exactly([x^2 - 2], [x])[0].translation().unknowns()
             [x]
@@ -475,7 +486,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: q, a = var('q a')
             sage: s = solve_exactly([cos(q) - a], [q])[0]
             sage: s.substitutions()
@@ -499,7 +510,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: q, a = var('q a')
             sage: s = solve_exactly([cos(q) - a], [q])[0]
             sage: s.evaluate(sin(2*q) + cos(q)^2)
@@ -541,7 +552,7 @@ class AlgebraicSolution(SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.solving import solve_exactly
+            sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, y = var('x y')
             sage: s = solve_exactly([x^2 + y^2 - 1], [x, y])[0]
             sage: s.contains((x^2 + y^2 - 1)*x), s.contains(x)
@@ -578,21 +589,21 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
       symbols are registered as parameters)
     - ``transcendental`` -- (default: ``False``) if the equations are not
       algebraic, try the documented fallback :func:`solve_transcendental`
-      instead of raising :class:`~sage_dynsym.analysis.translation.NotAlgebraic`
+      instead of raising :class:`~sage_dynsym.algebra.translation.NotAlgebraic`
 
     OUTPUT: a :class:`SolutionSet`
 
     Progress is reported through Sage's ``verbose`` (level 1); the
     computation can be interrupted.
 
-    Raises :class:`~sage_dynsym.analysis.translation.NotAlgebraic` (an
+    Raises :class:`~sage_dynsym.algebra.translation.NotAlgebraic` (an
     :class:`~sage_dynsym.errors.AnalysisError`) if the equations are not
     algebraic in the unknowns.
 
     EXAMPLES: see the module documentation. Two conjugate branches of one
     component are separate solutions::
 
-        sage: from sage_dynsym.analysis.solving import solve_exactly
+        sage: from sage_dynsym.algebra.solving import solve_exactly
         sage: x, y, c = var('x y c')
         sage: for s in solve_exactly([x^2 + y^2 - c, x - y], [x, y], positive=[c]):
         ....:     print(s)
@@ -799,7 +810,7 @@ def _defining(T, prime):
     r"""Equations of a component: a lexicographic Gröbner basis of a small
     zero-dimensional one (triangular: the first unknown alone first),
     without the relations `\cos^2 + \sin^2 = 1`; its generators; or for a
-    :class:`~sage_dynsym.analysis.decomposition.ShapePrime` the radical's
+    :class:`~sage_dynsym.algebra.decomposition.ShapePrime` the radical's
     generators and `G(u)` with `u` left unexpanded."""
     if not isinstance(prime, ShapePrime):
         gens = list(prime.gens())
@@ -927,9 +938,8 @@ def _square_root(D, positive, keep_sign=True):
     known to be positive (or even powers of squares) when ``keep_sign``,
     so that the sign of the result is that of the root; all of them
     otherwise (the pair `\pm\sqrt D` is the same either way)."""
-    from .conditions import _translate
-    from ._polynomials import positive_polynomial
-    T, (f,) = _translate([D])
+    from .polynomials import positive_polynomial
+    T, (f,) = translate_expressions([D])
     names = T.positive_names(positive)
     flat = T.flat_ring()
     if flat is None:
@@ -1198,7 +1208,7 @@ class TranscendentalSolution(AlgebraicSolution):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import solve_transcendental
+        sage: from sage_dynsym.algebra.solving import solve_transcendental
         sage: x = var('x')
         sage: s = solve_transcendental([exp(x) - 2], [x])[0]; s
         Solution {x: log(2)} (dimension 0)
@@ -1242,7 +1252,7 @@ def solve_transcendental(equations, unknowns, reason=None, positive=()):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.solving import solve_transcendental
+        sage: from sage_dynsym.algebra.solving import solve_transcendental
         sage: x, a = var('x a')
         sage: [s.values() for s in solve_transcendental([exp(x) - a], [x])]
         [{x: log(a)}]
@@ -1260,12 +1270,12 @@ def solve_transcendental(equations, unknowns, reason=None, positive=()):
         f"the equations are not algebraic in {', '.join(map(str, unknowns))}{why} and "
         f"Maxima's solve could not solve them: {equations}", entry="solve_exactly")
     _log("transcendental equations: trying Maxima's solve")
-    from ._polynomials import maxima_without_questions
+    from .polynomials import maxima_without_questions
     try:
         with maxima_without_questions("solve_exactly", positive):
             found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
     except AnalysisError:
-        raise
+        raise       # Maxima asked for a sign (an AnalysisError is also a ValueError)
     except (TypeError, ValueError, NotImplementedError, RuntimeError):
         raise failure from None
     solutions = []

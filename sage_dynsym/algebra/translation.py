@@ -30,7 +30,7 @@ them.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.translation import Translation
+    sage: from sage_dynsym.algebra.translation import Translation
     sage: theta, g, R, w = var('theta g R w')
     sage: T = Translation([R*w^2*sin(theta)*cos(theta) - g*sin(theta)], [theta])
     sage: T.ring()
@@ -84,7 +84,7 @@ from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ._polynomials import polynomial_to_sr
+from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
 
 #: The largest integer multiple `k q` of an unknown angle that is expanded
 #: by the multiple-angle formulas (higher multiples are refused as not
@@ -101,7 +101,7 @@ class NotAlgebraic(AnalysisError):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.translation import NotAlgebraic
+        sage: from sage_dynsym.algebra.translation import NotAlgebraic
         sage: print(NotAlgebraic("log(x)"))
         log(x)
     """
@@ -114,7 +114,7 @@ def exact_rational(number, what="equations"):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.translation import exact_rational
+        sage: from sage_dynsym.algebra.translation import exact_rational
         sage: exact_rational(0.1), exact_rational(SR(3/4)), exact_rational(float(2.5))
         (1/10, 3/4, 5/2)
         sage: exact_rational(float('nan'))
@@ -162,7 +162,7 @@ class Translation:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.translation import Translation
+        sage: from sage_dynsym.algebra.translation import Translation
         sage: x, y, a = var('x y a')
         sage: T = Translation([x^2 + y^2 - a, x - y], [x, y]); T
         Translation of 2 equations in x, y (parameters a)
@@ -353,7 +353,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: Translation([a*x], [x]).unknowns()
             [x]
@@ -366,7 +366,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: Translation([a*x], [x]).ring()
             Multivariate Polynomial Ring in x0 over Fraction Field of Multivariate Polynomial Ring in a0 over Rational Field
@@ -378,7 +378,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x = var('x')
             sage: Translation([x^2 - 2], [x]).field()
             Rational Field
@@ -391,7 +391,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: Translation([a*x], [x]).flat_ring()
             Multivariate Polynomial Ring in a0, x0 over Rational Field
@@ -404,7 +404,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, b, a = var('x b a')
             sage: Translation([b*x - cos(a)], [x]).parameters()
             [b, cos(a)]
@@ -417,7 +417,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, q = var('x q')
             sage: Translation([x - cos(q)], [x, q]).symbolic_generators()
             [sin(q), cos(q), x]
@@ -434,7 +434,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, q = var('x q')
             sage: T = Translation([x - cos(q)], [x, q])
             sage: [T.is_trigonometric(k) for k in range(3)]
@@ -447,7 +447,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, q = var('x q')
             sage: T = Translation([x - cos(q)], [x, q])
             sage: T.generators_of(q), T.generators_of(x)
@@ -462,7 +462,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, q = var('x q')
             sage: T = Translation([x - cos(q)], [x, q]); T.is_angle(q), T.is_angle(x)
             (True, False)
@@ -490,7 +490,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: q = var('q')
             sage: Translation([sin(2*q)], [q]).circle_relations()
             [x0^2 + x1^2 - 1]
@@ -509,7 +509,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a, b = var('x a b')
             sage: T = Translation([a*x - pi*sqrt(b)], [x])
             sage: T.parameters(), sorted(T.positive_names([a]))
@@ -539,7 +539,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: T = Translation([a*x - 1], [x])
             sage: T.fraction(x/a + 1)
@@ -558,7 +558,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: T = Translation([a*x - 1/x], [x])
             sage: T.numerator(a*x - 1/x)
@@ -581,7 +581,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: T = Translation([a*x - 1], [x])
             sage: T.to_ring(T.flat_ring()('a0^2*x0 + a0'))
@@ -607,7 +607,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: x, a = var('x a')
             sage: T = Translation([a*x - 1], [x])
             sage: T.to_flat(T.ring()('x0/a0 + 1'))
@@ -647,7 +647,7 @@ class Translation:
 
         EXAMPLES::
 
-            sage: from sage_dynsym.analysis.translation import Translation
+            sage: from sage_dynsym.algebra.translation import Translation
             sage: q, k = var('q k')
             sage: T = Translation([k*sin(2*q)], [q])
             sage: T.symbolic(T.equations()[0])
@@ -669,6 +669,47 @@ class Translation:
         num, den = self.to_flat(element)
         return polynomial_to_sr(num, images + gens) / polynomial_to_sr(den, images + gens)
 
+    def factored(self, p):
+        r"""
+        An element ``p`` of :meth:`flat_ring` as a symbolic expression,
+        factored (unless it has more than
+        :data:`~sage_dynsym.algebra.polynomials.FACTOR_LIMIT` terms).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import translate_expressions
+            sage: a, b = var('a b')
+            sage: T, (f,) = translate_expressions([a^2 - b^2])
+            sage: T.factored(T.flat_ring()(f)), T.factored(T.flat_ring()(3))
+            ((a + b)*(a - b), 3)
+        """
+        if is_constant(p) or len(p.dict()) > FACTOR_LIMIT:
+            return self.symbolic(p)
+        F = p.factor()
+        return SR(F.unit()) * prod((self.symbolic(f) ** e for f, e in F), SR(1))
+
+
+def translate_expressions(expressions):
+    r"""
+    The translation of ``expressions`` that have no unknowns (every symbol
+    and atom a parameter), and the expressions as elements of the fraction
+    field of its :meth:`~Translation.flat_ring`.
+
+    OUTPUT: a pair ``(translation, fractions)``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.translation import translate_expressions
+        sage: a, b = var('a b')
+        sage: T, fractions = translate_expressions([a/b, cos(a) - 1])
+        sage: fractions
+        [a0/a1, a2 - 1]
+        sage: [T.symbolic(f) for f in fractions]
+        [a/b, cos(a) - 1]
+    """
+    T = Translation([], [], extra=expressions)
+    return T, [T.fraction(e) for e in expressions]
+
 
 def _evaluate(poly, values):
     r"""``poly`` (in the generators of its ring) at ``values``."""
@@ -684,7 +725,7 @@ def expand_angles(expr, angles):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.translation import expand_angles
+        sage: from sage_dynsym.algebra.translation import expand_angles
         sage: q, r, a = var('q r a')
         sage: expand_angles(sin(2*q) + tan(q - r) + cos(a), [q, r])
         2*cos(q)*sin(q) + (cos(r)*sin(q) - cos(q)*sin(r))/(cos(q)*cos(r) + sin(q)*sin(r)) + cos(a)

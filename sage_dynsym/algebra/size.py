@@ -8,7 +8,7 @@ create from the trees of their inputs, without expanding anything.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.analysis.size import polynomial_terms
+    sage: from sage_dynsym.algebra.size import polynomial_terms
     sage: x, y = var('x y')
     sage: polynomial_terms((x + y)^200)
     201
@@ -36,7 +36,7 @@ def polynomial_terms(expr):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.size import polynomial_terms
+        sage: from sage_dynsym.algebra.size import polynomial_terms
         sage: x, y, z = var('x y z')
         sage: polynomial_terms((x + y)*(x + z + 1)), ((x + y)*(x + z + 1)).expand().number_of_operands()
         (6, 6)
@@ -94,7 +94,7 @@ def determinant_terms(counts):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.size import determinant_terms
+        sage: from sage_dynsym.algebra.size import determinant_terms
         sage: determinant_terms([[2, 1], [1, 3]])
         7
         sage: determinant_terms([[1, 1, 0], [1, 1, 1], [0, 1, 1]])   # tridiagonal
@@ -144,7 +144,7 @@ def matrix_terms(M):
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.size import matrix_terms
+        sage: from sage_dynsym.algebra.size import matrix_terms
         sage: x, y = var('x y')
         sage: matrix_terms(matrix([[x + y, 0], [1, x*y]]))
         [[2, 0], [1, 1]]
