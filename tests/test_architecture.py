@@ -293,8 +293,6 @@ MAX_FUNCTION_CODE_LINES = 100
 #: is removed when its unit is within the limits (a test says when).
 SIZE_ALLOWED = {
     # each being split by the work that owns its module (not by the exact algebra's)
-    "sage_dynsym.mechanics.system.MechanicalSystem",
-    "sage_dynsym.dynamics.lagrangian.Lagrangian",
     "sage_dynsym.numerics.expressions.write_code",
     "sage_dynsym.numerics.recursive._Assembly",
 }
