@@ -308,7 +308,7 @@ class _Linearization:
     # -- the steady motion ----------------------------------------------------
 
     def steady_velocities(self):
-        q, dq, n, m = self.q, self.dq, self.n, self.m
+        q, dq, n = self.q, self.dq, self.n
         given = self.point.velocities()
         known = {dq[i]: SR(0) for i in range(n) if q[i] in self.at}
         known.update(given)

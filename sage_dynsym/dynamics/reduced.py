@@ -52,7 +52,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
-from ..symbols import t, time_derivative
+from ..symbols import time_derivative
 from ..algebra.trig_linear import TrigFractionField
 from .natural_form import is_singular
 

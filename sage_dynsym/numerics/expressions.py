@@ -250,7 +250,6 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
     """
     if language not in ('python', 'c'):
         raise AnalysisError(f"language must be 'python' or 'c', got {language!r}", entry=entry)
-    python = language == 'python'
     names = {StructuralKey(SR(k)): v for k, v in names.items()}
     exprs = [SR(e) for e in expressions]
 
@@ -266,78 +265,86 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
         if uses[key] == 1:
             stack.extend(e.operands())
 
-    temps, done = [], {}
+    writer = _CodeWriter(names, uses, language, entry, prefix, cse)
+    results = [writer.render(e)[0] for e in exprs]
+    return writer.temps, results
 
-    def store(key, text):
-        name = f'{prefix}{len(temps)}'
-        temps.append((name, text))
-        done[key] = (name, 3)
+
+class _CodeWriter:
+    """The state of :func:`write_code`: the symbols' names, how often each
+    compound subexpression is used, and the temporaries written so far."""
+
+    def __init__(self, names, uses, language, entry, prefix, cse):
+        self.names, self.uses, self.entry = names, uses, entry
+        self.python, self.prefix, self.cse = language == 'python', prefix, cse
+        self.temps, self.done = [], {}
+
+    def store(self, key, text):
+        name = f'{self.prefix}{len(self.temps)}'
+        self.temps.append((name, text))
+        self.done[key] = (name, 3)
         return name, 3
 
-    def atomic(e):
+    def atomic(self, e):
         """``e`` as a name or literal (stored in a temporary if compound)."""
-        text, prec = render(e)
+        text, prec = self.render(e)
         if prec == 3 and re.match(r'[A-Za-z_0-9.]+\Z', text):
             return text
         key = StructuralKey(e)
-        return done[key][0] if key in done else store(key, text)[0]
+        return self.done[key][0] if key in self.done else self.store(key, text)[0]
 
-    def wrap(item, level):
-        text, prec = item
-        return text if prec >= level else f'({text})'
-
-    def render(e):
+    def render(self, e):
         """``(text, precedence)``: 3 atom, 2 product, 1 sum or negative."""
         op = e.operator()
         if op is None:
             key = StructuralKey(e)
-            if key in names:
-                return names[key], 3
+            if key in self.names:
+                return self.names[key], 3
             if e.is_symbol():
-                raise AnalysisError(f"no value for the symbol {e}", entry=entry)
-            value = real_constant(e, entry)
+                raise AnalysisError(f"no value for the symbol {e}", entry=self.entry)
+            value = real_constant(e, self.entry)
             return _literal(value), (3 if value >= 0 else 1)
         key = StructuralKey(e)
-        if key in done:
-            return done[key]
+        if key in self.done:
+            return self.done[key]
         if not e.variables():
-            value = real_constant(e, entry)
+            value = real_constant(e, self.entry)
             return _literal(value), (3 if value >= 0 else 1)
         if op is add_vararg:
-            item = _sum(e.operands())
+            item = self._sum(e.operands())
         elif op is mul_vararg:
-            item = _product(e.operands())
+            item = self._product(e.operands())
         elif op is operator.pow:
-            item = _power(*e.operands())
+            item = self._power(*e.operands())
         elif function_name(op) in FUNCTIONS:
-            function = FUNCTIONS[function_name(op)][0 if python else 1]
-            item = f"{function}({', '.join(render(o)[0] for o in e.operands())})", 3
+            function = FUNCTIONS[function_name(op)][0 if self.python else 1]
+            item = f"{function}({', '.join(self.render(o)[0] for o in e.operands())})", 3
         else:
-            raise AnalysisError(f"{e} has no numerical value", entry=entry)
-        if cse and uses.get(key, 0) > 1:
-            return store(key, item[0])
+            raise AnalysisError(f"{e} has no numerical value", entry=self.entry)
+        if self.cse and self.uses.get(key, 0) > 1:
+            return self.store(key, item[0])
         return item
 
-    def _signed(e):
+    def _signed(self, e):
         """``(negative, text, precedence)`` of a term of a sum."""
-        if e.operator() is mul_vararg and StructuralKey(e) not in done and not (
-                cse and uses.get(StructuralKey(e), 0) > 1):
+        if e.operator() is mul_vararg and StructuralKey(e) not in self.done and not (
+                self.cse and self.uses.get(StructuralKey(e), 0) > 1):
             factors = e.operands()
             coefficient = [f for f in factors if f.operator() is None and f.is_numeric()]
-            if coefficient and real_constant(coefficient[0], entry) < 0:
+            if coefficient and real_constant(coefficient[0], self.entry) < 0:
                 rest = [f for f in factors if f is not coefficient[0]]
-                c = -real_constant(coefficient[0], entry)
-                text, prec = _product(rest, c)
+                c = -real_constant(coefficient[0], self.entry)
+                text, prec = self._product(rest, c)
                 return True, text, prec
-        text, prec = render(e)
+        text, prec = self.render(e)
         if prec == 1 and text.startswith('-') and _is_number(text[1:]):
             return True, text[1:], 3
         return False, text, prec
 
-    def _sum(terms):
+    def _sum(self, terms):
         parts = []
         for e in terms:
-            negative, text, prec = _signed(e)
+            negative, text, prec = self._signed(e)
             text = text if prec >= 2 else f'({text})'
             if not parts:
                 parts.append(f'-{text}' if negative else text)
@@ -345,59 +352,62 @@ def write_code(expressions, names, language='python', entry='code', prefix='_e',
                 parts.append(f' - {text}' if negative else f' + {text}')
         return ''.join(parts), 1
 
-    def _product(factors, coefficient=None):
+    def _product(self, factors, coefficient=None):
         numerator, denominator = [], []
         if coefficient is None:
             rest = []
             for f in factors:
                 if f.operator() is None and f.is_numeric():
-                    coefficient = real_constant(f, entry) * (1 if coefficient is None else coefficient)
+                    value = real_constant(f, self.entry)
+                    coefficient = value if coefficient is None else value * coefficient
                 else:
                     rest.append(f)
             factors = rest
         for f in factors:
-            if (f.operator() is operator.pow and StructuralKey(f) not in done and
-                    not (cse and uses.get(StructuralKey(f), 0) > 1)):
+            if (f.operator() is operator.pow and StructuralKey(f) not in self.done and
+                    not (self.cse and self.uses.get(StructuralKey(f), 0) > 1)):
                 base, exponent = f.operands()
                 if exponent.is_numeric() and exponent < 0:
-                    denominator.append(_power(base, -exponent))
+                    denominator.append(self._power(base, -exponent))
                     continue
-            numerator.append(render(f))
+            numerator.append(self.render(f))
         negative = coefficient is not None and coefficient < 0
         if coefficient is not None and abs(coefficient) != 1:
             numerator.insert(0, (_literal(abs(coefficient)), 3))
-        text = '*'.join(wrap(item, 2) for item in numerator) or '1.0'
+        text = '*'.join(_wrap(item, 2) for item in numerator) or '1.0'
         if denominator:
-            below = '*'.join(wrap(item, 2) for item in denominator)
-            text += '/' + (wrap(denominator[0], 3) if len(denominator) == 1 else f'({below})')
+            below = '*'.join(_wrap(item, 2) for item in denominator)
+            text += '/' + (_wrap(denominator[0], 3) if len(denominator) == 1 else f'({below})')
         if negative:
             return f'-{text}', 1
         return text, (2 if len(numerator) + len(denominator) > 1 or denominator else
                       numerator[0][1])
 
-    def _power(base, exponent):
+    def _power(self, base, exponent):
         if exponent.is_integer():
             n = int(exponent)
             if n < 0:
-                text, prec = _power(base, -exponent)
+                text, prec = self._power(base, -exponent)
                 return '1.0/' + (text if prec == 3 else f'({text})'), 2
             if n == 1:
-                return render(base)
-            if python:
-                return f'{wrap(render(base), 3)}**{n}', 3
+                return self.render(base)
+            if self.python:
+                return f'{_wrap(self.render(base), 3)}**{n}', 3
             if n <= 4:
-                return '*'.join([atomic(base)] * n), 2
-            return f'pow({render(base)[0]}, {n}.0)', 3
+                return '*'.join([self.atomic(base)] * n), 2
+            return f'pow({self.render(base)[0]}, {n}.0)', 3
         if exponent.is_numeric() and exponent == SR(1) / 2:
-            return f"{'math.sqrt' if python else 'sqrt'}({render(base)[0]})", 3
+            return f"{'math.sqrt' if self.python else 'sqrt'}({self.render(base)[0]})", 3
         if exponent.is_numeric() and exponent == -SR(1) / 2:
-            return f"1.0/{'math.sqrt' if python else 'sqrt'}({render(base)[0]})", 2
-        if python:
-            return f'{wrap(render(base), 3)}**{wrap(render(exponent), 3)}', 3
-        return f'pow({render(base)[0]}, {render(exponent)[0]})', 3
+            return f"1.0/{'math.sqrt' if self.python else 'sqrt'}({self.render(base)[0]})", 2
+        if self.python:
+            return f'{_wrap(self.render(base), 3)}**{_wrap(self.render(exponent), 3)}', 3
+        return f'pow({self.render(base)[0]}, {self.render(exponent)[0]})', 3
 
-    results = [render(e)[0] for e in exprs]
-    return temps, results
+
+def _wrap(item, level):
+    text, prec = item
+    return text if prec >= level else f'({text})'
 
 
 def _is_number(text):

@@ -130,6 +130,16 @@ class _Step:
         return G.dot(self.columns[i], f)
 
 
+def _tree_order(steps, n):
+    """The coordinates ``0, ..., n - 1`` in the order of the tree (first
+    appearance in a joint of ``steps``, parents first), then the others."""
+    seen = {}
+    for step in steps:
+        for i in sorted(step.columns):
+            seen.setdefault(i, None)
+    return list(seen) + [i for i in range(n) if i not in seen]
+
+
 class _Assembly:
     r"""
     The graph of the accelerations of a tree: see the module documentation.
@@ -647,15 +657,6 @@ class _Assembly:
             columns.append((w, v))
         return columns
 
-    def order(self):
-        """The coordinates in the order of the tree (first appearance in a
-        joint, parents first), then the others."""
-        seen = {}
-        for step in self.steps:
-            for i in sorted(step.columns):
-                seen.setdefault(i, None)
-        return list(seen) + [i for i in range(self.n) if i not in seen]
-
     def accelerations(self, solver='auto'):
         r"""
         The nodes of `\ddot q` (in the order of the coordinates) and of the
@@ -678,7 +679,7 @@ class _Assembly:
                                "constraints whose coordinates each move one body")
         M = self.mass_matrix()
         F = self.forcing()
-        order = self.order()
+        order = _tree_order(self.steps, self.n)
         position = {i: a for a, i in enumerate(order)}
         n = self.n
         # H: the lower triangle of M in tree order, overwritten by L and D

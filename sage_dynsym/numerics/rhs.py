@@ -26,7 +26,6 @@ import math
 import numpy as np
 
 from sage.structure.sage_object import SageObject
-from sage.symbolic.ring import SR
 
 from ..errors import ModelError, brief
 from ..arguments import finite_real
