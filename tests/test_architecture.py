@@ -291,11 +291,7 @@ MAX_FUNCTION_CODE_LINES = 100
 
 #: Today's oversized units, each being split in a part of its own; an entry
 #: is removed when its unit is within the limits (a test says when).
-SIZE_ALLOWED = {
-    # each being split by the work that owns its module (not by the exact algebra's)
-    "sage_dynsym.mechanics.system.MechanicalSystem",
-    "sage_dynsym.dynamics.lagrangian.Lagrangian",
-}
+SIZE_ALLOWED = set()
 
 
 def oversized(name, source):

@@ -26,6 +26,14 @@ in the structured form (5): mass-matrix entries times accelerations, Christoffel
 coefficients times products of velocities, gyroscopic and non-stationary
 terms; nothing is expanded. Any other Lagrangian is differentiated directly.
 
+The class is assembled from base classes, one concern each: the equations
+(:mod:`~sage_dynsym.dynamics.lagrange_equations`), the holonomic
+constraints and their multipliers (:mod:`~sage_dynsym.dynamics.holonomic`),
+the momenta, energy and Legendre transform
+(:mod:`~sage_dynsym.dynamics.legendre`), the cyclic coordinates and the
+Routh reduction (:mod:`~sage_dynsym.dynamics.routh`), and the numerics
+(:class:`~sage_dynsym.numerics.methods.NumericalMethods`).
+
 EXAMPLES:
 
 A particle on a rotating hoop, given directly::
@@ -110,29 +118,32 @@ The Kepler problem in polar coordinates::
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
 """
-import operator
-
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.latex import latex
-from sage.modules.free_module_element import vector
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import (velocity, acceleration, momentum, time_derivative, t,
-                       constraint_multipliers, sage_numbers)
-from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
-from ..analysis.motion import SecondOrderEquations
+from ..symbols import velocity, acceleration, momentum, t, sage_numbers
 from ..numerics.methods import NumericalMethods
-from ..numerics.expressions import symbols_and_functions
-from .natural_equations import natural_equations, SymbolicCalculus
+from .holonomic import HolonomicConstraints
+from .lagrange_equations import LagrangeEquations
+from .legendre import LegendreTransform
+from .natural_form import symbol_list, is_at_most_quadratic, natural_form
+from .routh import CyclicCoordinates, check_cyclic, routh_reduction
+# names earlier versions of this module held, importable from it as before
 from .compact import equations_cse
-from .natural_form import (symbol_list, is_at_most_quadratic, natural_form, linear_collected,
-                           is_singular, has_full_row_rank, Elimination)
+from .natural_equations import natural_equations, SymbolicCalculus
+from .natural_form import linear_collected, is_singular, has_full_row_rank, Elimination
+
+__all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations',
+           'SymbolicCalculus', 'symbol_list', 'is_at_most_quadratic', 'natural_form',
+           'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
 
 
-class Lagrangian(NumericalMethods, SageObject):
+class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, CyclicCoordinates,
+                 NumericalMethods, SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
     generalized forces.
@@ -187,15 +198,15 @@ class Lagrangian(NumericalMethods, SageObject):
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
         Traceback (most recent call last):
         ...
-        ModelError: constraints: the constraints [x - y, -2*x + 2*y] are redundant: the Jacobian d(constraints)/d(x, y) has rank less than 2 at a generic point; remove the dependent ones
+        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
         Traceback (most recent call last):
         ...
-        ModelError: constraints[1]: l - 1 does not depend on the coordinates (x, y): a constraint must be a relation f(q, t) = 0 between them
+        ModelError: constraints[1]: the constraint l - 1 == 0 does not depend on the coordinates x, y
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
         Traceback (most recent call last):
         ...
-        ModelError: constraints[0]: dx - y depends on the velocity dx: only holonomic constraints f(q, t) = 0 are supported
+        ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dx
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
         [x - y]
         sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
@@ -232,13 +243,7 @@ class Lagrangian(NumericalMethods, SageObject):
                              f"coordinate, got {len(forces)}", entry="forces")
         self._forces = [SR(f) for f in forces]
         self._name = name
-        self._constraints = self._checked_constraints(constraints)
-        self._multipliers = []
-        if self._constraints:
-            taken = set().union(*(SR(e).variables() for e in [self._expr, self._dissipation]
-                                  + self._forces + self._constraints))
-            taken |= {momentum(q) for q in self._coordinates}
-            self._multipliers = constraint_multipliers(len(self._constraints), taken)
+        self._set_constraints(constraints)
 
     @property
     def _expr(self):
@@ -246,34 +251,6 @@ class Lagrangian(NumericalMethods, SageObject):
             A, A1, A0 = self._structure
             self._expression = natural_form(A, A1, A0, self._velocities)
         return self._expression
-
-    def _checked_constraints(self, constraints):
-        constraints = [SR(f) for f in constraints]
-        motion = self._velocities + self._accelerations
-        coords = ", ".join(map(str, self._coordinates))
-        for j, f in enumerate(constraints):
-            entry = f"constraints[{j}]"
-            if f.is_relational():
-                if f.operator() is not operator.eq:
-                    raise ModelError(f"expected an expression f meaning f = 0 or an equation, "
-                                     f"got the relation {f}", entry=entry)
-                f = constraints[j] = f.lhs() - f.rhs()
-            for v in motion:
-                if f.has(v):
-                    raise ModelError(f"{f} depends on the velocity {v}: only holonomic "
-                                     "constraints f(q, t) = 0 are supported", entry=entry)
-            if not any(f.has(q) for q in self._coordinates):
-                raise ModelError(f"{f} does not depend on the coordinates ({coords}): a "
-                                 "constraint must be a relation f(q, t) = 0 between them",
-                                 entry=entry)
-        if constraints:
-            J = [[f.diff(q) for q in self._coordinates] for f in constraints]
-            if len(constraints) > len(self._coordinates) or not has_full_row_rank(J):
-                raise ModelError(f"the constraints {constraints} are redundant: the Jacobian "
-                                 f"d(constraints)/d({coords}) has rank less than "
-                                 f"{len(constraints)} at a generic point; remove the "
-                                 "dependent ones", entry="constraints")
-        return constraints
 
     # ------------------------------------------------------------------
     # accessors
@@ -365,72 +342,6 @@ class Lagrangian(NumericalMethods, SageObject):
         """
         return self._name
 
-    def constraints(self):
-        r"""
-        The holonomic constraints `f_j(q, t)`, each meaning `f_j = 0` (a new
-        list, empty if none).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, l = var('x y dx dy l')
-            sage: L = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: L.constraints()
-            [-l^2 + x^2 + y^2]
-            sage: Lagrangian(dx^2, [x]).constraints()
-            []
-        """
-        return list(self._constraints)
-
-    def multipliers(self):
-        r"""
-        The multipliers `\mu_j`, one per constraint: symbols ``mu1, mu2,
-        ...`` that occur nowhere else in the model (see
-        :func:`~sage_dynsym.symbols.constraint_multipliers`).
-
-        The equations contain `-\sum_j \mu_j \partial f_j/\partial q_i`,
-        so `\mu_j \partial f_j/\partial q` is the generalized force of the
-        constraint `j`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, mu1 = var('x y dx dy mu1')
-            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).multipliers()
-            [mu1]
-            sage: Lagrangian((dx^2 + dy^2)/2 + mu1*x, [x, y], constraints=[x - y]).multipliers()
-            [mu2]
-        """
-        return list(self._multipliers)
-
-    def nonholonomic_constraints(self):
-        r"""
-        The constraints on the velocities (none here; see
-        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2, [x]).nonholonomic_constraints()
-            []
-        """
-        return []
-
-    def velocity_multipliers(self):
-        r"""
-        The multipliers of the constraints on the velocities (none here;
-        see :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2, [x]).velocity_multipliers()
-            []
-        """
-        return []
-
     # ------------------------------------------------------------------
     # value semantics
 
@@ -503,11 +414,6 @@ class Lagrangian(NumericalMethods, SageObject):
         coords = ", ".join(str(q) for q in self._coordinates)
         of = f" of {self._name}" if self._name else ""
         return f"Lagrangian{of} in coordinates ({coords}) : {self._expr}{self._subject_to()}"
-
-    def _subject_to(self):
-        if not self._constraints:
-            return ""
-        return ", subject to " + ", ".join(f"{f} == 0" for f in self._constraints)
 
     def _latex_(self):
         return "L = " + latex(self._expr) + "".join(
@@ -646,510 +552,8 @@ class Lagrangian(NumericalMethods, SageObject):
         return matrix(SR, n, n, lambda i, j:
                       self._expr.diff(self._velocities[i], self._velocities[j]))
 
-    def is_singular(self):
-        r"""
-        Whether `\det(\partial^2 L/\partial \dot q^2) = 0` identically: then
-        the Legendre transform is not invertible and
-        :meth:`hamiltonian` applies Dirac's scheme.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).is_singular()
-            True
-            sage: Lagrangian(dx^2 + dy^2, [x, y]).is_singular()
-            False
-        """
-        return is_singular(self.mass_matrix())
-
-    def generalized_momenta(self):
-        r"""
-        The expressions `p_i = \partial L / \partial \dot q_i`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, e, A = var('x dx m e A')
-            sage: Lagrangian(m*dx^2/2 + e*A*x*dx, [x]).generalized_momenta()
-            [A*e*x + dx*m]
-        """
-        return [self._expr.diff(v) for v in self._velocities]
-
-    def energy(self):
-        r"""
-        The generalized energy (Jacobi integral)
-        `h = \sum \dot q_i \partial L/\partial \dot q_i - L`;
-        conserved when `L` does not depend on `t` and there are no
-        non-potential forces. For a natural Lagrangian `h = T_2 - T_0 - U`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).energy()
-            1/2*dx^2*m + 1/2*k*x^2
-        """
-        h = sum(v * p for v, p in zip(self._velocities, self.generalized_momenta()))
-        return (h - self._expr).expand() if self.is_natural() else h - self._expr
-
-    def cyclic_coordinates(self):
-        r"""
-        The coordinates `q_l` whose momentum is conserved, exactly those
-        :meth:`routh` accepts: `q_l` appears neither in `L` nor in the
-        dissipation function, the generalized forces or the constraints,
-        the dissipation function does not depend on `\dot q_l`, and no
-        generalized force acts on `q_l`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).cyclic_coordinates()
-            [phi]
-
-        A damper on a cart makes its position non-cyclic::
-
-            sage: x, dx, c = var('x dx c')
-            sage: L = Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi], dissipation=c*dx^2/2)
-            sage: L.cyclic_coordinates()
-            []
-        """
-        return [q for q in self._coordinates if self._not_cyclic(q) is None]
-
-    def _not_cyclic(self, q):
-        r"""
-        Why the coordinate ``q`` is not cyclic, or ``None`` if it is.
-        """
-        i = self._coordinates.index(q)
-        if self._expr.has(q):
-            return "the Lagrangian depends on it"
-        if self._dissipation.diff(self._velocities[i]) != 0:
-            return ("the dissipation function depends on its velocity, so its momentum "
-                    "is not conserved")
-        if self._forces[i] != 0:
-            return "a generalized force acts on it"
-        for what, parts in (("the dissipation function", [self._dissipation]),
-                            ("a generalized force", self._forces),
-                            ("a constraint", self._constraints)):
-            if any(p.has(q) for p in parts):
-                return f"{what} depends on it"
-        return None
-
     # ------------------------------------------------------------------
-    # equations
-
-    def _nonpotential_terms(self):
-        return [self._dissipation.diff(v) - Q
-                for v, Q in zip(self._velocities, self._forces)]
-
-    @cached_method
-    def lagrange_equations(self, form=None):
-        r"""
-        The Lagrange equations of the second kind (5), with dissipation and
-        generalized forces: a list of expressions `E_i` meaning `E_i = 0`.
-
-        INPUT:
-
-        - ``form`` -- (default: ``"structured"`` for a natural Lagrangian,
-          ``"direct"`` otherwise) ``"structured"`` assembles (5) from the
-          decomposition (4); ``"direct"`` differentiates
-          `d/dt (\partial L/\partial \dot q_i) - \partial L/\partial q_i`.
-          Both are equal as functions.
-
-        With constraints, `E_i` contains `-\sum_j \mu_j \partial f_j/\partial
-        q_i` (`M\ddot q = F + J^T\mu`, see the module documentation).
-
-        EXAMPLES:
-
-        The structured form keeps the mass matrix entries as factors of the
-        accelerations::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
-            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi])
-            sage: L.lagrange_equations()
-            [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
-
-        A relativistic particle (not natural) is differentiated directly::
-
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(-sqrt(1 - dx^2), [x]).lagrange_equations()
-            [ddx*(dx^2/(-dx^2 + 1)^(3/2) + 1/sqrt(-dx^2 + 1))]
-
-        TESTS::
-
-            sage: t = var('t')
-            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 + r*dphi*t, [r, phi])
-            sage: S, D = L.lagrange_equations('structured'), L.lagrange_equations('direct')
-            sage: all(bool((s - d).expand() == 0) for s, d in zip(S, D))
-            True
-            sage: L.lagrange_equations('nonsense')
-            Traceback (most recent call last):
-            ...
-            ModelError: form: expected 'structured' or 'direct', got 'nonsense'
-        """
-        if form is None:
-            form = "structured" if self.is_natural() else "direct"
-        if form == "structured":
-            equations = self._structured_equations()
-        elif form == "direct":
-            equations = self._direct_equations()
-        else:
-            raise ModelError(f"expected 'structured' or 'direct', got {form!r}", entry='form')
-        return [e + extra - force for e, extra, force in
-                zip(equations, self._nonpotential_terms(), self._constraint_forces())]
-
-    def _constraint_forces(self):
-        # the generalized constraint forces J^T mu, one per coordinate
-        J = self._constraint_jacobian()
-        return [sum(mu * J[j, i] for j, mu in enumerate(self._multipliers))
-                for i in range(len(self._coordinates))]
-
-    def _acceleration_constraints(self):
-        # the constraints at the level of accelerations, G ddq = h: the
-        # holonomic ones differentiated twice; with their multipliers
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        zero = {v: 0 for v in ddq}
-        h = [-time_derivative(time_derivative(f, q, dq, ddq), q, dq, ddq).subs(zero)
-             for f in self._constraints]
-        return self._constraint_jacobian(), h, list(self._multipliers)
-
-    def _constraint_jacobian(self):
-        return matrix(SR, len(self._constraints), len(self._coordinates),
-                      [[f.diff(q) for q in self._coordinates] for f in self._constraints])
-
-    def equations(self):
-        r"""
-        The equations of motion: :meth:`lagrange_equations` (the name every
-        model and characteristic function of the package shares).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations()
-            [ddx + x]
-        """
-        return self.lagrange_equations()
-
-    def equations_cse(self):
-        r"""
-        The Lagrange equations written with their common subexpressions
-        (see :func:`~sage_dynsym.dynamics.compact.equations_cse`): a compact
-        form for the largest models, exactly equal to
-        :meth:`lagrange_equations` after ``expand()``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: psi, theta, dpsi, dtheta, m, l, g = var('psi theta dpsi dtheta m l g')
-            sage: L = Lagrangian(m*l^2*(dtheta^2 + sin(theta)^2*dpsi^2)/2 + m*g*l*cos(theta),
-            ....:                [psi, theta])
-            sage: C = L.equations_cse(); C.subexpressions()
-            [(x1_, cos(theta)), (x2_, sin(theta))]
-            sage: C.expand() == L.lagrange_equations()
-            True
-        """
-        return equations_cse(self.lagrange_equations())
-
-    def _conserved_energy(self):
-        r"""
-        The generalized energy (:meth:`energy`) when it is an integral of
-        the motion -- no explicit time in `L` or the constraints, no
-        dissipation, no generalized forces --, else ``None``; what
-        ``simulate(...).energy_drift()`` measures.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, c = var('x dx c')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x])._conserved_energy()
-            1/2*dx^2 + 1/2*x^2
-            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2)._conserved_energy() is None
-            True
-
-        From the decomposition of a mechanical system, `T_2 - T_0 - U`::
-
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: load(example_path('spherical_pendulum.yaml')).lagrangian()._conserved_energy()
-            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
-        """
-        if self._structure is not None:
-            # h = T_2 - T_0 - U from the decomposition: nothing expanded (a
-            # memoized walk looks for t: large models share subexpressions)
-            A, A1, A0 = self._structure
-            if str(t) in symbols_and_functions(list(A.list()) + list(A1) + [A0])[0]:
-                return None
-            energy = natural_form(A, [0] * len(self._velocities), -A0, self._velocities)
-        elif self._expr.has(t):
-            return None
-        else:
-            energy = None
-        if (not self._dissipation.is_zero() or any(not f.is_zero() for f in self._forces)
-                or any(SR(f).has(t) for f in self._constraints)):
-            return None
-        return self.energy() if energy is None else energy
-
-    def equations_record(self):
-        r"""
-        The equations as neutral data for the analysis
-        (:class:`~sage_dynsym.analysis.motion.SecondOrderEquations`, with
-        the Lagrangian and its kinetic matrix).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations_record()
-            Second-order equations in (x): [ddx + x] == 0
-            sage: y, dy = var('y dy')
-            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
-            sage: E.constraints(), E.multipliers()
-            ([x - y], [mu1])
-        """
-        kinetic = self.mass_matrix() if self.is_natural() else None
-        return SecondOrderEquations(self.lagrange_equations(), self._coordinates,
-                                    self._velocities, self._accelerations,
-                                    function=self._expr, kinetic=kinetic,
-                                    constraints=self._constraints,
-                                    multipliers=self._multipliers)
-
-    def _direct_equations(self):
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        return [time_derivative(p, q, dq, ddq) - self._expr.diff(qi)
-                for qi, p in zip(q, self.generalized_momenta())]
-
-    def _structured_equations(self):
-        r"""
-        Equations (5) from `A, A_1, A_0`, see
-        :mod:`~sage_dynsym.dynamics.natural_equations`.
-        """
-        if self._equation_builder is not None:
-            return self._equation_builder()
-        A, A1, A0 = self.decomposition()
-        return natural_equations([list(row) for row in A.rows()], list(A1), A0,
-                                 self._coordinates, self._velocities, self._accelerations,
-                                 SymbolicCalculus(self._coordinates))
-
-    def accelerations_solved(self):
-        r"""
-        The equations solved for the accelerations: a list of expressions
-        `\ddot q_i = f_i(q, \dot q, t)` (only for natural Lagrangians with an
-        invertible mass matrix). With constraints: the accelerations of
-        :meth:`accelerations_and_multipliers` (valid on the constraint
-        surface).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).accelerations_solved()
-            [-k*x/m]
-
-        TESTS::
-
-            sage: y, dy = var('y dy')
-            sage: Lagrangian(dx^2 + x*dy, [x, y]).accelerations_solved()
-            Traceback (most recent call last):
-            ...
-            ModelError: the mass matrix is singular: the accelerations cannot be solved for
-        """
-        if self._constraints:
-            solution = self.accelerations_and_multipliers()
-            return [solution[a] for a in self._accelerations]
-        A = self.mass_matrix()
-        if is_singular(A):
-            raise ModelError("the mass matrix is singular: the accelerations cannot be solved for")
-        zero = {a: 0 for a in self._accelerations}
-        rest = matrix(SR, [[-e.subs(zero)] for e in self.lagrange_equations()])
-        solution = A.solve_right(rest)
-        return [solution[i, 0].simplify_rational() for i in range(A.nrows())]
-
-    @cached_method
-    def accelerations_and_multipliers(self):
-        r"""
-        The accelerations and the multipliers, solved from the `n` equations
-        together with the twice-differentiated constraints (Lagrange's
-        equations of the first kind).
-
-        With `E = M\ddot q - F - J^T\mu` and
-        `\ddot f = J\ddot q + b(q, \dot q, t)`, the linear system
-        `\begin{pmatrix} M & -J^T \\ J & 0\end{pmatrix}
-        \begin{pmatrix}\ddot q \\ \mu\end{pmatrix}
-        = \begin{pmatrix} F \\ -b\end{pmatrix}` is solved exactly.
-        `J^T\mu` is the generalized constraint force.
-
-        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}`` of functions of `q`,
-        `\dot q` and `t` (valid on the constraint surface, where
-        `f = \dot f = 0`).
-
-        EXAMPLES:
-
-        A pendulum of length `l` in Cartesian coordinates: with
-        `x = l\sin\theta`, `y = -l\cos\theta` the tension of the rod is
-        `-2\mu_1 l = m(l\dot\theta^2 + g\cos\theta)` [Gol2002]_::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, m, g, l, th, dth = var('x y dx dy m g l theta dtheta')
-            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: sol = L.accelerations_and_multipliers(); sol
-            {ddx: (g*x*y - (dx^2 + dy^2)*x)/(x^2 + y^2),
-             ddy: -(g*x^2 + (dx^2 + dy^2)*y)/(x^2 + y^2),
-             mu1: 1/2*(g*m*y - (dx^2 + dy^2)*m)/(x^2 + y^2)}
-            sage: polar = {x: l*sin(th), y: -l*cos(th), dx: l*cos(th)*dth, dy: l*sin(th)*dth}
-            sage: (-2*sol[L.multipliers()[0]]*l).subs(polar).full_simplify()
-            dtheta^2*l*m + g*m*cos(theta)
-
-        Without constraints, the accelerations alone::
-
-            sage: Lagrangian(m*dx^2/2 - x^2/2, [x]).accelerations_and_multipliers()
-            {ddx: -x/m}
-
-        TESTS::
-
-            sage: Lagrangian(-sqrt(1 - dx^2), [x], constraints=[x - var('t')]).accelerations_and_multipliers()
-            Traceback (most recent call last):
-            ...
-            ModelError: the Lagrangian is not quadratic in the velocities (dx)
-
-        REFERENCES:
-
-        .. [Gol2002] H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
-           3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
-           and forces of constraint).
-        """
-        K, rhs, unknowns = self._acceleration_system()
-        solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
-        return {v: solution[i, 0].simplify_rational() for i, v in enumerate(unknowns)}
-
-    def _acceleration_system(self):
-        # the linear system [[M, -G^T], [G, 0]] (ddq, multipliers) = (F, h),
-        # as (matrix, right-hand side, unknowns)
-        q, ddq = self._coordinates, self._accelerations
-        M = self.decomposition()[0]
-        G, h, multipliers = self._acceleration_constraints()
-        n, m = len(q), len(multipliers)
-        zero = {v: 0 for v in ddq + multipliers}
-        F = [-e.subs(zero) for e in self.lagrange_equations()]
-        K = matrix(SR, n + m, n + m)
-        K.set_block(0, 0, M)
-        if m:
-            K.set_block(0, n, -G.transpose())
-            K.set_block(n, 0, G)
-        if is_singular(K):
-            raise ModelError("the equations cannot be solved for the accelerations and "
-                             "multipliers (the matrix [[M, -J^T], [J, 0]] is singular)")
-        return K, F + h, ddq + multipliers
-
-    def reduce(self, independent, parametrization):
-        r"""
-        The Lagrangian in independent coordinates: the constrained
-        coordinates are replaced by functions of the independent ones.
-
-        INPUT:
-
-        - ``independent`` -- the `n - m` independent coordinates `s_k`: kept
-          coordinates of `L` or new symbols
-        - ``parametrization`` -- a dict ``{q_i: phi_i(s, t)}`` giving every
-          other coordinate; the constraints must hold identically under it
-
-        OUTPUT: a :class:`Lagrangian` in ``independent`` without
-        constraints: `L(\varphi(s, t), \dot\varphi, t)`, the dissipation
-        function substituted the same way, and the generalized forces by
-        virtual work, `Q'_k = \sum_i Q_i\,\partial\varphi_i/\partial s_k`.
-
-        EXAMPLES:
-
-        The Cartesian pendulum reduced to its angle::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
-            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: P = L.reduce([th], {x: l*sin(th), y: -l*cos(th)})
-            sage: P.lagrange_equations()[0].simplify_full()
-            ddtheta*l^2*m + g*l*m*sin(theta)
-
-        TESTS::
-
-            sage: L.reduce([th], {x: l*sin(th), y: l*sin(th)})
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: the constraint constraints[0] = -l^2 + x^2 + y^2 does not hold identically under the parametrization {x: l*sin(theta), y: l*sin(theta)}
-            sage: L.reduce([x, th], {y: th})
-            Traceback (most recent call last):
-            ...
-            ModelError: independent: expected 1 independent coordinate(s) (2 coordinates, 1 constraint(s)), got [x, theta]
-            sage: L.reduce([th], {x: l*sin(th)})
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: the coordinate y is neither independent nor given
-        """
-        independent = symbol_list(independent, "independent")
-        sub = {SR(k): SR(v) for k, v in parametrization.items()}
-        n, m = len(self._coordinates), len(self._constraints)
-        if len(independent) != n - m:
-            raise ModelError(f"expected {n - m} independent coordinate(s) ({n} coordinates, "
-                             f"{m} constraint(s)), got {independent}", entry="independent")
-        for k in sub:
-            if k not in self._coordinates:
-                raise ModelError(f"{k} is not a coordinate of the Lagrangian; coordinates "
-                                 f"are {self._coordinates}", entry="parametrization")
-            if k in independent:
-                raise ModelError(f"the coordinate {k} is both independent and given",
-                                 entry="parametrization")
-        parts = [self._expr, self._dissipation] + self._forces + self._constraints
-        for q in self._coordinates:
-            if q not in sub and q not in independent:
-                raise ModelError(f"the coordinate {q} is neither independent nor given",
-                                 entry="parametrization")
-        for s_k in independent:
-            if s_k not in self._coordinates and any(p.has(s_k) for p in parts):
-                raise ModelError(f"the new coordinate {s_k} is already a symbol of the model",
-                                 entry="independent")
-        removed = [q for q in self._coordinates if q in sub]
-        for k, v in sub.items():
-            bad = [w for w in removed + self._velocities if v.has(w)]
-            if bad:
-                raise ModelError(f"the value of {k} depends on {bad[0]}; give it in the "
-                                 "independent coordinates and t", entry="parametrization")
-        ds = [velocity(s_k) for s_k in independent]
-        position = {q: sub.get(q, q) for q in self._coordinates}
-        rate = {dq: time_derivative(position[q], independent, ds)
-                for q, dq in zip(self._coordinates, self._velocities)}
-        for j, f in enumerate(self._constraints):
-            if not bool(f.subs(position).simplify_full() == 0):
-                raise ModelError(f"the constraint constraints[{j}] = {f} does not hold "
-                                 f"identically under the parametrization {sub}",
-                                 entry="parametrization")
-        full = {**position, **rate}
-        forces = [sum(Q.subs(full) * position[q].diff(s_k)
-                      for q, Q in zip(self._coordinates, self._forces))
-                  for s_k in independent]
-        return Lagrangian(self._expr.subs(full), independent, ds,
-                          dissipation=self._dissipation.subs(full), forces=forces,
-                          name=self._name)
-
-    def first_order_system(self):
-        r"""
-        The equations as a first-order system `\dot x = F(x, t)` with state
-        `x = (q, \dot q)`.
-
-        OUTPUT: a pair ``(state, rhs)`` of lists.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).first_order_system()
-            ([x, dx], [dx, -k*x/m])
-        """
-        state = self._coordinates + self._velocities
-        return state, list(self._velocities) + self.accelerations_solved()
-
-    # ------------------------------------------------------------------
-    # other forms
+    # the Routh function (the reduction itself: dynamics.routh)
 
     def routh(self, cyclic):
         r"""
@@ -1166,34 +570,6 @@ class Lagrangian(NumericalMethods, SageObject):
             1/2*dr^2*m - 1/2*k*r^2 - 1/2*p_phi^2/(m*r^2)
         """
         return RouthFunction(self, cyclic)
-
-    def hamiltonian(self):
-        r"""
-        The Hamiltonian by the Legendre transform; for a singular Lagrangian
-        the result carries Dirac's constraint analysis.
-
-        See :class:`~sage_dynsym.dynamics.hamiltonian.Hamiltonian`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian().expr()
-            1/2*k*x^2 + 1/2*p_x^2/m
-
-        TESTS::
-
-            sage: Lagrangian(m*dx^2/2, [x], constraints=[x - var('t')]).hamiltonian()
-            Traceback (most recent call last):
-            ...
-            ModelError: constraints: the Legendre transform of a constrained Lagrangian is not supported: reduce it to independent coordinates first (reduce)
-        """
-        if self._constraints:
-            raise ModelError("the Legendre transform of a constrained Lagrangian is not "
-                             "supported: reduce it to independent coordinates first "
-                             "(reduce)", entry="constraints")
-        from .hamiltonian import Hamiltonian
-        return Hamiltonian(self)
 
 
 class RouthFunction(Lagrangian):
@@ -1254,73 +630,17 @@ class RouthFunction(Lagrangian):
     def __init__(self, lagrangian, cyclic, momenta=None):
         if not isinstance(lagrangian, Lagrangian):
             raise ModelError("expected a Lagrangian object", entry="lagrangian")
-        self._check_cyclic(lagrangian, cyclic)
-        q_all, dq_all = lagrangian.coordinates(), lagrangian.velocities()
+        check_cyclic(lagrangian, cyclic)
         self._cyclic = [SR(c) for c in cyclic]
-        index = [q_all.index(c) for c in self._cyclic]
-        positional = [i for i in range(len(q_all)) if i not in index]
         if momenta is None:
             momenta = [momentum(c) for c in self._cyclic]
         self._momenta = [SR(c) for c in momenta]
         self._lagrangian = lagrangian
-
-        A, A1, A0 = lagrangian.decomposition()
-        # p_cyc = A_cc dq_c + A_cp dq_p + A1_c = c; with u = c - A1_c - A_cp dq_p,
-        # dq_c = A_cc^{-1} u and R = L - c.dq_c = 1/2 dq_p A_pp dq_p + A1_p.dq_p
-        # + A0 - 1/2 u A_cc^{-1} u, collected by the positional velocities:
-        # each coefficient simplified, the momentum part as a sum of squares
-        A_cc = A.matrix_from_rows_and_columns(index, index)
-        if is_singular(A_cc):
-            raise ModelError("the momentum equations cannot be solved for the cyclic "
-                             "velocities (the block of the mass matrix is singular)",
-                             entry="cyclic")
-        try:
-            elimination = Elimination(A_cc)
-        except NotPolynomial:
-            # inexact numbers, or entries too large to simplify: GiNaC's
-            # normalization (it may miss zero pivots modulo cos^2+sin^2 = 1)
-            elimination = Elimination(A_cc, simplify=lambda e: SR(e).normalize())
-        dq_p = [dq_all[j] for j in positional]
-        v = [c - A1[i] for c, i in zip(self._momenta, index)]
-        X = {j: [A[i, j] for i in index] for j in positional}
-        n = len(positional)
-        M = matrix(SR, n, n)
-        for a, j in enumerate(positional):
-            for b in range(a, n):
-                k = positional[b]
-                M[a, b] = M[b, a] = trig_rational_simplify(
-                    A[j, k] - SR(0).add(*elimination.products(X[j], X[k])))
-        M.set_immutable()
-        B = vector(SR, [linear_collected(A1[j] + SR(0).add(*elimination.products(X[j], v)),
-                                          self._momenta) for j in positional])
-        R0 = trig_rational_simplify(A0) - SR(0).add(
-            *elimination.squares(v, self._momenta)) / 2
-        # dq_c = A_cc^{-1} u = -dR/dc, in the (compact) form of R
-        routh = natural_form(M, B, R0, dq_p)
-        self._solved_velocities = [-routh.diff(c) for c in self._momenta]
-        cyclic_velocities = [dq_all[i] for i in index]
-        substitution = dict(zip(cyclic_velocities, self._solved_velocities))
-        dissipation = lagrangian.dissipation().subs(substitution)
-        forces = [lagrangian.generalized_forces()[i].subs(substitution) for i in positional]
-        Lagrangian.__init__(self, None, [q_all[i] for i in positional], dq_p,
-                            dissipation=dissipation, forces=forces, name=lagrangian.name(),
-                            decomposition=(M, B, R0), constraints=lagrangian.constraints())
-
-    @staticmethod
-    def _check_cyclic(lagrangian, cyclic):
-        coordinates = lagrangian.coordinates()
-        velocities = dict(zip(coordinates, lagrangian.velocities()))
-        for c in cyclic:
-            c = SR(c)
-            if c not in velocities:
-                raise ModelError(f"{c} is not a coordinate of the Lagrangian; "
-                                 f"coordinates are {coordinates}", entry="cyclic")
-            reason = lagrangian._not_cyclic(c)
-            if reason is not None:
-                raise ModelError(f"{c} is not cyclic: {reason}", entry="cyclic")
-            if not lagrangian.is_natural():
-                raise ModelError("Routh reduction needs a Lagrangian quadratic in the "
-                                 "velocities", entry="lagrangian")
+        coordinates, velocities, decomposition, self._solved_velocities, dissipation, forces = \
+            routh_reduction(lagrangian, self._cyclic, self._momenta)
+        Lagrangian.__init__(self, None, coordinates, velocities, dissipation=dissipation,
+                            forces=forces, name=lagrangian.name(), decomposition=decomposition,
+                            constraints=lagrangian.constraints())
 
     def _repr_(self):
         coords = ", ".join(map(str, self.coordinates()))

@@ -1,5 +1,5 @@
 r"""
-The description format of mechanical systems (read)
+The description format of mechanical systems (read and written)
 
 A description file is human-editable YAML (format:
 :doc:`/description_files`), read with PyYAML's
@@ -66,10 +66,16 @@ EXAMPLES::
     sage: results['lagrange_equations'] == S.lagrangian().lagrange_equations()
     True
 """
+from sage.misc.latex import latex
+from sage.symbolic.ring import SR
+
 from ..errors import DescriptionError, DynSymError, ModelError, brief
 from ..io.expressions import ExpressionParser
-from ..io.fields import check_keys, declared_names, declared_positive, title, MAX_PARAMETERS
+from ..io.fields import (check_keys, declared_names, declared_positive, title, MAX_PARAMETERS,
+                         text as _text)
 from ..symbols import velocity, acceleration, momentum, check_mechanical_names
+from .force_functions import force_term_to_dict
+from .operating_points import operating_point_to_dict
 
 MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'positive', 'coordinates', 'force_function',
                    'dissipation', 'forces', 'loads', 'constraints', 'nonholonomic', 'rolling',
@@ -495,3 +501,129 @@ def _force_term(data, parser, where):
         return NewtonianField(nu, r, e)
     except ModelError as err:       # its entry is newtonian.<key>
         raise err.with_context(entry=where) from None
+
+
+class MechanicalFormat:
+    r"""
+    The description format of a
+    :class:`~sage_dynsym.mechanics.system.MechanicalSystem`, read and
+    written (a base class of it): :meth:`from_dict` and :meth:`to_dict`,
+    and the ``results:`` section of a saved description.
+
+    EXAMPLES: see the module documentation.
+    """
+
+    @classmethod
+    def from_dict(cls, data, source=None):
+        r"""
+        The mechanical system of a description mapping (``kind: mechanical``); ``source``
+        names the file in errors. The format is read by
+        :func:`~sage_dynsym.mechanics.format.read_mechanical_system`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem
+            sage: S = MechanicalSystem.from_dict({'kind': 'mechanical', 'coordinates': ['x'],
+            ....:     'parameters': ['m'], 'bodies': [{'name': 'cart', 'joint': ['x', 0, 0], 'mass': 'm'}]})
+            sage: S.lagrangian().expr()
+            1/2*dx^2*m
+        """
+        return read_mechanical_system(cls, data, source)
+
+    def to_dict(self):
+        r"""
+        The description mapping of the system (the inverse of
+        :func:`~sage_dynsym.mechanics.description.mechanical_system_from_dict`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: d = load(example_path('spherical_pendulum.yaml')).to_dict()
+            sage: d['bodies'][0]['rotations'], d['force_function']
+            ([[3, 'psi'], [1, 'theta']], {'uniform_gravity': ['0', '0', '-g']})
+        """
+        out = {'kind': 'mechanical'}
+        if self.name():
+            out['name'] = self.name()
+        if self.parameters() is not None:
+            out['parameters'] = [str(p) for p in self.parameters()]
+        if self.positive_parameters():
+            out['positive'] = [str(p) for p in self.positive_parameters()]
+        out['coordinates'] = [str(q) for q in self.coordinates()]
+        terms = [force_term_to_dict(field, _text) for field in self.force_terms()]
+        if terms:
+            # one term keeps the single-mapping form
+            out['force_function'] = terms if isinstance(self.force_field(), list) else terms[0]
+        if not self.dissipation().is_zero():
+            out['dissipation'] = _text(self.dissipation())
+        if any(not f.is_zero() for f in self.given_forces()):
+            out['forces'] = [_text(f) for f in self.given_forces()]
+        if self.loads():
+            out['loads'] = [load.to_dict() for load in self.loads()]
+        constraints = self.constraint_set()
+        if constraints.given_holonomic():
+            out['constraints'] = [_text(f) for f in constraints.given_holonomic()]
+        if constraints.given_nonholonomic():
+            out['nonholonomic'] = [_text(g) for g in constraints.given_nonholonomic()]
+        if constraints.rolling():
+            out['rolling'] = [disk.to_dict() for disk in constraints.rolling()]
+        if self.operating_points():
+            out['operating_points'] = {name: operating_point_to_dict(point)
+                                       for name, point in self.operating_points().items()}
+        bodies = []
+        for k, body in enumerate(self.bodies(), 1):
+            entry = {'name': body.name(), 'parent': self.parent_index(k),
+                     'rotations': [[axis, _text(angle)] for axis, angle in body.rotations()],
+                     'joint': [_text(c) for c in body.joint()],
+                     'mass_center': [_text(c) for c in body.mass_center()],
+                     'mass': _text(body.mass()),
+                     'inertia': [[_text(c) for c in row] for row in body.inertia().rows()]}
+            if body.velocity() is not None:
+                entry['velocity'] = [_text(c) for c in body.velocity()]
+            bodies.append(entry)
+        out['bodies'] = bodies
+        return out
+
+    def results(self):
+        r"""
+        The ``results:`` section of a saved description: the Lagrangian and
+        the Lagrange equations, as text and LaTeX.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: sorted(load(example_path('spherical_pendulum.yaml')).results())
+            ['lagrange_equations', 'lagrange_equations_latex', 'lagrangian', 'lagrangian_latex']
+        """
+        L = self.lagrangian()
+        equations = L.lagrange_equations()
+        return {'lagrangian': _text(L.expr()), 'lagrangian_latex': str(latex(L.expr())),
+                'lagrange_equations': [_text(e) for e in equations],
+                'lagrange_equations_latex': [str(latex(e)) for e in equations]}
+
+    def result_symbols(self, results):
+        r"""
+        The names a ``results:`` section of this system may use: the
+        parameters (or the symbols of the Lagrangian), the coordinates,
+        their velocities, accelerations and momenta; no functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: symbols, functions = load(example_path('spherical_pendulum.yaml')).result_symbols({})
+            sage: sorted(symbols)[:6], functions
+            (['ddpsi', 'ddtheta', 'dpsi', 'dtheta', 'g', 'l'], ())
+        """
+        q = [str(v) for v in self.coordinates()]
+        symbols = [str(p) for p in self.parameters() or []]
+        if self.parameters() is None:
+            symbols += sorted({str(v) for v in self.lagrangian().expr().variables()})
+        symbols += q + [str(velocity(SR(v))) for v in q] + [str(acceleration(SR(v))) for v in q]
+        symbols += [str(momentum(SR(v))) for v in q]
+        if self.constraints() or self.nonholonomic_constraints():
+            # the Lagrange equations of the first kind hold the multipliers
+            symbols += [str(mu) for mu in self.lagrangian().multipliers()]
+        return symbols, ()

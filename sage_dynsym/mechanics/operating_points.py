@@ -165,3 +165,54 @@ def operating_point_to_dict(point):
     if point.velocities():
         out['velocities'] = {str(k): text(v) for k, v in point.velocities().items()}
     return out
+
+
+class SystemOperatingPoints:
+    r"""
+    The named operating points of a
+    :class:`~sage_dynsym.mechanics.system.MechanicalSystem` (a base class
+    of it).
+
+    EXAMPLES: see :class:`~sage_dynsym.mechanics.system.MechanicalSystem`.
+    """
+
+    def operating_points(self):
+        r"""
+        The named operating points (a dict ``{name: OperatingPoint}``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, v = var('x v')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x],
+            ....:                  operating_points={'moving': {'velocities': {'dx': v}}}).operating_points()
+            {'moving': Operating point 'moving': dx = v}
+        """
+        return dict(self._operating_points)
+
+    def operating_point(self, name):
+        r"""
+        The operating point ``name``, for
+        :func:`~sage_dynsym.analysis.linear.linearize`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, linearize
+            sage: x, m, v = var('x m v')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      operating_points={'moving': {'velocities': {'dx': v}}})
+            sage: linearize(S, S.operating_point('moving'), coordinates=[x]).M()
+            [m]
+
+        TESTS::
+
+            sage: S.operating_point('resting')
+            Traceback (most recent call last):
+            ...
+            ModelError: operating_points: no operating point 'resting'; the operating points are moving
+        """
+        if name not in self._operating_points:
+            raise ModelError(f"no operating point {name!r}; the operating points are "
+                             f"{', '.join(self._operating_points) or '(none)'}",
+                             entry="operating_points")
+        return self._operating_points[name]

@@ -77,9 +77,9 @@ def body_tree(system):
         loads.append(TreeLoad(k, point=load.point(), force=load.force(), torque=load.torque(),
                               axes=axes))
     # the generalized forces given as such (those of the loads come from the tree)
-    forces = system._forces
     return BodyTree(bodies, system.coordinates(), gravity=gravity, loads=loads,
-                    potential=potential, dissipation=system.dissipation(), forces=forces,
+                    potential=potential, dissipation=system.dissipation(),
+                    forces=system.given_forces(),
                     constraints=system.constraints(),
                     velocity_constraints=system.nonholonomic_constraints())
 

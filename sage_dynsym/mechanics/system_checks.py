@@ -1,0 +1,156 @@
+r"""
+The checks of a mechanical system's construction
+
+:class:`SystemChecks` is a base class of
+:class:`~sage_dynsym.mechanics.system.MechanicalSystem`: it orders the
+bodies parents first (refusing unknown parents, duplicate names and cycles),
+checks that every symbol of the model is declared, checks the loads, and
+the body indices given to the kinematics.
+
+EXAMPLES::
+
+    sage: from sage_dynsym import MechanicalSystem, RigidBody
+    sage: MechanicalSystem([RigidBody('p', parent='q'), RigidBody('q', parent='p')], [])
+    Traceback (most recent call last):
+    ...
+    ModelError: bodies: the parents form a cycle: p -> q -> p
+"""
+import numbers
+
+from sage.symbolic.ring import SR
+
+from ..errors import ModelError
+from ..symbols import acceleration, t
+from .loads import Load, body_index
+from .rigid_body import RigidBody
+
+
+class SystemChecks:
+    r"""
+    The construction checks of a
+    :class:`~sage_dynsym.mechanics.system.MechanicalSystem` (a base class
+    of it, see the module documentation).
+
+    EXAMPLES: see :class:`~sage_dynsym.mechanics.system.MechanicalSystem`.
+    """
+
+    def _sorted_by_parents(self, bodies):
+        names = {}
+        for i, body in enumerate(bodies):
+            if body.name() in names:
+                raise ModelError(f"duplicate body name {body.name()!r}", entry=f"bodies[{i}].name")
+            names[body.name()] = i
+        parent_of = []
+        for i, body in enumerate(bodies):
+            parent = body.parent()
+            entry = f"bodies[{i}].parent"
+            if isinstance(parent, RigidBody):
+                parent = parent.name()
+            if isinstance(parent, str):
+                if parent not in names:
+                    raise ModelError(f"unknown parent body {parent!r}; known bodies are: "
+                                     f"{', '.join(names)}", entry=entry)
+                parent_of.append(names[parent])
+            elif isinstance(parent, numbers.Integral) and not isinstance(parent, bool):
+                parent = int(parent)
+                if parent == 0:
+                    parent_of.append(None)
+                elif 1 <= parent <= len(bodies):
+                    parent_of.append(parent - 1)
+                else:
+                    raise ModelError(f"body index {parent} out of range 1..{len(bodies)}",
+                                     entry=entry)
+            else:
+                raise ModelError("expected 0 (inertial frame), a body name or a 1-based "
+                                 f"body index, got {parent!r}", entry=entry)
+        order, state = [], [0] * len(bodies)   # 0 new, 1 in progress, 2 done
+
+        def visit(i, trail):
+            if state[i] == 2:
+                return
+            if state[i] == 1:
+                cycle = trail[trail.index(i):] + [i]
+                raise ModelError("the parents form a cycle: " +
+                                 " -> ".join(bodies[j].name() for j in cycle), entry="bodies")
+            state[i] = 1
+            if parent_of[i] is not None:
+                visit(parent_of[i], trail + [i])
+            state[i] = 2
+            order.append(i)
+
+        for i in range(len(bodies)):
+            visit(i, [])
+        position = {i: k for k, i in enumerate(order, 1)}
+        self._parents = [None] + [0 if parent_of[i] is None else position[parent_of[i]]
+                                  for i in order]
+        return [bodies[i] for i in order]
+
+    def _check_symbols(self):
+        declared = set(self._coordinates) | set(self._velocities) | set(self._parameters) | {t}
+        names = ", ".join(sorted(map(str, set(self._parameters) | {t})))
+
+        def check(expr, entry):
+            for v in SR(expr).variables():
+                if v not in declared:
+                    raise ModelError(f"undeclared symbol {v}; declared are: {names}", entry=entry)
+
+        for body in self._bodies:
+            n = body.name()
+            for i, (_, angle) in enumerate(body.rotations()):
+                check(angle, f"{n}.rotations[{i}]")
+            for field in ("joint", "velocity", "mass_center"):
+                for c in getattr(body, field)() or ():
+                    check(c, f"{n}.{field}")
+            check(body.mass(), f"{n}.mass")
+            for c in body.inertia().list():
+                check(c, f"{n}.inertia")
+        check(self._dissipation, "dissipation")
+        for i, f in enumerate(self._forces):
+            check(f, f"forces[{i}]")
+        for i, term in enumerate(self.force_terms()):
+            if not hasattr(term, 'evaluate'):
+                check(term, "force_function" if not isinstance(self._force, list)
+                      else f"force_function[{i}]")
+
+    def _checked_load(self, load, entry, given_names):
+        load = Load.from_value(load, entry)
+        # a body index counts in the order the bodies were given (as parent
+        # indices do); keep names, which do not depend on the order
+        names = {}
+        for key in ('body', 'axes'):
+            ref = getattr(load, key)()
+            if isinstance(ref, int) and ref > 0:
+                if ref > len(given_names):
+                    raise ModelError(f"body index {ref} out of range 1..{len(given_names)}",
+                                     entry=f"{entry}.{key}")
+                ref = given_names[ref - 1]
+            if ref != 0:
+                body_index(self, ref, f"{entry}.{key}")
+            names[key] = ref
+        load = Load(names['body'], point=load.point(), force=load.force(),
+                    torque=load.torque(), axes=names['axes'])
+        accelerations = self._accelerations()
+        for field in ('point', 'force', 'torque'):
+            for c in getattr(load, field)() or ():
+                for v in SR(c).variables():
+                    if v in accelerations or (field == 'point' and v in self._velocities):
+                        what = 'point of application' if field == 'point' else field
+                        raise ModelError(f"the {what} cannot depend on {v}",
+                                         entry=f"{entry}.{field}")
+        if self._parameters is not None:
+            declared = set(self._coordinates) | set(self._velocities) | set(self._parameters) | {t}
+            names = ", ".join(sorted(map(str, set(self._parameters) | {t})))
+            for field in ('point', 'force', 'torque'):
+                for c in getattr(load, field)() or ():
+                    for v in SR(c).variables():
+                        if v not in declared:
+                            raise ModelError(f"undeclared symbol {v}; declared are: {names}",
+                                             entry=f"{entry}.{field}")
+        return load
+
+    def _accelerations(self):
+        return [acceleration(q) for q in self._coordinates]
+
+    def _check_index(self, k):
+        if not 1 <= k <= len(self._bodies):
+            raise ModelError(f"body index {k} out of range 1..{len(self._bodies)}")

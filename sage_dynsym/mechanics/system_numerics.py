@@ -1,0 +1,106 @@
+r"""
+The numerics of a mechanical system
+
+:class:`MechanicalNumerics` is a base class of
+:class:`~sage_dynsym.mechanics.system.MechanicalSystem`: the numerical
+methods every model has (see
+:class:`~sage_dynsym.numerics.methods.NumericalMethods`, the same
+arguments), with the right-hand side computed by the recursive algorithms
+of rigid-body dynamics or from the Lagrange equations (the keyword
+``algorithm``, see :mod:`~sage_dynsym.mechanics.recursive_numerics`).
+
+EXAMPLES::
+
+    sage: from sage_dynsym import MechanicalSystem, RigidBody
+    sage: x, m, k = var('x m k')
+    sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+    ....:                      force_function=-k*x^2/2)
+    sage: S.numerical_rhs({m: 1, k: 1}, algorithm='recursive')(0, [1.0, 0.0])
+    array([ 0., -1.])
+"""
+from ..numerics.rhs import RightHandSide
+from ..numerics.simulate import simulate as _simulate
+from ..numerics.values import check_model_values
+from .recursive_numerics import numerical_form
+
+
+class MechanicalNumerics:
+    r"""
+    The numerical methods of a
+    :class:`~sage_dynsym.mechanics.system.MechanicalSystem` (a base class
+    of it, see the module documentation).
+
+    EXAMPLES: see :class:`~sage_dynsym.mechanics.system.MechanicalSystem`.
+    """
+
+    def numerical_rhs(self, values, backend='auto', algorithm='auto'):
+        r"""
+        The compiled right-hand side `\dot x = f(t, x)`, `x = (q, \dot q)`,
+        with the parameter values ``values``: by the recursive algorithms
+        of rigid-body dynamics (``algorithm='recursive'``), from the
+        Lagrange equations of :meth:`lagrangian` (``'equations'``), or the
+        first when it applies (``'auto'``); see
+        :mod:`~sage_dynsym.mechanics.recursive_numerics` and
+        :func:`~sage_dynsym.numerics.rhs.numerical_rhs`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k = var('x m k')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2)
+            sage: S.numerical_rhs({m: 2, k: 8})(0, [1.0, 0.5])
+            array([ 0.5, -4. ])
+            sage: S.numerical_rhs({m: 2, k: 8}, algorithm='equations')(0, [1.0, 0.5])
+            array([ 0.5, -4. ])
+        """
+        check_model_values(self, values)
+        return RightHandSide(numerical_form(self, algorithm), values, backend)
+
+    def simulate(self, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
+                 atol=1e-12, backend='auto', *, algorithm='auto', **options):
+        r"""
+        A simulation of the system (see
+        :meth:`~sage_dynsym.numerics.methods.NumericalMethods.simulate`:
+        the same arguments), its right-hand side computed by ``algorithm``
+        (see :meth:`numerical_rhs`).
+
+        EXAMPLES: a mass on a spring, `x(t) = \cos 2t`::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k = var('x m k')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2)
+            sage: T = S.simulate({m: 2, k: 8}, {x: 1, 'dx': 0}, pi, points=3)
+            sage: T.values(x).round(8), T.energy_drift() < 1e-9
+            (array([ 1., -1.,  1.]), True)
+
+        TESTS::
+
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2, positive=[m, k])
+            sage: S.simulate({m: -2, k: 8}, {x: 1, 'dx': 0}, pi)
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -2
+        """
+        check_model_values(self, values)
+        options.setdefault('name', self.name())
+        return _simulate(numerical_form(self, algorithm), values, initial, t_end, points=points,
+                         t0=t0, method=method, rtol=rtol, atol=atol, backend=backend, **options)
+
+    def code(self, language='python', cse=True):
+        r"""
+        Generated source of the mass matrix and forcing of :meth:`lagrangian`
+        (see :meth:`~sage_dynsym.numerics.methods.NumericalMethods.code`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k = var('x m k')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2)
+            sage: 'k*x' in str(S.code())
+            True
+        """
+        return self.lagrangian().code(language=language, cse=cse)
