@@ -102,6 +102,7 @@ def test_odd_degree_of_instability_cannot_be_stabilized():
         assert np.max(eigenvalues(lin, pt).real) > 1e-9
 
 
+@pytest.mark.slow
 def test_first_order_circuit_like_system_against_eigenvalues():
     # B x' = F(x): an RLC loop with a tunnel-diode-like element i = f(u)
     i, u, L, C, r, s = var('i u L C r s')

@@ -17,9 +17,8 @@ def run(*args):
                           capture_output=True, text=True, timeout=600)
 
 
-# the three smallest examples in `make test`; every example in `make test-slow` (CI)
-FAST_EXAMPLES = [p for p in EXAMPLES if os.path.basename(p) in
-                 ('spherical_pendulum.yaml', 'rlc_ladder.yaml', 'nonlinear_circuit.yaml')]
+# one example in `make test`; every example in `make test-slow` (CI)
+FAST_EXAMPLES = [p for p in EXAMPLES if os.path.basename(p) == 'spherical_pendulum.yaml']
 
 
 @pytest.mark.parametrize("path", slow_except(EXAMPLES, FAST_EXAMPLES, ids=os.path.basename))

@@ -7,6 +7,8 @@ refused it)."""
 import subprocess
 import sys
 
+import pytest
+
 CART = """\
 kind: mechanical
 name: damped cart pendulum
@@ -56,6 +58,7 @@ def test_damped_cart_is_reported(tmp_path):
     assert "Hamiltonian" in text
 
 
+@pytest.mark.slow       # a command-line process of its own; `make test-slow` (CI)
 def test_undamped_cart_still_reduced(tmp_path):
     path = tmp_path / "cart.yaml"
     path.write_text(CART.replace('dissipation: "c*dx^2/2"\n', ""))
@@ -83,6 +86,7 @@ bodies:
 """
 
 
+@pytest.mark.slow       # a command-line process of its own; `make test-slow` (CI)
 def test_constrained_pendulum_is_reported(tmp_path):
     """The multiplier's equations and the solved multiplier are printed; the
     analysis that needs independent coordinates says so instead of stopping.

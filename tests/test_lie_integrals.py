@@ -114,6 +114,7 @@ def test_kovalevskaya_case():
     assert not in_span(K, classical(H))
 
 
+@pytest.mark.slow
 def test_generic_body_has_only_the_classical_integrals():
     H = sum(M[i]**2 / (2 * a) for i, a in enumerate([A1, A2, A3])) + \
         mu * (x0 * G[0] + y0 * G[1] + z0 * G[2])
@@ -167,6 +168,7 @@ def test_conditions_for_linear_integrals_of_the_heavy_top():
     assert lagrange.integrals() == [M[2]]
 
 
+@pytest.mark.slow
 def test_conditions_find_clebsch_case():
     P = list(var('p1 p2 p3'))
     a = list(var('a1 a2 a3'))

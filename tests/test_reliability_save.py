@@ -17,6 +17,7 @@ import pytest
 
 from sage_dynsym import load, save, DescriptionError
 from sage_dynsym.description import example_path
+from conftest import slow_except  # noqa: E402
 
 WRITER = textwrap.dedent("""
     import sys
@@ -52,7 +53,8 @@ def _interrupt(path, signum, sections):
     return signalled, child.returncode
 
 
-@pytest.mark.parametrize("signum", [signal.SIGKILL, signal.SIGINT], ids=["SIGKILL", "SIGINT"])
+@pytest.mark.parametrize("signum", slow_except([signal.SIGKILL, signal.SIGINT], [signal.SIGINT],
+                                                ids=lambda s: s.name))
 def test_interrupted_save_keeps_the_old_file(tmp_path, signum):
     path = tmp_path / "model.yaml"
     save(load(example_path("nonlinear_circuit.yaml")), str(path))
