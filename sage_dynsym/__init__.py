@@ -126,8 +126,8 @@ class _MovedModules(importlib.abc.MetaPathFinder, importlib.abc.Loader):
             return importlib.util.spec_from_loader(fullname, self)
         return None
 
-    def create_module(self, spec):
-        return importlib.import_module(f"{__name__}.{_MOVED[spec.name.partition('.')[2]]}")
+    def create_module(self, module_spec):
+        return importlib.import_module(f"{__name__}.{_MOVED[module_spec.name.partition('.')[2]]}")
 
     def exec_module(self, module):
         pass
