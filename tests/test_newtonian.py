@@ -127,7 +127,7 @@ def test_force_function_error_is_third_order(name):
             errors.append(abs(approx - exact) / abs(exact))
         ratio = errors[1] / errors[0]
         assert errors[0] < 1e-4, f"{name}: relative error {errors[0]} at r = {DISTANCES[0]}"
-        assert 1 / 12 < ratio < 1 / 5, (
+        assert ratio > 1 / 12 and ratio < 1 / 5, (
             f"{name}: relative errors {errors} at r = {DISTANCES}, ratio {ratio} "
             f"(expected about 1/8) at {values}, e = {e}")
 
