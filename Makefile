@@ -36,12 +36,17 @@ chromium:
 	  SUDO=$$(test "$$(id -u)" = 0 || echo sudo); \
 	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium; }
 
+# every module imported and Maxima started once, before the fork of each
+# file's process (tests/sage_doctest_environment.py): half the time
+DOCTEST_ENV := PYTHONPATH=tests$${PYTHONPATH:+:$$PYTHONPATH}
+DOCTEST := $(DOCTEST_ENV) $(SAGE) -t --force-lib -p 2 --environment=sage_doctest_environment
+
 doctest: $(STAMP)
-	$(SAGE) -t --force-lib -p 2 sage_dynsym doc/*.rst
+	$(DOCTEST) sage_dynsym doc/*.rst
 
 # the examples marked `# long time` (pictures), in the files that have them
 doctest-long: $(STAMP)
-	$(SAGE) -t --force-lib --long -p 2 $$(grep -rl --include='*.py' --include='*.rst' '# long time' sage_dynsym doc --exclude-dir=_build)
+	$(DOCTEST) --long $$(grep -rl --include='*.py' --include='*.rst' '# long time' sage_dynsym doc --exclude-dir=_build)
 
 # two processes (pytest-xdist); the slowest tests listed at the end
 PYTEST := $(PY) -m pytest -q -n 2 --dist loadfile --durations=10
@@ -54,8 +59,9 @@ pytest: $(STAMP) kernel
 test-slow:
 	@tests/timed.sh $(MAKE) pytest-slow doctest-long docs browser
 
+# the property-based tests (marked fuzz) again, on all their examples
 pytest-slow: $(STAMP) kernel
-	$(PYTEST) -m slow tests --ignore=tests/browser
+	SAGE_DYNSYM_FUZZ=full $(PYTEST) -m "slow or fuzz" tests --ignore=tests/browser
 
 worksheets: $(STAMP) kernel
 	$(PY) -m pytest -q tests/test_worksheets.py

@@ -49,3 +49,30 @@ def assemble(bodies, coordinates, parameters, gravity):
 def sage_chain(desc):
     """A sage_dynsym ``MechanicalSystem`` for a plain-data chain description."""
     return assemble(*sage_chain_parts(desc))
+
+
+def exact_accelerations(record, point):
+    """
+    The accelerations solving the equations ``E = 0`` of ``record`` (an
+    equations record, linear in the accelerations) at ``point`` (symbol name
+    -> number, ``t`` included), in 150-bit arithmetic: a NumPy array of
+    floats. The columns of the linear system are the differences of ``E`` at
+    unit accelerations; the point is substituted once.
+    """
+    import numpy as np
+    from sage.all import SR, RealField, matrix, vector
+    R = RealField(150)
+    ddq = record.accelerations()
+    base = {SR.var(k): R(v) for k, v in point.items()}
+    at_point = [SR(e).subs(base) for e in record.equations()]     # linear in ddq
+    zero = {a: R(0) for a in ddq}
+
+    def E(at):
+        return vector(R, [R(e.subs(at)) for e in at_point])
+    e0 = E(zero)
+    columns = []
+    for a in ddq:
+        unit = dict(zero)
+        unit[a] = R(1)
+        columns.append(E(unit) - e0)
+    return np.array([float(v) for v in matrix(R, columns).transpose().solve_right(-e0)])

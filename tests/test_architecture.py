@@ -8,6 +8,7 @@ of its own package; an import of a higher layer, or of another package on
 the same layer, is an error, and so is any cycle between modules.
 """
 import ast
+import functools
 from pathlib import Path
 
 import pytest
@@ -93,6 +94,7 @@ def imports(name, path, known):
     return {t for t in found if t and t.startswith("sage_dynsym") and t != name}
 
 
+@functools.lru_cache(maxsize=None)      # read once for the tests that use it
 def graph():
     known = modules()
     return {name: imports(name, path, known) for name, path in known.items()}
@@ -231,22 +233,23 @@ def private_uses(name, source, known, is_package=False):
     return sorted(set(found))
 
 
-def test_no_private_names_across_modules():
+@functools.lru_cache(maxsize=None)
+def package_private_uses():
+    r"""``(module, line, private name used)`` over the package."""
     known = modules()
-    wrong = []
-    for name, path in sorted(known.items()):
-        for line, used in private_uses(name, path.read_text(encoding="utf-8"), known,
-                                       path.name == "__init__.py"):
-            if (name, used) not in PRIVATE_ALLOWED:
-                wrong.append(f"{name}:{line} uses {used}")
+    return [(name, line, used) for name, path in sorted(known.items())
+            for line, used in private_uses(name, path.read_text(encoding="utf-8"), known,
+                                           path.name == "__init__.py")]
+
+
+def test_no_private_names_across_modules():
+    wrong = [f"{name}:{line} uses {used}" for name, line, used in package_private_uses()
+             if (name, used) not in PRIVATE_ALLOWED]
     assert not wrong, "private names used across modules:\n" + "\n".join(wrong)
 
 
 def test_the_private_allowances_are_still_needed():
-    known = modules()
-    used = {(name, u) for name, path in known.items()
-            for _, u in private_uses(name, path.read_text(encoding="utf-8"), known,
-                                     path.name == "__init__.py")}
+    used = {(name, u) for name, _, u in package_private_uses()}
     assert not PRIVATE_ALLOWED - used, f"no longer needed: {PRIVATE_ALLOWED - used}"
 
 
@@ -362,3 +365,32 @@ def _function(code_lines, docstring_lines=0, comment_lines=0):
 def test_the_size_rule_itself(source, found):
     # the checker's verdict on made-up modules
     assert oversized("m", source) == found
+
+
+_SHADOW_CHECK = r"""
+import importlib, pkgutil, types, sage_dynsym
+packages = [sage_dynsym]
+for info in pkgutil.walk_packages(sage_dynsym.__path__, 'sage_dynsym.'):
+    module = importlib.import_module(info.name)
+    if info.ispkg:
+        packages.append(module)
+for package in packages:
+    for name in getattr(package, '__all__', []):
+        value = getattr(package, name)
+        if isinstance(value, types.ModuleType):
+            print(f'{package.__name__}.{name} is the module {value.__name__}')
+"""
+
+
+def test_public_names_are_not_shadowed_by_modules():
+    # Importing a submodule binds it on its package under its own name; a
+    # public name spelled like a submodule then silently becomes the module
+    # (``from sage_dynsym import sweep`` gave a module once
+    # ``sage_dynsym.scale.sweep`` had been imported, e.g. by a Dask worker
+    # unpickling a task). Every module is imported first, in a fresh process.
+    import subprocess
+    import sys
+    run = subprocess.run([sys.executable, "-c", _SHADOW_CHECK], capture_output=True,
+                         text=True, timeout=300, cwd=PACKAGE.parent)
+    assert run.returncode == 0, run.stderr[-3000:]
+    assert run.stdout == "", run.stdout

@@ -2,19 +2,11 @@
 with the equations and the analysis sections, and a clean error otherwise."""
 import glob
 import os
-import subprocess
-import sys
-
 import pytest
-from conftest import slow_except  # noqa: E402
+from conftest import run_cli as run, slow_except
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = sorted(glob.glob(os.path.join(ROOT, "examples", "*.yaml")))
-
-
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "sage_dynsym", *args],
-                          capture_output=True, text=True, timeout=600)
 
 
 # one example in `make test`; every example in `make test-slow` (CI)

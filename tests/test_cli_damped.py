@@ -4,10 +4,8 @@ is not conserved (the damper acts on it), so it is not offered as cyclic and
 the report goes on to the equilibria of the full system (issue: the CLI used
 to stop because ``cyclic_coordinates()`` offered ``x`` and ``routh([x])``
 refused it)."""
-import subprocess
-import sys
-
 import pytest
+from conftest import run_cli as run
 
 CART = """\
 kind: mechanical
@@ -32,11 +30,6 @@ bodies:
 """
 
 
-def run(*args):
-    return subprocess.run([sys.executable, "-m", "sage_dynsym", *args],
-                          capture_output=True, text=True, timeout=600)
-
-
 def test_damped_cart_is_reported(tmp_path):
     path = tmp_path / "cart.yaml"
     path.write_text(CART)
@@ -58,7 +51,7 @@ def test_damped_cart_is_reported(tmp_path):
     assert "Hamiltonian" in text
 
 
-@pytest.mark.slow       # a command-line process of its own; `make test-slow` (CI)
+@pytest.mark.slow       # one more whole report; `make test-slow` (CI)
 def test_undamped_cart_still_reduced(tmp_path):
     path = tmp_path / "cart.yaml"
     path.write_text(CART.replace('dissipation: "c*dx^2/2"\n', ""))
@@ -86,7 +79,7 @@ bodies:
 """
 
 
-@pytest.mark.slow       # a command-line process of its own; `make test-slow` (CI)
+@pytest.mark.slow       # one more whole report; `make test-slow` (CI)
 def test_constrained_pendulum_is_reported(tmp_path):
     """The multiplier's equations and the solved multiplier are printed; the
     analysis that needs independent coordinates says so instead of stopping.

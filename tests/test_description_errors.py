@@ -91,11 +91,9 @@ def test_yaml_syntax_error(tmp_path):
 
 
 def test_cli_bad_file_exit_status(tmp_path):
-    import subprocess
-    import sys
+    from conftest import run_cli
     path = write(tmp_path, GOOD.replace("parent: 0", "parent: nowhere"))
-    run = subprocess.run([sys.executable, "-m", "sage_dynsym", path],
-                         capture_output=True, text=True, timeout=300)
+    run = run_cli(path)
     assert run.returncode == 1
     assert "Traceback" not in run.stderr
     assert "unknown parent body 'nowhere'" in run.stderr

@@ -53,7 +53,8 @@ def test_readme_block_as_a_script(tmp_path):
 @pytest.mark.slow       # a Jupyter kernel of its own; `make test-slow` (CI)
 def test_readme_block_in_the_sage_kernel(tmp_path):
     nbformat = pytest.importorskip("nbformat")
-    from test_worksheets import run_notebook
+    pytest.importorskip("nbclient")
+    from notebook_runner import run_notebook
     folder = checkout_copy(tmp_path)
     notebook = nbformat.v4.new_notebook()
     notebook.cells.append(nbformat.v4.new_code_cell(readme_block()))

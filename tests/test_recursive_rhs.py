@@ -33,18 +33,17 @@ import numpy as np
 import pytest
 import sympy
 
-from sage.all import SR, RealField, matrix, vector, sin, cos, dumps, loads
+from sage.all import SR, sin, cos, dumps, loads
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from reference.chains import physical_inertia  # noqa: E402
-from sage_chains import sage_chain_parts, assemble  # noqa: E402
+from sage_chains import sage_chain_parts, assemble, exact_accelerations  # noqa: E402
 from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity, NewtonianField  # noqa: E402
 from sage_dynsym.mechanics.recursive_numerics import body_tree, numerical_form  # noqa: E402
 from sage_dynsym.numerics.compiler import compiler  # noqa: E402
 from sage_dynsym.numerics.recursive import RecursiveForm  # noqa: E402
 from sage_dynsym.numerics.rhs import RightHandSide  # noqa: E402
 
-R150 = RealField(150)
 BACKEND = 'c' if compiler() else 'python'
 
 
@@ -307,23 +306,6 @@ def test_recursive_rhs_equals_independent_kane(seed, n_bodies):
             got = f(t, np.array(q + dq))
             assert np.array_equal(got[:n], dq)
             assert _relative(got[n:], expected) < 1e-10, (f.form().solver(), got, expected)
-
-
-def exact_accelerations(record, point):
-    """ddq from the symbolic equations E = 0 (linear in ddq) in 150 bits."""
-    ddq = record.accelerations()
-    base = {SR.var(k): R150(v) for k, v in point.items()}
-    zero = {a: R150(0) for a in ddq}
-
-    def E(at):
-        return vector(R150, [R150(SR(e).subs(base).subs(at)) for e in record.equations()])
-    e0 = E(zero)
-    columns = []
-    for a in ddq:
-        unit = dict(zero)
-        unit[a] = R150(1)
-        columns.append(E(unit) - e0)
-    return np.array([float(v) for v in matrix(R150, columns).transpose().solve_right(-e0)])
 
 
 @pytest.mark.parametrize("seed,n_bodies", TREES[:3])

@@ -18,7 +18,8 @@ import tempfile
 
 import pytest
 import yaml
-from hypothesis import HealthCheck, event, given, settings, strategies as st
+from hypothesis import event, given, strategies as st
+from conftest import fuzz_settings
 
 from sage.all import SR
 from sage_dynsym import load, DynSymError
@@ -30,11 +31,6 @@ from sage_dynsym.circuits.description import circuit_from_dict
 pytestmark = pytest.mark.slow
 
 SECONDS = 20        # per example: a hang fails the test
-
-
-def fuzz_settings(n):
-    return settings(max_examples=n, deadline=None, derandomize=True, database=None,
-                    suppress_health_check=list(HealthCheck))
 
 
 def bounded(function, *args):

@@ -10,16 +10,18 @@ what is accepted is what was asked for: as many samples as ``points``, a
 state of the right length, coupled windings whose inductance matrix has no
 negative eigenvalue (NumPy's, computed here).
 
-Runs are deterministic (``derandomize``) and small: the limits of the
-calls that could run long (``max_evaluations``, ``max_points``) are set low,
-since the property is about the arguments, not about the work.
+Runs are deterministic (``derandomize``): ``make test`` draws a fifth of the
+examples, ``make test-slow`` all of them (``conftest.fuzz_settings``). They
+are small: the limits of the calls that could run long (``max_evaluations``,
+``max_points``) are set low, since the property is about the arguments, not
+about the work.
 """
-import math
 import string
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, event, given, settings, strategies as st
+from hypothesis import event, given, strategies as st
+from conftest import fuzz_settings
 
 from sage.all import SR, var, QQ
 from sage_dynsym import (DynSymError, Lagrangian, LiePoissonSystem, MechanicalSystem, RigidBody,
@@ -28,12 +30,10 @@ from sage_dynsym.circuits import Circuit
 from sage_dynsym.numerics.trajectory import Trajectory
 
 
+# a fifth of the examples in `make test`, all of them in `make test-slow` (CI)
+pytestmark = pytest.mark.fuzz
+
 SECONDS = 30
-
-
-def fuzz_settings(n):
-    return settings(max_examples=n, deadline=None, derandomize=True, database=None,
-                    suppress_health_check=list(HealthCheck))
 
 
 def bounded(function):

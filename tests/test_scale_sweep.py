@@ -1,4 +1,4 @@
-"""Parameter sweeps (sage_dynsym.scale.sweep) in this process (client=False;
+"""Parameter sweeps (sage_dynsym.scale.sweeps) in this process (client=False;
 the Dask runs are in test_scale_dask.py): values against NumPy and against
 an independent numerical integration (SciPy), the model calling convention
 with a stand-in object, chunking and random points, failures."""

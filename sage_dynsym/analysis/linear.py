@@ -104,6 +104,8 @@ def _is_zero(expr):
 
 def _tidy(expr):
     expr = SR(expr)
+    if expr.is_numeric() or expr.is_symbol():
+        return expr             # already in simplest form: no round trip to Maxima
     try:
         return expr.simplify_full() if expr.variables() else expr.simplify()
     except (TypeError, ValueError):

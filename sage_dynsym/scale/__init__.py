@@ -11,9 +11,9 @@ scheduler when there is one, or plain NumPy in this process:
 - :func:`~sage_dynsym.scale.maps.stability_map` -- the stability of a linear
   system over a grid or random samples of parameters, a
   :class:`~sage_dynsym.scale.maps.StabilityMap`;
-- :func:`~sage_dynsym.scale.sweep.sweep` -- any function of the parameters
+- :func:`~sage_dynsym.scale.sweeps.sweep` -- any function of the parameters
   (or a model's simulation) over the same kind of points, a
-  :class:`~sage_dynsym.scale.sweep.Sweep`.
+  :class:`~sage_dynsym.scale.sweeps.Sweep`.
 
 See :mod:`sage_dynsym.scale.cluster` for where the chunks run.
 
@@ -24,7 +24,7 @@ The names are imported on first use: the command line
 import importlib
 
 _SOURCE = {'stability_map': '.maps', 'StabilityMap': '.maps', 'model_linear_system': '.maps',
-           'sweep': '.sweep', 'Sweep': '.sweep', 'stability_class': '.kernel'}
+           'sweep': '.sweeps', 'Sweep': '.sweeps', 'stability_class': '.kernel'}
 
 __all__ = list(_SOURCE)
 

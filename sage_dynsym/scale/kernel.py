@@ -417,7 +417,7 @@ def stability_class(roots, tol=1e-9, marginal_tol=1e-7):
     The stability class of one set of characteristic roots (or of the
     eigenvalues of a square matrix): ``2`` asymptotically stable, ``1``
     stable in first approximation, ``0`` unstable (see :func:`classify`);
-    for the functions of a :func:`~sage_dynsym.scale.sweep.sweep`.
+    for the functions of a :func:`~sage_dynsym.scale.sweeps.sweep`.
 
     INPUT:
 

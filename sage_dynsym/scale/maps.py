@@ -1074,7 +1074,7 @@ def class_plot(X, Y, classes, options=None):
     A picture of stability classes on a grid (``classes[i, j]`` at
     ``X[i], Y[j]``; ``2``, ``1``, ``0``, ``-1`` as in
     :meth:`StabilityMap.classes`), with a legend of the classes present;
-    also for the results of a :func:`~sage_dynsym.scale.sweep.sweep`.
+    also for the results of a :func:`~sage_dynsym.scale.sweeps.sweep`.
 
     EXAMPLES::
 
@@ -1198,6 +1198,15 @@ def _shift(a, axis, combine):
 #: Points per axis of the grid on which the exact region is drawn.
 BOUNDARY_POINTS = 600
 
+#: The options of a contour primitive (``ContourPlot``) that the boundary
+#: takes from the caller's, and the defaults ``contour_plot`` would give it.
+_CONTOUR_OPTIONS = ('linewidths', 'linestyles', 'zorder')
+_CONTOUR_DEFAULTS = dict(
+    fill=False, contours=[0.5], cmap=['black'], linewidths=None, linestyles=None, labels=False,
+    colorbar=False, legend_label=None,
+    colorbar_options=dict(orientation='vertical', format=None, spacing='uniform'),
+    label_options=dict(fontsize=9, colors='blue', inline=True, inline_spacing=3, fmt="%1.2f"))
+
 
 def _exact_boundary(conditions, fixed, keys, axes, options):
     r"""
@@ -1208,7 +1217,7 @@ def _exact_boundary(conditions, fixed, keys, axes, options):
     line where the conditions hold (or fail) on both sides. Empty when the
     boundary does not cross the plotted box.
     """
-    from sage.plot.contour_plot import contour_plot
+    from sage.plot.contour_plot import ContourPlot
     from sage.plot.graphics import Graphics
     (x, y), (X, Y) = keys, axes
     alternatives, program = _compiled_conditions(conditions, fixed, [x, y],
@@ -1220,12 +1229,12 @@ def _exact_boundary(conditions, fixed, keys, axes, options):
     inside = _holds(program, alternatives, [gx.ravel(), gy.ravel()], n * n).reshape(n, n)
     if inside.all() or not inside.any():
         return Graphics()
-    lookup = inside.astype(float)
-
-    def indicator(u, v):
-        i = min(n - 1, max(0, int(round((u - xs[0]) / (xs[-1] - xs[0]) * (n - 1)))))
-        j = min(n - 1, max(0, int(round((v - ys[0]) / (ys[-1] - ys[0]) * (n - 1)))))
-        return lookup[i, j]
-
-    return contour_plot(indicator, (xs[0], xs[-1]), (ys[0], ys[-1]), contours=[0.5],
-                        fill=False, cmap=['black'], plot_points=n, **options)
+    # The indicator is already on the grid: it goes to the contour primitive
+    # as data (rows along y), not through contour_plot, which would call a
+    # Python function at each of the n^2 points again.
+    settings = dict(_CONTOUR_DEFAULTS, plot_points=n)
+    settings.update((key, options[key]) for key in _CONTOUR_OPTIONS if key in options)
+    boundary = Graphics()
+    boundary.add_primitive(ContourPlot(inside.T.astype(float), (xs[0], xs[-1]),
+                                       (ys[0], ys[-1]), settings))
+    return boundary

@@ -269,7 +269,7 @@ class ModelRun:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.scale.sweep import ModelRun
+        sage: from sage_dynsym.scale.sweeps import ModelRun
         sage: class Echo:
         ....:     def simulate(self, values, scale=1):
         ....:         return {str(k): scale * v for k, v in values.items()}
