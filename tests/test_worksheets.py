@@ -8,8 +8,6 @@ from pathlib import Path
 
 import pytest
 
-from conftest import slow_except
-
 WORKSHEETS = sorted((Path(__file__).resolve().parent.parent / "worksheets").glob("*.ipynb"))
 
 
@@ -17,8 +15,9 @@ def test_there_are_worksheets():
     assert len(WORKSHEETS) >= 8
 
 
-# one worksheet in `make test`; all of them in `make test-slow` (CI) and `make worksheets`
-@pytest.mark.parametrize("path", slow_except(WORKSHEETS, WORKSHEETS[:1], ids=lambda p: p.stem))
+# a Jupyter kernel each (10 s): all of them in `make test-slow` (CI) and `make worksheets`
+@pytest.mark.slow
+@pytest.mark.parametrize("path", WORKSHEETS, ids=lambda p: p.stem)
 def test_worksheet_runs(path, tmp_path):
     nbformat = pytest.importorskip("nbformat")
     pytest.importorskip("nbclient")
