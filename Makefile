@@ -49,15 +49,24 @@ chromium:
 DOCTEST_ENV := PYTHONPATH=tests$${PYTHONPATH:+:$$PYTHONPATH}
 DOCTEST := $(DOCTEST_ENV) $(SAGE) -t --force-lib -p 2 --environment=sage_doctest_environment
 
-doctest: $(STAMP)
-	$(DOCTEST) sage_dynsym doc/*.rst
+# the files in the order of their last times, slowest first (sage -t's own
+# order; on a machine where it never ran, from tests/doctest_timings.json):
+# no slow file left for the end, with the other process idle
+DOCTEST_STATS := $(VENV)/doctest-timings.json
+
+$(DOCTEST_STATS): tests/doctest_timings.json | $(STAMP)
+	cp tests/doctest_timings.json $@
+
+doctest: $(STAMP) $(DOCTEST_STATS)
+	$(DOCTEST) --stats-path=$(DOCTEST_STATS) sage_dynsym doc/*.rst
 
 # the examples marked `# long time` (pictures), in the files that have them
 doctest-long: $(STAMP)
 	$(DOCTEST) --long $$(grep -rl --include='*.py' --include='*.rst' '# long time' sage_dynsym doc --exclude-dir=_build)
 
-# two processes (pytest-xdist); the slowest tests listed at the end
-PYTEST := $(PY) -m pytest -q -n 2 --dist loadfile --durations=10
+# two processes (pytest-xdist), a file's tests on one process, the slowest
+# files first (tests/conftest.py); the slowest tests listed at the end
+PYTEST := $(PY) -m pytest -q -n 2 --dist loadfile --no-loadscope-reorder --durations=10
 
 pytest: $(STAMP) kernel
 	$(PYTEST) -m "not slow" tests --ignore=tests/browser

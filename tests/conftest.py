@@ -44,3 +44,15 @@ def fuzz_settings(n):
     from hypothesis import HealthCheck, settings
     return settings(max_examples=n if FULL_FUZZ else max(10, n // 5), deadline=None,
                     derandomize=True, database=None, suppress_health_check=list(HealthCheck))
+
+
+def pytest_collection_modifyitems(config, items):
+    r"""The test files slowest first (their seconds in ``make test``, from
+    ``tests/pytest_timings.json``; a file not listed counts as fast), so that
+    the two processes of ``make test`` (``--dist loadfile
+    --no-loadscope-reorder``) do not end with one long file on one process
+    while the other waits. Within a file the order is unchanged."""
+    import json
+    from pathlib import Path
+    seconds = json.loads((Path(__file__).parent / "pytest_timings.json").read_text())
+    items.sort(key=lambda item: -seconds.get(item.path.name, 0.0))   # a stable sort

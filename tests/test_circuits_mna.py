@@ -334,6 +334,7 @@ def test_linearize_and_positive():
     assert lin.jacobian().nrows() == 2
 
 
+@pytest.mark.slow       # eight nonlinear circuits solved by SciPy: `make test-slow` (CI)
 def test_nonlinear_circuits_without_split_match_kirchhoff():
     # circuits with nonlinear resistors i = c1/2 u + c3/5 u^3 and no
     # Brayton-Moser split, against the Kirchhoff solver (scipy root finding)

@@ -101,9 +101,10 @@ def cross_check(seed, sizes, n_matrices, points, function, positive_a=False):
     return mismatches, seen
 
 
-@pytest.mark.parametrize("seed,sizes,n", [pytest.param(901, (2,), 80, marks=pytest.mark.slow),
-                                          pytest.param(902, (3,), 80, marks=pytest.mark.slow),
-                                          (903, (2, 3), 40)])
+# random matrices against NumPy's eigenvalues: `make test-slow` (CI); in
+# `make test` the two tests below (a declared sign, Sylvester's conditions)
+@pytest.mark.slow
+@pytest.mark.parametrize("seed,sizes,n", [(901, (2,), 80), (902, (3,), 80), (903, (2, 3), 40)])
 def test_definiteness_conditions_agree_with_eigenvalues(seed, sizes, n):
     mismatches, seen = cross_check(seed, sizes, n, 6, definiteness_conditions)
     # the sample must contain both definite and indefinite cases

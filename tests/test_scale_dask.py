@@ -12,6 +12,7 @@ import pytest
 from distributed import Client, LocalCluster
 
 import scale_helpers
+from conftest import slow_except
 from sage.all import var
 
 from sage_dynsym import load
@@ -46,7 +47,9 @@ def same(S, T):
         np.array_equal(S.stable(), T.stable())
 
 
-@pytest.mark.parametrize("method", ["polynomial", "eigvals"])
+# the polynomial method in `make test`; both, and the other comparisons of one
+# and two workers with NumPy, the interrupt and the progress bar in `make test-slow` (CI)
+@pytest.mark.parametrize("method", slow_except(["polynomial", "eigvals"], ["polynomial"]))
 def test_map_identical_with_one_two_workers_and_numpy(clients, ladder, method):
     args = dict(fixed=LADDER_FIXED, method=method, chunk_size=500)     # 6 chunks
     plain = stability_map(ladder, LADDER_GRID, client=False, **args)
@@ -56,6 +59,7 @@ def test_map_identical_with_one_two_workers_and_numpy(clients, ladder, method):
     assert 0.1 < plain.stable().mean() < 0.9
 
 
+@pytest.mark.slow
 def test_random_samples_identical_with_one_two_workers_and_numpy(clients, ladder):
     args = dict(fixed=LADDER_FIXED, samples=5000, seed=11, chunk_size=700)
     plain = stability_map(ladder, LADDER_GRID, client=False, **args)
@@ -71,6 +75,7 @@ def test_workers_do_not_load_sage(clients, ladder):
     assert all(v == [] for v in loaded.values())
 
 
+@pytest.mark.slow
 def test_sweep_identical_with_one_two_workers_and_numpy(clients):
     grid = {'a': (0, 1, 7), 'b': (-1, 1, 5)}
     plain = sweep(scale_helpers.product, grid, fixed={'c': 3.0}, client=False)
@@ -130,6 +135,7 @@ def test_own_cluster_is_closed(ladder):
     assert children() <= before
 
 
+@pytest.mark.slow
 def test_interrupt_cancels_and_closes(ladder):
     before = children()
     started = threading.Event()
@@ -188,6 +194,7 @@ def test_scheduler_without_workers(ladder):
                   timeout=1)
 
 
+@pytest.mark.slow
 def test_progress_bar(clients, ladder, capsys):
     S = stability_map(ladder, LADDER_GRID, fixed=LADDER_FIXED, client=clients[2], chunk_size=500,
                       progress=True)
