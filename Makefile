@@ -10,7 +10,7 @@ STAMP  := $(VENV)/.installed
 KERNEL := $(VENV)/share/jupyter/kernels/sagemath/kernel.json
 CHROMIUM ?= /usr/bin/chromium
 
-.PHONY: setup run test test-slow doctest doctest-long pytest pytest-slow worksheets docs browser kernel chromium bench venv clean
+.PHONY: setup timings run test test-slow doctest doctest-long pytest pytest-slow worksheets docs browser kernel chromium bench venv clean
 
 venv: $(STAMP)
 
@@ -59,6 +59,11 @@ $(DOCTEST_STATS): tests/doctest_timings.json | $(STAMP)
 
 doctest: $(STAMP) $(DOCTEST_STATS)
 	$(DOCTEST) --stats-path=$(DOCTEST_STATS) sage_dynsym doc/*.rst
+
+# refresh tests/doctest_timings.json and tests/pytest_timings.json (the
+# order of make test) after `make doctest`, from a timed run of the pytest set
+timings: $(STAMP) kernel
+	$(PY) tests/update_timings.py
 
 # the examples marked `# long time` (pictures), in the files that have them
 doctest-long: $(STAMP)
