@@ -24,11 +24,11 @@ and negative, along `b`::
 import random
 
 from sage.rings.rational_field import QQ
-from sage.symbolic.relation import solve
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..algebra.conditions import region_holds
+from ..algebra.radicals import roots_in_radicals
 
 
 def _candidates(boundaries, parameter):
@@ -37,13 +37,9 @@ def _candidates(boundaries, parameter):
         for r in relations:
             f = SR(r.lhs() - r.rhs()) if SR(r).is_relational() else SR(r)
             for factor, _ in f.factor_list():
-                if not factor.has(parameter):
-                    continue
-                for s in solve(factor == 0, parameter):
-                    value = s.rhs()
-                    if s.lhs() is not None and not value.has(parameter) and \
-                            all(str(value) != str(v) for v in found):
-                        found.append(value)
+                if factor.has(parameter):
+                    roots = roots_in_radicals(factor, parameter, entry="critical_values")
+                    found += [v for v in roots if all(str(v) != str(w) for w in found)]
     return found
 
 

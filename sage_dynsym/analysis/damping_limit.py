@@ -32,7 +32,7 @@ EXAMPLES::
     sage: lim.region()
     [[28*P*l - 41*k < 0]]
     sage: lim.critical_values(P)
-    {'small damping limit': [41/28*k/l], 'undamped': [-1/2*k*(2*sqrt(2) - 7)/l]}
+    {'small damping limit': [41/28*k/l], 'undamped': [-sqrt(2)*k/l + 7/2*k/l]}
 
 REFERENCES:
 

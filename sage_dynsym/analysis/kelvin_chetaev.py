@@ -61,7 +61,7 @@ joints, masses `2m` and `m`, a follower load `P` at the free end; Ziegler
     sage: v.boundaries()
     {'flutter': [4*P^2*l^2 - 28*P*k*l + 41*k^2 == 0]}
     sage: v.critical_values(P)
-    [-1/2*k*(2*sqrt(2) - 7)/l]
+    [-sqrt(2)*k/l + 7/2*k/l]
 
 **Gyroscopic stabilization** of an unstable potential `K = -\mathrm{diag}(a,
 b)` (degree of instability 2): stable in first approximation iff `2g >

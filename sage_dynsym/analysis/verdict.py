@@ -274,7 +274,7 @@ class StabilityVerdict(SageObject):
             sage: v = kelvin_chetaev(M, zero_matrix(2), zero_matrix(2), (W + W.T)/2,
             ....:                    (W - W.T)/2, positive=[k, l, m])
             sage: v.critical_values(P)
-            [-1/2*k*(2*sqrt(2) - 7)/l]
+            [-sqrt(2)*k/l + 7/2*k/l]
             sage: v.critical_values(P, values={k: 1, l: 2})
             [-1/2*sqrt(2) + 7/4]
 
