@@ -14,7 +14,7 @@ EXAMPLES::
     sage: from sage_dynsym.algebra.radicals import roots_in_radicals
     sage: p, k, l = var('p k l')
     sage: roots_in_radicals(4*p^2*l^2 - 28*p*k*l + 41*k^2, p)
-    [sqrt(2)*k/l + 7/2*k/l, -sqrt(2)*k/l + 7/2*k/l]
+    [-sqrt(2)*k/l + 7/2*k/l, sqrt(2)*k/l + 7/2*k/l]
 """
 from sage.misc.functional import sqrt
 from sage.rings.rational_field import QQ
@@ -34,8 +34,8 @@ def roots_in_radicals(f, x, entry="roots_in_radicals"):
     - ``entry`` -- (optional) the entry point named in errors
 
     OUTPUT: a list of symbolic expressions, one root of a linear ``f``, the
-    two roots (``+`` first, equal or complex ones included) of a quadratic
-    one. A polynomial of higher degree, or an ``f`` that is not polynomial
+    two roots of a quadratic one (equal or complex ones included), the one
+    written with `-\sqrt{\ }` first, as Maxima's ``solve`` lists them. A polynomial of higher degree, or an ``f`` that is not polynomial
     in ``x``, is an :class:`~sage_dynsym.errors.AnalysisError`: no root is
     ever left out silently.
 
@@ -46,11 +46,11 @@ def roots_in_radicals(f, x, entry="roots_in_radicals"):
         sage: roots_in_radicals(p*l - k, p)
         [k/l]
         sage: roots_in_radicals(p^2 - 2*k*p - l^2, p)    # the root of 4 (k^2 + l^2)
-        [k + sqrt(k^2 + l^2), k - sqrt(k^2 + l^2)]
+        [k - sqrt(k^2 + l^2), k + sqrt(k^2 + l^2)]
         sage: roots_in_radicals(p^2 - k^2*l^2, p)        # a square comes out of the root
-        [k*l, -k*l]
+        [-k*l, k*l]
         sage: roots_in_radicals(p^2 - 2*k*p/l + 1/l^2, p)   # a square denominator too
-        [k/l + sqrt(k^2 - 1)/l, k/l - sqrt(k^2 - 1)/l]
+        [k/l - sqrt(k^2 - 1)/l, k/l + sqrt(k^2 - 1)/l]
 
     The formulas hold::
 
@@ -85,21 +85,49 @@ def roots_in_radicals(f, x, entry="roots_in_radicals"):
     a = [f.coefficient(x, k) for k in range(degree + 1)]
     if degree == 1:
         return [(-a[0] / a[1]).normalize()]
-    square, rest = _square_part(a[1]**2 - 4 * a[2] * a[0])
-    # both signs are listed, so the sign of the square's root does not matter
-    middle, half_width = (-a[1] / (2 * a[2])).normalize(), (square / (2 * a[2])).normalize()
-    return [middle + e * half_width * sqrt(rest.expand()) for e in (1, -1)]
+    square, content, rest = _square_part(a[1]**2 - 4 * a[2] * a[0])
+    middle = (-a[1] / (2 * a[2])).normalize()
+    half_width = (square / (2 * a[2])).normalize() * sqrt(content)
+    if str(half_width).startswith('-'):
+        half_width = -half_width    # both roots are listed: written with - first, then +
+    return [middle + e * half_width * sqrt(rest) for e in (-1, 1)]
 
 
 def _square_part(discriminant):
-    r"""``(s, r)`` with ``discriminant = s^2 r``: ``s`` the factors of even
-    multiplicity (negative ones too: denominators), halved."""
-    square, rest = SR(1), SR(1)
+    r"""``(s, c, r)`` with ``discriminant = s^2 c r``: ``s`` the factors of
+    even multiplicity (negative ones too: denominators), halved; ``c`` the
+    positive rational content of the others when it is a square (else 1),
+    ``r`` the rest, expanded."""
+    square, odd, other = SR(1), SR(1), SR(1)
     for factor, m in SR(discriminant).factor_list():
         m = QQ(m)
         if m.is_integer():
             m = int(m)          # not in QQ, where // is exact division
-            square, rest = square * factor**(m // 2), rest * factor**(m % 2)
+            square, odd = square * factor**(m // 2), odd * factor**(m % 2)
         else:
-            rest *= factor**m
-    return square, rest
+            other *= factor**m
+    odd = odd.expand()
+    content = _content(odd)
+    if not content.is_square():             # its root would only split the radical
+        content = QQ(1)
+    return square, content, (odd / content).expand() * other
+
+
+def _content(f):
+    r"""The positive rational gcd of the numerical coefficients of the terms
+    of the sum ``f`` (1 when there is none to take)."""
+    from sage.arith.misc import gcd
+    from sage.symbolic.operators import add_vararg, mul_vararg
+    coefficients = []
+    for term in (f.operands() if f.operator() is add_vararg else [f]):
+        if term.is_numeric():
+            coefficients.append(term)
+        elif term.operator() is mul_vararg:
+            numeric = [o for o in term.operands() if o.is_numeric()]
+            coefficients.append(numeric[0] if numeric else 1)
+        else:
+            coefficients.append(1)
+    try:
+        return abs(gcd([QQ(c) for c in coefficients])) or QQ(1)
+    except (TypeError, ValueError):
+        return QQ(1)

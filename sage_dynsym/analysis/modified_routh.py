@@ -80,13 +80,13 @@ from sage.matrix.constructor import matrix
 from sage.rings.complex_mpfr import ComplexField
 from sage.structure.sage_object import SageObject
 from sage.symbolic.function_factory import function as symbolic_function
-from sage.symbolic.relation import solve
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..symbols import velocity
 from .linear import equations_of_motion
-from ..algebra.solving import solve_exactly, normalize
+from ..algebra.radicals import roots_in_radicals
+from ..algebra.solving import solve_exactly, solve_transcendental, normalize
 
 #: Random complex points at which an equation of motion that Sage does not
 #: simplify to zero is evaluated on a family.
@@ -447,14 +447,27 @@ class ModifiedRouthLyapunov(SageObject):
         rhs = [-rest - sum(constants)] + constants
         branches = []
         for F, ui, c in zip(separated, u, rhs):
-            roots = [s.rhs() for s in solve(F == c, ui) if s.lhs() is not None]
-            roots = [x for x in roots if not x.has(ui)]
-            if not roots:
-                raise AnalysisError(f"cannot solve the separated equation {F} == {c} for "
-                                    f"the unknown function explicitly", entry=_WHAT)
-            branches.append(roots)
+            branches.append(self._separated_roots(F - c, ui))
         return [{f: x for f, x in zip(self._fs, choice)}
                 for choice in itertools.product(*branches)]
+
+    @staticmethod
+    def _separated_roots(equation, ui):
+        r"""The values of the unknown function ``ui`` solving ``equation = 0``:
+        by the formulas of degrees one and two, else by the documented
+        fallback for equations that are not algebraic (explicit, verified
+        solutions only)."""
+        if equation.has(ui) and equation.is_polynomial(ui) and equation.degree(ui) <= 2:
+            return roots_in_radicals(equation, ui, entry=_WHAT)
+        try:
+            found = solve_transcendental([equation], [ui], reason="a separated equation")
+        except AnalysisError:
+            found = []
+        roots = [s.values()[ui] for s in found]
+        if not roots:
+            raise AnalysisError(f"cannot solve the separated equation {equation} == 0 for the "
+                                "unknown function explicitly", entry=_WHAT)
+        return roots
 
     def invariant_manifolds(self):
         r"""

@@ -1,0 +1,47 @@
+"""Roots in radicals (sage_dynsym.algebra.radicals) of random linear and
+quadratic polynomials with symbolic coefficients, against NumPy's roots of
+the same polynomial at random values of the parameters."""
+import random
+
+import numpy as np
+import pytest
+from sage.all import SR, var
+
+from sage_dynsym.algebra.radicals import roots_in_radicals
+
+p, k, l = var('p k l')
+
+
+def random_coefficient(rng):
+    # a small polynomial in k and l, sometimes over a square denominator
+    c = sum(rng.randint(-3, 3) * m for m in (1, k, l, k * l, k**2, l**2))
+    return c / l**2 if rng.random() < 0.2 else c
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_roots_agree_with_numpy(seed):
+    rng = random.Random(seed)
+    checked = 0
+    while checked < 10:
+        degree = rng.choice([1, 2])
+        a = [random_coefficient(rng) for _ in range(degree + 1)]
+        if SR(a[-1]).is_zero():
+            continue
+        f = sum(c * p**i for i, c in enumerate(a))
+        roots = roots_in_radicals(f, p)
+        assert len(roots) == degree and all(not r.has(p) for r in roots)
+        for _ in range(3):
+            at = {k: rng.uniform(0.5, 2), l: rng.uniform(0.5, 2)}
+            top = complex(SR(a[-1]).subs(at))
+            if abs(top) < 1e-6:
+                continue
+            expected = np.roots([complex(SR(c).subs(at)) for c in reversed(a)])
+            got = [complex(SR(r).subs(at)) for r in roots]
+            scale = max(1.0, float(np.max(np.abs(expected))))
+            # the same roots with their multiplicities: each expected root
+            # takes the nearest of the roots not taken yet
+            for z in expected:
+                nearest = min(got, key=lambda w: abs(w - z))
+                assert abs(nearest - z) < 1e-9 * scale, (f, at, roots)
+                got.remove(nearest)
+        checked += 1
