@@ -35,9 +35,10 @@ def roots_in_radicals(f, x, entry="roots_in_radicals"):
 
     OUTPUT: a list of symbolic expressions, one root of a linear ``f``, the
     two roots of a quadratic one (equal or complex ones included), the one
-    written with `-\sqrt{\ }` first, as Maxima's ``solve`` lists them. A polynomial of higher degree, or an ``f`` that is not polynomial
-    in ``x``, is an :class:`~sage_dynsym.errors.AnalysisError`: no root is
-    ever left out silently.
+    written with `-\sqrt{\ }` first, as Maxima's ``solve`` lists them. A
+    polynomial of higher degree, or an ``f`` that is not polynomial in
+    ``x``, is an :class:`~sage_dynsym.errors.AnalysisError`: no root is ever
+    left out silently.
 
     EXAMPLES::
 

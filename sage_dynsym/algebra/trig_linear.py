@@ -24,7 +24,7 @@ EXAMPLES::
     sage: a, r = var('a r')
     sage: K = TrigFractionField([cos(a), sin(a), r])
     sage: A = K.matrix([[cos(a), -sin(a)], [sin(a), cos(a)]])
-    sage: X = K.solve(A, K.matrix([[r], [0]])); K.expressions(X)
+    sage: X = K.solve_right(A, K.matrix([[r], [0]])); K.expressions(X)
     [[r*cos(a)], [-r*sin(a)]]
     sage: K.rank(K.matrix([[cos(a)^2, 1 - sin(a)^2], [1, 1]]))
     1
@@ -229,7 +229,7 @@ class TrigFractionField:
         """
         return len(self._eliminate(A)[2]) if A else 0
 
-    def solve(self, A, B):
+    def solve_right(self, A, B):
         r"""
         The solution `X` of `AX = B` (lists of rows); `A` must have full
         column rank and the system must be consistent, else ``None``.
@@ -239,11 +239,11 @@ class TrigFractionField:
             sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: x = var('x'); K = TrigFractionField([x])
             sage: A = K.matrix([[1, 0], [0, x], [1, x]])
-            sage: K.expressions(K.solve(A, K.matrix([[1], [x], [1 + x]])))
+            sage: K.expressions(K.solve_right(A, K.matrix([[1], [x], [1 + x]])))
             [[1], [1]]
-            sage: K.solve(A, K.matrix([[1], [x], [0]])) is None
+            sage: K.solve_right(A, K.matrix([[1], [x], [0]])) is None
             True
-            sage: K.solve(K.matrix([[1, 1], [1, 1]]), K.matrix([[1], [1]])) is None
+            sage: K.solve_right(K.matrix([[1, 1], [1, 1]]), K.matrix([[1], [1]])) is None
             True
         """
         width = len(A[0]) if A else 0

@@ -331,7 +331,7 @@ class _Linearization:
                 raise AnalysisError(f"the constraints do not determine the velocities "
                                     f"{_names(unknown)} along the motion; give the missing ones "
                                     "in the operating point's velocities", entry="linearize")
-            X = K.solve(A, b)
+            X = K.solve_right(A, b)
         else:
             X = [] if all(K.is_zero(x[0]) for x in b) else None
         if X is None:
@@ -449,7 +449,7 @@ class _Linearization:
         Cu = [[row[j] for j in self.u] for row in C0]
         # B0: speeds to velocities (identity on the speeds)
         negCu = [[-x for x in row] for row in Cu]
-        Bw = K.solve(Cw, negCu) if self.w else []
+        Bw = K.solve_right(Cw, negCu) if self.w else []
         self.B0 = self._embed(Bw, len(self.u))
         for a, i in enumerate(self.u):
             self.B0[i][a] = K.one
@@ -468,7 +468,7 @@ class _Linearization:
         K = self.K
         if not self.w:
             return [[K.zero] * width for _ in range(self.n)]
-        return self._embed(K.solve(self.Cw, rhs), width)
+        return self._embed(K.solve_right(self.Cw, rhs), width)
 
     def residuals(self):
         # Kane's equations of the speeds along the motion: (speed, value)
@@ -487,7 +487,7 @@ class _Linearization:
                                 + "; ".join(f"[{v}] {e} != 0" for v, e in bad) + ")",
                                 entry="linearize")
         Ct = [list(col) for col in zip(*self.C0m)]
-        nu = K.solve(Ct, E0) if self.m else []
+        nu = K.solve_right(Ct, E0) if self.m else []
         self.nu0 = [x[0] for x in nu]
 
     def dependent_coordinates(self):
@@ -517,7 +517,7 @@ class _Linearization:
             Q[i][a] = K.one
         if chosen:
             Jd = [[row[j] for j in chosen] for row in J]
-            solved = K.solve(Jd, [[-row[j] for j in self.o] for row in J])
+            solved = K.solve_right(Jd, [[-row[j] for j in self.o] for row in J])
             for a, i in enumerate(chosen):
                 Q[i] = solved[a]
         self.Q = Q

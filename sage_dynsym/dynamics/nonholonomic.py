@@ -319,7 +319,7 @@ class NonholonomicLagrangian(Lagrangian):
             K, rhs, unknowns = self._acceleration_system()
             try:
                 field = TrigFractionField(K.list() + rhs)
-                X = field.solve(field.matrix(K), [[field(v)] for v in rhs])
+                X = field.solve_right(field.matrix(K), [[field(v)] for v in rhs])
                 values = [field.expression(x[0]) for x in X]
             except AnalysisError:   # not rational in the sines and cosines
                 X = K.solve_right(matrix(SR, [[v] for v in rhs]))

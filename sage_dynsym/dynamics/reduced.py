@@ -268,7 +268,7 @@ def _solve(A, B):
     # A X = B exactly (rational functions of sines and cosines), else in SR
     try:
         K = TrigFractionField(A.list() + B.list())
-        X = K.solve(K.matrix(A), K.matrix(B))
+        X = K.solve_right(K.matrix(A), K.matrix(B))
         if X is not None:
             return K.expressions(X)
     except AnalysisError:
