@@ -1,4 +1,6 @@
 """pytest set-up: Sage must be fully initialised before sage_dynsym is used."""
+import os
+
 import sage.all  # noqa: F401
 
 
@@ -34,7 +36,7 @@ def run_cli(*args):
 #: ``make test`` runs each property-based test (marked ``fuzz``) on a fifth of
 #: its examples; ``make test-slow`` (CI) sets SAGE_DYNSYM_FUZZ=full and runs
 #: them again on all of them.
-FULL_FUZZ = __import__("os").environ.get("SAGE_DYNSYM_FUZZ") == "full"
+FULL_FUZZ = os.environ.get("SAGE_DYNSYM_FUZZ") == "full"
 
 
 def fuzz_settings(n):
