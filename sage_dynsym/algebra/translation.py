@@ -262,18 +262,18 @@ class Translation:
         return self._atom(e)
 
     def _parameter(self, e):
-        name = str(e)
-        if self._FF is None:
-            self._parameter_names.setdefault(name, e)
-            return None
-        return self._FF(self._param_gen[name])
+        return self._coefficient(self._parameter_names, e)
 
     def _atom(self, e):
-        key = str(e)
+        return self._coefficient(self._atoms, e)
+
+    def _coefficient(self, seen, e):
+        # first pass (no field yet): record e under its name in ``seen``;
+        # second pass: e as a generator of the coefficient field
         if self._FF is None:
-            self._atoms.setdefault(key, e)
+            seen.setdefault(str(e), e)
             return None
-        return self._FF(self._param_gen[key])
+        return self._FF(self._param_gen[str(e)])
 
     def _trig(self, op, argument):
         # argument = sum k_j u_j + rest, k_j integers, rest free of unknowns

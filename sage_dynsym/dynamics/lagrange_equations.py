@@ -14,8 +14,8 @@ EXAMPLES::
     sage: from sage_dynsym import Lagrangian
     sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
     sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi])
-    sage: L.lagrange_equations()
-    [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
+    sage: L.accelerations_solved()      # the equations (5) solved for ddr, ddphi
+    [(dphi^2*m - k)*r/m, -2*dphi*dr/r]
 """
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method

@@ -13,8 +13,10 @@ EXAMPLES::
     sage: from sage_dynsym import MechanicalSystem, RigidBody
     sage: a, b = var('a b')
     sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a), (1, b)])], [a, b])
-    sage: S.angular_velocity(1)
-    (db, da*sin(b), da*cos(b))
+    sage: S.direction_cosines(1)        # the body's axes in the inertial ones
+    [        cos(a) -cos(b)*sin(a)  sin(a)*sin(b)]
+    [        sin(a)  cos(a)*cos(b) -cos(a)*sin(b)]
+    [             0         sin(b)         cos(b)]
 """
 
 
