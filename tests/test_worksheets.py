@@ -15,6 +15,15 @@ def test_there_are_worksheets():
     assert len(WORKSHEETS) >= 8
 
 
+@pytest.mark.parametrize("path", WORKSHEETS, ids=lambda p: p.stem)
+def test_worksheet_is_a_valid_notebook(path):
+    # nbformat's own schema: Jupyter and nbconvert refuse (or warn on) any
+    # other shape, e.g. "outputs" on a markdown cell
+    import nbformat
+    with open(path, encoding="utf-8") as handle:
+        nbformat.validate(nbformat.read(handle, as_version=nbformat.NO_CONVERT))
+
+
 # a Jupyter kernel each (10 s): all of them in `make test-slow` (CI) and `make worksheets`
 @pytest.mark.slow
 @pytest.mark.parametrize("path", WORKSHEETS, ids=lambda p: p.stem)
