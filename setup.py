@@ -10,7 +10,30 @@ setup(
                  "systems (rigid bodies, electrical circuits) in SageMath"),
     long_description=open("README.md", encoding="utf-8").read(),
     long_description_content_type="text/markdown",
+    author="The sage_dynsym developers",
+    author_email="maintainers@users.noreply.h-seed-5afc3da0.example",
+    # an SPDX expression (Metadata 2.4: License-Expression; no license classifier)
     license="GPL-2.0-or-later",
+    # the full text, in the source distribution and in the wheel
+    license_files=["LICENSE"],
+    keywords=("SageMath analytical-mechanics Lagrangian Hamiltonian Routh "
+              "stability Lyapunov circuits Brayton-Moser Lie-Poisson"),
+    classifiers=[
+        "Development Status :: 3 - Alpha",
+        "Intended Audience :: Science/Research",
+        "Intended Audience :: Education",
+        "Operating System :: POSIX :: Linux",
+        "Operating System :: MacOS",
+        "Programming Language :: Python :: 3",
+        "Programming Language :: Python :: 3 :: Only",
+        "Programming Language :: Python :: 3.10",
+        "Programming Language :: Python :: 3.11",
+        "Programming Language :: Python :: 3.12",
+        "Topic :: Scientific/Engineering :: Mathematics",
+        "Topic :: Scientific/Engineering :: Physics",
+        "Topic :: Scientific/Engineering :: Electronic Design Automation (EDA)",
+        "Framework :: Jupyter",
+    ],
     python_requires=">=3.10",
     packages=find_packages(include=["sage_dynsym", "sage_dynsym.*"]),
     # Sage itself is not listed: inside an existing SageMath it is already
