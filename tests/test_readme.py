@@ -20,7 +20,7 @@ def readme_block():
 
 
 def checkout_copy(tmp_path):
-    # the block reads examples/ and writes its pictures in the current folder
+    # the block reads examples/ and writes its pictures in output/
     shutil.copytree(ROOT / "examples", tmp_path / "examples")
     return tmp_path
 
@@ -38,7 +38,7 @@ def check_output(out, folder):
     assert drift and drift[0] < 1e-8
     assert "void mass_matrix_and_forcing" in out
     for picture in ("pendulum_theta.png", "pendulum_phase.png"):
-        assert (folder / picture).stat().st_size > 1000
+        assert (folder / "output" / picture).stat().st_size > 1000
 
 
 def test_readme_block_as_a_script(tmp_path):
