@@ -32,6 +32,51 @@ from ..symbols import t as _t
 from .form import deferred
 
 
+class State(dict):
+    r"""
+    A state of a trajectory: a dict over the state variables (symbols) that
+    also finds a value by the variable's name, as :meth:`Trajectory.values`
+    does (``state['dx']`` and ``state[dx]`` are the same value).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.trajectory import State
+        sage: x, dx = var('x dx')
+        sage: s = State({x: float(1), dx: float(-2)}); s
+        {x: 1.0, dx: -2.0}
+        sage: s['dx'], s[dx], 'x' in s, s.get('y', 0)
+        (-2.0, -2.0, True, 0)
+
+    TESTS::
+
+        sage: s['y']
+        Traceback (most recent call last):
+        ...
+        KeyError: "'y' is not a state variable (they are x, dx)"
+    """
+
+    def _key(self, key):
+        if isinstance(key, str):
+            for variable in self:
+                if str(variable) == key:
+                    return variable
+        return key
+
+    def __getitem__(self, key):
+        try:
+            return dict.__getitem__(self, self._key(key))
+        except KeyError:
+            # the mapping protocol's error, with what would have been found
+            raise KeyError(f"{key!r} is not a state variable (they are "
+                           f"{', '.join(map(str, self))})") from None
+
+    def __contains__(self, key):
+        return dict.__contains__(self, self._key(key))
+
+    def get(self, key, default=None):
+        return dict.get(self, self._key(key), default)
+
+
 class Trajectory(SageObject):
     r"""
     The samples of a solution.
@@ -230,16 +275,17 @@ class Trajectory(SageObject):
         return np.array(self._array(expression), dtype=float)
 
     def final_state(self):
-        r"""The state at the last sample, as a dict over the variables.
+        r"""The state at the last sample, a :class:`State` (a dict over the
+        variables, also read by their names).
 
         EXAMPLES::
 
             sage: from sage_dynsym.numerics.trajectory import Trajectory
             sage: x = var('x')
-            sage: Trajectory([0, 1], [[1], [2]], [x], {}).final_state()
-            {x: 2.0}
+            sage: s = Trajectory([0, 1], [[1], [2]], [x], {}).final_state(); s, s['x']
+            ({x: 2.0}, 2.0)
         """
-        return dict(zip(self._variables, map(float, self._states[-1])))
+        return State(zip(self._variables, map(float, self._states[-1])))
 
     def constraint_residuals(self):
         r"""
@@ -428,7 +474,8 @@ class Trajectory(SageObject):
         The recorded zero crossings, in time order: a list of ``(time,
         index, state)``, ``index`` the position of the event in the list
         given to :func:`~sage_dynsym.numerics.simulate.simulate` and
-        ``state`` a dict over the state variables at the crossing.
+        ``state`` a :class:`State` at the crossing (a dict over the state
+        variables, also read by their names).
 
         INPUT:
 
@@ -443,8 +490,8 @@ class Trajectory(SageObject):
             ....:              {x: 1, dx: 0}, 4, events=[x, dx])
             sage: [(round(t, 9), k) for t, k, _ in T.events()]
             [(1.570796327, 0), (3.141592654, 1)]
-            sage: t, k, state = T.events(0)[0]; round(state[dx], 9)
-            -1.0
+            sage: t, k, state = T.events(0)[0]; round(state[dx], 9), round(state['dx'], 9)
+            (-1.0, -1.0)
 
         TESTS::
 
@@ -454,7 +501,7 @@ class Trajectory(SageObject):
             ...
             ModelError: events: no events were recorded: simulate with events=[...]
         """
-        return [(t, k, dict(zip(self._variables, map(float, y))))
+        return [(t, k, State(zip(self._variables, map(float, y))))
                 for t, k, y in self._recorded(index)]
 
     def event_times(self, index=0):
