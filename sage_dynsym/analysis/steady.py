@@ -260,6 +260,22 @@ def _check_point(point, q, dq, ddq):
                                 f"{given[di]}", entry="linearize")
 
 
+def _undetermined(K, A, rank, unknown, q, dq):
+    # the velocities the constraints leave free are named, and those they
+    # determine (a velocity is determined iff its column is independent of
+    # the others: dropping it lowers the rank)
+    free = [v for j, v in enumerate(unknown)
+            if K.rank([row[:j] + row[j + 1:] for row in A]) == rank]
+    derived = [v for v in unknown if v not in free]
+    coordinates = [q[dq.index(v)] for v in free]
+    raise AnalysisError(
+        (f"the constraints determine {_names(derived)} but not " if derived else
+         "the constraints do not determine ") + f"{_names(free)} along the motion; give "
+        f"{'it' if len(free) == 1 else 'them'} in the operating point's velocities (e.g. "
+        + ", ".join(f"{v}: 0" for v in free) + ") or fix " + _names(coordinates)
+        + " in its coordinates (at)", entry="linearize")
+
+
 class _Linearization:
     r"""The computation of :func:`steady_linearization` step by step."""
 
@@ -327,10 +343,9 @@ class _Linearization:
         b = [[-K(ci) - sum((K(row[dq.index(v)]) * K(val) for v, val in known.items()), K.zero)]
              for row, ci in zip(C0, c0)]
         if unknown:
-            if K.rank(A) < len(unknown):
-                raise AnalysisError(f"the constraints do not determine the velocities "
-                                    f"{_names(unknown)} along the motion; give the missing ones "
-                                    "in the operating point's velocities", entry="linearize")
+            rank = K.rank(A)
+            if rank < len(unknown):
+                _undetermined(K, A, rank, unknown, q, dq)
             X = K.solve_right(A, b)
         else:
             X = [] if all(K.is_zero(x[0]) for x in b) else None
@@ -641,6 +656,17 @@ def steady_motion_conditions(system, point, speeds=None):
         -g*m*r*sin(theta0) - ((m*r^2 - A + C)*Omega^2*sin(theta0) + (m*r^2 + C)*Omega*omega)*cos(theta0)
         sage: solve(conditions[var('dtheta')], om)
         [omega == -(g*m*r + (Omega^2*m*r^2 - (A - C)*Omega^2)*cos(theta0))*sin(theta0)/((Omega*m*r^2 + C*Omega)*cos(theta0))]
+
+    The velocities the constraints determine follow from those given (here
+    the contact point's); those they leave free must be given::
+
+        sage: point = OperatingPoint('spinning', {th: 0}, {var('dphi'): om})
+        sage: steady_motion_conditions(S, point)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: the constraints determine dx, dy but not dpsi along the motion; give it in the operating point's velocities (e.g. dpsi: 0) or fix psi in its coordinates (at)
+        sage: steady_motion_conditions(S, OperatingPoint('straight', {th: 0, psi: 0}, {var('dphi'): om}))
+        {dphi: 0, dpsi: 0, dtheta: 0}
     """
     record = system.equations_record() if hasattr(system, 'equations_record') else system
     work = _Linearization(record, point, [], speeds)
@@ -737,7 +763,7 @@ def steady_linearization(record, point, coordinates=None, speeds=None):
         ....:                      OperatingPoint('p', {}, {}), [x])
         Traceback (most recent call last):
         ...
-        AnalysisError: linearize: the constraints do not determine the velocities dx along the motion; give the missing ones in the operating point's velocities
+        AnalysisError: linearize: the constraints do not determine dx along the motion; give it in the operating point's velocities (e.g. dx: 0) or fix x in its coordinates (at)
         sage: steady_linearization(SecondOrderEquations([m*ddx], [x], [dx], [ddx]),
         ....:                      OperatingPoint('p', {x: 0}, {dx: 1}), [x])
         Traceback (most recent call last):
