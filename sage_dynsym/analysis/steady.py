@@ -222,8 +222,23 @@ class SteadyMotion(SageObject):
         return self._W
 
 
-def _split_point(point, q, dq):
-    # an OperatingPoint, or a dict over coordinates and velocities
+def split_point(point, q, dq):
+    r"""
+    The operating point ``point`` (an
+    :class:`~sage_dynsym.analysis.operating_point.OperatingPoint`, or a dict
+    over the coordinates ``q``, fixed, and the velocities ``dq``, given).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.steady import split_point
+        sage: x, dx = var('x dx')
+        sage: split_point({x: 0, dx: 1}, [x], [dx])
+        Operating point: x = 0, dx = 1
+        sage: split_point({var('y'): 0}, [x], [dx])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: y is neither coordinates nor velocities of the equations
+    """
     if isinstance(point, OperatingPoint):
         return point
     if not isinstance(point, dict):
@@ -298,7 +313,7 @@ class _Linearization:
             if any(a.has(v) for a in row for v in self.dq + self.ddq):
                 raise AnalysisError(f"the velocity constraint {g} == 0 is not linear in the "
                                     "velocities", entry="linearize")
-        self.point = _split_point(point, self.q, self.dq)
+        self.point = split_point(point, self.q, self.dq)
         _check_point(self.point, self.q, self.dq, self.ddq)
         coordinates = self.point.coordinates() if coordinates is None else coordinates
         if coordinates is None:
@@ -675,45 +690,6 @@ def steady_motion_conditions(system, point, speeds=None):
     work.field()
     work.choose_speeds()
     return {v: work.K.expression(r) for v, r in work.residuals()}
-
-
-def steady_motions(system, point, solve_for, positive=(), speeds=None):
-    r"""
-    The steady motions of the form ``point`` whose values ``solve_for``
-    are unknown: the real solutions of :func:`steady_motion_conditions`,
-    exactly (:func:`~sage_dynsym.algebra.solving.solve_exactly`), with the
-    conditions for them to exist.
-
-    INPUT:
-
-    - ``system``, ``point``, ``speeds`` -- as for :func:`steady_motion_conditions`
-    - ``solve_for`` -- the unknowns (symbols in the values of ``point``)
-    - ``positive`` -- parameters declared positive
-
-    OUTPUT: a :class:`~sage_dynsym.algebra.solving.SolutionSet`
-
-    EXAMPLES: the disk of :func:`steady_motion_conditions` rolling on a
-    circle, its spin rate for a given tilt and turning rate::
-
-        sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
-        sage: from sage_dynsym.analysis.operating_point import OperatingPoint
-        sage: from sage_dynsym.analysis.steady import steady_motions
-        sage: x, y, psi, th, phi, m, r, A, C, g = var('x y psi theta phi m r A C g')
-        sage: frame = RigidBody('frame', joint=[x, y, 0], rotations=[(3, psi), (1, th)])
-        sage: disk = RigidBody('disk', parent='frame', joint=[0, 0, r], rotations=[(2, phi)],
-        ....:                  mass=m, inertia=diagonal_matrix([A, C, A]))
-        sage: S = MechanicalSystem([frame, disk], [x, y, psi, th, phi],
-        ....:                      force_function=UniformGravity([0, 0, -g]),
-        ....:                      rolling=[{'body': 'disk', 'radius': r, 'axle': 2}])
-        sage: th0, Om, om = var('theta0 Omega omega')
-        sage: point = OperatingPoint('turning', {th: th0}, {var('dpsi'): Om, var('dphi'): om})
-        sage: s, = steady_motions(S, point, [om], positive=[m, r, A, C, g]); s.conditions()
-        [cos(theta0) != 0, Omega != 0]
-    """
-    from ..algebra.solving import solve_exactly
-    conditions = [e for e in steady_motion_conditions(system, point, speeds).values()
-                  if not e.is_zero()]
-    return solve_exactly(conditions, solve_for, positive=positive)
 
 
 def steady_linearization(record, point, coordinates=None, speeds=None):
