@@ -39,8 +39,9 @@ class OperatingPoint(SageObject):
     - ``at`` -- dict ``{coordinate: value}``: the coordinates that stay
       fixed
     - ``velocities`` -- (optional) dict ``{velocity: value}``: velocities that
-      stay constant (values may contain parameters); the others follow from
-      the velocity constraints, those of the fixed coordinates are zero
+      stay constant (values may contain parameters); those of the fixed
+      coordinates are zero, the others follow from the constraints, which
+      must determine them (see the module documentation)
     - ``coordinates`` -- (optional) the coordinates to linearize in when
       :func:`~sage_dynsym.analysis.linear.linearize` is not told
 
