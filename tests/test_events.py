@@ -40,6 +40,18 @@ def test_terminal_event_ends_the_trajectory():
     assert np.all(np.diff(T.times()) > 0)
 
 
+def test_event_states_are_read_by_name_as_values_are():
+    T = PENDULUM.simulate(VALUES, {th: 1.0, dth: 0}, 12, points=101,
+                          events=[Event(dth, direction=1, terminal=True)])
+    (_, _, state), = T.events()
+    # the far turning point of a pendulum released at rest at theta = 1
+    assert abs(state['theta'] + 1.0) < 1e-8 and abs(state['dtheta']) < 1e-9
+    assert state['theta'] == state[th] and 'dtheta' in state and state.get('zz') is None
+    assert T.final_state()['theta'] == T.values('theta')[-1]
+    with pytest.raises(KeyError, match="'zz' is not a state variable"):
+        state['zz']
+
+
 def test_poincare_section_lies_on_an_integral():
     x, y, dx, dy, ddx, ddy = var('x y dx dy ddx ddy')
     E = SecondOrderEquations([ddx + x, ddy + 3 * y], [x, y], [dx, dy], [ddx, ddy])

@@ -20,8 +20,9 @@ from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       conservative_stability_conditions)
 from .linear import LinearSystem, linearize
 from .operating_point import OperatingPoint
-from .steady import (steady_linearization, steady_motion_conditions, steady_motions,
-                     SteadyMotion)
+from .steady import steady_linearization, steady_motion_conditions, SteadyMotion
+from .steady_solutions import steady_motions, SteadyMotionSolution, SteadyMotions
+from .motion_solution import MotionSolution
 from .quadratic_forms import (sylvester_conditions, definiteness_conditions, form_matrix,
                               restrict_to_subspace, simultaneous_reduction)
 # the exact algebra's entry points, also served here

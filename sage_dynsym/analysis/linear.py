@@ -703,6 +703,19 @@ def equations_of_motion(system):
         AnalysisError: constraints: the equations have the constraints [x - y] with multipliers [mu1], which the analysis does not handle; reduce the model to independent coordinates first (Lagrangian.reduce), or linearize in chosen coordinates (linearize(..., coordinates=[...]))
         sage: Ls = linearize(L, {x: 0, y: 0}, coordinates=[x]); Ls.M(), Ls.K()
         ([2], [1])
+
+    A rolling (nonholonomic) model is pointed to its steady motions (a
+    knife edge)::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody
+        sage: th, m = var('theta m')
+        sage: knife = MechanicalSystem([RigidBody('blade', joint=[x, y, 0], rotations=[(3, th)],
+        ....:                                     mass=m, inertia=m*identity_matrix(3))],
+        ....:                          [x, y, th], nonholonomic=[sin(th)*dx - cos(th)*var('dy')])
+        sage: equations_of_motion(knife)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: constraints: the equations have the velocity constraints [-dy*cos(theta) + dx*sin(theta)] (a rolling or nonholonomic model), which no choice of coordinates removes; find its steady motions with steady_motions(system, OperatingPoint(name, at, velocities), solve_for=[...]) and linearize about one in chosen coordinates (linearize(system, point, coordinates=[...]))
     """
     return _without_constraints(_record(system))
 
@@ -713,6 +726,16 @@ def _without_constraints(data):
                                                    or data.velocity_constraints()):
         constraints = data.constraints() + data.velocity_constraints()
         multipliers = data.multipliers() + data.velocity_multipliers()
+        if data.velocity_constraints():
+            # a rolling (nonholonomic) model: there are no independent
+            # coordinates to reduce to, its motions are steady motions
+            raise AnalysisError(f"the equations have the velocity constraints "
+                                f"{data.velocity_constraints()} (a rolling or nonholonomic "
+                                "model), which no choice of coordinates removes; find its "
+                                "steady motions with steady_motions(system, "
+                                "OperatingPoint(name, at, velocities), solve_for=[...]) and "
+                                "linearize about one in chosen coordinates (linearize(system, "
+                                "point, coordinates=[...]))", entry="constraints")
         raise AnalysisError(f"the equations have the constraints {constraints} with "
                             f"multipliers {multipliers}, which the analysis does not handle; "
                             "reduce the model to independent coordinates first "

@@ -5,9 +5,11 @@ An :class:`OperatingPoint` names a steady motion: the coordinates that stay
 fixed (``at``) and the velocities that stay constant (``velocities``),
 possibly in terms of the parameters, e.g. a bicycle running upright and
 straight at the forward speed `v`. The coordinates it does not fix move
-(a heading, a position on the plane, a wheel's angle); the velocities it
-does not give follow from the velocity constraints, and those of the fixed
-coordinates are zero. It is plain data, read from the ``operating_points:``
+(a heading, a position on the plane, a wheel's angle); the velocities of
+the fixed coordinates are zero, and those it does not give follow from the
+constraints -- which must determine them: a velocity they leave free (the
+heading rate of a rolling disk) is given, or its coordinate fixed, and the
+error says which. It is plain data, read from the ``operating_points:``
 section of a description file (:meth:`MechanicalSystem.operating_point
 <sage_dynsym.mechanics.system.MechanicalSystem.operating_point>`) or built
 directly, and handed to :func:`~sage_dynsym.analysis.linear.linearize`.
@@ -37,8 +39,9 @@ class OperatingPoint(SageObject):
     - ``at`` -- dict ``{coordinate: value}``: the coordinates that stay
       fixed
     - ``velocities`` -- (optional) dict ``{velocity: value}``: velocities that
-      stay constant (values may contain parameters); the others follow from
-      the velocity constraints, those of the fixed coordinates are zero
+      stay constant (values may contain parameters); those of the fixed
+      coordinates are zero, the others follow from the constraints, which
+      must determine them (see the module documentation)
     - ``coordinates`` -- (optional) the coordinates to linearize in when
       :func:`~sage_dynsym.analysis.linear.linearize` is not told
 

@@ -97,14 +97,13 @@ REFERENCES:
 """
 from sage.matrix.constructor import matrix
 from sage.misc.latex import latex
-from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
 from ..arguments import known_symbols, symbol_arguments
-from ..algebra.conditions import (positive_conditions, positive_conditions_all, conjunction,
-                                  simplify_conjunction)
+from ..algebra.conditions import positive_conditions_all, conjunction, simplify_conjunction
 from .kelvin_chetaev import StabilityVerdict
+from .motion_solution import MotionSolution, first_approximation_cases, combined_verdict
 from .linear import LinearSystem
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
@@ -259,11 +258,13 @@ class StationaryProblem:
         return None if self._linear is None else self._linear(evaluate)
 
 
-class StationarySolution(SageObject):
+class StationarySolution(MotionSolution):
     r"""
     One stationary solution: a real branch of an irreducible component of
     the stationary set. Created by :func:`stationary_solutions` and
-    :func:`stationary_motions`.
+    :func:`stationary_motions`. It answers :meth:`point`, :meth:`values`,
+    :meth:`conditions` and :meth:`stability` as a steady motion does (see
+    :mod:`~sage_dynsym.analysis.motion_solution`).
 
     EXAMPLES::
 
@@ -371,66 +372,6 @@ class StationarySolution(SageObject):
         free = {str(u) for u in self._solution.free_unknowns()}
         return [l for l in self._problem.multipliers if str(l) in free]
 
-    def equations(self):
-        r"""
-        The relations (expressions ``== 0``) that remain between the
-        variables left free; empty for an explicit solution.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x, y = var('x y')
-            sage: s = stationary_solutions([(x^2 + y^2 - 1)^2], [x, y])[1]
-            sage: s.dimension(), s.equations()
-            (1, [x^2 + y^2 - 1])
-        """
-        return self._solution.equations()
-
-    def dimension(self):
-        r"""
-        `0` for an isolated solution, `k > 0` for a `k`-parameter family
-        (the variables only: multipliers are not counted).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x, y = var('x y')
-            sage: [s.dimension() for s in stationary_solutions([(x^2 + y^2 - 1)^2], [x, y])]
-            [0, 1]
-        """
-        return self._solution.dimension()
-
-    def is_explicit(self):
-        r"""Whether every variable is given explicitly (or left free).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x = var('x')
-            sage: stationary_solutions([x^6/6 - x^2/2 - x], [x])[0].is_explicit()
-            False
-        """
-        return self._solution.is_explicit()
-
-    def conditions(self):
-        r"""
-        Conditions on the parameters (relationals) for this solution to
-        exist and be real; ``[]`` when it exists for all admissible values.
-
-        EXAMPLES: a bead on a hoop turning about its vertical diameter::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: th, m, R, w, g = var('theta m R w g')
-            sage: W = -m*R^2*w^2*sin(th)^2/2 - m*g*R*cos(th)
-            sage: sols = stationary_solutions([W], [th], positive=[m, R, w, g])
-            sage: [(s.point(), s.conditions()) for s in sols]
-            [({theta: 0}, []),
-             ({theta: pi}, []),
-             ({theta: arccos(g/(R*w^2))}, [R*w^2 - g > 0]),
-             ({theta: -arccos(g/(R*w^2))}, [R*w^2 - g > 0])]
-        """
-        return self._solution.conditions()
-
     def is_equilibrium(self):
         r"""
         Whether the right-hand sides vanish on the solution (``None`` when
@@ -455,33 +396,6 @@ class StationarySolution(SageObject):
         if rhs is None:
             return None
         return all(normalize(self._at(X)).is_zero() for X in rhs)
-
-    def real_points(self):
-        r"""
-        The real points of an implicit solution without parameters, exact
-        (dicts of real algebraic numbers); ``None`` otherwise.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x = var('x')
-            sage: s = stationary_solutions([x^6/6 - x^2/2 - x], [x])[0]
-            sage: s.real_points()
-            [{x: 1.167303978261419?}]
-        """
-        return self._solution.real_points()
-
-    def solution(self):
-        r"""The underlying :class:`~sage_dynsym.algebra.solving.AlgebraicSolution`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.analysis.stationary import stationary_solutions
-            sage: x = var('x')
-            sage: stationary_solutions([x^2], [x])[0].solution()
-            Solution {x: 0} (dimension 0)
-        """
-        return self._solution
 
     def stationary_problem(self):
         r"""The :class:`StationaryProblem` the solution solves.
@@ -757,38 +671,9 @@ class StationarySolution(SageObject):
         lin = self.linear_system() if self.is_explicit() and \
             self.is_equilibrium() is not False else None
         if lin is not None:
-            asymptotic, unstable = _first_approximation(lin, positive)
-            for verdict, alts, why in (
-                    ('asymptotically stable', asymptotic,
-                     "all roots of the characteristic polynomial have negative real "
-                     "parts (Liénard-Chipart)"),
-                    ('unstable', unstable, "the characteristic polynomial has a root "
-                     "with positive real part (Lyapunov's theorem on the first "
-                     "approximation)")):
-                alts = [a for a in (simplify_conjunction(existence + alt, positive)
-                                    for alt in alts) if a is not None]
-                if alts:
-                    cases.append(StabilityVerdict(verdict, why, method='first approximation',
-                                                  region=alts))
-            if not region:
-                # where neither decides: roots simple on the imaginary axis
-                alts = [a for a in (simplify_conjunction(existence + alt, positive)
-                                    for alt in _marginal(lin, positive)) if a is not None]
-                if alts:
-                    cases.append(StabilityVerdict(
-                        'stable in first approximation', "the roots of the characteristic "
-                        "polynomial on the imaginary axis are simple (or semisimple), the "
-                        "others have negative real parts: the linearized system is stable; "
-                        "the nonlinear terms decide (critical case)",
-                        method='first approximation', region=alts))
-        for case in cases:
-            if any(set(map(str, alt)) <= set(map(str, existence)) for alt in case.region()):
-                return case
-        if not cases:
-            return StabilityVerdict('undecided', "neither the second variation nor the "
-                                    "first approximation decides (critical case)",
-                                    region=[[]])
-        return StabilityVerdict('depends on the parameters', "see cases()", cases=cases)
+            # simple roots on the imaginary axis only where the second variation decides nowhere
+            cases += first_approximation_cases(lin, existence, positive, marginal=not region)
+        return combined_verdict(cases, existence)
 
     def check(self, equations):
         r"""
@@ -813,56 +698,6 @@ class StationarySolution(SageObject):
                 raise AnalysisError(f"{self.point()} does not annul the right-hand "
                                     f"side {k}, {X}", entry="stationary_solutions")
         return True
-
-
-def _first_approximation(lin, positive):
-    r"""Regions (alternatives) of asymptotic stability and of instability
-    from the characteristic polynomial of ``lin``."""
-    from .hurwitz import lienard_chipart_conditions
-    from ..algebra.translation import Translation
-    lam = SR.var('lambda_')
-    p = lin.characteristic_polynomial(lam, positive=positive)
-    if not SR(p).has(lam):          # no dynamics left (e.g. a zero Lagrangian)
-        return [], []
-    T = Translation([], [], extra=[p])
-    f = T.flat_ring()(T.fraction(p))
-    gen = T.flat_ring()(T.fraction(lam))
-    coefficients = [T.symbolic(f.coefficient({gen: k})) if k else T.symbolic(f.subs({gen: 0}))
-                    for k in range(f.degree(gen), -1, -1)]
-    zero_roots = 0
-    while len(coefficients) > 1 and coefficients[-1].is_zero():
-        coefficients.pop()
-        zero_roots += 1
-    a0 = coefficients[0]
-    even = all(c.is_zero() for c in coefficients[1::2])
-    tested = coefficients[0::2] if even else coefficients
-    unstable = []
-    for c in tested[1:]:
-        cond = positive_conditions(-a0 * c, positive)
-        if cond is not None and cond not in unstable:
-            unstable.append(cond)
-    asymptotic = []
-    if not zero_roots and not even:
-        reduced = sum(c * lam ** k for k, c in enumerate(reversed(coefficients)))
-        lc = lienard_chipart_conditions((a0 * reduced).expand(), lam, positive=positive)
-        cond = positive_conditions_all(lc, positive) if lc else []
-        if cond is not None:
-            asymptotic.append(cond)
-    return asymptotic, unstable
-
-
-def _marginal(lin, positive):
-    r"""The region where ``lin`` is stable in first approximation, not
-    asymptotically (:mod:`.spectrum`); ``[]`` if nowhere or not decided."""
-    from .spectrum import spectrum_regions
-    lam = SR.symbol()
-    p = lin.characteristic_polynomial(lam, positive=positive)
-    if not SR(p).has(lam):
-        return []
-    try:
-        return spectrum_regions(p, lam, positive, matrix=lin.jacobian()).marginal() or []
-    except (AnalysisError, ArithmeticError, ValueError, TypeError, ZeroDivisionError):
-        return []
 
 
 class StationarySolutions(SolutionList):

@@ -222,8 +222,23 @@ class SteadyMotion(SageObject):
         return self._W
 
 
-def _split_point(point, q, dq):
-    # an OperatingPoint, or a dict over coordinates and velocities
+def split_point(point, q, dq):
+    r"""
+    The operating point ``point`` (an
+    :class:`~sage_dynsym.analysis.operating_point.OperatingPoint`, or a dict
+    over the coordinates ``q``, fixed, and the velocities ``dq``, given).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.steady import split_point
+        sage: x, dx = var('x dx')
+        sage: split_point({x: 0, dx: 1}, [x], [dx])
+        Operating point: x = 0, dx = 1
+        sage: split_point({var('y'): 0}, [x], [dx])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: y is neither coordinates nor velocities of the equations
+    """
     if isinstance(point, OperatingPoint):
         return point
     if not isinstance(point, dict):
@@ -260,6 +275,22 @@ def _check_point(point, q, dq, ddq):
                                 f"{given[di]}", entry="linearize")
 
 
+def _undetermined(K, A, rank, unknown, q, dq):
+    # the velocities the constraints leave free are named, and those they
+    # determine (a velocity is determined iff its column is independent of
+    # the others: dropping it lowers the rank)
+    free = [v for j, v in enumerate(unknown)
+            if K.rank([row[:j] + row[j + 1:] for row in A]) == rank]
+    derived = [v for v in unknown if v not in free]
+    coordinates = [q[dq.index(v)] for v in free]
+    raise AnalysisError(
+        (f"the constraints determine {_names(derived)} but not " if derived else
+         "the constraints do not determine ") + f"{_names(free)} along the motion; give "
+        f"{'it' if len(free) == 1 else 'them'} in the operating point's velocities (e.g. "
+        + ", ".join(f"{v}: 0" for v in free) + ") or fix " + _names(coordinates)
+        + " in its coordinates (at)", entry="linearize")
+
+
 class _Linearization:
     r"""The computation of :func:`steady_linearization` step by step."""
 
@@ -282,7 +313,7 @@ class _Linearization:
             if any(a.has(v) for a in row for v in self.dq + self.ddq):
                 raise AnalysisError(f"the velocity constraint {g} == 0 is not linear in the "
                                     "velocities", entry="linearize")
-        self.point = _split_point(point, self.q, self.dq)
+        self.point = split_point(point, self.q, self.dq)
         _check_point(self.point, self.q, self.dq, self.ddq)
         coordinates = self.point.coordinates() if coordinates is None else coordinates
         if coordinates is None:
@@ -327,10 +358,9 @@ class _Linearization:
         b = [[-K(ci) - sum((K(row[dq.index(v)]) * K(val) for v, val in known.items()), K.zero)]
              for row, ci in zip(C0, c0)]
         if unknown:
-            if K.rank(A) < len(unknown):
-                raise AnalysisError(f"the constraints do not determine the velocities "
-                                    f"{_names(unknown)} along the motion; give the missing ones "
-                                    "in the operating point's velocities", entry="linearize")
+            rank = K.rank(A)
+            if rank < len(unknown):
+                _undetermined(K, A, rank, unknown, q, dq)
             X = K.solve_right(A, b)
         else:
             X = [] if all(K.is_zero(x[0]) for x in b) else None
@@ -641,6 +671,17 @@ def steady_motion_conditions(system, point, speeds=None):
         -g*m*r*sin(theta0) - ((m*r^2 - A + C)*Omega^2*sin(theta0) + (m*r^2 + C)*Omega*omega)*cos(theta0)
         sage: solve(conditions[var('dtheta')], om)
         [omega == -(g*m*r + (Omega^2*m*r^2 - (A - C)*Omega^2)*cos(theta0))*sin(theta0)/((Omega*m*r^2 + C*Omega)*cos(theta0))]
+
+    The velocities the constraints determine follow from those given (here
+    the contact point's); those they leave free must be given::
+
+        sage: point = OperatingPoint('spinning', {th: 0}, {var('dphi'): om})
+        sage: steady_motion_conditions(S, point)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: linearize: the constraints determine dx, dy but not dpsi along the motion; give it in the operating point's velocities (e.g. dpsi: 0) or fix psi in its coordinates (at)
+        sage: steady_motion_conditions(S, OperatingPoint('straight', {th: 0, psi: 0}, {var('dphi'): om}))
+        {dphi: 0, dpsi: 0, dtheta: 0}
     """
     record = system.equations_record() if hasattr(system, 'equations_record') else system
     work = _Linearization(record, point, [], speeds)
@@ -649,45 +690,6 @@ def steady_motion_conditions(system, point, speeds=None):
     work.field()
     work.choose_speeds()
     return {v: work.K.expression(r) for v, r in work.residuals()}
-
-
-def steady_motions(system, point, solve_for, positive=(), speeds=None):
-    r"""
-    The steady motions of the form ``point`` whose values ``solve_for``
-    are unknown: the real solutions of :func:`steady_motion_conditions`,
-    exactly (:func:`~sage_dynsym.algebra.solving.solve_exactly`), with the
-    conditions for them to exist.
-
-    INPUT:
-
-    - ``system``, ``point``, ``speeds`` -- as for :func:`steady_motion_conditions`
-    - ``solve_for`` -- the unknowns (symbols in the values of ``point``)
-    - ``positive`` -- parameters declared positive
-
-    OUTPUT: a :class:`~sage_dynsym.algebra.solving.SolutionSet`
-
-    EXAMPLES: the disk of :func:`steady_motion_conditions` rolling on a
-    circle, its spin rate for a given tilt and turning rate::
-
-        sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
-        sage: from sage_dynsym.analysis.operating_point import OperatingPoint
-        sage: from sage_dynsym.analysis.steady import steady_motions
-        sage: x, y, psi, th, phi, m, r, A, C, g = var('x y psi theta phi m r A C g')
-        sage: frame = RigidBody('frame', joint=[x, y, 0], rotations=[(3, psi), (1, th)])
-        sage: disk = RigidBody('disk', parent='frame', joint=[0, 0, r], rotations=[(2, phi)],
-        ....:                  mass=m, inertia=diagonal_matrix([A, C, A]))
-        sage: S = MechanicalSystem([frame, disk], [x, y, psi, th, phi],
-        ....:                      force_function=UniformGravity([0, 0, -g]),
-        ....:                      rolling=[{'body': 'disk', 'radius': r, 'axle': 2}])
-        sage: th0, Om, om = var('theta0 Omega omega')
-        sage: point = OperatingPoint('turning', {th: th0}, {var('dpsi'): Om, var('dphi'): om})
-        sage: s, = steady_motions(S, point, [om], positive=[m, r, A, C, g]); s.conditions()
-        [cos(theta0) != 0, Omega != 0]
-    """
-    from ..algebra.solving import solve_exactly
-    conditions = [e for e in steady_motion_conditions(system, point, speeds).values()
-                  if not e.is_zero()]
-    return solve_exactly(conditions, solve_for, positive=positive)
 
 
 def steady_linearization(record, point, coordinates=None, speeds=None):
@@ -737,7 +739,7 @@ def steady_linearization(record, point, coordinates=None, speeds=None):
         ....:                      OperatingPoint('p', {}, {}), [x])
         Traceback (most recent call last):
         ...
-        AnalysisError: linearize: the constraints do not determine the velocities dx along the motion; give the missing ones in the operating point's velocities
+        AnalysisError: linearize: the constraints do not determine dx along the motion; give it in the operating point's velocities (e.g. dx: 0) or fix x in its coordinates (at)
         sage: steady_linearization(SecondOrderEquations([m*ddx], [x], [dx], [ddx]),
         ....:                      OperatingPoint('p', {x: 0}, {dx: 1}), [x])
         Traceback (most recent call last):

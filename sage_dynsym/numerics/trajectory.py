@@ -32,6 +32,61 @@ from ..symbols import t as _t
 from .form import deferred
 
 
+class State(dict):
+    r"""
+    A state of a trajectory: a dict over the state variables (symbols) that
+    also finds a value by the variable's name, as :meth:`Trajectory.values`
+    does (``state['dx']`` and ``state[dx]`` are the same value).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.trajectory import State
+        sage: x, dx = var('x dx')
+        sage: s = State({x: float(1), dx: float(-2)}); s
+        {x: 1.0, dx: -2.0}
+        sage: s['dx'], s[dx], 'x' in s, s.get('y', 0)
+        (-2.0, -2.0, True, 0)
+
+    TESTS::
+
+        sage: s['y']
+        Traceback (most recent call last):
+        ...
+        KeyError: "'y' is not a state variable (they are x, dx)"
+    """
+
+    def _key(self, key):
+        if isinstance(key, str):
+            for variable in self:
+                if str(variable) == key:
+                    return variable
+        return key
+
+    def __getitem__(self, key):
+        try:
+            return dict.__getitem__(self, self._key(key))
+        except KeyError:
+            # the mapping protocol's error, with what would have been found
+            raise KeyError(f"{key!r} is not a state variable (they are "
+                           f"{', '.join(map(str, self))})") from None
+
+    def __contains__(self, key):
+        return dict.__contains__(self, self._key(key))
+
+    def get(self, key, default=None):
+        r"""The value of the variable ``key`` (a symbol or its name), or
+        ``default``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.trajectory import State
+            sage: x = var('x')
+            sage: State({x: float(1)}).get('x'), State({x: float(1)}).get('y', 0)
+            (1.0, 0)
+        """
+        return dict.get(self, self._key(key), default)
+
+
 class Trajectory(SageObject):
     r"""
     The samples of a solution.
@@ -230,16 +285,17 @@ class Trajectory(SageObject):
         return np.array(self._array(expression), dtype=float)
 
     def final_state(self):
-        r"""The state at the last sample, as a dict over the variables.
+        r"""The state at the last sample, a :class:`State` (a dict over the
+        variables, also read by their names).
 
         EXAMPLES::
 
             sage: from sage_dynsym.numerics.trajectory import Trajectory
             sage: x = var('x')
-            sage: Trajectory([0, 1], [[1], [2]], [x], {}).final_state()
-            {x: 2.0}
+            sage: s = Trajectory([0, 1], [[1], [2]], [x], {}).final_state(); s, s['x']
+            ({x: 2.0}, 2.0)
         """
-        return dict(zip(self._variables, map(float, self._states[-1])))
+        return State(zip(self._variables, map(float, self._states[-1])))
 
     def constraint_residuals(self):
         r"""
@@ -354,12 +410,21 @@ class Trajectory(SageObject):
 
     def plot(self, *expressions, **options):
         r"""
-        The graphs of state variables (default: all) or expressions of the
-        state against time, one colour each, drawn through the integrator's
-        continuous solution (see :meth:`dense`); the quantity on the
-        vertical axis (a legend when there are several) and a title naming
+        The graphs of state variables or expressions of the state against
+        time, one colour each, drawn through the integrator's continuous
+        solution (see :meth:`dense`); the quantity on the vertical axis, a
+        legend outside the axes when there are several, and a title naming
         the model and the integrator. Options go to Sage's ``line`` (and
         ``title=`` replaces the title).
+
+        Without ``expressions``, all the state variables, in readable
+        groups: when the state holds coordinates and their velocities (and
+        more than two variables), the positions and the velocities in
+        separate panels, one above the other (a graphics array); any group
+        of more than :data:`CURVES_PER_PANEL` curves is split further.
+
+        OUTPUT: a Sage ``Graphics`` object (one panel), or a
+        ``GraphicsArray`` of panels
 
         EXAMPLES::
 
@@ -370,23 +435,76 @@ class Trajectory(SageObject):
             Graphics object consisting of 2 graphics primitives
             sage: G.axes_labels(), G._extra_kwds['title']
             (('$t$', '$x$, $\\mathit{dx}^{2}$'), 'trajectory')
+
+        Two coordinates and their velocities: positions and velocities apart::
+
+            sage: y, dy = var('y dy')
+            sage: T = Trajectory([0, 1], [[1, 0, 0, 1], [0, 1, -1, 0]], [x, y, dx, dy], {},
+            ....:                name='oscillator')
+            sage: A = T.plot(); A
+            Graphics Array of size 2 x 1
+            sage: [(len(P), P.axes_labels()[1], P._extra_kwds['title']) for P in A]
+            [(2, 'positions', 'oscillator: trajectory: positions'),
+             (2, 'velocities', 'oscillator: trajectory: velocities')]
+            sage: A[0].set_legend_options()['loc']           # outside, right of the axes
+            (1.02, 0.0)
         """
+        title = options.pop('title', None)
+        what = 'trajectory' if self._method is None else f'trajectory ({self._method})'
+        title = title if title is not None else self._title(what)
+        times, states = self.dense()
+        if expressions:
+            return self._panel(expressions, times, states, title, options)
+        groups = self._groups()
+        if len(groups) == 1:
+            return self._panel(groups[0][1], times, states, title, options)
+        from sage.plot.plot import graphics_array
+        return graphics_array([self._panel(group, times, states, f"{title}: {label}", options,
+                                           ylabel=label)
+                               for label, group in groups], nrows=len(groups), ncols=1)
+
+    def _groups(self):
+        # (label, variables): positions and velocities apart, at most
+        # CURVES_PER_PANEL each
+        # the velocity of q is named d<q> (symbols.velocity, whose symbol is
+        # not made here: that would reset the LaTeX name of the user's own)
+        names = {str(v) for v in self._variables}
+        positions = [v for v in self._variables if f"d{v}" in names]
+        rates = {f"d{v}" for v in positions}
+        velocities = [v for v in self._variables if str(v) in rates]
+        others = [v for v in self._variables if v not in positions and v not in velocities]
+        if not positions or len(self._variables) <= 2:
+            kinds = [('variables', list(self._variables))]
+        else:
+            kinds = [(label, group) for label, group in (
+                ('positions', positions), ('velocities', velocities),
+                ('other variables', others)) if group]
+        groups = []
+        for label, group in kinds:
+            parts = [group[k:k + CURVES_PER_PANEL] for k in range(0, len(group),
+                                                                   CURVES_PER_PANEL)]
+            groups += [(label if len(parts) == 1 else f"{label} {k + 1} of {len(parts)}", part)
+                       for k, part in enumerate(parts)]
+        return groups
+
+    def _panel(self, expressions, times, states, title, options, ylabel=None):
+        # one Graphics: a curve per expression, the legend outside the axes
+        # (a panel of a group names the group on its axis, the legend the curves)
         from sage.plot.graphics import Graphics
         from sage.plot.line import line
         from sage.plot.colors import rainbow
-        expressions = expressions or tuple(self._variables)
-        title = options.pop('title', None)
         colors = rainbow(max(len(expressions), 1))
-        times, states = self.dense()
-        what = 'trajectory' if self._method is None else f'trajectory ({self._method})'
         G = Graphics()
         for expression, color in zip(expressions, colors):
             values = self._array(expression, times, states)
             label = {} if len(expressions) == 1 else {'legend_label': _label(expression)}
             G += line(list(zip(times.tolist(), values.tolist())), color=color, **label,
                       **options)
-        G.axes_labels(['$t$', ', '.join(_label(e) for e in expressions)])
-        G._set_extra_kwds({'title': title if title is not None else self._title(what)})
+        if len(expressions) > 1:
+            # lower left corner of the legend just right of the axes
+            G.set_legend_options(loc=(1.02, 0.0))
+        G.axes_labels(['$t$', ylabel or ', '.join(_label(e) for e in expressions)])
+        G._set_extra_kwds({'title': title})
         return G
 
     def phase_portrait(self, x, y, **options):
@@ -428,7 +546,8 @@ class Trajectory(SageObject):
         The recorded zero crossings, in time order: a list of ``(time,
         index, state)``, ``index`` the position of the event in the list
         given to :func:`~sage_dynsym.numerics.simulate.simulate` and
-        ``state`` a dict over the state variables at the crossing.
+        ``state`` a :class:`State` at the crossing (a dict over the state
+        variables, also read by their names).
 
         INPUT:
 
@@ -443,8 +562,8 @@ class Trajectory(SageObject):
             ....:              {x: 1, dx: 0}, 4, events=[x, dx])
             sage: [(round(t, 9), k) for t, k, _ in T.events()]
             [(1.570796327, 0), (3.141592654, 1)]
-            sage: t, k, state = T.events(0)[0]; round(state[dx], 9)
-            -1.0
+            sage: t, k, state = T.events(0)[0]; round(state[dx], 9), round(state['dx'], 9)
+            (-1.0, -1.0)
 
         TESTS::
 
@@ -454,7 +573,7 @@ class Trajectory(SageObject):
             ...
             ModelError: events: no events were recorded: simulate with events=[...]
         """
-        return [(t, k, dict(zip(self._variables, map(float, y))))
+        return [(t, k, State(zip(self._variables, map(float, y))))
                 for t, k, y in self._recorded(index)]
 
     def event_times(self, index=0):
@@ -549,6 +668,9 @@ class Trajectory(SageObject):
         G.axes_labels([_label(x), _label(y)])
         return G
 
+
+#: The most curves :meth:`Trajectory.plot` draws in one panel by default.
+CURVES_PER_PANEL = 8
 
 #: Points drawn through the continuous solution by :meth:`Trajectory.plot`
 #: and :meth:`Trajectory.phase_portrait` (at least 20 per sample interval).
