@@ -116,7 +116,8 @@ from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
-from .points import parse_points, check_positive_ranges, MAX_POINTS
+from .equilibria import point_diagnosis
+from .points import parse_points, check_positive_ranges, number_text, MAX_POINTS
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
@@ -400,8 +401,31 @@ def model_linear_system(model, at=None):
         Traceback (most recent call last):
         ...
         AnalysisError: at: zz is not a coordinate of the model; the coordinates are psi, theta
+
+    A point that is not a regular equilibrium: the coordinate at fault is
+    named, and a point that works suggested (see
+    :mod:`~sage_dynsym.scale.equilibria`)::
+
+        sage: cart = load(example_path('cart_pendulum_spring_damper.yaml'))
+        sage: model_linear_system(cart, {'theta': pi}).W()
+        [      k       0]
+        [      0 -g*l*m]
+        sage: model_linear_system(cart, {'theta': 3.14})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: the point {y: 0, theta: 3.14} is not an equilibrium: ... did you mean theta = pi? ...
     """
-    return model.free_linear_system(_point(at))
+    point = _point(at)
+    try:
+        return model.free_linear_system(point)
+    except AnalysisError as err:
+        if err.entry != "linearize":
+            raise
+        # which coordinate, and a point that works (see scale.equilibria)
+        better = point_diagnosis(model, point)
+        if better is None:
+            raise
+        raise better from None
 
 
 def linear_symbols(linear):
@@ -1005,7 +1029,7 @@ class StabilityMap(SageObject):
         head = f"{self._name}: stability map" if self._name else "stability map"
         if not fixed:
             return head
-        values = ', '.join(f"${latex(k)} = {latex(v)}$" for k, v in
+        values = ', '.join(f"${latex(k)} = {number_text(v, latex=True)}$" for k, v in
                            sorted(fixed.items(), key=lambda kv: str(kv[0])))
         return f"{head}\n{values}"
 
