@@ -361,12 +361,14 @@ def _run(args):
 
 
 def _write(S, outputs):
-    r"""Write the picture and the arrays, each file replaced atomically (the
-    old file or the complete new one, never half a file)."""
+    r"""Write the arrays, then the picture, each file replaced atomically
+    (the old file or the complete new one, never half a file): the arrays,
+    the computed work, are kept whatever happens to the picture."""
     import tempfile
     from ..errors import DescriptionError
     from ..io.files import write_atomically
     try:
+        S.save(outputs[-1])
         if outputs[0].endswith(".png"):
             import numpy
             with numpy.errstate(all='ignore'):     # huge axes overflow in region_plot
@@ -377,7 +379,6 @@ def _write(S, outputs):
                 with open(picture, 'rb') as stream:
                     data = stream.read()
             write_atomically(outputs[0], lambda stream: stream.write(data), binary=True)
-        S.save(outputs[-1])
     except OSError as err:
-        raise DescriptionError(f"cannot write {err.filename or outputs[-1]}: "
+        raise DescriptionError(f"cannot write {err.filename or outputs[0]}: "
                                f"{err.strerror or err}", entry="-o") from None

@@ -42,7 +42,7 @@ from sage.symbolic.ring import SR
 from ..algebra.determinants import fraction_free_det
 from ..algebra.solving import normalize
 from ..analysis.linear import equations_of_motion
-from ..analysis.motion import SecondOrderEquations, FirstOrderEquations
+from ..analysis.motion import SecondOrderEquations
 from ..dynamics.model import linearization_point
 from ..errors import AnalysisError, DynSymError
 from .points import number_text
@@ -69,13 +69,14 @@ def point_diagnosis(model, at):
     coordinates or state variables; the others 0), as an
     :class:`~sage_dynsym.errors.AnalysisError` naming the coordinates at
     fault and suggesting a point that works (or saying that none was
-    found); ``None`` when the point is a regular equilibrium, or the
-    failure is of another kind.
+    found); ``None`` when the point is a regular equilibrium, the failure
+    is of another kind, or the model has no coordinates (a circuit, a
+    Lie--Poisson system: the error of
+    :func:`~sage_dynsym.analysis.linear.linearize` names the equation).
 
     INPUT:
 
-    - ``model`` -- a model (with ``equations_record`` and
-      ``free_linear_system``)
+    - ``model`` -- a model (:class:`~sage_dynsym.dynamics.model.Model`)
     - ``at`` -- a dict ``{coordinate: value}`` (symbols or names)
 
     OUTPUT: an :class:`~sage_dynsym.errors.AnalysisError` or ``None``
@@ -99,23 +100,18 @@ def point_diagnosis(model, at):
     """
     try:
         record = equations_of_motion(model)
-        if isinstance(record, SecondOrderEquations):
-            variables, what = list(record.coordinates()), "coordinate"
-            rest = {v: 0 for v in list(record.velocities()) + list(record.accelerations())}
-            equations = [SR(e).subs(rest) for e in record.equations()]
-            kinetic = matrix(SR, [[SR(e).diff(a) for a in record.accelerations()]
-                                  for e in record.equations()])
-        elif isinstance(record, FirstOrderEquations):
-            variables, what = list(record.variables()), "state variable"
-            equations, kinetic = [SR(f) for f in record.rhs()], None
-        else:
+        if not isinstance(record, SecondOrderEquations):
             return None
-        point = linearization_point(at, variables, what)
+        variables = list(record.coordinates())
+        rest = {v: 0 for v in list(record.velocities()) + list(record.accelerations())}
+        equations = [SR(e).subs(rest) for e in record.equations()]
+        kinetic = matrix(SR, [[SR(e).diff(a) for a in record.accelerations()]
+                              for e in record.equations()])
+        point = linearization_point(at, variables, "coordinate")
     except (DynSymError, TypeError, ValueError, ArithmeticError, RuntimeError):
         return None
-    problem = _Problem(model, variables, equations, kinetic, point)
-    return problem.diagnosis(given={SR(k) if not isinstance(k, str) else SR.var(k)
-                                    for k in (at or {})}, what=what)
+    given = {SR.var(k) if isinstance(k, str) else SR(k) for k in (at or {})}
+    return _Problem(model, variables, equations, kinetic, point).diagnosis(given)
 
 
 class _Problem:
@@ -155,7 +151,9 @@ class _Problem:
             return []
         return [v for v in self.variables if not self.regular({v: self.point[v]})]
 
-    def diagnosis(self, given, what):
+    def diagnosis(self, given):
+        r"""The error for the point, ``None`` if it is a regular equilibrium
+        (``given``: the coordinates the caller gave)."""
         wrong = [v for i, v in enumerate(self.variables) if not self.vanishes(i, self.point)]
         singular = [] if wrong else self.singular_coordinates()
         faulty = wrong or singular
@@ -163,7 +161,7 @@ class _Problem:
             return None
         shown = _shown(self.point)
         if not (set(faulty) & given):
-            shown += f" (the default: every {what} 0)"
+            shown += " (the default: every coordinate 0)"
         if wrong:
             message = (f"the point {shown} is not an equilibrium: the equation"
                        f"{'s' if len(wrong) > 1 else ''} of {_names(wrong)} "
@@ -179,32 +177,30 @@ class _Problem:
                              entry="at")
 
     def suggestion(self, faulty, singular):
-        r"""The point suggested (or the values tried) for the coordinates
-        ``faulty``."""
-        candidates = [self.candidates(v) for v in faulty[:MAX_SEARCHED]]
-        if len(faulty) <= MAX_SEARCHED:
-            for values in itertools.product(*candidates):
-                trial = dict(self.point)
-                trial.update({v: value for v, (value, _, _) in zip(faulty, values)})
-                if self.works(trial):
-                    return self.found(faulty, values, trial)
+        r"""The point suggested for the coordinates ``faulty`` (or the values
+        tried, or how to give one)."""
+        give = (f"give one with at= ({' '.join(f'--at {v}=VALUE' for v in faulty)} on the "
+                "command line; exact constants such as pi/2 are read exactly)"
+                + (", or describe the model in coordinates that are regular at its "
+                   "equilibria" if singular else ""))
+        if len(faulty) > MAX_SEARCHED:
+            return give
+        candidates = [self.candidates(v) for v in faulty]
+        for values in itertools.product(*candidates):
+            trial = dict(self.point)
+            trial.update({v: value for v, (value, _, _) in zip(faulty, values)})
+            if self.works(trial):
+                return self.found(faulty, values, trial)
         tried = "; ".join(f"{v} among " + ", ".join([number_text(self.point[v])]
                                                     + [text for _, text, _ in c])
                           for v, c in zip(faulty, candidates))
-        example = " ".join(f"--at {v}=VALUE" for v in faulty)
-        return ("no equilibrium at rest where the chart is regular was found with "
-                f"{tried}: give one with at= ({example} on the command line; exact "
-                "constants such as pi/2 are read exactly)"
-                + (", or describe the model in coordinates that are regular at its "
-                   "equilibria" if singular else ""))
+        return f"no equilibrium at rest where the chart is regular was found with {tried}: {give}"
 
     def found(self, faulty, values, trial):
-        near = [(v, text) for v, (_, text, is_near) in zip(faulty, values) if is_near]
-        head = ""
-        if near:
-            head = "did you mean " + ", ".join(f"{v} = {text}" for v, text in near) + "? The"
-        else:
-            head = "the"
+        r"""The suggestion of ``trial``, a regular equilibrium (``values``:
+        the candidates of the coordinates ``faulty``)."""
+        near = [f"{v} = {text}" for v, (_, text, is_near) in zip(faulty, values) if is_near]
+        head = f"did you mean {', '.join(near)}? The" if near else "the"
         api = "{" + ", ".join(f"'{v}': {text}" for v, (_, text, _) in zip(faulty, values)) + "}"
         line = " ".join(f"--at {v}={text}" for v, (_, text, _) in zip(faulty, values))
         return (f"{head} model is at an equilibrium at {_shown(trial)}: at={api} ({line} on "
