@@ -189,7 +189,7 @@ def test_singular_default_point_names_the_coordinate_and_at(capsys, tmp_path):
 # -- subtitles ----------------------------------------------------------------------------
 
 def test_subtitles_print_decimals():
-    from sage.all import QQ
+    from sage.all import QQ, pi
     from sage_dynsym import load
     S = sage_dynsym.scale.maps.stability_map(
         load(CART), {'k': (0.5, 5, 3), 'c': (0.1, 2, 3)},
@@ -198,6 +198,13 @@ def test_subtitles_print_decimals():
     title = G.matplotlib(**G._extra_kwds).axes[0].get_title()
     assert "$g = 9.81$" in title and "$m = 0.5$" in title and "$l = 1.25$" in title, title
     assert "$M = 1$" in title and "981" not in title and "frac" not in title, title
+    # the point of linearization, where it is not 0, is in the title too
+    S = sage_dynsym.scale.maps.stability_map(
+        load(CART), {'k': (0.5, 5, 3), 'c': (0.1, 2, 3)}, at={'theta': pi},
+        fixed={'M': 1, 'm': QQ(1) / 2, 'l': 1, 'g': QQ(981) / 100}, client=False)
+    G = S.plot()
+    title = G.matplotlib(**G._extra_kwds).axes[0].get_title()
+    assert "stability map at $\\theta = \\pi$" in title, title
 
 
 # -- the example for the README ------------------------------------------------------------

@@ -330,7 +330,8 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
                         values, method, tol, conditions, note, name,
                         classes=kinds.reshape(points.shape), exact_classes=classes,
-                        marginal_tol=marginal_tol)
+                        marginal_tol=marginal_tol,
+                        at={k: v for k, v in _point(at).items() if not v.is_zero()})
 
 
 # ---------------------------------------------------------------------------
@@ -602,12 +603,13 @@ class StabilityMap(SageObject):
     """
 
     def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None,
-                 name=None, classes=None, exact_classes=None, marginal_tol=1e-7):
+                 name=None, classes=None, exact_classes=None, marginal_tol=1e-7, at=None):
         self._points, self._alpha, self._stable = points, alpha, stable
         self._fixed, self._method, self._tol = dict(fixed), method, tol
         self._conditions, self._note, self._name = conditions, note, name
         self._classes = classes
         self._exact_classes, self._marginal_tol = exact_classes, marginal_tol
+        self._at = dict(at or {})       # the point of linearization, where not 0
 
     def _repr_(self):
         names = ', '.join(map(str, self._points.keys))
@@ -1027,6 +1029,9 @@ class StabilityMap(SageObject):
         r"""The title of the map's pictures: the system's name and the fixed
         values (the section's included)."""
         head = f"{self._name}: stability map" if self._name else "stability map"
+        if self._at:
+            head += " at " + ", ".join(f"${latex(k)} = {number_text(v, latex=True)}$"
+                                       for k, v in self._at.items())
         if not fixed:
             return head
         values = ', '.join(f"${latex(k)} = {number_text(v, latex=True)}$" for k, v in
