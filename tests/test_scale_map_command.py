@@ -7,6 +7,7 @@ Expected verdicts come from the potential energy of the models (Lagrange-
 Dirichlet, and the sign of det W: with det M > 0, det(M l^2 + D l + W) has
 a positive real root when det W < 0), not from the code under test."""
 import os
+import re
 
 import numpy as np
 import pytest
@@ -207,20 +208,40 @@ def test_subtitles_print_decimals():
     assert "stability map at $\\theta = \\pi$" in title, title
 
 
-# -- the example for the README ------------------------------------------------------------
+# -- the example of the README ------------------------------------------------------------
 
-#: The README's example of the map command: a shipped example file, every value given.
-README_EXAMPLE = ("examples/rlc_ladder.yaml --param R1=-1:2:200 --param R2=-1:2:200 "
-                  "--value R3=1 --value R4=2 --value L1=1 --value L2=1 --value L3=1 "
-                  "--value C1=1 --value C2=1 --value C3=1")
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def test_readme_map_example_runs_on_a_shipped_file(tmp_path, capsys, monkeypatch):
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    monkeypatch.chdir(root)
-    arguments = README_EXAMPLE.replace("200", "21").split()
-    assert os.path.exists(arguments[0])
-    status = main(['map', *arguments, '--numpy', '-o', str(tmp_path / "ladder")])
-    out = capsys.readouterr().out
-    assert status == 0
-    assert "Lienard-Chipart conditions: agree at 100.0% of the points" in out
+def map_commands(text):
+    r"""The ``sage-dynsym map`` commands of a Markdown text (inline code, or
+    one command of a code block, continuation lines joined), as lists of
+    arguments."""
+    found = re.findall(r"sage-dynsym map ([^`]*)", text.replace("\\\n", " "))
+    return [command.split() for command in found]
+
+
+def test_map_commands_are_found_inline_and_in_code_blocks():
+    text = ("writes a map: `sage-dynsym map examples/a.yaml --param\nR=0:5:400`.\n\n```sh\n"
+            "sage-dynsym map examples/b.yaml --param a=0:1:3 \\\n    --value b=1 -o /tmp/b\n```\n")
+    assert map_commands(text) == [['examples/a.yaml', '--param', 'R=0:5:400'],
+                                  ['examples/b.yaml', '--param', 'a=0:1:3', '--value', 'b=1',
+                                   '-o', '/tmp/b']]
+
+
+def test_readme_map_examples_run_on_shipped_files(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    with open("README.md", encoding="utf-8") as stream:
+        commands = map_commands(stream.read())
+    assert commands, "the README shows no sage-dynsym map command"
+    for i, arguments in enumerate(commands):
+        assert arguments[0].startswith("examples/") and os.path.exists(arguments[0]), \
+            f"the README's map example names {arguments[0]}, not a shipped example file"
+        if '-o' in arguments:                   # written here instead
+            del arguments[arguments.index('-o'):arguments.index('-o') + 2]
+        # the same command on a coarser grid
+        smaller = [re.sub(r"^(\w+=[^:]+:[^:]+):\d+$", r"\1:11", a) for a in arguments]
+        status = main(['map', *smaller, '--numpy', '-o', str(tmp_path / f"readme{i}")])
+        out = capsys.readouterr()
+        assert status == 0, out.err
+        assert "stability map of 11" in out.out
