@@ -94,6 +94,8 @@ def test_one_existing_output_is_named_in_the_singular(tmp_path, capsys, nothing_
     (['--param', 'R1=0:1:3', '--value', 'R2=1/0'], "--value: R2=1/0: expected a real number"),
     (['--param', 'R1=0:1:3', '--at', 'i1=x'], "--at: i1=x: expected a real number"),
     (['--param', 'R1=0:1:3', '--at', 'i1=I'], "--at: i1=I: expected a real number"),
+    (['--param', 'R1=0:1:3', '--value', 'R2=-exp(800)'],
+     "--value: R2=-exp(800): the value is beyond floating point"),
 ])
 def test_other_refusals_before_any_computation(tmp_path, capsys, nothing_computed, arguments,
                                                fragment):

@@ -303,23 +303,27 @@ def _numbers(pairs, option):
     (``9.81`` is `981/100`, ``pi/2``, ``sqrt(2)/2``). The model's declared
     signs are checked where the values are used (by
     :func:`~sage_dynsym.scale.maps.stability_map`)."""
-    from ..errors import DescriptionError, ExpressionError
+    from ..errors import DescriptionError, ExpressionError, brief
     from ..io.expressions import ExpressionParser
     reader = ExpressionParser(())
     values = {}
     for name, text in pairs:
-        expected = (f"{name}={text}: expected a real number or an exact constant "
-                    "(e.g. 9.81, pi/2, sqrt(2)/2)")
+        given = f"{name}={text if len(text) <= 60 else text[:57] + '...'}"
+        expected = (f"{given}: expected a real number or an exact constant (e.g. 9.81, "
+                    "pi/2, sqrt(2)/2)")
         try:
             value = reader.parse(text)
         except ExpressionError as err:
             raise DescriptionError(f"{expected}; {err.message}", entry=option) from None
         try:
-            real = not value.variables() and complex(value).imag == 0
+            z = None if value.variables() else complex(value)
         except (TypeError, ValueError, OverflowError):
-            real = False
-        if not real:
-            raise DescriptionError(f"{expected}, got {value}", entry=option)
+            z = None
+        if z is not None and not (math.isfinite(z.real) and math.isfinite(z.imag)):
+            raise DescriptionError(f"{given}: the value is beyond floating point (about "
+                                   "1.8e308 at most)", entry=option)
+        if z is None or z.imag != 0:
+            raise DescriptionError(f"{expected}, got {brief(str(value))[1:-1]}", entry=option)
         values[name] = value
     return values
 

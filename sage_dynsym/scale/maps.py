@@ -107,7 +107,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..algebra.conditions import as_relational
-from ..errors import AnalysisError, DynSymError
+from ..errors import AnalysisError, DynSymError, brief
 from ..io.files import write_atomically
 from ..dynamics.hamiltonian import Hamiltonian
 from ..dynamics.lagrangian import Lagrangian
@@ -501,7 +501,8 @@ def _exact_number(value, where, entry="stability_map"):
         except (TypeError, ValueError):
             z = None
     if z is None or z.imag != 0 or not np.isfinite(z.real):
-        raise AnalysisError(f"{where}: expected a real number, got {value!r}", entry=entry)
+        what = "a finite real number" if z is not None and z.imag == 0 else "a real number"
+        raise AnalysisError(f"{where}: expected {what}, got {brief(value)}", entry=entry)
     if isinstance(value, (int, Integer, Rational)):
         return SR(QQ(value))
     if isinstance(value, Expression) and value.is_constant() and not value.variables():
