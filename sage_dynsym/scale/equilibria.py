@@ -47,8 +47,8 @@ from ..dynamics.model import linearization_point
 from ..errors import AnalysisError, DynSymError
 from .points import number_text
 
-#: The multiples `k\pi/4` tried for an angle, as ``(k, 4)``; first the exact
-#: value a decimal stands for (a multiple of `\pi/12`).
+#: The values `k\pi/n` tried for an angle, as ``(k, n)`` (after the exact
+#: value a decimal stands for, a multiple of `\pi/12`).
 ANGLES = [(0, 1), (1, 1), (1, 2), (-1, 2), (1, 4), (-1, 4), (3, 4), (-3, 4)]
 
 #: Most coordinates at fault for which a point is looked for (the
@@ -66,7 +66,7 @@ NEAR = 1e-3
 def point_diagnosis(model, at):
     r"""
     Why ``model`` cannot be linearized around ``at`` (a dict over its
-    coordinates or state variables; the others 0), as an
+    coordinates; the others 0), as an
     :class:`~sage_dynsym.errors.AnalysisError` naming the coordinates at
     fault and suggesting a point that works (or saying that none was
     found); ``None`` when the point is a regular equilibrium, the failure
