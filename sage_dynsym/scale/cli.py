@@ -19,10 +19,15 @@ Options:
 
 - ``--param NAME=LOW:HIGH:N`` -- a parameter of the map and its range
   (once per parameter; one or two for a picture);
-- ``--value NAME=NUMBER`` -- the value of another symbol (every symbol of
-  the system needs a value);
-- ``--at NAME=NUMBER`` -- the point of linearization (state variables or
-  coordinates; default 0);
+- ``--value NAME=VALUE`` -- the value of another symbol (every symbol of
+  the system needs a value): a number or an exact constant, read by the
+  package's expression reader (never evaluated): ``9.81`` is `981/100`,
+  ``pi/2``, ``sqrt(2)/2``;
+- ``--at NAME=VALUE`` -- the point of linearization (state variables or
+  coordinates; default 0), as for ``--value``: ``--at theta=pi``. A point
+  that is not an equilibrium, or where the coordinates are singular, is an
+  error naming the coordinate and suggesting a point that works (see
+  :mod:`~sage_dynsym.scale.equilibria`);
 - ``--samples N``, ``--seed S`` -- ``N`` random points instead of the grid
   (``S`` a non-negative integer);
 - ``--max-points N`` -- the most points (default
@@ -37,8 +42,10 @@ Options:
   scheduler;
 - ``--progress`` -- Dask's progress bar;
 - ``-o PREFIX`` -- the output files (default: the file's name with
-  ``_map``, in the current directory); the folder must exist (checked
-  first); existing files are replaced only with ``--force``.
+  ``_map``, in the current directory); the folder must exist and be
+  writable; existing files are refused at once, before the model is loaded
+  or anything computed, unless ``--force`` is given: then they are replaced
+  atomically (the old file or the complete new one).
 
 Errors are one line on standard error naming the file and the option or
 the entry of the description, and exit status 1 (2 for a malformed command
@@ -72,6 +79,25 @@ EXAMPLES::
     ....:       '/no/such/dir/out'])
     sage-dynsym: error: ...rlc_ladder.yaml: -o: the folder /no/such/dir does not exist
     1
+
+Existing output files are refused before anything is computed::
+
+    sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:3', '--numpy', '-o', prefix])
+    sage-dynsym: error: ...rlc_ladder.yaml: -o: ....png, ....npz exist already: give --force to replace them, or another -o PREFIX
+    1
+
+The inverted pendulum of the cart (``theta = pi``; the pendulum hangs at
+``theta = 0``), unstable whatever the spring and the damper::
+
+    sage: main([example_path('cart_pendulum_spring_damper.yaml'), '--param', 'k=0.5:5:11',
+    ....:       '--param', 'c=0.1:2:11', '--value', 'M=1', '--value', 'm=1/2', '--value', 'l=1',
+    ....:       '--value', 'g=9.81', '--at', 'theta=pi', '--numpy', '-o', prefix + '_cart'])
+    cart pendulum with spring and damper: stability map of 11 x 11 points in (k, c): 0.0% asymptotically stable (method: polynomial)
+    Lienard-Chipart conditions: agree at 100.0% of the points
+    classes: 0.0% asymptotically stable, 0.0% stable in first approximation, 100.0% unstable
+    exact classes: agree at 100.0% (unstable)
+    wrote ..._cart.png, ..._cart.npz
+    0
 """
 import argparse
 import math
@@ -116,8 +142,11 @@ def _param(text):
 
 
 def _value(text):
-    name, value = _assignment(text, "NUMBER")
-    return name, _number(value)
+    # the text of the value: read exactly (pi/2, sqrt(2)/2) once Sage is loaded
+    name, value = _assignment(text, "VALUE")
+    if not value:
+        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, got {text!r}")
+    return name, value
 
 
 def parser():
@@ -142,10 +171,12 @@ def parser():
     p.add_argument("file", metavar="FILE", help="description file (circuit or mechanical)")
     p.add_argument("--param", type=_param, action="append", required=True,
                    metavar="NAME=LOW:HIGH:N", help="a parameter of the map and its range")
-    p.add_argument("--value", type=_value, action="append", default=[], metavar="NAME=NUMBER",
-                   help="the value of another symbol")
-    p.add_argument("--at", type=_value, action="append", default=[], metavar="NAME=NUMBER",
-                   help="the point of linearization (default: 0)")
+    p.add_argument("--value", type=_value, action="append", default=[], metavar="NAME=VALUE",
+                   help="the value of another symbol: a number or an exact constant "
+                        "(9.81, pi/2, sqrt(2)/2)")
+    p.add_argument("--at", type=_value, action="append", default=[], metavar="NAME=VALUE",
+                   help="the point of linearization, as for --value (default: 0; "
+                        "e.g. --at theta=pi)")
     p.add_argument("--samples", type=count_option, metavar="N",
                    help="N random points instead of the grid")
     p.add_argument("--seed", type=lambda text: count_option(text, minimum=0), default=0,
@@ -170,7 +201,8 @@ def parser():
     p.add_argument("--progress", action="store_true", help="show Dask's progress bar")
     p.add_argument("-o", "--output", metavar="PREFIX", help="output files PREFIX.png, PREFIX.npz "
                    "(default: the file's name with _map, in the current directory)")
-    p.add_argument("--force", action="store_true", help="replace existing output files")
+    p.add_argument("--force", action="store_true", help="replace existing output files "
+                   "(without it, existing files are refused before anything is computed)")
     return p
 
 
@@ -216,9 +248,12 @@ def _located(err, path):
 
 
 def _checked(args):
-    r"""The parameters and values of the command line, checked before the
-    model is loaded: no symbol twice, at most ``--max-points`` points, the
-    output folder."""
+    r"""
+    Everything the command line can check before the model is loaded and
+    the map computed: no symbol twice, at most ``--max-points`` points, the
+    output files (the folder exists and is writable; existing files only
+    with ``--force``). Returns the output files.
+    """
     from ..errors import DescriptionError
     for option, what, pairs in (('--param', 'parameter', args.param),
                                 ('--value', 'value', args.value), ('--at', 'point', args.at)):
@@ -231,22 +266,79 @@ def _checked(args):
     if size > args.max_points:
         raise DescriptionError(f"{size} points are more than --max-points {args.max_points}",
                                entry="--samples" if args.samples is not None else "--param")
-    if args.output:
-        folder = os.path.dirname(args.output) or '.'
-        if not os.path.isdir(folder):
-            raise DescriptionError(f"the folder {folder} does not exist", entry="-o")
+    return _outputs(args)
+
+
+def _outputs(args):
+    r"""The output files, checked: the picture (one or two parameters on a
+    grid, two for random samples) and the arrays."""
+    from ..errors import DescriptionError
+    prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
+    folder = os.path.dirname(prefix) or '.'
+    if not os.path.isdir(folder):
+        raise DescriptionError(f"the folder {folder} does not exist", entry="-o")
+    if not os.path.basename(prefix):
+        raise DescriptionError(f"{prefix!r} names a folder: expected PREFIX, e.g. "
+                               f"{os.path.join(folder, 'map')}", entry="-o")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise DescriptionError(f"the folder {folder} is not writable", entry="-o")
+    n = len(args.param)
+    picture = n <= 2 if args.samples is None else n == 2
+    outputs = [prefix + ".png"] * picture + [prefix + ".npz"]
+    folders = [f for f in outputs if os.path.isdir(f)]
+    if folders:
+        raise DescriptionError(f"{folders[0]} is a folder: give another -o PREFIX", entry="-o")
+    existing = [f for f in outputs if os.path.exists(f)]
+    if existing and not args.force:
+        one = len(existing) == 1
+        raise DescriptionError(f"{', '.join(existing)} {'exists' if one else 'exist'} already: "
+                               f"give --force to replace {'it' if one else 'them'}, or another "
+                               "-o PREFIX", entry="-o")
+    return outputs
+
+
+def _numbers(pairs, option):
+    r"""The values of ``--value`` or ``--at``, read exactly by the package's
+    expression reader (never evaluated): numbers and constant expressions
+    (``9.81`` is `981/100`, ``pi/2``, ``sqrt(2)/2``). The model's declared
+    signs are checked where the values are used (by
+    :func:`~sage_dynsym.scale.maps.stability_map`)."""
+    from ..errors import DescriptionError, ExpressionError, brief
+    from ..io.expressions import ExpressionParser
+    reader = ExpressionParser(())
+    values = {}
+    for name, text in pairs:
+        given = f"{name}={text if len(text) <= 60 else text[:57] + '...'}"
+        expected = (f"{given}: expected a real number or an exact constant (e.g. 9.81, "
+                    "pi/2, sqrt(2)/2)")
+        try:
+            value = reader.parse(text)
+        except ExpressionError as err:
+            raise DescriptionError(f"{expected}; {err.message}", entry=option) from None
+        try:
+            z = None if value.variables() else complex(value)
+        except (TypeError, ValueError, OverflowError):
+            z = None
+        if z is not None and not (math.isfinite(z.real) and math.isfinite(z.imag)):
+            raise DescriptionError(f"{given}: the value is beyond floating point (about "
+                                   "1.8e308 at most)", entry=option)
+        if z is None or z.imag != 0:
+            raise DescriptionError(f"{expected}, got {brief(str(value))[1:-1]}", entry=option)
+        values[name] = value
+    return values
 
 
 def _run(args):
+    outputs = _checked(args)            # nothing loaded nor computed before these checks
+    values, point = _numbers(args.value, '--value'), _numbers(args.at, '--at')
     from ..description import load
-    from ..errors import DescriptionError, DynSymError
+    from ..errors import DynSymError
     from .maps import stability_map
-    _checked(args)
     model = load(args.file)
     parameters = dict(args.param)
     client = False if args.numpy else 'local' if args.cluster else (args.scheduler or None)
-    S = stability_map(model, parameters, fixed=dict(args.value), client=client,
-                      samples=args.samples, seed=args.seed, at=dict(args.at),
+    S = stability_map(model, parameters, fixed=values, client=client,
+                      samples=args.samples, seed=args.seed, at=point,
                       method=args.method, conditions='lienard-chipart', classes='spectrum',
                       workers=args.workers, timeout=args.timeout, progress=args.progress,
                       max_points=args.max_points)
@@ -267,25 +359,30 @@ def _run(args):
         names = {2: 'asymptotically stable', 1: 'stable in first approximation', 0: 'unstable'}
         print("exact classes: agree at " + ", ".join(
             f"{100 * agree[k]:.1f}% ({names[k]})" for k in (2, 1, 0) if agree[k] == agree[k]))
-    prefix = args.output or os.path.splitext(os.path.basename(args.file))[0] + "_map"
-    picture = len(parameters) <= 2 or not S.is_grid()
-    outputs = [prefix + ".png"] * picture + [prefix + ".npz"]
-    existing = [f for f in outputs if os.path.exists(f)]
-    if existing and not args.force:
-        raise DescriptionError(f"{', '.join(existing)} exists already: give --force to replace "
-                               "it, or another -o PREFIX", entry="-o")
-    written = []
+    _write(S, outputs)
+    print("wrote " + ", ".join(outputs))
+    return 0
+
+
+def _write(S, outputs):
+    r"""Write the arrays, then the picture, each file replaced atomically
+    (the old file or the complete new one, never half a file): the arrays,
+    the computed work, are kept whatever happens to the picture."""
+    import tempfile
+    from ..errors import DescriptionError
+    from ..io.files import write_atomically
     try:
-        if picture:
+        S.save(outputs[-1])
+        if outputs[0].endswith(".png"):
             import numpy
             with numpy.errstate(all='ignore'):     # huge axes overflow in region_plot
                 G = S.plot()
-            G.save(prefix + ".png", figsize=[8, 6])
-            written.append(prefix + ".png")
-        S.save(prefix + ".npz")
+            with tempfile.TemporaryDirectory() as folder:
+                picture = os.path.join(folder, "map.png")
+                G.save(picture, figsize=[8, 6])
+                with open(picture, 'rb') as stream:
+                    data = stream.read()
+            write_atomically(outputs[0], lambda stream: stream.write(data), binary=True)
     except OSError as err:
-        raise DescriptionError(f"cannot write {err.filename or prefix}: "
+        raise DescriptionError(f"cannot write {err.filename or outputs[0]}: "
                                f"{err.strerror or err}", entry="-o") from None
-    written.append(prefix + ".npz")
-    print("wrote " + ", ".join(written))
-    return 0

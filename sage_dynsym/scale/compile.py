@@ -33,7 +33,7 @@ from ..numerics.expressions import real_constant, function_name
 from .kernel import FUNCTIONS
 
 #: what a user can do about a symbol or function without a value
-_HINT = "; give it a value in fixed= (--value NAME=NUMBER on the command line)"
+_HINT = "; give it a value in fixed= (--value NAME=VALUE on the command line)"
 
 _COMPARISONS = {operator.gt: 'gt', operator.ge: 'ge', operator.lt: 'lt',
                 operator.le: 'le', operator.eq: 'eq', operator.ne: 'ne'}
@@ -74,7 +74,7 @@ def compile_expressions(expressions, inputs, entry="stability_map"):
         sage: compile_expressions([diff(f(x), x).subs(x=0) * y], [y])
         Traceback (most recent call last):
         ...
-        AnalysisError: stability_map: D[0](f)(0) has no numerical value; give it a value in fixed= (--value NAME=NUMBER on the command line)
+        AnalysisError: stability_map: D[0](f)(0) has no numerical value; give it a value in fixed= (--value NAME=VALUE on the command line)
         sage: compile_expressions([I*x], [x])
         Traceback (most recent call last):
         ...

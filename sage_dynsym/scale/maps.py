@@ -107,7 +107,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..algebra.conditions import as_relational
-from ..errors import AnalysisError, DynSymError
+from ..errors import AnalysisError, DynSymError, brief
 from ..io.files import write_atomically
 from ..dynamics.hamiltonian import Hamiltonian
 from ..dynamics.lagrangian import Lagrangian
@@ -116,7 +116,8 @@ from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
-from .points import parse_points, check_positive_ranges, MAX_POINTS
+from .equilibria import point_diagnosis
+from .points import parse_points, check_positive_ranges, number_text, MAX_POINTS
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
@@ -329,7 +330,8 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
                         values, method, tol, conditions, note, name,
                         classes=kinds.reshape(points.shape), exact_classes=classes,
-                        marginal_tol=marginal_tol)
+                        marginal_tol=marginal_tol,
+                        at={k: v for k, v in _point(at).items() if not v.is_zero()})
 
 
 # ---------------------------------------------------------------------------
@@ -400,8 +402,31 @@ def model_linear_system(model, at=None):
         Traceback (most recent call last):
         ...
         AnalysisError: at: zz is not a coordinate of the model; the coordinates are psi, theta
+
+    A point that is not a regular equilibrium: the coordinate at fault is
+    named, and a point that works suggested (see
+    :mod:`~sage_dynsym.scale.equilibria`)::
+
+        sage: cart = load(example_path('cart_pendulum_spring_damper.yaml'))
+        sage: model_linear_system(cart, {'theta': pi}).W()
+        [      k       0]
+        [      0 -g*l*m]
+        sage: model_linear_system(cart, {'theta': 3.14})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: the point {y: 0, theta: 3.14} is not an equilibrium: ... did you mean theta = pi? ...
     """
-    return model.free_linear_system(_point(at))
+    point = _point(at)
+    try:
+        return model.free_linear_system(point)
+    except AnalysisError as err:
+        if err.entry != "linearize":
+            raise
+        # which coordinate, and a point that works (see scale.equilibria)
+        better = point_diagnosis(model, point)
+        if better is None:
+            raise
+        raise better from None
 
 
 def linear_symbols(linear):
@@ -476,7 +501,8 @@ def _exact_number(value, where, entry="stability_map"):
         except (TypeError, ValueError):
             z = None
     if z is None or z.imag != 0 or not np.isfinite(z.real):
-        raise AnalysisError(f"{where}: expected a real number, got {value!r}", entry=entry)
+        what = "a finite real number" if z is not None and z.imag == 0 else "a real number"
+        raise AnalysisError(f"{where}: expected {what}, got {brief(value)}", entry=entry)
     if isinstance(value, (int, Integer, Rational)):
         return SR(QQ(value))
     if isinstance(value, Expression) and value.is_constant() and not value.variables():
@@ -578,12 +604,13 @@ class StabilityMap(SageObject):
     """
 
     def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None,
-                 name=None, classes=None, exact_classes=None, marginal_tol=1e-7):
+                 name=None, classes=None, exact_classes=None, marginal_tol=1e-7, at=None):
         self._points, self._alpha, self._stable = points, alpha, stable
         self._fixed, self._method, self._tol = dict(fixed), method, tol
         self._conditions, self._note, self._name = conditions, note, name
         self._classes = classes
         self._exact_classes, self._marginal_tol = exact_classes, marginal_tol
+        self._at = dict(at or {})       # the point of linearization, where not 0
 
     def _repr_(self):
         names = ', '.join(map(str, self._points.keys))
@@ -1003,9 +1030,12 @@ class StabilityMap(SageObject):
         r"""The title of the map's pictures: the system's name and the fixed
         values (the section's included)."""
         head = f"{self._name}: stability map" if self._name else "stability map"
+        if self._at:
+            head += " at " + ", ".join(f"${latex(k)} = {number_text(v, latex=True)}$"
+                                       for k, v in self._at.items())
         if not fixed:
             return head
-        values = ', '.join(f"${latex(k)} = {latex(v)}$" for k, v in
+        values = ', '.join(f"${latex(k)} = {number_text(v, latex=True)}$" for k, v in
                            sorted(fixed.items(), key=lambda kv: str(kv[0])))
         return f"{head}\n{values}"
 

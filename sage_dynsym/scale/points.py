@@ -234,6 +234,32 @@ def _range(key, axis_range, entry, samples=False):
     return low, high, n
 
 
+def number_text(value, latex=False):
+    r"""
+    A value of a point as a person writes it: an integer, or a decimal for
+    a rational (``9.81``, not ``981/100``; the shortest decimal that gives
+    back its floating-point value); other
+    constants exactly (``1/2*pi``, or their LaTeX with ``latex=True``).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.points import number_text
+        sage: number_text(981/100), number_text(QQ(0.1)), number_text(-3), number_text(1/3)
+        ('9.81', '0.1', '-3', '0.3333333333333333')
+        sage: number_text(pi/2), number_text(sqrt(2)/2, latex=True)
+        ('1/2*pi', '\\frac{1}{2} \\, \\sqrt{2}')
+    """
+    from sage.rings.rational_field import QQ
+    try:
+        q = QQ(value)
+    except (TypeError, ValueError, ArithmeticError):
+        if latex:
+            from sage.misc.latex import latex as to_latex
+            return str(to_latex(value))
+        return str(value)
+    return str(q) if q.denominator() == 1 else repr(float(q))
+
+
 def check_positive_ranges(points, positive, entry="parameters"):
     r"""
     Check that the parameters of ``points`` declared positive (in the list
