@@ -61,3 +61,10 @@ def test_readme_block_in_the_sage_kernel(tmp_path):
     done = run_notebook(notebook, folder)
     out = "".join(o.get("text", "") for o in done.cells[0].outputs if o.get("name") == "stdout")
     check_output(out, folder)
+
+
+def test_readme_lists_every_worksheet():
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    listed = set(re.findall(r"^\| `(\d\d_\w+)` \|", text, re.M))
+    shipped = {p.stem for p in (ROOT / "worksheets").glob("*.ipynb")}
+    assert listed == shipped
