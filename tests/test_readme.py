@@ -68,3 +68,13 @@ def test_readme_lists_every_worksheet():
     listed = set(re.findall(r"^\| `(\d\d_\w+)` \|", text, re.M))
     shipped = {p.stem for p in (ROOT / "worksheets").glob("*.ipynb")}
     assert listed == shipped
+
+
+def test_readme_layout_names_every_part_of_the_package():
+    text = (ROOT / "README.md").read_text(encoding="utf-8")
+    layout = text[text.index("## Layout"):text.index("Earlier module names")]
+    named = set(re.findall(r"`(\w+)(?:/|\.py)`", layout))
+    package = ROOT / "sage_dynsym"
+    parts = {p.stem for p in package.glob("*.py") if p.stem != "__init__"}
+    parts |= {p.name for p in package.iterdir() if (p / "__init__.py").exists()}
+    assert named == parts
