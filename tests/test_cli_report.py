@@ -66,9 +66,9 @@ def test_a_long_characteristic_polynomial_is_summarised_and_in_full_in_the_outpu
     shown = summary.split("leading terms: ", 1)[1].split(" + ...")[0]
     first = sympy.sympify(shown.split(" + ")[0].replace("^", "**"))
     assert sympy.degree(first, lam) == degree and first in terms
-    # --full prints it as the -o file has it
-    assert full in run(LADDER, "--full").stdout.splitlines()
-    assert "LaTeX:" in run(LADDER, "--latex").stdout
+    # --full prints it as the -o file has it, --latex with its LaTeX
+    both = run(LADDER, "--full", "--latex").stdout
+    assert full in both.splitlines() and both.strip() == full_text.strip()
 
 
 @pytest.mark.slow
@@ -134,7 +134,22 @@ def test_the_bicycle_stability_conditions_give_the_benchmark_speeds(tmp_path):
     assert pi is not None
 
 
-def test_streaming_the_first_sections_are_printed_before_the_later_ones_end(tmp_path):
+def test_the_first_sections_are_printed_before_the_later_ones_are_computed(monkeypatch):
+    import sage_dynsym.mechanics.report as R
+    original, seen = R.hamiltonian_lines, []
+
+    def hamiltonian_lines(*args):
+        seen.append(sys.stdout.getvalue())      # what the command line printed so far
+        return original(*args)
+
+    monkeypatch.setattr(R, "hamiltonian_lines", hamiltonian_lines)
+    result = run(PENDULUM)
+    assert result.returncode == 0 and "Hamiltonian:" in result.stdout
+    assert "Lagrange equations (E_i = 0):" in seen[0] and "Hamiltonian:" not in seen[0]
+
+
+@pytest.mark.slow
+def test_streaming_a_child_process_prints_its_first_sections_at_once(tmp_path):
     # the child waits, inside its Hamiltonian section, until the test has read
     # the Lagrange equations from its standard output (or gives up after a minute)
     flag = tmp_path / "seen"
