@@ -174,8 +174,8 @@ class ReportContext:
     What a section sees while it is computed: the ``results`` of the
     sections before it (by key; it may add its own), the ``budget``,
     whether the section is ``shown`` (a section computed only for its
-    result may leave out work that serves its lines only),
-    :meth:`check` and :meth:`progress`.
+    result may leave out work that serves its lines only), and
+    :meth:`check`.
 
     EXAMPLES::
 
@@ -188,9 +188,8 @@ class ReportContext:
         BudgetError: the equations: about 1e+03 polynomial terms, over the budget of 100
     """
 
-    def __init__(self, results, budget, shown=True, progress=None):
+    def __init__(self, results, budget, shown=True):
         self.results, self.budget, self.shown = results, budget, shown
-        self._progress = progress
 
     def check(self, what, estimate):
         r"""Raise a :class:`~sage_dynsym.errors.BudgetError` when
@@ -201,19 +200,6 @@ class ReportContext:
         if self.budget is not None and estimate > self.budget:
             raise BudgetError(what, estimate=estimate, budget=self.budget)
 
-    def progress(self, step):
-        r"""Say that the section now starts ``step`` (a long computation),
-        to the report's progress function if it has one.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.dynamics.reporting import ReportContext
-            sage: ReportContext({}, 100, progress=print).progress("the determinant")
-            the determinant
-            sage: ReportContext({}, 100).progress("the determinant")
-        """
-        if self._progress is not None:
-            self._progress(step)
 
 
 class Formula(SageObject):
@@ -458,8 +444,8 @@ def report_blocks(title, sections, wanted=None, budget=None, analysis=True, fail
       sections
     - ``failed`` -- (optional) a list to which the names of the sections
       that failed on an error that is not the package's own are appended
-    - ``progress`` -- (optional) a function called with a string before
-      each section is computed, and at the long steps of a section
+    - ``progress`` -- (optional) a function called with the name of each
+      section before it is computed
     - ``labels`` -- (optional) a dict from keys to the names of the
       sections they select, for the line of a section asked for that the
       model does not have (default: the key)
@@ -526,7 +512,7 @@ def report_blocks(title, sections, wanted=None, budget=None, analysis=True, fail
             continue
         if progress is not None:
             progress(name)
-        context = ReportContext(results, budget, shown=show, progress=progress)
+        context = ReportContext(results, budget, shown=show)
         try:
             if section.estimate is not None:
                 context.check(section.what or name, section.estimate(context))

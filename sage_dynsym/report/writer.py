@@ -11,7 +11,10 @@ LaTeX form of every formula. The command line ``python -m sage_dynsym`` (or
 Every kind of model says what its report holds
 (:meth:`~sage_dynsym.dynamics.model.Model.report_sections`); the sections
 are run here, for every kind alike, by
-:func:`~sage_dynsym.dynamics.reporting.run_sections` within one budget.
+:func:`~sage_dynsym.dynamics.reporting.report_blocks` within one budget,
+each section yielded as soon as it is computed (the command line prints it
+at once), its formulas written in full or summarised by
+:func:`~sage_dynsym.dynamics.reporting.render`.
 
 EXAMPLES::
 
@@ -152,7 +155,7 @@ def report_blocks(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, fa
     INPUT: as for :func:`report`, and
 
     - ``progress`` -- (optional) a function called with the name of each
-      section before it is computed, and with the long steps of a section
+      section before it is computed
 
     The arguments are checked at once, before any section is computed.
 
