@@ -156,11 +156,13 @@ def main(argv=None):
     show_progress = sys.stderr.isatty() if args.progress is None else args.progress
 
     for path in args.files:
-        written = []        # the full text of the sections printed so far
+        written = []        # the full text of the sections printed so far (for -o)
         reports.append(written)
+        printed = []        # the blocks printed so far
         try:
             _with_time_limit(args.time_limit, lambda: _print_report(
-                load(path), args, failed, written, _progress(path) if show_progress else None))
+                load(path), args, failed, written, printed,
+                _progress(path) if show_progress else None))
         except DynSymError as err:
             status = fail(path, err)
             continue
@@ -175,7 +177,8 @@ def main(argv=None):
             continue
         finally:
             _progress_done(show_progress)
-        print(flush=True)
+            if printed:     # a blank line after each report, a partial one too
+                print(flush=True)
     if args.output:
         text = "\n\n".join("\n".join(lines) for lines in reports if lines)
         try:
@@ -185,10 +188,11 @@ def main(argv=None):
     return status or (INCOMPLETE if failed else 0)
 
 
-def _print_report(model, args, failed, written, progress):
+def _print_report(model, args, failed, written, printed, progress):
     r"""Print the report of ``model`` section by section, each as soon as it
-    is computed (readable, or in full with ``--full``), and append its full
-    text, with the LaTeX, to ``written`` (for ``-o``)."""
+    is computed (readable, or in full with ``--full``), append each block
+    printed to ``printed`` and its full text, with the LaTeX, to ``written``
+    (for ``-o``)."""
     from .report.writer import report_blocks
     from .dynamics.reporting import render
     blocks = report_blocks(model, sections=args.sections, budget=args.budget,
@@ -196,6 +200,7 @@ def _print_report(model, args, failed, written, progress):
     for block in blocks:
         _progress_done(progress is not None)
         print("\n".join(render(block, full=args.full, latex=args.latex)), flush=True)
+        printed.append(block)
         if args.output:
             written.extend(render(block, full=True, latex=True))
 
