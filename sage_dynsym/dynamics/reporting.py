@@ -304,19 +304,23 @@ def summary(expr, variables=(), named=None, characters=None):
         shown = ", ".join(clip(str(e), TERM_LENGTH) for e in entries[:2])
         more = ", ..." if len(entries) > 2 else ""
         return f"{shape}, {text_length} characters; leading terms: {shown}{more}"
-    e = SR(expr)
+    try:
+        e = SR(expr)
+    except (TypeError, ValueError):     # not symbolic: its text, cut
+        return f"{text_length} characters: {clip(str(expr), TERM_LENGTH)}"
     operator, parts = e.operator(), [e]
     if operator is add_vararg or operator is mul_vararg:
         parts = e.operands()
     described = {add_vararg: f"a sum of {len(parts)} terms",
                  mul_vararg: f"a product of {len(parts)} factors"}.get(operator, "an expression")
     present = [v for v in variables if e.has(v)]
-    if present and operator is add_vararg:
+    degree = _degree(e, present) if present else None
+    if degree is not None and operator is add_vararg:
         degrees = [_degree(t, present) for t in parts]
-        parts = [t for _, t in sorted(zip(degrees, parts), key=lambda p: -p[0])]
-    if present:
-        name = named or ", ".join(map(str, present))
-        described += f" of degree {_degree(e, present)} in {name}"
+        if None not in degrees:
+            parts = [t for _, t in sorted(zip(degrees, parts), key=lambda p: -p[0])]
+    if degree is not None:
+        described += f" of degree {degree} in {named or ', '.join(map(str, present))}"
     shown = ""
     for k, t in enumerate(parts[:LEADING_TERMS]):
         term = clip(str(t), TERM_LENGTH)
@@ -332,11 +336,22 @@ def summary(expr, variables=(), named=None, characters=None):
 
 def _degree(expr, variables):
     r"""The total degree of ``expr`` in ``variables`` (structural: nothing
-    is expanded)."""
-    if len(variables) == 1:
-        return expr.degree(variables[0])
-    s = SR.symbol()
-    return expr.subs({v: s * v for v in variables}).degree(s)
+    is expanded), or ``None`` where it is not defined (``x^y``).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.reporting import _degree
+        sage: x, y = var('x y')
+        sage: _degree(x^2*y + sqrt(x), [x, y]), _degree(x^y + x, [x])
+        (3, None)
+    """
+    try:
+        if len(variables) == 1:
+            return expr.degree(variables[0])
+        s = SR.symbol()
+        return expr.subs({v: s * v for v in variables}).degree(s)
+    except (RuntimeError, TypeError, ValueError):
+        return None
 
 
 def formula_lines(label, expr, indent="  ", variables=(), named=None):
