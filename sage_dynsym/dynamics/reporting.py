@@ -501,14 +501,11 @@ def report_blocks(title, sections, wanted=None, budget=None, analysis=True, fail
             for j in range(i):
                 if wants & set(sections[j].keys()):
                     computed[j] = True
-    def analysed(key):
-        return any(s.analysis for s in sections if key in s.keys())
-
     # the keys asked for: those wanted, or all those the model offers (its
     # analysis sections only with the analysis)
     asked = list(wanted) if wanted is not None else list(dict.fromkeys(
         k for s in sections if shown(s) for k in s.keys()
-        if k in labels and (analysis or not analysed(k))))
+        if k in labels and (analysis or not _analysed(sections, k))))
     accounted, missing, absent, results = set(), {}, {}, {}
     yield [title]
     for section, compute, show in zip(sections, computed, map(shown, sections)):
@@ -519,9 +516,11 @@ def report_blocks(title, sections, wanted=None, budget=None, analysis=True, fail
         if lacking:
             # an earlier section said why (skipped, failed), or does not apply
             why = missing.get(lacking[0])
+            if why is None:
+                continue
             for key in section.keys():
                 missing.setdefault(key, why)
-            if show and not section.auxiliary and why is not None:
+            if show and not section.auxiliary:
                 accounted.update(section.keys())
                 yield [f"{name}: skipped, it needs: {why}"]
             continue
@@ -554,17 +553,25 @@ def report_blocks(title, sections, wanted=None, budget=None, analysis=True, fail
         accounted.update(section.keys())
         yield [line]
     for key in asked:
-        if key in accounted:
-            continue
-        offered = [s for s in sections if key in s.keys()]
-        name = labels.get(key) or (offered[0].title(results) if offered else key)
-        reason = absent.get(key)
-        if not analysis and analysed(key):
-            yield [f"{name}: left out (an analysis section; the analysis is off: --no-analysis)"]
-        elif reason:
-            yield [f"{name}: not available ({reason})"]
-        else:
-            yield [f"{name}: not available for this model"]
+        if key not in accounted:
+            yield [_unaccounted_line(key, sections, labels, absent.get(key), analysis, results)]
+
+
+def _analysed(sections, key):
+    r"""Whether a section of ``key`` is analysis."""
+    return any(s.analysis for s in sections if key in s.keys())
+
+
+def _unaccounted_line(key, sections, labels, reason, analysis, results):
+    r"""The line of a section asked for (``key``) that printed nothing:
+    left out with the analysis, or not available (for ``reason``)."""
+    offered = [s for s in sections if key in s.keys()]
+    name = labels.get(key) or (offered[0].title(results) if offered else key)
+    if not analysis and _analysed(sections, key):
+        return f"{name}: left out (an analysis section; the analysis is off: --no-analysis)"
+    if reason:
+        return f"{name}: not available ({reason})"
+    return f"{name}: not available for this model"
 
 
 def run_sections(title, sections, wanted=None, budget=None, analysis=True, failed=None,
