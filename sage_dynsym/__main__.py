@@ -105,7 +105,7 @@ def main(argv=None):
     if argv[:1] == ["map"]:
         from .scale.cli import main as map_main
         return map_main(argv[1:])
-    from .report.sections import DEFAULT_BUDGET, SECTIONS
+    from .report.sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
     parser = argparse.ArgumentParser(
         prog="sage-dynsym",
         description="Derive the equations of the models in description files "
@@ -115,14 +115,14 @@ def main(argv=None):
         epilog="sage-dynsym map FILE --param NAME=LOW:HIGH:N ...: a stability map of the "
                "model on Dask (sage-dynsym map --help).")
     parser.add_argument("files", nargs="+", metavar="FILE", help="description files")
-    parser.add_argument("-o", "--output", help="also write the full reports (every formula "
+    parser.add_argument("-o", "--output", metavar="FILE", help="also write the full reports (every formula "
                         "in full, with its LaTeX) to this file")
     parser.add_argument("--sections", type=_sections, metavar="LIST",
                         help="comma-separated sections to print: " + ", ".join(SECTIONS)
                         + " (default: all the model has)")
     parser.add_argument("--no-analysis", action="store_true",
-                        help="leave out the analysis sections (stationary, lyapunov, "
-                             "stability, integrals)")
+                        help="leave out the analysis sections ("
+                             + ", ".join(ANALYSIS_SECTIONS) + ")")
     parser.add_argument("--full", action="store_true",
                         help="print every formula in full (default: a formula longer than a "
                              "few lines is summarised)")
