@@ -1,24 +1,34 @@
 r"""
 Command line: ``python -m sage_dynsym FILE [FILE ...]`` (or ``sage-dynsym``).
 
-Loads each description file and prints its report (characteristic
-function and equations, as text and LaTeX, and the analysis). A bad file
-gives a one-line error on standard error naming the file and the entry,
-never a traceback; the other files are still reported.
+Loads each description file and prints its report, section by section as
+each is computed: the characteristic function and equations, and the
+analysis. A formula longer than a few lines is summarised (what it is, its
+degree in the variable that matters, its number of terms, its leading
+terms), with a pointer to its full form. Every section asked for prints a
+line: its result, or why it is not there (``skipped`` over the budget, with
+how to raise it; ``not available`` for the model). A bad file gives a
+one-line error on standard error naming the file and the entry, never a
+traceback; the other files are still reported.
 
 Options:
 
 - ``--sections LIST`` -- comma-separated report sections (see
   :data:`sage_dynsym.report.sections.SECTIONS`), e.g. ``lagrangian,equations``;
 - ``--no-analysis`` -- leave out the analysis sections (stationary motions,
-  stability, dP/dt);
+  stability, dP/dt, first integrals);
+- ``--full`` -- print every formula in full;
+- ``--latex`` -- print the LaTeX of every formula printed in full;
 - ``--budget N`` -- the size budget of each section in polynomial terms
   (default :data:`sage_dynsym.report.sections.DEFAULT_BUDGET`): a section whose
-  estimated size is larger is replaced by one line saying so;
+  estimated size is larger is replaced at once by one line saying so;
 - ``--time-limit S`` -- give up on a file after ``S`` seconds (one error
   line, then the next file);
-- ``-o FILE`` -- also write the reports to ``FILE`` (replaced atomically;
-  its folder must exist, which is checked before any report is computed).
+- ``--progress`` -- say on standard error which section is being computed
+  (the default when standard error is a terminal);
+- ``-o FILE`` -- also write the reports to ``FILE``, in full: every formula
+  with its LaTeX (replaced atomically; its folder must exist, which is
+  checked before any report is computed).
 
 Exit status:
 
@@ -95,27 +105,38 @@ def main(argv=None):
     if argv[:1] == ["map"]:
         from .scale.cli import main as map_main
         return map_main(argv[1:])
-    from .report.sections import DEFAULT_BUDGET
+    from .report.sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
     parser = argparse.ArgumentParser(
         prog="sage-dynsym",
         description="Derive the equations of the models in description files "
-                    "(YAML) and print them as text and LaTeX, with their analysis.",
+                    "(YAML) and print them with their analysis, section by section. "
+                    "A formula longer than a few lines is summarised (--full prints it); "
+                    "the -o file holds everything, with the LaTeX of every formula.",
         epilog="sage-dynsym map FILE --param NAME=LOW:HIGH:N ...: a stability map of the "
                "model on Dask (sage-dynsym map --help).")
     parser.add_argument("files", nargs="+", metavar="FILE", help="description files")
-    parser.add_argument("-o", "--output", help="also write the reports to this file")
+    parser.add_argument("-o", "--output", metavar="FILE", help="also write the full reports (every formula "
+                        "in full, with its LaTeX) to this file")
     parser.add_argument("--sections", type=_sections, metavar="LIST",
-                        help="comma-separated sections to print: lagrangian, equations, "
-                             "routh, stationary, hamiltonian, mixed_potential, "
-                             "state_equations, lyapunov, stability (default: all)")
+                        help="comma-separated sections to print: " + ", ".join(SECTIONS)
+                        + " (default: all the model has)")
     parser.add_argument("--no-analysis", action="store_true",
-                        help="leave out the analysis sections (stationary, lyapunov, "
-                             "stability)")
+                        help="leave out the analysis sections ("
+                             + ", ".join(ANALYSIS_SECTIONS) + ")")
+    parser.add_argument("--full", action="store_true",
+                        help="print every formula in full (default: a formula longer than a "
+                             "few lines is summarised)")
+    parser.add_argument("--latex", action="store_true",
+                        help="print the LaTeX of each formula printed in full")
     parser.add_argument("--budget", type=count_option, default=DEFAULT_BUDGET, metavar="N",
-                        help="size budget of each section, in polynomial terms "
+                        help="size budget of each section, in polynomial terms: a section "
+                             "estimated over it is skipped at once, with a line saying so "
                              f"(default: {DEFAULT_BUDGET})")
     parser.add_argument("--time-limit", type=count_option, metavar="S",
                         help="give up on a file after S seconds")
+    parser.add_argument("--progress", action="store_true", default=None,
+                        help="say on standard error which section is being computed "
+                             "(default: when standard error is a terminal)")
     args = parser.parse_args(argv)
 
     def fail(path, message):
@@ -131,14 +152,17 @@ def main(argv=None):
             return fail(args.output, f"-o: {args.output} is a folder, not a file")
     from .description import load, write_atomically
     from .errors import DynSymError, brief
-    from .report import report
     reports, status, failed = [], 0, []
+    show_progress = sys.stderr.isatty() if args.progress is None else args.progress
 
     for path in args.files:
+        written = []        # the full text of the sections printed so far (for -o)
+        reports.append(written)
+        printed = []        # the blocks printed so far
         try:
-            text = _with_time_limit(args.time_limit, lambda: report(
-                load(path), sections=args.sections, budget=args.budget,
-                analysis=not args.no_analysis, failed=failed))
+            _with_time_limit(args.time_limit, lambda: _print_report(
+                load(path), args, failed, written, printed,
+                _progress(path) if show_progress else None))
         except DynSymError as err:
             status = fail(path, err)
             continue
@@ -151,14 +175,55 @@ def main(argv=None):
         except Exception as err:    # a bug or a failure inside Sage: still one line
             status = fail(path, f"{path}: unexpected {type(err).__name__}: {brief(str(err))}")
             continue
-        print(text, end="\n\n", flush=True)
-        reports.append(text)
+        finally:
+            _progress_done(show_progress)
+            if printed:     # a blank line after each report, a partial one too
+                print(flush=True)
     if args.output:
+        text = "\n\n".join("\n".join(lines) for lines in reports if lines)
         try:
-            write_atomically(args.output, lambda s: s.write("\n\n".join(reports) + "\n"))
+            write_atomically(args.output, lambda s: s.write(text + "\n"))
         except DynSymError as err:
             status = fail(args.output, err)
     return status or (INCOMPLETE if failed else 0)
+
+
+def _print_report(model, args, failed, written, printed, progress):
+    r"""Print the report of ``model`` section by section, each as soon as it
+    is computed (readable, or in full with ``--full``), append each block
+    printed to ``printed`` and its full text, with the LaTeX, to ``written``
+    (for ``-o``)."""
+    from .report.writer import report_blocks
+    from .dynamics.reporting import render
+    blocks = report_blocks(model, sections=args.sections, budget=args.budget,
+                           analysis=not args.no_analysis, failed=failed, progress=progress)
+    for block in blocks:
+        _progress_done(progress is not None)
+        print("\n".join(render(block, full=args.full, latex=args.latex)), flush=True)
+        printed.append(block)
+        if args.output:
+            written.extend(render(block, full=True, latex=True))
+
+
+def _progress(path):
+    r"""The progress function of the report of ``path``: a status line on
+    standard error (rewritten in place on a terminal)."""
+    name = os.path.basename(path)
+    terminal = sys.stderr.isatty()
+
+    def progress(step):
+        message = f"sage-dynsym: {name}: computing {step} ..."
+        if terminal:
+            print(f"\r\033[K{message[:150]}", end="", file=sys.stderr, flush=True)
+        else:
+            print(message, file=sys.stderr, flush=True)
+    return progress
+
+
+def _progress_done(shown):
+    r"""Clear the status line of :func:`_progress` on a terminal."""
+    if shown and sys.stderr.isatty():
+        print("\r\033[K", end="", file=sys.stderr, flush=True)
 
 
 class _TimeLimit(Exception):

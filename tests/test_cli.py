@@ -15,7 +15,7 @@ FAST_EXAMPLES = [p for p in EXAMPLES if os.path.basename(p) == 'spherical_pendul
 
 @pytest.mark.parametrize("path", slow_except(EXAMPLES, FAST_EXAMPLES, ids=os.path.basename))
 def test_report_for_every_example(path):
-    result = run(path)
+    result = run(path, "--latex")
     assert result.returncode == 0, result.stderr
     assert "Traceback" not in result.stderr
     text = result.stdout

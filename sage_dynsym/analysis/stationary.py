@@ -806,6 +806,12 @@ class StationarySolutions(SolutionList):
         lines = []
         if self.is_empty():
             lines.append("  no real solutions (for generic parameter values)")
+        # the equations left of a family may hold multipliers: say what they are
+        used = [m for m in self.multipliers()
+                if any(SR(e).has(m) for s in self for e in s.equations())]
+        if used:
+            lines.append(f"  ({', '.join(map(str, used))}: the multipliers of the Lyapunov "
+                         f"function K = {self.lyapunov_function()})")
         if not self.is_complete():
             lines.append("  (transcendental equations: solutions found by Maxima's solve, "
                          "possibly not all)")
@@ -816,7 +822,8 @@ class StationarySolutions(SolutionList):
                 kind += ", implicit"
             lines.append(f"  solution {k} ({kind}): {values or 'given by its equations'}")
             for e in s.equations():
-                equation(lines, e)
+                if not SR(e).is_zero():     # an identity says nothing
+                    equation(lines, e)
             try:
                 conditions = s.conditions()
                 if conditions:

@@ -73,6 +73,8 @@ def report_sections(circuit):
     """
     estimate = circuit_estimate(circuit)
     what = "branches times the squared terms of the largest element value"
+    incomplete = ("the circuit is not complete (the mixed potential exists for complete "
+                  "circuits only; its state equations come from nodal analysis)")
 
     def state_equations(context):
         try:
@@ -124,11 +126,11 @@ def report_sections(circuit):
                       "State equations", state_equations, estimate=lambda context: estimate,
                       what=f"the state equations ({what})"),
         ReportSection('mixed_potential', "Mixed potential", mixed_potential,
-                      needs=['state equations']),
+                      needs=['state equations'], absent=incomplete),
         ReportSection('state_equations', "State equations", equations,
                       needs=['state equations']),
         ReportSection('lyapunov', "dP/dt", lyapunov, needs=['state equations'],
-                      analysis=True),
+                      analysis=True, absent=incomplete),
         ReportSection(('lagrangian', 'equations', 'stability', 'loop lagrangian'),
                       "Loop Lagrangian", loop_lagrangian, estimate=lambda context: estimate,
                       what=f"the loop Lagrangian ({what})"),
@@ -154,9 +156,10 @@ def free_stability_lines(circuit, L, context):
 
         sage: from sage_dynsym.circuits import Circuit
         sage: from sage_dynsym.circuits.report import free_stability_lines
-        sage: from sage_dynsym.dynamics.reporting import ReportContext
+        sage: from sage_dynsym.dynamics.reporting import ReportContext, render
         sage: C = Circuit([[0, 1, 'R1'], [1, 2, 'L1'], [2, 0, 'C1']])
-        sage: print("\n".join(free_stability_lines(C, C.lagrangian(), ReportContext({}, 100))))
+        sage: print("\n".join(render(free_stability_lines(C, C.lagrangian(),
+        ....:                                               ReportContext({}, 100)))))
         Stability of the free circuit (sources off), loop method:
           characteristic polynomial: C1*L1*lambda_^2 + C1*R1*lambda_ + 1
             LaTeX: ...
@@ -176,7 +179,7 @@ def free_stability_lines(circuit, L, context):
     system = linearize(free, {q: 0 for q in free.coordinates()})
     poly = system.characteristic_polynomial(lam, positive=values)
     lines = ["Stability of the free circuit (sources off), loop method:"]
-    lines += formula_lines("characteristic polynomial: ", poly)
+    lines += formula_lines("characteristic polynomial: ", poly, variables=[lam])
     if poly.subs({lam: 0}).is_zero():
         lines.append("  lambda = 0 is a root: some loop charge is not fixed by a capacitor, "
                      "so the zero solution in loop charges is not asymptotically stable "

@@ -12,10 +12,10 @@ EXAMPLES::
 
     sage: from sage_dynsym import Lagrangian
     sage: from sage_dynsym.dynamics.lagrangian_report import equations_lines
-    sage: from sage_dynsym.dynamics.reporting import ReportContext
+    sage: from sage_dynsym.dynamics.reporting import ReportContext, render
     sage: x, dx, m, k = var('x dx m k')
     sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x])
-    sage: print("\n".join(equations_lines(L, ReportContext({}, 100))))
+    sage: print("\n".join(render(equations_lines(L, ReportContext({}, 100)))))
     Lagrange equations (E_i = 0):
       [x] ddx*m + k*x
         LaTeX: {\ddot{x}} m + k x
@@ -93,7 +93,8 @@ def equations_lines(L, context):
                   equations_estimate(L))
     lines = ["Lagrange equations (E_i = 0):"]
     for q, e in zip(L.coordinates(), L.lagrange_equations()):
-        lines += formula_lines(f"[{q}] ", e)
+        lines += formula_lines(f"[{q}] ", e, variables=L.accelerations(),
+                               named="the accelerations")
     for mu, f in zip(L.multipliers(), L.constraints()):
         lines += formula_lines(f"constraint with multiplier {mu} (terms -{mu} df/dq_i): 0 = ", f)
     for mu, g in zip(L.velocity_multipliers(), L.nonholonomic_constraints()):
@@ -116,7 +117,7 @@ def constraint_forces_lines(L, context):
         sage: L = Lagrangian((dx^2 + dy^2)/2 - g*y, [x, y], constraints=[x^2 + y^2 - 1])
         sage: constraint_forces_lines(L, ReportContext({}, 10^5))[:2]
         ['Multipliers (constraint forces), solved with the accelerations:',
-         '  mu1 = ...']
+         Formula mu1 = ...]
     """
     if not (L.constraints() or L.nonholonomic_constraints()):
         return None
@@ -163,11 +164,12 @@ def routh_lines(R, cyclic, context):
     """
     lines = [f"Routh function for the cyclic coordinates {', '.join(map(str, cyclic))} "
              f"(momenta {', '.join(map(str, R.momenta()))}):"]
-    lines += formula_lines("R = ", R.expr())
+    lines += formula_lines("R = ", R.expr(), variables=R.velocities(), named="the velocities")
     context.check("the Routh equations", equations_estimate(R))
     lines.append("Routh equations (E_i = 0):")
     for q, e in zip(R.coordinates(), R.equations()):
-        lines += formula_lines(f"[{q}] ", e)
+        lines += formula_lines(f"[{q}] ", e, variables=R.accelerations(),
+                               named="the accelerations")
     return lines
 
 
@@ -184,7 +186,7 @@ def hamiltonian_lines(L, context):
         sage: from sage_dynsym.dynamics.reporting import ReportContext
         sage: x, dx = var('x dx')
         sage: hamiltonian_lines(Lagrangian(dx^2/2 - x^2/2, [x]), ReportContext({}, 100))
-        ['Hamiltonian:', '  H = 1/2*p_x^2 + 1/2*x^2', '    LaTeX: ...']
+        ['Hamiltonian:', Formula H = 1/2*p_x^2 + 1/2*x^2]
     """
     n = len(L.coordinates())
     context.check("the Hamiltonian (n^2 times the determinant of the mass matrix)",
@@ -197,7 +199,7 @@ def hamiltonian_lines(L, context):
         for c in D.constraints():
             lines += formula_lines("constraint ", c)
     lines.append("Hamiltonian:")
-    lines += formula_lines("H = ", H.expr())
+    lines += formula_lines("H = ", H.expr(), variables=H.momenta(), named="the momenta")
     return lines
 
 
@@ -229,8 +231,9 @@ def stationary_lines(L, R, positive=()):
 
         sage: from sage_dynsym import Lagrangian
         sage: from sage_dynsym.dynamics.lagrangian_report import stationary_lines
+        sage: from sage_dynsym.dynamics.reporting import render
         sage: x, dx = var('x dx')
-        sage: print("\n".join(stationary_lines(Lagrangian(dx^2/2 + cos(x), [x]), None)))
+        sage: print("\n".join(render(stationary_lines(Lagrangian(dx^2/2 + cos(x), [x]), None))))
         Equilibria (equations at rest):
           0 = sin(x)
           ...
@@ -276,3 +279,53 @@ def check_routh_scheme(poly, lam, budget):
         raise BudgetError(f"the Lienard-Chipart conditions: a product of the Routh scheme "
                           f"would multiply more than {budget} pairs of terms, over the budget "
                           f"of {budget}")
+
+
+def coefficient_conditions_lines(poly, lam, reason):
+    r"""
+    The Liénard--Chipart conditions of the characteristic polynomial
+    ``poly`` in ``lam`` stated in its coefficients `a_k` (of `\lambda^k`,
+    the roots `\lambda = 0` left out), each coefficient given apart: the
+    stability conditions of a polynomial whose expanded conditions are over
+    the budget (``reason``, the message of the
+    :class:`~sage_dynsym.errors.BudgetError`). ``None`` for a polynomial
+    without odd coefficients (no dissipation: these conditions do not
+    apply).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.lagrangian_report import coefficient_conditions_lines
+        sage: from sage_dynsym.dynamics.reporting import render
+        sage: lam, c, k, m = var('lam c k m')
+        sage: lines = coefficient_conditions_lines(m*lam^3 + c*lam^2 + k*lam, lam, "too large")
+        sage: print("\n".join(render(lines, latex=False)))
+          the expanded conditions are over the budget (too large; --budget raises it); lambda = 0 is a root of multiplicity 1 (left out); for the other roots, with a_k the coefficient of lam^k below, the Lienard-Chipart conditions (each > 0):
+            a_2
+            a_0
+            a_1
+          where
+            a_0 = k
+            a_1 = c
+            a_2 = m
+        sage: coefficient_conditions_lines(lam^2 + k, lam, "too large") is None
+        True
+    """
+    from ..analysis import lienard_chipart_conditions
+    coefficients = SR(poly).expand().coefficients(lam, sparse=False)
+    zeros = next(k for k, a in enumerate(coefficients) if not SR(a).is_zero())
+    coefficients = coefficients[zeros:]
+    if all(SR(a).is_zero() for a in coefficients[1::2]):
+        return None
+    a = [SR.var(f"a_{k}") for k in range(len(coefficients))]
+    generic = sum(a_k * lam ** k for k, a_k in enumerate(a))
+    roots = (f"lambda = 0 is a root of multiplicity {zeros} (left out); for the other roots, "
+             if zeros else "")
+    lines = [f"  the expanded conditions are over the budget ({reason}; --budget raises it); "
+             f"{roots}with a_k the coefficient of {lam}^k below, the Lienard-Chipart "
+             "conditions (each > 0):"]
+    for condition in lienard_chipart_conditions(generic, lam):
+        lines += formula_lines("", condition, indent="    ")
+    lines.append("  where")
+    for a_k, value in zip(a, coefficients):
+        lines += formula_lines(f"{a_k} = ", value, indent="    ")
+    return lines

@@ -27,7 +27,7 @@ registered under its :attr:`~Model.kind` (see
   (:class:`~sage_dynsym.dynamics.reporting.ReportSection`, each with an
   estimate of its size and the results of earlier sections it needs), run
   by the one section runner
-  (:func:`~sage_dynsym.dynamics.reporting.run_sections`) within one budget.
+  (:func:`~sage_dynsym.dynamics.reporting.report_blocks`) within one budget.
 
 EXAMPLES::
 

@@ -33,6 +33,7 @@ The budget bounds every section::
     Polynomial first integrals of degree <= 2 besides H and the Casimirs: skipped, ...
     Stationary motions (Routh-Lyapunov over H, the Casimirs): skipped, ...
 """
+from ..algebra.size import polynomial_terms
 from ..dynamics.reporting import ReportSection, formula_lines, run_sections
 
 #: What each estimate of :func:`lie_estimates` counts, by section.
@@ -40,8 +41,8 @@ _WHAT = {
     'equations': "the Lie-Poisson equations (terms of J_ij times those of dH/dx_j)",
     'casimirs': "the Casimirs of degree <= 4 (monomials times the terms of J)",
     'integrals': "the integrals of degree <= 2 (monomials times the terms of the equations)",
-    'stationary': "the stationary motions (terms of H times 2^n for n variables, and the "
-                  "Casimirs)",
+    'stationary': "the stationary motions (terms of H, the Casimirs and the integrals times "
+                  "2^(n + k) for n variables and k multipliers, and the Casimirs' search)",
 }
 
 #: Sections of :func:`lie_report`.
@@ -118,6 +119,16 @@ def report_sections(system):
         return ([stationary_title(context.results) + ":"]
                 + system.stationary_solutions(found).report_lines())
 
+    def stationary_size(context):
+        # the data alone first (the Casimirs' search included), then the
+        # integrals found: each adds a multiplier, an unknown of the solver
+        size = estimate('stationary')(context)
+        if context.budget is not None and size > context.budget:
+            return size
+        found = [system.hamiltonian()] + system.casimirs() + context.results.get('integrals', [])
+        n = len(system.variables()) + len(found) - 1
+        return size + sum(polynomial_terms(f) for f in found) * 2 ** n
+
     def stationary_title(results):
         return ("Stationary motions (Routh-Lyapunov over H, the Casimirs"
                 + (" and the integrals above)" if results.get('integrals') else ")"))
@@ -134,7 +145,7 @@ def report_sections(system):
                       "the Casimirs", integrals, estimate=estimate('integrals'),
                       what=what('integrals'), analysis=True),
         ReportSection('stationary', stationary_title, stationary,
-                      estimate=estimate('stationary'), what=what('stationary'), analysis=True),
+                      estimate=stationary_size, what=what('stationary'), analysis=True),
     ]
 
 
@@ -179,7 +190,9 @@ def lie_estimates(system):
     - ``integrals`` -- the monomials of degree `\le 2` times the terms of the
       equations, and the Casimirs of degree `\le 2`;
     - ``stationary`` -- the terms of `H` times `2^n` (the exact solver
-      splits the system into cases), and the Casimirs.
+      splits the system into cases), and the Casimirs' search; the report
+      adds, once the Casimirs and the integrals are found, their terms and
+      those of `H` times `2^{n + k}` for their `k` multipliers.
 
     EXAMPLES::
 
@@ -190,7 +203,6 @@ def lie_estimates(system):
         sage: {key: estimate for key, (_, estimate) in E.items()}
         {'casimirs': 204, 'equations': 6, 'integrals': 108, 'stationary': 228}
     """
-    from ..algebra.size import polynomial_terms
     from .integrals import basis_size
     x, J = system.variables(), system.poisson_matrix()
     n = len(x)

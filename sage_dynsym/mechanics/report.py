@@ -26,8 +26,10 @@ from ..algebra.size import polynomial_terms, determinant_terms, TERMS_CAP
 from ..dynamics.lagrangian_report import (equations_lines, constraint_forces_lines,
                                           routh_function, routh_lines, hamiltonian_lines,
                                           stationary_estimate, stationary_lines,
-                                          equations_estimate, check_routh_scheme)
+                                          equations_estimate, check_routh_scheme,
+                                          coefficient_conditions_lines)
 from ..dynamics.reporting import ReportSection, formula_lines, conditions_lines
+from ..errors import BudgetError
 from .force_functions import force_term_data
 
 
@@ -100,7 +102,8 @@ def report_sections(system):
         context.results['cyclic'] = cyclic
         # some but not all coordinates cyclic: a Routh function reduces the system
         context.results['partial'] = bool(cyclic) and len(cyclic) < len(L.coordinates())
-        return ["Lagrangian L = T + U:"] + formula_lines("", L.expr())
+        return ["Lagrangian L = T + U:"] + formula_lines("", L.expr(), variables=L.velocities(),
+                                                          named="the velocities")
 
     def constraints(context):
         if not system.constraint_set().lines():
@@ -131,16 +134,19 @@ def report_sections(system):
                       what="the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a "
                            "chain, terms of the data)"),
         ReportSection(('lagrangian', 'equations'), "Constraints", constraints,
-                      needs=['lagrangian']),
+                      needs=['lagrangian'], auxiliary=True),
         ReportSection('equations', "Lagrange equations",
                       lambda context: equations_lines(context.results['lagrangian'], context),
                       needs=['lagrangian']),
         ReportSection('equations', "Constraint forces",
                       lambda context: constraint_forces_lines(context.results['lagrangian'],
                                                               context),
-                      needs=['lagrangian']),
-        ReportSection(('routh', 'stationary'), "Not cyclic", not_cyclic, needs=['lagrangian']),
-        ReportSection('routh', "Routh function", routh, needs=['lagrangian']),
+                      needs=['lagrangian'], auxiliary=True),
+        ReportSection(('routh', 'stationary'), "Not cyclic", not_cyclic, needs=['lagrangian'],
+                      auxiliary=True),
+        ReportSection('routh', "Routh function", routh, needs=['lagrangian'],
+                      absent="no Routh reduction: the Lagrangian has no cyclic coordinate, or "
+                             "only cyclic ones"),
     ]
     points = system.operating_points()
     for name, point in points.items():
@@ -187,7 +193,15 @@ def _operating_point_sections(system, name, point, positive):
         return lines
 
     def stability(context):
-        return stability_condition_lines(*context.results[key], positive, context)
+        try:
+            return stability_condition_lines(*context.results[key], positive, context)
+        except BudgetError as err:
+            # the conditions in the coefficients cost nothing; the coefficients
+            # are in the report already
+            lines = coefficient_conditions_lines(*context.results[key], err.message)
+            if lines is None:
+                raise
+            return [f"Stability conditions ({key}):"] + lines
 
     return [ReportSection(('stationary', key), f"Stationary motions ({key})", motion,
                           needs=['lagrangian'], analysis=True),
@@ -237,7 +251,7 @@ def operating_point_lines(system, L, point, context):
                                      for rows in zip(linear.M().rows(), linear.S().rows(),
                                                      linear.W().rows())]))
     poly = linear.characteristic_polynomial(lam).expand()
-    lines += formula_lines("characteristic polynomial: ", poly)
+    lines += formula_lines("characteristic polynomial: ", poly, variables=[lam])
     return lines, (poly, lam)
 
 
@@ -258,10 +272,8 @@ def stability_condition_lines(poly, lam, positive, context):
         sage: stability_condition_lines(lam^3 + c*lam^2 + k*lam, lam, [], ReportContext({}, 100))
         ['  lambda = 0 is a root of multiplicity 1 (neutral directions: a family of steady motions); the conditions concern the other roots',
          '  Lienard-Chipart conditions (each > 0) for asymptotic stability:',
-         '    k',
-         '      LaTeX: k',
-         '    c',
-         '      LaTeX: c']
+         Formula k,
+         Formula c]
     """
     from ..analysis import lienard_chipart_conditions, real_negative_roots_conditions
     from ..algebra.trigonometric import TrigPolynomialRing

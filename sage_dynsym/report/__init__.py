@@ -6,7 +6,9 @@ a model as plain text with LaTeX
   its default size budget (what the command line shows; no Sage);
 - :mod:`~sage_dynsym.report.writer` -- :func:`report`: the sections each
   kind of model names (:meth:`~sage_dynsym.dynamics.model.Model.report_sections`),
-  each estimated against the budget before it is computed.
+  each estimated against the budget before it is computed;
+  :func:`~sage_dynsym.report.writer.report_blocks` gives them one by one,
+  as each is computed.
 
 The names are imported on first use, so that the command line answers
 ``--help`` without loading Sage.
@@ -22,7 +24,7 @@ import importlib
 from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 
 _SOURCE = {
-    'report': '.writer',
+    'report': '.writer', 'report_blocks': '.writer',
     # the size estimates live with what they estimate; importable from here
     # as in earlier versions
     'polynomial_terms': '..algebra.size', 'determinant_terms': '..algebra.size',

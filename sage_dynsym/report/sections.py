@@ -33,6 +33,16 @@ SECTIONS = {
     'integrals': "polynomial first integrals of degree <= 2 of a Lie-Poisson system",
 }
 
+#: The name of each section in the line of a section asked for that a
+#: model does not have.
+TITLES = {
+    'lagrangian': "Lagrangian", 'equations': "Equations", 'routh': "Routh function",
+    'stationary': "Stationary motions", 'hamiltonian': "Hamiltonian",
+    'mixed_potential': "Mixed potential", 'state_equations': "State equations",
+    'lyapunov': "dP/dt", 'stability': "Stability", 'casimirs': "Casimirs",
+    'integrals': "Polynomial first integrals",
+}
+
 #: The sections that are analysis (left out by ``analysis=False``, the
 #: command line's ``--no-analysis``).
 ANALYSIS_SECTIONS = ('stationary', 'lyapunov', 'stability', 'integrals')

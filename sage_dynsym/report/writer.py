@@ -11,7 +11,10 @@ LaTeX form of every formula. The command line ``python -m sage_dynsym`` (or
 Every kind of model says what its report holds
 (:meth:`~sage_dynsym.dynamics.model.Model.report_sections`); the sections
 are run here, for every kind alike, by
-:func:`~sage_dynsym.dynamics.reporting.run_sections` within one budget.
+:func:`~sage_dynsym.dynamics.reporting.report_blocks` within one budget,
+each section yielded as soon as it is computed (the command line prints it
+at once), its formulas written in full or summarised by
+:func:`~sage_dynsym.dynamics.reporting.render`.
 
 EXAMPLES::
 
@@ -40,13 +43,14 @@ import sage.all  # noqa: F401
 
 from ..arguments import count
 from ..dynamics.model import Model
-from ..dynamics.reporting import run_sections
+from ..dynamics.reporting import report_blocks as section_blocks, render
 from ..errors import DynSymError
 
-from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
+from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS, TITLES  # noqa: F401
 
 
-def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None):
+def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None,
+           full=True, latex=True):
     r"""
     A text report of ``model`` (see the module documentation).
 
@@ -54,8 +58,9 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=No
 
     - ``model`` -- a model of any kind (a
       :class:`~sage_dynsym.dynamics.model.Model`)
-    - ``sections`` -- (default: all) the keys of :data:`SECTIONS` to print
-      (the sections that do not apply to the model are ignored)
+    - ``sections`` -- (default: all the model has) the keys of
+      :data:`SECTIONS` to print; a section asked for that the model does
+      not have is one line saying so
     - ``budget`` -- (default: :data:`DEFAULT_BUDGET`) the size budget of
       each section, in polynomial terms
     - ``analysis`` -- (default: ``True``) whether to include the analysis
@@ -63,15 +68,23 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=No
     - ``failed`` -- (optional) a list: the titles of the sections that
       failed on an error that is not the package's own (``section failed:
       ...``) are appended to it (the command line's exit status 3)
+    - ``full`` -- (default: ``True``) whether to write every formula in
+      full; ``False``: a formula longer than a few lines is summarised (its
+      kind, degree, number of terms and leading terms; see
+      :func:`~sage_dynsym.dynamics.reporting.summary`), as the command line
+      prints it without ``--full``
+    - ``latex`` -- (default: ``True``) whether to add the LaTeX of each
+      formula written in full
 
-    OUTPUT: a string
+    OUTPUT: a string (:func:`report_blocks` gives it section by section)
 
     Each section estimates the number of polynomial terms it would create
     *before* its expensive step (expanding a determinant, deriving the
     Lagrangian of a long chain, ...): over the budget it is replaced by one
     line saying so, and the rest of the report is still printed. A section
     that fails for another reason is also one line (the error's class and
-    message), never a traceback.
+    message), never a traceback. Every section asked for is accounted for:
+    its lines, or one line saying why it is not there.
 
     EXAMPLES::
 
@@ -93,7 +106,7 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=No
         == RLC (circuit: 6 branches on 5 nodes) ==
         Lagrangian (loop-current method):
           L = 1/2*L1*dq1^2 + 1/2*L2*dq2^2 - 1/2*(q1 - q2)^2/C1
-          LaTeX: ...
+            LaTeX: ...
         sage: print(report(C, sections=['equations', 'stability'], budget=9))
         == RLC (circuit: 6 branches on 5 nodes) ==
         Lagrange equations: skipped, the Lagrange equations (terms of dL/d(dq_i) times 2n + 1, and of dL/dq_i): about 17 polynomial terms, over the budget of 9 (raise it with --budget)
@@ -102,11 +115,17 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=No
         sage: print(report(pendulum, budget=10))
         == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
         Lagrangian: skipped, the Lagrangian (n^2 2^r T^2: coordinates, varying angles along a chain, terms of the data): about 16 polynomial terms, over the budget of 10 (raise it with --budget)
-        sage: print(report(pendulum, sections=['hamiltonian', 'stationary'], analysis=False))
+        Lagrange equations: skipped, it needs: Lagrangian (skipped above; --budget raises the limit)
+        Routh function: skipped, it needs: Lagrangian (skipped above; --budget raises the limit)
+        Equilibria: skipped, it needs: Lagrangian (skipped above; --budget raises the limit)
+        Hamiltonian: skipped, it needs: Lagrangian (skipped above; --budget raises the limit)
+        sage: print(report(pendulum, sections=['hamiltonian', 'stationary', 'casimirs'],
+        ....:              analysis=False, latex=False))
         == spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==
         Hamiltonian:
-          H = ...
-          LaTeX: ...
+          H = g*l*m*cos(theta) + 1/2*p_theta^2/(l^2*m) + 1/2*p_psi^2/(l^2*m*sin(theta)^2)
+        Stationary motions: left out (an analysis section; the analysis is off: --no-analysis)
+        Casimirs: not available for this model
 
     TESTS::
 
@@ -119,18 +138,49 @@ def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=No
         ...
         DynSymError: unknown report section 'colour'; the sections are: lagrangian, equations, routh, stationary, hamiltonian, mixed_potential, state_equations, lyapunov, stability, casimirs, integrals
     """
-    wanted = list(SECTIONS) if sections is None else list(sections)
-    for key in wanted:
+    blocks = report_blocks(model, sections=sections, budget=budget, analysis=analysis,
+                           failed=failed)
+    return "\n".join(line for block in blocks for line in render(block, full, latex))
+
+
+def report_blocks(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None,
+                  progress=None):
+    r"""
+    The report of ``model`` (see :func:`report`), one block of lines at a
+    time, each as soon as its section is computed: the title, then each
+    section. The lines are strings and formulas
+    (:class:`~sage_dynsym.dynamics.reporting.Formula`), written by
+    :func:`~sage_dynsym.dynamics.reporting.render`.
+
+    INPUT: as for :func:`report`, and
+
+    - ``progress`` -- (optional) a function called with the name of each
+      section before it is computed
+
+    The arguments are checked at once, before any section is computed.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: from sage_dynsym.report.writer import report_blocks
+        sage: blocks = report_blocks(load(example_path('spherical_pendulum.yaml')))
+        sage: next(blocks)
+        ['== spherical pendulum (mechanical system: 1 body, coordinates psi, theta) ==']
+        sage: next(blocks)
+        ['Lagrangian L = T + U:', Formula 1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)]
+    """
+    wanted = None if sections is None else list(sections)
+    for key in wanted or ():
         if key not in SECTIONS:
             raise DynSymError(f"unknown report section {key!r}; the sections are: "
                               f"{', '.join(SECTIONS)}")
-    if not analysis:
-        wanted = [key for key in wanted if key not in ANALYSIS_SECTIONS]
     budget = count(budget, 'budget', error=DynSymError)
     if failed is not None and not isinstance(failed, list):
         raise DynSymError(f"failed must be a list, got {failed!r}")
     if not isinstance(model, Model):
         raise DynSymError(f"cannot report on {type(model).__name__}: expected a model "
                           "(a mechanical system, a circuit, a Lie-Poisson system, ...)")
-    return run_sections(model.report_title(), model.report_sections(), wanted=wanted,
-                        budget=budget, analysis=analysis, failed=failed)
+    return section_blocks(model.report_title(), model.report_sections(), wanted=wanted,
+                          budget=budget, analysis=analysis, failed=failed, progress=progress,
+                          labels=TITLES)
