@@ -151,6 +151,8 @@ class _Assembly:
         self.tree = tree
         q, dq = tree.coordinates(), tree.velocities()
         self.q, self.dq, self.n = q, dq, len(q)
+        self._q_index = {v: i for i, v in enumerate(q)}
+        self._dq_index = {v: i for i, v in enumerate(dq)}
         values = values or {}
         inputs = {_t: G.input('t')}
         inputs.update({v: G.input('x', i) for i, v in enumerate(q + dq)})
@@ -162,9 +164,20 @@ class _Assembly:
 
     # symbolic helpers --------------------------------------------------
 
+    def _present(self, exprs, index):
+        # the indices of the coordinates (or velocities) in ``exprs``: the
+        # derivatives by the others vanish, and going through all of them
+        # would make the build quadratic in the number of coordinates
+        found = set()
+        for e in exprs:
+            found.update(index[v] for v in SR(e).variables() if v in index)
+        return sorted(found)
+
     def rate(self, e):
         """d/dt of e at zero accelerations."""
-        return time_derivative(e, self.q, self.dq, [0] * self.n)
+        present = self._present([e], self._q_index)
+        return time_derivative(e, [self.q[i] for i in present], [self.dq[i] for i in present],
+                               [0] * len(present))
 
     def vector(self, v):
         return tuple(self.convert(c) for c in v)
@@ -172,10 +185,11 @@ class _Assembly:
     def columns(self, exprs, scalar):
         """Partial derivatives of rates by the velocities, nonzero only."""
         out = {}
-        for i, v in enumerate(self.dq):
+        for i in self._present(exprs, self._dq_index):
+            v = self.dq[i]
             d = [SR(e).diff(v) for e in exprs]
             if any(not x.is_trivial_zero() for x in d):
-                if any(SR(x).has(w) for x in d for w in self.dq):
+                if self._present(d, self._dq_index):
                     return None
                 out[i] = self.convert(d[0]) if scalar else self.vector(d)
         return out
@@ -769,6 +783,27 @@ def _dense_solve(G, A, b, pivots):
     return x
 
 
+#: Graphs of more nodes are compiled at ``-O1``: for their straight-line
+#: code ``-O2`` takes two to three times as long (100 links: 25 s against
+#: 12 s) and the calls are not measurably faster.
+LARGE_GRAPH = 20_000
+
+
+def optimization(graph):
+    r"""
+    The compiler flags for the code of ``graph``: ``('-O2',)``, or
+    ``('-O1',)`` above :data:`LARGE_GRAPH` nodes.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.graph import ExpressionGraph
+        sage: from sage_dynsym.numerics.recursive import optimization
+        sage: optimization(ExpressionGraph())
+        ('-O2',)
+    """
+    return ('-O1',) if graph.size() > LARGE_GRAPH else ('-O2',)
+
+
 class _Unsupported(Exception):
     """A model the recursive form cannot represent (the reason is the message)."""
 
@@ -1082,7 +1117,8 @@ class RecursiveForm:
                       f"{len(self._tree.bodies())} bodies in "
                       f"({', '.join(map(str, self._tree.coordinates()))})")
             try:
-                library = compile_c(graph_c_source(G, outputs, header, pivots=pivots))
+                library = compile_c(graph_c_source(G, outputs, header, pivots=pivots),
+                                    flags=optimization(G))
             except (AnalysisError, OSError) as error:
                 if backend == 'c':
                     raise
