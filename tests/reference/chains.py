@@ -157,6 +157,8 @@ def humanoid_tree():
     pelvis = add(0, 'pelvis', (3, 2, 1), ['x', 'y', 'z'], 8, Fraction(1, 5))
     torso = add(pelvis, 'torso', (3, 2), [0, 0, Fraction(1, 5)], 12, Fraction(-2, 5))
     add(torso, 'head', (3, 2), [0, 0, Fraction(1, 2)], 4, Fraction(-1, 5))
+    # bodies numbered depth first (each subtree contiguous), as Pinocchio's
+    # derivative algorithms assume of its joints
     for side, sign in (('l', 1), ('r', -1)):
         upper = add(torso, f'{side}shoulder', (2, 1, 3), [0, sign * Fraction(1, 5), Fraction(2, 5)],
                     2, Fraction(3, 10))
@@ -168,6 +170,7 @@ def humanoid_tree():
             add(hand, f'{side}finger{finger}', (2, 1), [Fraction(finger - 1, 40), 0,
                                                         Fraction(-1, 10)], Fraction(1, 20),
                 Fraction(1, 20))
+    for side, sign in (('l', 1), ('r', -1)):
         thigh = add(pelvis, f'{side}hip', (3, 1, 2), [0, sign * Fraction(1, 10), 0], 6,
                     Fraction(2, 5))
         shin = add(thigh, f'{side}knee', (2,), [0, 0, Fraction(-2, 5)], 3, Fraction(2, 5))
