@@ -24,7 +24,11 @@ For each model every tool runs in a fresh interpreter with a timeout:
   joints); per call ``aba``, a full right-hand side from Python (``aba`` on
   the slices of x, ``numpy.concatenate``) and the state Jacobian
   (``computeABADerivatives`` and the assembly of ``[[0, I], [ddq_dq,
-  ddq_dv]]``).
+  ddq_dv]]``). With ``--pin-site`` (a site directory holding Pinocchio,
+  e.g. ``<venv>/lib/python3.11/site-packages`` of a venv with the same
+  NumPy) Pinocchio is also loaded in sage_dynsym's process and the times
+  per call are taken in turn there (the best of 15 rounds each), so that a
+  loaded machine treats both alike.
 
 Accuracy: the largest relative difference of the accelerations to
 Pinocchio's ``aba`` at 3 random states (target 1e-10), of the Jacobian to
@@ -34,7 +38,7 @@ of log(time) against log(N). ``--large`` adds the build time of the
 right-hand side of a 500-link chain (1,000 coordinates; no Jacobian).
 
 Usage: ``python bench/bench_robot.py [--quick] [--n N ...] [--no-humanoid]
-[--large] [--pin-python PATH] [--timeout S]`` (``--quick``: N = 4, 8, no
+[--large] [--pin-python PATH] [--pin-site DIR] [--timeout S]`` (``--quick``: N = 4, 8, no
 humanoid).
 """
 import argparse
@@ -50,8 +54,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 
-from bench_pipeline import (description, states, best, exponent,  # noqa: E402
-                            relative_difference)
+from bench_pipeline import (description, states, best, best_interleaved,  # noqa: E402
+                            exponent, relative_difference)
 from reference.chains import offset_chain, humanoid_tree  # noqa: E402
 
 SIZES = (20, 50, 100)
@@ -75,6 +79,9 @@ def central_differences(f, x, h=1e-6):
 
 def worker_sage(name, n, jacobian=True):
     import numpy as np
+    import site
+    if os.environ.get('PIN_SITE'):
+        site.addsitedir(os.environ['PIN_SITE'])     # after this interpreter's own packages
     os.environ['SAGE_DYNSYM_CACHE'] = tempfile.mkdtemp(prefix='bench_robot_')
     from sage.all import SR  # noqa: F401  (Sage fully initialised before timing)
     from sage_dynsym.description import model_from_dict
@@ -96,6 +103,16 @@ def worker_sage(name, n, jacobian=True):
         result['jac_build'] = time.perf_counter() - start
         J = jac(0.0, points[0])
         result['jac_call'] = best(jac, 0.0, points[0])
+        try:
+            pin_rhs, pin_jacobian, pin = pinocchio_functions(name, n)
+        except ImportError:
+            pass
+        else:
+            # Pinocchio in this process, timed in turn with sage_dynsym: on a
+            # loaded machine both see the same conditions
+            result['call'], result['pin_rhs'], result['jac_call'], result['pin_jac'] = \
+                best_interleaved([(f, (0.0, points[0])), (pin_rhs, (0.0, pin['x'])),
+                                  (jac, (0.0, points[0])), (pin_jacobian, (0.0, pin['x']))])
         reference = central_differences(f, points[0])
         result['jac_vs_cd'] = float(np.max(np.abs(J - reference))
                                     / max(1.0, np.max(np.abs(reference))))
@@ -105,7 +122,14 @@ def worker_sage(name, n, jacobian=True):
     return result
 
 
-def worker_pin(name, n):
+def pinocchio_functions(name, n):
+    """
+    Pinocchio's model of a model, and ``(rhs, jacobian, result)``: its full
+    right-hand side and state Jacobian as functions of ``(t, x)`` (x over
+    the model's own order of the coordinates) and the build time,
+    accelerations at the states and Jacobian at the first one (in the order
+    of the description's coordinates).
+    """
     import numpy as np
     import pinocchio as pin
     from reference.pinocchio_chain import pinocchio_model
@@ -133,13 +157,18 @@ def worker_pin(name, n):
         J[nv:, :nv] = data.ddq_dq
         J[nv:, nv:] = data.ddq_dv
         return J
-    q, v = points[0]
-    x = np.concatenate((q, v))
-    result['aba'] = best(pin.aba, pmodel, data, q, v, tau)
-    result['rhs'] = best(rhs, 0.0, x)
-    result['jac_call'] = best(jacobian, 0.0, x)
+    x = np.concatenate(points[0])
     full = position + [nv + i for i in position]
     result['jacobian'] = jacobian(0.0, x)[np.ix_(full, full)].tolist()
+    result['x'] = x
+    return rhs, jacobian, result
+
+
+def worker_pin(name, n):
+    rhs, jacobian, result = pinocchio_functions(name, n)
+    x = result.pop('x')
+    result['rhs'] = best(rhs, 0.0, x)
+    result['jac_call'] = best(jacobian, 0.0, x)
     return result
 
 
@@ -180,11 +209,20 @@ def _ratio(a, b, key_a, key_b, width):
     return f"{'-':>{width}}"
 
 
+def timings(sage, pin):
+    """Pinocchio's times per call: those measured in turn with sage_dynsym
+    when there are, else those of its own process."""
+    if isinstance(sage, dict) and 'pin_rhs' in sage:
+        return dict(rhs=sage['pin_rhs'], jac_call=sage['pin_jac'])
+    return pin if isinstance(pin, dict) else None
+
+
 def table(rows):
     print(f"{'model':>9} {'n':>4} {'build':>6} {'jac bld':>7} {'call':>7} {'pin RHS':>8} "
           f"{'ratio':>6} {'jac':>8} {'pin jac':>8} {'ratio':>6} {'acc vs pin':>10} "
           f"{'J vs pin':>9} {'J vs cd':>8}")
     for label, n, sage, pin in rows:
+        times = timings(sage, pin)
         acc = (relative_difference(sage['accelerations'], pin['accelerations'])
                if isinstance(sage, dict) and isinstance(pin, dict) else None)
         jd = (matrix_difference(sage['jacobian'], pin['jacobian'])
@@ -192,10 +230,10 @@ def table(rows):
               else None)
         print(" ".join([f"{label:>9}", f"{n:>4}", _cell(sage, 'build', 6, fmt='.1f'),
                         _cell(sage, 'jac_build', 7, fmt='.1f'), _cell(sage, 'call', 7, 1e6),
-                        _cell(pin, 'rhs', 8, 1e6), _ratio(sage, pin, 'call', 'rhs', 6),
+                        _cell(times, 'rhs', 8, 1e6), _ratio(sage, times, 'call', 'rhs', 6),
                         _cell(sage, 'jac_call', 8, 1e6, '.1f'),
-                        _cell(pin, 'jac_call', 8, 1e6, '.1f'),
-                        _ratio(sage, pin, 'jac_call', 'jac_call', 6),
+                        _cell(times, 'jac_call', 8, 1e6, '.1f'),
+                        _ratio(sage, times, 'jac_call', 'jac_call', 6),
                         f"{acc:>10.1e}" if acc is not None else f"{'-':>10}",
                         f"{jd:>9.1e}" if jd is not None else f"{'-':>9}",
                         _cell(sage, 'jac_vs_cd', 8, fmt='.1e')]), flush=True)
@@ -220,11 +258,12 @@ def targets(rows, large):
     for label, n, sage, pin in rows:
         if isinstance(sage, dict) and isinstance(pin, dict):
             limit = 0.5 if label == 'humanoid' else 0.4
-            ratio = sage['call'] / pin['rhs']
+            times = timings(sage, pin)
+            ratio = sage['call'] / times['rhs']
             check(f"{label} {n}: per call {ratio:.2f}x Pinocchio's full RHS <= {limit}",
                   ratio <= limit)
             if 'jac_call' in sage:
-                ratio = sage['jac_call'] / pin['jac_call']
+                ratio = sage['jac_call'] / times['jac_call']
                 check(f"{label} {n}: Jacobian per call {ratio:.2f}x Pinocchio's "
                       "computeABADerivatives + assembly <= 1", ratio <= 1)
             acc = relative_difference(sage['accelerations'], pin['accelerations'])
@@ -245,7 +284,7 @@ def growth(rows, large):
               for key in ('build', 'jac_build', 'call', 'jac_call')}
     if isinstance(large, dict):
         points['build'].append((500, large['build']))
-    pin_points = {key: [(n, pin[key]) for label, n, _, pin in rows
+    pin_points = {key: [(n, timings(sage, pin)[key]) for label, n, sage, pin in rows
                         if label == 'chain' and isinstance(pin, dict)]
                   for key in ('rhs', 'jac_call')}
     out = []
@@ -268,6 +307,9 @@ def main():
                         help='also the build time of a 500-link chain')
     parser.add_argument('--pin-python', default=os.environ.get('PIN_PYTHON'),
                         help="the interpreter with Pinocchio (default: this one)")
+    parser.add_argument('--pin-site', default=os.environ.get('PIN_SITE'),
+                        help="a site directory with Pinocchio, for timing it in turn with "
+                        "sage_dynsym in one process (NumPy must be the same version)")
     parser.add_argument('--timeout', type=float, default=None)
     parser.add_argument('--worker', nargs=3, help=argparse.SUPPRESS)
     parser.add_argument('--no-jacobian', action='store_true', help=argparse.SUPPRESS)
@@ -280,6 +322,8 @@ def main():
             result = worker_pin(name, int(n))
         print(json.dumps(result), flush=True)
         return
+    if args.pin_site:
+        os.environ['PIN_SITE'] = args.pin_site
     sizes = args.n or ((4, 8) if args.quick else SIZES)
     timeout = args.timeout or (300 if args.quick else 1200)
     print("Robot-size models: sage_dynsym vs Pinocchio, each tool in a fresh interpreter, "
