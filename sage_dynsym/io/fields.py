@@ -18,8 +18,9 @@ EXAMPLES::
 from ..errors import DescriptionError, brief
 from ..symbols import check_name
 
-#: Most parameters of a description.
-MAX_PARAMETERS = 500
+#: Most parameters of a description (a 1,000-body model with a mass, a
+#: mass centre, six moments of inertia and a length per body needs 10,000).
+MAX_PARAMETERS = 10_000
 #: Longest text of one expression in a ``results:`` section (the
 #: description's own expressions have
 #: :data:`~sage_dynsym.io.expressions.MAX_EXPRESSION_LENGTH`).

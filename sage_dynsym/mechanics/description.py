@@ -15,7 +15,7 @@ EXAMPLES::
     sage: S = mechanical_system_from_dict({'kind': 'mechanical', 'coordinates': ['x'],
     ....:     'bodies': [{'name': 'b', 'joint': ['x', 0, 0], 'mass': 1}]})
     sage: mechanical_system_to_dict(S)['coordinates'], MAX_BODIES
-    (['x'], 50)
+    (['x'], 1000)
 """
 from .format import (MECHANICAL_KEYS, ROLLING_KEYS, OPERATING_POINT_KEYS,  # noqa: F401
                      REQUIRED_MECHANICAL, BODY_KEYS, FIELD_KEYS, NEWTONIAN_KEYS, LOAD_KEYS,

@@ -88,10 +88,11 @@ BODY_KEYS = {'name', 'parent', 'rotations', 'joint', 'velocity', 'mass_center', 
 FIELD_KEYS = {'uniform_gravity', 'newtonian', 'expression'}
 NEWTONIAN_KEYS = {'nu', 'r', 'direction'}
 LOAD_KEYS = {'body', 'point', 'force', 'torque', 'axes'}
-#: Most generalized coordinates of a mechanical description.
-MAX_COORDINATES = 50
-#: Most bodies of a mechanical description.
-MAX_BODIES = 50
+#: Most generalized coordinates of a mechanical description (a 500-link
+#: chain with two rotations per link, a floating-base humanoid with hands).
+MAX_COORDINATES = 1000
+#: Most bodies of a mechanical description (a cable of 1,000 segments).
+MAX_BODIES = 1000
 #: Most terms of a force function, loads and constraints of a description.
 MAX_TERMS = 200
 

@@ -15,9 +15,10 @@ from .energy import quadratic_energy
 from .events import Event
 from .form import NumericalForm
 from .methods import NumericalMethods
-from .rhs import numerical_rhs, RightHandSide
+from .rhs import numerical_rhs, RightHandSide, StateJacobian
 from .simulate import simulate
 from .trajectory import Trajectory
 
-__all__ = ['NumericalMethods', 'NumericalForm', 'numerical_rhs', 'RightHandSide', 'simulate',
+__all__ = ['NumericalMethods', 'NumericalForm', 'numerical_rhs', 'RightHandSide', 'StateJacobian',
+           'simulate',
            'Trajectory', 'generate_code', 'GeneratedCode', 'quadratic_energy', 'Event']

@@ -36,6 +36,7 @@ import ctypes
 import hashlib
 import math
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -187,6 +188,109 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
         lines += [f'    out[{lead + i}] = _b[{i}];' for i in range(size - lead)]
     lines += ['    return 0;', '}', '']
     return '\n'.join(lines)
+
+
+def jacobian_c_source(graph, columns, size, header, pivots=()):
+    r"""
+    The C source of ``int dynsym_jac(double t, const double *x, const double
+    *p, double *out)`` writing the ``size`` by ``size`` Jacobian (by rows)
+    of a function of the state ``x`` into ``out``, from the derivative
+    nodes of :func:`~sage_dynsym.numerics.derivatives.tangent`.
+
+    The nodes of ``graph`` read the state from ``x[0..size)`` and the
+    direction of differentiation from ``x[size..2 size)`` (a unit vector:
+    column ``j`` is the derivative with ``x[size + j] = 1``). ``columns`` is a
+    list of ``(nodes, first, count)``: ``nodes`` the derivatives of the
+    outputs in the directions ``first, ..., first + count - 1``. The nodes
+    that depend on no direction are computed once, the others once per
+    column (the functions of each entry of ``columns`` are their own
+    group, see :meth:`~sage_dynsym.numerics.graph.ExpressionGraph.c_functions`).
+    Returns 1 when one of the ``pivots`` is zero or an entry is not finite.
+
+    EXAMPLES: `f = (y, -x^3)`, Jacobian `((0, 1), (-3x^2, 0))`::
+
+        sage: from sage_dynsym.numerics.graph import ExpressionGraph
+        sage: from sage_dynsym.numerics.derivatives import tangent
+        sage: from sage_dynsym.numerics.compiler import jacobian_c_source, compile_c, compiler
+        sage: G = ExpressionGraph(); x, y = G.input('x', 0), G.input('x', 1)
+        sage: f = [y, G.neg(G.power(x, 3))]
+        sage: seeds = {x: G.input('x', 2), y: G.input('x', 3)}
+        sage: source = jacobian_c_source(G, [(tangent(G, f, seeds), 0, 2)], 2, 'an example')
+        sage: if compiler():
+        ....:     import ctypes, numpy as np
+        ....:     jac = compile_c(source).dynsym_jac
+        ....:     jac.argtypes = [ctypes.c_double] + [ctypes.c_void_p] * 3
+        ....:     x0, out = np.array([2.0, 5.0]), np.zeros(4)
+        ....:     assert jac(0.0, x0.ctypes.data, None, out.ctypes.data) == 0
+        ....:     assert list(out) == [0, 1, -12, 0]
+    """
+    def direction(node):
+        kind, args = graph.operation(node)
+        return kind == 'input' and args[0] == 'x' and args[1] >= size
+    group = {}
+    for number, (nodes, _, _) in enumerate(columns, 1):
+        for node in graph.operations(nodes):
+            group[node] = max([number if direction(a) else group.get(a, 0)
+                               for a in graph.operation(node)[1] if not isinstance(a, str)],
+                              default=0)
+    outputs = [a for nodes, _, _ in columns for a in nodes]
+    parts, counts, slots = graph.c_functions(outputs + list(pivots),
+                                             groups=lambda node: group.get(node, 0))
+    counts += [0] * (len(columns) + 1 - len(counts))     # groups without operations
+
+    def value(node, slot):
+        # inputs and constants are read where they are, not from w: they are
+        # stored there only by the last function
+        kind, args = graph.operation(node)
+        if kind == 'constant':
+            return repr(args)
+        if kind == 'input':
+            return 't' if args[0] == 't' else f"{'xe' if args[0] == 'x' else 'p'}[{args[1]}]"
+        return f'w[{slot}]'
+    work = max([int(i) for i in re.findall(r'\bw\[(\d+)\]', parts)], default=0) + 1
+    lines = [f'// {header}', '#include <math.h>', parts,
+             'int dynsym_jac(double t, const double *x, const double *p, double *out)', '{',
+             f'    static _Thread_local double w[{work}];',
+             f'    static _Thread_local double xe[{2 * size}];',
+             f'    for (int i = 0; i < {size}; i++) {{ xe[i] = x[i]; xe[{size} + i] = 0.0; }}']
+    lines += [f'    dynsym_part{i}(t, xe, p, w);' for i in range(counts[0])]
+    lines += [f'    if (!({value(a, slot)} != 0.0)) return 1;'
+              for a, slot in zip(pivots, slots[len(outputs):])]
+    done, position = counts[0], 0
+    for number, (nodes, first, count) in enumerate(columns, 1):
+        lines += [f'    for (int j = {first}; j < {first + count}; j++) {{',
+                  f'        xe[{size} + j] = 1.0;']
+        lines += [f'        dynsym_part{done + i}(t, xe, p, w);' for i in range(counts[number])]
+        done += counts[number]
+        lines += [f'        out[{i * size} + j] = {value(node, slots[position + i])};'
+                  for i, node in enumerate(nodes)]
+        position += len(nodes)
+        lines += [f'        xe[{size} + j] = 0.0;', '    }']
+    lines += [f'    for (int i = 0; i < {size * size}; i++) if (!isfinite(out[i])) return 1;',
+              '    return 0;', '}', '']
+    return '\n'.join(lines)
+
+
+def jacobian_function(function, size):
+    r"""
+    The compiled ``dynsym_jac`` of :func:`jacobian_c_source` as a Python
+    function ``jac(t, x, p)`` returning the ``size`` by ``size`` NumPy
+    array; it raises :class:`ZeroDivisionError` where the C function
+    returns 1 (a zero pivot, an entry not finite).
+
+    EXAMPLES: see :meth:`~sage_dynsym.numerics.recursive.RecursiveForm.jacobian_kernel`.
+    """
+    call = _PROTOTYPE(ctypes.cast(function, ctypes.c_void_p).value)
+
+    def jac(t, x, p):
+        x = np.ascontiguousarray(x, dtype=float)
+        p = np.ascontiguousarray(p, dtype=float)
+        out = np.empty((size, size))
+        if call(float(t), x.ctypes.data, p.ctypes.data, out.ctypes.data):
+            raise ZeroDivisionError
+        return out
+    jac.library = function      # keeps the library loaded
+    return jac
 
 
 def c_source(form):

@@ -43,6 +43,7 @@ from .expressions import FUNCTIONS
 #: Node kinds. An input's argument is (array, index); a constant's its value.
 _INPUT, _CONST, _ADD, _SUB, _MUL, _DIV, _NEG, _CALL, _POW = range(9)
 _SYMBOL = {_ADD: '+', _SUB: '-', _MUL: '*', _DIV: '/'}
+_KIND_NAMES = {**_SYMBOL, _INPUT: 'input', _CONST: 'constant', _NEG: 'neg', _POW: 'pow'}
 #: Python's math functions for the names of :data:`FUNCTIONS`.
 _PYTHON = {name: getattr(math, python.split('.')[-1]) if python.startswith('math.') else abs
            for name, (python, _) in FUNCTIONS.items()}
@@ -407,6 +408,20 @@ class ExpressionGraph:
             return f'pow({self.show(args[0])}, {self.show(args[1])})'
         return f"{args[0]}({', '.join(self.show(a) for a in args[1:])})"
 
+    def operations(self, outputs):
+        r"""
+        The operation nodes the nodes ``outputs`` depend on, in an order
+        where each comes after its arguments.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.graph import ExpressionGraph
+            sage: G = ExpressionGraph(); x = G.input('x', 0)
+            sage: s = G.call('sin', x); G.operations([G.mul(s, s)]) == [s, s + 1]
+            True
+        """
+        return self._needed(outputs)
+
     def _needed(self, outputs):
         # the operation nodes the outputs depend on, in creation order (a
         # node is always created after its arguments)
@@ -444,7 +459,7 @@ class ExpressionGraph:
         lines.append(f"    return [{', '.join(self._operand(a, names, 'python') for a in outputs)}]")
         return '\n'.join(lines)
 
-    def c_functions(self, outputs, prefix='dynsym_part', chunk=300):
+    def c_functions(self, outputs, prefix='dynsym_part', chunk=300, groups=None):
         r"""
         C functions computing ``outputs``: ``(source, count, slots)`` where
         ``source`` defines ``count`` functions
@@ -453,6 +468,14 @@ class ExpressionGraph:
         ``slots[k]`` is the index in the work array ``w`` of the value of
         ``outputs[k]`` (``w`` must have room for ``max(slots) + 1`` values;
         ``-1`` slots do not occur: constants and inputs are stored too).
+
+        With ``groups``, a function of the nodes that returns the index of
+        the group that computes them (the arguments of a node in the same or
+        an earlier group), each group has functions of its own and ``count``
+        is the list of their numbers: a group can be run again alone (as the
+        derivatives in one direction after another, see
+        :mod:`~sage_dynsym.numerics.derivatives`), reading the values of the
+        earlier ones from ``w``.
 
         EXAMPLES::
 
@@ -478,8 +501,20 @@ class ExpressionGraph:
             (2, [0, 1, 2])
         """
         nodes = self._needed(outputs)
-        part = {node: i // chunk for i, node in enumerate(nodes)}
-        count = max(1, (len(nodes) + chunk - 1) // chunk)
+        if groups is None:
+            part = {node: i // chunk for i, node in enumerate(nodes)}
+            counts = [max(1, (len(nodes) + chunk - 1) // chunk)]
+        else:
+            members = {}
+            for node in nodes:
+                members.setdefault(groups(node), []).append(node)
+            part, counts = {}, []
+            for g in range(max(members, default=0) + 1):
+                first = sum(counts)
+                part.update((node, first + i // chunk) for i, node in enumerate(members.get(g, [])))
+                counts.append(max(1, (len(members.get(g, [])) + chunk - 1) // chunk))
+            nodes = sorted(nodes, key=part.__getitem__)
+        count = sum(counts)
         # values used by a later function are passed in the work array
         slot, loads = {}, [{} for _ in range(count)]
         for node in nodes:
@@ -515,7 +550,26 @@ class ExpressionGraph:
             lines.append(f'static void {prefix}{k}(double t, const double *x, const double *p, '
                          'double *w)')
             lines += ['{'] + bodies[k] + ['}']
-        return '\n'.join(lines), count, output_slots
+        return '\n'.join(lines), count if groups is None else counts, output_slots
+
+    def operation(self, node):
+        r"""
+        ``(kind, args)`` of ``node``: ``kind`` one of ``'input'``,
+        ``'constant'``, ``'+'``, ``'-'``, ``'*'``, ``'/'``, ``'neg'``,
+        ``'pow'`` (args: base and exponent nodes) or the name of a function
+        (args: its argument nodes).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.graph import ExpressionGraph
+            sage: G = ExpressionGraph(); x = G.input('x', 0)
+            sage: G.operation(G.call('sin', x)) == ('sin', (x,)), G.operation(x)
+            (True, ('input', ('x', 0)))
+        """
+        kind, args = self._kind[node], self._args[node]
+        if kind == _CALL:
+            return args[0], args[1:]
+        return _KIND_NAMES[kind], args
 
 
 class SymbolicConverter:

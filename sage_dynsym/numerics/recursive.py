@@ -107,6 +107,16 @@ def _rotate_matrix(G, axis, c, s, A, symmetric=True):
     return [list(row) for row in rows]
 
 
+def _present(exprs, index):
+    # the indices (values of the dict ``index`` of symbols) of the symbols in
+    # ``exprs``: the derivatives by the others vanish, and going through all
+    # of them would make the build quadratic in the number of coordinates
+    found = set()
+    for e in exprs:
+        found.update(index[v] for v in SR(e).variables() if v in index)
+    return sorted(found)
+
+
 class _Step:
     """One elementary joint: a translation by r (axes unchanged, origin
     moved to the joint point) or a rotation about a coordinate axis."""
@@ -151,6 +161,8 @@ class _Assembly:
         self.tree = tree
         q, dq = tree.coordinates(), tree.velocities()
         self.q, self.dq, self.n = q, dq, len(q)
+        self._q_index = {v: i for i, v in enumerate(q)}
+        self._dq_index = {v: i for i, v in enumerate(dq)}
         values = values or {}
         inputs = {_t: G.input('t')}
         inputs.update({v: G.input('x', i) for i, v in enumerate(q + dq)})
@@ -164,7 +176,8 @@ class _Assembly:
 
     def rate(self, e):
         """d/dt of e at zero accelerations."""
-        return time_derivative(e, self.q, self.dq, [0] * self.n)
+        i = _present([e], self._q_index)
+        return time_derivative(e, [self.q[k] for k in i], [self.dq[k] for k in i], [0] * len(i))
 
     def vector(self, v):
         return tuple(self.convert(c) for c in v)
@@ -172,10 +185,11 @@ class _Assembly:
     def columns(self, exprs, scalar):
         """Partial derivatives of rates by the velocities, nonzero only."""
         out = {}
-        for i, v in enumerate(self.dq):
+        for i in _present(exprs, self._dq_index):
+            v = self.dq[i]
             d = [SR(e).diff(v) for e in exprs]
             if any(not x.is_trivial_zero() for x in d):
-                if any(SR(x).has(w) for x in d for w in self.dq):
+                if _present(d, self._dq_index):
                     return None
                 out[i] = self.convert(d[0]) if scalar else self.vector(d)
         return out
@@ -769,6 +783,27 @@ def _dense_solve(G, A, b, pivots):
     return x
 
 
+#: Graphs of more nodes are compiled at ``-O1``: for their straight-line
+#: code ``-O2`` takes two to three times as long (100 links: 25 s against
+#: 12 s) and the calls are not measurably faster.
+LARGE_GRAPH = 20_000
+
+
+def optimization(graph):
+    r"""
+    The compiler flags for the code of ``graph``: ``('-O2',)``, or
+    ``('-O1',)`` above :data:`LARGE_GRAPH` nodes.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.graph import ExpressionGraph
+        sage: from sage_dynsym.numerics.recursive import optimization
+        sage: optimization(ExpressionGraph())
+        ('-O2',)
+    """
+    return ('-O1',) if graph.size() > LARGE_GRAPH else ('-O2',)
+
+
 class _Unsupported(Exception):
     """A model the recursive form cannot represent (the reason is the message)."""
 
@@ -887,6 +922,7 @@ class RecursiveForm:
         self._state = tree.coordinates() + tree.velocities()
         self._kernels = {}
         self._graph = None
+        self._jacobian = None
 
     def __repr__(self):
         n = len(self._tree.bodies())
@@ -1082,7 +1118,8 @@ class RecursiveForm:
                       f"{len(self._tree.bodies())} bodies in "
                       f"({', '.join(map(str, self._tree.coordinates()))})")
             try:
-                library = compile_c(graph_c_source(G, outputs, header, pivots=pivots))
+                library = compile_c(graph_c_source(G, outputs, header, pivots=pivots),
+                                    flags=optimization(G))
             except (AnalysisError, OSError) as error:
                 if backend == 'c':
                     raise
@@ -1101,3 +1138,110 @@ class RecursiveForm:
             kernel = Kernel(self, 'python', evaluate)
         self._kernels[backend] = kernel
         return kernel
+
+    def jacobian_graph(self):
+        r"""
+        ``(graph, columns, pivots)``: :meth:`graph` with the derivatives of
+        `\dot x` by the state added (forward-mode differentiation of the
+        recursive algorithms, see :mod:`~sage_dynsym.numerics.derivatives`),
+        for :func:`~sage_dynsym.numerics.compiler.jacobian_c_source`: the
+        direction is read from ``x[2n..4n)``; ``columns`` gives the
+        derivatives in the directions of the coordinates, then in those of
+        the velocities (fewer nodes: the mass matrix and the articulated
+        inertias do not depend on the velocities).
+
+        EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: phi, m, l, g = var('phi m l g')
+            sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
+            ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
+            sage: F = RecursiveForm(BodyTree([rod], [phi], gravity=[0, 0, -g]),
+            ....:                   values={g: 9.81, l: 2, m: 1})
+            sage: G, columns, pivots = F.jacobian_graph()
+            sage: [[G.show(a) for a in nodes] for nodes, first, count in columns]
+            [['0.0', '-(0.25*(2.0*(9.81*(cos(x[0])*x[2]))))'], ['x[3]', '0.0']]
+        """
+        from .derivatives import tangent
+        if self._jacobian is None:
+            G, outputs, pivots = self.graph()
+            m = len(outputs)
+            n = m // 2
+            columns = []
+            for first in (0, n):
+                seeds = {G.input('x', first + i): G.input('x', m + first + i) for i in range(n)}
+                columns.append((tangent(G, outputs, seeds), first, n))
+            self._jacobian = (G, columns, pivots)
+        return self._jacobian
+
+    def jacobian_kernel(self, backend='auto'):
+        r"""
+        The compiled Jacobian of `\dot x` by the state: a function
+        ``jac(t, x, p)`` returning a square NumPy array (raises
+        :class:`ZeroDivisionError` where the system is singular), built
+        once per backend as :meth:`kernel` (``'c'``: see
+        :func:`~sage_dynsym.numerics.compiler.jacobian_c_source`;
+        ``'python'``: the derivatives in one direction after the other).
+
+        EXAMPLES: a mass on a spring with a cubic term, `\ddot x = -(k x +
+        x^3)/m`::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: x, k, m = var('x k m')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x],
+            ....:                            potential=-k*x^2/2 - x^4/4))
+            sage: for backend in ('python', 'c', 'auto'):
+            ....:     print(F.jacobian_kernel(backend)(0.0, [2.0, 1.0], [3.0, 0.5]))
+            [[  0.   1.]
+             [-30.   0.]]
+            [[  0.   1.]
+             [-30.   0.]]
+            [[  0.   1.]
+             [-30.   0.]]
+        """
+        import numpy as np
+        from .compiler import compile_c, jacobian_c_source, run_python, jacobian_function
+        from sage.misc.verbose import verbose
+        key = ('jacobian', backend)
+        if key in self._kernels:
+            return self._kernels[key]
+        G, columns, pivots = self.jacobian_graph()
+        size = 2 * len(self._tree.coordinates())
+        function = None
+        if backend in ('auto', 'c'):
+            header = (f"generated by sage_dynsym: Jacobian of the recursive right-hand side "
+                      f"of a tree of {len(self._tree.bodies())} bodies")
+            try:
+                library = compile_c(jacobian_c_source(G, columns, size, header, pivots),
+                                    flags=optimization(G))
+            except (AnalysisError, OSError) as error:
+                if backend == 'c':
+                    raise
+                verbose(f"C backend unavailable ({error}); using Python", level=1)
+            else:
+                function = jacobian_function(library.dynsym_jac, size)
+        if function is None:
+            outputs = [a for nodes, _, _ in columns for a in nodes]
+            python = run_python(G.python_source(outputs + list(pivots)), '_graph')
+
+            def function(t, x, p):
+                out = np.empty((size, size))
+                extended = [float(v) for v in x] + [0.0] * size
+                begin = 0
+                for nodes, first, count in columns:
+                    for j in range(first, first + count):
+                        extended[size + j] = 1.0
+                        values = python(t, extended, p)
+                        extended[size + j] = 0.0
+                        if any(d == 0 for d in values[len(outputs):]):
+                            raise ZeroDivisionError
+                        out[:, j] = values[begin:begin + len(nodes)]
+                    begin += len(nodes)
+                if not np.isfinite(out).all():
+                    raise ZeroDivisionError
+                return out
+        self._kernels[key] = function
+        return function
+

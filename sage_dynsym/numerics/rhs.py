@@ -27,7 +27,7 @@ import numpy as np
 
 from sage.structure.sage_object import SageObject
 
-from ..errors import ModelError, brief
+from ..errors import AnalysisError, ModelError, brief
 from ..arguments import finite_real
 from .form import as_form
 
@@ -232,6 +232,101 @@ class RightHandSide(SageObject):
             Numerical form x' = F in (x), parameters ()
         """
         return self._form
+
+
+class StateJacobian(SageObject):
+    r"""
+    The compiled Jacobian ``jac(t, x)`` of a right-hand side ``f(t, x)``
+    with respect to the state: the dense square matrix
+    `\partial f_i/\partial x_j`, generated from the recursive algorithms
+    differentiated (forward mode, see
+    :mod:`~sage_dynsym.numerics.derivatives`) and compiled like ``f`` --
+    not finite differences. For second-order systems, `x = (q, \dot q)`
+    and the Jacobian is `\begin{pmatrix} 0 & E \\ \partial\ddot q/\partial q
+    & \partial\ddot q/\partial\dot q\end{pmatrix}`.
+
+    INPUT:
+
+    - ``form`` -- a :class:`~sage_dynsym.numerics.recursive.RecursiveForm`
+      (the form of the equations has no compiled Jacobian: an
+      :class:`~sage_dynsym.errors.AnalysisError` says so)
+    - ``values`` -- dict of the parameter values
+    - ``backend`` -- ``'auto'``, ``'c'`` or ``'python'``
+
+    EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.recursive import RecursiveForm
+        sage: from sage_dynsym.numerics.rhs import StateJacobian
+        sage: phi, m, l, g = var('phi m l g')
+        sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
+        ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
+        sage: jac = StateJacobian(RecursiveForm(BodyTree([rod], [phi], gravity=[0, 0, -g])),
+        ....:                     {g: 9.81, l: 2, m: 1})
+        sage: jac(0, [0, 0.5])
+        array([[ 0.   ,  1.   ],
+               [-4.905,  0.   ]])
+
+    TESTS::
+
+        sage: jac(0, [0])
+        Traceback (most recent call last):
+        ...
+        ModelError: numerical_rhs: the state must have 2 entries, got 1
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations
+        sage: from sage_dynsym.numerics.form import NumericalForm
+        sage: StateJacobian(NumericalForm(FirstOrderEquations([-phi], [phi])), {})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: jacobian: the compiled Jacobian is generated from the recursive algorithms of a tree of rigid bodies (a mechanical system with algorithm='recursive'); this model's right-hand side comes from its equations
+        sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[phi, 0, 0], mass=m)], [phi]))
+        sage: StateJacobian(F, {m: 0})(0, [0.0, 0.0])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: jacobian: the system is singular at t = 0.0, state [0.0, 0.0]
+    """
+
+    def __init__(self, form, values, backend='auto'):
+        if not hasattr(form, 'jacobian_kernel'):
+            raise AnalysisError("the compiled Jacobian is generated from the recursive "
+                                "algorithms of a tree of rigid bodies (a mechanical system with "
+                                "algorithm='recursive'); this model's right-hand side comes from "
+                                "its equations", entry="jacobian")
+        form = form.with_functions(values)
+        self._form = form
+        self._p = parameter_values(form, values)
+        self._function = form.jacobian_kernel(backend)
+        self._size = len(form.state())
+
+    def _repr_(self):
+        return (f"Jacobian of the numerical right-hand side by the state "
+                f"({', '.join(map(str, self._form.state()))})")
+
+    def __call__(self, t, x):
+        if not (type(x) is np.ndarray and x.dtype == np.float64 and x.shape == (self._size,)
+                and isinstance(t, float) and math.isfinite(t)):
+            t = finite_real(t, 't', entry="numerical_rhs")
+            x = state_vector(x, self._size)
+        try:
+            return self._function(t, x, self._p)
+        except ZeroDivisionError:
+            raise AnalysisError(f"the system is singular at t = {float(t)}, state "
+                                f"{list(map(float, x))}", entry="jacobian") from None
+
+    def variables(self):
+        r"""The state variables, in the order of the rows and columns.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: from sage_dynsym.numerics.rhs import StateJacobian
+            sage: x = var('x')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=1)], [x]))
+            sage: StateJacobian(F, {}).variables()
+            [x, dx]
+        """
+        return self._form.state()
 
 
 def numerical_rhs(equations, values, backend='auto'):

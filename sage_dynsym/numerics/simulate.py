@@ -61,12 +61,14 @@ from ..errors import DynSymError, ModelError, AnalysisError
 from ..arguments import choice, count, finite_real, flag
 from ..symbols import t as _t
 from .form import as_form
-from .rhs import RightHandSide, real_number
+from .rhs import RightHandSide, StateJacobian, real_number
 from .trajectory import Trajectory
 
 _LOG = logging.getLogger('sage_dynsym.numerics')
 _METHODS = {'auto': 'DOP853', 'nonstiff': 'DOP853', 'stiff': 'Radau'}
 _SCIPY = ('RK45', 'RK23', 'DOP853', 'Radau', 'BDF', 'LSODA')
+#: the methods of ``solve_ivp`` that use the Jacobian of the right-hand side
+_IMPLICIT = ('Radau', 'BDF', 'LSODA')
 #: the options of ``solve_ivp`` that :func:`simulate` passes on (step sizes)
 _STEP_OPTIONS = ('max_step', 'first_step', 'min_step')
 #: seconds after which the progress is reported
@@ -419,6 +421,10 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
     else:
         form = as_form(equations)
         rhs = RightHandSide(form, values, backend)
+    if scipy_method in _IMPLICIT and hasattr(form, 'jacobian_kernel'):
+        # the implicit methods take the compiled Jacobian, not finite
+        # differences of the right-hand side (one call for 2n of them)
+        options['jac'] = StateJacobian(form, rhs.parameters(), backend)
     # the energy is computed only if the trajectory is asked for it
     energy = form.energy if energy is None else energy
     x = initial_state(form, initial)

@@ -266,12 +266,15 @@ def cases():
         "  newtonian: {nu: g, r: l}\n"), "error", "missing key")
     add("long_model_name", pendulum("x" * 5000), "error", "MAX_TITLE_LENGTH")
     add("ok_coordinates_50", many_coordinates("ok_coordinates_50", 50, chain=False), "ok")
-    add("coordinates_60", many_coordinates("coordinates_60", 60), "error", "MAX_COORDINATES")
-    add("coordinates_500", many_coordinates("coordinates_500", 500), "error", "MAX_COORDINATES")
-    add("bodies_60", many_coordinates("bodies_60", 40).replace(
-        "bodies:", "bodies:\n" + "".join(f"  - {{name: extra{k}}}\n" for k in range(30)))
+    add("coordinates_1001", many_coordinates("coordinates_1001", 1001), "error",
+        "MAX_COORDINATES")
+    add("coordinates_5000", many_coordinates("coordinates_5000", 5000), "error",
+        "MAX_COORDINATES")
+    add("bodies_1010", many_coordinates("bodies_1010", 10).replace(
+        "bodies:", "bodies:\n" + "".join(f"  - {{name: extra{k}}}\n" for k in range(1000)))
         .replace("bodies:\n\n", "bodies:\n"), "error", "MAX_BODIES")
-    add("parameters_600", slider("parameters_600", ", ".join(f"a{k}" for k in range(600))),
+    add("parameters_10001", slider("parameters_10001",
+                                   ", ".join(f"a{k}" for k in range(10001))),
         "error", "MAX_PARAMETERS")
 
     # -- names ----------------------------------------------------------

@@ -126,3 +126,54 @@ def offset_chain(n):
                            inertia=physical_inertia(rng, mass, center)))
     return dict(bodies=bodies, coordinates=coords, parameters=['g'], gravity=[0, 0, "-g"],
                 values={})
+
+
+def humanoid_tree():
+    """
+    A humanoid-like tree of 46 coordinates on a free-floating base: the
+    pelvis moves by three translations ``x, y, z`` (its joint point) and
+    three rotations (z, y, x: ``yaw, pitch, roll``); it carries a torso (2
+    rotations) with a head (2), two arms (shoulder 3, elbow 1, wrist 2) each
+    with a hand of three fingers (2 joints each), and two legs (hip 3, knee
+    1, ankle 2). Several children per body; joint offsets, mass centres,
+    masses and full inertia tensors are numbers (fixed seed); gravity
+    ``(0, 0, -g)``.
+    """
+    rng = random.Random(46)
+    bodies, coords = [], []
+
+    def add(parent, name, axes, joint, mass, length):
+        rotations = []
+        for i, axis in enumerate(axes, 1):
+            coords.append(f"{name}_{i}")
+            rotations.append((axis, f"{name}_{i}"))
+        center = [_rational(rng, -1, 1, 20), _rational(rng, -1, 1, 20), Fraction(-length, 2)]
+        bodies.append(dict(parent=parent, rotations=rotations, joint=joint, mass_center=center,
+                           mass=Fraction(mass), inertia=physical_inertia(rng, mass, center),
+                           name=name))
+        return len(bodies)
+
+    coords += ['x', 'y', 'z']
+    pelvis = add(0, 'pelvis', (3, 2, 1), ['x', 'y', 'z'], 8, Fraction(1, 5))
+    torso = add(pelvis, 'torso', (3, 2), [0, 0, Fraction(1, 5)], 12, Fraction(-2, 5))
+    add(torso, 'head', (3, 2), [0, 0, Fraction(1, 2)], 4, Fraction(-1, 5))
+    # bodies numbered depth first (each subtree contiguous), as Pinocchio's
+    # derivative algorithms assume of its joints
+    for side, sign in (('l', 1), ('r', -1)):
+        upper = add(torso, f'{side}shoulder', (2, 1, 3), [0, sign * Fraction(1, 5), Fraction(2, 5)],
+                    2, Fraction(3, 10))
+        fore = add(upper, f'{side}elbow', (2,), [0, 0, Fraction(-3, 10)], Fraction(3, 2),
+                   Fraction(1, 4))
+        hand = add(fore, f'{side}wrist', (1, 2), [0, 0, Fraction(-1, 4)], Fraction(1, 2),
+                   Fraction(1, 10))
+        for finger in range(3):
+            add(hand, f'{side}finger{finger}', (2, 1), [Fraction(finger - 1, 40), 0,
+                                                        Fraction(-1, 10)], Fraction(1, 20),
+                Fraction(1, 20))
+    for side, sign in (('l', 1), ('r', -1)):
+        thigh = add(pelvis, f'{side}hip', (3, 1, 2), [0, sign * Fraction(1, 10), 0], 6,
+                    Fraction(2, 5))
+        shin = add(thigh, f'{side}knee', (2,), [0, 0, Fraction(-2, 5)], 3, Fraction(2, 5))
+        add(shin, f'{side}ankle', (2, 1), [0, 0, Fraction(-2, 5)], 1, Fraction(1, 10))
+    return dict(bodies=bodies, coordinates=coords, parameters=['g'], gravity=[0, 0, "-g"],
+                values={})

@@ -3,7 +3,8 @@ A plain-data chain of rigid bodies (``reference/chains.py``) as a Pinocchio mode
 
 Independent of sage_dynsym. Each elementary rotation whose angle is a
 coordinate becomes a revolute joint about that axis (``JointModelRX``,
-``RY``, ``RZ``); the first one of a body is placed at the body's joint point
+``RY``, ``RZ``), each component of a joint point that is a coordinate a
+prismatic joint along that axis (``JointModelPX``, ...; a free base); the first one of a body is placed at the body's joint point
 in the parent's frame, the following ones at the frame of the previous one
 (a body turned by two angles is two revolute joints with a massless
 intermediate body); the body's inertia (given about its joint point) is
@@ -38,9 +39,18 @@ def pinocchio_model(desc, values):
     joint_of, frame_of, order = {0: 0}, {0: pin.SE3.Identity()}, []
     for k, body in enumerate(desc['bodies'], 1):
         parent = joint_of[body['parent']]
+        # a joint component that is a coordinate: a prismatic joint along
+        # that axis of the parent (a free base: x, y, z)
+        sliding = [(i, c) for i, c in enumerate(body['joint']) if c in desc['coordinates']]
         offset = frame_of[body['parent']] * pin.SE3(
-            np.eye(3), np.array([_number(c, values) for c in body['joint']]))
+            np.eye(3), np.array([0.0 if c in desc['coordinates'] else _number(c, values)
+                                 for c in body['joint']]))
         placement = offset
+        for i, c in sliding:
+            joint = (pin.JointModelPX, pin.JointModelPY, pin.JointModelPZ)[i]()
+            parent = model.addJoint(parent, joint, placement, str(c))
+            order.append(c)
+            placement = pin.SE3.Identity()
         for axis, angle in body['rotations']:
             if angle not in desc['coordinates']:
                 raise ValueError(f"body {k}: the angle {angle} is not a coordinate")
