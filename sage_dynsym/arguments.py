@@ -398,15 +398,20 @@ def check_declared_signs(values, positive, name="values", error=ModelError):
         Traceback (most recent call last):
         ...
         ModelError: fixed: m is declared positive, got 0
+        sage: check_declared_signs({m: SR(-1)}, [m])
+        Traceback (most recent call last):
+        ...
+        ModelError: values: m is declared positive, got -1
+        sage: check_declared_signs({m: lambda x: x, l: -l}, [m, l])
     """
     declared = {str(p) for p in positive}
     if not declared or not isinstance(values, dict):
         return
     for key, value in values.items():
         key_name = _symbol_name(key)
-        if key_name not in declared or isinstance(value, (str, bytes, bool)) or callable(value):
+        if key_name not in declared or isinstance(value, (str, bytes, bool)):
             continue
-        try:
+        try:        # a Sage number, callable as symbolic expressions are, counts
             number = finite_real(value, key_name)
         except ModelError:
             continue            # not a number: the caller's own checks say so

@@ -242,6 +242,26 @@ class Hamiltonian(SageObject, NumericalMethods):
         """
         return self._expr
 
+    def positive_parameters(self):
+        r"""
+        The parameters declared positive (those of the Lagrangian): the
+        values given to :meth:`subs`, :meth:`numerical_rhs` and
+        :meth:`simulate` must respect them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: H = Lagrangian(m*dx^2/2 - k*x^2/2, [x], positive=[m]).hamiltonian()
+            sage: H.positive_parameters()
+            [m]
+            sage: H.numerical_rhs({m: -1, k: 1})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -1
+        """
+        return self._lagrangian.positive_parameters()
+
     def subs(self, values):
         r"""
         The Hamiltonian of the Lagrangian with the parameter values

@@ -124,9 +124,11 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..arguments import symbol_arguments
 from ..errors import ModelError
 from ..symbols import velocity, acceleration, momentum, t, sage_numbers
 from ..numerics.methods import NumericalMethods
+from ..numerics.values import check_model_values
 from .holonomic import HolonomicConstraints
 from .lagrange_equations import LagrangeEquations
 from .legendre import LegendreTransform
@@ -168,6 +170,10 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     - ``constraints`` -- (default: none) holonomic constraints `f_j(q, t)`,
       each meaning `f_j = 0` (or equations ``a == b``, meaning `a - b = 0`),
       independent at a generic point (see the module documentation)
+    - ``positive`` -- (optional) the parameters declared positive (those
+      of the model it comes from): values given to :meth:`subs`,
+      :meth:`numerical_rhs` and :meth:`simulate` must respect them (see
+      :meth:`positive_parameters`)
 
     EXAMPLES::
 
@@ -217,8 +223,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
                  forces=None, name=None, decomposition=None, equation_builder=None,
-                 constraints=()):
+                 constraints=(), positive=()):
         self._coordinates = symbol_list(coordinates, "coordinates")
+        self._positive = symbol_arguments(positive, 'positive')
         if velocities is None:
             velocities = [velocity(q) for q in self._coordinates]
         self._velocities = symbol_list(velocities, "velocities")
@@ -342,6 +349,35 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         """
         return self._name
 
+    def positive_parameters(self):
+        r"""
+        The parameters declared positive (``positive=``, or the declared
+        signs of the model the Lagrangian comes from). They are not part of
+        the Lagrangian's value (``==``), but the values given to
+        :meth:`subs`, :meth:`numerical_rhs` and :meth:`simulate` must
+        respect them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
+            sage: L.positive_parameters()
+            [m, l, g]
+            sage: values = {'m': 1, 'l': 1, 'g': 9.81}
+            sage: L.simulate(dict(values, m=-1), {'theta': 1, 'psi': 0, 'dtheta': 0, 'dpsi': 0}, 1)
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -1
+            sage: L.subs(g=-9.81)
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: g is declared positive, got -9.81000000000000
+            sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
+            ([m, l], [m, l, g])
+        """
+        return list(self._positive)
+
     # ------------------------------------------------------------------
     # value semantics
 
@@ -408,7 +444,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
                 (self._expr, self._coordinates, self._velocities,
                  {'dissipation': self._dissipation, 'forces': self._forces,
                   'name': self._name, 'decomposition': self._structure,
-                  'constraints': self._constraints}))
+                  'constraints': self._constraints, 'positive': self._positive}))
 
     def _repr_(self):
         coords = ", ".join(str(q) for q in self._coordinates)
@@ -424,7 +460,8 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         A Lagrangian of the same kind with a new expression (and options).
         """
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
-                       forces=self._forces, name=self._name, constraints=self._constraints)
+                       forces=self._forces, name=self._name, constraints=self._constraints,
+                       positive=self._positive)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
         return Lagrangian(expr, coordinates, **options)
@@ -432,7 +469,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     def subs(self, *args, **kwds):
         r"""
         Substitute values for parameters (in `L`, `R`, `Q` and the
-        constraints).
+        constraints). A number given for a parameter declared positive
+        (:meth:`positive_parameters`) must be positive; the substituted
+        parameters leave that list.
 
         Coordinates and velocities must not be substituted: that would change
         the dynamics in a way this method cannot track. Python floats become
@@ -463,10 +502,14 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         for v in protected:
             if (v + probe).subs(*args, **kwds) != v + probe:
                 raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
+        given = {p: p.subs(*args, **kwds) for p in self._positive}
+        given = {p: v for p, v in given.items() if not v.is_trivially_equal(p)}
+        check_model_values(self, given, entry="subs")
         return self._derived(self._expr.subs(*args, **kwds),
                              dissipation=self._dissipation.subs(*args, **kwds),
                              forces=[f.subs(*args, **kwds) for f in self._forces],
-                             constraints=[f.subs(*args, **kwds) for f in self._constraints])
+                             constraints=[f.subs(*args, **kwds) for f in self._constraints],
+                             positive=[p for p in self._positive if p not in given])
 
     # ------------------------------------------------------------------
     # structure
@@ -640,7 +683,8 @@ class RouthFunction(Lagrangian):
             routh_reduction(lagrangian, self._cyclic, self._momenta)
         Lagrangian.__init__(self, None, coordinates, velocities, dissipation=dissipation,
                             forces=forces, name=lagrangian.name(), decomposition=decomposition,
-                            constraints=lagrangian.constraints())
+                            constraints=lagrangian.constraints(),
+                            positive=lagrangian.positive_parameters())
 
     def _repr_(self):
         coords = ", ".join(map(str, self.coordinates()))
@@ -677,7 +721,7 @@ class RouthFunction(Lagrangian):
                              'dissipation': self.dissipation(),
                              'forces': self.generalized_forces(),
                              'name': self.name(), 'constraints': self.constraints(),
-                             **changes})
+                             'positive': self.positive_parameters(), **changes})
 
     def momenta(self):
         r"""

@@ -421,7 +421,7 @@ class NonholonomicLagrangian(Lagrangian):
     def _derived(self, expr, **changes):
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
                        forces=self._forces, name=self._name, constraints=self._constraints,
-                       nonholonomic=self._nonholonomic)
+                       nonholonomic=self._nonholonomic, positive=self._positive)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
         return NonholonomicLagrangian(expr, coordinates, **options)

@@ -78,6 +78,7 @@ from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
 from ..numerics.methods import NumericalMethods
+from ..numerics.values import check_model_values
 from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
 from .format import LiePoissonFormat
 from .report import report_title, report_sections
@@ -577,8 +578,16 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             ([C, c], [C])
             sage: len(K.polynomial_integrals(4, new_only=True))
             1
+
+        TESTS::
+
+            sage: S.subs({'A': -1})
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: A is declared positive, got -1
         """
-        values = {SR(k): SR(v) for k, v in values.items()}
+        check_model_values(self, values, entry="subs")
+        values = {SR.var(k) if isinstance(k, str) else SR(k): SR(v) for k, v in values.items()}
         names = {str(k) for k in values}
         for k in values:
             if str(k) not in {str(a) for a in self._parameters}:

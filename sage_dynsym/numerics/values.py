@@ -32,6 +32,17 @@ EXAMPLES::
     Traceback (most recent call last):
     ...
     ModelError: values: R1 is declared positive, got -1
+
+Sage numbers and constant expressions count as numbers::
+
+    sage: check_model_values(C, {'L1': 1, 'L2': 1, 'M': SR(2), 'R1': 1, 'R2': 1})
+    Traceback (most recent call last):
+    ...
+    ModelError: values: the values break the condition L1*L2 - M^2 >= 0 of the model (it is -3 there)
+    sage: check_model_values(C, {'L1': 1, 'L2': 1, 'M': 0, 'R1': -sqrt(2), 'R2': 1})
+    Traceback (most recent call last):
+    ...
+    ModelError: values: R1 is declared positive, got -sqrt(2)
 """
 import operator
 
@@ -119,9 +130,19 @@ def check_model_values(model, values, entry="values"):
     conditions = getattr(model, 'conditions', None)
     if not callable(conditions):
         return
-    numbers = {k: v for k, v in values.items() if not callable(v)}
+    numbers = {k: v for k, v in values.items() if _is_number(v)}
     for condition in conditions():
         result = holds_to_rounding(condition, numbers)
         if result is not None and not result[0]:
             raise ModelError(f"the values break the condition {condition} of the model (it is "
                              f"{result[1]:.6g} there)", entry=entry)
+
+
+def _is_number(value):
+    # a number or a constant expression (symbolic expressions are callable
+    # too: only what finite_real refuses is left out, such as a function)
+    try:
+        finite_real(value, 'value')
+    except ModelError:
+        return False
+    return True
