@@ -124,8 +124,8 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..arguments import symbol_arguments
-from ..errors import ModelError
+from ..arguments import expression_argument, expression_list, symbol_arguments
+from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, momentum, t, sage_numbers
 from ..numerics.methods import NumericalMethods
 from ..numerics.values import check_model_values
@@ -239,7 +239,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             self._structure = (A, A1, SR(A0))
         # with a decomposition, L itself is formed only when asked for (the
         # equations of a large model do not need it)
-        self._expression = None if expr is None and decomposition is not None else SR(expr)
+        self._expression = None if expr is None and decomposition is not None else \
+            expression_argument(expr, "expr", expected="the Lagrangian as a symbolic expression",
+                                hint="e.g. Lagrangian(m*dx^2/2 - k*x^2/2, [x])")
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
         if forces is None:
@@ -494,8 +496,14 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             Traceback (most recent call last):
             ...
             ModelError: cannot substitute for the coordinate or velocity x
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({'k': 2}, m == 1)
+            Lagrangian in coordinates (x) : 1/2*dx^2 - x^2
+            sage: Lagrangian(m*dx^2/2, [x]).subs(2)
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
         """
-        args = [sage_numbers(a) for a in args]
+        args = [_substitution(a) for a in args]
         kwds = {k: sage_numbers(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
@@ -672,7 +680,9 @@ class RouthFunction(Lagrangian):
 
     def __init__(self, lagrangian, cyclic, momenta=None):
         if not isinstance(lagrangian, Lagrangian):
-            raise ModelError("expected a Lagrangian object", entry="lagrangian")
+            raise ModelError(f"expected a Lagrangian object, got {brief(lagrangian)}; e.g. "
+                             "model.lagrangian().routh(cyclic)", entry="lagrangian")
+        cyclic = expression_list(cyclic, "cyclic", expected="a list of cyclic coordinates")
         check_cyclic(lagrangian, cyclic)
         self._cyclic = [SR(c) for c in cyclic]
         if momenta is None:
@@ -797,6 +807,18 @@ class RouthFunction(Lagrangian):
         """
         return self.lagrange_equations()
 
+
+
+def _substitution(arg):
+    # an argument of subs: a dict (symbols or their names as keys) or an
+    # equation ``parameter == value``, numbers as Sage numbers
+    if isinstance(arg, dict):
+        return {SR.var(k) if isinstance(k, str) and k.isidentifier() else k: v
+                for k, v in sage_numbers(arg).items()}
+    if getattr(arg, 'is_relational', lambda: False)():
+        return sage_numbers(arg)
+    raise ModelError(f"expected a dict {{parameter: value}} or equations parameter == value, "
+                     f"got {brief(arg)}", entry="subs")
 
 
 def _same(a, b):

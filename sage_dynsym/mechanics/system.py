@@ -45,9 +45,9 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
 from sage.misc.cachefunc import cached_method
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..errors import ModelError, brief
 from ..symbols import velocity, momentum, t, check_mechanical_names, sage_numbers
-from ..arguments import symbol_arguments
+from ..arguments import expression_list, symbol_arguments
 from ..algebra.trigonometric import SymbolicBackend
 from ..dynamics.holonomic import check_constraints
 from ..dynamics.model import Model
@@ -187,13 +187,18 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
                  dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=(),
                  nonholonomic=(), rolling=(), operating_points=None):
+        if not isinstance(bodies, (list, tuple)):
+            raise ModelError(f"expected a list of RigidBody, got {brief(bodies)}; e.g. "
+                             "MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])",
+                             entry="bodies")
         bodies = list(bodies)
         given_names = [b.name() if isinstance(b, RigidBody) else None for b in bodies]
         for i, body in enumerate(bodies):
             if not isinstance(body, RigidBody):
                 raise ModelError(f"expected a RigidBody, got {body!r}", entry=f"bodies[{i}]")
         self._bodies = self._sorted_by_parents(bodies)
-        self._coordinates = [SR(q) for q in coordinates]
+        self._coordinates = expression_list(coordinates, "coordinates",
+                                            expected="a list of symbolic variables")
         for q in self._coordinates:
             if not q.is_symbol():
                 raise ModelError(f"coordinates must be symbolic variables, got {q}",
@@ -427,6 +432,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             sage: S.parent_index(2), S.parent_index(1)
             (1, 0)
         """
+        self._check_index(k, inertial=True)
         return self._parents[k]
 
     def coordinates(self):

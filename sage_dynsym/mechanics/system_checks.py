@@ -47,7 +47,8 @@ from itertools import combinations
 from sage.symbolic.ring import SR
 
 from ..algebra.conditions import positive_conditions
-from ..errors import ModelError
+from ..arguments import is_integer
+from ..errors import ModelError, brief
 from ..symbols import acceleration, t
 from .loads import Load, body_index
 from .rigid_body import RigidBody
@@ -241,9 +242,15 @@ class SystemChecks:
     def _accelerations(self):
         return [acceleration(q) for q in self._coordinates]
 
-    def _check_index(self, k):
-        if not 1 <= k <= len(self._bodies):
-            raise ModelError(f"body index {k} out of range 1..{len(self._bodies)}")
+    def _check_index(self, k, inertial=False):
+        # a 1-based body index (0, the inertial frame, where ``inertial``)
+        low = 0 if inertial else 1
+        if not is_integer(k):
+            raise ModelError(f"expected a body index {low}..{len(self._bodies)}"
+                             f"{' (0: the inertial frame)' if inertial else ''}, got {brief(k)}",
+                             entry="k")
+        if not low <= k <= len(self._bodies):
+            raise ModelError(f"body index {k} out of range {low}..{len(self._bodies)}")
 
 
 def _always_positive(expr, positive):
