@@ -429,8 +429,9 @@ def expression_list(values, name, error=ModelError, entry=None,
     ``values`` (a list, tuple, vector or other iterable that is not a
     string, a mapping or a single expression) as a list of symbolic
     expressions; anything else is an error as for
-    :func:`expression_argument`. With ``names=True`` an item may also be
-    the name of a symbol (unknowns, variables).
+    :func:`expression_argument`. With ``names=True`` the items are
+    unknowns or variables: symbols, their names, or values of functions
+    such as ``f(x)``.
 
     EXAMPLES::
 
@@ -448,6 +449,10 @@ def expression_list(values, name, error=ModelError, entry=None,
         ModelError: equations: expected a list of symbolic expressions, got [x, None] (list)
         sage: expression_list(['x', function('f')(x)], 'unknowns', names=True)
         [x, f(x)]
+        sage: expression_list([x, 2], 'unknowns', names=True)
+        Traceback (most recent call last):
+        ...
+        ModelError: unknowns: expected a list of symbolic expressions, got [x, 2] (list)
     """
     from sage.symbolic.ring import SR
     items = None
@@ -458,11 +463,19 @@ def expression_list(values, name, error=ModelError, entry=None,
             items = None
     try:
         if items is not None:
-            return [SR.var(v) if names and isinstance(v, str) and v.isidentifier() else
-                    expression_argument(v, name, error, entry) for v in items]
+            found = [SR.var(v) if names and isinstance(v, str) and v.isidentifier() else
+                     expression_argument(v, name, error, entry) for v in items]
+            if not names or all(_is_unknown(v) for v in found):
+                return found
     except DynSymError:
         pass
     raise _refused(values, name, expected, error, entry, hint)
+
+
+def _is_unknown(value):
+    # a symbol, or the value of a function such as f(x)
+    from sage.symbolic.function import Function
+    return value.is_symbol() or isinstance(value.operator(), Function)
 
 
 def matrix_argument(value, name, error=ModelError, entry=None, square=False,

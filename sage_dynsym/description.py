@@ -283,9 +283,6 @@ def save(model, path, results=True):
     model_argument(model, ('to_dict', 'results'), "model", "a model (a mechanical system, a "
                    "circuit, a Lie-Poisson system, ...)", error=DescriptionError,
                    hint="the call is save(model, path)")
-    if not isinstance(path, (str, os.PathLike)):
-        raise DescriptionError(f"expected the path of the file to write, got {brief(path)}",
-                               entry="path")
     flag(results, "results", error=DescriptionError)
     data = model.to_dict()
     if results:

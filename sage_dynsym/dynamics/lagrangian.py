@@ -503,7 +503,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             ...
             ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
         """
-        args = [_substitution(a) for a in args]
+        args = [substitution(a) for a in args]
         kwds = {k: sage_numbers(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
@@ -809,9 +809,23 @@ class RouthFunction(Lagrangian):
 
 
 
-def _substitution(arg):
-    # an argument of subs: a dict (symbols or their names as keys) or an
-    # equation ``parameter == value``, numbers as Sage numbers
+def substitution(arg):
+    r"""
+    A positional argument of :meth:`Lagrangian.subs`: a dict (symbols or
+    their names as keys) or an equation ``parameter == value``, with Python
+    numbers made Sage numbers; anything else is a
+    :class:`~sage_dynsym.errors.ModelError`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.lagrangian import substitution
+        sage: substitution({'k': 1.5r}), substitution(var('m') == 2)
+        ({k: 1.50000000000000}, m == 2)
+        sage: substitution('k = 1')
+        Traceback (most recent call last):
+        ...
+        ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 'k = 1'
+    """
     if isinstance(arg, dict):
         return {SR.var(k) if isinstance(k, str) and k.isidentifier() else k: v
                 for k, v in sage_numbers(arg).items()}
