@@ -243,12 +243,16 @@ def test_a_symbolic_negative_rolling_radius_is_refused():
             'coordinates': ['x', 'y', 'psi', 'theta', 'phi'],
             'bodies': [{'name': 'frame', 'joint': ['x', 'y', 0],
                         'rotations': [[3, 'psi'], [1, 'theta']]},
-                       {'name': 'disk', 'parent': 'frame', 'joint': [0, 0, 'r'],
+                       {'name': 'disk', 'parent': 'frame', 'joint': [0, 0, '-r'],
                         'rotations': [[2, 'phi']], 'mass': 'm',
                         'inertia': [['A', 0, 0], [0, 'C', 0], [0, 0, 'A']]}],
             'rolling': [{'body': 'disk', 'radius': '-r', 'axle': 2}]}
-    with pytest.raises(ModelError, match=r"rolling\[0\]"):
+    with pytest.raises(ModelError, match=r"rolling\[0\]\.radius: the radius must be positive, "
+                                         r"but -r is never positive"):
         model_from_dict(data)
+    # with r undeclared, its sign is a condition of the model
+    data['positive'] = []
+    assert '-r > 0' in [str(c) for c in model_from_dict(data).conditions()]
 
 
 def test_what_the_declared_signs_leave_open_is_a_condition_checked_at_values():
