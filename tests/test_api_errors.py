@@ -111,6 +111,74 @@ def test_public_functions_and_classes_raise_only_the_package_errors(name):
     assert not problems, "\n".join(problems)
 
 
+def valid_calls():
+    """For public functions and classes, arguments of a call that works: each
+    argument in turn is replaced by a wrong kind of value."""
+    from sage.all import sin, identity_matrix, zero_matrix
+    from sage_dynsym.analysis.motion import FirstOrderEquations
+    y, dy, phi, dphi, r, dr, a, b, lam, l, g, m, psi, theta = var(
+        'y dy phi dphi r dr a b lam l g m psi theta')
+    L = Lagrangian(dx**2 / 2 - x**2 / 2, [x])
+    kepler = Lagrangian((dr**2 + r**2 * dphi**2) / 2 + 1 / r, [r, phi])
+    I2, Z2, K2 = identity_matrix(2), zero_matrix(2), diagonal_matrix([a, b])
+    E = sage_dynsym.lie_algebra('so3')
+    M1, M2, M3 = E.variables()
+    top = RigidBody('top', rotations=[(3, psi), (1, theta), (3, phi)], mass=m,
+                    mass_center=[0, 0, l], inertia=diagonal_matrix([a, a, b]))
+    heavy = MechanicalSystem([top], [psi, theta, phi],
+                             force_function=sage_dynsym.UniformGravity([0, 0, -g]))
+    decay = FirstOrderEquations([-k * x], [x])
+    rolling = sage_dynsym.NonholonomicLagrangian((dx**2 + dy**2) / 2, [x, y],
+                                                 nonholonomic=[dx - dy])
+    poly = lam**2 + a * lam + 1
+    return {
+        'Lagrangian': (dx**2 / 2 - x**2 / 2, [x]), 'RouthFunction': (kepler, [phi]),
+        'Hamiltonian': (L,), 'equations_cse': ([sin(x)**2 + sin(x)],),
+        'CompactEquations': ([], [x]), 'NonholonomicLagrangian': ((dx**2 + dy**2) / 2, [x, y]),
+        'ReducedEquations': (rolling, [dy]), 'RigidBody': ('b',),
+        'UniformGravity': ([0, 0, -g],), 'NewtonianField': (k, r, [1, 0, 0]),
+        'RollingDisk': ('wheel', r, 2),
+        'MechanicalSystem': ([RigidBody('b', joint=[x, 0, 0], mass=1)], [x]),
+        'load': (example_path('spherical_pendulum.yaml'),),
+        'Circuit': ([[1, 2, 'R1'], [2, 1, 'C1']],), 'NodalAnalysis': (CIRCUIT,),
+        'stationary_solutions': ([x**2], [x]), 'stationary_motions': (kepler.routh([phi]),),
+        'ModifiedRouthLyapunov': (kepler.routh([phi]),), 'linearize': (L, {x: 0}),
+        'LinearSystem': ([x], [[1]], [[0]], [[1]]),
+        'hurwitz_matrix': (poly, lam), 'hurwitz_determinants': (poly, lam),
+        'hurwitz_conditions': (poly, lam), 'lienard_chipart_conditions': (poly, lam),
+        'real_negative_roots_conditions': (poly, lam),
+        'conservative_stability_conditions': (lam**2 + a, lam),
+        'sylvester_conditions': (K2,), 'definiteness_conditions': (K2,),
+        'restrict_to_subspace': (x**2 + y**2, [x + y], [x, y]),
+        'simultaneous_reduction': (I2, K2), 'kelvin_chetaev': (I2, Z2, Z2, K2),
+        'equilibrium_family': ([x**2 - 1], [x], []), 'solve_exactly': ([x**2 - 1], [x]),
+        'exists': ([x], [x**2 - a > 0]), 'small_damping_limit': (I2, I2, Z2, K2),
+        'spectrum_regions': (lam**2 + a, lam), 'trig_rational_simplify': (sin(x)**2,),
+        'LiePoissonSystem': ('so3', M1**2), 'lie_algebra': ('so3',),
+        'poisson_structure': ('so3',), 'casimirs': (E,),
+        'polynomial_integrals': (E, M1**2 + M2**2 + M3**2, 2),
+        'euler_poisson': (heavy,), 'kirchhoff': (top,),
+        'numerical_rhs': (decay, {k: 1}), 'simulate': (decay, {k: 1}, {x: 1}, 1),
+        'generate_code': (decay,), 'Event': (x,), 'OperatingPoint': ('p', {x: 0}),
+    }
+
+
+VALID = valid_calls()
+
+
+@pytest.mark.parametrize("name", sorted(VALID))
+def test_each_argument_of_a_wrong_kind_raises_only_the_package_errors(name):
+    function, args = getattr(sage_dynsym, name), VALID[name]
+    assert call(function, *args) is None            # the call itself works
+    problems = []
+    for i in range(len(args)):
+        for kind, value in WRONG.items():
+            problem = call(function, *(args[:i] + (value,) + args[i + 1:]))
+            if problem:
+                problems.append(f"{name}(argument {i} = {kind}): {problem}")
+    assert not problems, "\n".join(problems)
+
+
 def main_objects():
     S = load(example_path('spherical_pendulum.yaml'))
     L = S.lagrangian()

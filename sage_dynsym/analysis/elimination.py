@@ -314,7 +314,7 @@ def equilibrium_family(rhs, variables, eliminate, use_groebner=True):
     for e in expression_list(rhs, "rhs", AnalysisError,
                              expected="a list of right-hand sides or equations"):
         eqs.append(e.lhs() - e.rhs() if e.is_relational() else e)
-    todo = [SR(v) for v in eliminate]
+    todo = expression_list(eliminate, "eliminate", AnalysisError, names=True)
     eqs = [e for e in eqs if not e.is_zero()]
     subs, nonzero = [], []
     while todo:

@@ -51,7 +51,7 @@ from sage.misc.cachefunc import cached_method
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..arguments import model_argument
+from ..arguments import expression_list, model_argument
 from ..errors import AnalysisError, ModelError
 from ..symbols import time_derivative
 from ..algebra.trig_linear import TrigFractionField
@@ -113,8 +113,8 @@ class ReducedEquations(SageObject):
             independent = self._default_speeds(C)
         else:
             independent = []
-            for s in speeds:
-                s = SR(s)
+            for s in expression_list(speeds, "speeds", expected="a list of velocities",
+                                     names=True):
                 if s in q:
                     s = dq[q.index(s)]
                 if s not in dq:
