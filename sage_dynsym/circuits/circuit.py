@@ -463,6 +463,18 @@ class Circuit(StateEquations, NumericalMethods, Model):
             sage: L.lagrange_equations()
             [L1*ddq1 + M*ddq2 - E1, M*ddq1 + L2*ddq2 + R2*dq2]
 
+        The Lagrangian carries the declared signs of the element values; those
+        of the sources, inputs that the analysis switches off, stay with the
+        circuit::
+
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 0, 'C1']], positive=['E1', 'R1'])
+            sage: L = C.lagrangian(); L.positive_parameters()
+            [R1]
+            sage: L.subs(C.source_values_off()).numerical_rhs({'R1': -1, 'C1': 1})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: R1 is declared positive, got -1
+
         TESTS::
 
             sage: Circuit([[1, 2, 'f1'], [2, 1, 'C1']]).lagrangian()
@@ -484,7 +496,10 @@ class Circuit(StateEquations, NumericalMethods, Model):
         return Lagrangian(A.kinetic_energy() - A.potential_energy(), A.coordinates(),
                           dissipation=A.dissipation(), forces=A.source_vector(),
                           name=f"{self._name or 'circuit'} ({method} method)",
-                          positive=self.positive_parameters())
+                          # the sources are inputs, switched off for the free
+                          # circuit: their declared signs stay with the circuit
+                          positive=[p for p in self.positive_parameters()
+                                    if p not in self.source_values_off()])
 
     @cached_method
     def brayton_moser(self):
