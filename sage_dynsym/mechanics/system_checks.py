@@ -47,6 +47,8 @@ from itertools import combinations
 from sage.symbolic.ring import SR
 
 from ..algebra.conditions import positive_conditions
+from ..algebra.polynomials import FACTOR_LIMIT
+from ..algebra.size import polynomial_terms
 from ..arguments import is_integer
 from ..errors import ModelError, brief
 from ..symbols import acceleration, t
@@ -189,6 +191,10 @@ class SystemChecks:
             expr = SR(expr)
             if not expr.variables():
                 return                      # numbers: checked where they are given
+            if polynomial_terms(expr) > FACTOR_LIMIT:
+                # too large to decide quickly: stated, not assumed
+                open_conditions.append(expr > 0 if strict else expr >= 0)
+                return
             if strict:
                 fails = "never positive" if _never_positive(expr, positive) else None
                 holds = _always_positive(expr, positive)

@@ -49,6 +49,7 @@ import operator
 from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
+from ..algebra.size import polynomial_terms
 from ..errors import ModelError
 from ..arguments import check_declared_signs, finite_real
 
@@ -56,6 +57,10 @@ from ..arguments import check_declared_signs, finite_real
 #: checked at floating-point values (relative to the sum of the absolute
 #: values of the terms).
 ROUNDING = 1e-9
+
+#: Conditions with more polynomial terms than this are not expanded to
+#: estimate the rounding errors.
+ROUNDING_TERMS = 10_000
 
 
 def holds_to_rounding(condition, values):
@@ -87,7 +92,9 @@ def holds_to_rounding(condition, values):
     point = {v: SR(by_name[str(v)]) for v in symbols}
     try:
         value = finite_real(expr.subs(point), 'condition')
-        terms = expr.expand()
+        # the terms the rounding errors come from (a condition too large to
+        # expand is judged on its value)
+        terms = expr.expand() if polynomial_terms(expr) <= ROUNDING_TERMS else expr
         parts = terms.operands() if terms.operator() is add_vararg else [terms]
         scale = sum(abs(finite_real(SR(t).subs(point), 'term')) for t in parts)
     except ModelError:
