@@ -39,6 +39,14 @@ A mass negative under the declared signs, and one they leave open::
     Traceback (most recent call last):
     ...
     ModelError: values: the values break the condition a - b >= 0 of the model (it is -1 there)
+
+A tensor with zero moments about two axes needs zero products of inertia
+about them::
+
+    sage: A, D = var('A D')
+    sage: MechanicalSystem([RigidBody('p', inertia=[[A, D, 0], [D, 0, 0], [0, 0, A]])], [],
+    ....:                  positive=[A]).conditions()
+    [D == 0]
 """
 import numbers
 import operator
@@ -46,7 +54,7 @@ from itertools import combinations
 
 from sage.symbolic.ring import SR
 
-from ..algebra.conditions import positive_conditions
+from ..algebra.conditions import nonzero_conditions, positive_conditions
 from ..algebra.polynomials import FACTOR_LIMIT
 from ..algebra.size import polynomial_terms
 from ..arguments import is_integer
@@ -208,12 +216,17 @@ class SystemChecks:
                                  f"but {expr} is {fails} under the declared signs "
                                  f"({declared})", entry=entry)
             if not holds:
+                condition = expr > 0 if strict else expr >= 0
                 # positive factors dropped (m*(A*C - D^2) >= 0 is A*C - D^2 >= 0)
                 simple = positive_conditions(expr, positive)
-                if len(simple) == 1 and simple[0].operator() in (operator.gt, operator.lt):
+                if simple is None:          # never positive: expr >= 0 only where it is 0
+                    zero = nonzero_conditions(expr, positive) or []
+                    if len(zero) == 1:      # -A*D^2 >= 0 is D == 0
+                        condition = zero[0].lhs() - zero[0].rhs() == 0
+                elif len(simple) == 1 and simple[0].operator() in (operator.gt, operator.lt):
                     rel = simple[0]
                     expr = (rel.lhs() - rel.rhs()) * (1 if rel.operator() is operator.gt else -1)
-                condition = expr > 0 if strict else expr >= 0
+                    condition = expr > 0 if strict else expr >= 0
                 if not any(bool(c == condition) for c in open_conditions):
                     open_conditions.append(condition)
 
