@@ -70,14 +70,15 @@ def call(function, *args):
 
 
 def required_arguments(function):
-    """The number of positional arguments ``function`` needs (``None`` if
-    it cannot be inspected)."""
+    """The number of positional arguments ``function`` needs -- at least the
+    first optional one, when it has one (``None`` if it cannot be
+    inspected)."""
     try:
         parameters = inspect.signature(function).parameters.values()
     except (TypeError, ValueError):
         return None
-    return sum(1 for p in parameters if p.default is p.empty and
-               p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD))
+    positional = [p for p in parameters if p.kind in (p.POSITIONAL_ONLY, p.POSITIONAL_OR_KEYWORD)]
+    return max(sum(1 for p in positional if p.default is p.empty), min(1, len(positional)))
 
 
 def foreign_errors(function, label):

@@ -109,7 +109,7 @@ REFERENCES:
 from sage.matrix.constructor import matrix, block_matrix, identity_matrix
 from sage.symbolic.ring import SR
 
-from ..arguments import matrix_argument
+from ..arguments import matrix_argument, symbol_arguments
 from ..errors import AnalysisError
 from ..algebra.determinants import fraction_free_det
 from .quadratic_forms import definiteness_conditions, semidefiniteness_conditions
@@ -320,7 +320,7 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
         AnalysisError: kelvin_chetaev: K is 1x1, expected 2x2 like M
     """
     M, D, G, K, P = force_matrices(M, D, G, K, P)
-    positive = list(positive)
+    positive = symbol_arguments(positive, "positive", AnalysisError)
     kinetic = definiteness_conditions(M, positive=positive)
     mechanical = kinetic is not None
     if not mechanical:

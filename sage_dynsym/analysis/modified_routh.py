@@ -82,6 +82,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.function_factory import function as symbolic_function
 from sage.symbolic.ring import SR
 
+from ..arguments import symbol_arguments
 from ..errors import AnalysisError, brief
 from ..symbols import velocity
 from .linear import equations_of_motion
@@ -201,7 +202,7 @@ class ModifiedRouthLyapunov(SageObject):
                    ('coordinates', 'velocities', 'expr', 'lagrange_equations')):
             raise AnalysisError("expected a Routh function (L.routh([cyclic coordinates])) or "
                                 f"a Lagrangian, got {brief(routh)}", entry=_WHAT)
-        self._positive = list(positive)
+        self._positive = symbol_arguments(positive, "positive", AnalysisError, entry=_WHAT)
         q = list(routh.coordinates())
         if not q:
             raise AnalysisError("the Routh function has no positional coordinates",

@@ -83,7 +83,7 @@ def _prefixes(names, default):
     names = default if names is None else names
     if isinstance(names, str):
         names = [n for n in names.replace(',', ' ').split() if n]
-    if len(names) != 2:
+    if not isinstance(names, (list, tuple)) or len(names) != 2:
         raise ModelError(f"expected two prefixes (angular momentum and the other vector), got "
                          f"{brief(names)}", entry="names")
     return [str(n) for n in names]
