@@ -19,6 +19,11 @@ coercion):
   valid ones, listed in the message when one is not;
 - :func:`check_declared_signs` -- values given for parameters declared
   positive must be positive;
+- :func:`expression_argument`, :func:`expression_list`,
+  :func:`matrix_argument` -- a symbolic expression, a list of them, a
+  matrix (never a string, which is not parsed here);
+- :func:`model_argument` -- an object of the kind a function works on
+  (a Lagrangian, a model, an equations record), recognised by its methods;
 - :func:`count_option` -- :func:`count` for a command-line option.
 
 The module loads no Sage (it imports Sage's symbolic ring only when a
@@ -45,7 +50,7 @@ import argparse
 import math
 import numbers
 
-from .errors import ModelError, brief
+from .errors import DynSymError, ModelError, brief
 
 
 def _shown(value):
@@ -378,6 +383,170 @@ def symbol_arguments(values, name, error=ModelError, entry=None):
     return found
 
 
+def _refused(value, name, expected, error, entry, hint=None):
+    return error(f"expected {expected}, got {_shown(value)}" + (f"; {hint}" if hint else ""),
+                 entry=name if entry is None else entry)
+
+
+_NOT_EXPRESSIONS = (str, bytes, bool, list, tuple, dict, set, type(None))
+
+
+def expression_argument(value, name, error=ModelError, entry=None,
+                        expected="a symbolic expression", hint=None):
+    r"""
+    ``value`` as a symbolic expression: numbers, symbolic expressions and
+    polynomials are; ``None``, strings (user text goes through the safe
+    parser, :mod:`sage_dynsym.io.expressions`), containers and objects
+    that are not expressions (a model) are errors naming ``name``, saying
+    what was ``expected`` and, with ``hint``, the call that works.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.arguments import expression_argument
+        sage: expression_argument(3, 'poly'), expression_argument(QQ['x'].gen()^2, 'poly')
+        (3, x^2)
+        sage: expression_argument('x^2', 'poly', expected="a polynomial", hint="use var('x')")
+        Traceback (most recent call last):
+        ...
+        ModelError: poly: expected a polynomial, got 'x^2' (str); use var('x')
+        sage: expression_argument(None, 'expr')
+        Traceback (most recent call last):
+        ...
+        ModelError: expr: expected a symbolic expression, got None (NoneType)
+    """
+    from sage.symbolic.ring import SR
+    if not isinstance(value, _NOT_EXPRESSIONS):
+        try:
+            return SR(value)
+        except (TypeError, ValueError, ArithmeticError):
+            pass
+    raise _refused(value, name, expected, error, entry, hint)
+
+
+def expression_list(values, name, error=ModelError, entry=None,
+                    expected="a list of symbolic expressions", hint=None, names=False):
+    r"""
+    ``values`` (a list, tuple, vector or other iterable that is not a
+    string, a mapping or a single expression) as a list of symbolic
+    expressions; anything else is an error as for
+    :func:`expression_argument`. With ``names=True`` the items are
+    unknowns or variables: symbols, their names, or values of functions
+    such as ``f(x)``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.arguments import expression_list
+        sage: x = var('x')
+        sage: expression_list((x, 1), 'equations')
+        [x, 1]
+        sage: expression_list(x, 'equations')
+        Traceback (most recent call last):
+        ...
+        ModelError: equations: expected a list of symbolic expressions, got x
+        sage: expression_list([x, None], 'equations')
+        Traceback (most recent call last):
+        ...
+        ModelError: equations: expected a list of symbolic expressions, got [x, None] (list)
+        sage: expression_list(['x', function('f')(x)], 'unknowns', names=True)
+        [x, f(x)]
+        sage: expression_list([x, 2], 'unknowns', names=True)
+        Traceback (most recent call last):
+        ...
+        ModelError: unknowns: expected a list of symbolic expressions, got [x, 2] (list)
+    """
+    from sage.symbolic.ring import SR
+    items = None
+    if not isinstance(values, (str, bytes, dict)) and not hasattr(values, 'is_symbol'):
+        try:
+            items = list(values)
+        except TypeError:
+            items = None
+    try:
+        if items is not None:
+            found = [SR.var(v) if names and isinstance(v, str) and v.isidentifier() else
+                     expression_argument(v, name, error, entry) for v in items]
+            if not names or all(_is_unknown(v) for v in found):
+                return found
+    except DynSymError:
+        pass
+    raise _refused(values, name, expected, error, entry, hint)
+
+
+def _is_unknown(value):
+    # a symbol, or the value of a function such as f(x)
+    from sage.symbolic.function import Function
+    return value.is_symbol() or isinstance(value.operator(), Function)
+
+
+def matrix_argument(value, name, error=ModelError, entry=None, square=False,
+                    expected=None, hint=None):
+    r"""
+    ``value`` (a Sage matrix, or a list of rows) as a matrix over the
+    symbolic ring (``square=True``: a square one); anything else is an
+    error naming ``name``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.arguments import matrix_argument
+        sage: matrix_argument([[1, 2], [3, 4]], 'K')
+        [1 2]
+        [3 4]
+        sage: matrix_argument([[1, 2]], 'K', square=True)
+        Traceback (most recent call last):
+        ...
+        ModelError: K: expected a square matrix, got a 1x2 matrix
+        sage: matrix_argument('K', 'K')
+        Traceback (most recent call last):
+        ...
+        ModelError: K: expected a matrix (or a list of rows), got 'K' (str)
+    """
+    from sage.matrix.constructor import matrix
+    from sage.structure.element import Matrix
+    from sage.symbolic.ring import SR
+    expected = expected or f"a {'square ' if square else ''}matrix (or a list of rows)"
+    M = None
+    if isinstance(value, Matrix):
+        M = value
+    elif isinstance(value, (list, tuple)) and value and \
+            all(isinstance(r, (list, tuple)) or hasattr(r, 'list') for r in value):
+        try:
+            M = matrix(SR, [list(r) for r in value])
+        except (TypeError, ValueError, ArithmeticError):
+            M = None
+    if M is None:
+        raise _refused(value, name, expected, error, entry, hint)
+    if square and not M.is_square():
+        raise error(f"expected a square matrix, got a {M.nrows()}x{M.ncols()} matrix",
+                    entry=name if entry is None else entry)
+    return M
+
+
+def model_argument(value, methods, name, expected, error=ModelError, entry=None, hint=None):
+    r"""
+    ``value`` if it has the methods ``methods`` (names) -- how a function
+    recognises the kind of object it works on (a Lagrangian, a model, a
+    Lie--Poisson system) without asking for its class --, else an error
+    naming ``name``, saying what was ``expected`` and, with ``hint``, the
+    call that works.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.arguments import model_argument
+        sage: from sage_dynsym import Lagrangian
+        sage: L = Lagrangian(var('dx')^2/2, [var('x')])
+        sage: model_argument(L, ['coordinates', 'routh'], 'lagrangian', "a Lagrangian") is L
+        True
+        sage: model_argument(42, ['coordinates'], 'lagrangian', "a Lagrangian",
+        ....:                hint="build one with Lagrangian(expr, coordinates)")
+        Traceback (most recent call last):
+        ...
+        ModelError: lagrangian: expected a Lagrangian, got 42; build one with Lagrangian(expr, coordinates)
+    """
+    if not all(callable(getattr(value, m, None)) for m in methods):
+        raise _refused(value, name, expected, error, entry, hint)
+    return value
+
+
 def check_declared_signs(values, positive, name="values", error=ModelError):
     r"""
     Check that the numbers in ``values`` (a dict, symbols or names as keys)
@@ -398,15 +567,20 @@ def check_declared_signs(values, positive, name="values", error=ModelError):
         Traceback (most recent call last):
         ...
         ModelError: fixed: m is declared positive, got 0
+        sage: check_declared_signs({m: SR(-1)}, [m])
+        Traceback (most recent call last):
+        ...
+        ModelError: values: m is declared positive, got -1
+        sage: check_declared_signs({m: lambda x: x, l: -l}, [m, l])
     """
     declared = {str(p) for p in positive}
     if not declared or not isinstance(values, dict):
         return
     for key, value in values.items():
         key_name = _symbol_name(key)
-        if key_name not in declared or isinstance(value, (str, bytes, bool)) or callable(value):
+        if key_name not in declared or isinstance(value, (str, bytes, bool)):
             continue
-        try:
+        try:        # a Sage number, callable as symbolic expressions are, counts
             number = finite_real(value, key_name)
         except ModelError:
             continue            # not a number: the caller's own checks say so

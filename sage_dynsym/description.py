@@ -42,6 +42,7 @@ import sys
 
 import yaml
 
+from .arguments import flag, model_argument
 from .errors import DescriptionError, DynSymError, brief
 from .io.expressions import ExpressionParser
 from .io.fields import MAX_RESULT_LENGTH, title  # noqa: F401
@@ -274,7 +275,15 @@ def save(model, path, results=True):
         Traceback (most recent call last):
         ...
         DescriptionError: /nonexistent/folder/c.yaml: cannot write the file: No such file or directory
+        sage: save('c.yaml', C)
+        Traceback (most recent call last):
+        ...
+        DescriptionError: model: expected a model (a mechanical system, a circuit, a Lie-Poisson system, ...), got 'c.yaml' (str); the call is save(model, path)
     """
+    model_argument(model, ('to_dict', 'results'), "model", "a model (a mechanical system, a "
+                   "circuit, a Lie-Poisson system, ...)", error=DescriptionError,
+                   hint="the call is save(model, path)")
+    flag(results, "results", error=DescriptionError)
     data = model.to_dict()
     if results:
         data['results'] = model_results(model)

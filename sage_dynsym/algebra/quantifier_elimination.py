@@ -50,6 +50,7 @@ from sage.rings.integer_ring import ZZ
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_list
 from ..errors import AnalysisError
 from .conditions import simplify_conjunction
 from .translation import Translation
@@ -102,8 +103,9 @@ def exists(quantified, conditions, positive=(), timeout=QEPCAD_TIMEOUT):
         sage: exists([l], [a*l - 1 > 0, l > 0], positive=[])   # QEPCAD
         [[a > 0]]
     """
-    quantified = [SR(v) for v in quantified]
-    parts = [_relation_parts(c) for c in conditions]
+    quantified = expression_list(quantified, "quantified", AnalysisError, names=True)
+    parts = [_relation_parts(c) for c in expression_list(
+        conditions, "conditions", AnalysisError, expected="a list of relations such as a > 0")]
     qnames = {str(v) for v in quantified}
     involved = [(e, op) for e, op in parts if any(str(v) in qnames for v in e.variables())]
     outside = [(e, op) for e, op in parts if (e, op) not in involved]

@@ -84,6 +84,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.constants import pi
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_list
 from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
@@ -610,9 +611,10 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         Solution {x: sqrt(1/2)*sqrt(c), y: sqrt(1/2)*sqrt(c)} (dimension 0)
         Solution {x: -sqrt(1/2)*sqrt(c), y: -sqrt(1/2)*sqrt(c)} (dimension 0)
     """
-    unknowns = [SR(u) for u in unknowns]
-    equations = [SR(e) for e in equations]
-    nonzero = [SR(e) for e in nonzero]
+    unknowns = expression_list(unknowns, "unknowns", AnalysisError, names=True)
+    equations = expression_list(equations, "equations", AnalysisError,
+                                expected="a list of equations (symbolic expressions)")
+    nonzero = expression_list(nonzero, "nonzero", AnalysisError)
     _log(f"translating {len(equations)} equations in {len(unknowns)} unknowns")
     try:
         T = Translation(equations, unknowns, extra=list(nonzero) + [SR(e) for e in extra])

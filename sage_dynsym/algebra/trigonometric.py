@@ -46,6 +46,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_argument
 from ..errors import AnalysisError
 
 _ZERO, _ONE = SR(0), SR(1)
@@ -973,8 +974,12 @@ def trig_rational_simplify(expr, strict=False):
         Traceback (most recent call last):
         ...
         NotPolynomial: the fraction has more than 2000 terms
+        sage: trig_rational_simplify('sin(x)^2')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: expr: expected a symbolic expression, got 'sin(x)^2' (str)
     """
-    expr = SR(expr)
+    expr = expression_argument(expr, "expr", AnalysisError)
     original = expr
     try:
         ring = TrigPolynomialRing.for_expressions([expr], fractions=True)

@@ -26,7 +26,8 @@ import random
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError
+from ..arguments import expression_argument
+from ..errors import AnalysisError, brief
 from ..algebra.conditions import region_holds
 from ..algebra.radicals import roots_in_radicals
 
@@ -85,8 +86,20 @@ def critical_values(region, boundaries, parameter, positive=(), values=None, sam
         Traceback (most recent call last):
         ...
         AnalysisError: critical_values: give a value to k in values= (not declared positive)
+        sage: critical_values([[k - p > 0]], {'divergence': [k - p == 0]}, 'p')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: critical_values: expected a parameter (a symbol), got 'p' (str)
+        sage: critical_values([[k - p > 0]], {'divergence': [k - p == 0]}, p, values=[1])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: critical_values: values= must be a dict {parameter: number}, got [1]
     """
-    parameter = SR(parameter)
+    parameter = expression_argument(parameter, "critical_values", AnalysisError,
+                                    expected="a parameter (a symbol)")
+    if not isinstance(values, (dict, type(None))):
+        raise AnalysisError(f"values= must be a dict {{parameter: number}}, got {brief(values)}",
+                            entry="critical_values")
     symbols = set()
     for alt in region:
         for r in alt:

@@ -47,6 +47,7 @@ from sage.matrix.constructor import matrix
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..arguments import symbol_arguments
 from ..errors import AnalysisError
 from .critical import critical_values
 from ..algebra.determinants import fraction_free_det
@@ -91,7 +92,7 @@ class DampingLimit(SageObject):
         if D0.is_zero():
             raise AnalysisError("the shape of the damping matrix is zero", entry="damping")
         self._D0 = D0
-        self._positive = list(positive)
+        self._positive = symbol_arguments(positive, "positive", AnalysisError)
         eps = SR.symbol()
         lam = SR.symbol()
         chi = fraction_free_det(M * lam ** 2 + (eps * D0 + 2 * G) * lam + K + P,

@@ -85,6 +85,7 @@ from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_list
 from ..errors import AnalysisError
 
 
@@ -308,12 +309,12 @@ def equilibrium_family(rhs, variables, eliminate, use_groebner=True):
         sage: fam.equations()
         [c1^2 - 1, c2^2 - 1]
     """
-    variables = [SR(v) for v in variables]
+    variables = expression_list(variables, "variables", AnalysisError, names=True)
     eqs = []
-    for e in rhs:
-        e = SR(e)
+    for e in expression_list(rhs, "rhs", AnalysisError,
+                             expected="a list of right-hand sides or equations"):
         eqs.append(e.lhs() - e.rhs() if e.is_relational() else e)
-    todo = [SR(v) for v in eliminate]
+    todo = expression_list(eliminate, "eliminate", AnalysisError, names=True)
     eqs = [e for e in eqs if not e.is_zero()]
     subs, nonzero = [], []
     while todo:

@@ -83,7 +83,8 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 from sage.structure.element import Element
 
-from ..errors import AnalysisError
+from ..arguments import expression_argument
+from ..errors import AnalysisError, brief
 from ..algebra.conditions import Unexpanded, reduce_conditions, conditions_as_expressions
 # simplify_conditions and FACTOR_LIMIT moved to the algebra; their old place still serves them
 from ..algebra.conditions import simplify_conditions  # noqa: F401
@@ -137,7 +138,7 @@ def polynomial_coefficients(poly, var):
         ...
         AnalysisError: characteristic polynomial: expected a polynomial of degree at least 1 in lam, got m
     """
-    name = str(var)
+    poly, name = polynomial_arguments(poly, var)
     parent = poly.parent() if isinstance(poly, Element) else None
     if is_polynomial_ring(parent) and name in parent.variable_names():
         names = parent.variable_names()
@@ -190,6 +191,44 @@ def polynomial_coefficients(poly, var):
                             f"{name}, got {poly}", entry="characteristic polynomial")
     coeffs = [ring(by_power.get(n - i, 0)) for i in range(n + 1)]
     return coeffs, den
+
+
+def polynomial_arguments(poly, var):
+    r"""
+    The arguments ``(poly, var)`` of the functions of a characteristic
+    polynomial, checked: ``poly`` a symbolic expression or an element of a
+    polynomial ring, ``var`` a symbolic variable, a generator or a name;
+    returns ``poly`` (a symbolic expression unless it is a ring element)
+    and the name of ``var``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.hurwitz import polynomial_arguments
+        sage: lam = var('lam')
+        sage: polynomial_arguments(lam^2 + 1, lam)
+        (lam^2 + 1, 'lam')
+        sage: polynomial_arguments(lam^2 + 1, 42)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: var: expected the variable of the polynomial (a symbolic variable or its name), got 42
+        sage: polynomial_arguments('lam^2 + 1', lam)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: poly: expected a polynomial (a symbolic expression or an element of a polynomial ring), got 'lam^2 + 1' (str); write it with var('lam'), e.g. lam^2 + 1
+    """
+    name = str(var)
+    is_variable = isinstance(var, str) or (callable(getattr(var, 'is_symbol', None)) and
+                                           var.is_symbol()) or (
+        callable(getattr(var, 'is_gen', None)) and var.is_gen())
+    if not is_variable or not name.isidentifier():
+        raise AnalysisError("expected the variable of the polynomial (a symbolic variable or "
+                            f"its name), got {brief(var)}", entry="var")
+    if isinstance(poly, Element) and is_polynomial_ring(poly.parent()):
+        return poly, name
+    poly = expression_argument(poly, "poly", AnalysisError, expected="a polynomial (a symbolic "
+                               "expression or an element of a polynomial ring)",
+                               hint=f"write it with var('{name}'), e.g. {name}^2 + 1")
+    return poly, name
 
 
 def _normalized_coefficients(poly, var):

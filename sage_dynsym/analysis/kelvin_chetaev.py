@@ -109,6 +109,7 @@ REFERENCES:
 from sage.matrix.constructor import matrix, block_matrix, identity_matrix
 from sage.symbolic.ring import SR
 
+from ..arguments import matrix_argument, symbol_arguments
 from ..errors import AnalysisError
 from ..algebra.determinants import fraction_free_det
 from .quadratic_forms import definiteness_conditions, semidefiniteness_conditions
@@ -137,9 +138,13 @@ def force_matrices(M, D, G, K, P=None):
         ...
         AnalysisError: kelvin_chetaev: K is 1x1, expected 2x2 like M
     """
-    M, D, G, K = (matrix(SR, X) for X in (M, D, G, K))
+    M, D, G, K = (matrix_argument(X, name, AnalysisError, entry="kelvin_chetaev",
+                                  expected=f"the matrix {name} (a Sage matrix or a list of rows)",
+                                  hint="lin.kelvin_chetaev() takes them from a linearization")
+                  .change_ring(SR) for X, name in ((M, 'M'), (D, 'D'), (G, 'G'), (K, 'K')))
     n = M.nrows()
-    P = matrix(SR, n, n) if P is None else matrix(SR, P)
+    P = matrix(SR, n, n) if P is None else \
+        matrix_argument(P, 'P', AnalysisError, entry="kelvin_chetaev").change_ring(SR)
     for name, X in (('M', M), ('D', D), ('G', G), ('K', K), ('P', P)):
         if X.nrows() != n or X.ncols() != n:
             raise AnalysisError(f"{name} is {X.nrows()}x{X.ncols()}, expected {n}x{n} "
@@ -315,7 +320,7 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
         AnalysisError: kelvin_chetaev: K is 1x1, expected 2x2 like M
     """
     M, D, G, K, P = force_matrices(M, D, G, K, P)
-    positive = list(positive)
+    positive = symbol_arguments(positive, "positive", AnalysisError)
     kinetic = definiteness_conditions(M, positive=positive)
     mechanical = kinetic is not None
     if not mechanical:

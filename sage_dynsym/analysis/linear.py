@@ -53,7 +53,8 @@ from sage.matrix.constructor import matrix, identity_matrix
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError
+from ..arguments import expression_argument, expression_list, matrix_argument
+from ..errors import AnalysisError, brief
 from ..algebra.determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
 from ..algebra.solving import normalize
@@ -155,16 +156,27 @@ class LinearSystem(SageObject):
     """
 
     def __init__(self, variables, M=None, S=None, W=None, J=None, B=None, steady_motion=None):
-        self._variables = [SR(v) for v in variables]
+        self._variables = expression_list(variables, "variables", AnalysisError,
+                                          hint="linearize(system, at) builds a linear system")
         self._steady_motion = steady_motion
         n = len(self._variables)
+
+        def square(X, name):
+            X = matrix_argument(X, name, AnalysisError, square=True,
+                                hint="give J= (first order) or M=, S=, W= (second order)")
+            if X.nrows() != n:
+                raise AnalysisError(f"expected a {n}x{n} matrix (one row per variable), got "
+                                    f"{X.nrows()}x{X.ncols()}", entry=name)
+            return X.change_ring(SR)
+
         if J is not None:
             self._order = 1
-            self._J = matrix(SR, J)
-            self._B = identity_matrix(SR, n) if B is None else matrix(SR, B)
+            self._J = square(J, "J")
+            self._B = identity_matrix(SR, n) if B is None else square(B, "B")
         else:
             self._order = 2
-            self._M, self._S, self._W = (matrix(SR, X) for X in (M, S, W))
+            self._M, self._S, self._W = (square(X, name) for X, name in
+                                         ((M, "M"), (S, "S"), (W, "W")))
 
     def _repr_(self):
         vs = ', '.join(map(str, self._variables))
@@ -402,6 +414,8 @@ class LinearSystem(SageObject):
             [d*lam + lam^2 + k       2*g*lam + q]
             [     -2*g*lam - q d*lam + lam^2 + k]
         """
+        lam = expression_argument(lam, "lam", AnalysisError,
+                                  expected="the variable of the polynomial (a symbol)")
         if self._order == 1:
             return self._B * lam - self._J
         return self._M * lam ** 2 + self._S * lam + self._W
@@ -442,7 +456,7 @@ class LinearSystem(SageObject):
             sage: Ls.characteristic_polynomial(var('lam'), positive=[C])
             C*lam + diff(f(v0), v0)
         """
-        det = _fraction_free_det(self.characteristic_matrix(SR(lam)), as_polynomial, positive)
+        det = _fraction_free_det(self.characteristic_matrix(lam), as_polynomial, positive)
         return det if as_polynomial else det.expand()
 
     def force_structure(self):
@@ -660,7 +674,18 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
         motion = steady_linearization(data, at, coordinates, speeds)
         return LinearSystem(motion.coordinates(), M=motion.M(), S=motion.S(), W=motion.W(),
                             steady_motion=motion)
-    at = {SR(k): SR(v) for k, v in at.items()}
+    if data is None:
+        system = expression_list(system, "system", AnalysisError, expected="a model, a "
+                                 "Lagrangian, a Routh function, a Hamiltonian or a list of "
+                                 "right-hand sides", hint="e.g. linearize(model.lagrangian(), "
+                                 "{q: 0})")
+    if not isinstance(at, dict):
+        raise AnalysisError(f"expected the point as a dict {{variable: value}}, got "
+                            f"{brief(at)}", entry="at")
+    at = {SR.var(k) if isinstance(k, str) and k.isidentifier() else
+          expression_argument(k, "at", AnalysisError, expected="variables or their names as keys"):
+          expression_argument(v, f"at[{k}]", AnalysisError, expected="a number or an expression")
+          for k, v in at.items()}
     data = _without_constraints(data)
     if isinstance(data, SecondOrderEquations):
         return _linearize_second_order(data, at)

@@ -82,7 +82,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.function_factory import function as symbolic_function
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError
+from ..arguments import symbol_arguments
+from ..errors import AnalysisError, brief
 from ..symbols import velocity
 from .linear import equations_of_motion
 from ..algebra.radicals import roots_in_radicals
@@ -142,8 +143,14 @@ class ModifiedRouthLyapunov(SageObject):
 
     INPUT:
 
-    - ``routh`` -- a :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`
-    - ``momentum`` -- (default: the first cyclic momentum) the constant `c`
+    - ``routh`` -- a :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`,
+      or a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian` (a system
+      without cyclic coordinates: the Routh function is the Lagrangian
+      itself, and `c = 1`, so `\tilde R = L + \sum_i f_i(q)\dot q_i` and
+      the families are the solutions of the Hamilton--Jacobi equation of
+      `L`)
+    - ``momentum`` -- (default: the first cyclic momentum, or `1` when
+      there is none) the constant `c`
     - ``f`` -- (default: ``function('f')`` for one coordinate, ``f1, f2,
       ...`` for several) the unknown function(s)
     - ``positive`` -- (optional) symbols declared positive, used as
@@ -160,6 +167,19 @@ class ModifiedRouthLyapunov(SageObject):
         -p_phi*f(r)
         sage: TestSuite(MR).run(skip=['_test_pickling'])
 
+    A Lagrangian without cyclic coordinates is its own Routh function: for
+    the pendulum `L = \dot\theta^2/2 + \omega^2\cos\theta` the families
+    are the levels of the energy `\dot\theta^2/2 - \omega^2\cos\theta`::
+
+        sage: theta, dtheta, w = var('theta dtheta omega')
+        sage: P = ModifiedRouthLyapunov(Lagrangian(dtheta^2/2 + w^2*cos(theta), [theta]))
+        sage: P.extended_function()
+        omega^2*cos(theta) + 1/2*dtheta^2 + dtheta*f(theta)
+        sage: P.invariant_manifolds()
+        [dtheta == -sqrt(-2*_C + 2*cos(theta))*omega, dtheta == sqrt(-2*_C + 2*cos(theta))*omega]
+        sage: [diff(m.rhs()^2/2 - w^2*cos(theta), theta) for m in P.invariant_manifolds()]
+        [0, 0]
+
     TESTS::
 
         sage: x, dx = var('x dx')
@@ -167,21 +187,32 @@ class ModifiedRouthLyapunov(SageObject):
         Traceback (most recent call last):
         ...
         AnalysisError: ModifiedRouthLyapunov: the Routh function has no positional coordinates
+        sage: ModifiedRouthLyapunov(Lagrangian(dx^2/2, [x]).hamiltonian())
+        Traceback (most recent call last):
+        ...
+        AnalysisError: ModifiedRouthLyapunov: expected a Routh function (L.routh([cyclic coordinates])) or a Lagrangian, got Hamiltonian ...
+        sage: ModifiedRouthLyapunov(None)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: ModifiedRouthLyapunov: expected a Routh function (L.routh([cyclic coordinates])) or a Lagrangian, got None
     """
 
     def __init__(self, routh, momentum=None, f=None, positive=()):
-        self._positive = list(positive)
+        if not all(callable(getattr(routh, name, None)) for name in
+                   ('coordinates', 'velocities', 'expr', 'lagrange_equations')):
+            raise AnalysisError("expected a Routh function (L.routh([cyclic coordinates])) or "
+                                f"a Lagrangian, got {brief(routh)}", entry=_WHAT)
+        self._positive = symbol_arguments(positive, "positive", AnalysisError, entry=_WHAT)
         q = list(routh.coordinates())
         if not q:
             raise AnalysisError("the Routh function has no positional coordinates",
                                 entry=_WHAT)
-        if momentum is None and not routh.momenta():
-            raise AnalysisError("the Routh function has no cyclic momentum; give momentum=",
-                                entry=_WHAT)
+        momenta = routh.momenta() if callable(getattr(routh, 'momenta', None)) else []
         self._routh = routh
         self._qs, self._dqs = q, list(routh.velocities())
         self._n = len(q)
-        self._c = SR(momentum) if momentum is not None else SR(routh.momenta()[0])
+        # without a cyclic momentum R is L itself and c only scales f: c = 1
+        self._c = SR(momentum) if momentum is not None else SR(momenta[0] if momenta else 1)
         if self._n == 1:
             self._q, self._dq = q[0], self._dqs[0]
             self._f = f if f is not None else symbolic_function('f')
@@ -536,7 +567,15 @@ class ModifiedRouthLyapunov(SageObject):
             sage: L = Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi])
             sage: ModifiedRouthLyapunov(L.routh([phi])).lifted_manifolds()[0][1]
             dphi == p_phi/r^2
+
+        A Lagrangian without cyclic coordinates has nothing to lift::
+
+            sage: x, dx = var('x dx')
+            sage: ModifiedRouthLyapunov(Lagrangian(dx^2/2 - x^2/2, [x])).lifted_manifolds()
+            [[dx == -sqrt(-x^2 - 2*_C)], [dx == sqrt(-x^2 - 2*_C)]]
         """
+        if not callable(getattr(self._routh, 'momenta', None)):     # a Lagrangian
+            return [family if self._n > 1 else [family] for family in self.invariant_manifolds()]
         L = lagrangian if lagrangian is not None else self._routh.lagrangian()
         cyc = self._routh.cyclic_coordinates()
         momenta = self._routh.momenta()

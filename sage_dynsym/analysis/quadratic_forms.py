@@ -26,6 +26,7 @@ from sage.misc.misc_c import prod
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_argument, expression_list, matrix_argument
 from ..errors import AnalysisError
 from ..algebra.polynomials import positive_polynomial
 from ..algebra.conditions import positive_conditions_all, nonzero_conditions, conjunction
@@ -62,10 +63,8 @@ def form_matrix(form, variables):
 
 def _symmetric(form_or_matrix, variables):
     if hasattr(form_or_matrix, 'nrows') or isinstance(form_or_matrix, (list, tuple)):
-        A = matrix(SR, form_or_matrix)
-        if not A.is_square():
-            raise AnalysisError(f"expected a square matrix, got {A.nrows()}x{A.ncols()}",
-                                entry="quadratic form")
+        A = matrix_argument(form_or_matrix, "quadratic form", AnalysisError,
+                            square=True).change_ring(SR)
         if not all(bool((A[i, j] - A[j, i]).expand() == 0)
                    for i in range(A.nrows()) for j in range(i)):
             raise AnalysisError("the matrix of a quadratic form must be symmetric; "
@@ -75,7 +74,9 @@ def _symmetric(form_or_matrix, variables):
     if variables is None:
         raise AnalysisError("a quadratic form given as an expression needs its "
                             "variables", entry="quadratic form")
-    return form_matrix(form_or_matrix, variables)
+    return form_matrix(expression_argument(form_or_matrix, "quadratic form", AnalysisError,
+                                           expected="a quadratic form or its matrix"),
+                       variables)
 
 
 def definiteness_conditions(quadratic_form_or_matrix, variables=None, sign='positive',
@@ -332,12 +333,14 @@ def restrict_to_subspace(quadratic_form_or_matrix, constraints, variables,
         sage: restrict_to_subspace(x^2 + y^2, [a*x], [x, y], with_conditions=True)
         (y^2, [y], [a != 0])
     """
-    variables = [SR(v) for v in variables]
+    variables = expression_list(variables, "variables", AnalysisError, names=True)
     A = _symmetric(quadratic_form_or_matrix, variables)
     if hasattr(constraints, 'nrows'):
         rows = [list(r) for r in matrix(SR, constraints).rows()]
     else:
-        rows = [[SR(c).diff(v) for v in variables] for c in constraints]
+        rows = [[c.diff(v) for v in variables] for c in expression_list(
+            constraints, "constraints", AnalysisError,
+            expected="a list of linear forms (or their matrix)")]
     sol, conditions = {}, []
     rows = [[normalize(e) for e in r] for r in rows]
     for r in range(len(rows)):

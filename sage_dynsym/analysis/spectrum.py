@@ -92,6 +92,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..algebra.polynomials import parameter_ring, to_ring, to_sr
 from ..algebra.conditions import nonzero_conditions
+from .hurwitz import polynomial_arguments
 from .hurwitz import (lienard_chipart_conditions, real_negative_roots_conditions,
                       hurwitz_determinants)
 from ..algebra.regions import simplify_region
@@ -177,8 +178,9 @@ class SpectrumRegions(SageObject):
     """
 
     def __init__(self, poly, var, positive=(), matrix=None):
+        poly, name = polynomial_arguments(poly, var)
         self._poly = SR(poly)
-        self._var = SR(var)
+        self._var = SR.var(name)
         atoms = _Atoms([self._poly], self._var, positive)
         self._atoms = atoms
         positive = atoms.positive

@@ -99,8 +99,8 @@ from sage.matrix.constructor import matrix
 from sage.misc.latex import latex
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError, DynSymError
-from ..arguments import known_symbols, symbol_arguments
+from ..errors import AnalysisError, DynSymError, brief
+from ..arguments import expression_list, known_symbols, symbol_arguments
 from ..algebra.conditions import positive_conditions_all, conjunction, simplify_conjunction
 from .kelvin_chetaev import StabilityVerdict
 from .motion_solution import MotionSolution, first_approximation_cases, combined_verdict
@@ -723,6 +723,10 @@ class StationarySolutions(SolutionList):
     """
 
     def __init__(self, problem, solutions):
+        if not isinstance(problem, StationaryProblem):
+            raise AnalysisError(f"expected a stationary problem, got {brief(problem)}; the "
+                                "solutions come from stationary_solutions(integrals, variables)",
+                                entry="StationarySolutions")
         self._problem = problem
         self._set = solutions
         self._solutions = [StationarySolution(problem, s) for s in solutions]
@@ -1023,8 +1027,9 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
         ...
         AnalysisError: solve_exactly: the equations are not algebraic in x (x occurs both inside and outside trigonometric functions) and Maxima's solve could not solve them: [-x*sin(x) + cos(x)]
     """
-    integrals = [SR(V) for V in integrals]
-    variables = [SR(x) for x in variables]
+    integrals = expression_list(integrals, "integrals", AnalysisError,
+                                expected="a list of integrals (symbolic expressions)")
+    variables = expression_list(variables, "variables", AnalysisError, names=True)
     if not integrals:
         raise AnalysisError("at least one integral is needed", entry="stationary_solutions")
     if equations is not None:

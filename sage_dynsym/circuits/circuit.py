@@ -48,6 +48,7 @@ from sage.symbolic.ring import SR
 from ..errors import CircuitError
 from ..dynamics.model import Model
 from ..numerics.methods import NumericalMethods
+from ..numerics.values import check_model_values
 from .elements.windings import inductance_conditions
 from .format import read_circuit, circuit_mapping, circuit_results, result_symbols
 from .forms import circuit_forms
@@ -375,11 +376,16 @@ class Circuit(StateEquations, NumericalMethods, Model):
             Traceback (most recent call last):
             ...
             CircuitError: subs: i1 is not a parameter or element value of the circuit; they are: E1, R1, L1, C1
-            sage: C.subs({'R1': 0})
+            sage: C.subs({'R1': -2})
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: R1 is declared positive, got -2
+            sage: Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 0, 'C1']]).subs({'R1': 0})
             Traceback (most recent call last):
             ...
             CircuitError: branches[1].value: a resistance of 0 is a short circuit: join its two nodes into one instead
         """
+        check_model_values(self, values, entry="subs")
         entries, parameters, positive = self._netlist.subs(values)
         return Circuit(entries, name=self._name, parameters=parameters, positive=positive)
 
@@ -457,6 +463,18 @@ class Circuit(StateEquations, NumericalMethods, Model):
             sage: L.lagrange_equations()
             [L1*ddq1 + M*ddq2 - E1, M*ddq1 + L2*ddq2 + R2*dq2]
 
+        The Lagrangian carries the declared signs of the element values; those
+        of the sources, inputs that the analysis switches off, stay with the
+        circuit::
+
+            sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 0, 'C1']], positive=['E1', 'R1'])
+            sage: L = C.lagrangian(); L.positive_parameters()
+            [R1]
+            sage: L.subs(C.source_values_off()).numerical_rhs({'R1': -1, 'C1': 1})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: R1 is declared positive, got -1
+
         TESTS::
 
             sage: Circuit([[1, 2, 'f1'], [2, 1, 'C1']]).lagrangian()
@@ -477,7 +495,11 @@ class Circuit(StateEquations, NumericalMethods, Model):
             raise CircuitError(f"unknown method {method!r}; expected \"loop\" or \"node\"")
         return Lagrangian(A.kinetic_energy() - A.potential_energy(), A.coordinates(),
                           dissipation=A.dissipation(), forces=A.source_vector(),
-                          name=f"{self._name or 'circuit'} ({method} method)")
+                          name=f"{self._name or 'circuit'} ({method} method)",
+                          # the sources are inputs, switched off for the free
+                          # circuit: their declared signs stay with the circuit
+                          positive=[p for p in self.positive_parameters()
+                                    if p not in self.source_values_off()])
 
     @cached_method
     def brayton_moser(self):

@@ -181,6 +181,9 @@ def result_symbols(circuit, results):
         ...
         DescriptionError: results.state_variables: expected the state variables ['i1', 'u2'] of the circuit, got ['i2']
     """
+    if not isinstance(results, dict):
+        raise DescriptionError(f"expected the results: section (a mapping), got {brief(results)}",
+                               entry='results')
     q = [str(v) for v in circuit.lagrangian().coordinates()] if 'lagrangian' in results else []
     states = results.get('state_variables', [])
     expected = [str(v) for v, _ in circuit.state_variables()] if states else []

@@ -19,7 +19,7 @@ EXAMPLES::
 """
 from sage.symbolic.ring import SR
 
-from ..errors import CircuitError
+from ..errors import CircuitError, brief
 from ..symbols import CIRCUIT_VARIABLES, sage_numbers
 from .elements import parse_entries, is_coupling_entry
 from .elements.windings import check_couplings
@@ -66,6 +66,9 @@ class Netlist:
     """
 
     def __init__(self, entries, parameters=(), positive=()):
+        if not isinstance(entries, (list, tuple)):
+            raise CircuitError(f"expected a list of branches such as [1, 2, 'R1'] (and "
+                               f"couplings), got {brief(entries)}", entry="branches")
         entries = list(entries)
         self.parameters = tuple(str(p) for p in parameters)
         self.branches, self.couplings = parse_entries(entries, self.parameters)

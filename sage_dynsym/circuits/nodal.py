@@ -126,7 +126,7 @@ from sage.rings.real_mpfr import RR
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.symbolic.ring import SR
 
-from ..errors import CircuitError
+from ..errors import CircuitError, brief
 from ..symbols import t
 from .elements.kinds import ELEMENTS, Capacitor, Inductor, state_symbols
 from .elements.windings import winding_matrix
@@ -215,6 +215,9 @@ class NodalAnalysis:
     """
 
     def __init__(self, circuit):
+        if not callable(getattr(circuit, '_graph', None)):
+            raise CircuitError(f"expected a circuit, got {brief(circuit)}; the call is "
+                               "Circuit(branches).nodal_analysis()", entry="circuit")
         self._circuit = circuit
         cg = circuit._graph()
         self._branches = br = cg.branches

@@ -12,7 +12,8 @@ EXAMPLES::
     sage: poisson_bracket(p, q, [q], [p])
     -1
 """
-from sage.symbolic.ring import SR
+
+from ..arguments import expression_argument
 
 
 def poisson_bracket(f, g, coordinates, momenta):
@@ -27,6 +28,6 @@ def poisson_bracket(f, g, coordinates, momenta):
         sage: poisson_bracket(q, p, [q], [p]), poisson_bracket(q^2, p^2, [q], [p])
         (1, 4*p*q)
     """
-    f, g = SR(f), SR(g)
+    f, g = expression_argument(f, "f"), expression_argument(g, "g")
     return sum(f.diff(q) * g.diff(p) - f.diff(p) * g.diff(q)
                for q, p in zip(coordinates, momenta))

@@ -29,6 +29,9 @@ EXAMPLES: the spherical pendulum, equations (9) of Example 1 of
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_argument, expression_list
+from ..errors import ModelError, brief
+
 # above this many characters the representation is a summary
 _SHOWN_CHARACTERS = 10000
 
@@ -50,8 +53,15 @@ class CompactEquations(SageObject):
     """
 
     def __init__(self, subexpressions, equations):
-        self._subexpressions = list(subexpressions)
-        self._equations = list(equations)
+        pairs = subexpressions if isinstance(subexpressions, (list, tuple)) else None
+        if pairs is None or not all(isinstance(p, (list, tuple)) and len(p) == 2 for p in pairs):
+            raise ModelError(f"expected a list of pairs (symbol, expression), got "
+                             f"{brief(subexpressions)}; equations_cse(equations) makes them",
+                             entry="subexpressions")
+        self._subexpressions = [(expression_argument(s, "subexpressions"),
+                                 expression_argument(e, "subexpressions"))
+                                for s, e in pairs]
+        self._equations = expression_list(equations, "equations")
 
     def subexpressions(self):
         r"""
@@ -161,7 +171,7 @@ def equations_cse(equations, reserved_names=()):
         sage: equations_cse([]).equations(), equations_cse([SR(0), x]).equations()
         ([], [0, x])
     """
-    equations = [SR(e) for e in equations]
+    equations = expression_list(equations, "equations")
     taken = {str(name) for name in reserved_names}
     for e in equations:
         taken.update(str(v) for v in e.variables())

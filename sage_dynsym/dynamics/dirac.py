@@ -67,7 +67,9 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_list, model_argument
 from ..errors import ModelError
+from .natural_form import LAGRANGIAN_METHODS, LAGRANGIAN_HINT
 from .brackets import poisson_bracket
 
 
@@ -120,6 +122,9 @@ class DiracConstraints(SageObject):
     """
 
     def __init__(self, lagrangian, momenta, max_stages=10):
+        model_argument(lagrangian, LAGRANGIAN_METHODS, "lagrangian", "a Lagrangian",
+                       hint=LAGRANGIAN_HINT)
+        momenta = expression_list(momenta, "momenta", expected="a list of momentum symbols")
         if not lagrangian.is_natural():
             raise ModelError("Dirac's scheme is implemented for Lagrangians at most "
                              "quadratic in the velocities", entry="lagrangian")

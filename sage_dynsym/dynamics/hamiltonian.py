@@ -32,13 +32,14 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..arguments import model_argument
+from ..errors import ModelError, brief
 from ..symbols import momentum, t as _t
 from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from ..analysis.motion import FirstOrderEquations
 from ..numerics.methods import NumericalMethods
 from .brackets import poisson_bracket
-from .natural_form import Elimination
+from .natural_form import Elimination, LAGRANGIAN_METHODS, LAGRANGIAN_HINT
 
 
 class Hamiltonian(SageObject, NumericalMethods):
@@ -77,7 +78,8 @@ class Hamiltonian(SageObject, NumericalMethods):
     """
 
     def __init__(self, lagrangian, momenta=None):
-        self._lagrangian = lagrangian
+        self._lagrangian = model_argument(lagrangian, LAGRANGIAN_METHODS, "lagrangian",
+                                          "a Lagrangian", hint=LAGRANGIAN_HINT)
         self._coordinates = lagrangian.coordinates()
         if momenta is None:
             momenta = [momentum(q) for q in self._coordinates]
@@ -242,6 +244,26 @@ class Hamiltonian(SageObject, NumericalMethods):
         """
         return self._expr
 
+    def positive_parameters(self):
+        r"""
+        The parameters declared positive (those of the Lagrangian): the
+        values given to :meth:`subs`, :meth:`numerical_rhs` and
+        :meth:`simulate` must respect them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: H = Lagrangian(m*dx^2/2 - k*x^2/2, [x], positive=[m]).hamiltonian()
+            sage: H.positive_parameters()
+            [m]
+            sage: H.numerical_rhs({m: -1, k: 1})
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -1
+        """
+        return self._lagrangian.positive_parameters()
+
     def subs(self, values):
         r"""
         The Hamiltonian of the Lagrangian with the parameter values
@@ -255,6 +277,9 @@ class Hamiltonian(SageObject, NumericalMethods):
             sage: H.subs({m: 2, k: 0.5}).expr()
             1/4*p_x^2 + 0.250000000000000*x^2
         """
+        if not isinstance(values, dict):
+            raise ModelError(f"expected a dict {{parameter: value}}, got {brief(values)}",
+                             entry="subs")
         return Hamiltonian(self._lagrangian.subs(values), self._momenta)
 
     def coordinates(self):

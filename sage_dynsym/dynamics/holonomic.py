@@ -26,7 +26,8 @@ from sage.misc.cachefunc import cached_method
 from sage.symbolic.expression import Expression
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..arguments import expression_argument
+from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, time_derivative, t, constraint_multipliers, momentum
 from .natural_form import symbol_list, is_singular, has_full_row_rank
 
@@ -373,9 +374,18 @@ class HolonomicConstraints:
             Traceback (most recent call last):
             ...
             ModelError: parametrization: the coordinate y is neither independent nor given
+            sage: L.reduce([th], [l*sin(th), -l*cos(th)])
+            Traceback (most recent call last):
+            ...
+            ModelError: parametrization: expected a dict {coordinate: expression in the independent ones}, got [l*sin(theta), -l*cos(theta)]
         """
         independent = symbol_list(independent, "independent")
-        sub = {SR(k): SR(v) for k, v in parametrization.items()}
+        if not isinstance(parametrization, dict):
+            raise ModelError(f"expected a dict {{coordinate: expression in the independent "
+                             f"ones}}, got {brief(parametrization)}", entry="parametrization")
+        sub = {SR.var(k) if isinstance(k, str) and k.isidentifier() else
+               expression_argument(k, "parametrization"): expression_argument(v, "parametrization")
+               for k, v in parametrization.items()}
         n, m = len(self._coordinates), len(self._constraints)
         if len(independent) != n - m:
             raise ModelError(f"expected {n - m} independent coordinate(s) ({n} coordinates, "

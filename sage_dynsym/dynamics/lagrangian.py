@@ -124,9 +124,11 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..arguments import expression_argument, expression_list, symbol_arguments
+from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, momentum, t, sage_numbers
 from ..numerics.methods import NumericalMethods
+from ..numerics.values import check_model_values
 from .holonomic import HolonomicConstraints
 from .lagrange_equations import LagrangeEquations
 from .legendre import LegendreTransform
@@ -168,6 +170,10 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     - ``constraints`` -- (default: none) holonomic constraints `f_j(q, t)`,
       each meaning `f_j = 0` (or equations ``a == b``, meaning `a - b = 0`),
       independent at a generic point (see the module documentation)
+    - ``positive`` -- (optional) the parameters declared positive (those
+      of the model it comes from): values given to :meth:`subs`,
+      :meth:`numerical_rhs` and :meth:`simulate` must respect them (see
+      :meth:`positive_parameters`)
 
     EXAMPLES::
 
@@ -217,8 +223,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
                  forces=None, name=None, decomposition=None, equation_builder=None,
-                 constraints=()):
+                 constraints=(), positive=()):
         self._coordinates = symbol_list(coordinates, "coordinates")
+        self._positive = symbol_arguments(positive, 'positive')
         if velocities is None:
             velocities = [velocity(q) for q in self._coordinates]
         self._velocities = symbol_list(velocities, "velocities")
@@ -232,7 +239,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             self._structure = (A, A1, SR(A0))
         # with a decomposition, L itself is formed only when asked for (the
         # equations of a large model do not need it)
-        self._expression = None if expr is None and decomposition is not None else SR(expr)
+        self._expression = None if expr is None and decomposition is not None else \
+            expression_argument(expr, "expr", expected="the Lagrangian as a symbolic expression",
+                                hint="e.g. Lagrangian(m*dx^2/2 - k*x^2/2, [x])")
         self._dissipation = SR(dissipation)
         n = len(self._coordinates)
         if forces is None:
@@ -342,6 +351,35 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         """
         return self._name
 
+    def positive_parameters(self):
+        r"""
+        The parameters declared positive (``positive=``, or the declared
+        signs of the model the Lagrangian comes from). They are not part of
+        the Lagrangian's value (``==``), but the values given to
+        :meth:`subs`, :meth:`numerical_rhs` and :meth:`simulate` must
+        respect them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
+            sage: L.positive_parameters()
+            [m, l, g]
+            sage: values = {'m': 1, 'l': 1, 'g': 9.81}
+            sage: L.simulate(dict(values, m=-1), {'theta': 1, 'psi': 0, 'dtheta': 0, 'dpsi': 0}, 1)
+            Traceback (most recent call last):
+            ...
+            ModelError: values: m is declared positive, got -1
+            sage: L.subs(g=-9.81)
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: g is declared positive, got -9.81000000000000
+            sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
+            ([m, l], [m, l, g])
+        """
+        return list(self._positive)
+
     # ------------------------------------------------------------------
     # value semantics
 
@@ -408,7 +446,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
                 (self._expr, self._coordinates, self._velocities,
                  {'dissipation': self._dissipation, 'forces': self._forces,
                   'name': self._name, 'decomposition': self._structure,
-                  'constraints': self._constraints}))
+                  'constraints': self._constraints, 'positive': self._positive}))
 
     def _repr_(self):
         coords = ", ".join(str(q) for q in self._coordinates)
@@ -424,7 +462,8 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         A Lagrangian of the same kind with a new expression (and options).
         """
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
-                       forces=self._forces, name=self._name, constraints=self._constraints)
+                       forces=self._forces, name=self._name, constraints=self._constraints,
+                       positive=self._positive)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
         return Lagrangian(expr, coordinates, **options)
@@ -432,7 +471,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     def subs(self, *args, **kwds):
         r"""
         Substitute values for parameters (in `L`, `R`, `Q` and the
-        constraints).
+        constraints). A number given for a parameter declared positive
+        (:meth:`positive_parameters`) must be positive; the substituted
+        parameters leave that list.
 
         Coordinates and velocities must not be substituted: that would change
         the dynamics in a way this method cannot track. Python floats become
@@ -455,18 +496,28 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             Traceback (most recent call last):
             ...
             ModelError: cannot substitute for the coordinate or velocity x
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({'k': 2}, m == 1)
+            Lagrangian in coordinates (x) : 1/2*dx^2 - x^2
+            sage: Lagrangian(m*dx^2/2, [x]).subs(2)
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
         """
-        args = [sage_numbers(a) for a in args]
+        args = [substitution(a) for a in args]
         kwds = {k: sage_numbers(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
         for v in protected:
             if (v + probe).subs(*args, **kwds) != v + probe:
                 raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
+        given = {p: p.subs(*args, **kwds) for p in self._positive}
+        given = {p: v for p, v in given.items() if not v.is_trivially_equal(p)}
+        check_model_values(self, given, entry="subs")
         return self._derived(self._expr.subs(*args, **kwds),
                              dissipation=self._dissipation.subs(*args, **kwds),
                              forces=[f.subs(*args, **kwds) for f in self._forces],
-                             constraints=[f.subs(*args, **kwds) for f in self._constraints])
+                             constraints=[f.subs(*args, **kwds) for f in self._constraints],
+                             positive=[p for p in self._positive if p not in given])
 
     # ------------------------------------------------------------------
     # structure
@@ -629,7 +680,9 @@ class RouthFunction(Lagrangian):
 
     def __init__(self, lagrangian, cyclic, momenta=None):
         if not isinstance(lagrangian, Lagrangian):
-            raise ModelError("expected a Lagrangian object", entry="lagrangian")
+            raise ModelError(f"expected a Lagrangian object, got {brief(lagrangian)}; e.g. "
+                             "model.lagrangian().routh(cyclic)", entry="lagrangian")
+        cyclic = expression_list(cyclic, "cyclic", expected="a list of cyclic coordinates")
         check_cyclic(lagrangian, cyclic)
         self._cyclic = [SR(c) for c in cyclic]
         if momenta is None:
@@ -640,7 +693,8 @@ class RouthFunction(Lagrangian):
             routh_reduction(lagrangian, self._cyclic, self._momenta)
         Lagrangian.__init__(self, None, coordinates, velocities, dissipation=dissipation,
                             forces=forces, name=lagrangian.name(), decomposition=decomposition,
-                            constraints=lagrangian.constraints())
+                            constraints=lagrangian.constraints(),
+                            positive=lagrangian.positive_parameters())
 
     def _repr_(self):
         coords = ", ".join(map(str, self.coordinates()))
@@ -677,7 +731,7 @@ class RouthFunction(Lagrangian):
                              'dissipation': self.dissipation(),
                              'forces': self.generalized_forces(),
                              'name': self.name(), 'constraints': self.constraints(),
-                             **changes})
+                             'positive': self.positive_parameters(), **changes})
 
     def momenta(self):
         r"""
@@ -753,6 +807,32 @@ class RouthFunction(Lagrangian):
         """
         return self.lagrange_equations()
 
+
+
+def substitution(arg):
+    r"""
+    A positional argument of :meth:`Lagrangian.subs`: a dict (symbols or
+    their names as keys) or an equation ``parameter == value``, with Python
+    numbers made Sage numbers; anything else is a
+    :class:`~sage_dynsym.errors.ModelError`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.lagrangian import substitution
+        sage: substitution({'k': 1.5r}), substitution(var('m') == 2)
+        ({k: 1.50000000000000}, m == 2)
+        sage: substitution('k = 1')
+        Traceback (most recent call last):
+        ...
+        ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 'k = 1'
+    """
+    if isinstance(arg, dict):
+        return {SR.var(k) if isinstance(k, str) and k.isidentifier() else k: v
+                for k, v in sage_numbers(arg).items()}
+    if getattr(arg, 'is_relational', lambda: False)():
+        return sage_numbers(arg)
+    raise ModelError(f"expected a dict {{parameter: value}} or equations parameter == value, "
+                     f"got {brief(arg)}", entry="subs")
 
 
 def _same(a, b):

@@ -253,10 +253,16 @@ def linearization_point(at, variables, what="state variable"):
         Traceback (most recent call last):
         ...
         AnalysisError: at: z is not a coordinate of the model; the coordinates are x, y
+        sage: linearization_point(0, [x, y])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: expected a dict {state variable: value}, got 0
     """
     from sage.symbolic.ring import SR
     from ..arguments import known_symbols
-    from ..errors import AnalysisError
+    from ..errors import AnalysisError, brief
+    if not isinstance(at, (dict, type(None))):
+        raise AnalysisError(f"expected a dict {{{what}: value}}, got {brief(at)}", entry="at")
     at = at or {}
     keys = known_symbols(list(at), list(variables), 'at', error=AnalysisError, what=what)
     point = {v: SR(0) for v in variables}

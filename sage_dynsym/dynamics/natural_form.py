@@ -24,8 +24,14 @@ from sage.misc.misc_c import prod
 from sage.rings.real_double import RDF
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_list
 from ..errors import ModelError
 from ..algebra.trigonometric import trig_rational_simplify
+
+#: How the functions taking a Lagrangian recognise one (and the calls that
+#: give one, for their messages).
+LAGRANGIAN_METHODS = ('coordinates', 'velocities', 'lagrange_equations', 'is_natural')
+LAGRANGIAN_HINT = "model.lagrangian(), or Lagrangian(expr, coordinates)"
 
 
 def symbol_list(symbols, what):
@@ -47,8 +53,14 @@ def symbol_list(symbols, what):
         Traceback (most recent call last):
         ...
         ModelError: coordinates must be symbolic variables, got x^2
+        sage: symbol_list(None, 'coordinates')
+        Traceback (most recent call last):
+        ...
+        ModelError: coordinates: expected a list of symbolic variables, got None (NoneType)
     """
-    symbols = [SR(s) for s in symbols]
+    if isinstance(symbols, (list, tuple)):      # names are symbols too
+        symbols = [SR.var(s) if isinstance(s, str) and s.isidentifier() else s for s in symbols]
+    symbols = expression_list(symbols, what, expected="a list of symbolic variables")
     for s in symbols:
         if not s.is_symbol():
             raise ModelError(f"{what} must be symbolic variables, got {s}")

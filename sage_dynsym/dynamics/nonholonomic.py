@@ -70,7 +70,7 @@ from ..symbols import acceleration, constraint_multipliers, momentum, sage_numbe
 from ..symbols import time_derivative
 from ..analysis.motion import SecondOrderEquations
 from ..algebra.trig_linear import TrigFractionField
-from .lagrangian import Lagrangian
+from .lagrangian import Lagrangian, substitution
 from .natural_form import has_full_row_rank
 
 
@@ -421,7 +421,7 @@ class NonholonomicLagrangian(Lagrangian):
     def _derived(self, expr, **changes):
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
                        forces=self._forces, name=self._name, constraints=self._constraints,
-                       nonholonomic=self._nonholonomic)
+                       nonholonomic=self._nonholonomic, positive=self._positive)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
         return NonholonomicLagrangian(expr, coordinates, **options)
@@ -440,7 +440,7 @@ class NonholonomicLagrangian(Lagrangian):
             [dx - 2*dy]
         """
         derived = Lagrangian.subs(self, *args, **kwds)
-        args = [sage_numbers(a) for a in args]
+        args = [substitution(a) for a in args]
         kwds = {k: sage_numbers(v) for k, v in kwds.items()}
         return derived._derived(derived.expr(), nonholonomic=[g.subs(*args, **kwds)
                                                               for g in self._nonholonomic])

@@ -51,10 +51,11 @@ from sage.misc.cachefunc import cached_method
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..arguments import expression_list, model_argument
 from ..errors import AnalysisError, ModelError
 from ..symbols import time_derivative
 from ..algebra.trig_linear import TrigFractionField
-from .natural_form import is_singular
+from .natural_form import is_singular, LAGRANGIAN_METHODS, LAGRANGIAN_HINT
 
 
 class ReducedEquations(SageObject):
@@ -96,7 +97,8 @@ class ReducedEquations(SageObject):
     """
 
     def __init__(self, lagrangian, speeds=None):
-        self._L = lagrangian
+        self._L = model_argument(lagrangian, LAGRANGIAN_METHODS, "lagrangian", "a Lagrangian",
+                                 hint=LAGRANGIAN_HINT)
         q, dq = lagrangian.coordinates(), lagrangian.velocities()
         ddq = lagrangian.accelerations()
         self._q, self._dq, self._ddq = q, dq, ddq
@@ -111,8 +113,8 @@ class ReducedEquations(SageObject):
             independent = self._default_speeds(C)
         else:
             independent = []
-            for s in speeds:
-                s = SR(s)
+            for s in expression_list(speeds, "speeds", expected="a list of velocities",
+                                     names=True):
                 if s in q:
                     s = dq[q.index(s)]
                 if s not in dq:

@@ -95,6 +95,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..algebra.solving import normalize
+from ..arguments import expression_argument
 from ..errors import AnalysisError, ModelError, brief
 from ..algebra.polynomial_spaces import PolynomialContext, monomial_expression
 
@@ -435,8 +436,8 @@ class PoissonStructure(SageObject):
             (-M3, -gamma3, 0)
         """
         x, J = self._variables, self._J
-        dF = [SR(F).diff(v) for v in x]
-        dG = [SR(G).diff(v) for v in x]
+        dF = [expression_argument(F, "F", AnalysisError).diff(v) for v in x]
+        dG = [expression_argument(G, "G", AnalysisError).diff(v) for v in x]
         return collect(sum(dF[i] * J[i, j] * dG[j] for i in range(len(x))
                            for j in range(len(x)) if J[i, j] != 0 and dF[i] != 0 and
                            dG[j] != 0), x)

@@ -48,6 +48,7 @@ from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
+from ..arguments import model_argument
 from ..errors import ModelError, brief
 from .algebras import collect
 from .system import LiePoissonSystem
@@ -82,7 +83,7 @@ def _prefixes(names, default):
     names = default if names is None else names
     if isinstance(names, str):
         names = [n for n in names.replace(',', ' ').split() if n]
-    if len(names) != 2:
+    if not isinstance(names, (list, tuple)) or len(names) != 2:
         raise ModelError(f"expected two prefixes (angular momentum and the other vector), got "
                          f"{brief(names)}", entry="names")
     return [str(n) for n in names]
@@ -141,6 +142,9 @@ def euler_poisson(system, names=None):
         ...
         ModelError: force_function: euler_poisson needs the field along one inertial axis, got (0, -g, -g) (turn the inertial axes)
     """
+    model_argument(system, ('bodies', 'force_terms'), "system", "a mechanical system",
+                   hint="e.g. euler_poisson(MechanicalSystem([top], [psi, theta, phi], "
+                   "force_function=UniformGravity([0, 0, -g])))")
     prefixes = _prefixes(names, ['M', 'gamma'])
     bodies = system.bodies()
     massive = [k for k, b in enumerate(bodies, 1) if not b.is_massless()]
@@ -254,6 +258,8 @@ def kirchhoff(body=None, added_masses=None, inertia=None, mass=None, mass_center
     """
     prefixes = _prefixes(names, ['M', 'p'])
     if body is not None:
+        model_argument(body, ('inertia', 'mass', 'mass_center', 'name'), "body", "a rigid body",
+                       hint="kirchhoff(RigidBody(...)), or kirchhoff(inertia=..., mass=...)")
         inertia, mass, mass_center = body.inertia(), body.mass(), body.mass_center()
         name = name or body.name()
     if inertia is None or mass is None:

@@ -62,7 +62,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..arguments import count, flag
+from ..arguments import count, expression_argument, flag, model_argument
 from ..algebra.polynomial_spaces import (LinearProblem, MAX_MINORS, Reducer, degree, primitive,
                                          products, rank_modulo, generic_point, minors,
                                          schur_after_constant_pivots)
@@ -247,6 +247,14 @@ def _sorted(vectors):
                                                           sorted(v, reverse=True)]))
 
 
+def _poisson_structure(structure, entry):
+    # the structure argument of casimirs and polynomial_integrals
+    return model_argument(structure, ('variables', 'matrix', 'context', 'bracket'), "structure",
+                          "a Poisson structure (lie_algebra('so3'), poisson_structure(...))",
+                          error=AnalysisError, entry=entry,
+                          hint=f"for a Lie-Poisson system S call S.{entry}(...)")
+
+
 def casimirs(structure, degree=4, parameters=(), max_degree=MAX_DEGREE, max_basis=MAX_BASIS):
     r"""
     The polynomial Casimirs of ``structure`` up to ``degree``: a list of
@@ -300,7 +308,13 @@ def casimirs(structure, degree=4, parameters=(), max_degree=MAX_DEGREE, max_basi
         Traceback (most recent call last):
         ...
         AnalysisError: casimirs: degree 12 in 6 variables has 18563 monomials, more than the limit of 3000 unknown coefficients; lower the degree or raise max_basis=
+        sage: from sage_dynsym import LiePoissonSystem
+        sage: casimirs(LiePoissonSystem('so3', var('M1')^2))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: casimirs: expected a Poisson structure (lie_algebra('so3'), poisson_structure(...)), got Lie-Poisson system ...; for a Lie-Poisson system S call S.casimirs(...)
     """
+    structure = _poisson_structure(structure, "casimirs")
     d = check_degree(degree, "casimirs", len(structure.variables()), max_degree, max_basis)
     search = _Search(structure, parameters=parameters)
     P = search.context
@@ -589,6 +603,9 @@ def polynomial_integrals(structure, hamiltonian, degree, new_only=False, conditi
         ...
         AnalysisError: polynomial_integrals: conditions=True is not available with levels=
     """
+    structure = _poisson_structure(structure, "polynomial_integrals")
+    hamiltonian = expression_argument(hamiltonian, "hamiltonian", AnalysisError,
+                                      entry="polynomial_integrals")
     d = check_degree(degree, "polynomial_integrals", len(structure.variables()), max_degree,
                      max_basis)
     new_only = flag(new_only, 'new_only', error=AnalysisError)

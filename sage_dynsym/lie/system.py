@@ -76,8 +76,9 @@ from ..analysis.motion import FirstOrderEquations
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
-from ..arguments import symbol_arguments
+from ..arguments import expression_list, symbol_arguments
 from ..numerics.methods import NumericalMethods
+from ..numerics.values import check_model_values
 from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
 from .format import LiePoissonFormat
 from .report import report_title, report_sections
@@ -512,7 +513,8 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             ...
             AnalysisError: stationary_solutions: levels has 2 entries; it needs one per integral after H (the Casimirs M1^2 + M2^2 + M3^2, then the integrals given): 1
         """
-        integrals = [SR(f) for f in integrals]
+        integrals = expression_list(integrals, "integrals", AnalysisError,
+                                    expected="a list of integrals (symbolic expressions)")
         all_integrals = [self._H] + self.casimirs() + integrals
         if levels is not None and len(levels) != len(all_integrals) - 1:
             raise AnalysisError(
@@ -577,8 +579,16 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             ([C, c], [C])
             sage: len(K.polynomial_integrals(4, new_only=True))
             1
+
+        TESTS::
+
+            sage: S.subs({'A': -1})
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: A is declared positive, got -1
         """
-        values = {SR(k): SR(v) for k, v in values.items()}
+        check_model_values(self, values, entry="subs")
+        values = {SR.var(k) if isinstance(k, str) else SR(k): SR(v) for k, v in values.items()}
         names = {str(k) for k in values}
         for k in values:
             if str(k) not in {str(a) for a in self._parameters}:

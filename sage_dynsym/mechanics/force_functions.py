@@ -23,6 +23,7 @@ EXAMPLES::
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
+from ..errors import ModelError
 from .rigid_body import as_vector3, as_scalar
 
 
@@ -140,6 +141,9 @@ class NewtonianField(SageObject):
     def __init__(self, nu, distance, direction):
         self._nu = as_scalar(nu, "newtonian.nu")
         self._r = as_scalar(distance, "newtonian.r")
+        if direction is None:
+            raise ModelError("expected the direction of the field, a list of 3 components",
+                             entry="newtonian.direction")
         self._e = as_vector3(direction, "newtonian.direction")
         self._conditions = _field_conditions(self._r, self._e)
 

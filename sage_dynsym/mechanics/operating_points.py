@@ -211,7 +211,7 @@ class SystemOperatingPoints:
             ...
             ModelError: operating_points: no operating point 'resting'; the operating points are moving
         """
-        if name not in self._operating_points:
+        if not isinstance(name, str) or name not in self._operating_points:
             raise ModelError(f"no operating point {name!r}; the operating points are "
                              f"{', '.join(self._operating_points) or '(none)'}",
                              entry="operating_points")

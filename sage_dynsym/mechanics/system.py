@@ -45,12 +45,13 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
 from sage.misc.cachefunc import cached_method
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..errors import ModelError, brief
 from ..symbols import velocity, momentum, t, check_mechanical_names, sage_numbers
-from ..arguments import symbol_arguments
+from ..arguments import expression_list, symbol_arguments
 from ..algebra.trigonometric import SymbolicBackend
 from ..dynamics.holonomic import check_constraints
 from ..dynamics.model import Model
+from ..numerics.values import check_model_values
 from .force_functions import check_force_function
 from .constraint_set import ConstraintSet
 from .format import MechanicalFormat
@@ -186,13 +187,18 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
                  dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=(),
                  nonholonomic=(), rolling=(), operating_points=None):
+        if not isinstance(bodies, (list, tuple)):
+            raise ModelError(f"expected a list of RigidBody, got {brief(bodies)}; e.g. "
+                             "MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])",
+                             entry="bodies")
         bodies = list(bodies)
         given_names = [b.name() if isinstance(b, RigidBody) else None for b in bodies]
         for i, body in enumerate(bodies):
             if not isinstance(body, RigidBody):
                 raise ModelError(f"expected a RigidBody, got {body!r}", entry=f"bodies[{i}]")
         self._bodies = self._sorted_by_parents(bodies)
-        self._coordinates = [SR(q) for q in coordinates]
+        self._coordinates = expression_list(coordinates, "coordinates",
+                                            expected="a list of symbolic variables")
         for q in self._coordinates:
             if not q.is_symbol():
                 raise ModelError(f"coordinates must be symbolic variables, got {q}",
@@ -227,6 +233,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
                                              given_names)
         self._operating_points = checked_operating_points(
             operating_points, self._coordinates, self._velocities, self._parameters)
+        self._physical = self._physical_conditions(given_names)
 
 
     # ------------------------------------------------------------------
@@ -313,10 +320,15 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             Traceback (most recent call last):
             ...
             ModelError: subs: k is not a parameter of the system; its parameters are: m, l, g
+            sage: S.subs({'g': -9.81})
+            Traceback (most recent call last):
+            ...
+            ModelError: subs: g is declared positive, got -9.81000000000000
         """
         if not isinstance(values, dict):
             raise ModelError(f"expected a dictionary {{parameter: value}}, got {values!r}",
                              entry="subs")
+        check_model_values(self, values, entry="subs")
         protected = set(self._coordinates) | set(self._velocities) | {t}
         protected |= set(self._accelerations()) | {momentum(q) for q in self._coordinates}
         substitution = {}
@@ -420,6 +432,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             sage: S.parent_index(2), S.parent_index(1)
             (1, 0)
         """
+        self._check_index(k, inertial=True)
         return self._parents[k]
 
     def coordinates(self):
@@ -470,9 +483,12 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
     def conditions(self):
         r"""
         The conditions on the parameters for the model to be physical that
-        are not decided by its data: those of its force fields (the
-        direction of a Newtonian field with symbolic direction cosines a
-        unit vector, its distance positive; see
+        its data and its declared signs leave open: masses and moments of
+        inertia non-negative, the moments of inertia satisfying the
+        triangle inequality, the radii of rolling disks positive (see
+        :mod:`~sage_dynsym.mechanics.system_checks`), and those of its
+        force fields (the direction of a Newtonian field with symbolic
+        direction cosines a unit vector, its distance positive; see
         :meth:`~sage_dynsym.mechanics.force_functions.NewtonianField.conditions`).
         Values given to :meth:`simulate` and :meth:`numerical_rhs` must
         satisfy them.
@@ -485,9 +501,25 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             ....:                      force_function=NewtonianField(nu, r, [e1, e2, 0]))
             sage: S.conditions()
             [e1^2 + e2^2 == 1, r > 0]
+
+        What the declared signs decide is not a condition; what they
+        contradict is refused::
+
+            sage: A, C = var('A C')
+            sage: top = RigidBody('top', rotations=[(3, phi)], mass=1,
+            ....:                 inertia=diagonal_matrix([A, A, C]))
+            sage: MechanicalSystem([top], [phi], positive=[A, C]).conditions()
+            [2*A - C >= 0]
+            sage: MechanicalSystem([top], [phi], positive=[A, C],
+            ....:                  force_function=NewtonianField(nu, r, [1, 0, 0])).conditions()
+            [2*A - C >= 0, r > 0]
+            sage: MechanicalSystem([top], [phi], positive=[A, C, r],
+            ....:                  force_function=NewtonianField(nu, -r, [1, 0, 0]))
+            Traceback (most recent call last):
+            ...
+            ModelError: force_function: the distance from the attracting centre must be positive, but -r is never positive under the declared signs (A > 0, C > 0, r > 0)
         """
-        return [c for term in self.force_terms() if hasattr(term, 'conditions')
-                for c in term.conditions()]
+        return list(self._physical)
 
     def report_title(self):
         r"""The heading of the system's report (see :mod:`~sage_dynsym.mechanics.report`).

@@ -7,6 +7,17 @@ bodies parents first (refusing unknown parents, duplicate names and cycles),
 checks that every symbol of the model is declared, checks the loads, and
 the body indices given to the kinematics.
 
+It also decides the physical signs of the data with the declared signs
+(and nothing else): a mass, a principal moment of inertia (the diagonal
+entries and the principal minors of the inertia tensor `J`, and those of
+`\operatorname{tr}(J)\,E - 2J` for the triangle inequality), the radius of a
+rolling disk, the distance of a Newtonian field. An expression that is
+negative under the declared signs (for a mass or a moment of inertia: one
+that is not zero and never positive; for a radius or a distance: never
+positive) is refused, naming the entry; one that the declared signs do not
+decide becomes a condition of :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.conditions`,
+printed by the report and checked at the values given to the numerics.
+
 EXAMPLES::
 
     sage: from sage_dynsym import MechanicalSystem, RigidBody
@@ -14,12 +25,40 @@ EXAMPLES::
     Traceback (most recent call last):
     ...
     ModelError: bodies: the parents form a cycle: p -> q -> p
+
+A mass negative under the declared signs, and one they leave open::
+
+    sage: z, m, a, b = var('z m a b')
+    sage: MechanicalSystem([RigidBody('p', joint=[0, 0, z], mass=-m)], [z], positive=[m])
+    Traceback (most recent call last):
+    ...
+    ModelError: bodies[0].mass: the mass of body 'p' must be non-negative, but -m is negative under the declared signs (m > 0)
+    sage: S = MechanicalSystem([RigidBody('p', joint=[0, 0, z], mass=a - b)], [z]); S.conditions()
+    [a - b >= 0]
+    sage: S.simulate({a: 1, b: 2}, {z: 0, 'dz': 1}, 1)
+    Traceback (most recent call last):
+    ...
+    ModelError: values: the values break the condition a - b >= 0 of the model (it is -1 there)
+
+A tensor with zero moments about two axes needs zero products of inertia
+about them::
+
+    sage: A, D = var('A D')
+    sage: MechanicalSystem([RigidBody('p', inertia=[[A, D, 0], [D, 0, 0], [0, 0, A]])], [],
+    ....:                  positive=[A]).conditions()
+    [D == 0]
 """
 import numbers
+import operator
+from itertools import combinations
 
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..algebra.conditions import nonzero_conditions, positive_conditions
+from ..algebra.polynomials import FACTOR_LIMIT
+from ..algebra.size import polynomial_terms
+from ..arguments import is_integer
+from ..errors import ModelError, brief
 from ..symbols import acceleration, t
 from .loads import Load, body_index
 from .rigid_body import RigidBody
@@ -148,9 +187,95 @@ class SystemChecks:
                                              entry=f"{entry}.{field}")
         return load
 
+    def _physical_conditions(self, given_names):
+        # the signs of the masses, moments of inertia, radii and distances,
+        # decided with the declared signs (see the module documentation)
+        from sage.matrix.constructor import identity_matrix
+        positive = list(self._positive)
+        declared = ", ".join(f"{p} > 0" for p in positive) or "none"
+        open_conditions = []
+
+        def require(expr, entry, what, strict=False, nonzero=False):
+            expr = SR(expr)
+            if not expr.variables():
+                return                      # numbers: checked where they are given
+            if polynomial_terms(expr) > FACTOR_LIMIT:
+                # too large to decide quickly: stated, not assumed
+                open_conditions.append(expr > 0 if strict else expr >= 0)
+                return
+            if strict:
+                fails = "never positive" if _never_positive(expr, positive) else None
+                holds = _always_positive(expr, positive)
+            else:
+                fails = ("negative" if _always_positive(-expr, positive) else
+                         "never positive" if nonzero and _never_positive(expr, positive)
+                         else None)
+                holds = _never_positive(-expr, positive)
+            if fails:
+                raise ModelError(f"{what} must be {'positive' if strict else 'non-negative'}, "
+                                 f"but {expr} is {fails} under the declared signs "
+                                 f"({declared})", entry=entry)
+            if not holds:
+                condition = expr > 0 if strict else expr >= 0
+                # positive factors dropped (m*(A*C - D^2) >= 0 is A*C - D^2 >= 0)
+                simple = positive_conditions(expr, positive)
+                if simple is None:          # never positive: expr >= 0 only where it is 0
+                    zero = nonzero_conditions(expr, positive) or []
+                    if len(zero) == 1:      # -A*D^2 >= 0 is D == 0
+                        condition = zero[0].lhs() - zero[0].rhs() == 0
+                elif len(simple) == 1 and simple[0].operator() in (operator.gt, operator.lt):
+                    rel = simple[0]
+                    expr = (rel.lhs() - rel.rhs()) * (1 if rel.operator() is operator.gt else -1)
+                    condition = expr > 0 if strict else expr >= 0
+                if not any(bool(c == condition) for c in open_conditions):
+                    open_conditions.append(condition)
+
+        for body in self._bodies:
+            i, name = given_names.index(body.name()), body.name()
+            require(body.mass(), f"bodies[{i}].mass", f"the mass of body {name!r}", nonzero=True)
+            J = body.inertia()
+            for what, M in (("the moments of inertia", J),
+                            ("the triangle inequality of the moments of inertia",
+                             J.trace() * identity_matrix(SR, 3) - 2 * J)):
+                for size in (1, 2, 3):
+                    for rows in combinations(range(3), size):
+                        block = M.matrix_from_rows_and_columns(rows, rows)
+                        if size > 1 and block.is_diagonal():
+                            continue        # the product of the 1x1 minors
+                        require(block.det(), f"bodies[{i}].inertia",
+                                f"{what} of body {name!r}" + (
+                                    "" if size == 1 else f" (the principal minor of rows "
+                                    f"{', '.join(str(r + 1) for r in rows)})"),
+                                nonzero=size == 1 and M is J)
+        for k, disk in enumerate(self._constraint_set.rolling()):
+            require(disk.radius(), f"rolling[{k}].radius", "the radius", strict=True)
+        for term in self.force_terms():
+            for condition in getattr(term, 'conditions', list)():
+                if condition.operator() is operator.gt:
+                    require(condition.lhs() - condition.rhs(), "force_function",
+                            "the distance from the attracting centre", strict=True)
+                else:
+                    open_conditions.append(condition)
+        return open_conditions
+
     def _accelerations(self):
         return [acceleration(q) for q in self._coordinates]
 
-    def _check_index(self, k):
-        if not 1 <= k <= len(self._bodies):
-            raise ModelError(f"body index {k} out of range 1..{len(self._bodies)}")
+    def _check_index(self, k, inertial=False):
+        # a 1-based body index (0, the inertial frame, where ``inertial``)
+        low = 0 if inertial else 1
+        if not is_integer(k):
+            raise ModelError(f"expected a body index {low}..{len(self._bodies)}"
+                             f"{' (0: the inertial frame)' if inertial else ''}, got {brief(k)}",
+                             entry="k")
+        if not low <= k <= len(self._bodies):
+            raise ModelError(f"body index {k} out of range {low}..{len(self._bodies)}")
+
+
+def _always_positive(expr, positive):
+    # expr > 0 for all the values the declared signs allow
+    return positive_conditions(expr, positive) == []
+
+
+def _never_positive(expr, positive):
+    return positive_conditions(expr, positive) is None

@@ -55,6 +55,7 @@ class SystemKinematics:
             sage: S.body_frame(0), S.body_frame(1)
             (0, 2)
         """
+        self._check_index(k, inertial=True)
         return self._symbolic.body_frame(k)
 
     def velocities(self):
@@ -101,6 +102,7 @@ class SystemKinematics:
             sage: S.angular_velocity_vector(1).parts()
             {1: (0, 0, da)}
         """
+        self._check_index(k, inertial=True)
         return self._symbolic.angular_velocity(k)
 
     def angular_velocity(self, k):
@@ -151,6 +153,7 @@ class SystemKinematics:
             sage: S.joint_velocity_vector(2).parts()
             {1: (0, da*l, 0)}
         """
+        self._check_index(k, inertial=True)
         return self._symbolic.joint_velocity(k)
 
     def joint_velocity(self, k):
@@ -181,6 +184,7 @@ class SystemKinematics:
             sage: S.joint_position(2).components(0)
             (l*cos(a), l*sin(a), 0)
         """
+        self._check_index(k, inertial=True)
         return self._symbolic.joint_position(k)
 
     def mass_center_position(self, k):

@@ -369,7 +369,8 @@ class SystemLagrangian:
             builder = ring_equations if use_ring else None
         options = dict(decomposition=decomposition, dissipation=self._dissipation,
                        forces=self.generalized_forces(), name=self._name,
-                       equation_builder=builder, constraints=self.constraints())
+                       equation_builder=builder, constraints=self.constraints(),
+                       positive=self._positive)
         if self.nonholonomic_constraints():
             return NonholonomicLagrangian(None, self._coordinates, self._velocities,
                                           nonholonomic=self.nonholonomic_constraints(), **options)

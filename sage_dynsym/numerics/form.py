@@ -46,7 +46,7 @@ import types
 from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
-from ..errors import AnalysisError, ModelError
+from ..errors import AnalysisError, ModelError, brief
 from ..symbols import t as _t
 from .expressions import linear_coefficients, symbols_and_functions
 
@@ -163,8 +163,13 @@ class NumericalForm:
 
     TESTS::
 
+        sage: from sage_dynsym import Lagrangian
         sage: from sage_dynsym.analysis.motion import SecondOrderEquations
         sage: x, dx, ddx = var('x dx ddx')
+        sage: NumericalForm(Lagrangian(dx^2/2, [x]))
+        Traceback (most recent call last):
+        ...
+        ModelError: equations: expected the equations as a record of sage_dynsym.analysis.motion (SecondOrderEquations or FirstOrderEquations), got Lagrangian in coordinates (x) : 1/2*dx^2; for a model or a characteristic function call its method, model.numerical_rhs(values) or model.simulate(values, initial, t_end), which also check the values against its declared signs
         sage: NumericalForm(SecondOrderEquations([ddx^2 + x], [x], [dx], [ddx]))
         Traceback (most recent call last):
         ...
@@ -172,6 +177,16 @@ class NumericalForm:
     """
 
     def __init__(self, record, energy=None):
+        from ..analysis.motion import FirstOrderEquations, SecondOrderEquations
+        if not isinstance(record, (FirstOrderEquations, SecondOrderEquations)):
+            hint = ("; for a model or a characteristic function call its method, "
+                    "model.numerical_rhs(values) or model.simulate(values, initial, t_end), "
+                    "which also check the values against its declared signs"
+                    if callable(getattr(record, 'equations_record', None)) else "")
+            raise ModelError(f"expected the equations as a record of "
+                             f"sage_dynsym.analysis.motion (SecondOrderEquations or "
+                             f"FirstOrderEquations), got {brief(record)}{hint}",
+                             entry="equations")
         self._energy = energy if energy is None or deferred(energy) else SR(energy)
         self._constraints, self._J, self._gamma, self._f_t = [], [], [], []
         self._velocity_constraints, self._A = [], []

@@ -119,6 +119,7 @@ class Trajectory(SageObject):
 
     def __init__(self, times, states, variables, parameters, energy=None, method=None,
                  dense=None, breaks=None, name=None, events=None, constraints=()):
+        _check_samples(times, states, variables, parameters)
         self._constraints = [SR(c) for c in constraints]
         self._times = np.array(times, dtype=float)
         self._states = np.array(states, dtype=float).reshape(len(self._times), len(variables))
@@ -687,3 +688,32 @@ def _label(expression):
         ('$\\theta$', 'x')
     """
     return expression if isinstance(expression, str) else f'${SR(expression)._latex_()}$'
+
+
+def _check_samples(times, states, variables, parameters):
+    r"""
+    The samples of a :class:`Trajectory` (what ``simulate`` passes it):
+    times and states of numbers, one row of states per time over the
+    variables, parameters a dict of numbers; else a
+    :class:`~sage_dynsym.errors.ModelError`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.trajectory import _check_samples
+        sage: _check_samples([0, 1], [[1], [2]], [var('x')], {})
+        sage: _check_samples(None, None, None, None)
+        Traceback (most recent call last):
+        ...
+        ModelError: Trajectory: expected sample times, states over the variables and a dict of parameter values (a trajectory comes from simulate()), got times None
+    """
+    from ..arguments import expression_list
+    try:
+        shape = (len(np.array(times, dtype=float)), len(expression_list(variables, "variables")))
+        ok = isinstance(parameters, dict) and np.array(states, dtype=float).size == \
+            shape[0] * shape[1]
+    except (TypeError, ValueError, ModelError):
+        ok = False
+    if not ok:
+        raise ModelError("expected sample times, states over the variables and a dict of "
+                         "parameter values (a trajectory comes from simulate()), got times "
+                         f"{str(times)[:40]}", entry="Trajectory")

@@ -32,12 +32,24 @@ EXAMPLES::
     Traceback (most recent call last):
     ...
     ModelError: values: R1 is declared positive, got -1
+
+Sage numbers and constant expressions count as numbers::
+
+    sage: check_model_values(C, {'L1': 1, 'L2': 1, 'M': SR(2), 'R1': 1, 'R2': 1})
+    Traceback (most recent call last):
+    ...
+    ModelError: values: the values break the condition L1*L2 - M^2 >= 0 of the model (it is -3 there)
+    sage: check_model_values(C, {'L1': 1, 'L2': 1, 'M': 0, 'R1': -sqrt(2), 'R2': 1})
+    Traceback (most recent call last):
+    ...
+    ModelError: values: R1 is declared positive, got -sqrt(2)
 """
 import operator
 
 from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
+from ..algebra.size import polynomial_terms
 from ..errors import ModelError
 from ..arguments import check_declared_signs, finite_real
 
@@ -45,6 +57,10 @@ from ..arguments import check_declared_signs, finite_real
 #: checked at floating-point values (relative to the sum of the absolute
 #: values of the terms).
 ROUNDING = 1e-9
+
+#: Conditions with more polynomial terms than this are not expanded to
+#: estimate the rounding errors.
+ROUNDING_TERMS = 10_000
 
 
 def holds_to_rounding(condition, values):
@@ -76,7 +92,9 @@ def holds_to_rounding(condition, values):
     point = {v: SR(by_name[str(v)]) for v in symbols}
     try:
         value = finite_real(expr.subs(point), 'condition')
-        terms = expr.expand()
+        # the terms the rounding errors come from (a condition too large to
+        # expand is judged on its value)
+        terms = expr.expand() if polynomial_terms(expr) <= ROUNDING_TERMS else expr
         parts = terms.operands() if terms.operator() is add_vararg else [terms]
         scale = sum(abs(finite_real(SR(t).subs(point), 'term')) for t in parts)
     except ModelError:
@@ -119,9 +137,19 @@ def check_model_values(model, values, entry="values"):
     conditions = getattr(model, 'conditions', None)
     if not callable(conditions):
         return
-    numbers = {k: v for k, v in values.items() if not callable(v)}
+    numbers = {k: v for k, v in values.items() if _is_number(v)}
     for condition in conditions():
         result = holds_to_rounding(condition, numbers)
         if result is not None and not result[0]:
             raise ModelError(f"the values break the condition {condition} of the model (it is "
                              f"{result[1]:.6g} there)", entry=entry)
+
+
+def _is_number(value):
+    # a number or a constant expression (symbolic expressions are callable
+    # too: only what finite_real refuses is left out, such as a function)
+    try:
+        finite_real(value, 'value')
+    except ModelError:
+        return False
+    return True

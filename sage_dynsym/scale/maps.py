@@ -261,7 +261,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     for name, value in (('fixed', fixed), ('at', at)):
         if not isinstance(value, (dict, type(None))):
             raise AnalysisError(f"{name}= must be a dict, got {value!r}", entry=entry)
-    if isinstance(system, Model):       # the model's declared signs, before any work
+    if callable(getattr(system, 'positive_parameters', None)):     # declared signs, first
         check_model_values(system, dict(fixed or {}), entry="fixed")
         check_positive_ranges(parse_points(parameters, samples, seed, max_points=max_points),
                               system.positive_parameters())
