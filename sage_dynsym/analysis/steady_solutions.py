@@ -24,7 +24,7 @@ from sage.matrix.constructor import matrix, block_diagonal_matrix, identity_matr
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..arguments import symbol_arguments
+from ..arguments import model_argument, symbol_arguments
 from ..symbols import velocity
 from ..algebra.conditions import simplify_conjunction
 from ..algebra.solving import SolutionList, solve_exactly
@@ -130,6 +130,9 @@ class SteadyMotionSolution(MotionSolution):
     """
 
     def __init__(self, system, point, solution, positive=(), coordinates=None, speeds=None):
+        # built by steady_motions; checked for whoever builds one by hand
+        model_argument(point, ['coordinates', 'at'], 'point', "an OperatingPoint",
+                       AnalysisError, hint="steady motions come from steady_motions(system, point)")
         super().__init__(solution)
         self._system, self._point, self._positive = system, point, list(positive)
         self._coordinates = coordinates if coordinates is not None else \
@@ -293,6 +296,10 @@ class SteadyMotions(SolutionList):
     """
 
     def __init__(self, point, solutions, motions):
+        model_argument(point, ['coordinates', 'at'], 'point', "an OperatingPoint",
+                       AnalysisError, hint="steady motions come from steady_motions(system, point)")
+        if isinstance(motions, (str, bytes)) or not hasattr(motions, '__iter__'):
+            raise AnalysisError(f"motions: expected the steady motions found, got {motions!r}")
         self._point, self._set, self._solutions = point, solutions, list(motions)
 
     def _repr_(self):
