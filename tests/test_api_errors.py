@@ -46,9 +46,6 @@ NO_CYCLIC = Lagrangian(dx**2 / 2 - x**4 / 4 + k * x, [x])
 WRONG = {'None': None, 'number': 42, 'string': 'text', 'dict': {'a': 1}, 'list': [1, 2],
          'symbol': SR.var('zz'), 'circuit': CIRCUIT, 'lagrangian': NO_CYCLIC}
 
-#: public names whose constructors belong to the scale layer (maps and
-#: sweeps, their own entry checks pending there)
-SCALE_PENDING = {'StabilityMap', 'Sweep', 'stability_class'}
 
 
 def call(function, *args):
@@ -100,9 +97,7 @@ def public_callables():
     for name in sage_dynsym.__all__:
         value = getattr(sage_dynsym, name)
         if callable(value) and not (inspect.isclass(value) and issubclass(value, Exception)):
-            names.append(pytest.param(name, marks=pytest.mark.xfail(
-                strict=True, reason="scale constructors: their checks belong to the scale "
-                "layer")) if name in SCALE_PENDING else name)
+            names.append(name)
     return names
 
 

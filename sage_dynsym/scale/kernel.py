@@ -434,11 +434,27 @@ def stability_class(roots, tol=1e-9, marginal_tol=1e-7):
         (2, 1)
         sage: stability_class([0.1, -3])
         0
+
+    TESTS::
+
+        sage: stability_class("roots")
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability_class: expected characteristic roots (a 1-D array of numbers) or a square matrix
     """
-    roots = np.asarray(roots)
-    if roots.ndim == 2:
-        roots = np.linalg.eigvals(roots.astype(float))
-    roots = roots.astype(complex)
+    try:
+        roots = np.asarray(roots)
+        if roots.ndim == 2 and roots.shape[0] == roots.shape[1]:
+            roots = np.linalg.eigvals(roots.astype(float))
+        roots = roots.astype(complex)
+    except (TypeError, ValueError) as error:
+        roots = error
+    if isinstance(roots, Exception) or roots.ndim != 1:
+        # imported here: the kernels run on workers that may lack the package
+        from sage_dynsym.errors import AnalysisError
+        raise AnalysisError("stability_class: expected characteristic roots (a 1-D array of "
+                            "numbers) or a square matrix") from (
+                                roots if isinstance(roots, Exception) else None)
     if not len(roots):
         return 2
     alpha, rho = roots.real.max(), np.abs(roots).max()

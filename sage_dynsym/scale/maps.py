@@ -117,7 +117,8 @@ from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
 from .equilibria import point_diagnosis
-from .points import parse_points, check_positive_ranges, number_text, MAX_POINTS
+from .points import (parse_points, check_positive_ranges, number_text, result_arrays,
+                     MAX_POINTS)
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
@@ -605,6 +606,7 @@ class StabilityMap(SageObject):
 
     def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None,
                  name=None, classes=None, exact_classes=None, marginal_tol=1e-7, at=None):
+        result_arrays(points, [alpha, stable], 'StabilityMap')
         self._points, self._alpha, self._stable = points, alpha, stable
         self._fixed, self._method, self._tol = dict(fixed), method, tol
         self._conditions, self._note, self._name = conditions, note, name

@@ -33,11 +33,44 @@ import math
 
 import numpy as np
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, brief
 from ..arguments import count, is_integer
 
 #: Most points of a map or a sweep (``max_points=`` raises it).
 MAX_POINTS = 10**7
+
+
+def result_arrays(points, arrays, owner):
+    r"""
+    Check the data of a result of the scale layer (a
+    :class:`~sage_dynsym.scale.maps.StabilityMap` or a
+    :class:`~sage_dynsym.scale.sweeps.Sweep`), which :func:`stability_map`
+    and :func:`sweep` build: ``points`` a :class:`Points`, each of
+    ``arrays`` a NumPy array with the points' shape first.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.scale.points import parse_points, result_arrays
+        sage: import numpy as np
+        sage: P = parse_points({'a': (0, 1, 3)})
+        sage: result_arrays(P, [np.zeros(3)], 'StabilityMap')
+        sage: result_arrays(None, [], 'StabilityMap')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: StabilityMap: expected the points of a computation, got None; maps come from stability_map(...), sweeps from sweep(...)
+        sage: result_arrays(P, [np.zeros(2)], 'Sweep')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: Sweep: expected arrays of shape (3,) over the points, got array([0., 0.])
+    """
+    hint = "maps come from stability_map(...), sweeps from sweep(...)"
+    if not isinstance(points, Points):
+        raise AnalysisError(f"{owner}: expected the points of a computation, got {brief(points)}; "
+                            + hint)
+    for array in arrays:
+        if not (isinstance(array, np.ndarray) and array.shape[:len(points.shape)] == points.shape):
+            raise AnalysisError(f"{owner}: expected arrays of shape {points.shape} over the "
+                                f"points, got {brief(array)}")
 
 
 class Points:

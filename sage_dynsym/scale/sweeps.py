@@ -73,7 +73,7 @@ from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .kernel import sweep_chunk, chunk_points
 from .maps import CHUNK
-from .points import parse_points, check_positive_ranges, MAX_POINTS
+from .points import parse_points, check_positive_ranges, result_arrays, MAX_POINTS
 
 
 def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0,
@@ -318,6 +318,7 @@ class Sweep(SageObject):
     """
 
     def __init__(self, points, values, keys):
+        result_arrays(points, [values], 'Sweep')
         self._points, self._values, self._keys = points, values, list(keys)
 
     def _repr_(self):
