@@ -390,8 +390,10 @@ class AlgebraicSolution(SageObject):
             (False, [x^5 - x - 1])
         """
         subs = {k: v for k, v in self._ring_values.items()}
-        return [r if r.parent() is SR else normalize(self._T.symbolic(r, subs))
-                for r in self._relations]
+        relations = [r if r.parent() is SR else normalize(self._T.symbolic(r, subs))
+                     for r in self._relations]
+        # a relation that the explicit values satisfy identically says nothing
+        return [r for r in relations if not r.is_zero()]
 
     def is_explicit(self):
         r"""Whether every unknown is given explicitly (or is free).
