@@ -112,10 +112,10 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..algebra.determinants import fraction_free_det
 from .quadratic_forms import definiteness_conditions, semidefiniteness_conditions
-from ..algebra.regions import partition, simplify_region, negation, intersection, prune_empty
+from ..algebra.regions import simplify_region, negation, intersection
 from ..algebra.solving import normalize
 from .spectrum import spectrum_regions
-from .verdict import StabilityVerdict
+from .verdict import StabilityVerdict, verdict_from_parts
 
 __all__ = ['kelvin_chetaev', 'StabilityVerdict']
 
@@ -350,24 +350,6 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     parts = [('asymptotically stable', asymptotic), ('stable', kelvin),
              ('stable in first approximation', marginal),
              ('undecided', spectrum.undecided())]
-    found = [(name, prune_empty(region, positive) if region is not None else None)
-             for name, region in partition(parts, rest='unstable', domain=domain,
-                                           positive=positive)]
-    found = [(name, region) for name, region in found if region != []]
-    reasons = _reasons(M, D, G, K, P, spectrum, positive, mechanical)
-    boundaries = spectrum.boundaries()
-    cases = []
-    for name, region in found:
-        method = 'Kelvin-Chetaev' if name == 'stable' else 'first approximation'
-        strict = region is not None and len(region) == 1 and \
-            all(r.operator().__name__ in ('gt', 'lt') for r in region[0])
-        conditions = [(r.lhs() - r.rhs()) if r.operator().__name__ == 'gt' else
-                      (r.rhs() - r.lhs()) for r in region[0]] if strict else []
-        cases.append(StabilityVerdict(name, reasons[name], conditions=conditions,
-                                      method=method, region=region, boundaries=boundaries,
-                                      positive=positive))
-    if len(cases) == 1:
-        return cases[0]
-    return StabilityVerdict('depends on the parameters', "see cases(): " +
-                            ", ".join(c.verdict() for c in cases), cases=cases,
-                            boundaries=boundaries, positive=positive)
+    return verdict_from_parts(parts, _reasons(M, D, G, K, P, spectrum, positive, mechanical),
+                              spectrum.boundaries(), positive, domain=domain,
+                              methods={'stable': 'Kelvin-Chetaev'})

@@ -45,6 +45,7 @@ from sage.structure.sage_object import SageObject
 
 from ..errors import AnalysisError
 from ..algebra.conditions import region_holds
+from ..algebra.regions import partition, prune_empty, drop_redundant
 
 #: The verdicts that count as stable (the stable set of a verdict that
 #: depends on the parameters is the union of their regions).
@@ -297,3 +298,64 @@ class StabilityVerdict(SageObject):
             cond = " where " + " or ".join(
                 "[" + ", ".join(map(str, alt)) + "]" for alt in self._region)
         return f"{self._verdict}{cond}: {self._reason}"
+
+
+def verdict_from_parts(parts, reasons, boundaries, positive=(), domain=((),),
+                       method='first approximation', methods=None):
+    r"""
+    The verdict whose cases partition ``domain``: the regions of ``parts``
+    made disjoint by precedence, and ``'unstable'`` for the rest (the
+    boundaries, where a strict condition is zero, belong to no case).
+
+    INPUT:
+
+    - ``parts`` -- list of pairs ``(verdict, region or None)``, by
+      precedence (e.g. asymptotically stable, stable, stable in first
+      approximation, undecided)
+    - ``reasons`` -- dict ``{verdict: reason}``, ``'unstable'`` included
+    - ``boundaries`` -- dict of the boundaries (see
+      :meth:`StabilityVerdict.boundaries`)
+    - ``positive`` -- symbols declared positive
+    - ``domain`` -- (default: everywhere) the region where the parts are
+      taken (e.g. where the kinetic matrix is positive definite)
+    - ``method`` -- the method recorded in each case, unless
+      ``methods`` (a dict ``{verdict: method}``) names another
+
+    OUTPUT: a :class:`StabilityVerdict`: the single case, or ``'depends on
+    the parameters'`` with the cases
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.verdict import verdict_from_parts
+        sage: a = var('a')
+        sage: v = verdict_from_parts([('stable', [[a > 0]])],
+        ....:                        {'stable': 'a minimum', 'unstable': 'a maximum'}, {})
+        sage: [(c.verdict(), c.region()) for c in v.cases()]
+        [('stable', [[a > 0]]), ('unstable', [[a < 0]])]
+        sage: verdict_from_parts([('stable', [[a^2 + 1 > 0]])], {'stable': 'always'}, {})
+        stable: always
+    """
+    positive = list(positive)
+    # redundant relations would hide the boundary (the sleeping top's
+    # stable set is M3^2 > 4 A m g l alone)
+    found = [(name, drop_redundant(prune_empty(region, positive), positive)
+              if region is not None else None)
+             for name, region in partition(parts, rest='unstable', domain=domain,
+                                           positive=positive)]
+    cases = []
+    for name, region in found:
+        if region == []:
+            continue
+        strict = region is not None and len(region) == 1 and \
+            all(r.operator().__name__ in ('gt', 'lt') for r in region[0])
+        conditions = [(r.lhs() - r.rhs()) if r.operator().__name__ == 'gt' else
+                      (r.rhs() - r.lhs()) for r in region[0]] if strict else []
+        cases.append(StabilityVerdict(name, reasons[name], conditions=conditions,
+                                      method=(methods or {}).get(name, method),
+                                      region=region, boundaries=boundaries,
+                                      positive=positive))
+    if len(cases) == 1:
+        return cases[0]
+    return StabilityVerdict('depends on the parameters', "see cases(): " +
+                            ", ".join(c.verdict() for c in cases), cases=cases,
+                            boundaries=boundaries, positive=positive)

@@ -1,0 +1,242 @@
+r"""
+The stability service: one exact answer for a linear system
+
+:meth:`LinearSystem.stability <sage_dynsym.analysis.linear.LinearSystem.stability>`
+is the one place where the package decides stability; reports, stability
+maps, sweeps, interactive pages and stationary solutions ask it. It takes
+a second-order system `M\ddot z + (D + 2G)\dot z + (K + P)z = 0` or a
+first-order one `B\dot x = Jx` and returns a
+:class:`~sage_dynsym.analysis.verdict.StabilityVerdict` whose
+:meth:`~sage_dynsym.analysis.verdict.StabilityVerdict.cases` partition the
+parameter space allowed by the declared signs (up to the boundaries, of
+measure zero):
+
+- a second-order system with a nonsingular kinetic matrix and no ignorable
+  coordinate: :func:`~sage_dynsym.analysis.kelvin_chetaev.kelvin_chetaev`
+  (the theorems on the structure of forces, and the first approximation
+  wherever they do not decide);
+- otherwise the first approximation of the first-order form `\dot x = Ax`:
+  asymptotically stable where the Liénard--Chipart conditions hold, stable
+  in first approximation where the roots on the imaginary axis are simple
+  or semisimple and the others in the left half-plane, ``'undecided'``
+  where a multiple root on the imaginary axis is not semisimple, and
+  unstable in the rest (a root with a positive real part: Lyapunov's
+  theorem on the first approximation) -- :mod:`~sage_dynsym.analysis.spectrum`.
+
+**Ignorable coordinates.** A variable whose value does not enter the
+linear equations (its column in `W`, resp. in `J`, is zero: a heading, the
+spin angle of a wheel, the charge of a loop without a capacitor) only
+drifts with the others: it adds a zero root for all parameter values,
+which is never asymptotically stable and, with its rate, often not
+semisimple. The verdict is then about the other variables and the rates
+(stability with respect to part of the variables, Rumyantsev), and its
+``reason()`` says so; ``with_respect_to=`` names the variables explicitly.
+
+EXAMPLES: a mass on a spring with a damper, as a first-order system::
+
+    sage: from sage_dynsym.analysis.linear import LinearSystem
+    sage: x, v, m, c, k = var('x v m c k')
+    sage: LinearSystem([x, v], J=[[0, 1], [-k, -c]], B=diagonal_matrix([1, m])).stability(
+    ....:     positive=[m, c, k])
+    asymptotically stable: every root of the characteristic polynomial has a negative real part ...
+
+A free particle with a damper: its position is ignorable, its velocity
+decays::
+
+    sage: LinearSystem([x], M=[[m]], S=[[c]], W=[[0]]).stability(positive=[m, c]).reason()
+    "every root of the characteristic polynomial has a negative real part (Liénard-Chipart conditions; Lyapunov's theorem on the first approximation); stability with respect to the rates of x (ignorable: x does not enter the linear equations through its value, it drifts)"
+
+REFERENCES:
+
+- A. M. Lyapunov, *The General Problem of the Stability of Motion*, 1892
+  (Taylor & Francis, 1992), §§ 24--27 (the first approximation).
+- V. V. Rumyantsev, A. S. Oziraner, *Stability and Stabilization of
+  Motion with Respect to Part of the Variables*, Nauka, 1987.
+- D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997,
+  ch. 5 and 6.
+"""
+from sage.matrix.constructor import matrix
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from ..algebra.determinants import fraction_free_det
+from ..algebra.solving import normalize
+from .spectrum import spectrum_regions
+from .verdict import StabilityVerdict, verdict_from_parts
+
+REASONS = {
+    'asymptotically stable': "every root of the characteristic polynomial has a negative "
+                             "real part (Liénard-Chipart conditions; Lyapunov's theorem on "
+                             "the first approximation)",
+    'stable in first approximation': "the roots of the characteristic polynomial on the "
+                                     "imaginary axis are simple (or semisimple), the others "
+                                     "have negative real parts: the linearized system is "
+                                     "stable, not asymptotically; the nonlinear terms decide "
+                                     "(critical case)",
+    'undecided': "every root is in the closed left half-plane, but a multiple root on the "
+                 "imaginary axis is not semisimple: the linearized solutions grow like t, "
+                 "and the nonlinear terms decide",
+    'unstable': "a root of the characteristic polynomial has a positive real part "
+                "(Lyapunov's theorem on the first approximation)",
+}
+
+
+def _zero_column(X, j):
+    return all(normalize(SR(X[i, j])).is_zero() for i in range(X.nrows()))
+
+
+def ignorable(system, with_respect_to=None):
+    r"""
+    The variables of the linear ``system`` left out of the stability
+    question: those not in ``with_respect_to`` if given (each must be
+    ignorable), else every variable whose value does not enter the
+    equations (a zero column of `W`, resp. of `J`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: from sage_dynsym.analysis.stability import ignorable
+        sage: psi, th, k = var('psi theta k')
+        sage: Ls = LinearSystem([psi, th], M=identity_matrix(2), S=zero_matrix(2),
+        ....:                   W=matrix([[0, 0], [0, k]]))
+        sage: ignorable(Ls), ignorable(Ls, with_respect_to=[psi, th])
+        ([psi], [])
+        sage: ignorable(Ls, with_respect_to=[psi])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability: theta enters the linear equations through its value (its column of W is not zero): it cannot be left out; with_respect_to= must list it (e.g. with_respect_to=[psi, theta])
+    """
+    X = system.W() if system.order() == 2 else system.jacobian()
+    name = 'W' if system.order() == 2 else 'J'
+    variables = system.variables()
+    if with_respect_to is None:
+        return [v for j, v in enumerate(variables) if _zero_column(X, j)]
+    kept = [SR(v) for v in with_respect_to]
+    unknown = [v for v in kept if v not in variables]
+    if unknown:
+        raise AnalysisError(f"{', '.join(map(str, unknown))} not among the variables "
+                            f"{variables} (with_respect_to=)", entry="stability")
+    dropped = [v for v in variables if v not in kept]
+    for v in dropped:
+        if not _zero_column(X, variables.index(v)):
+            raise AnalysisError(f"{v} enters the linear equations through its value (its "
+                                f"column of {name} is not zero): it cannot be left out; "
+                                f"with_respect_to= must list it (e.g. with_respect_to="
+                                f"[{', '.join(map(str, kept + [v]))}])", entry="stability")
+    return dropped
+
+
+def _reduced(system, dropped):
+    r"""``(polynomial, lam, A)``: the characteristic polynomial of the
+    system without the values of ``dropped`` (fraction-free, the factor
+    `\lambda` of each dropped variable divided out) and the matrix of the
+    reduced first-order form."""
+    lam = SR.symbol('lambda_stability')
+    variables = system.variables()
+    keep = [j for j, v in enumerate(variables) if v not in dropped]
+    A = system.jacobian()
+    n = len(variables)
+    if system.order() == 2:
+        # state (z, z'): the rows and columns of the dropped values go; the
+        # dropped columns of the characteristic matrix are lam (M lam + S)
+        chi_matrix = system.M() * lam ** 2 + system.S() * lam + system.W()
+        for j, v in enumerate(variables):
+            if v in dropped:
+                chi_matrix[:, j] = system.M()[:, j] * lam + system.S()[:, j]
+        rows = keep + list(range(n, 2 * n))
+    elif dropped:
+        # a zero column of A: det(lam - A) = lam det(lam - A without it)
+        chi_matrix = lam - A[keep, keep]
+        rows = keep
+    else:
+        chi_matrix, rows = system.characteristic_matrix(lam), keep
+    return fraction_free_det(chi_matrix).expand(), lam, A.matrix_from_rows_and_columns(rows, rows)
+
+
+def first_approximation(system, positive=(), dropped=()):
+    r"""
+    The verdict of the first approximation for the linear ``system``
+    without the values of the variables ``dropped`` (see the module
+    documentation): a partition of the parameter space into
+    asymptotically stable, stable in first approximation, undecided and
+    unstable parts.
+
+    EXAMPLES: a series RLC circuit, `L i' = -R i - u`, `C u' = i`::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: from sage_dynsym.analysis.stability import first_approximation
+        sage: i, u, L, R, C = var('i u L R C')
+        sage: Ls = LinearSystem([i, u], J=[[-R, -1], [1, 0]], B=diagonal_matrix([L, C]))
+        sage: first_approximation(Ls, positive=[L, C]).cases()
+        [asymptotically stable where [R > 0]: ..., unstable where [R < 0]: ...]
+    """
+    positive = list(positive)
+    chi, lam, A = _reduced(system, list(dropped))
+    if not chi.has(lam):
+        raise AnalysisError("no dynamics left: every variable was left out",
+                            entry="stability")
+    spectrum = spectrum_regions(chi, lam, positive, matrix=A)
+    parts = [('asymptotically stable', spectrum.asymptotic()),
+             ('stable in first approximation', spectrum.marginal()),
+             ('undecided', spectrum.undecided())]
+    return verdict_from_parts(parts, REASONS, spectrum.boundaries(), positive,
+                              method='first approximation')
+
+
+def _about(dropped, variables):
+    rates = ', '.join(map(str, dropped))
+    others = [v for v in variables if v not in dropped]
+    return (f"; stability with respect to {', '.join(map(str, others)) + ' and ' if others else ''}"
+            f"the rates of {rates} (ignorable: {rates} does not enter the linear equations "
+            "through its value, it drifts)")
+
+
+def linear_stability(system, positive=(), with_respect_to=None):
+    r"""
+    The stability of the zero solution of the linear ``system`` (a
+    :class:`~sage_dynsym.analysis.linear.LinearSystem`): see the module
+    documentation and :meth:`LinearSystem.stability
+    <sage_dynsym.analysis.linear.LinearSystem.stability>`.
+
+    EXAMPLES: gyroscopic stabilization, from the equations as written
+    (`\ddot x - g\dot y - a x = 0`, `\ddot y + g\dot x - b y = 0`)::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: from sage_dynsym.analysis.stability import linear_stability
+        sage: x, y, a, b, g = var('x y a b g')
+        sage: Ls = LinearSystem.from_equations(identity_matrix(2), matrix([[0, -g], [g, 0]]),
+        ....:                                  diagonal_matrix([-a, -b]), variables=[x, y])
+        sage: v = linear_stability(Ls, positive=[a, b, g])
+        sage: v.at({a: 1, b: 1, g: 3}), v.at({a: 1, b: 1, g: 1})
+        ('stable in first approximation', 'unstable')
+
+    TESTS: a kinetic matrix singular everywhere is refused::
+
+        sage: linear_stability(LinearSystem([x], M=[[0]], S=[[1]], W=[[a]]))
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stability: the kinetic matrix M = [(0)] is singular: the equations are not of second order in every coordinate; write them as a first-order system (LinearSystem(variables, J=..., B=...))
+    """
+    from .kelvin_chetaev import kelvin_chetaev
+    positive = list(positive)
+    dropped = ignorable(system, with_respect_to)
+    if system.order() == 2 and normalize(fraction_free_det(system.M())).is_zero():
+        raise AnalysisError(f"the kinetic matrix M = {list(system.M())} is singular: the "
+                            "equations are not of second order in every coordinate; write "
+                            "them as a first-order system (LinearSystem(variables, J=..., "
+                            "B=...))", entry="stability")
+    if system.order() == 2 and not dropped:
+        return kelvin_chetaev(system.M(), system.D(), system.G(), system.K(), system.P(),
+                              positive=positive)
+    verdict = first_approximation(system, positive, dropped)
+    if not dropped:
+        return verdict
+    about = _about(dropped, system.variables())
+    cases = [StabilityVerdict(c.verdict(), c.reason() + about, conditions=c.conditions(),
+                              method=c.method(), region=c.region(),
+                              boundaries=c.boundaries(), positive=positive)
+             for c in verdict.cases()]
+    if len(cases) == 1:
+        return cases[0]
+    return StabilityVerdict(verdict.verdict(), verdict.reason(), cases=cases,
+                            boundaries=verdict.boundaries(), positive=positive)
