@@ -141,3 +141,50 @@ def test_ignorable_coordinate_and_with_respect_to():
     assert w.verdict() == 'stable in first approximation'
     with pytest.raises(AnalysisError, match="y enters the linear equations"):
         Ls.stability(with_respect_to=[x])
+
+
+def bisect_threshold(stable, lo, hi, steps=60):
+    # the change of numerical stability between lo and hi
+    assert stable(lo) != stable(hi)
+    for _ in range(steps):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if stable(mid) == stable(lo) else (lo, mid)
+    return (lo + hi) / 2
+
+
+def test_gyroscopic_threshold_is_the_denested_biquadratic_root():
+    x, y, a, b, gg = var('x y a b g')
+    Ls = LinearSystem.from_equations(identity_matrix(2), [[0, -gg], [gg, 0]],
+                                     diagonal_matrix([-a, -b]), variables=[x, y])
+    v = Ls.stability(positive=[a, b, gg])
+    (crit,) = v.critical_values(gg)
+    assert bool((crit - a.sqrt() - b.sqrt()).simplify_full() == 0)
+    # numerically, at a = 2, b = 3: the eigenvalues leave the imaginary axis
+    A = Ls.jacobian()
+    point = {a: 2, b: 3}
+    found = bisect_threshold(lambda s: top_real_part(A, {**point, gg: s}) < 1e-9, 0.5, 10)
+    assert found == pytest.approx(float(crit.subs(point)), rel=1e-9)
+
+
+def test_jeffcott_whirl_speed_positive_only():
+    # Jeffcott rotor with external damping c_e and rotating (internal)
+    # damping c_i: unstable above Omega = omega_n (1 + c_e/c_i)
+    # (Crandall 1983; Genta, Dynamics of Rotating Systems, 2005, sec. 8.3)
+    x, y, mm, ce, ci, k, Om = var('x y m c_e c_i k Omega')
+    Ls = LinearSystem.from_equations(mm * identity_matrix(2), (ce + ci) * identity_matrix(2),
+                                     [[k, ci * Om], [-ci * Om, k]], variables=[x, y])
+    v = Ls.stability(positive=[mm, ce, ci, k, Om])
+    (crit,) = v.critical_values(Om)
+    assert bool((crit**2 - k / mm * (1 + ce / ci)**2).simplify_full() == 0)
+    assert crit.subs({k: 2, mm: 3, ce: 1, ci: 5}) > 0
+    # not declared positive: the mirror value -omega_n (1 + c_e/c_i) is critical too
+    w = Ls.stability(positive=[mm, ce, ci, k])
+    assert len(w.critical_values(Om)) == 2
+
+
+def test_sleeping_top_critical_spin():
+    Ls = sleeping_top()
+    v = Ls.stability(positive=[A_, C_, m, g, l])
+    values = {A_: 1, C_: QQ(3) / 2, m: 1, g: 1, l: 1, g3: 1}
+    # M3^2 = 4 A m g l gamma3 = 4
+    assert v.critical_values(M3, values=values) == [-2, 2]
