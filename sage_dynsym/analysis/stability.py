@@ -126,7 +126,7 @@ def ignorable(system, with_respect_to=None):
     return dropped
 
 
-def _reduced(system, dropped):
+def _reduced(system, dropped, positive):
     r"""``(polynomial, lam, A)``: the characteristic polynomial of the
     system without the values of ``dropped`` (fraction-free, the factor
     `\lambda` of each dropped variable divided out) and the matrix of the
@@ -150,7 +150,8 @@ def _reduced(system, dropped):
         rows = keep
     else:
         chi_matrix, rows = system.characteristic_matrix(lam), keep
-    return fraction_free_det(chi_matrix).expand(), lam, A.matrix_from_rows_and_columns(rows, rows)
+    return (fraction_free_det(chi_matrix, positive=positive).expand(), lam,
+            A.matrix_from_rows_and_columns(rows, rows))
 
 
 def first_approximation(system, positive=(), dropped=()):
@@ -171,7 +172,7 @@ def first_approximation(system, positive=(), dropped=()):
         [asymptotically stable where [R > 0]: ..., unstable where [R < 0]: ...]
     """
     positive = list(positive)
-    chi, lam, A = _reduced(system, list(dropped))
+    chi, lam, A = _reduced(system, list(dropped), positive)
     if not chi.has(lam):
         raise AnalysisError("no dynamics left: every variable was left out",
                             entry="stability")
@@ -181,6 +182,99 @@ def first_approximation(system, positive=(), dropped=()):
              ('undecided', spectrum.undecided())]
     return verdict_from_parts(parts, REASONS, spectrum.boundaries(), positive,
                               method='first approximation')
+
+
+def energy_stability(system, positive=(), seed=0):
+    r"""
+    The energy theorem for a first-order system `B\dot x = Jx` with `B`
+    symmetric positive definite and `J + J^T` negative semidefinite for
+    all values allowed by the declared signs (a passive circuit: `B` the
+    inductances and capacitances, `J + J^T` the resistances): `V = x^T B
+    x/2` has `\dot V = x^T (J + J^T) x/2 \le 0`, so the system is stable;
+    it is asymptotically stable iff no solution but zero keeps `\dot V =
+    0` (LaSalle), i.e. iff the pair `(J + J^T, B^{-1}J)` is observable --
+    decided here when a maximal minor of the observability matrix has a
+    sign fixed by the declared signs.
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+    (``'asymptotically stable'`` or ``'stable'``, everywhere), or ``None``
+    when the theorem does not apply
+
+    EXAMPLES: a series RLC circuit, and without its resistor::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: from sage_dynsym.analysis.stability import energy_stability
+        sage: i, u, L, R, C = var('i u L R C')
+        sage: energy_stability(LinearSystem([i, u], J=[[-R, -1], [1, 0]],
+        ....:                  B=diagonal_matrix([L, C])), positive=[L, R, C]).verdict()
+        'asymptotically stable'
+        sage: energy_stability(LinearSystem([i, u], J=[[0, -1], [1, 0]],
+        ....:                  B=diagonal_matrix([L, C])), positive=[L, C]).verdict()
+        'stable'
+        sage: energy_stability(LinearSystem([i, u], J=[[-R, -1], [1, 0]],
+        ....:                  B=diagonal_matrix([L, C])), positive=[L, C]) is None
+        True
+
+    REFERENCES:
+
+    - J. P. LaSalle, Some extensions of Liapunov's second method, *IRE
+      Trans. Circuit Theory* 7 (1960) 520--527.
+    """
+    from .quadratic_forms import definiteness_conditions, semidefiniteness_conditions
+    B = system.lhs_matrix()
+    if system.order() != 1 or B != B.transpose():
+        return None
+    J = -system.characteristic_matrix(0)
+    N = J + J.transpose()
+    if definiteness_conditions(B, positive=positive) != [] or \
+            semidefiniteness_conditions(-N, positive=positive) != []:
+        return None
+    why = ("the energy x^T B x/2 (B > 0) is a Lyapunov function: its derivative x^T (J + J^T) "
+           "x/2 is negative semidefinite (Lyapunov's theorem")
+    if _observable(N, system.jacobian(), positive, seed):
+        return StabilityVerdict('asymptotically stable', why + "); only the zero solution keeps "
+                                "it constant: (J + J^T, A) is observable (LaSalle)",
+                                method='energy', region=[[]], positive=positive)
+    if N.is_zero():
+        return StabilityVerdict('stable', why + "; the energy is conserved)",
+                                method='energy', region=[[]], positive=positive)
+    return None
+
+
+def _observable(N, A, positive, seed):
+    r"""Whether ``(N, A)`` is observable for all values allowed by the
+    declared signs: ``n`` rows of `N, NA, NA^2, \dots`, independent at a
+    random point, whose determinant has a sign fixed by the declarations."""
+    import random
+    from sage.rings.rational_field import QQ
+    from ..algebra.translation import Translation
+    from ..algebra.polynomials import positive_polynomial
+    n = A.nrows()
+    rows, power = [], N
+    for _ in range(n):
+        rows += list(power.rows())
+        power = (power * A).apply_map(lambda e: SR(e).normalize())
+    O = matrix(SR, rows)
+    symbols = sorted({v for e in O.list() for v in SR(e).variables()}, key=str)
+    rng = random.Random(seed)
+    point = {v: QQ(rng.randint(100, 300)) / 100 for v in symbols}
+    try:
+        numeric = O.subs(point).change_ring(QQ)
+    except (TypeError, ValueError, ZeroDivisionError):
+        return False
+    chosen = []
+    for k in range(O.nrows()):
+        if numeric.matrix_from_rows(chosen + [k]).rank() == len(chosen) + 1:
+            chosen.append(k)
+    if len(chosen) < n:
+        return False
+    det = fraction_free_det(O.matrix_from_rows(chosen), positive=positive)
+    T = Translation([], [], extra=[det])
+    if T.flat_ring() is None:
+        return not SR(det).is_zero()
+    f = T.flat_ring()(T.fraction(det))
+    names = set(T.positive_names(positive))
+    return positive_polynomial(f, names) or positive_polynomial(-f, names)
 
 
 def _about(dropped, variables):
@@ -228,9 +322,9 @@ def linear_stability(system, positive=(), with_respect_to=None):
     if system.order() == 2 and not dropped:
         return kelvin_chetaev(system.M(), system.D(), system.G(), system.K(), system.P(),
                               positive=positive)
-    verdict = first_approximation(system, positive, dropped)
     if not dropped:
-        return verdict
+        return energy_stability(system, positive) or first_approximation(system, positive)
+    verdict = first_approximation(system, positive, dropped)
     about = _about(dropped, system.variables())
     cases = [StabilityVerdict(c.verdict(), c.reason() + about, conditions=c.conditions(),
                               method=c.method(), region=c.region(),
