@@ -49,6 +49,12 @@ def _candidates(boundaries, parameter, values, complete):
     for relations in boundaries.values():
         for r in relations:
             f = SR(r.lhs() - r.rhs()) if SR(r).is_relational() else SR(r)
+            if complete and not _rational(f.subs(values), parameter):
+                # irrational coefficients (a number field): exact real roots
+                roots = real_algebraic_roots(f.subs(values), parameter,
+                                             entry="critical_values")
+                found += [v for v in roots if all(v != w for w in found)]
+                continue
             for factor, _ in f.factor_list():
                 if not factor.has(parameter):
                     continue
@@ -68,6 +74,13 @@ def _candidates(boundaries, parameter, values, complete):
                                         "numbers", entry="critical_values")
                 found += [v for v in roots if all(str(v) != str(w) for w in found)]
     return found
+
+
+def _rational(f, parameter):
+    try:
+        return all(SR(c).pyobject() in QQ for c, _ in f.coefficients(parameter))
+    except (TypeError, ValueError):
+        return False
 
 
 def _at(value, point):

@@ -311,8 +311,33 @@ def linear_stability(system, positive=(), with_respect_to=None):
         ...
         AnalysisError: stability: the kinetic matrix M = [(0)] is singular: the equations are not of second order in every coordinate; write them as a first-order system (LinearSystem(variables, J=..., B=...))
     """
-    from .kelvin_chetaev import kelvin_chetaev
+    from ..algebra.number_fields import AlgebraicConstants
     positive = list(positive)
+    constants = AlgebraicConstants(_entries(system))
+    if constants.is_trivial():
+        return _decide(system, positive, with_respect_to)
+    # irrational constants (cos(pi/10)): in a number field, its generator a
+    # positive symbol, put back at the end
+    forward = constants.forward
+    LinearSystem = type(system)     # not imported: linear.py asks this module
+    if system.order() == 2:
+        mapped = LinearSystem(system.variables(), M=system.M().apply_map(forward),
+                              S=system.S().apply_map(forward), W=system.W().apply_map(forward))
+    else:
+        mapped = LinearSystem(system.variables(), J=(-system.characteristic_matrix(0))
+                              .apply_map(forward), B=system.lhs_matrix().apply_map(forward))
+    verdict = _decide(mapped, positive + [constants.symbol()], with_respect_to)
+    return _rebuilt(verdict, positive, expression=constants.back)
+
+
+def _entries(system):
+    if system.order() == 2:
+        return system.M().list() + system.S().list() + system.W().list()
+    return system.characteristic_matrix(0).list() + system.lhs_matrix().list()
+
+
+def _decide(system, positive, with_respect_to):
+    from .kelvin_chetaev import kelvin_chetaev
     dropped = ignorable(system, with_respect_to)
     if system.order() == 2 and normalize(fraction_free_det(system.M())).is_zero():
         raise AnalysisError(f"the kinetic matrix M = {list(system.M())} is singular: the "
@@ -324,13 +349,30 @@ def linear_stability(system, positive=(), with_respect_to=None):
                               positive=positive)
     if not dropped:
         return energy_stability(system, positive) or first_approximation(system, positive)
-    verdict = first_approximation(system, positive, dropped)
     about = _about(dropped, system.variables())
-    cases = [StabilityVerdict(c.verdict(), c.reason() + about, conditions=c.conditions(),
-                              method=c.method(), region=c.region(),
-                              boundaries=c.boundaries(), positive=positive)
+    return _rebuilt(first_approximation(system, positive, dropped), positive,
+                    reason=lambda r: r + about)
+
+
+def _rebuilt(verdict, positive, reason=None, expression=None):
+    r"""``verdict`` with each case's reason and relations mapped."""
+    def relation(r):
+        return r.operator()(expression(r.lhs()), expression(r.rhs())) if expression else r
+
+    def region(alternatives):
+        return None if alternatives is None else [[relation(r) for r in alt]
+                                                  for alt in alternatives]
+
+    def boundaries(found):
+        return {kind: [relation(r) for r in rs] for kind, rs in found.items()}
+
+    cases = [StabilityVerdict(c.verdict(), reason(c.reason()) if reason else c.reason(),
+                              conditions=[expression(e) if expression else e
+                                          for e in c.conditions()],
+                              method=c.method(), region=region(c.region()),
+                              boundaries=boundaries(c.boundaries()), positive=positive)
              for c in verdict.cases()]
     if len(cases) == 1:
         return cases[0]
     return StabilityVerdict(verdict.verdict(), verdict.reason(), cases=cases,
-                            boundaries=verdict.boundaries(), positive=positive)
+                            boundaries=boundaries(verdict.boundaries()), positive=positive)
