@@ -68,7 +68,7 @@ from sage.functions import all as sage_functions
 from sage.misc.latex import latex
 from sage.symbolic.constants import pi, e as euler_e, I as imaginary_unit
 from sage.rings.cc import CC
-from sage.rings.real_mpfr import RR
+from sage.rings.real_mpfr import RR, RealNumber
 from sage.symbolic.ring import SR
 
 from .errors import ModelError, DescriptionError, brief
@@ -474,6 +474,57 @@ def sage_numbers(value):
     if operator is None:
         return value
     return operator(*[sage_numbers(a) for a in value.operands()])
+
+
+def exact_decimals(value):
+    r"""
+    ``value`` (a number, expression, dict or list of them) with every
+    floating-point number replaced by the exact decimal it prints as:
+    ``0.3`` is `3/10`, ``0.3141592653589793`` is `3141592653589793/10^{16}`
+    (a Python float by its shortest round-trip text, a Sage literal by the
+    digits typed). Constraints that hold for the symbols then hold for the
+    values (`\cos^2 + \sin^2 = 1` exactly), and no rounding enters.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.symbols import exact_decimals
+        sage: x = var('x')
+        sage: exact_decimals({'k': [2r, 1.5*x, 0.3r]})
+        {'k': [2, 3/2*x, 3/10]}
+        sage: exact_decimals(0.3141592653589793)
+        3141592653589793/10000000000000000
+        sage: exact_decimals(9.81), exact_decimals(float(85))
+        (981/100, 85)
+
+    TESTS::
+
+        sage: exact_decimals(float('inf'))
+        Traceback (most recent call last):
+        ...
+        ModelError: values: not a finite number: inf
+    """
+    from fractions import Fraction
+    from sage.rings.rational_field import QQ
+    if isinstance(value, dict):
+        return {k: exact_decimals(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return type(value)(exact_decimals(v) for v in value)
+    if isinstance(value, (float, RealNumber)):
+        text = repr(value) if isinstance(value, float) else \
+            (getattr(value, 'literal', None) or str(value))
+        try:
+            return QQ(Fraction(text))
+        except (ValueError, OverflowError):
+            raise ModelError(f"not a finite number: {value}", entry="values") from None
+    if not hasattr(value, 'operator'):
+        return value
+    if value.is_numeric():
+        number = value.pyobject()
+        return SR(exact_decimals(number)) if not value.is_exact() else value
+    operator = value.operator()
+    if operator is None:
+        return value
+    return operator(*[exact_decimals(a) for a in value.operands()])
 
 
 def is_exact(expr):

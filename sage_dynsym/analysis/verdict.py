@@ -44,6 +44,7 @@ EXAMPLES::
 from sage.structure.sage_object import SageObject
 
 from ..errors import AnalysisError
+from ..symbols import exact_decimals
 from ..algebra.conditions import region_holds
 from ..algebra.regions import partition, prune_empty, drop_redundant
 
@@ -217,16 +218,17 @@ class StabilityVerdict(SageObject):
         INPUT:
 
         - ``values`` -- dict ``{parameter: number}`` for every parameter of
-          the regions
+          the regions (a float is the exact decimal it prints as)
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
             sage: k = var('k')
             sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[k]]))
-            sage: v.at({k: 2}), v.at({k: -2}), v.at({k: 0})
-            ('stable', 'unstable', None)
+            sage: v.at({k: 2}), v.at({k: -2}), v.at({k: 0}), v.at({k: 0.0})
+            ('stable', 'unstable', None, None)
         """
+        values = exact_decimals(values)
         for case in self.cases():
             region = case.region()
             if region is None:
@@ -290,7 +292,8 @@ class StabilityVerdict(SageObject):
         """
         from .critical import critical_values
         return critical_values(self.region(), self.boundaries(), parameter,
-                               positive=self._positive, values=values, samples=samples)
+                               positive=self._positive, values=exact_decimals(values),
+                               samples=samples)
 
     def _repr_(self):
         cond = f" if {self._conditions}" if self._conditions else ""
