@@ -295,6 +295,38 @@ class StabilityVerdict(SageObject):
                                positive=self._positive, values=exact_decimals(values),
                                samples=samples)
 
+    def report_lines(self, indent="  "):
+        r"""
+        The verdict as report lines: the verdict, the method and the
+        reason; with several cases, each with its region.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: m, c, k = var('m c k')
+            sage: v = LinearSystem([var('x')], M=[[m]], S=[[c]], W=[[k]]).stability(positive=[m, k])
+            sage: print("\n".join(v.report_lines()))
+              stability depends on the parameters:
+                asymptotically stable (first approximation) where [c > 0]: every root ...
+                unstable (first approximation) where [c < 0]: a root ...
+        """
+        def where(case):
+            region = case.region()
+            if not region or region == [[]]:
+                return ""
+            return " where " + " or ".join("[" + ", ".join(map(str, alt)) + "]"
+                                           for alt in region)
+
+        def method(case):
+            return f" ({case.method()})" if case.method() else ""
+        if len(self.cases()) == 1:
+            case = self.cases()[0]
+            return [f"{indent}stability: {case.verdict()}{method(case)}{where(case)}: "
+                    f"{case.reason()}"]
+        return [f"{indent}stability depends on the parameters:"] + \
+            [f"{indent}  {case.verdict()}{method(case)}{where(case)}: {case.reason()}"
+             for case in self.cases()]
+
     def _repr_(self):
         cond = f" if {self._conditions}" if self._conditions else ""
         if self._region is not None and self._region != [[]]:
@@ -304,7 +336,7 @@ class StabilityVerdict(SageObject):
 
 
 def verdict_from_parts(parts, reasons, boundaries, positive=(), domain=((),),
-                       method='first approximation', methods=None):
+                       method='first approximation', methods=None, rest='unstable'):
     r"""
     The verdict whose cases partition ``domain``: the regions of ``parts``
     made disjoint by precedence, and ``'unstable'`` for the rest (the
@@ -323,6 +355,8 @@ def verdict_from_parts(parts, reasons, boundaries, positive=(), domain=((),),
       taken (e.g. where the kinetic matrix is positive definite)
     - ``method`` -- the method recorded in each case, unless
       ``methods`` (a dict ``{verdict: method}``) names another
+    - ``rest`` -- (default: ``'unstable'``) the verdict of the rest of
+      ``domain``
 
     OUTPUT: a :class:`StabilityVerdict`: the single case, or ``'depends on
     the parameters'`` with the cases
@@ -343,7 +377,7 @@ def verdict_from_parts(parts, reasons, boundaries, positive=(), domain=((),),
     # stable set is M3^2 > 4 A m g l alone)
     found = [(name, drop_redundant(prune_empty(region, positive), positive)
               if region is not None else None)
-             for name, region in partition(parts, rest='unstable', domain=domain,
+             for name, region in partition(parts, rest=rest, domain=domain,
                                            positive=positive)]
     cases = []
     for name, region in found:
