@@ -188,3 +188,23 @@ def test_sleeping_top_critical_spin():
     values = {A_: 1, C_: QQ(3) / 2, m: 1, g: 1, l: 1, g3: 1}
     # M3^2 = 4 A m g l gamma3 = 4
     assert v.critical_values(M3, values=values) == [-2, 2]
+
+
+def test_heavy_top_report_has_no_gap():
+    # the Lie-Poisson heavy top (examples/heavy_top_e3.yaml): its stationary
+    # family M1 = M2 = gamma1 = gamma2 = 0 is stable (Routh-Lyapunov) where
+    # M3^2 > 4 A m g l gamma3 and unstable (first approximation) in all the
+    # rest, the former unreported band included (numpy: +0.22 at M3^2 = 3.8)
+    from sage_dynsym import load
+    from sage_dynsym.description import example_path
+    top = load(example_path('heavy_top_e3.yaml'))
+    M3s = var('M3')
+    family = next(s for s in top.stationary_solutions([M3s])
+                  if set(s.point()) >= {M1, M2, g1, g2}
+                  and all(s.point()[x] == 0 for x in (M1, M2, g1, g2)))
+    v = family.stability()
+    point = {A_: 1, C_: QQ(3) / 2, m: 1, g: 1, l: 1, g3: 1}
+    assert v.at({**point, M3: SR(QQ(38) / 10).sqrt()}) == 'unstable'
+    assert v.at({**point, M3: SR(QQ(41) / 10).sqrt()}) == 'stable'
+    assert top_real_part(sleeping_top().jacobian(),
+                         {**point, M3: SR(QQ(38) / 10).sqrt()}) > 0.2

@@ -61,10 +61,10 @@ a root with positive real part::
     sage: s.stability_region(sign='negative')
     [[A1 - A2 < 0, A1 - A3 < 0, M1 != 0]]
     sage: s.stability()
-    depends on the parameters: see cases()
+    depends on the parameters: see cases(): stable, unstable
     sage: for case in s.stability().cases(): print(case.verdict(), case.method(), case.region())
     stable Routh-Lyapunov [[A1 - A2 > 0, A1 - A3 > 0, M1 != 0], [A1 - A2 < 0, A1 - A3 < 0, M1 != 0]]
-    unstable first approximation [[(A1 - A2)*(A1 - A3) < 0, M1 != 0]]
+    unstable first approximation [[A1 - A3 > 0, A1 - A2 < 0], [A1 - A2 > 0, A1 - A3 < 0]]
 
 With a prescribed level of `V` the families become isolated points, two
 conjugate branches each::
@@ -102,9 +102,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError
 from ..arguments import known_symbols, symbol_arguments
-from ..algebra.conditions import (positive_conditions, positive_conditions_all, conjunction,
+from ..algebra.conditions import (positive_conditions_all, conjunction,
                                   simplify_conjunction)
-from .kelvin_chetaev import StabilityVerdict
+from .verdict import verdict_from_parts
 from .linear import LinearSystem
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
@@ -724,10 +724,11 @@ class StationarySolution(SageObject):
             sage: stationary_motions(L)[3].stability(positive=[m, l, g]).method()
             'first approximation'
 
-        Where neither method decides, the first approximation may still
-        give stability with simple roots on the imaginary axis: the sleeping
-        top, gyroscopically stabilized for `p^2 > 4Amgl` (the gap `2Amgl <
-        p^2 < 4Amgl` is unstable, but no coefficient shows it)::
+        Where the second variation does not decide, the first approximation
+        (:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`) covers
+        the rest: the sleeping top, gyroscopically stabilized -- stable in
+        first approximation -- exactly for `p^2 > 4Amgl`, unstable below
+        (Maxwell's criterion)::
 
             sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
             sage: alpha, beta, phi, A, C = var('alpha beta phi A C')
@@ -738,57 +739,38 @@ class StationarySolution(SageObject):
             sage: sols = stationary_motions(R, positive=[A, C, m, g, l])
             sage: v = next(s for s in sols if s.point() == {alpha: 0, beta: 0}).stability()
             sage: [(case.verdict(), case.region()) for case in v.cases()]
-            [('unstable', [[2*A*g*l*m - p_phi^2 > 0]]),
-             ('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]])]
+            [('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]]),
+             ('unstable', [[4*A*g*l*m - p_phi^2 > 0]])]
         """
         positive = self._positive(positive)
-        cases = []
-        signs = self._problem.signs
         region = []
-        for sign in signs:
+        for sign in self._problem.signs:
             for alt in self.stability_region(positive, sign):
                 if alt not in region:
                     region.append(alt)
         existence = simplify_conjunction(self.conditions(), positive) or []
-        if region:
-            cases.append(StabilityVerdict(
-                'stable', "the second variation of the Lyapunov function is definite",
-                method='Routh-Lyapunov', region=region))
         lin = self.linear_system() if self.is_explicit() and \
             self.is_equilibrium() is not False else None
-        if lin is not None:
-            asymptotic, unstable = _first_approximation(lin, positive)
-            for verdict, alts, why in (
-                    ('asymptotically stable', asymptotic,
-                     "all roots of the characteristic polynomial have negative real "
-                     "parts (Liénard-Chipart)"),
-                    ('unstable', unstable, "the characteristic polynomial has a root "
-                     "with positive real part (Lyapunov's theorem on the first "
-                     "approximation)")):
-                alts = [a for a in (simplify_conjunction(existence + alt, positive)
-                                    for alt in alts) if a is not None]
-                if alts:
-                    cases.append(StabilityVerdict(verdict, why, method='first approximation',
-                                                  region=alts))
-            if not region:
-                # where neither decides: roots simple on the imaginary axis
-                alts = [a for a in (simplify_conjunction(existence + alt, positive)
-                                    for alt in _marginal(lin, positive)) if a is not None]
-                if alts:
-                    cases.append(StabilityVerdict(
-                        'stable in first approximation', "the roots of the characteristic "
-                        "polynomial on the imaginary axis are simple (or semisimple), the "
-                        "others have negative real parts: the linearized system is stable; "
-                        "the nonlinear terms decide (critical case)",
-                        method='first approximation', region=alts))
-        for case in cases:
-            if any(set(map(str, alt)) <= set(map(str, existence)) for alt in case.region()):
-                return case
-        if not cases:
-            return StabilityVerdict('undecided', "neither the second variation nor the "
-                                    "first approximation decides (critical case)",
-                                    region=[[]])
-        return StabilityVerdict('depends on the parameters', "see cases()", cases=cases)
+        # the first approximation is the one stability service's; the
+        # Routh-Lyapunov theorem adds 'stable' (for the nonlinear system)
+        first, why = [], "neither the second variation nor the first approximation decides"
+        try:
+            first = lin.stability(positive=positive).cases() if lin is not None else []
+        except AnalysisError as err:
+            why += f" ({err})"
+        order = ('asymptotically stable', 'stable', 'stable in first approximation',
+                 'undecided', 'unstable')
+        regions = {}
+        for name, alts in [(c.verdict(), c.region()) for c in first] + [('stable', region)]:
+            if alts:
+                regions[name] = regions.get(name, []) + [a for a in alts
+                                                         if a not in regions.get(name, [])]
+        parts = sorted(regions.items(), key=lambda part: order.index(part[0]))
+        reasons = {c.verdict(): c.reason() for c in first}
+        reasons['stable'] = "the second variation of the Lyapunov function is definite"
+        reasons.setdefault('undecided', why)
+        return verdict_from_parts(parts, reasons, {}, positive, domain=[existence],
+                                  methods={'stable': 'Routh-Lyapunov'}, rest='undecided')
 
     def check(self, equations):
         r"""
@@ -813,56 +795,6 @@ class StationarySolution(SageObject):
                 raise AnalysisError(f"{self.point()} does not annul the right-hand "
                                     f"side {k}, {X}", entry="stationary_solutions")
         return True
-
-
-def _first_approximation(lin, positive):
-    r"""Regions (alternatives) of asymptotic stability and of instability
-    from the characteristic polynomial of ``lin``."""
-    from .hurwitz import lienard_chipart_conditions
-    from ..algebra.translation import Translation
-    lam = SR.var('lambda_')
-    p = lin.characteristic_polynomial(lam, positive=positive)
-    if not SR(p).has(lam):          # no dynamics left (e.g. a zero Lagrangian)
-        return [], []
-    T = Translation([], [], extra=[p])
-    f = T.flat_ring()(T.fraction(p))
-    gen = T.flat_ring()(T.fraction(lam))
-    coefficients = [T.symbolic(f.coefficient({gen: k})) if k else T.symbolic(f.subs({gen: 0}))
-                    for k in range(f.degree(gen), -1, -1)]
-    zero_roots = 0
-    while len(coefficients) > 1 and coefficients[-1].is_zero():
-        coefficients.pop()
-        zero_roots += 1
-    a0 = coefficients[0]
-    even = all(c.is_zero() for c in coefficients[1::2])
-    tested = coefficients[0::2] if even else coefficients
-    unstable = []
-    for c in tested[1:]:
-        cond = positive_conditions(-a0 * c, positive)
-        if cond is not None and cond not in unstable:
-            unstable.append(cond)
-    asymptotic = []
-    if not zero_roots and not even:
-        reduced = sum(c * lam ** k for k, c in enumerate(reversed(coefficients)))
-        lc = lienard_chipart_conditions((a0 * reduced).expand(), lam, positive=positive)
-        cond = positive_conditions_all(lc, positive) if lc else []
-        if cond is not None:
-            asymptotic.append(cond)
-    return asymptotic, unstable
-
-
-def _marginal(lin, positive):
-    r"""The region where ``lin`` is stable in first approximation, not
-    asymptotically (:mod:`.spectrum`); ``[]`` if nowhere or not decided."""
-    from .spectrum import spectrum_regions
-    lam = SR.symbol()
-    p = lin.characteristic_polynomial(lam, positive=positive)
-    if not SR(p).has(lam):
-        return []
-    try:
-        return spectrum_regions(p, lam, positive, matrix=lin.jacobian()).marginal() or []
-    except (AnalysisError, ArithmeticError, ValueError, TypeError, ZeroDivisionError):
-        return []
 
 
 class StationarySolutions(SolutionList):
@@ -963,7 +895,7 @@ class StationarySolutions(SolutionList):
               solution 1 (isolated): theta = 0
                 stability: stable (Routh-Lyapunov): the second variation of the Lyapunov function is definite
               solution 2 (isolated): theta = pi
-                stability: unstable (first approximation): the characteristic polynomial has a root with positive real part (Lyapunov's theorem on the first approximation)
+                stability: unstable (first approximation): the potential energy has an odd degree of instability (1): no gyroscopic or dissipative forces can stabilize it (Thomson-Tait-Chetaev; Kelvin-Chetaev, 3rd theorem)
         """
         if equation is None:
             def equation(lines, e):
