@@ -68,3 +68,19 @@ def test_rlc_ladder_free_circuit_is_asymptotically_stable():
     for _ in range(10):
         point = {s: QQ(rng.randint(1, 50)) / 10 for s in values}
         assert max(eigenvalues(linear.jacobian(), point).real) < 0
+
+
+def test_rlc_ladder_report_and_map_agree():
+    # the report's verdict (the service) and the map's numerical classes
+    # (eigenvalues of the same free state equations) over a grid of R1
+    import numpy as np
+    from sage_dynsym import stability_map
+    from sage_dynsym.report import report
+    C = load(example_path('rlc_ladder.yaml'))
+    text = report(C)
+    section = text[text.index("Stability of the free circuit"):]
+    assert "stability: asymptotically stable" in section.splitlines()[-1] or \
+        any(line.startswith("  stability: asymptotically stable") for line in section.splitlines())
+    fixed = {var(n): 1 for n in ('C1', 'C2', 'C3', 'L1', 'L2', 'L3', 'R2', 'R3', 'R4')}
+    smap = stability_map(C, {var('R1'): (QQ(1) / 10, 5, 11)}, fixed=fixed)
+    assert np.all(smap.stable())
