@@ -184,13 +184,3 @@ def free_stability_lines(circuit, L, context):
         check_routh_scheme(poly, lam, context.budget)
         verdict = system.stability(positive=values)
     return lines + verdict.report_lines()
-    check_routh_scheme(poly, lam, context.budget)
-    conditions = lienard_chipart_conditions(poly, lam, positive=values, budget=context.budget)
-    if conditions:
-        lines.append("  Lienard-Chipart conditions (each > 0), element values positive:")
-        for c in conditions:
-            lines += formula_lines("", c, indent="    ")
-    else:
-        lines.append("  asymptotically stable for all positive element values "
-                     "(Lienard-Chipart conditions hold identically)")
-    return lines
