@@ -106,7 +106,7 @@ def ignorable(system, with_respect_to=None):
         ...
         AnalysisError: stability: theta enters the linear equations through its value (its column of W is not zero): it cannot be left out; with_respect_to= must list it (e.g. with_respect_to=[psi, theta])
     """
-    X = system.W() if system.order() == 2 else system.jacobian()
+    X = system.W() if system.order() == 2 else system.characteristic_matrix(0)
     name = 'W' if system.order() == 2 else 'J'
     variables = system.variables()
     if with_respect_to is None:
@@ -129,29 +129,26 @@ def ignorable(system, with_respect_to=None):
 def _reduced(system, dropped, positive):
     r"""``(polynomial, lam, A)``: the characteristic polynomial of the
     system without the values of ``dropped`` (fraction-free, the factor
-    `\lambda` of each dropped variable divided out) and the matrix of the
-    reduced first-order form."""
+    `\lambda` of each dropped variable divided out: its column of the
+    characteristic matrix is `\lambda` times that of `M\lambda + S`, resp.
+    of `B`) and the matrix of the reduced first-order form (``None`` when
+    `M`, resp. `B`, is singular: a descriptor system, whose finite roots
+    are those of the polynomial)."""
     lam = SR.symbol('lambda_stability')
     variables = system.variables()
     keep = [j for j, v in enumerate(variables) if v not in dropped]
-    A = system.jacobian()
     n = len(variables)
-    if system.order() == 2:
-        # state (z, z'): the rows and columns of the dropped values go; the
-        # dropped columns of the characteristic matrix are lam (M lam + S)
-        chi_matrix = system.M() * lam ** 2 + system.S() * lam + system.W()
-        for j, v in enumerate(variables):
-            if v in dropped:
-                chi_matrix[:, j] = system.M()[:, j] * lam + system.S()[:, j]
-        rows = keep + list(range(n, 2 * n))
-    elif dropped:
-        # a zero column of A: det(lam - A) = lam det(lam - A without it)
-        chi_matrix = lam - A[keep, keep]
-        rows = keep
-    else:
-        chi_matrix, rows = system.characteristic_matrix(lam), keep
-    return (fraction_free_det(chi_matrix, positive=positive).expand(), lam,
-            A.matrix_from_rows_and_columns(rows, rows))
+    chi_matrix = system.characteristic_matrix(lam)
+    lead = system.M() if system.order() == 2 else system.lhs_matrix()
+    for j, v in enumerate(variables):
+        if v in dropped:
+            chi_matrix[:, j] = lead[:, j] * lam + system.S()[:, j] \
+                if system.order() == 2 else lead[:, j]
+    # state (z, z') of the second-order form: the dropped values go
+    rows = keep + list(range(n, 2 * n)) if system.order() == 2 else keep
+    A = None if normalize(fraction_free_det(lead)).is_zero() else \
+        system.jacobian().matrix_from_rows_and_columns(rows, rows)
+    return fraction_free_det(chi_matrix, positive=positive).expand(), lam, A
 
 
 def first_approximation(system, positive=(), dropped=()):
@@ -304,12 +301,11 @@ def linear_stability(system, positive=(), with_respect_to=None):
         sage: v.at({a: 1, b: 1, g: 3}), v.at({a: 1, b: 1, g: 1})
         ('stable in first approximation', 'unstable')
 
-    TESTS: a kinetic matrix singular everywhere is refused::
+    TESTS: a kinetic matrix singular everywhere (a coordinate of first
+    order, `\dot x + ax = 0`): the finite roots decide::
 
-        sage: linear_stability(LinearSystem([x], M=[[0]], S=[[1]], W=[[a]]))
-        Traceback (most recent call last):
-        ...
-        AnalysisError: stability: the kinetic matrix M = [(0)] is singular: the equations are not of second order in every coordinate; write them as a first-order system (LinearSystem(variables, J=..., B=...))
+        sage: linear_stability(LinearSystem([x], M=[[0]], S=[[1]], W=[[a]])).cases()
+        [asymptotically stable where [a > 0]: ..., unstable where [a < 0]: ...]
     """
     from ..algebra.number_fields import AlgebraicConstants
     positive = list(positive)
@@ -339,12 +335,8 @@ def _entries(system):
 def _decide(system, positive, with_respect_to):
     from .kelvin_chetaev import kelvin_chetaev
     dropped = ignorable(system, with_respect_to)
-    if system.order() == 2 and normalize(fraction_free_det(system.M())).is_zero():
-        raise AnalysisError(f"the kinetic matrix M = {list(system.M())} is singular: the "
-                            "equations are not of second order in every coordinate; write "
-                            "them as a first-order system (LinearSystem(variables, J=..., "
-                            "B=...))", entry="stability")
-    if system.order() == 2 and not dropped:
+    if system.order() == 2 and not dropped and \
+            not normalize(fraction_free_det(system.M())).is_zero():
         return kelvin_chetaev(system.M(), system.D(), system.G(), system.K(), system.P(),
                               positive=positive)
     if not dropped:
