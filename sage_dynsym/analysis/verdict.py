@@ -183,6 +183,19 @@ class StabilityVerdict(SageObject):
         """
         return list(self._cases) if self._cases else [self]
 
+    def case(self, verdict):
+        r"""The case with the verdict ``verdict`` (``None`` if there is none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
+            sage: k = var('k')
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[k]]))
+            sage: v.case('stable').region(), v.case('asymptotically stable')
+            ([[k > 0]], None)
+        """
+        return next((c for c in self.cases() if c.verdict() == verdict), None)
+
     def boundaries(self):
         r"""
         The boundaries of the stable set by kind: a dict, e.g.
