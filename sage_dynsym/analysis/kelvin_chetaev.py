@@ -1,6 +1,7 @@
 r"""
-Stability of `M\ddot q + (D + 2G)\dot q + (K + P)q = 0`: the structure of
-forces and the first approximation
+Stability of `M\ddot q + (D + 2G)\dot q + (K + P)q = 0` (``G`` half the skew
+part of the velocity matrix): the structure of forces and the first
+approximation
 
 For a linear (or linearized) mechanical system with `M > 0` (kinetic),
 `D = D^T` (dissipative), `G = -G^T` (gyroscopic), `K = K^T` (potential)
@@ -256,9 +257,14 @@ def _negative_eigenvalues(K):
 
 def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     r"""
-    The stability of the zero solution of `M\ddot z + (D + 2G)\dot z + (K +
-    P) z = 0`, exact, with the regions of the parameters (see the module
-    documentation).
+    ``G`` is HALF the skew part of the velocity matrix: the system is
+    `M\ddot z + (D + 2G)\dot z + (K + P) z = 0` (for the matrices of one's
+    own equations `M\ddot z + S\dot z + Wz = 0` use
+    :meth:`LinearSystem.from_equations(M, S, W)
+    <sage_dynsym.analysis.linear.LinearSystem.from_equations>` and its
+    :meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`). The
+    stability of its zero solution, exact, with the regions of the
+    parameters (see the module documentation).
 
     INPUT:
 
