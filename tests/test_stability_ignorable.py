@@ -84,3 +84,20 @@ def test_rlc_ladder_report_and_map_agree():
     fixed = {var(n): 1 for n in ('C1', 'C2', 'C3', 'L1', 'L2', 'L3', 'R2', 'R3', 'R4')}
     smap = stability_map(C, {var('R1'): (QQ(1) / 10, 5, 11)}, fixed=fixed)
     assert np.all(smap.stable())
+
+
+def test_rolling_hoop_threshold():
+    # a thin hoop (A = m r^2/2, C = m r^2) rolls upright stably iff
+    # C (C + m r^2) W^2 > m g r A, i.e. W^2 > g/(4 r) (Routh, art. 244;
+    # the uniform disk's g/(3 r) with the hoop's moments of inertia)
+    m, r, A, C, g, W = var('m r A C g W')
+    S = system(DISK).subs({A: m * r ** 2 / 2, C: m * r ** 2})
+    hoop = linearize(S, S.operating_point('upright'))
+    v = hoop.stability(positive=[m, r, g])
+    for case in v.cases():
+        for alt in case.region():
+            for rel in alt:
+                assert bool(((rel.lhs() - rel.rhs()) / (4 * r * W ** 2 - g))
+                            .simplify_full().is_constant()), rel
+    assert v.at({m: 1, r: 1, g: 4, W: QQ(11) / 10}) == 'stable in first approximation'
+    assert v.at({m: 1, r: 1, g: 4, W: QQ(9) / 10}) == 'unstable'
