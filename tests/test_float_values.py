@@ -6,6 +6,8 @@ giving exactly the matrices of the symbolic linearization with the same
 decimals substituted afterwards (the other order of the two steps)."""
 from fractions import Fraction
 
+import pytest
+
 from sage.all import SR, QQ
 
 from sage_dynsym import load, linearize
@@ -13,6 +15,7 @@ from sage_dynsym.description import example_path
 from test_whipple_bicycle import BENCHMARK
 
 
+@pytest.mark.slow
 def test_bicycle_with_float_values_linearizes_like_the_exact_path():
     S = load(example_path('whipple_bicycle.yaml'))
     floats = {k: float(v) for k, v in BENCHMARK.items() if k != 'lam'}
