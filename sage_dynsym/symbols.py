@@ -493,8 +493,8 @@ def exact_decimals(value):
         {'k': [2, 3/2*x, 3/10]}
         sage: exact_decimals(0.3141592653589793)
         3141592653589793/10000000000000000
-        sage: exact_decimals(9.81), exact_decimals(float(85))
-        (981/100, 85)
+        sage: exact_decimals(9.81), exact_decimals(float(85)), exact_decimals(SR(0.25r)*x)
+        (981/100, 85, 1/4*x)
 
     TESTS::
 
@@ -520,7 +520,7 @@ def exact_decimals(value):
         return value
     if value.is_numeric():
         number = value.pyobject()
-        return SR(exact_decimals(number)) if not value.is_exact() else value
+        return SR(exact_decimals(number)) if isinstance(number, (float, RealNumber)) else value
     operator = value.operator()
     if operator is None:
         return value

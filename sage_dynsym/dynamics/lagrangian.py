@@ -125,7 +125,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
-from ..symbols import velocity, acceleration, momentum, t, sage_numbers
+from ..symbols import velocity, acceleration, momentum, t, exact_decimals
 from ..numerics.methods import NumericalMethods
 from .holonomic import HolonomicConstraints
 from .lagrange_equations import LagrangeEquations
@@ -435,9 +435,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         constraints).
 
         Coordinates and velocities must not be substituted: that would change
-        the dynamics in a way this method cannot track. Python floats become
-        Sage real numbers, which every later step accepts (the exact analysis
-        turns them into rationals).
+        the dynamics in a way this method cannot track. A float is the exact
+        decimal it prints as (``0.3`` is `3/10`: see
+        :func:`~sage_dynsym.symbols.exact_decimals`).
 
         EXAMPLES::
 
@@ -447,7 +447,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             Lagrangian in coordinates (x) : dx^2 - 4*x^2
             sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
             sage: L.first_order_system()
-            ([x, dx], [dx, -4.0*x])
+            ([x, dx], [dx, -4*x])
 
         TESTS::
 
@@ -456,8 +456,8 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             ...
             ModelError: cannot substitute for the coordinate or velocity x
         """
-        args = [sage_numbers(a) for a in args]
-        kwds = {k: sage_numbers(v) for k, v in kwds.items()}
+        args = [exact_decimals(a) for a in args]
+        kwds = {k: exact_decimals(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
         for v in protected:

@@ -77,6 +77,7 @@ from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from ..arguments import symbol_arguments
+from ..symbols import exact_decimals
 from ..numerics.methods import NumericalMethods
 from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
 from .format import LiePoissonFormat
@@ -578,7 +579,7 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             sage: len(K.polynomial_integrals(4, new_only=True))
             1
         """
-        values = {SR(k): SR(v) for k, v in values.items()}
+        values = {SR(k): SR(v) for k, v in exact_decimals(values).items()}
         names = {str(k) for k in values}
         for k in values:
             if str(k) not in {str(a) for a in self._parameters}:
