@@ -208,3 +208,20 @@ def test_heavy_top_report_has_no_gap():
     assert v.at({**point, M3: SR(QQ(41) / 10).sqrt()}) == 'stable'
     assert top_real_part(sleeping_top().jacobian(),
                          {**point, M3: SR(QQ(38) / 10).sqrt()}) > 0.2
+
+
+def test_gyroscopic_threshold_with_symbolic_stiffnesses():
+    # x'' - g y' + k1 x = 0, y'' + g x' + k2 y = 0: the flutter boundary
+    # g^4 + 2 (k1 + k2) g^2 + (k1 - k2)^2 = 0 has the denested root
+    # sqrt(-k1) + sqrt(-k2) (Thomson-Tait; Merkin, sec. 6.5); with values
+    # k1 = -1, k2 = -4 the critical rate is 1 + 2 = 3
+    from sage_dynsym.algebra.radicals import roots_in_radicals
+    x, y, k1, k2, gg = var('x y k1 k2 g')
+    Ls = LinearSystem.from_equations(identity_matrix(2), [[0, -gg], [gg, 0]],
+                                     diagonal_matrix([k1, k2]), variables=[x, y])
+    flutter = Ls.stability(positive=[gg]).boundaries()['flutter']
+    (f,) = [r.lhs() - r.rhs() for r in flutter if (r.lhs() - r.rhs()).has(gg)]
+    roots = roots_in_radicals(f, gg)
+    assert any(str(r) in ('sqrt(-k1) + sqrt(-k2)', 'sqrt(-k2) + sqrt(-k1)') for r in roots)
+    v = Ls.stability(positive=[gg])
+    assert v.critical_values(gg, values={k1: -1, k2: -4}) == [3]
