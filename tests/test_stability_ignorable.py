@@ -101,3 +101,19 @@ def test_rolling_hoop_threshold():
                             .simplify_full().is_constant()), rel
     assert v.at({m: 1, r: 1, g: 4, W: QQ(11) / 10}) == 'stable in first approximation'
     assert v.at({m: 1, r: 1, g: 4, W: QQ(9) / 10}) == 'unstable'
+
+
+def test_rolling_disk_report_asks_the_service():
+    # the report's verdict of the operating point: the heading left out,
+    # the threshold C (C + m r^2) W^2 > m g r A (Routh, art. 244)
+    from sage_dynsym.report import report
+    text = report(system(dict(DISK, positive=['m', 'r', 'A', 'C', 'g'])),
+                  sections=['stationary'])
+    lines = [line for line in text.splitlines() if 'first approximation) where' in line]
+    assert len(lines) == 2
+    stable = next(line for line in lines if 'stable in first approximation (' in line)
+    m, r, A, C, g, W = var('m r A C g W')
+    region = SR(stable.split('where [')[1].split(' > 0]')[0])
+    assert bool((region / (C * (C + m * r ** 2) * W ** 2 - m * g * r * A)).simplify_full()
+                .is_constant())
+    assert 'rates of psi' in stable
