@@ -225,3 +225,18 @@ def test_gyroscopic_threshold_with_symbolic_stiffnesses():
     assert any(str(r) in ('sqrt(-k1) + sqrt(-k2)', 'sqrt(-k2) + sqrt(-k1)') for r in roots)
     v = Ls.stability(positive=[gg])
     assert v.critical_values(gg, values={k1: -1, k2: -4}) == [3]
+
+
+def test_partition_covers_a_mass_of_unknown_sign():
+    # m x'' + c x' + k x = 0 with no declared sign: every point off the
+    # boundaries is in exactly one case, m < 0 included (there the first
+    # approximation: all of m, c, k of one sign), against numpy
+    x, mm, c, k = var('x m c k')
+    Ls = LinearSystem([x], M=[[mm]], S=[[c]], W=[[k]])
+    v = Ls.stability()
+
+    def sample(rng):
+        return {s: QQ(rng.choice([-1, 1]) * rng.randint(1, 30)) / 10 for s in (mm, c, k)}
+    seen = check_partition(v, Ls.jacobian(), sample, n=60)
+    assert seen == {'asymptotically stable', 'unstable'}
+    assert v.at({mm: -1, c: -2, k: -3}) == 'asymptotically stable'

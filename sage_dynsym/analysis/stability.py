@@ -301,6 +301,17 @@ def linear_stability(system, positive=(), with_respect_to=None):
         sage: v.at({a: 1, b: 1, g: 3}), v.at({a: 1, b: 1, g: 1})
         ('stable in first approximation', 'unstable')
 
+    A mass of unknown sign: where `m < 0` (not a mechanical system) the
+    first approximation covers the rest of the space::
+
+        sage: m, c, k = var('m c k')
+        sage: [(case.verdict(), case.region()) for case in
+        ....:  LinearSystem([x], M=[[m]], S=[[c]], W=[[k]]).stability().cases()]
+        [('asymptotically stable', [[m > 0, c > 0, k > 0]]),
+         ('unstable', [[m > 0, c < 0], [m > 0, k < 0]]),
+         ('asymptotically stable', [[k < 0, c < 0, m < 0]]),
+         ('unstable', [[k > 0, m < 0], [c > 0, m < 0]])]
+
     TESTS: a kinetic matrix singular everywhere (a coordinate of first
     order, `\dot x + ax = 0`): the finite roots decide::
 
@@ -337,13 +348,43 @@ def _decide(system, positive, with_respect_to):
     dropped = ignorable(system, with_respect_to)
     if system.order() == 2 and not dropped and \
             not normalize(fraction_free_det(system.M())).is_zero():
-        return kelvin_chetaev(system.M(), system.D(), system.G(), system.K(), system.P(),
-                              positive=positive)
+        verdict = kelvin_chetaev(system.M(), system.D(), system.G(), system.K(), system.P(),
+                                 positive=positive)
+        return _outside_kinetic(verdict, system, positive)
     if not dropped:
         return energy_stability(system, positive) or first_approximation(system, positive)
     about = _about(dropped, system.variables())
     return _rebuilt(first_approximation(system, positive, dropped), positive,
                     reason=lambda r: r + about)
+
+
+def _outside_kinetic(verdict, system, positive):
+    r"""``verdict`` (of the theorems on the structure of forces, which hold
+    where `M > 0`) with the cases of the first approximation where the
+    declared signs leave `M` not positive definite: together they cover
+    the whole space."""
+    from .quadratic_forms import definiteness_conditions
+    from ..algebra.regions import negation, intersection, prune_empty
+    kinetic = definiteness_conditions(system.M(), positive=positive)
+    outside = negation([kinetic], positive) if kinetic else None
+    if not outside:
+        return verdict
+    cases = verdict.cases()
+    for case in first_approximation(system, positive).cases():
+        if case.region() is None:
+            continue
+        region = prune_empty(intersection(case.region(), outside, positive), positive)
+        if region:
+            cases.append(StabilityVerdict(
+                case.verdict(), case.reason() + "; there M is not positive definite (not a "
+                "mechanical system): the first approximation alone decides",
+                method=case.method(), region=region, boundaries=case.boundaries(),
+                positive=positive))
+    if len(cases) == 1:
+        return cases[0]
+    return StabilityVerdict('depends on the parameters', "see cases(): " +
+                            ", ".join(c.verdict() for c in cases), cases=cases,
+                            boundaries=verdict.boundaries(), positive=positive)
 
 
 def _rebuilt(verdict, positive, reason=None, expression=None):
