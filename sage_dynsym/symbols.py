@@ -67,8 +67,7 @@ import re
 from sage.functions import all as sage_functions
 from sage.misc.latex import latex
 from sage.symbolic.constants import pi, e as euler_e, I as imaginary_unit
-from sage.rings.cc import CC
-from sage.rings.real_mpfr import RR
+from sage.rings.real_mpfr import RealNumber
 from sage.symbolic.ring import SR
 
 from .errors import ModelError, DescriptionError, brief
@@ -441,39 +440,55 @@ def check_mechanical_names(coordinates, parameters=(), error=ModelError, source=
     check_names(declared, 'mechanical', error, source)
 
 
-def sage_numbers(value):
+def exact_decimals(value):
     r"""
-    ``value`` (a number, expression, relation, dict or list of them) with
-    Python floats and complex numbers made Sage numbers: a Python float
-    inside a symbolic expression is an opaque object many Sage routines
-    cannot handle.
+    ``value`` (a number, expression, dict or list of them) with every
+    floating-point number replaced by the exact decimal it prints as:
+    ``0.3`` is `3/10`, ``0.3141592653589793`` is `3141592653589793/10^{16}`
+    (a Python float by its shortest round-trip text, a Sage literal by the
+    digits typed). Constraints that hold for the symbols then hold for the
+    values (`\cos^2 + \sin^2 = 1` exactly), and no rounding enters.
 
     EXAMPLES::
 
-        sage: from sage_dynsym.symbols import sage_numbers
+        sage: from sage_dynsym.symbols import exact_decimals
         sage: x = var('x')
-        sage: v = sage_numbers({x: 0.5r, 'k': [2r, 1.5r*x]}); v[x], v['k']
-        (0.500000000000000, [2, 1.50000000000000*x])
-        sage: parent(v[x])
-        Real Field with 53 bits of precision
+        sage: exact_decimals({'k': [2r, 1.5*x, 0.3r]})
+        {'k': [2, 3/2*x, 3/10]}
+        sage: exact_decimals(0.3141592653589793)
+        3141592653589793/10000000000000000
+        sage: exact_decimals(9.81), exact_decimals(float(85)), exact_decimals(SR(0.25r)*x)
+        (981/100, 85, 1/4*x)
+
+    TESTS::
+
+        sage: exact_decimals(float('inf'))
+        Traceback (most recent call last):
+        ...
+        ModelError: values: not a finite number: inf
     """
+    from fractions import Fraction
+    from sage.rings.rational_field import QQ
     if isinstance(value, dict):
-        return {k: sage_numbers(v) for k, v in value.items()}
+        return {k: exact_decimals(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
-        return type(value)(sage_numbers(v) for v in value)
-    if isinstance(value, float):
-        return RR(value)
-    if isinstance(value, complex):
-        return CC(value)
+        return type(value)(exact_decimals(v) for v in value)
+    if isinstance(value, (float, RealNumber)):
+        text = repr(value) if isinstance(value, float) else \
+            (getattr(value, 'literal', None) or str(value))
+        try:
+            return QQ(Fraction(text))
+        except (ValueError, OverflowError):
+            raise ModelError(f"not a finite number: {value}", entry="values") from None
     if not hasattr(value, 'operator'):
         return value
     if value.is_numeric():
-        return sage_numbers(value.pyobject()) if isinstance(value.pyobject(),
-                                                            (float, complex)) else value
+        number = value.pyobject()
+        return SR(exact_decimals(number)) if isinstance(number, (float, RealNumber)) else value
     operator = value.operator()
     if operator is None:
         return value
-    return operator(*[sage_numbers(a) for a in value.operands()])
+    return operator(*[exact_decimals(a) for a in value.operands()])
 
 
 def is_exact(expr):

@@ -45,3 +45,40 @@ def test_roots_agree_with_numpy(seed):
                 assert abs(nearest - z) < 1e-9 * scale, (f, at, roots)
                 got.remove(nearest)
         checked += 1
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_cubic_and_quartic_roots_agree_with_numpy(seed):
+    # Cardano and Ferrari (and biquadratics, denested), against np.roots
+    rng = random.Random(100 + seed)
+    checked = 0
+    while checked < 6:
+        degree = rng.choice([3, 4])
+        a = [random_coefficient(rng) for _ in range(degree + 1)]
+        if degree == 4 and rng.random() < 0.4:
+            a[1] = a[3] = 0                      # biquadratic
+        if SR(a[-1]).is_zero():
+            continue
+        f = sum(c * p**i for i, c in enumerate(a))
+        roots = roots_in_radicals(f, p)
+        assert len(roots) == degree and all(not r.has(p) for r in roots)
+        at = {k: rng.uniform(0.5, 2), l: rng.uniform(0.5, 2)}
+        if abs(complex(SR(a[-1]).subs(at))) < 1e-3:
+            continue
+        expected = list(np.roots([complex(SR(c).subs(at)) for c in reversed(a)]))
+        got = [complex(SR(r).subs(at)) for r in roots]
+        scale = max(1.0, float(np.max(np.abs(expected))))
+        for z in got:
+            nearest = min(expected, key=lambda w: abs(w - z))
+            assert abs(nearest - z) < 1e-6 * scale, (f, at, roots)
+            expected.remove(nearest)
+        checked += 1
+
+
+def test_denested_biquadratic_threshold():
+    # g^4 - 2(a + b) g^2 + (a - b)^2 = 0 at g = sqrt(a) + sqrt(b), by hand
+    a, b, g = var('a b g')
+    roots = roots_in_radicals(g**4 - 2 * (a + b) * g**2 + (a - b)**2, g)
+    assert any(bool((r - (a.sqrt() + b.sqrt())).simplify_full() == 0) for r in roots)
+    assert all('sqrt(' not in str(r).replace('sqrt(a)', '').replace('sqrt(b)', '')
+               for r in roots)

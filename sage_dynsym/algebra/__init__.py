@@ -14,6 +14,7 @@ The modules: :mod:`~sage_dynsym.algebra.polynomials` (conversions),
 :mod:`~sage_dynsym.algebra.translation`,
 :mod:`~sage_dynsym.algebra.decomposition`,
 :mod:`~sage_dynsym.algebra.solving`, :mod:`~sage_dynsym.algebra.radicals`,
+:mod:`~sage_dynsym.algebra.number_fields`,
 :mod:`~sage_dynsym.algebra.conditions`,
 :mod:`~sage_dynsym.algebra.regions`,
 :mod:`~sage_dynsym.algebra.quantifier_elimination`,
@@ -29,7 +30,9 @@ from .conditions import (positive_conditions, positive_conditions_all, nonzero_c
                          simplify_conditions, simplify_conjunction, conjunction, as_relational)
 from .determinants import fraction_free_det
 from .quantifier_elimination import exists
-from .regions import simplify_region, intersection, negation, partition
+from .regions import simplify_region, intersection, negation, partition, drop_redundant
+from .number_fields import AlgebraicConstants
+from .radicals import roots_in_radicals, real_algebraic_roots
 from .size import polynomial_terms, determinant_terms, matrix_terms
 from .solving import solve_exactly, normalize
 from .translation import Translation, NotAlgebraic
@@ -41,4 +44,5 @@ __all__ = ['positive_conditions', 'positive_conditions_all', 'nonzero_conditions
            'fraction_free_det', 'exists', 'simplify_region', 'intersection', 'negation',
            'partition', 'polynomial_terms', 'determinant_terms', 'matrix_terms',
            'solve_exactly', 'normalize', 'Translation', 'NotAlgebraic', 'TrigFractionField',
-           'TrigPolynomialRing', 'trig_rational_simplify']
+           'TrigPolynomialRing', 'trig_rational_simplify', 'drop_redundant',
+           'AlgebraicConstants', 'roots_in_radicals', 'real_algebraic_roots']

@@ -304,3 +304,54 @@ def partition(parts, rest=None, domain=((),), positive=()):
         if own is None or own:
             result.append((rest, own))
     return result
+
+
+#: Regions with more relations than this are not searched for redundant
+#: ones (each test may ask quantifier elimination).
+MAX_REDUNDANCY_RELATIONS = 8
+
+
+def drop_redundant(alternatives, positive=()):
+    r"""
+    The region without redundant parts, up to sets of measure zero: a
+    strict relation implied by the others of its alternative is dropped,
+    then an alternative contained in another one. Each implication is
+    proved by :func:`prune_empty` (the alternative with the relation
+    flipped is empty); what is not proved is kept. Regions with more than
+    :data:`MAX_REDUNDANCY_RELATIONS` relations are returned as they are.
+
+    EXAMPLES: `x > 4ab` implies `2x > ab` when `a, b > 0`::
+
+        sage: from sage_dynsym.algebra.regions import drop_redundant
+        sage: a, b, x = var('a b x')
+        sage: drop_redundant([[x - 4*a*b > 0, 2*x - a*b > 0]], positive=[a, b])
+        [[-4*a*b + x > 0]]
+        sage: drop_redundant([[2*x - a*b < 0], [x - 4*a*b < 0]], positive=[a, b])
+        [[-4*a*b + x < 0]]
+        sage: drop_redundant([[x > 0], [a - x > 0]])
+        [[x > 0], [a - x > 0]]
+    """
+    alternatives = [list(alt) for alt in alternatives]
+    if sum(len(alt) for alt in alternatives) > MAX_REDUNDANCY_RELATIONS:
+        return alternatives
+
+    def empty(relations):
+        return relations and not prune_empty([relations], positive)
+
+    result = []
+    for alt in alternatives:
+        kept = list(alt)
+        for r in alt:
+            e, op = _parts(r)
+            others = [s for s in kept if s is not r]
+            if op in ('gt', 'lt') and others and empty(others + [_FLIP[op](e)]):
+                kept = others
+        result.append(kept)
+    final = []
+    for k, alt in enumerate(result):
+        # contained in a kept alternative, or in a later one: the earlier
+        # of two equal alternatives goes, the later stays
+        if not any(other and all(empty(alt + c) for c in (negation([other], positive) or [[]]))
+                   for other in final + result[k + 1:]):
+            final.append(alt)
+    return final

@@ -8,7 +8,7 @@ variation and quadratic-form criteria, first approximation
 (linearization, force structure, characteristic polynomial,
 Routh--Hurwitz and Liénard--Chipart conditions, Kelvin--Chetaev theorems,
 roots on the imaginary axis, flutter and divergence, the limit of small
-damping), linearization about steady motions with velocity constraints,
+damping; the one stability service LinearSystem.stability), linearization about steady motions with velocity constraints,
 and families of equilibria by elimination.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
@@ -32,6 +32,7 @@ from ..algebra.quantifier_elimination import exists
 from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
 from .damping_limit import small_damping_limit, DampingLimit
 from .spectrum import spectrum_regions
+from .stability import linear_stability, energy_stability
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, StationaryProblem,
                          solve_stationary, ModifiedRouthLyapunov)

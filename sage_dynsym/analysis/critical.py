@@ -10,7 +10,15 @@ candidate, and it is critical if the region holds on one side of it and
 not on the other. That is decided at sample points of the other
 parameters; an answer that differs between samples is refused (the
 critical values then depend on the other parameters in a way a list
-cannot express).
+cannot express). A parameter declared positive has only positive critical
+values.
+
+The roots are given in radicals up to degree four (Cardano, Ferrari;
+biquadratics denested, `\sqrt a + \sqrt b`: see
+:mod:`~sage_dynsym.algebra.radicals`); a factor of higher degree, or a
+cubic or quartic that is not biquadratic when every other parameter has a
+value, gives exact real algebraic numbers (Sage's ``AA``, printed to any
+precision) -- any degree, as long as the other parameters have values.
 
 EXAMPLES: `a x^2 + b x + c` with the condition that both roots are real
 and negative, along `b`::
@@ -29,19 +37,55 @@ from sage.symbolic.ring import SR
 from ..arguments import expression_argument
 from ..errors import AnalysisError, brief
 from ..algebra.conditions import region_holds
-from ..algebra.radicals import roots_in_radicals
+from ..algebra.radicals import roots_in_radicals, real_algebraic_roots
 
 
-def _candidates(boundaries, parameter):
+def _candidates(boundaries, parameter, values, complete):
+    r"""The roots in ``parameter`` of the boundary factors: in radicals up to
+    degree four (with the other parameters given, a cubic or a quartic that
+    is not biquadratic as exact real algebraic numbers instead: its radicals
+    are complex), otherwise real algebraic numbers when every other
+    parameter has a value."""
     found = []
     for relations in boundaries.values():
         for r in relations:
             f = SR(r.lhs() - r.rhs()) if SR(r).is_relational() else SR(r)
+            if complete and not _rational(f.subs(values), parameter):
+                # irrational coefficients (a number field): exact real roots
+                roots = real_algebraic_roots(f.subs(values), parameter,
+                                             entry="critical_values")
+                found += [v for v in roots if all(v != w for w in found)]
+                continue
             for factor, _ in f.factor_list():
-                if factor.has(parameter):
+                if not factor.has(parameter):
+                    continue
+                degree = factor.degree(parameter) if factor.is_polynomial(parameter) else None
+                biquadratic = degree == 4 and all(factor.coefficient(parameter, k).is_zero()
+                                                  for k in (1, 3))
+                if degree is not None and (degree <= 2 or biquadratic or
+                                           (degree <= 4 and not complete)):
                     roots = roots_in_radicals(factor, parameter, entry="critical_values")
-                    found += [v for v in roots if all(str(v) != str(w) for w in found)]
+                elif complete:
+                    roots = real_algebraic_roots(factor.subs(values), parameter,
+                                                 entry="critical_values")
+                else:
+                    raise AnalysisError(f"the boundary factor {factor} has degree {degree} in "
+                                        f"{parameter}: give values to the other parameters "
+                                        "(values=) for its roots as exact real algebraic "
+                                        "numbers", entry="critical_values")
+                found += [v for v in roots if all(str(v) != str(w) for w in found)]
     return found
+
+
+def _rational(f, parameter):
+    try:
+        return all(SR(c).pyobject() in QQ for c, _ in f.coefficients(parameter))
+    except (TypeError, ValueError):
+        return False
+
+
+def _at(value, point):
+    return value.subs(point) if hasattr(value, 'subs') else value
 
 
 def _real(value):
@@ -71,7 +115,8 @@ def critical_values(region, boundaries, parameter, positive=(), values=None, sam
     - ``samples`` -- (default: 3) the number of sample points
     - ``seed`` -- (default: 0) the seed of the sample points
 
-    OUTPUT: a list of expressions, by increasing value at the first sample
+    OUTPUT: a list of expressions (or of elements of ``AA``), by increasing
+    value at the first sample
 
     EXAMPLES::
 
@@ -79,6 +124,20 @@ def critical_values(region, boundaries, parameter, positive=(), values=None, sam
         sage: p, k = var('p k')
         sage: critical_values([[k - p > 0]], {'divergence': [k - p == 0]}, p, positive=[k])
         [k]
+
+    Only inside the declared signs::
+
+        sage: critical_values([[k - p^2 > 0]], {'divergence': [k - p^2 == 0]}, p, positive=[k])
+        [-sqrt(k), sqrt(k)]
+        sage: critical_values([[k - p^2 > 0]], {'divergence': [k - p^2 == 0]}, p,
+        ....:                 positive=[k, p])
+        [sqrt(k)]
+
+    A boundary of degree five, the other parameter given::
+
+        sage: critical_values([[p^5 + p - k < 0]], {'divergence': [p^5 + p - k == 0]}, p,
+        ....:                 values={k: 3})
+        [1.132997565885066?]
 
     TESTS::
 
@@ -94,6 +153,11 @@ def critical_values(region, boundaries, parameter, positive=(), values=None, sam
         Traceback (most recent call last):
         ...
         AnalysisError: critical_values: values= must be a dict {parameter: number}, got [1]
+        sage: critical_values([[p^5 + p - k < 0]], {'divergence': [p^5 + p - k == 0]}, p,
+        ....:                 positive=[k])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: critical_values: the boundary factor p^5 - k + p has degree 5 in p: give values to the other parameters (values=) for its roots as exact real algebraic numbers
     """
     parameter = expression_argument(parameter, "critical_values", AnalysisError,
                                     expected="a parameter (a symbol)")
@@ -122,11 +186,12 @@ def critical_values(region, boundaries, parameter, positive=(), values=None, sam
         point.update({s: QQ(rng.randint(50, 200)) / 100 for s in others})
         points.append(point)
     kept = []
-    for value in _candidates(boundaries, parameter):
+    declared_positive = str(parameter) in declared
+    for value in _candidates(boundaries, parameter, values, not others):
         answers = []
         for point in points:
-            x = _real(value.subs(point))
-            if x is None:
+            x = _real(_at(value, point))
+            if x is None or (declared_positive and x <= 0):
                 answers.append(False)
                 continue
             h = 1e-6 * max(1.0, abs(x))
@@ -138,5 +203,5 @@ def critical_values(region, boundaries, parameter, positive=(), values=None, sam
                                 "other parameters; give their values in values=",
                                 entry="critical_values")
         if answers[0]:
-            kept.append(value.subs(values) if values else value)
-    return sorted(kept, key=lambda v: _real(v.subs(points[0])))
+            kept.append(_at(value, values) if values else value)
+    return sorted(kept, key=lambda v: _real(_at(v, points[0])))

@@ -1,6 +1,7 @@
 r"""
-Stability of `M\ddot q + (D + 2G)\dot q + (K + P)q = 0`: the structure of
-forces and the first approximation
+Stability of `M\ddot q + (D + 2G)\dot q + (K + P)q = 0` (``G`` half the skew
+part of the velocity matrix): the structure of forces and the first
+approximation
 
 For a linear (or linearized) mechanical system with `M > 0` (kinetic),
 `D = D^T` (dissipative), `G = -G^T` (gyroscopic), `K = K^T` (potential)
@@ -113,10 +114,10 @@ from ..arguments import matrix_argument, symbol_arguments
 from ..errors import AnalysisError
 from ..algebra.determinants import fraction_free_det
 from .quadratic_forms import definiteness_conditions, semidefiniteness_conditions
-from ..algebra.regions import partition, simplify_region, negation, intersection, prune_empty
+from ..algebra.regions import simplify_region, negation, intersection
 from ..algebra.solving import normalize
 from .spectrum import spectrum_regions
-from .verdict import StabilityVerdict
+from .verdict import StabilityVerdict, verdict_from_parts
 
 __all__ = ['kelvin_chetaev', 'StabilityVerdict']
 
@@ -261,9 +262,14 @@ def _negative_eigenvalues(K):
 
 def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     r"""
-    The stability of the zero solution of `M\ddot z + (D + 2G)\dot z + (K +
-    P) z = 0`, exact, with the regions of the parameters (see the module
-    documentation).
+    ``G`` is HALF the skew part of the velocity matrix: the system is
+    `M\ddot z + (D + 2G)\dot z + (K + P) z = 0` (for the matrices of one's
+    own equations `M\ddot z + S\dot z + Wz = 0` use
+    :meth:`LinearSystem.from_equations(M, S, W)
+    <sage_dynsym.analysis.linear.LinearSystem.from_equations>` and its
+    :meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`). The
+    stability of its zero solution, exact, with the regions of the
+    parameters (see the module documentation).
 
     INPUT:
 
@@ -355,24 +361,6 @@ def kelvin_chetaev(M, D, G, K, P=None, positive=()):
     parts = [('asymptotically stable', asymptotic), ('stable', kelvin),
              ('stable in first approximation', marginal),
              ('undecided', spectrum.undecided())]
-    found = [(name, prune_empty(region, positive) if region is not None else None)
-             for name, region in partition(parts, rest='unstable', domain=domain,
-                                           positive=positive)]
-    found = [(name, region) for name, region in found if region != []]
-    reasons = _reasons(M, D, G, K, P, spectrum, positive, mechanical)
-    boundaries = spectrum.boundaries()
-    cases = []
-    for name, region in found:
-        method = 'Kelvin-Chetaev' if name == 'stable' else 'first approximation'
-        strict = region is not None and len(region) == 1 and \
-            all(r.operator().__name__ in ('gt', 'lt') for r in region[0])
-        conditions = [(r.lhs() - r.rhs()) if r.operator().__name__ == 'gt' else
-                      (r.rhs() - r.lhs()) for r in region[0]] if strict else []
-        cases.append(StabilityVerdict(name, reasons[name], conditions=conditions,
-                                      method=method, region=region, boundaries=boundaries,
-                                      positive=positive))
-    if len(cases) == 1:
-        return cases[0]
-    return StabilityVerdict('depends on the parameters', "see cases(): " +
-                            ", ".join(c.verdict() for c in cases), cases=cases,
-                            boundaries=boundaries, positive=positive)
+    return verdict_from_parts(parts, _reasons(M, D, G, K, P, spectrum, positive, mechanical),
+                              spectrum.boundaries(), positive, domain=domain,
+                              methods={'stable': 'Kelvin-Chetaev'})

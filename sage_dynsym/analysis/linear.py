@@ -480,6 +480,90 @@ class LinearSystem(SageObject):
                 parts.append(f"{what} forces ({name} != 0)")
         return '; '.join(parts) if parts else "no forces"
 
+    @classmethod
+    def from_equations(cls, M, S, W, variables=None):
+        r"""
+        The system `M\ddot q + S\dot q + Wq = 0` from the matrices of the
+        equations as they are written: the split of `S` into `D + 2G` and
+        of `W` into `K + P` is done here (so a gyroscopic matrix of one's
+        own equations is never doubled).
+
+        INPUT:
+
+        - ``M``, ``S``, ``W`` -- square matrices (or lists of rows) of the
+          accelerations, velocities and coordinates
+        - ``variables`` -- (default: ``q1, q2, ...``) the unknowns
+
+        OUTPUT: a :class:`LinearSystem`
+
+        EXAMPLES: `\ddot x - g\dot y + kx = 0`, `\ddot y + g\dot x + ky = 0`::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: g, k = var('g k')
+            sage: Ls = LinearSystem.from_equations(identity_matrix(2), [[0, -g], [g, 0]],
+            ....:                                  diagonal_matrix([k, k]))
+            sage: Ls.variables(), Ls.G(), Ls.K()
+            (
+                      [   0 -1/2*g]  [k 0]
+            [q1, q2], [ 1/2*g      0], [0 k]
+            )
+
+        TESTS::
+
+            sage: LinearSystem.from_equations([[1]], [[0]], identity_matrix(2))
+            Traceback (most recent call last):
+            ...
+            AnalysisError: LinearSystem.from_equations: W is 2x2, expected 1x1 like M
+        """
+        M, S, W = (matrix(SR, X) for X in (M, S, W))
+        n = M.nrows()
+        for name, X in (('M', M), ('S', S), ('W', W)):
+            if X.nrows() != n or X.ncols() != n:
+                raise AnalysisError(f"{name} is {X.nrows()}x{X.ncols()}, expected {n}x{n} "
+                                    "like M", entry="LinearSystem.from_equations")
+        if variables is None:
+            variables = [SR.var(f'q{i + 1}') for i in range(n)]
+        return cls(variables, M=M, S=S, W=W)
+
+    def stability(self, positive=(), with_respect_to=None):
+        r"""
+        The stability of the zero solution: the one stability service of the
+        package (see :mod:`~sage_dynsym.analysis.stability`), for second-
+        and first-order systems alike.
+
+        INPUT:
+
+        - ``positive`` -- parameters declared positive
+        - ``with_respect_to`` -- (optional) the variables whose values the
+          question is about; by default all but the ignorable ones (those
+          whose value does not enter the equations), whose rates only count
+
+        OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+        whose cases partition the parameter space allowed by the declared
+        signs (``'undecided'`` is a case of its own, with its region and
+        reason)
+
+        EXAMPLES: the sleeping top (Euler--Poisson equations about the
+        upright axis, `\gamma_3 = 1`, `M_3` the spin momentum):
+        gyroscopically stable in first approximation exactly where `M_3^2 >
+        4Amgl`, unstable below (Maxwell's criterion)::
+
+            sage: from sage_dynsym.analysis.linear import linearize
+            sage: M1, M2, M3, g1, g2, g3 = var('M1 M2 M3 gamma1 gamma2 gamma3')
+            sage: A, C, m, g, l = var('A C m g l')
+            sage: f = [g*l*m*g2 + (A - C)*M2*M3/(A*C), -g*l*m*g1 - (A - C)*M1*M3/(A*C),
+            ....:      M3*g2/C - M2*g3/A, -M3*g1/C + M1*g3/A]
+            sage: Ls = linearize(f, {M1: 0, M2: 0, g1: 0, g2: 0, g3: 1}, [M1, M2, g1, g2])
+            sage: v = Ls.stability(positive=[A, C, m, g, l])
+            sage: [(c.verdict(), c.region()) for c in v.cases()]
+            [('stable in first approximation', [[4*A*g*l*m - M3^2 < 0]]),
+             ('unstable', [[4*A*g*l*m - M3^2 > 0]])]
+            sage: v.at({A: 1, C: 3/2, m: 1, g: 1, l: 1, M3: sqrt(3.8)})
+            'unstable'
+        """
+        from .stability import linear_stability
+        return linear_stability(self, positive=positive, with_respect_to=with_respect_to)
+
     def kelvin_chetaev(self, positive=()):
         r"""
         The stability verdict from the structure of forces and the first

@@ -61,10 +61,10 @@ a root with positive real part::
     sage: s.stability_region(sign='negative')
     [[A1 - A2 < 0, A1 - A3 < 0, M1 != 0]]
     sage: s.stability()
-    depends on the parameters: see cases()
+    depends on the parameters: see cases(): stable, unstable
     sage: for case in s.stability().cases(): print(case.verdict(), case.method(), case.region())
     stable Routh-Lyapunov [[A1 - A2 > 0, A1 - A3 > 0, M1 != 0], [A1 - A2 < 0, A1 - A3 < 0, M1 != 0]]
-    unstable first approximation [[(A1 - A2)*(A1 - A3) < 0, M1 != 0]]
+    unstable first approximation [[A1 - A3 > 0, A1 - A2 < 0], [A1 - A2 > 0, A1 - A3 < 0]]
 
 With a prescribed level of `V` the families become isolated points, two
 conjugate branches each::
@@ -102,8 +102,8 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError, DynSymError, brief
 from ..arguments import expression_list, known_symbols, symbol_arguments
 from ..algebra.conditions import positive_conditions_all, conjunction, simplify_conjunction
-from .kelvin_chetaev import StabilityVerdict
-from .motion_solution import MotionSolution, first_approximation_cases, combined_verdict
+from .motion_solution import MotionSolution
+from .verdict import verdict_from_parts
 from .linear import LinearSystem
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
@@ -638,10 +638,11 @@ class StationarySolution(MotionSolution):
             sage: stationary_motions(L)[3].stability(positive=[m, l, g]).method()
             'first approximation'
 
-        Where neither method decides, the first approximation may still
-        give stability with simple roots on the imaginary axis: the sleeping
-        top, gyroscopically stabilized for `p^2 > 4Amgl` (the gap `2Amgl <
-        p^2 < 4Amgl` is unstable, but no coefficient shows it)::
+        Where the second variation does not decide, the first approximation
+        (:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`) covers
+        the rest: the sleeping top, gyroscopically stabilized -- stable in
+        first approximation -- exactly for `p^2 > 4Amgl`, unstable below
+        (Maxwell's criterion)::
 
             sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
             sage: alpha, beta, phi, A, C = var('alpha beta phi A C')
@@ -652,28 +653,38 @@ class StationarySolution(MotionSolution):
             sage: sols = stationary_motions(R, positive=[A, C, m, g, l])
             sage: v = next(s for s in sols if s.point() == {alpha: 0, beta: 0}).stability()
             sage: [(case.verdict(), case.region()) for case in v.cases()]
-            [('unstable', [[2*A*g*l*m - p_phi^2 > 0]]),
-             ('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]])]
+            [('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]]),
+             ('unstable', [[4*A*g*l*m - p_phi^2 > 0]])]
         """
         positive = self._positive(positive)
-        cases = []
-        signs = self._problem.signs
         region = []
-        for sign in signs:
+        for sign in self._problem.signs:
             for alt in self.stability_region(positive, sign):
                 if alt not in region:
                     region.append(alt)
         existence = simplify_conjunction(self.conditions(), positive) or []
-        if region:
-            cases.append(StabilityVerdict(
-                'stable', "the second variation of the Lyapunov function is definite",
-                method='Routh-Lyapunov', region=region))
         lin = self.linear_system() if self.is_explicit() and \
             self.is_equilibrium() is not False else None
-        if lin is not None:
-            # simple roots on the imaginary axis only where the second variation decides nowhere
-            cases += first_approximation_cases(lin, existence, positive, marginal=not region)
-        return combined_verdict(cases, existence)
+        # the first approximation is the one stability service's; the
+        # Routh-Lyapunov theorem adds 'stable' (for the nonlinear system)
+        first, why = [], "neither the second variation nor the first approximation decides"
+        try:
+            first = lin.stability(positive=positive).cases() if lin is not None else []
+        except AnalysisError as err:
+            why += f" ({err})"
+        order = ('asymptotically stable', 'stable', 'stable in first approximation',
+                 'undecided', 'unstable')
+        regions = {}
+        for name, alts in [(c.verdict(), c.region()) for c in first] + [('stable', region)]:
+            if alts:
+                regions[name] = regions.get(name, []) + [a for a in alts
+                                                         if a not in regions.get(name, [])]
+        parts = sorted(regions.items(), key=lambda part: order.index(part[0]))
+        reasons = {c.verdict(): c.reason() for c in first}
+        reasons['stable'] = "the second variation of the Lyapunov function is definite"
+        reasons.setdefault('undecided', why)
+        return verdict_from_parts(parts, reasons, {}, positive, domain=[existence],
+                                  methods={'stable': 'Routh-Lyapunov'}, rest='undecided')
 
     def check(self, equations):
         r"""
@@ -802,7 +813,7 @@ class StationarySolutions(SolutionList):
               solution 1 (isolated): theta = 0
                 stability: stable (Routh-Lyapunov): the second variation of the Lyapunov function is definite
               solution 2 (isolated): theta = pi
-                stability: unstable (first approximation): the characteristic polynomial has a root with positive real part (Lyapunov's theorem on the first approximation)
+                stability: unstable (first approximation): the potential energy has an odd degree of instability (1): no gyroscopic or dissipative forces can stabilize it (Thomson-Tait-Chetaev; Kelvin-Chetaev, 3rd theorem)
         """
         if equation is None:
             def equation(lines, e):

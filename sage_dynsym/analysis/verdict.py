@@ -44,7 +44,9 @@ EXAMPLES::
 from sage.structure.sage_object import SageObject
 
 from ..errors import AnalysisError
+from ..symbols import exact_decimals
 from ..algebra.conditions import region_holds
+from ..algebra.regions import partition, prune_empty, drop_redundant
 
 #: The verdicts that count as stable (the stable set of a verdict that
 #: depends on the parameters is the union of their regions).
@@ -181,6 +183,19 @@ class StabilityVerdict(SageObject):
         """
         return list(self._cases) if self._cases else [self]
 
+    def case(self, verdict):
+        r"""The case with the verdict ``verdict`` (``None`` if there is none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
+            sage: k = var('k')
+            sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[k]]))
+            sage: v.case('stable').region(), v.case('asymptotically stable')
+            ([[k > 0]], None)
+        """
+        return next((c for c in self.cases() if c.verdict() == verdict), None)
+
     def boundaries(self):
         r"""
         The boundaries of the stable set by kind: a dict, e.g.
@@ -216,16 +231,17 @@ class StabilityVerdict(SageObject):
         INPUT:
 
         - ``values`` -- dict ``{parameter: number}`` for every parameter of
-          the regions
+          the regions (a float is the exact decimal it prints as)
 
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.kelvin_chetaev import kelvin_chetaev
             sage: k = var('k')
             sage: v = kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[k]]))
-            sage: v.at({k: 2}), v.at({k: -2}), v.at({k: 0})
-            ('stable', 'unstable', None)
+            sage: v.at({k: 2}), v.at({k: -2}), v.at({k: 0}), v.at({k: 0.0})
+            ('stable', 'unstable', None, None)
         """
+        values = exact_decimals(values)
         for case in self.cases():
             region = case.region()
             if region is None:
@@ -289,7 +305,40 @@ class StabilityVerdict(SageObject):
         """
         from .critical import critical_values
         return critical_values(self.region(), self.boundaries(), parameter,
-                               positive=self._positive, values=values, samples=samples)
+                               positive=self._positive, values=exact_decimals(values),
+                               samples=samples)
+
+    def report_lines(self, indent="  "):
+        r"""
+        The verdict as report lines: the verdict, the method and the
+        reason; with several cases, each with its region.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: m, c, k = var('m c k')
+            sage: v = LinearSystem([var('x')], M=[[m]], S=[[c]], W=[[k]]).stability(positive=[m, k])
+            sage: print("\n".join(v.report_lines()))
+              stability depends on the parameters:
+                asymptotically stable (first approximation) where [c > 0]: every root ...
+                unstable (first approximation) where [c < 0]: a root ...
+        """
+        def where(case):
+            region = case.region()
+            if not region or region == [[]]:
+                return ""
+            return " where " + " or ".join("[" + ", ".join(map(str, alt)) + "]"
+                                           for alt in region)
+
+        def method(case):
+            return f" ({case.method()})" if case.method() else ""
+        if len(self.cases()) == 1:
+            case = self.cases()[0]
+            return [f"{indent}stability: {case.verdict()}{method(case)}{where(case)}: "
+                    f"{case.reason()}"]
+        return [f"{indent}stability depends on the parameters:"] + \
+            [f"{indent}  {case.verdict()}{method(case)}{where(case)}: {case.reason()}"
+             for case in self.cases()]
 
     def _repr_(self):
         cond = f" if {self._conditions}" if self._conditions else ""
@@ -297,3 +346,66 @@ class StabilityVerdict(SageObject):
             cond = " where " + " or ".join(
                 "[" + ", ".join(map(str, alt)) + "]" for alt in self._region)
         return f"{self._verdict}{cond}: {self._reason}"
+
+
+def verdict_from_parts(parts, reasons, boundaries, positive=(), domain=((),),
+                       method='first approximation', methods=None, rest='unstable'):
+    r"""
+    The verdict whose cases partition ``domain``: the regions of ``parts``
+    made disjoint by precedence, and ``'unstable'`` for the rest (the
+    boundaries, where a strict condition is zero, belong to no case).
+
+    INPUT:
+
+    - ``parts`` -- list of pairs ``(verdict, region or None)``, by
+      precedence (e.g. asymptotically stable, stable, stable in first
+      approximation, undecided)
+    - ``reasons`` -- dict ``{verdict: reason}``, ``'unstable'`` included
+    - ``boundaries`` -- dict of the boundaries (see
+      :meth:`StabilityVerdict.boundaries`)
+    - ``positive`` -- symbols declared positive
+    - ``domain`` -- (default: everywhere) the region where the parts are
+      taken (e.g. where the kinetic matrix is positive definite)
+    - ``method`` -- the method recorded in each case, unless
+      ``methods`` (a dict ``{verdict: method}``) names another
+    - ``rest`` -- (default: ``'unstable'``) the verdict of the rest of
+      ``domain``
+
+    OUTPUT: a :class:`StabilityVerdict`: the single case, or ``'depends on
+    the parameters'`` with the cases
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.verdict import verdict_from_parts
+        sage: a = var('a')
+        sage: v = verdict_from_parts([('stable', [[a > 0]])],
+        ....:                        {'stable': 'a minimum', 'unstable': 'a maximum'}, {})
+        sage: [(c.verdict(), c.region()) for c in v.cases()]
+        [('stable', [[a > 0]]), ('unstable', [[a < 0]])]
+        sage: verdict_from_parts([('stable', [[a^2 + 1 > 0]])], {'stable': 'always'}, {})
+        stable: always
+    """
+    positive = list(positive)
+    # redundant relations would hide the boundary (the sleeping top's
+    # stable set is M3^2 > 4 A m g l alone)
+    found = [(name, drop_redundant(prune_empty(region, positive), positive)
+              if region is not None else None)
+             for name, region in partition(parts, rest=rest, domain=domain,
+                                           positive=positive)]
+    cases = []
+    for name, region in found:
+        if region == []:
+            continue
+        strict = region is not None and len(region) == 1 and \
+            all(r.operator().__name__ in ('gt', 'lt') for r in region[0])
+        conditions = [(r.lhs() - r.rhs()) if r.operator().__name__ == 'gt' else
+                      (r.rhs() - r.lhs()) for r in region[0]] if strict else []
+        cases.append(StabilityVerdict(name, reasons[name], conditions=conditions,
+                                      method=(methods or {}).get(name, method),
+                                      region=region, boundaries=boundaries,
+                                      positive=positive))
+    if len(cases) == 1:
+        return cases[0]
+    return StabilityVerdict('depends on the parameters', "see cases(): " +
+                            ", ".join(c.verdict() for c in cases), cases=cases,
+                            boundaries=boundaries, positive=positive)

@@ -352,7 +352,8 @@ class Circuit(StateEquations, NumericalMethods, Model):
 
         - ``values`` -- a dictionary ``{symbol: value}``, keys symbols or
           names of parameters or elements (an element's name is its value's
-          symbol); values exact or floating-point numbers, or expressions
+          symbol); values exact numbers, expressions, or floats, each the
+          exact decimal it prints as (``0.5`` is `1/2`)
 
         OUTPUT: a :class:`Circuit`; the substituted symbols leave
         :meth:`parameters` and :meth:`positive_parameters`
@@ -366,8 +367,8 @@ class Circuit(StateEquations, NumericalMethods, Model):
             [E1 - 2*i1 + u2, -i1]
             sage: C2.lhs_matrix(), C2.positive_parameters()
             (
-            [                L1                  0]
-            [                 0 0.500000000000000], []
+            [ L1   0]
+            [  0 1/2], []
             )
 
         TESTS::

@@ -20,7 +20,7 @@ EXAMPLES::
 from sage.symbolic.ring import SR
 
 from ..errors import CircuitError, brief
-from ..symbols import CIRCUIT_VARIABLES, sage_numbers
+from ..symbols import CIRCUIT_VARIABLES, exact_decimals
 from .elements import parse_entries, is_coupling_entry
 from .elements.windings import check_couplings
 
@@ -151,7 +151,7 @@ class Netlist:
             if not symbol.is_symbol() or str(symbol) not in symbols:
                 raise CircuitError(f"{symbol} is not a parameter or element value of the "
                                    f"circuit; they are: {', '.join(symbols)}", entry="subs")
-            substitution[symbol] = SR(sage_numbers(value))
+            substitution[symbol] = SR(exact_decimals(value))
         entries = [b.subs(substitution).long_entry() for b in self.branches]
         entries += [c.subs(substitution).long_entry() for c in self.couplings]
         done = {str(x) for x in substitution}

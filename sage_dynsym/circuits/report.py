@@ -148,9 +148,11 @@ def report_sections(circuit):
 
 def free_stability_lines(circuit, L, context):
     r"""
-    The stability of the free circuit (sources off) from its loop
-    Lagrangian ``L``: the characteristic polynomial and its Liénard--Chipart
-    conditions, the element values positive.
+    The stability of the free circuit (sources off), asked of its free
+    state equations (:meth:`~sage_dynsym.circuits.circuit.Circuit.free_linear_system`,
+    what the stability map judges too) by the stability service
+    (:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`), the
+    element values positive. ``L``, the loop Lagrangian, sizes the work.
 
     EXAMPLES::
 
@@ -160,38 +162,28 @@ def free_stability_lines(circuit, L, context):
         sage: C = Circuit([[0, 1, 'R1'], [1, 2, 'L1'], [2, 0, 'C1']])
         sage: print("\n".join(render(free_stability_lines(C, C.lagrangian(),
         ....:                                               ReportContext({}, 100)))))
-        Stability of the free circuit (sources off), loop method:
-          characteristic polynomial: C1*L1*lambda_^2 + C1*R1*lambda_ + 1
-            LaTeX: ...
-          asymptotically stable for all positive element values (Lienard-Chipart conditions hold identically)
+        Stability of the free circuit (sources off), from its state equations:
+          characteristic polynomial: ...
+          stability: asymptotically stable (energy): ...
     """
-    from ..analysis import linearize, lienard_chipart_conditions
     sources = circuit.source_values_off()
     # declared signs, else the symbols of the element values (physical
     # resistances, inductances and capacitances; mutual inductances have no sign)
     values = circuit.positive_parameters() or sorted(
         {v for b in circuit.branches() if b.value is not None
          for v in SR(b.value).variables()} - set(sources), key=str)
+    from ..analysis.stability import energy_stability
     lam = SR.var('lambda_')
     free = L.subs(sources) if sources else L
     context.check("the characteristic polynomial (permanent bound of the determinant)",
                   characteristic_estimate(free))
-    system = linearize(free, {q: 0 for q in free.coordinates()})
+    system = circuit.free_linear_system()
     poly = system.characteristic_polynomial(lam, positive=values)
-    lines = ["Stability of the free circuit (sources off), loop method:"]
+    lines = ["Stability of the free circuit (sources off), from its state equations:"]
     lines += formula_lines("characteristic polynomial: ", poly, variables=[lam])
-    if poly.subs({lam: 0}).is_zero():
-        lines.append("  lambda = 0 is a root: some loop charge is not fixed by a capacitor, "
-                     "so the zero solution in loop charges is not asymptotically stable "
-                     "(the currents may still decay)")
-        return lines
-    check_routh_scheme(poly, lam, context.budget)
-    conditions = lienard_chipart_conditions(poly, lam, positive=values, budget=context.budget)
-    if conditions:
-        lines.append("  Lienard-Chipart conditions (each > 0), element values positive:")
-        for c in conditions:
-            lines += formula_lines("", c, indent="    ")
-    else:
-        lines.append("  asymptotically stable for all positive element values "
-                     "(Lienard-Chipart conditions hold identically)")
-    return lines
+    # a passive circuit is decided by its energy, without the Routh scheme
+    verdict = energy_stability(system, positive=values)
+    if verdict is None:
+        check_routh_scheme(poly, lam, context.budget)
+        verdict = system.stability(positive=values)
+    return lines + verdict.report_lines()

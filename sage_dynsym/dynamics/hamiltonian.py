@@ -267,7 +267,8 @@ class Hamiltonian(SageObject, NumericalMethods):
     def subs(self, values):
         r"""
         The Hamiltonian of the Lagrangian with the parameter values
-        ``values`` (a dict; exact numbers or floats) substituted.
+        ``values`` (a dict; exact numbers or floats, a float being the exact
+        decimal it prints as) substituted.
 
         EXAMPLES::
 
@@ -275,7 +276,7 @@ class Hamiltonian(SageObject, NumericalMethods):
             sage: x, dx, m, k = var('x dx m k')
             sage: H = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian()
             sage: H.subs({m: 2, k: 0.5}).expr()
-            1/4*p_x^2 + 0.250000000000000*x^2
+            1/4*p_x^2 + 1/4*x^2
         """
         if not isinstance(values, dict):
             raise ModelError(f"expected a dict {{parameter: value}}, got {brief(values)}",

@@ -126,7 +126,7 @@ from sage.symbolic.ring import SR
 
 from ..arguments import expression_argument, expression_list, symbol_arguments
 from ..errors import ModelError, brief
-from ..symbols import velocity, acceleration, momentum, t, sage_numbers
+from ..symbols import velocity, acceleration, momentum, t, exact_decimals
 from ..numerics.methods import NumericalMethods
 from ..numerics.values import check_model_values
 from .holonomic import HolonomicConstraints
@@ -476,9 +476,9 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         parameters leave that list.
 
         Coordinates and velocities must not be substituted: that would change
-        the dynamics in a way this method cannot track. Python floats become
-        Sage real numbers, which every later step accepts (the exact analysis
-        turns them into rationals).
+        the dynamics in a way this method cannot track. A float is the exact
+        decimal it prints as (``0.3`` is `3/10`: see
+        :func:`~sage_dynsym.symbols.exact_decimals`).
 
         EXAMPLES::
 
@@ -488,7 +488,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             Lagrangian in coordinates (x) : dx^2 - 4*x^2
             sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
             sage: L.first_order_system()
-            ([x, dx], [dx, -4.0*x])
+            ([x, dx], [dx, -4*x])
 
         TESTS::
 
@@ -504,7 +504,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
         """
         args = [substitution(a) for a in args]
-        kwds = {k: sage_numbers(v) for k, v in kwds.items()}
+        kwds = {k: exact_decimals(v) for k, v in kwds.items()}
         probe = SR.var('_probe_')
         protected = set(self._coordinates) | set(self._velocities) | {t}
         for v in protected:
@@ -812,15 +812,15 @@ class RouthFunction(Lagrangian):
 def substitution(arg):
     r"""
     A positional argument of :meth:`Lagrangian.subs`: a dict (symbols or
-    their names as keys) or an equation ``parameter == value``, with Python
-    numbers made Sage numbers; anything else is a
+    their names as keys) or an equation ``parameter == value``, with each
+    float the exact decimal it prints as; anything else is a
     :class:`~sage_dynsym.errors.ModelError`.
 
     EXAMPLES::
 
         sage: from sage_dynsym.dynamics.lagrangian import substitution
         sage: substitution({'k': 1.5r}), substitution(var('m') == 2)
-        ({k: 1.50000000000000}, m == 2)
+        ({k: 3/2}, m == 2)
         sage: substitution('k = 1')
         Traceback (most recent call last):
         ...
@@ -828,9 +828,9 @@ def substitution(arg):
     """
     if isinstance(arg, dict):
         return {SR.var(k) if isinstance(k, str) and k.isidentifier() else k: v
-                for k, v in sage_numbers(arg).items()}
+                for k, v in exact_decimals(arg).items()}
     if getattr(arg, 'is_relational', lambda: False)():
-        return sage_numbers(arg)
+        return exact_decimals(arg)
     raise ModelError(f"expected a dict {{parameter: value}} or equations parameter == value, "
                      f"got {brief(arg)}", entry="subs")
 

@@ -66,7 +66,7 @@ from sage.matrix.constructor import matrix
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
-from ..symbols import acceleration, constraint_multipliers, momentum, sage_numbers, t
+from ..symbols import acceleration, constraint_multipliers, momentum, t, exact_decimals
 from ..symbols import time_derivative
 from ..analysis.motion import SecondOrderEquations
 from ..algebra.trig_linear import TrigFractionField
@@ -441,7 +441,7 @@ class NonholonomicLagrangian(Lagrangian):
         """
         derived = Lagrangian.subs(self, *args, **kwds)
         args = [substitution(a) for a in args]
-        kwds = {k: sage_numbers(v) for k, v in kwds.items()}
+        kwds = {k: exact_decimals(v) for k, v in kwds.items()}
         return derived._derived(derived.expr(), nonholonomic=[g.subs(*args, **kwds)
                                                               for g in self._nonholonomic])
 

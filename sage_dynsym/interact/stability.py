@@ -6,8 +6,8 @@ A :class:`StabilityStudy` takes a nonlinear first-order system
 first-order form, ...) and an equilibrium that may depend on parameters. It
 does the symbolic work once -- first approximation
 (:func:`~sage_dynsym.analysis.linear.linearize`), characteristic polynomial,
-Liénard--Chipart conditions
-(:func:`~sage_dynsym.analysis.hurwitz.lienard_chipart_conditions`) -- and
+the conditions of asymptotic stability from the stability service
+(:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`) -- and
 then answers numerical questions for given parameter values: the
 characteristic roots, whether the conditions hold, the stability region in
 a plane of two parameters, a simulated trajectory of the *nonlinear*
@@ -131,7 +131,7 @@ class StabilityStudy(SageObject):
         point = dict(zip(self._variables, self._point))
         self._note = None
         try:
-            from ..analysis import linearize, lienard_chipart_conditions
+            from ..analysis import linearize
         except ImportError:     # analysis part not there: numeric criterion only
             self._linear = None
             J = matrix(SR, [[f.diff(v).subs(point) for v in self._variables] for f in self._rhs])
@@ -142,8 +142,12 @@ class StabilityStudy(SageObject):
         self._linear = linearize(self._rhs, point, self._variables, lhs_matrix=self._B)
         self._poly = self._linear.characteristic_polynomial(self._lam)
         try:
-            self._conditions = lienard_chipart_conditions(self._poly, self._lam,
-                                                          positive=positive)
+            # the one stability service decides; the page shows the
+            # conditions of its asymptotically stable case
+            self._conditions = _asymptotic_conditions(self._linear.stability(positive=positive))
+            if self._conditions is None:
+                self._note = ("no conjunction of conditions for asymptotic stability "
+                              "(see linear_system().stability()): stability from the roots")
         except AnalysisError as err:
             self._conditions = None
             self._note = (f"no symbolic conditions ({err}): stability from the roots; the "
@@ -252,12 +256,15 @@ class StabilityStudy(SageObject):
             sage: St.note() is None
             True
 
-        A stiffness `\sin k` is not rational in `k`: no symbolic
-        conditions::
+        A stiffness `\sin k` is an atom of the conditions; an undamped
+        oscillator is never asymptotically stable: no conditions, the
+        region from the roots::
 
-            sage: St = StabilityStudy([y, -sin(k)*x - c*y], [x, y], {x: 0, y: 0})
+            sage: StabilityStudy([y, -sin(k)*x - c*y], [x, y], {x: 0, y: 0}).conditions()
+            [sin(k), c]
+            sage: St = StabilityStudy([y, -k*x], [x, y], {x: 0, y: 0})
             sage: print(St.note())
-            no symbolic conditions (...): stability from the roots; ...
+            no conjunction of conditions for asymptotic stability (see linear_system().stability()): stability from the roots
             sage: St.conditions() is None
             True
         """
@@ -338,14 +345,13 @@ class StabilityStudy(SageObject):
             sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 2), (-1, 2))
             Graphics object consisting of 3 graphics primitives
 
-        Without symbolic conditions (`\sin k` is not rational in `k`), the
-        region is the stability map of the roots::
+        Without symbolic conditions (an undamped oscillator is never
+        asymptotically stable), the region is the stability map of the
+        roots::
 
-            sage: St = StabilityStudy([y, -sin(k)*x - c*y], [x, y], {x: 0, y: 0})
-            sage: print(St.note())
-            no symbolic conditions (...): stability from the roots; the region plot is a stability map of the characteristic roots (sage_dynsym.scale.stability_map)
+            sage: St = StabilityStudy([y, -k*x], [x, y], {x: 0, y: 0})
             sage: St.region_plot('k', 'c', {'k': 1, 'c': 1}, (-1, 4), (-1, 2))
-            Graphics object consisting of 4 graphics primitives
+            Graphics object consisting of 3 graphics primitives
 
         TESTS:
 
@@ -554,3 +560,15 @@ class StabilityStudy(SageObject):
             self.trajectory_plot(values, perturbation, t_end).show(figsize=[10, 3.5])
 
         return sage_interactive(page, **controls)
+
+
+def _asymptotic_conditions(verdict):
+    r"""The conditions (each ``> 0``) of the asymptotically stable case of
+    ``verdict``: ``[]`` where it holds everywhere, ``None`` where there is
+    no such case or it is not one conjunction of strict inequalities."""
+    for case in verdict.cases():
+        if case.verdict() == 'asymptotically stable':
+            if case.region() == [[]]:
+                return []
+            return case.conditions() or None
+    return None

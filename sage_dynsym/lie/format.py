@@ -52,7 +52,7 @@ EXAMPLES::
       solution 2 (1-parameter family): M2 = 0, M3 = 0
         stability depends on the parameters:
           stable (Routh-Lyapunov) where [A1 - A2 > 0, A1 - A3 > 0, M1 != 0] or [A1 - A2 < 0, A1 - A3 < 0, M1 != 0]
-          unstable (first approximation) where [(A1 - A2)*(A1 - A3) < 0, M1 != 0]
+          unstable (first approximation) where [A1 - A3 > 0, A1 - A2 < 0] or [A1 - A2 > 0, A1 - A3 < 0]
       ...
 """
 from ..errors import DescriptionError, DynSymError, brief

@@ -77,6 +77,7 @@ from ..analysis.stationary import stationary_solutions as _stationary_solutions
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from ..arguments import expression_list, symbol_arguments
+from ..symbols import exact_decimals
 from ..numerics.methods import NumericalMethods
 from ..numerics.values import check_model_values
 from .algebras import NAMED, PoissonStructure, default_names, poisson_structure
@@ -588,7 +589,8 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             ModelError: subs: A is declared positive, got -1
         """
         check_model_values(self, values, entry="subs")
-        values = {SR.var(k) if isinstance(k, str) else SR(k): SR(v) for k, v in values.items()}
+        values = {SR.var(k) if isinstance(k, str) else SR(k): SR(v)
+                  for k, v in exact_decimals(values).items()}
         names = {str(k) for k in values}
         for k in values:
             if str(k) not in {str(a) for a in self._parameters}:

@@ -193,12 +193,13 @@ def _operating_point_sections(system, name, point, positive):
         return lines
 
     def stability(context):
+        poly, lam, linear = context.results[key]
         try:
-            return stability_condition_lines(*context.results[key], positive, context)
+            return stability_condition_lines(poly, lam, positive, context, linear=linear)
         except BudgetError as err:
             # the conditions in the coefficients cost nothing; the coefficients
             # are in the report already
-            lines = coefficient_conditions_lines(*context.results[key], err.message)
+            lines = coefficient_conditions_lines(poly, lam, err.message)
             if lines is None:
                 raise
             return [f"Stability conditions ({key}):"] + lines
@@ -213,8 +214,8 @@ def operating_point_lines(system, L, point, context):
     r"""
     A steady motion of ``system`` (its operating ``point``): the
     linearization in the coordinates of the operating point, and its
-    characteristic polynomial. Returns the lines and the pair
-    ``(polynomial, variable)``.
+    characteristic polynomial. Returns the lines and the triple
+    ``(polynomial, variable, linear system)``.
 
     EXAMPLES: the report of ``examples/whipple_bicycle.yaml``
     (``sage-dynsym examples/whipple_bicycle.yaml``); see also
@@ -252,71 +253,40 @@ def operating_point_lines(system, L, point, context):
                                                      linear.W().rows())]))
     poly = linear.characteristic_polynomial(lam).expand()
     lines += formula_lines("characteristic polynomial: ", poly, variables=[lam])
-    return lines, (poly, lam)
+    return lines, (poly, lam, linear)
 
 
-def stability_condition_lines(poly, lam, positive, context):
+def stability_condition_lines(poly, lam, positive, context, linear=None):
     r"""
-    The stability conditions of a characteristic polynomial ``poly`` in
-    ``lam`` with the parameters ``positive`` declared positive: the
-    Liénard--Chipart conditions of its roots other than `\lambda = 0`, or,
-    when it is even (no dissipation), the conditions for simple purely
-    imaginary roots. Sines and cosines of parameters (a steer axis tilt)
-    are symbols there.
+    The stability of a linear system, as report lines: the verdict of the
+    stability service (:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`)
+    for ``linear``, with the parameters ``positive`` declared positive
+    (ignorable coordinates left out, said in the reason); without
+    ``linear``, for the companion system of the characteristic polynomial
+    ``poly`` in ``lam``. The Routh scheme of ``poly`` is checked against
+    the budget first.
 
     EXAMPLES::
 
         sage: from sage_dynsym.mechanics.report import stability_condition_lines
         sage: from sage_dynsym.dynamics.reporting import ReportContext
         sage: lam, c, k = var('lam c k')
-        sage: stability_condition_lines(lam^3 + c*lam^2 + k*lam, lam, [], ReportContext({}, 100))
-        ['  lambda = 0 is a root of multiplicity 1 (neutral directions: a family of steady motions); the conditions concern the other roots',
-         '  Lienard-Chipart conditions (each > 0) for asymptotic stability:',
-         Formula k,
-         Formula c]
+        sage: for line in stability_condition_lines(lam^2 + c*lam + k, lam, [c],
+        ....:                                       ReportContext({}, 100)):
+        ....:     print(line)
+          stability depends on the parameters:
+            asymptotically stable (first approximation) where [k > 0]: ...
+            unstable (first approximation) where [k < 0]: ...
     """
-    from ..analysis import lienard_chipart_conditions, real_negative_roots_conditions
-    from ..algebra.trigonometric import TrigPolynomialRing
-    lines = []
-    zeros = 0
-    while poly.subs({lam: 0}).is_zero() and poly.degree(lam) > 0:
-        poly, zeros = (poly / lam).expand(), zeros + 1
-    if zeros:
-        lines.append(f"  lambda = 0 is a root of multiplicity {zeros} (neutral directions: a "
-                     "family of steady motions); the conditions concern the other roots")
-    if poly.degree(lam) < 1:
-        return lines
-    ring = TrigPolynomialRing.for_expressions([poly], [lam], fractions=True)
-    symbols = {}
-    for angle in ring.angles():
-        tag = len(symbols) // 2
-        symbols[SR(angle).cos()] = SR.var(f'dynsym_cos{tag}')
-        symbols[SR(angle).sin()] = SR.var(f'dynsym_sin{tag}')
-    back = {v: k for k, v in symbols.items()}
-    flat = poly.subs(symbols)
-    odd = [flat.coefficient(lam, k) for k in range(1, flat.degree(lam) + 1, 2)]
-    declared = ", with the declared positive parameters:" if positive else ":"
-    if all(SR(c).is_zero() for c in odd):
-        # no dissipation: stable in first approximation when the roots are
-        # simple and purely imaginary, i.e. h(mu) of p = h(lambda^2) has
-        # simple negative real roots
-        mu = SR.var('mu_')
-        even = flat.subs({lam: mu.sqrt()}).expand()
-        check_routh_scheme(even, mu, context.budget)
-        conditions = real_negative_roots_conditions(even, mu, positive=positive,
-                                                    budget=context.budget)
-        lines.append("  no asymptotic stability (the odd coefficients vanish: no dissipation);"
-                     " the roots are simple and purely imaginary iff (each > 0)" + declared)
-    else:
-        check_routh_scheme(flat, lam, context.budget)
-        conditions = lienard_chipart_conditions(flat, lam, positive=positive,
-                                                budget=context.budget)
-        if not conditions:
-            lines.append("  asymptotically stable for all admissible parameters (the "
-                         "Lienard-Chipart conditions hold identically)")
-            return lines
-        lines.append("  Lienard-Chipart conditions (each > 0) for asymptotic stability"
-                     + declared)
-    for c in conditions:
-        lines += formula_lines("", SR(c).subs(back), indent="    ")
-    return lines
+    from ..analysis import LinearSystem
+    if linear is None:
+        coefficients = SR(poly).expand().coefficients(lam, sparse=False)
+        n = len(coefficients) - 1
+        companion = [[1 if j == i + 1 else 0 for j in range(n)] for i in range(n - 1)]
+        companion.append([-c / coefficients[-1] for c in coefficients[:-1]])
+        linear = LinearSystem([SR.var(f'x{i}') for i in range(n)], J=companion)
+    from ..algebra.translation import Translation
+    # the budget counts terms: atoms such as cos(lam) count as symbols
+    atoms = [a for a in Translation([], [lam], extra=[poly]).parameters() if not a.is_symbol()]
+    check_routh_scheme(SR(poly).subs({a: SR.symbol() for a in atoms}), lam, context.budget)
+    return linear.stability(positive=positive).report_lines()

@@ -46,7 +46,7 @@ from sage.misc.cachefunc import cached_method
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, brief
-from ..symbols import velocity, momentum, t, check_mechanical_names, sage_numbers
+from ..symbols import velocity, momentum, t, check_mechanical_names, exact_decimals
 from ..arguments import expression_list, symbol_arguments
 from ..algebra.trigonometric import SymbolicBackend
 from ..dynamics.holonomic import check_constraints
@@ -297,7 +297,10 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         INPUT:
 
         - ``values`` -- a dictionary ``{parameter: value}`` (keys symbols or
-          names); values exact or floating-point numbers, or expressions
+          names); values exact numbers (rationals, radicals, ``cos(pi/10)``),
+          expressions, or floating-point numbers, each taken as the exact
+          decimal it prints as (``9.81`` is `981/100`: see
+          :func:`~sage_dynsym.symbols.exact_decimals`)
 
         EXAMPLES::
 
@@ -308,7 +311,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             sage: S1 = S.subs({m: 1, l: 2, 'g': 9.81}); S1.parameters()
             []
             sage: S1.lagrangian().lagrange_equations()[1]
-            -4*dpsi^2*cos(theta)*sin(theta) + 4*ddtheta - 19.6200000000000*sin(theta)
+            -4*dpsi^2*cos(theta)*sin(theta) + 4*ddtheta - 981/50*sin(theta)
 
         TESTS::
 
@@ -341,7 +344,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
                 raise ModelError(f"{symbol} is not a parameter of the system; its parameters "
                                  f"are: {', '.join(map(str, self._parameters)) or '(none)'}",
                                  entry="subs")
-            substitution[symbol] = SR(sage_numbers(value))
+            substitution[symbol] = SR(exact_decimals(value))
 
         def sub(e):
             return SR(e).subs(substitution)

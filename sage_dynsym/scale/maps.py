@@ -163,13 +163,14 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
       of class ``1`` (stable in first approximation) may be computed
     - ``conditions`` -- (optional) the exact stability conditions (see
       :meth:`StabilityMap.exact`), drawn by :meth:`StabilityMap.plot`; or
-      ``'lienard-chipart'`` to derive them from the characteristic
-      polynomial with :func:`~sage_dynsym.analysis.hurwitz.lienard_chipart_conditions`
+      ``'lienard-chipart'`` for those of asymptotic stability from the
+      stability service (:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`)
     - ``classes`` -- (optional) the exact regions of the classes (see
       :meth:`StabilityMap.exact_classes`): a dict ``{2: region, 1:
       region}``, a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`,
-      or ``'spectrum'`` to derive them from the characteristic polynomial
-      with :func:`~sage_dynsym.analysis.spectrum.spectrum_regions`
+      or ``'spectrum'`` for the cases of the stability service's verdict
+      (:meth:`~sage_dynsym.analysis.linear.LinearSystem.stability`, with
+      respect to every variable, as the map's eigenvalues)
     - ``chunk_size`` -- points per Dask task
     - ``workers`` -- the number of workers of the local cluster (default:
       one per core; giving it with ``client=None`` asks for a local cluster)
@@ -319,14 +320,12 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     run_chunks(map_chunk, task, ranges, collect, client=client, workers=workers,
                timeout=timeout, progress=progress, label='stability-map')
     if conditions == 'lienard-chipart':
-        conditions, note = _lienard_chipart(poly, lam, note)
+        conditions, note = _lienard_chipart(fixed_system, note)
     if isinstance(classes, str):
         if classes != 'spectrum':
             raise AnalysisError(f"classes must be 'spectrum', a dict or a verdict, got "
                                 f"{classes!r}", entry=entry)
-        if poly is None:
-            poly, _ = _characteristic_polynomial(fixed_system, lam, True)
-        classes, note = _spectrum_classes(poly, lam, fixed_system, note)
+        classes, note = _spectrum_classes(fixed_system, note)
     name = system.name() if isinstance(system, Model) else None
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
                         values, method, tol, conditions, note, name,
@@ -556,30 +555,37 @@ def _characteristic_polynomial(linear, lam, required):
         return None, f"no characteristic polynomial ({err}): eigenvalues of the matrices"
 
 
-def _lienard_chipart(poly, lam, note):
-    from ..analysis import lienard_chipart_conditions
-    if poly is None:
-        return None, note
+def _lienard_chipart(linear, note):
+    r"""The conditions (each ``> 0``) of asymptotic stability: those of the
+    asymptotically stable case of the stability service's verdict."""
     try:
-        return lienard_chipart_conditions(poly, lam), note
+        case = _exact_verdict(linear).case('asymptotically stable')
     except (DynSymError, ArithmeticError, ValueError, TypeError, RuntimeError) as err:
         return None, f"no Lienard-Chipart conditions ({err})"
+    if case is None:
+        return None, "no Lienard-Chipart conditions (never asymptotically stable)"
+    return ([] if case.region() == [[]] else case.conditions() or None), note
 
 
-def _spectrum_classes(poly, lam, linear, note):
-    r"""The exact regions of the classes from the characteristic polynomial."""
-    from ..analysis.spectrum import spectrum_regions
+def _exact_verdict(linear):
+    # every variable: the map's eigenvalues are those of the whole system
+    return linear.stability(with_respect_to=linear.variables())
+
+
+def _spectrum_classes(linear, note):
+    r"""The exact regions of the classes: the cases of the stability
+    service's verdict."""
     try:
-        try:
-            S = spectrum_regions(poly, lam)
-        except AnalysisError as err:
-            if 'state matrix' not in str(err):
-                raise
-            J, B = _pencil(linear)      # roots on the axis for all values: semisimple?
-            S = spectrum_regions(poly, lam, matrix=B.inverse() * J)
+        verdict = _exact_verdict(linear)
     except (DynSymError, ArithmeticError, ValueError, TypeError, ZeroDivisionError) as err:
         return None, f"no exact classes ({err})"
-    return {2: S.asymptotic() or [], 1: (S.marginal() or []) + (S.undecided() or [])}, note
+    classes = {2: [], 1: []}
+    for case in verdict.cases():
+        kind = 2 if case.verdict() == 'asymptotically stable' else \
+            1 if case.verdict() != 'unstable' else None
+        if kind is not None:
+            classes[kind] += case.region() or []
+    return classes, note
 
 
 # ---------------------------------------------------------------------------
