@@ -18,9 +18,9 @@ same questions with the same meaning:
 - :meth:`~MotionSolution.stability` -- a
   :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`.
 
-:class:`MotionSolution` is their common base; the first-approximation part
-of a verdict is built here for both (:func:`first_approximation_cases`,
-:func:`combined_verdict`).
+:class:`MotionSolution` is their common base; their verdicts come from the
+one stability service,
+:meth:`LinearSystem.stability <sage_dynsym.analysis.linear.LinearSystem.stability>`.
 
 EXAMPLES: the conical motions of a spherical pendulum and the upright
 rolling of a disk, through the same four calls::
@@ -45,12 +45,6 @@ rolling of a disk, through the same four calls::
     {theta: 0, dpsi: 0, dphi: W} {Omega: 0} [] depends on the parameters
 """
 from sage.structure.sage_object import SageObject
-from sage.symbolic.ring import SR
-
-from ..algebra.conditions import positive_conditions, positive_conditions_all, \
-    simplify_conjunction
-from ..errors import AnalysisError
-from .verdict import StabilityVerdict
 
 
 class MotionSolution(SageObject):
@@ -209,149 +203,3 @@ class MotionSolution(SageObject):
             Solution {x: 0} (dimension 0)
         """
         return self._solution
-
-
-def first_approximation_regions(lin, positive):
-    r"""
-    The regions (lists of alternatives) of asymptotic stability and of
-    instability of the linear system ``lin``, from its characteristic
-    polynomial: the Liénard--Chipart conditions, and a coefficient of the
-    opposite sign to the leading one (a root with positive real part).
-
-    OUTPUT: a pair ``(asymptotic, unstable)``
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.linear import LinearSystem
-        sage: from sage_dynsym.analysis.motion_solution import first_approximation_regions
-        sage: c, k = var('c k')
-        sage: first_approximation_regions(LinearSystem([var('x')], M=[[1]], S=[[c]], W=[[k]]), [])
-        ([[k > 0, c > 0]], [[c < 0], [k < 0]])
-    """
-    from .hurwitz import lienard_chipart_conditions
-    from ..algebra.translation import Translation
-    lam = SR.var('lambda_')
-    p = lin.characteristic_polynomial(lam, positive=positive)
-    if not SR(p).has(lam):          # no dynamics left (e.g. a zero Lagrangian)
-        return [], []
-    T = Translation([], [], extra=[p])
-    f = T.flat_ring()(T.fraction(p))
-    gen = T.flat_ring()(T.fraction(lam))
-    coefficients = [T.symbolic(f.coefficient({gen: k})) if k else T.symbolic(f.subs({gen: 0}))
-                    for k in range(f.degree(gen), -1, -1)]
-    zero_roots = 0
-    while len(coefficients) > 1 and coefficients[-1].is_zero():
-        coefficients.pop()
-        zero_roots += 1
-    a0 = coefficients[0]
-    even = all(c.is_zero() for c in coefficients[1::2])
-    tested = coefficients[0::2] if even else coefficients
-    unstable = []
-    for c in tested[1:]:
-        cond = positive_conditions(-a0 * c, positive)
-        if cond is not None and cond not in unstable:
-            unstable.append(cond)
-    asymptotic = []
-    if not zero_roots and not even:
-        reduced = sum(c * lam ** k for k, c in enumerate(reversed(coefficients)))
-        lc = lienard_chipart_conditions((a0 * reduced).expand(), lam, positive=positive)
-        cond = positive_conditions_all(lc, positive) if lc else []
-        if cond is not None:
-            asymptotic.append(cond)
-    return asymptotic, unstable
-
-
-def marginal_region(lin, positive):
-    r"""
-    The region where ``lin`` is stable in first approximation, not
-    asymptotically (:mod:`.spectrum`); ``[]`` if nowhere or not decided.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.linear import LinearSystem
-        sage: from sage_dynsym.analysis.motion_solution import marginal_region
-        sage: marginal_region(LinearSystem([var('x')], M=[[1]], S=[[0]], W=[[var('k')]]), [])
-        [[k > 0]]
-    """
-    from .spectrum import spectrum_regions
-    lam = SR.symbol()
-    p = lin.characteristic_polynomial(lam, positive=positive)
-    if not SR(p).has(lam):
-        return []
-    try:
-        return spectrum_regions(p, lam, positive, matrix=lin.jacobian()).marginal() or []
-    except (AnalysisError, ArithmeticError, ValueError, TypeError, ZeroDivisionError):
-        return []
-
-
-def first_approximation_cases(lin, existence, positive, marginal=True):
-    r"""
-    The verdicts the first approximation ``lin`` gives where the motion
-    exists (``existence``, a conjunction): asymptotically stable and
-    unstable (Lyapunov's theorems), and, when ``marginal``, stable in first
-    approximation where the roots on the imaginary axis are simple.
-
-    OUTPUT: a list of :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.linear import LinearSystem
-        sage: from sage_dynsym.analysis.motion_solution import first_approximation_cases
-        sage: k = var('k')
-        sage: lin = LinearSystem([var('x')], M=[[1]], S=[[0]], W=[[k]])
-        sage: [(v.verdict(), v.region()) for v in first_approximation_cases(lin, [], [])]
-        [('unstable', [[k < 0]]), ('stable in first approximation', [[k > 0]])]
-    """
-    def where(alternatives):
-        return [a for a in (simplify_conjunction(existence + alt, positive)
-                            for alt in alternatives) if a is not None]
-
-    cases = []
-    asymptotic, unstable = first_approximation_regions(lin, positive)
-    for verdict, alts, why in (
-            ('asymptotically stable', asymptotic,
-             "all roots of the characteristic polynomial have negative real "
-             "parts (Liénard-Chipart)"),
-            ('unstable', unstable, "the characteristic polynomial has a root "
-             "with positive real part (Lyapunov's theorem on the first "
-             "approximation)")):
-        alts = where(alts)
-        if alts:
-            cases.append(StabilityVerdict(verdict, why, method='first approximation',
-                                          region=alts))
-    if marginal:
-        # where the other tests do not decide: roots simple on the imaginary axis
-        alts = where(marginal_region(lin, positive))
-        if alts:
-            cases.append(StabilityVerdict(
-                'stable in first approximation', "the roots of the characteristic "
-                "polynomial on the imaginary axis are simple (or semisimple), the "
-                "others have negative real parts: the linearized system is stable; "
-                "the nonlinear terms decide (critical case)",
-                method='first approximation', region=alts))
-    return cases
-
-
-def combined_verdict(cases, existence, undecided="neither the second variation nor the "
-                     "first approximation decides (critical case)"):
-    r"""
-    One verdict from the ``cases`` found: the case that holds wherever the
-    motion exists (``existence``), ``'undecided'`` without cases (with the
-    reason ``undecided``), else ``'depends on the parameters'`` with the
-    cases.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.motion_solution import combined_verdict
-        sage: from sage_dynsym.analysis.verdict import StabilityVerdict
-        sage: combined_verdict([StabilityVerdict('stable', 'why', region=[[]])], []).verdict()
-        'stable'
-        sage: combined_verdict([], []).verdict()
-        'undecided'
-    """
-    for case in cases:
-        if any(set(map(str, alt)) <= set(map(str, existence)) for alt in case.region()):
-            return case
-    if not cases:
-        return StabilityVerdict('undecided', undecided, region=[[]])
-    return StabilityVerdict('depends on the parameters', "see cases()", cases=cases)

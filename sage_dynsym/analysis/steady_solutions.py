@@ -29,7 +29,8 @@ from ..symbols import velocity
 from ..algebra.conditions import simplify_conjunction
 from ..algebra.solving import SolutionList, solve_exactly
 from .linear import LinearSystem
-from .motion_solution import MotionSolution, first_approximation_cases, combined_verdict
+from .motion_solution import MotionSolution
+from .verdict import verdict_from_parts
 from .operating_point import OperatingPoint
 from .steady import steady_motion_conditions, steady_linearization, split_point
 
@@ -90,8 +91,8 @@ def steady_motions(system, point, solve_for, positive=(), speeds=None, coordinat
         ....:                     coordinates=[th, psi]); s
         Steady motion 'upright' {theta: 0, dpsi: 0, dphi: W}
         sage: for case in s.stability().cases(): print(case.verdict(), case.region())
-        unstable [[C*W^2*m*r^2 + C^2*W^2 - A*g*m*r < 0]]
         stable in first approximation [[C*W^2*m*r^2 + C^2*W^2 - A*g*m*r > 0]]
+        unstable [[C*W^2*m*r^2 + C^2*W^2 - A*g*m*r < 0]]
     """
     conditions = [e for e in steady_motion_conditions(system, point, speeds).values()
                   if not e.is_zero()]
@@ -227,8 +228,8 @@ class SteadyMotionSolution(MotionSolution):
             sage: s.values(), s.linear_system().W()
             ({c: a}, [k])
             sage: for case in s.stability().cases(): print(case.verdict(), case.region())
-            unstable [[k < 0]]
             stable in first approximation [[k > 0]]
+            unstable [[k < 0]]
             sage: s.stability(positive=[m, I, k]).verdict()
             'stable in first approximation'
 
@@ -244,9 +245,20 @@ class SteadyMotionSolution(MotionSolution):
             symbol_arguments(positive, 'positive', error=AnalysisError)
         existence = simplify_conjunction(self.conditions(), positive) or []
         lin = _followed_by_velocities(self.linear_system())
-        return combined_verdict(first_approximation_cases(lin, existence, positive),
-                                existence, "the first approximation does not decide "
-                                "(critical case)")
+        # the one stability service, taken where the motion exists; a linear
+        # system that is stable (not asymptotically) leaves the nonlinear
+        # steady motion in the critical case: stable in first approximation
+        cases = lin.stability(positive=positive).cases()
+        marginal = 'stable in first approximation'
+        parts = [(marginal if c.verdict() == 'stable' else c.verdict(), c.region())
+                 for c in cases]
+        reasons = {c.verdict(): c.reason() for c in cases}
+        reasons.setdefault(marginal, reasons.pop('stable', None))
+        reasons.setdefault('undecided', "the first approximation does not decide (critical case)")
+        order = ['asymptotically stable', marginal, 'undecided', 'unstable']
+        parts.sort(key=lambda part: order.index(part[0]))
+        return verdict_from_parts(parts, reasons, {}, positive, domain=[existence],
+                                  rest='undecided')
 
 
 def _followed_by_velocities(lin):

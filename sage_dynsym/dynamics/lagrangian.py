@@ -374,7 +374,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
             sage: L.subs(g=-9.81)
             Traceback (most recent call last):
             ...
-            ModelError: subs: g is declared positive, got -9.81000000000000
+            ModelError: subs: g is declared positive, got -981/100
             sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
             ([m, l], [m, l, g])
         """

@@ -326,7 +326,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             sage: S.subs({'g': -9.81})
             Traceback (most recent call last):
             ...
-            ModelError: subs: g is declared positive, got -9.81000000000000
+            ModelError: subs: g is declared positive, got -981/100
         """
         if not isinstance(values, dict):
             raise ModelError(f"expected a dictionary {{parameter: value}}, got {values!r}",
