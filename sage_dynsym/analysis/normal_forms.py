@@ -70,6 +70,7 @@ from sage.rings.complex_interval_field import ComplexIntervalField
 from sage.rings.complex_mpfr import ComplexField
 from sage.rings.integer_ring import ZZ
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.polynomial.term_order import TermOrder
 from sage.rings.qqbar import QQbar, AA
 from sage.rings.rational_field import QQ
 from sage.rings.real_mpfr import RealField
@@ -335,24 +336,65 @@ def prod_(factors):
     return result
 
 
-def _bracket(f, g, n):
-    X = f.parent().gens()
-    return sum(f.derivative(X[k]) * g.derivative(X[n + k])
-               - f.derivative(X[n + k]) * g.derivative(X[k]) for k in range(n))
+def _bracket(f, g, gens, n):
+    return sum(f.derivative(gens[k]) * g.derivative(gens[n + k])
+               - f.derivative(gens[n + k]) * g.derivative(gens[k]) for k in range(n))
 
 
-def _part(f, degrees):
-    return f.parent()({e: c for e, c in f.dict().items() if sum(e) in degrees})
+class _PhaseRing:
+    r"""Polynomials in `\xi, \eta`: over the numbers, or (exact mode) one
+    flat polynomial ring over `\mathbb Q` with the generators of the
+    coefficients after the phase variables, so that Singular multiplies."""
 
+    def __init__(self, A):
+        n = A.n
+        names = [f"xi{k + 1}" for k in range(n)] + [f"eta{k + 1}" for k in range(n)]
+        self.n, self.A, self.flat = n, A, not A.is_numeric()
+        if self.flat:
+            self.P = PolynomialRing(QQ, names + list(A.K.variable_names()),
+                                    order=TermOrder('degrevlex', 2 * n)
+                                    + TermOrder('lex', A.K.ngens()))
+            self.groebner = [self.P(g) for g in A.groebner]
+        else:
+            self.P = PolynomialRing(A.K, names)
+        self.gens = self.P.gens()[:2 * n]
 
-def _lie_transform(f, W, top, n, reduce):
-    r"""`\exp(L_W) f = \sum_j \{\dots\{f, W\}, \dots, W\}/j!` up to degree ``top``."""
-    result, term, j = f, f, 1
-    while True:
-        term = _part(_bracket(term, W, n), range(top + 1)).map_coefficients(reduce) / j
-        if term.is_zero():
-            return result
-        result, j = result + term, j + 1
+    def coefficient(self, c):
+        return self.P(c)
+
+    def monomial(self, e):
+        return prod_(x ** k for x, k in zip(self.gens, e))
+
+    def terms(self, f):
+        r"""``f`` as a dict: phase exponents -> coefficient (in ``A.K``)."""
+        if not self.flat:
+            return {tuple(e): c for e, c in f.dict().items()}
+        found, m, K = {}, 2 * self.n, self.A.K
+        for e, c in f.dict().items():
+            found[e[:m]] = found.get(e[:m], 0) + c * K.monomial(*e[m:])
+        return found
+
+    def part(self, f, degrees):
+        m = 2 * self.n
+        return self.P({e: c for e, c in f.dict().items() if sum(e[:m]) in degrees})
+
+    def reduce(self, f):
+        if self.flat:
+            return f.reduce(self.groebner)
+        # rounding leaves traces of the terms that cancel: below the
+        # threshold of A.is_zero they are zero
+        eps = RealField(self.A.prec)(2) ** (-self.A.prec // 2)
+        return self.P({e: c for e, c in f.dict().items() if abs(c) >= eps})
+
+    def lie_transform(self, f, W, top):
+        r"""`\exp(L_W) f = \sum_j \{\dots\{f, W\}, \dots, W\}/j!` up to degree ``top``."""
+        result, term, j = f, f, 1
+        while True:
+            term = self.reduce(self.part(_bracket(term, W, self.gens, self.n),
+                                         range(top + 1))) / j
+            if term.is_zero():
+                return self.reduce(result)
+            result, j = result + term, j + 1
 
 
 def normal_form(arithmetic, order=4):
@@ -405,27 +447,26 @@ def normal_form(arithmetic, order=4):
     columns = [J * w_dash[k] * A.inverse(c[k], ('c', k)) for k in range(n)] + \
         [-J * w[k] for k in range(n)]
     T = matrix(K, columns).transpose()
-    names = [f"xi{k + 1}" for k in range(n)] + [f"eta{k + 1}" for k in range(n)]
-    P = PolynomialRing(K, names)
-    z = T * vector(P.gens())
-    H = _part(A.H.change_ring(K) if not A.is_numeric() else A.H, range(2, order + 1))
-    Hz = _part(H(*z), range(2, order + 1)).map_coefficients(A.reduce)
-    coordinates = list(P.gens())
+    phase = _PhaseRing(A)
+    z = T.apply_map(phase.coefficient) * vector(phase.gens)
+    Hz = phase.P(0)
+    for e, h in A.H.dict().items():
+        if 2 <= sum(e) <= order:
+            Hz += phase.coefficient(K(h)) * prod_(x ** k for x, k in zip(z, e))
+    Hz = phase.reduce(phase.part(Hz, range(2, order + 1)))
     generators = []
     for d in range(3, order + 1):
-        W, resonant = P(0), []
-        for e, h in _part(Hz, [d]).dict().items():
+        W = phase.P(0)
+        for e, h in phase.terms(phase.part(Hz, [d])).items():
             j = tuple(e[k] - e[n + k] for k in range(n))
             divisor = sum(j_k * lam for j_k, lam in zip(j, A.lambdas))
             zero = True if not any(j) else A.is_zero(A.reduce(divisor))
             if zero is False:
-                W += A.reduce(h * A.inverse(divisor, ('d', j))) * P.monomial(*e)
-            else:
-                resonant.append((e, zero))
+                W += phase.coefficient(A.reduce(h * A.inverse(divisor, ('d', j)))) * \
+                    phase.monomial(e)
         generators.append(W)
-        Hz = _lie_transform(Hz, W, order, n, A.reduce)
-        coordinates = [_lie_transform(x, W, order - 1, n, A.reduce) for x in coordinates]
-    return BirkhoffNormalForm(A, order, P, Hz, T, coordinates, generators, (w, w_dash, c))
+        Hz = phase.lie_transform(Hz, W, order)
+    return BirkhoffNormalForm(A, order, phase, Hz, T, generators, (w, w_dash, c))
 
 
 def _eigenvector(A, B, lam, column):
@@ -455,13 +496,12 @@ class BirkhoffNormalForm(SageObject):
         Birkhoff normal form of order 4 in 1 degree(s) of freedom: 1.00000000000000*I1 - 0.0625000000000000*I1^2
     """
 
-    def __init__(self, arithmetic, order, ring, H, T, coordinates, generators, modes):
+    def __init__(self, arithmetic, order, phase, H, T, generators, modes):
         self._A = arithmetic
         self._order = order
-        self._ring = ring
+        self._phase = phase
         self._H = H
         self._T = T
-        self._coordinates = coordinates
         self._generators = generators
         self._modes = modes
 
@@ -540,11 +580,11 @@ class BirkhoffNormalForm(SageObject):
         for the terms in `\xi_k\eta_k` only; the resonant ones apart."""
         n = self._A.n
         terms, resonant = {}, {}
-        for e, h in self._H.dict().items():
+        for e, h in self._phase.terms(self._H).items():
             if all(e[k] == e[n + k] for k in range(n)):
                 terms[tuple(e[:n])] = h
             else:
-                resonant[e] = h
+                resonant[tuple(e)] = h
         return terms, resonant
 
     def _real_factor(self, m):
@@ -680,7 +720,11 @@ class BirkhoffNormalForm(SageObject):
             sage: max(abs(c) for e, c in error.dict().items() if sum(e) <= 4) < 1e-20
             True
         """
-        return self._T, list(self._coordinates)
+        phase = self._phase
+        coordinates = list(phase.gens)
+        for W in self._generators:
+            coordinates = [phase.lie_transform(x, W, self._order - 1) for x in coordinates]
+        return self._T, coordinates
 
     def generators(self):
         r"""The generating functions `W_3, W_4, \dots` of the Lie transforms
@@ -806,6 +850,45 @@ class BirkhoffNormalForm(SageObject):
             if exact_zero or abs(value) <= tolerance:
                 found.append((k, 0 if exact_zero else value))
         return sorted(found, key=lambda kv: abs(kv[1]))
+
+
+    def resonant_amplitude(self, degree):
+        r"""
+        The amplitude `a` of the resonant terms of degree ``degree``,
+        written `a\,\prod I_k^{(a_k + b_k)/2}\cos(\dots)`: for each pair of
+        conjugate terms `\alpha\xi^a\eta^b + \beta\xi^b\eta^a`,
+        `a = 2\sqrt{\alpha\beta\prod(-i\sigma_k)^{a_k + b_k}}` (summed
+        over the pairs; ``0`` when there is no resonant term).
+
+        EXAMPLES: `H = (q_1^2 + p_1^2) - (q_2^2 + p_2^2)/2 + q_1 q_2^2`,
+        resonance `2 \cdot 1 = 1\cdot 2`; `q_1 q_2^2 = \sqrt{I_1/2}
+        (I_2/1)\,2\cos\varphi_1 \cos^2\varphi_2` averages to
+        `\sqrt{2}/2\, I_1^{1/2} I_2 \cos(\varphi_1 - 2\varphi_2)`::
+
+            sage: from sage_dynsym.analysis.normal_forms import normal_form, FormalArithmetic
+            sage: R = PolynomialRing(QQ, 'q1, q2, p1, p2'); q1, q2, p1, p2 = R.gens()
+            sage: H = (q1^2 + p1^2) - (q2^2 + p2^2)/2 + q1*q2^2
+            sage: normal_form(FormalArithmetic.numeric(H, 2), 3).resonant_amplitude(3)
+            0.707106781186548
+        """
+        A = self._A
+        n = A.n
+        signs = self.signs()
+        total, seen = 0, set()
+        terms = self.resonant_terms()
+        for e, alpha in terms.items():
+            if sum(e) != degree or e in seen:
+                continue
+            partner = tuple(e[n:]) + tuple(e[:n])
+            seen |= {e, partner}
+            beta = terms.get(partner, 0)
+            power = sum(e[k] + e[n + k] for k in range(n))
+            sign = prod_(s ** (e[k] + e[n + k]) for k, s in enumerate(signs))
+            a, b = (alpha, beta) if A.is_numeric() else (A.value(alpha), A.value(beta))
+            i = a.parent().gen() if A.is_numeric() else a.parent().gen()
+            square = (a * b * sign * (-i) ** power).real()
+            total += 2 * square.abs().sqrt()
+        return total
 
 
 def _gcd(k):

@@ -191,7 +191,7 @@ def _to_base(c, base):
         else base(QQ(numerator) / QQ(denominator))
 
 
-def birkhoff_normal_form(model, at, order=4, sample=None, prec=None):
+def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False):
     r"""
     The Birkhoff normal form of the Hamiltonian of ``model`` at the
     equilibrium ``at`` (see :mod:`~sage_dynsym.analysis.normal_forms`).
@@ -206,8 +206,12 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None):
       choices that depend on the point (the order of the frequencies and
       the signs of the modes); the coefficients are then expressions in the
       parameters and the symbols ``omega1, ...``
-    - ``prec`` -- (optional) bits of a numeric computation
-      (``ComplexField(prec)``); by default exact
+    - ``prec`` -- (default: 256) bits of a numeric computation
+      (``ComplexField(prec)``)
+    - ``exact`` -- (default: ``False``) compute with exact coefficients
+      (formal generators, see :class:`~sage_dynsym.analysis.normal_forms.FormalArithmetic`),
+      also when every parameter has a value; exact coefficients swell, and
+      beyond small problems numerics are faster
 
     OUTPUT: a :class:`~sage_dynsym.analysis.normal_forms.BirkhoffNormalForm`
 
@@ -237,10 +241,8 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None):
     """
     H, values, relations = polynomial_hamiltonian(model, at, order)
     n = len(H.parent().gens()) // 2
-    if prec is not None:
-        if any(v is None for g, v in values.items() if not g.startswith('c')):
-            raise AnalysisError("a numeric normal form needs a value of every parameter "
-                                "in at=", entry="prec")
+    if not exact and all(v is not None for v in values.values()):
+        prec = prec or 256
         CC = __import__('sage.rings.complex_mpfr', fromlist=['ComplexField']).ComplexField(prec)
         point = [CC(v) for v in values.values()]
         numeric = H.map_coefficients(lambda c: CC(c(*point)) if point else CC(c),
@@ -248,3 +250,157 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None):
         return normal_form(FormalArithmetic.numeric(numeric, n, prec), order)
     sample = {str(k): v for k, v in (sample or {}).items()}
     return normal_form(FormalArithmetic(H, n, values, relations, sample=sample), order)
+
+
+def _exact_linearization(H, values):
+    r"""The Hessian at the point over ``QQbar`` and the roots of `JS`."""
+    from sage.matrix.constructor import matrix
+    from ..analysis.normal_forms import symplectic_unit
+    n = len(H.parent().gens()) // 2
+    point = [QQbar(v) for v in values.values()]
+    X = H.parent().gens()
+    H2 = H.parent()({e: c for e, c in H.dict().items() if sum(e) == 2})
+    S = matrix(QQbar, 2 * n, 2 * n, lambda i, j: QQbar(
+        H2.derivative(X[i]).derivative(X[j]).constant_coefficient()(*point)
+        if point else H2.derivative(X[i]).derivative(X[j]).constant_coefficient()))
+    roots = (symplectic_unit(n).change_ring(QQbar) * S).charpoly('x').roots(QQbar)
+    return S, roots
+
+
+def nonlinear_stability(model, at, order=4, positive=(), prec=256):
+    r"""
+    Lyapunov stability of an equilibrium of a conservative system beyond
+    the first approximation (see the module documentation for the
+    theorems).
+
+    INPUT:
+
+    - ``model`` -- a Lagrangian, Routh function or Hamiltonian (conserved)
+    - ``at`` -- dict coordinate -> value at the equilibrium, with a value
+      of every parameter
+    - ``order`` -- (default: 4) the degree of the normal form (6 decides
+      where Arnold's determinant of degree 4 vanishes)
+    - ``positive`` -- (optional) symbols declared positive (recorded in
+      the verdict)
+    - ``prec`` -- (default: 256) bits of the numeric normal form; the
+      linearization, the frequencies and the resonances are exact
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+
+    EXAMPLES: L4 of the restricted three-body problem::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import nonlinear_stability
+        sage: x, y, dx, dy, mu = var('x y dx dy mu')
+        sage: r1, r2 = sqrt((x + mu)^2 + y^2), sqrt((x - 1 + mu)^2 + y^2)
+        sage: L = Lagrangian(((dx - y)^2 + (dy + x)^2)/2 + (1 - mu)/r1 + mu/r2, [x, y])
+        sage: L4 = {x: 1/2 - mu, y: sqrt(3)/2}
+        sage: nonlinear_stability(L, {**L4, mu: 1/100})
+        stable: Arnold-Moser theorem: ...
+        sage: nonlinear_stability(L, {**L4, mu: 1/20})
+        unstable: a root of the linearization has a positive real part ...
+        sage: mu2 = (1 - sqrt(1 - 64/675))/2             # omega1 = 2 omega2
+        sage: nonlinear_stability(L, {**L4, mu: mu2}).reason()
+        'resonance 1:2 (k = (1, 2)) with a nonzero resonant term of degree 3 (amplitude ...): unstable (Markeev)'
+
+    TESTS::
+
+        sage: nonlinear_stability(L, L4)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: give a value to the parameters ['mu'] ...
+    """
+    H, values, _ = polynomial_hamiltonian(model, at, 2)
+    free = [g for g, v in values.items() if v is None]
+    if free:
+        raise AnalysisError(f"give a value to the parameters {free} (for the cases over the "
+                            "parameters see birkhoff_normal_form(..., sample=...) and "
+                            "critical_values)", entry="at")
+    S, roots = _exact_linearization(H, values)
+    n = S.nrows() // 2
+
+    def verdict(kind, reason, method):
+        return StabilityVerdict(kind, reason, method=method, positive=positive)
+    if any(r.real() > 0 for r, _ in roots):
+        return verdict('unstable', "a root of the linearization has a positive real part "
+                       "(Lyapunov's theorem on the first approximation)", 'first approximation')
+    eigen = S.change_ring(AA_()).eigenvalues() if S.is_symmetric() else []
+    if all(e > 0 for e in eigen) or all(e < 0 for e in eigen):
+        return verdict('stable', "the energy has a strict minimum at the equilibrium "
+                       "(Lagrange-Dirichlet): a definite first integral, whatever the "
+                       "resonances" if eigen[0] > 0 else "the energy is negative definite at "
+                       "the equilibrium: a definite first integral", 'energy')
+    if any(m > 1 for _, m in roots) or any(r.is_zero() for r, _ in roots):
+        return verdict('undecided', "multiple or zero roots of the linearization: a critical "
+                       "case the normal forms of this package do not treat", 'normal form')
+    order = max(order, 4) if n == 2 else order
+    nf = birkhoff_normal_form(model, at, order, prec=prec)
+    resonances = _exact_resonances(roots, nf.signs(), order)
+    if n != 2:
+        found = [k for k in resonances]
+        return verdict('stable in first approximation', "the normal form of order "
+                       f"{order} has {'the resonances ' + str(found) if found else 'no resonance'}"
+                       "; in more than two degrees of freedom it gives formal stability only, "
+                       "not Lyapunov stability", 'normal form')
+    return _two_degrees(nf, resonances, order, verdict)
+
+
+def AA_():
+    from sage.rings.qqbar import AA
+    return AA
+
+
+def _exact_resonances(roots, signs, order):
+    r"""The resonances `k\cdot w = 0`, `|k| \le` ``order``, exactly from the
+    roots (``k1 > 0``, primitive), by order."""
+    omegas = sorted([r.imag() for r, _ in roots if r.imag() > 0], reverse=True)
+    w = [s * om for s, om in zip(signs, omegas)]
+    from sage.arith.misc import gcd
+    import itertools
+    found = []
+    for k in itertools.product(range(-order, order + 1), repeat=len(w)):
+        if 0 < sum(map(abs, k)) <= order and next(x for x in k if x) > 0 and \
+                gcd(list(k)) == 1 and sum(a * b for a, b in zip(k, w)) == 0:
+            found.append(k)
+    return sorted(found, key=lambda k: sum(map(abs, k)))
+
+
+def _two_degrees(nf, resonances, order, verdict):
+    eps = QQ(2) ** (-nf.arithmetic().prec // 2) if nf.arithmetic().is_numeric() else 0
+    for k in resonances:
+        size = sum(map(abs, k))
+        name = f"resonance {min(map(abs, k))}:{max(map(abs, k))} (k = {k})"
+        if size == 3:
+            a = nf.resonant_amplitude(3)
+            if a > eps:
+                return verdict('unstable', f"{name} with a nonzero resonant term of degree 3 "
+                               f"(amplitude {a.n(20)}): unstable (Markeev)", 'Markeev')
+            return verdict('undecided', f"{name} whose resonant term of degree 3 vanishes: "
+                           "not decided at this order", 'Markeev')
+        if size == 4:
+            k1, k2 = map(abs, k)
+            form = nf._form_values(4)
+            h4 = abs(form.get((2, 0), 0) * k1 ** 2 + form.get((1, 1), 0) * k1 * k2
+                     + form.get((0, 2), 0) * k2 ** 2)
+            a = nf.resonant_amplitude(4) * QQ(k1 ** k1 * k2 ** k2).sqrt()
+            if abs(h4 - a) <= eps:
+                return verdict('undecided', f"{name}: the terms in the actions and the "
+                               "resonant term balance (Markeev's boundary case)", 'Markeev')
+            if h4 > a:
+                return verdict('stable', f"{name}: the terms of degree 4 in the actions "
+                               f"dominate the resonant term ({h4.n(20)} > {a.n(20)}): stable "
+                               "(Markeev)", 'Markeev')
+            return verdict('unstable', f"{name}: the resonant term of degree 4 dominates "
+                           f"({a.n(20)} > {h4.n(20)}): unstable (Markeev)", 'Markeev')
+    for degree in range(4, order + 1, 2):
+        low = [k for k in resonances if sum(map(abs, k)) <= degree]
+        if low:
+            break
+        D = nf.arnold_determinant(degree)
+        if abs(D) > eps:
+            return verdict('stable', f"Arnold-Moser theorem: no resonance up to order "
+                           f"{degree} and Arnold's determinant of degree {degree} "
+                           f"D = {D.real().n(30)} is not zero", 'Arnold-Moser')
+    return verdict('undecided', f"Arnold's determinant vanishes up to order {order} "
+                   "(or a resonance of order 5 to 6 intervenes): compute the normal form "
+                   "to a higher order (order=6)", 'Arnold-Moser')
