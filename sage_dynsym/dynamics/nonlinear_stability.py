@@ -32,8 +32,8 @@ EXAMPLES: the pendulum at its lower position (a minimum of the energy)::
     sage: from sage_dynsym.dynamics.nonlinear_stability import birkhoff_normal_form, nonlinear_stability
     sage: q, dq = var('q dq')
     sage: L = Lagrangian(dq^2/2 + cos(q), [q])
-    sage: nf = birkhoff_normal_form(L, {q: 0}, order=6)
-    sage: nf.coefficients(exact=True)
+    sage: nf = birkhoff_normal_form(L, {q: 0}, order=6, exact=True)
+    sage: {m: QQ(c) for m, c in nf.coefficients(exact=True).items()}
     {(1,): 1, (2,): -1/16, (3,): -1/256}
     sage: nonlinear_stability(L, {q: 0})
     stable: the energy has a strict minimum at the equilibrium (Lagrange-Dirichlet): ...
@@ -60,7 +60,7 @@ from ..analysis.verdict import StabilityVerdict
 from .hamiltonian import Hamiltonian
 
 __all__ = ['birkhoff_normal_form', 'nonlinear_stability', 'BirkhoffNormalForm',
-           'polynomial_hamiltonian']
+           'polynomial_hamiltonian', 'exceptional_values']
 
 
 def _hamiltonian(model):
@@ -130,7 +130,7 @@ def polynomial_hamiltonian(model, at, order):
         sage: q, dq, k = var('q dq k')
         sage: H, values, relations = polynomial_hamiltonian(Lagrangian(dq^2/2 + k*cos(q), [q]), {q: 0}, 4)
         sage: H, values
-        (-1/24*k*q1^4 + 1/2*k*q1^2 + 1/2*p1^2, {'k': None})
+        ((-1/24*k)*q1^4 + 1/2*k*q1^2 + 1/2*p1^2 - k, {'k': None})
     """
     H = _hamiltonian(model)
     point, values, expr = _point(H, at)
@@ -222,11 +222,11 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False
         sage: x, y, dx, dy, mu = var('x y dx dy mu')
         sage: r1, r2 = sqrt((x + mu)^2 + y^2), sqrt((x - 1 + mu)^2 + y^2)
         sage: L = Lagrangian(((dx - y)^2 + (dy + x)^2)/2 + (1 - mu)/r1 + mu/r2, [x, y])
-        sage: nf = birkhoff_normal_form(L, {x: 1/2 - mu, y: sqrt(3)/2, mu: 1/100})
-        sage: nf.frequencies()
-        [0.9637049655652809?, -0.2668795391069999?]
-        sage: nf.arnold_determinant().real().n(30)
-        0.026...
+        sage: nf = birkhoff_normal_form(L, {x: 1/2 - mu, y: sqrt(3)/2, mu: 1/100}, prec=100)
+        sage: nf.frequencies()  # rel tol 1e-25
+        [0.96332210908509951194826582374, -0.26834774854251271758146030705]
+        sage: nf.arnold_determinant()  # rel tol 1e-20
+        0.099733995547560912150549025882
 
     TESTS::
 
@@ -404,3 +404,153 @@ def _two_degrees(nf, resonances, order, verdict):
     return verdict('undecided', f"Arnold's determinant vanishes up to order {order} "
                    "(or a resonance of order 5 to 6 intervenes): compute the normal form "
                    "to a higher order (order=6)", 'Arnold-Moser')
+
+
+def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec=128,
+                       tolerance=QQ((1, 10 ** 14))):
+    r"""
+    The values of one parameter where the verdict of
+    :func:`nonlinear_stability` changes, in two degrees of freedom: the
+    boundary of stability in first approximation (two frequencies meet),
+    the resonances `k_1\omega_1 = k_2\omega_2` with `k_1 + k_2 \le`
+    ``order`` (exact: algebraic numbers, roots of resultants of the
+    characteristic polynomial), and the zeros of Arnold's determinant
+    (numbers: sign changes of `D` on ``samples`` points between the
+    resonances, where `D` has its poles, refined by bisection to
+    ``tolerance``).
+
+    INPUT:
+
+    - ``model``, ``at`` -- as for :func:`birkhoff_normal_form`, with the
+      parameter free (the other parameters given values)
+    - ``parameter`` -- the free parameter
+    - ``interval`` -- a pair ``(a, b)`` of numbers: where to look
+    - ``order`` -- (default: 4) the resonances' order and the degree of
+      Arnold's determinant
+    - ``samples``, ``prec``, ``tolerance`` -- of the search for the zeros
+      of `D`
+
+    OUTPUT: a dict: ``'first approximation'``, ``'resonance k1:k2'`` ->
+    a list of algebraic numbers; ``'Arnold determinant'`` -> a list of
+    real numbers
+
+    EXAMPLES: the exceptional mass ratios of L4 (Routh's `\mu_1`,
+    Deprit's `\mu_c`, the resonances)::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import exceptional_values
+        sage: x, y, dx, dy, mu = var('x y dx dy mu')
+        sage: r1, r2 = sqrt((x + mu)^2 + y^2), sqrt((x - 1 + mu)^2 + y^2)
+        sage: L = Lagrangian(((dx - y)^2 + (dy + x)^2)/2 + (1 - mu)/r1 + mu/r2, [x, y])
+        sage: values = exceptional_values(L, {x: 1/2 - mu, y: sqrt(3)/2}, mu, (0, 1/2))  # long time
+        sage: {k: [v.n(digits=12) for v in vs] for k, vs in values.items()}  # long time
+        {'Arnold determinant': [0.0109136676772],
+         'first approximation': [0.0385208965046],
+         'resonance 1:2': [0.0242938971421],
+         'resonance 1:3': [0.0135160160225]}
+    """
+    from sage.rings.qqbar import AA
+    from sage.rings.real_mpfr import RealField
+    from sage.rings.complex_mpfr import ComplexField
+    from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing as PR
+    H, values, relations = polynomial_hamiltonian(model, at, order)
+    name = str(parameter)
+    if values.get(name, 0) is not None:
+        raise AnalysisError(f"{parameter} must be a free parameter of the Taylor coefficients "
+                            f"(free: {[g for g, v in values.items() if v is None]})",
+                            entry="parameter")
+    others = [g for g, v in values.items() if v is None and g != name]
+    if others:
+        raise AnalysisError(f"give the parameters {others} values in at=", entry="at")
+    a, b = AA(interval[0]), AA(interval[1])
+    base = H.base_ring()
+    t = PR(AA, 't').gen()
+    point = [t if g == name else AA(values[g]) for g in base.variable_names()]
+    S, _ = _symbolic_hessian(H, point)
+    n = S.nrows() // 2
+    if n != 2:
+        raise AnalysisError(f"exceptional values are for two degrees of freedom, not {n}",
+                            entry="model")
+    from ..analysis.normal_forms import symplectic_unit
+    chi = (symplectic_unit(n).change_ring(S.base_ring()) * S).charpoly('x')
+    s = PR(S.base_ring(), 's').gen()
+    p = sum(chi[2 * k] * s ** k for k in range(n + 1))      # chi(lambda) = p(lambda^2)
+    found = {}
+
+    def roots_in(poly):
+        poly = poly.numerator() if hasattr(poly, 'numerator') else poly
+        return sorted(r for r in PR(AA, 't')(poly).roots(AA, multiplicities=False)
+                      if a < r < b)
+    found['first approximation'] = roots_in(p.discriminant())
+    for k1 in range(1, order):
+        for k2 in range(k1 + 1, order + 1 - k1):
+            if gcd_(k1, k2) != 1:
+                continue
+            # omega1/omega2 = k2/k1: s1 = (k2/k1)^2 s2 for two roots s = -omega^2
+            q = p.resultant(p(s * QQ(k2) ** 2 / QQ(k1) ** 2))
+            hits = [r for r in roots_in(q) if _ratio(p, r, k2 / QQ(k1))]
+            if hits:
+                found[f"resonance {k1}:{k2}"] = hits
+    found['Arnold determinant'] = _determinant_zeros(H, values, name, found, a, b,
+                                                     order, samples, prec, tolerance)
+    return dict(sorted(found.items()))
+
+
+def gcd_(a, b):
+    from sage.arith.misc import gcd
+    return gcd(a, b)
+
+
+def _symbolic_hessian(H, point):
+    from sage.matrix.constructor import matrix
+    n = len(H.parent().gens()) // 2
+    X = H.parent().gens()
+    H2 = H.parent()({e: c for e, c in H.dict().items() if sum(e) == 2})
+    entries = [[H2.derivative(X[i]).derivative(X[j]).constant_coefficient()(*point)
+                for j in range(2 * n)] for i in range(2 * n)]
+    return matrix(entries), n
+
+
+def _ratio(p, r, ratio):
+    r"""Whether at the parameter ``r`` the two roots `s = -\omega^2` of ``p``
+    are negative and `\omega_1/\omega_2 =` ``ratio``."""
+    from sage.rings.qqbar import AA
+    roots = sorted(p.map_coefficients(lambda c: c(r)).roots(AA, multiplicities=False))
+    if len(roots) != 2 or any(x >= 0 for x in roots):
+        return False
+    return roots[0] == ratio ** 2 * roots[1]
+
+
+def _determinant_zeros(H, values, name, found, a, b, order, samples, prec, tolerance):
+    from sage.rings.complex_mpfr import ComplexField
+    from sage.rings.real_mpfr import RealField
+    CC = ComplexField(prec)
+    names = H.base_ring().variable_names()
+    degree = 4
+
+    def D(m):
+        point = [CC(m) if g == name else CC(values[g]) for g in names]
+        numeric = H.map_coefficients(lambda c: CC(c(*point)), new_base_ring=CC)
+        try:
+            nf = normal_form(FormalArithmetic.numeric(numeric, 2, prec), degree)
+        except AnalysisError:
+            return None
+        return nf.arnold_determinant(degree)
+    cuts = sorted([a, b] + [r for key, rs in found.items() for r in rs])
+    zeros = []
+    RF = RealField(prec)
+    for lo, hi in zip(cuts, cuts[1:]):
+        grid = [RF(lo) + (RF(hi) - RF(lo)) * (k + QQ((1, 2))) / samples for k in range(samples)]
+        vals = [D(m) for m in grid]
+        for (m0, d0), (m1, d1) in zip(zip(grid, vals), zip(grid[1:], vals[1:])):
+            if d0 is None or d1 is None or d0.sign() == d1.sign():
+                continue
+            while m1 - m0 > tolerance:
+                mid = (m0 + m1) / 2
+                dm = D(mid)
+                if dm.sign() == d0.sign():
+                    m0, d0 = mid, dm
+                else:
+                    m1 = mid
+            zeros.append((m0 + m1) / 2)
+    return zeros
