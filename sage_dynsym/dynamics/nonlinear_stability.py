@@ -105,6 +105,29 @@ def _point(H, at):
     return point, values, expr
 
 
+def taylor_polynomial(model, at, order):
+    r"""The Taylor polynomial of degree ``order`` of the Hamiltonian of
+    ``model`` at the equilibrium ``at`` (see :func:`polynomial_hamiltonian`)
+    in the displacements ``q1..qn, p1..pn``, with symbolic coefficients.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import taylor_polynomial
+        sage: q, dq = var('q dq')
+        sage: taylor_polynomial(Lagrangian(dq^2/2 + cos(q), [q]), {q: pi}, 3)
+        1/2*q1^2 + 1/2*p1^2 + 1
+    """
+    H = _hamiltonian(model)
+    point, values, expr = _point(H, at)
+    variables = H.coordinates() + H.momenta()
+    n = len(H.coordinates())
+    shifts = [SR.var(f"q{k + 1}") for k in range(n)] + [SR.var(f"p{k + 1}") for k in range(n)]
+    shifted = expr.subs({v: point[v] + s for v, s in zip(variables, shifts)})
+    series = shifted.taylor(*[(s, 0) for s in shifts], order)
+    return series.polynomial(ring=PolynomialRing(SR, [str(s) for s in shifts]))
+
+
 def polynomial_hamiltonian(model, at, order):
     r"""
     The Taylor polynomial of degree ``order`` of the Hamiltonian of
@@ -133,25 +156,19 @@ def polynomial_hamiltonian(model, at, order):
         ((-1/24*k)*q1^4 + 1/2*k*q1^2 + 1/2*p1^2 - k, {'k': None})
     """
     H = _hamiltonian(model)
-    point, values, expr = _point(H, at)
-    variables = H.coordinates() + H.momenta()
-    n = len(H.coordinates())
-    shifts = [SR.var(f"q{k + 1}") for k in range(n)] + [SR.var(f"p{k + 1}") for k in range(n)]
-    shifted = expr.subs({v: point[v] + s for v, s in zip(variables, shifts)})
-    series = shifted.taylor(*[(s, 0) for s in shifts], order)
-    poly = series.polynomial(ring=PolynomialRing(SR, [str(s) for s in shifts]))
+    poly = taylor_polynomial(model, at, order)
     constants, parameters = {}, set()
     for c in poly.coefficients():
         _collect(c, constants, parameters)
     names = sorted(map(str, parameters))
     symbols = {c: SR.var(f"c{k + 1}") for k, c in enumerate(constants.values())}
     base = PolynomialRing(QQ, names + [str(s) for s in symbols.values()])
-    ring = PolynomialRing(base, [str(s) for s in shifts])
+    ring = PolynomialRing(base, poly.parent().variable_names())
     terms = {}
     for e, c in poly.dict().items():
         c = c.subs(symbols) if symbols else c
         terms[e] = _to_base(c, base)
-    values_out = {name: values.get(SR.var(name)) for name in names}
+    values_out = {name: None for name in names}
     relations = []
     for c, s in symbols.items():
         values_out[str(s)] = c
@@ -239,32 +256,31 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False
         ...
         AnalysisError: sample: give a sample value of the parameters ['mu'] ...
     """
+    if not exact:
+        poly = taylor_polynomial(model, at, order)
+        if not any(c.variables() for c in poly.coefficients()):
+            from sage.rings.complex_mpfr import ComplexField
+            CC = ComplexField(prec or 256)
+            numeric = poly.map_coefficients(CC, new_base_ring=CC)
+            return normal_form(FormalArithmetic.numeric(numeric, poly.parent().ngens() // 2,
+                                                        prec or 256), order)
     H, values, relations = polynomial_hamiltonian(model, at, order)
     n = len(H.parent().gens()) // 2
-    if not exact and all(v is not None for v in values.values()):
-        prec = prec or 256
-        CC = __import__('sage.rings.complex_mpfr', fromlist=['ComplexField']).ComplexField(prec)
-        point = [CC(v) for v in values.values()]
-        numeric = H.map_coefficients(lambda c: CC(c(*point)) if point else CC(c),
-                                     new_base_ring=CC)
-        return normal_form(FormalArithmetic.numeric(numeric, n, prec), order)
     sample = {str(k): v for k, v in (sample or {}).items()}
     return normal_form(FormalArithmetic(H, n, values, relations, sample=sample), order)
 
 
-def _exact_linearization(H, values):
-    r"""The Hessian at the point over ``QQbar`` and the roots of `JS`."""
+def _exact_linearization(H):
+    r"""The Hessian at the point over ``QQbar`` and the characteristic
+    polynomial of `JS` (``H`` with symbolic coefficients, constants)."""
     from sage.matrix.constructor import matrix
     from ..analysis.normal_forms import symplectic_unit
     n = len(H.parent().gens()) // 2
-    point = [QQbar(v) for v in values.values()]
     X = H.parent().gens()
     H2 = H.parent()({e: c for e, c in H.dict().items() if sum(e) == 2})
     S = matrix(QQbar, 2 * n, 2 * n, lambda i, j: QQbar(
-        H2.derivative(X[i]).derivative(X[j]).constant_coefficient()(*point)
-        if point else H2.derivative(X[i]).derivative(X[j]).constant_coefficient()))
-    roots = (symplectic_unit(n).change_ring(QQbar) * S).charpoly('x').roots(QQbar)
-    return S, roots
+        H2.derivative(X[i]).derivative(X[j]).constant_coefficient()))
+    return S, (symplectic_unit(n).change_ring(QQbar) * S).charpoly('x')
 
 
 def nonlinear_stability(model, at, order=4, positive=(), prec=256):
@@ -310,58 +326,65 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
         ...
         AnalysisError: at: give a value to the parameters ['mu'] ...
     """
-    H, values, _ = polynomial_hamiltonian(model, at, 2)
-    free = [g for g, v in values.items() if v is None]
+    H = taylor_polynomial(model, at, 2)
+    free = sorted({str(v) for c in H.coefficients() for v in c.variables()})
     if free:
         raise AnalysisError(f"give a value to the parameters {free} (for the cases over the "
                             "parameters see birkhoff_normal_form(..., sample=...) and "
                             "critical_values)", entry="at")
-    S, roots = _exact_linearization(H, values)
+    S, chi = _exact_linearization(H)
     n = S.nrows() // 2
+    from sage.rings.complex_mpfr import ComplexField
+    CC = ComplexField(prec)
+    eps = QQ(2) ** (-prec // 2)
+    roots = chi.change_ring(CC).roots(multiplicities=False)
 
     def verdict(kind, reason, method):
         return StabilityVerdict(kind, reason, method=method, positive=positive)
-    if any(r.real() > 0 for r, _ in roots):
+    if any(r.real() > eps for r in roots):
         return verdict('unstable', "a root of the linearization has a positive real part "
                        "(Lyapunov's theorem on the first approximation)", 'first approximation')
-    eigen = S.change_ring(AA_()).eigenvalues() if S.is_symmetric() else []
-    if all(e > 0 for e in eigen) or all(e < 0 for e in eigen):
+    # Sylvester's criterion, exactly (each minor compared with 0 in QQbar)
+    minors = [S.matrix_from_rows_and_columns(range(k), range(k)).det()
+              for k in range(1, 2 * n + 1)]
+    if all(m > 0 for m in minors) or all((-1) ** (k + 1) * m > 0 for k, m in enumerate(minors)):
         return verdict('stable', "the energy has a strict minimum at the equilibrium "
                        "(Lagrange-Dirichlet): a definite first integral, whatever the "
-                       "resonances" if eigen[0] > 0 else "the energy is negative definite at "
+                       "resonances" if minors[0] > 0 else "the energy is negative definite at "
                        "the equilibrium: a definite first integral", 'energy')
-    if any(m > 1 for _, m in roots) or any(r.is_zero() for r, _ in roots):
+    if chi[0] == 0 or chi.discriminant() == 0:
         return verdict('undecided', "multiple or zero roots of the linearization: a critical "
                        "case the normal forms of this package do not treat", 'normal form')
     order = max(order, 4) if n == 2 else order
     nf = birkhoff_normal_form(model, at, order, prec=prec)
-    resonances = _exact_resonances(roots, nf.signs(), order)
+    resonances = _exact_resonances(chi, nf, order, eps)
     if n != 2:
-        found = [k for k in resonances]
         return verdict('stable in first approximation', "the normal form of order "
-                       f"{order} has {'the resonances ' + str(found) if found else 'no resonance'}"
+                       f"{order} has {'the resonances ' + str(resonances) if resonances else 'no resonance'}"
                        "; in more than two degrees of freedom it gives formal stability only, "
                        "not Lyapunov stability", 'normal form')
     return _two_degrees(nf, resonances, order, verdict)
 
 
-def AA_():
-    from sage.rings.qqbar import AA
-    return AA
-
-
-def _exact_resonances(roots, signs, order):
-    r"""The resonances `k\cdot w = 0`, `|k| \le` ``order``, exactly from the
-    roots (``k1 > 0``, primitive), by order."""
-    omegas = sorted([r.imag() for r, _ in roots if r.imag() > 0], reverse=True)
-    w = [s * om for s, om in zip(signs, omegas)]
-    from sage.arith.misc import gcd
-    import itertools
+def _exact_resonances(chi, nf, order, eps):
+    r"""The resonances `k\cdot w = 0`, `|k| \le` ``order`` (``k1 > 0``,
+    primitive), by order: candidates from the numeric frequencies,
+    confirmed exactly in two degrees of freedom (the roots `s = \lambda^2`
+    of `\chi` related by `s_1 = (k_2/k_1)^2 s_2`: a resultant that vanishes)."""
+    from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing as PR
+    w = nf.frequencies()
     found = []
-    for k in itertools.product(range(-order, order + 1), repeat=len(w)):
-        if 0 < sum(map(abs, k)) <= order and next(x for x in k if x) > 0 and \
-                gcd(list(k)) == 1 and sum(a * b for a, b in zip(k, w)) == 0:
-            found.append(k)
+    for k, value in nf.resonances(order, tolerance=eps):
+        if len(w) == 2:
+            s = PR(chi.base_ring(), 's').gen()
+            p = sum(chi[2 * j] * s ** j for j in range(3))
+            r = QQ(abs(k[1])) / QQ(abs(k[0])) if abs(w[0]) > abs(w[1]) else \
+                QQ(abs(k[0])) / QQ(abs(k[1]))
+            if p.resultant(p(r ** 2 * s)) != 0:
+                raise AnalysisError(f"the frequencies {w} are within {eps} of the resonance "
+                                    f"k = {k} without being resonant: increase prec",
+                                    entry="prec")
+        found.append(k)
     return sorted(found, key=lambda k: sum(map(abs, k)))
 
 
