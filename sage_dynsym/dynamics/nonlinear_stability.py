@@ -99,7 +99,9 @@ def _point(H, at):
         point.setdefault(p, p0)
     expr = H.expr().subs(values)
     gradient = [expr.diff(v).subs(point).simplify_full() for v in coordinates + momenta]
-    if any(not g.is_zero() for g in gradient):
+    # with floating-point data the gradient is zero to rounding only
+    if any(not g.is_zero() and (g.variables() or _is_exact(g) or abs(g.n()) > 1e-9)
+           for g in gradient):
         raise AnalysisError(f"{point} is not an equilibrium: the gradient of the "
                             f"Hamiltonian there is {gradient}", entry="at")
     return point, values, expr
@@ -126,6 +128,21 @@ def taylor_polynomial(model, at, order):
     shifted = expr.subs({v: point[v] + s for v, s in zip(variables, shifts)})
     series = shifted.taylor(*[(s, 0) for s in shifts], order)
     return series.polynomial(ring=PolynomialRing(SR, [str(s) for s in shifts]))
+
+
+def _is_exact(value):
+    try:
+        from sage.rings.qqbar import QQbar as exact_numbers
+        return not any(isinstance(a.pyobject(), float) or not a.pyobject() in exact_numbers
+                       for a in _numbers(value))
+    except (TypeError, ValueError, AttributeError):
+        return False
+
+
+def _numbers(expr):
+    if expr.operator() is None:
+        return [expr] if not expr.is_symbol() else []
+    return [a for op in expr.operands() for a in _numbers(op)]
 
 
 def polynomial_hamiltonian(model, at, order):
