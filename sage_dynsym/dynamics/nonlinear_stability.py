@@ -432,6 +432,7 @@ def _two_degrees(nf, resonances, order, verdict):
                                "(Markeev)", 'Markeev')
             return verdict('unstable', f"{name}: the resonant term of degree 4 dominates "
                            f"({a.n(20)} > {h4.n(20)}): unstable (Markeev)", 'Markeev')
+    low = []
     for degree in range(4, order + 1, 2):
         low = [k for k in resonances if sum(map(abs, k)) <= degree]
         if low:
@@ -441,9 +442,12 @@ def _two_degrees(nf, resonances, order, verdict):
             return verdict('stable', f"Arnold-Moser theorem: no resonance up to order "
                            f"{degree} and Arnold's determinant of degree {degree} "
                            f"D = {D.real().n(30)} is not zero", 'Arnold-Moser')
-    return verdict('undecided', f"Arnold's determinant vanishes up to order {order} "
-                   "(or a resonance of order 5 to 6 intervenes): compute the normal form "
-                   "to a higher order (order=6)", 'Arnold-Moser')
+    if low:
+        return verdict('undecided', f"Arnold's determinant vanishes below order {degree}, "
+                       f"where the resonances {low} intervene: not decided", 'Arnold-Moser')
+    return verdict('undecided', f"Arnold's determinant vanishes up to order {order}: "
+                   f"compute the normal form to order {order + 2} (order={order + 2})",
+                   'Arnold-Moser')
 
 
 def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec=128,
