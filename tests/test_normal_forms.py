@@ -174,3 +174,19 @@ def test_bad_input():
         birkhoff_normal_form(THREE_BODY, {**L4, mu: QQ(1) / 10})
     with pytest.raises(AnalysisError, match="give a value"):
         nonlinear_stability(THREE_BODY, L4)
+
+
+def test_routh_function_and_hamiltonian_models():
+    # Kepler's circular orbit as an equilibrium of the Routh function
+    # (m = mu = p_phi = 1): r0 = 1, radial frequency 1 (the orbit's)
+    r, phi, dr, dphi = var('r phi dr dphi')
+    kepler = Lagrangian((dr ** 2 + r ** 2 * dphi ** 2) / 2 + 1 / r, [r, phi])
+    routh = kepler.routh([phi])
+    at = {r: 1, var('p_phi'): 1}
+    nf = birkhoff_normal_form(routh, at, order=4, prec=100)
+    assert abs(nf.frequencies()[0] - 1) < 1e-25
+    assert nonlinear_stability(routh, at).verdict() == 'stable'
+    # a Hamiltonian given directly: the pendulum's
+    q, dq = var('q dq')
+    H = Lagrangian(dq ** 2 / 2 + cos(q), [q]).hamiltonian()
+    assert abs(birkhoff_normal_form(H, {q: 0}, prec=80).coefficients()[(2,)] + QQ(1) / 16) < 1e-20

@@ -118,7 +118,7 @@ def taylor_polynomial(model, at, order):
         sage: from sage_dynsym.dynamics.nonlinear_stability import taylor_polynomial
         sage: q, dq = var('q dq')
         sage: taylor_polynomial(Lagrangian(dq^2/2 + cos(q), [q]), {q: pi}, 3)
-        1/2*q1^2 + 1/2*p1^2 + 1
+        (-1/2)*q1^2 + 1/2*p1^2 + 1
     """
     H = _hamiltonian(model)
     point, values, expr = _point(H, at)
