@@ -65,6 +65,7 @@ import itertools
 from sage.arith.misc import gcd
 from sage.matrix.constructor import matrix, identity_matrix, block_matrix
 from sage.misc.cachefunc import cached_method
+from sage.misc.misc_c import prod
 from sage.modules.free_module_element import vector
 from sage.rings.complex_interval_field import ComplexIntervalField
 from sage.rings.complex_mpfr import ComplexField
@@ -197,7 +198,7 @@ class FormalArithmetic(SageObject):
         s = [lam ** 2 for lam in self.lambda_gens]
         relations = [self.K(r) for r in self.base_relations]
         for j in range(1, n + 1):
-            e_j = sum(prod_(c) for c in itertools.combinations(s, j))
+            e_j = sum(prod(c) for c in itertools.combinations(s, j))
             relations.append(e_j - (-1) ** j * chi[n - j])
         self.ideal = self.K.ideal(relations)
         self.groebner = self.ideal.groebner_basis()
@@ -210,8 +211,7 @@ class FormalArithmetic(SageObject):
                       lambda i, j: H2.derivative(X[i]).derivative(X[j]).constant_coefficient())
 
     def _char_poly_in_square(self, S):
-        r"""The coefficients of `\det(s + JS\,{}^2)`-free form: the
-        characteristic polynomial of `JS` is `P(\lambda^2)`; returns the
+        r"""The characteristic polynomial of `JS` is `P(\lambda^2)`: the
         coefficients of the monic `P` (constant first)."""
         A = symplectic_unit(self.n).change_ring(S.base_ring()) * S
         chi = A.charpoly('x').list()
@@ -329,13 +329,6 @@ def _names(ring):
     return () if ring is QQ else ring.variable_names()
 
 
-def prod_(factors):
-    result = 1
-    for f in factors:
-        result = result * f
-    return result
-
-
 def _bracket(f, g, gens, n):
     return sum(f.derivative(gens[k]) * g.derivative(gens[n + k])
                - f.derivative(gens[n + k]) * g.derivative(gens[k]) for k in range(n))
@@ -363,7 +356,7 @@ class _PhaseRing:
         return self.P(c)
 
     def monomial(self, e):
-        return prod_(x ** k for x, k in zip(self.gens, e))
+        return prod(x ** k for x, k in zip(self.gens, e))
 
     def terms(self, f):
         r"""``f`` as a dict: phase exponents -> coefficient (in ``A.K``)."""
@@ -452,7 +445,7 @@ def normal_form(arithmetic, order=4):
     Hz = phase.P(0)
     for e, h in A.H.dict().items():
         if 2 <= sum(e) <= order:
-            Hz += phase.coefficient(K(h)) * prod_(x ** k for x, k in zip(z, e))
+            Hz += phase.coefficient(K(h)) * prod(x ** k for x, k in zip(z, e))
     Hz = phase.reduce(phase.part(Hz, range(2, order + 1)))
     generators = []
     for d in range(3, order + 1):
@@ -591,7 +584,7 @@ class BirkhoffNormalForm(SageObject):
         r"""`\prod (-i\sigma_k)^{m_k}` (`\xi_k\eta_k = -i\sigma_k I_k`)."""
         signs = self.signs()
         phase = (-sum(m)) % 4
-        sign = prod_(s ** mk for s, mk in zip(signs, m))
+        sign = prod(s ** mk for s, mk in zip(signs, m))
         return sign, phase
 
     def coefficients(self, exact=False):
@@ -667,7 +660,7 @@ class BirkhoffNormalForm(SageObject):
         ring = (PolynomialRing(SR, [f"I{k + 1}" for k in range(self._A.n)]) if self._A.free
                 else PolynomialRing(next(iter(coefficients.values())).parent(),
                                     [f"I{k + 1}" for k in range(self._A.n)]))
-        return ring({m + (0,) * 0: c for m, c in coefficients.items()})
+        return ring(coefficients)
 
     def resonant_terms(self):
         r"""The terms of the normal form that are not functions of the
@@ -883,9 +876,9 @@ class BirkhoffNormalForm(SageObject):
             seen |= {e, partner}
             beta = terms.get(partner, 0)
             power = sum(e[k] + e[n + k] for k in range(n))
-            sign = prod_(s ** (e[k] + e[n + k]) for k, s in enumerate(signs))
+            sign = prod(s ** (e[k] + e[n + k]) for k, s in enumerate(signs))
             a, b = (alpha, beta) if A.is_numeric() else (A.value(alpha), A.value(beta))
-            i = a.parent().gen() if A.is_numeric() else a.parent().gen()
+            i = a.parent().gen()
             square = (a * b * sign * (-i) ** power).real()
             total += 2 * square.abs().sqrt()
         return total
