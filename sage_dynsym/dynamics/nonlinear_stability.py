@@ -364,12 +364,13 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
     # Sylvester's criterion, exactly (each minor compared with 0 in QQbar)
     minors = [S.matrix_from_rows_and_columns(range(k), range(k)).det()
               for k in range(1, 2 * n + 1)]
-    if all(m > 0 for m in minors) or all((-1) ** (k + 1) * m > 0 for k, m in enumerate(minors)):
+    signs = [_sign(m) for m in minors]
+    if all(x > 0 for x in signs) or all((-1) ** (k + 1) * x > 0 for k, x in enumerate(signs)):
         return verdict('stable', "the energy has a strict minimum at the equilibrium "
                        "(Lagrange-Dirichlet): a definite first integral, whatever the "
-                       "resonances" if minors[0] > 0 else "the energy is negative definite at "
+                       "resonances" if signs[0] > 0 else "the energy is negative definite at "
                        "the equilibrium: a definite first integral", 'energy')
-    if chi[0] == 0 or chi.discriminant() == 0:
+    if _sign(chi[0]) == 0 or _sign(chi.discriminant()) == 0:
         return verdict('undecided', "multiple or zero roots of the linearization: a critical "
                        "case the normal forms of this package do not treat", 'normal form')
     order = max(order, 4) if n == 2 else order
@@ -381,6 +382,19 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
                        "; in more than two degrees of freedom it gives formal stability only, "
                        "not Lyapunov stability", 'normal form')
     return _two_degrees(nf, resonances, order, verdict)
+
+
+def _sign(a):
+    r"""The sign of the real algebraic number ``a`` (or of the real part):
+    by intervals of growing precision, exactly only when they do not
+    separate it from 0 (exactification is costly)."""
+    from sage.rings.real_mpfi import RealIntervalField
+    for bits in (128, 512):
+        box = RealIntervalField(bits)(QQbar(a).real())
+        if not box.contains_zero():
+            return 1 if box > 0 else -1
+    a = QQbar(a).real()
+    return 0 if a == 0 else (1 if a > 0 else -1)
 
 
 def _exact_resonances(chi, nf, order, eps):
@@ -397,7 +411,7 @@ def _exact_resonances(chi, nf, order, eps):
             p = sum(chi[2 * j] * s ** j for j in range(3))
             r = QQ(abs(k[1])) / QQ(abs(k[0])) if abs(w[0]) > abs(w[1]) else \
                 QQ(abs(k[0])) / QQ(abs(k[1]))
-            if p.resultant(p(r ** 2 * s)) != 0:
+            if _sign(p.resultant(p(r ** 2 * s))) != 0:
                 raise AnalysisError(f"the frequencies {w} are within {eps} of the resonance "
                                     f"k = {k} without being resonant: increase prec",
                                     entry="prec")
@@ -517,14 +531,21 @@ def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec
                             entry="model")
     from ..analysis.normal_forms import symplectic_unit
     chi = (symplectic_unit(n).change_ring(S.base_ring()) * S).charpoly('x')
-    s = PR(S.base_ring(), 's').gen()
+    try:
+        # rational coefficients (the usual case: the constants enter squared)
+        # keep the resultants over QQ[t], fast and without algebraic numbers
+        chi = chi.change_ring(PR(QQ, 't'))
+    except (TypeError, ValueError):
+        pass
+    s = PR(chi.base_ring(), 's').gen()
     p = sum(chi[2 * k] * s ** k for k in range(n + 1))      # chi(lambda) = p(lambda^2)
     found = {}
 
     def roots_in(poly):
         poly = poly.numerator() if hasattr(poly, 'numerator') else poly
-        return sorted(r for r in PR(AA, 't')(poly).roots(AA, multiplicities=False)
-                      if a < r < b)
+        if poly.base_ring() is not QQ:
+            poly = PR(AA, 't')(poly)
+        return sorted(r for r in poly.roots(AA, multiplicities=False) if a < r < b)
     found['first approximation'] = roots_in(p.discriminant())
     for k1 in range(1, order):
         for k2 in range(k1 + 1, order + 1 - k1):
