@@ -42,6 +42,8 @@ _PUBLIC = {
     '.dynamics.compact': ['equations_cse', 'CompactEquations'],
     '.dynamics.nonholonomic': ['NonholonomicLagrangian'],
     '.dynamics.reduced': ['ReducedEquations'],
+    '.dynamics.nonlinear_stability': ['birkhoff_normal_form', 'nonlinear_stability',
+                                      'BirkhoffNormalForm', 'exceptional_values'],
     '.mechanics.rigid_body': ['RigidBody'],
     '.mechanics.force_functions': ['UniformGravity', 'NewtonianField'],
     '.mechanics.loads': ['Load'],

@@ -1,0 +1,621 @@
+r"""
+Nonlinear stability of equilibria of conservative systems: the Birkhoff
+normal form of a model, and the verdicts beyond the first approximation
+
+:func:`birkhoff_normal_form` expands the Hamiltonian of a
+:class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`,
+:class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` (a steady motion
+as an equilibrium of the reduced system) or
+:class:`~sage_dynsym.dynamics.hamiltonian.Hamiltonian` at an equilibrium
+and normalizes it (:mod:`~sage_dynsym.analysis.normal_forms`).
+:func:`nonlinear_stability` decides Lyapunov stability where the theory
+does:
+
+- ``'unstable'``: a root of the linearization off the imaginary axis
+  (Lyapunov's theorem on the first approximation); in two degrees of
+  freedom a resonance `\omega_1 = 2\omega_2` with a nonzero resonant term
+  of degree 3, or `\omega_1 = 3\omega_2` when the resonant term of degree
+  4 dominates (Markeev's theorems);
+- ``'stable'``: a definite quadratic part of the energy (Lagrange--Dirichlet:
+  the energy is a Lyapunov function, whatever the resonances); in two
+  degrees of freedom Arnold--Moser: no resonance up to order 4 and
+  Arnold's determinant `D \ne 0` (or, with ``order=6``, `D = 0` and the
+  determinant of degree 6 nonzero, no resonance up to order 6); the
+  resonance 1:3 when the terms in the actions dominate (Markeev);
+- ``'stable in first approximation'`` in more degrees of freedom: the
+  normal form is then a formal statement only (formal stability);
+- ``'undecided'``: what the order computed does not decide, said so.
+
+EXAMPLES: the pendulum at its lower position (a minimum of the energy)::
+
+    sage: from sage_dynsym import Lagrangian
+    sage: from sage_dynsym.dynamics.nonlinear_stability import birkhoff_normal_form, nonlinear_stability
+    sage: q, dq = var('q dq')
+    sage: L = Lagrangian(dq^2/2 + cos(q), [q])
+    sage: nf = birkhoff_normal_form(L, {q: 0}, order=6, exact=True)
+    sage: {m: QQ(c) for m, c in nf.coefficients(exact=True).items()}
+    {(1,): 1, (2,): -1/16, (3,): -1/256}
+    sage: nonlinear_stability(L, {q: 0})
+    stable: the energy has a strict minimum at the equilibrium (Lagrange-Dirichlet): ...
+
+REFERENCES:
+
+- [Markeev1978]_ A. P. Markeev, Libration points in celestial mechanics
+  and space dynamics, Nauka, Moscow 1978.
+- [ArnoldKozlovNeishtadt2006]_ V. I. Arnold, V. V. Kozlov, A. I.
+  Neishtadt, Mathematical aspects of classical and celestial mechanics,
+  3rd ed., Springer 2006, sections 7.3 and 8.3.
+- [MeyerHallOffin2009]_ (see :mod:`~sage_dynsym.analysis.normal_forms`).
+"""
+from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.qqbar import QQbar
+from sage.rings.rational_field import QQ
+from sage.symbolic.ring import SR
+from sage.symbolic.operators import add_vararg, mul_vararg
+import operator
+
+from ..errors import AnalysisError
+from ..analysis.normal_forms import normal_form, FormalArithmetic, BirkhoffNormalForm
+from ..analysis.verdict import StabilityVerdict
+from .hamiltonian import Hamiltonian
+
+__all__ = ['birkhoff_normal_form', 'nonlinear_stability', 'BirkhoffNormalForm',
+           'polynomial_hamiltonian', 'exceptional_values']
+
+
+def _hamiltonian(model):
+    from .lagrangian import Lagrangian
+    if isinstance(model, Hamiltonian):
+        H = model
+    elif isinstance(model, Lagrangian):
+        H = model.hamiltonian()
+    else:
+        raise AnalysisError(f"expected a Lagrangian, RouthFunction or Hamiltonian, got "
+                            f"{type(model).__name__}", entry="model")
+    if H.is_singular() or H._conserved_energy() is None:
+        raise AnalysisError("the Hamiltonian must be conserved and regular (no explicit "
+                            "time, no dissipation or forces, a regular Lagrangian)",
+                            entry="model")
+    return H
+
+
+def _point(H, at):
+    r"""The equilibrium `(q_0, p_0)` and the parameter values of ``at``."""
+    coordinates, momenta = H.coordinates(), H.momenta()
+    names = {str(v): v for v in coordinates + momenta}
+    point, values = {}, {}
+    for key, value in (at or {}).items():
+        key = SR(key) if not isinstance(key, str) else SR.var(key)
+        (point if str(key) in names else values)[names.get(str(key), key)] = SR(value)
+    point = {v: value.subs(values) for v, value in point.items()}
+    missing = [q for q in coordinates if q not in point]
+    if missing:
+        raise AnalysisError(f"give the value of every coordinate, missing {missing}; "
+                            f"e.g. at={{{coordinates[0]}: 0, ...}}", entry="at")
+    velocities = H.lagrangian().velocities()
+    momentum_values = [p.subs({v: 0 for v in velocities}).subs(point).subs(values)
+                       for p in H.lagrangian().generalized_momenta()]
+    for p, p0 in zip(momenta, momentum_values):
+        point.setdefault(p, p0)
+    expr = H.expr().subs(values)
+    gradient = [expr.diff(v).subs(point).simplify_full() for v in coordinates + momenta]
+    # with floating-point data the gradient is zero to rounding only
+    if any(not g.is_zero() and (g.variables() or _is_exact(g) or abs(g.n()) > 1e-9)
+           for g in gradient):
+        raise AnalysisError(f"{point} is not an equilibrium: the gradient of the "
+                            f"Hamiltonian there is {gradient}", entry="at")
+    return point, values, expr
+
+
+def taylor_polynomial(model, at, order):
+    r"""The Taylor polynomial of degree ``order`` of the Hamiltonian of
+    ``model`` at the equilibrium ``at`` (see :func:`polynomial_hamiltonian`)
+    in the displacements ``q1..qn, p1..pn``, with symbolic coefficients.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import taylor_polynomial
+        sage: q, dq = var('q dq')
+        sage: taylor_polynomial(Lagrangian(dq^2/2 + cos(q), [q]), {q: pi}, 3)
+        (-1/2)*q1^2 + 1/2*p1^2 + 1
+    """
+    H = _hamiltonian(model)
+    point, values, expr = _point(H, at)
+    variables = H.coordinates() + H.momenta()
+    n = len(H.coordinates())
+    shifts = [SR.var(f"q{k + 1}") for k in range(n)] + [SR.var(f"p{k + 1}") for k in range(n)]
+    shifted = expr.subs({v: point[v] + s for v, s in zip(variables, shifts)})
+    series = shifted.taylor(*[(s, 0) for s in shifts], order)
+    return series.polynomial(ring=PolynomialRing(SR, [str(s) for s in shifts]))
+
+
+def _is_exact(value):
+    try:
+        from sage.rings.qqbar import QQbar as exact_numbers
+        return not any(isinstance(a.pyobject(), float) or not a.pyobject() in exact_numbers
+                       for a in _numbers(value))
+    except (TypeError, ValueError, AttributeError):
+        return False
+
+
+def _numbers(expr):
+    if expr.operator() is None:
+        return [expr] if not expr.is_symbol() else []
+    return [a for op in expr.operands() for a in _numbers(op)]
+
+
+def polynomial_hamiltonian(model, at, order):
+    r"""
+    The Taylor polynomial of degree ``order`` of the Hamiltonian of
+    ``model`` at the equilibrium ``at``, as neutral data for
+    :mod:`~sage_dynsym.analysis.normal_forms`: a pair ``(H, values,
+    relations)`` -- ``H`` a polynomial in ``q1..qn, p1..pn`` (the
+    displacements from the point) over a polynomial ring over `\mathbb Q`
+    in the parameters and the irrational constants (``c1, ...``), with
+    their values and the relations of the constants.
+
+    INPUT:
+
+    - ``model`` -- a Lagrangian, Routh function or Hamiltonian
+    - ``at`` -- dict coordinate -> value (momenta default to their value
+      at rest, `\partial L/\partial\dot q` at `\dot q = 0`; parameters may
+      be given values too)
+    - ``order`` -- the degree of the expansion
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import polynomial_hamiltonian
+        sage: q, dq, k = var('q dq k')
+        sage: H, values, relations = polynomial_hamiltonian(Lagrangian(dq^2/2 + k*cos(q), [q]), {q: 0}, 4)
+        sage: H, values
+        ((-1/24*k)*q1^4 + 1/2*k*q1^2 + 1/2*p1^2 - k, {'k': None})
+    """
+    H = _hamiltonian(model)
+    poly = taylor_polynomial(model, at, order)
+    constants, parameters = {}, set()
+    for c in poly.coefficients():
+        _collect(c, constants, parameters)
+    names = sorted(map(str, parameters))
+    symbols = {c: SR.var(f"c{k + 1}") for k, c in enumerate(constants.values())}
+    base = PolynomialRing(QQ, names + [str(s) for s in symbols.values()])
+    ring = PolynomialRing(base, poly.parent().variable_names())
+    terms = {}
+    for e, c in poly.dict().items():
+        c = c.subs(symbols) if symbols else c
+        terms[e] = _to_base(c, base)
+    values_out = {name: None for name in names}
+    relations = []
+    for c, s in symbols.items():
+        values_out[str(s)] = c
+        try:
+            relations.append(QQbar(c).minpoly()(base(str(s))))
+        except (TypeError, ValueError):
+            pass
+    return ring(terms), values_out, relations
+
+
+def _collect(expr, constants, parameters):
+    r"""The irrational constants (powers with fractional exponents,
+    functions) and the parameters of a coefficient."""
+    op = expr.operator()
+    if op is None:
+        if expr.is_symbol():
+            parameters.add(expr)
+        return
+    if op in (add_vararg, mul_vararg, operator.add, operator.mul) or (
+            op is operator.pow and expr.operands()[1] in QQ and
+            QQ(expr.operands()[1]).denominator() == 1):
+        for operand in expr.operands():
+            _collect(operand, constants, parameters)
+        return
+    if expr.variables():
+        raise AnalysisError(f"the Taylor coefficient has the term {expr}, not polynomial in "
+                            "the parameters: give them values in at=", entry="at")
+    constants.setdefault(str(expr), expr)
+
+
+def _to_base(c, base):
+    numerator, denominator = c.numerator(), c.denominator()
+    if denominator.variables():
+        raise AnalysisError(f"the Taylor coefficient {c} has a denominator in the "
+                            "parameters: give them values in at=", entry="at")
+    return base(numerator.polynomial(QQ)) / QQ(denominator) if numerator.variables() \
+        else base(QQ(numerator) / QQ(denominator))
+
+
+def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False):
+    r"""
+    The Birkhoff normal form of the Hamiltonian of ``model`` at the
+    equilibrium ``at`` (see :mod:`~sage_dynsym.analysis.normal_forms`).
+
+    INPUT:
+
+    - ``model`` -- a Lagrangian, Routh function or Hamiltonian (conserved)
+    - ``at`` -- dict coordinate -> value at the equilibrium (and,
+      optionally, parameter -> value)
+    - ``order`` -- (default: 4) the degree of the normal form
+    - ``sample`` -- (optional) values of the parameters left free, for the
+      choices that depend on the point (the order of the frequencies and
+      the signs of the modes); the coefficients are then expressions in the
+      parameters and the symbols ``omega1, ...``
+    - ``prec`` -- (default: 256) bits of a numeric computation
+      (``ComplexField(prec)``)
+    - ``exact`` -- (default: ``False``) compute with exact coefficients
+      (formal generators, see :class:`~sage_dynsym.analysis.normal_forms.FormalArithmetic`),
+      also when every parameter has a value; exact coefficients swell, and
+      beyond small problems numerics are faster
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.normal_forms.BirkhoffNormalForm`
+
+    EXAMPLES: L4 of the restricted three-body problem, `\mu = 1/100`::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import birkhoff_normal_form
+        sage: x, y, dx, dy, mu = var('x y dx dy mu')
+        sage: r1, r2 = sqrt((x + mu)^2 + y^2), sqrt((x - 1 + mu)^2 + y^2)
+        sage: L = Lagrangian(((dx - y)^2 + (dy + x)^2)/2 + (1 - mu)/r1 + mu/r2, [x, y])
+        sage: nf = birkhoff_normal_form(L, {x: 1/2 - mu, y: sqrt(3)/2, mu: 1/100}, prec=100)
+        sage: nf.frequencies()  # rel tol 1e-25
+        [0.96332210908509951194826582374, -0.26834774854251271758146030705]
+        sage: nf.arnold_determinant()  # rel tol 1e-20
+        0.099733995547560912150549025882
+
+    TESTS::
+
+        sage: birkhoff_normal_form(L, {x: 0, y: 0, mu: 1/100})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: {...} is not an equilibrium: ...
+        sage: birkhoff_normal_form(L, {x: 1/2 - mu, y: sqrt(3)/2})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: sample: give a sample value of the parameters ['mu'] ...
+    """
+    if not exact:
+        poly = taylor_polynomial(model, at, order)
+        if not any(c.variables() for c in poly.coefficients()):
+            from sage.rings.complex_mpfr import ComplexField
+            CC = ComplexField(prec or 256)
+            numeric = poly.map_coefficients(CC, new_base_ring=CC)
+            return normal_form(FormalArithmetic.numeric(numeric, poly.parent().ngens() // 2,
+                                                        prec or 256), order)
+    H, values, relations = polynomial_hamiltonian(model, at, order)
+    n = len(H.parent().gens()) // 2
+    sample = {str(k): v for k, v in (sample or {}).items()}
+    return normal_form(FormalArithmetic(H, n, values, relations, sample=sample), order)
+
+
+def _exact_linearization(H):
+    r"""The Hessian at the point over ``QQbar`` and the characteristic
+    polynomial of `JS` (``H`` with symbolic coefficients, constants)."""
+    from sage.matrix.constructor import matrix
+    from ..analysis.normal_forms import symplectic_unit
+    n = len(H.parent().gens()) // 2
+    X = H.parent().gens()
+    H2 = H.parent()({e: c for e, c in H.dict().items() if sum(e) == 2})
+    S = matrix(QQbar, 2 * n, 2 * n, lambda i, j: QQbar(
+        H2.derivative(X[i]).derivative(X[j]).constant_coefficient()))
+    return S, (symplectic_unit(n).change_ring(QQbar) * S).charpoly('x')
+
+
+def nonlinear_stability(model, at, order=4, positive=(), prec=256):
+    r"""
+    Lyapunov stability of an equilibrium of a conservative system beyond
+    the first approximation (see the module documentation for the
+    theorems).
+
+    INPUT:
+
+    - ``model`` -- a Lagrangian, Routh function or Hamiltonian (conserved)
+    - ``at`` -- dict coordinate -> value at the equilibrium, with a value
+      of every parameter
+    - ``order`` -- (default: 4) the degree of the normal form (6 decides
+      where Arnold's determinant of degree 4 vanishes)
+    - ``positive`` -- (optional) symbols declared positive (recorded in
+      the verdict)
+    - ``prec`` -- (default: 256) bits of the numeric normal form; the
+      linearization, the frequencies and the resonances are exact
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+
+    EXAMPLES: L4 of the restricted three-body problem::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import nonlinear_stability
+        sage: x, y, dx, dy, mu = var('x y dx dy mu')
+        sage: r1, r2 = sqrt((x + mu)^2 + y^2), sqrt((x - 1 + mu)^2 + y^2)
+        sage: L = Lagrangian(((dx - y)^2 + (dy + x)^2)/2 + (1 - mu)/r1 + mu/r2, [x, y])
+        sage: L4 = {x: 1/2 - mu, y: sqrt(3)/2}
+        sage: nonlinear_stability(L, {**L4, mu: 1/100})
+        stable: Arnold-Moser theorem: ...
+        sage: nonlinear_stability(L, {**L4, mu: 1/20})
+        unstable: a root of the linearization has a positive real part ...
+        sage: mu2 = (1 - sqrt(1 - 64/675))/2             # omega1 = 2 omega2
+        sage: nonlinear_stability(L, {**L4, mu: mu2}).reason()
+        'resonance 1:2 (k = (1, 2)) with a nonzero resonant term of degree 3 (amplitude ...): unstable (Markeev)'
+
+    TESTS::
+
+        sage: nonlinear_stability(L, L4)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: give a value to the parameters ['mu'] ...
+    """
+    H = taylor_polynomial(model, at, 2)
+    free = sorted({str(v) for c in H.coefficients() for v in c.variables()})
+    if free:
+        raise AnalysisError(f"give a value to the parameters {free} (for the cases over the "
+                            "parameters see birkhoff_normal_form(..., sample=...) and "
+                            "critical_values)", entry="at")
+    S, chi = _exact_linearization(H)
+    n = S.nrows() // 2
+    from sage.rings.complex_mpfr import ComplexField
+    CC = ComplexField(prec)
+    eps = QQ(2) ** (-prec // 2)
+    roots = chi.change_ring(CC).roots(multiplicities=False)
+
+    def verdict(kind, reason, method):
+        return StabilityVerdict(kind, reason, method=method, positive=positive)
+    if any(r.real() > eps for r in roots):
+        return verdict('unstable', "a root of the linearization has a positive real part "
+                       "(Lyapunov's theorem on the first approximation)", 'first approximation')
+    # Sylvester's criterion, exactly (each minor compared with 0 in QQbar)
+    minors = [S.matrix_from_rows_and_columns(range(k), range(k)).det()
+              for k in range(1, 2 * n + 1)]
+    signs = [_sign(m) for m in minors]
+    if all(x > 0 for x in signs) or all((-1) ** (k + 1) * x > 0 for k, x in enumerate(signs)):
+        return verdict('stable', "the energy has a strict minimum at the equilibrium "
+                       "(Lagrange-Dirichlet): a definite first integral, whatever the "
+                       "resonances" if signs[0] > 0 else "the energy is negative definite at "
+                       "the equilibrium: a definite first integral", 'energy')
+    if _sign(chi[0]) == 0 or _sign(chi.discriminant()) == 0:
+        return verdict('undecided', "multiple or zero roots of the linearization: a critical "
+                       "case the normal forms of this package do not treat", 'normal form')
+    order = max(order, 4) if n == 2 else order
+    nf = birkhoff_normal_form(model, at, order, prec=prec)
+    resonances = _exact_resonances(chi, nf, order, eps)
+    if n != 2:
+        return verdict('stable in first approximation', "the normal form of order "
+                       f"{order} has {'the resonances ' + str(resonances) if resonances else 'no resonance'}"
+                       "; in more than two degrees of freedom it gives formal stability only, "
+                       "not Lyapunov stability", 'normal form')
+    return _two_degrees(nf, resonances, order, verdict)
+
+
+def _sign(a):
+    r"""The sign of the real algebraic number ``a`` (or of the real part):
+    by intervals of growing precision, exactly only when they do not
+    separate it from 0 (exactification is costly)."""
+    from sage.rings.real_mpfi import RealIntervalField
+    for bits in (128, 512):
+        box = RealIntervalField(bits)(QQbar(a).real())
+        if not box.contains_zero():
+            return 1 if box > 0 else -1
+    a = QQbar(a).real()
+    return 0 if a == 0 else (1 if a > 0 else -1)
+
+
+def _exact_resonances(chi, nf, order, eps):
+    r"""The resonances `k\cdot w = 0`, `|k| \le` ``order`` (``k1 > 0``,
+    primitive), by order: candidates from the numeric frequencies,
+    confirmed exactly in two degrees of freedom (the roots `s = \lambda^2`
+    of `\chi` related by `s_1 = (k_2/k_1)^2 s_2`: a resultant that vanishes)."""
+    from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing as PR
+    w = nf.frequencies()
+    found = []
+    for k, value in nf.resonances(order, tolerance=eps):
+        if len(w) == 2:
+            s = PR(chi.base_ring(), 's').gen()
+            p = sum(chi[2 * j] * s ** j for j in range(3))
+            r = QQ(abs(k[1])) / QQ(abs(k[0])) if abs(w[0]) > abs(w[1]) else \
+                QQ(abs(k[0])) / QQ(abs(k[1]))
+            if _sign(p.resultant(p(r ** 2 * s))) != 0:
+                raise AnalysisError(f"the frequencies {w} are within {eps} of the resonance "
+                                    f"k = {k} without being resonant: increase prec",
+                                    entry="prec")
+        found.append(k)
+    return sorted(found, key=lambda k: sum(map(abs, k)))
+
+
+def _two_degrees(nf, resonances, order, verdict):
+    eps = QQ(2) ** (-nf.arithmetic().prec // 2) if nf.arithmetic().is_numeric() else 0
+    for k in resonances:
+        size = sum(map(abs, k))
+        name = f"resonance {min(map(abs, k))}:{max(map(abs, k))} (k = {k})"
+        if size == 3:
+            a = nf.resonant_amplitude(3)
+            if a > eps:
+                return verdict('unstable', f"{name} with a nonzero resonant term of degree 3 "
+                               f"(amplitude {a.n(20)}): unstable (Markeev)", 'Markeev')
+            return verdict('undecided', f"{name} whose resonant term of degree 3 vanishes: "
+                           "not decided at this order", 'Markeev')
+        if size == 4:
+            k1, k2 = map(abs, k)
+            form = nf._form_values(4)
+            h4 = abs(form.get((2, 0), 0) * k1 ** 2 + form.get((1, 1), 0) * k1 * k2
+                     + form.get((0, 2), 0) * k2 ** 2)
+            a = nf.resonant_amplitude(4) * QQ(k1 ** k1 * k2 ** k2).sqrt()
+            if abs(h4 - a) <= eps:
+                return verdict('undecided', f"{name}: the terms in the actions and the "
+                               "resonant term balance (Markeev's boundary case)", 'Markeev')
+            if h4 > a:
+                return verdict('stable', f"{name}: the terms of degree 4 in the actions "
+                               f"dominate the resonant term ({h4.n(20)} > {a.n(20)}): stable "
+                               "(Markeev)", 'Markeev')
+            return verdict('unstable', f"{name}: the resonant term of degree 4 dominates "
+                           f"({a.n(20)} > {h4.n(20)}): unstable (Markeev)", 'Markeev')
+    low = []
+    for degree in range(4, order + 1, 2):
+        low = [k for k in resonances if sum(map(abs, k)) <= degree]
+        if low:
+            break
+        D = nf.arnold_determinant(degree)
+        if abs(D) > eps:
+            return verdict('stable', f"Arnold-Moser theorem: no resonance up to order "
+                           f"{degree} and Arnold's determinant of degree {degree} "
+                           f"D = {D.real().n(30)} is not zero", 'Arnold-Moser')
+    if low:
+        return verdict('undecided', f"Arnold's determinant vanishes below order {degree}, "
+                       f"where the resonances {low} intervene: not decided", 'Arnold-Moser')
+    return verdict('undecided', f"Arnold's determinant vanishes up to order {order}: "
+                   f"compute the normal form to order {order + 2} (order={order + 2})",
+                   'Arnold-Moser')
+
+
+def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec=128,
+                       tolerance=QQ((1, 10 ** 14))):
+    r"""
+    The values of one parameter where the verdict of
+    :func:`nonlinear_stability` changes, in two degrees of freedom: the
+    boundary of stability in first approximation (two frequencies meet),
+    the resonances `k_1\omega_1 = k_2\omega_2` with `k_1 + k_2 \le`
+    ``order`` (exact: algebraic numbers, roots of resultants of the
+    characteristic polynomial), and the zeros of Arnold's determinant
+    (numbers: sign changes of `D` on ``samples`` points between the
+    resonances, where `D` has its poles, refined by bisection to
+    ``tolerance``).
+
+    INPUT:
+
+    - ``model``, ``at`` -- as for :func:`birkhoff_normal_form`, with the
+      parameter free (the other parameters given values)
+    - ``parameter`` -- the free parameter
+    - ``interval`` -- a pair ``(a, b)`` of numbers: where to look
+    - ``order`` -- (default: 4) the resonances' order and the degree of
+      Arnold's determinant
+    - ``samples``, ``prec``, ``tolerance`` -- of the search for the zeros
+      of `D`
+
+    OUTPUT: a dict: ``'first approximation'``, ``'resonance k1:k2'`` ->
+    a list of algebraic numbers; ``'Arnold determinant'`` -> a list of
+    real numbers
+
+    EXAMPLES: the exceptional mass ratios of L4 (Routh's `\mu_1`,
+    Deprit's `\mu_c`, the resonances)::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.nonlinear_stability import exceptional_values
+        sage: x, y, dx, dy, mu = var('x y dx dy mu')
+        sage: r1, r2 = sqrt((x + mu)^2 + y^2), sqrt((x - 1 + mu)^2 + y^2)
+        sage: L = Lagrangian(((dx - y)^2 + (dy + x)^2)/2 + (1 - mu)/r1 + mu/r2, [x, y])
+        sage: values = exceptional_values(L, {x: 1/2 - mu, y: sqrt(3)/2}, mu, (0, 1/2))  # long time
+        sage: {k: [v.n(digits=12) for v in vs] for k, vs in values.items()}  # long time
+        {'Arnold determinant': [0.0109136676772],
+         'first approximation': [0.0385208965046],
+         'resonance 1:2': [0.0242938971421],
+         'resonance 1:3': [0.0135160160225]}
+    """
+    from sage.rings.qqbar import AA
+    from sage.rings.real_mpfr import RealField
+    from sage.rings.complex_mpfr import ComplexField
+    from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing as PR
+    H, values, relations = polynomial_hamiltonian(model, at, order)
+    name = str(parameter)
+    if values.get(name, 0) is not None:
+        raise AnalysisError(f"{parameter} must be a free parameter of the Taylor coefficients "
+                            f"(free: {[g for g, v in values.items() if v is None]})",
+                            entry="parameter")
+    others = [g for g, v in values.items() if v is None and g != name]
+    if others:
+        raise AnalysisError(f"give the parameters {others} values in at=", entry="at")
+    a, b = AA(interval[0]), AA(interval[1])
+    base = H.base_ring()
+    t = PR(AA, 't').gen()
+    point = [t if g == name else AA(values[g]) for g in base.variable_names()]
+    S, _ = _symbolic_hessian(H, point)
+    n = S.nrows() // 2
+    if n != 2:
+        raise AnalysisError(f"exceptional values are for two degrees of freedom, not {n}",
+                            entry="model")
+    from ..analysis.normal_forms import symplectic_unit
+    chi = (symplectic_unit(n).change_ring(S.base_ring()) * S).charpoly('x')
+    try:
+        # rational coefficients (the usual case: the constants enter squared)
+        # keep the resultants over QQ[t], fast and without algebraic numbers
+        chi = chi.change_ring(PR(QQ, 't'))
+    except (TypeError, ValueError):
+        pass
+    s = PR(chi.base_ring(), 's').gen()
+    p = sum(chi[2 * k] * s ** k for k in range(n + 1))      # chi(lambda) = p(lambda^2)
+    found = {}
+
+    def roots_in(poly):
+        poly = poly.numerator() if hasattr(poly, 'numerator') else poly
+        if poly.base_ring() is not QQ:
+            poly = PR(AA, 't')(poly)
+        return sorted(r for r in poly.roots(AA, multiplicities=False) if a < r < b)
+    found['first approximation'] = roots_in(p.discriminant())
+    for k1 in range(1, order):
+        for k2 in range(k1 + 1, order + 1 - k1):
+            if gcd_(k1, k2) != 1:
+                continue
+            # omega1/omega2 = k2/k1: s1 = (k2/k1)^2 s2 for two roots s = -omega^2
+            q = p.resultant(p(s * QQ(k2) ** 2 / QQ(k1) ** 2))
+            hits = [r for r in roots_in(q) if _ratio(p, r, k2 / QQ(k1))]
+            if hits:
+                found[f"resonance {k1}:{k2}"] = hits
+    found['Arnold determinant'] = _determinant_zeros(H, values, name, found, a, b,
+                                                     order, samples, prec, tolerance)
+    return dict(sorted(found.items()))
+
+
+def gcd_(a, b):
+    from sage.arith.misc import gcd
+    return gcd(a, b)
+
+
+def _symbolic_hessian(H, point):
+    from sage.matrix.constructor import matrix
+    n = len(H.parent().gens()) // 2
+    X = H.parent().gens()
+    H2 = H.parent()({e: c for e, c in H.dict().items() if sum(e) == 2})
+    entries = [[H2.derivative(X[i]).derivative(X[j]).constant_coefficient()(*point)
+                for j in range(2 * n)] for i in range(2 * n)]
+    return matrix(entries), n
+
+
+def _ratio(p, r, ratio):
+    r"""Whether at the parameter ``r`` the two roots `s = -\omega^2` of ``p``
+    are negative and `\omega_1/\omega_2 =` ``ratio``."""
+    from sage.rings.qqbar import AA
+    roots = sorted(p.map_coefficients(lambda c: c(r)).roots(AA, multiplicities=False))
+    if len(roots) != 2 or any(x >= 0 for x in roots):
+        return False
+    return roots[0] == ratio ** 2 * roots[1]
+
+
+def _determinant_zeros(H, values, name, found, a, b, order, samples, prec, tolerance):
+    from sage.rings.complex_mpfr import ComplexField
+    from sage.rings.real_mpfr import RealField
+    CC = ComplexField(prec)
+    names = H.base_ring().variable_names()
+    degree = 4
+
+    def D(m):
+        point = [CC(m) if g == name else CC(values[g]) for g in names]
+        numeric = H.map_coefficients(lambda c: CC(c(*point)), new_base_ring=CC)
+        try:
+            nf = normal_form(FormalArithmetic.numeric(numeric, 2, prec), degree)
+        except AnalysisError:
+            return None
+        return nf.arnold_determinant(degree)
+    cuts = sorted([a, b] + [r for key, rs in found.items() for r in rs])
+    zeros = []
+    RF = RealField(prec)
+    for lo, hi in zip(cuts, cuts[1:]):
+        grid = [RF(lo) + (RF(hi) - RF(lo)) * (k + QQ((1, 2))) / samples for k in range(samples)]
+        vals = [D(m) for m in grid]
+        for (m0, d0), (m1, d1) in zip(zip(grid, vals), zip(grid[1:], vals[1:])):
+            if d0 is None or d1 is None or d0.sign() == d1.sign():
+                continue
+            while m1 - m0 > tolerance:
+                mid = (m0 + m1) / 2
+                dm = D(mid)
+                if dm.sign() == d0.sign():
+                    m0, d0 = mid, dm
+                else:
+                    m1 = mid
+            zeros.append((m0 + m1) / 2)
+    return zeros
