@@ -373,7 +373,7 @@ def test_the_lagrangian_of_a_model_refuses_values_against_its_signs(spherical):
 
 
 def test_subs_of_models_refuses_values_against_their_signs(spherical):
-    with pytest.raises(ModelError, match=r"subs: g is declared positive, got -9.81"):
+    with pytest.raises(ModelError, match=r"subs: g is declared positive, got -981/100"):
         spherical.subs({'g': -9.81})
     C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']], positive=['R1'])
     with pytest.raises(ModelError, match=r"subs: R1 is declared positive, got -2"):

@@ -53,7 +53,7 @@ from sage.matrix.constructor import matrix, identity_matrix
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..arguments import expression_argument, expression_list, matrix_argument
+from ..arguments import expression_argument, expression_list, matrix_argument, symbol_arguments
 from ..errors import AnalysisError, brief
 from ..algebra.determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
@@ -515,7 +515,8 @@ class LinearSystem(SageObject):
             ...
             AnalysisError: LinearSystem.from_equations: W is 2x2, expected 1x1 like M
         """
-        M, S, W = (matrix(SR, X) for X in (M, S, W))
+        M, S, W = (matrix_argument(X, name, AnalysisError, entry="LinearSystem.from_equations",
+                                   square=True) for X, name in ((M, 'M'), (S, 'S'), (W, 'W')))
         n = M.nrows()
         for name, X in (('M', M), ('S', S), ('W', W)):
             if X.nrows() != n or X.ncols() != n:
@@ -562,6 +563,7 @@ class LinearSystem(SageObject):
             'unstable'
         """
         from .stability import linear_stability
+        positive = symbol_arguments(positive, 'positive', error=AnalysisError)
         return linear_stability(self, positive=positive, with_respect_to=with_respect_to)
 
     def kelvin_chetaev(self, positive=()):

@@ -54,7 +54,7 @@ from sage.symbolic.ring import SR
 from sage.symbolic.operators import add_vararg, mul_vararg
 import operator
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, brief
 from ..analysis.normal_forms import normal_form, FormalArithmetic, BirkhoffNormalForm
 from ..analysis.verdict import StabilityVerdict
 from .hamiltonian import Hamiltonian
@@ -83,6 +83,9 @@ def _point(H, at):
     r"""The equilibrium `(q_0, p_0)` and the parameter values of ``at``."""
     coordinates, momenta = H.coordinates(), H.momenta()
     names = {str(v): v for v in coordinates + momenta}
+    if at is not None and not isinstance(at, dict):
+        raise AnalysisError(f"expected a dict {{coordinate: value}}, got {brief(at)}; e.g. "
+                            f"at={{{coordinates[0]}: 0, ...}}", entry="at")
     point, values = {}, {}
     for key, value in (at or {}).items():
         key = SR(key) if not isinstance(key, str) else SR.var(key)
@@ -172,7 +175,6 @@ def polynomial_hamiltonian(model, at, order):
         sage: H, values
         ((-1/24*k)*q1^4 + 1/2*k*q1^2 + 1/2*p1^2 - k, {'k': None})
     """
-    H = _hamiltonian(model)
     poly = taylor_polynomial(model, at, order)
     constants, parameters = {}, set()
     for c in poly.coefficients():
@@ -508,8 +510,6 @@ def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec
          'resonance 1:3': [0.0135160160225]}
     """
     from sage.rings.qqbar import AA
-    from sage.rings.real_mpfr import RealField
-    from sage.rings.complex_mpfr import ComplexField
     from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing as PR
     H, values, relations = polynomial_hamiltonian(model, at, order)
     name = str(parameter)

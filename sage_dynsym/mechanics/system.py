@@ -331,6 +331,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         if not isinstance(values, dict):
             raise ModelError(f"expected a dictionary {{parameter: value}}, got {values!r}",
                              entry="subs")
+        values = exact_decimals(values)
         check_model_values(self, values, entry="subs")
         protected = set(self._coordinates) | set(self._velocities) | {t}
         protected |= set(self._accelerations()) | {momentum(q) for q in self._coordinates}

@@ -93,7 +93,7 @@ The inverted pendulum of the cart (``theta = pi``; the pendulum hangs at
     ....:       '--param', 'c=0.1:2:11', '--value', 'M=1', '--value', 'm=1/2', '--value', 'l=1',
     ....:       '--value', 'g=9.81', '--at', 'theta=pi', '--numpy', '-o', prefix + '_cart'])
     cart pendulum with spring and damper: stability map of 11 x 11 points in (k, c): 0.0% asymptotically stable (method: polynomial)
-    Lienard-Chipart conditions: agree at 100.0% of the points
+    no Lienard-Chipart conditions (never asymptotically stable)
     classes: 0.0% asymptotically stable, 0.0% stable in first approximation, 100.0% unstable
     exact classes: agree at 100.0% (unstable)
     wrote ..._cart.png, ..._cart.npz
