@@ -165,11 +165,35 @@ class FormalArithmetic(SageObject):
         return f"exact arithmetic in {names} with values {self.values}"
 
     def is_numeric(self):
+        r"""Whether the coefficients are numbers (else exact).
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: A.is_numeric(), FormalArithmetic.numeric(S('p^2 + q^2'), 1).is_numeric()
+            (False, True)
+        """
         return self.prec is not None
 
     def prepare(self, order):
         r"""Set up the ring of the computation: `\lambda_k` and the inverses
-        of the divisors `j\cdot\lambda` (``|j| <= order``) and of `c_k`."""
+        of the divisors `j\cdot\lambda` (``|j| <= order``) and of `c_k`
+        (:func:`normal_form` calls it).
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: A.prepare(4); A.lambdas, A.groebner
+            ([lambda1], [a + lambda1^2])
+        """
         n = self.n
         hessian = self._hessian()
         self.hessian = hessian
@@ -262,15 +286,50 @@ class FormalArithmetic(SageObject):
                                       for j in self.divisors]
 
     def reduce(self, c):
+        r"""``c`` reduced by the relations of the exact generators (itself
+        when numeric).
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: A.reduce(A.K('a') * lam)
+            -lambda1^3
+        """
         return c if self.is_numeric() else c.reduce(self.groebner)
 
     def value(self, c):
-        r"""The value of ``c`` as a complex interval (exact mode) or number."""
+        r"""The value of ``c`` as a complex interval (exact mode) or number.
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: A.value(lam)
+            2*I
+        """
         return self._numeric_value(c)
 
     def is_zero(self, c):
         r"""Whether the value of ``c`` is zero: decided by intervals, then
-        exactly; ``None`` when only the working precision says so."""
+        exactly; ``None`` when only the working precision says so.
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: A.is_zero(lam^2 + 4), A.is_zero(lam)
+            (True, False)
+        """
         if self.is_numeric():
             K = c.parent()
             return True if abs(c) < RealField(K.prec())(2) ** (-K.prec() // 2) else False
@@ -283,7 +342,18 @@ class FormalArithmetic(SageObject):
         return None if exact is None else exact.is_zero()
 
     def exact_value(self, c):
-        r"""The value of ``c`` in ``QQbar`` (``None`` if a value is not exact)."""
+        r"""The value of ``c`` in ``QQbar`` (``None`` if a value is not exact).
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: A.exact_value(lam^3)
+            -8*I
+        """
         if self.is_numeric() or self.free:
             return None
         try:
@@ -315,7 +385,18 @@ class FormalArithmetic(SageObject):
 
     def inverse(self, x, which=None):
         r"""The inverse of ``x``: a number, or the generator that stands for
-        it (``which``: ``('c', k)`` or the divisor vector)."""
+        it (``which``: ``('c', k)`` or the divisor vector).
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24` at `a = 4`
+        (frequency 2), normalized exactly::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': 4})
+            sage: N = normal_form(A, 4); lam, = A.lambdas
+            sage: u = A.inverse(2*lam, ('d', (2,))); u, A.exact_value(u)
+            (u_1, -0.25000000000000000?*I)
+        """
         if self.is_numeric():
             return 1 / x
         if which[0] == 'c':
@@ -516,6 +597,16 @@ class BirkhoffNormalForm(SageObject):
         return self._order
 
     def degrees_of_freedom(self):
+        r"""The number of degrees of freedom `n` (canonical pairs).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: R = PolynomialRing(QQ, 'q1, q2, p1, p2'); q1, q2, p1, p2 = R.gens()
+            sage: H = (p1^2 + q1^2)/2 + (p2^2 + 4*q2^2)/2 + q1^4
+            sage: normal_form(FormalArithmetic.numeric(H, 2), 4).degrees_of_freedom()
+            2
+        """
         return self._A.n
 
     @cached_method

@@ -81,6 +81,40 @@ REASONS = {
 }
 
 
+def coefficient_conditions(poly, var):
+    r"""
+    The Liénard--Chipart conditions of the polynomial ``poly`` in ``var``
+    stated in its coefficients: for a polynomial whose conditions would be
+    too large expanded (a report shows them this way, each coefficient
+    given apart).
+
+    OUTPUT: ``None`` for a polynomial without odd coefficients (no
+    dissipation: these conditions never hold), else a triple ``(zeros,
+    conditions, coefficients)``: the multiplicity of the root `0` (left
+    out), the conditions (each ``> 0``) in symbols ``a_k``, and the dict
+    ``{a_k: coefficient of var^(k + zeros)}``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.stability import coefficient_conditions
+        sage: lam, m, c, k = var('lam m c k')
+        sage: zeros, conditions, a = coefficient_conditions(lam*(m*lam^2 + c*lam + k), lam)
+        sage: zeros, conditions, a
+        (1, [a_2, a_0, a_1], {a_0: k, a_1: c, a_2: m})
+        sage: coefficient_conditions(m*lam^2 + k, lam) is None
+        True
+    """
+    from .hurwitz import lienard_chipart_conditions
+    coefficients = SR(poly).expand().coefficients(var, sparse=False)
+    zeros = next(k for k, a in enumerate(coefficients) if not SR(a).is_zero())
+    coefficients = coefficients[zeros:]
+    if all(SR(a).is_zero() for a in coefficients[1::2]):
+        return None
+    a = [SR.var(f"a_{k}") for k in range(len(coefficients))]
+    generic = sum(a_k * var ** k for k, a_k in enumerate(a))
+    return zeros, lienard_chipart_conditions(generic, var), dict(zip(a, coefficients))
+
+
 def _zero_column(X, j):
     return all(normalize(SR(X[i, j])).is_zero() for i in range(X.nrows()))
 

@@ -310,22 +310,19 @@ def coefficient_conditions_lines(poly, lam, reason):
         sage: coefficient_conditions_lines(lam^2 + k, lam, "too large") is None
         True
     """
-    from ..analysis import lienard_chipart_conditions
-    coefficients = SR(poly).expand().coefficients(lam, sparse=False)
-    zeros = next(k for k, a in enumerate(coefficients) if not SR(a).is_zero())
-    coefficients = coefficients[zeros:]
-    if all(SR(a).is_zero() for a in coefficients[1::2]):
+    from ..analysis.stability import coefficient_conditions
+    found = coefficient_conditions(poly, lam)
+    if found is None:
         return None
-    a = [SR.var(f"a_{k}") for k in range(len(coefficients))]
-    generic = sum(a_k * lam ** k for k, a_k in enumerate(a))
+    zeros, conditions, coefficients = found
     roots = (f"lambda = 0 is a root of multiplicity {zeros} (left out); for the other roots, "
              if zeros else "")
     lines = [f"  the expanded conditions are over the budget ({reason}; --budget raises it); "
              f"{roots}with a_k the coefficient of {lam}^k below, the Lienard-Chipart "
              "conditions (each > 0):"]
-    for condition in lienard_chipart_conditions(generic, lam):
+    for condition in conditions:
         lines += formula_lines("", condition, indent="    ")
     lines.append("  where")
-    for a_k, value in zip(a, coefficients):
+    for a_k, value in coefficients.items():
         lines += formula_lines(f"{a_k} = ", value, indent="    ")
     return lines
