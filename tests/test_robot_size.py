@@ -46,6 +46,7 @@ def _write(tmp_path, text):
     return str(path)
 
 
+@pytest.mark.slow       # half a minute: the physical conditions of 500 bodies
 def test_a_500_link_chain_of_1000_coordinates_loads(tmp_path):
     S = load(_write(tmp_path, chain_text(500)))
     assert len(S.coordinates()) == 1000

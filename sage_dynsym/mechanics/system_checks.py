@@ -193,7 +193,7 @@ class SystemChecks:
         from sage.matrix.constructor import identity_matrix
         positive = list(self._positive)
         declared = ", ".join(f"{p} > 0" for p in positive) or "none"
-        open_conditions = []
+        open_conditions, listed = [], set()
 
         def require(expr, entry, what, strict=False, nonzero=False):
             expr = SR(expr)
@@ -203,14 +203,16 @@ class SystemChecks:
                 # too large to decide quickly: stated, not assumed
                 open_conditions.append(expr > 0 if strict else expr >= 0)
                 return
+            # positive_conditions(e) is [] where e > 0 always, None where never
+            simple = positive_conditions(expr, positive)
             if strict:
-                fails = "never positive" if _never_positive(expr, positive) else None
-                holds = _always_positive(expr, positive)
+                fails = "never positive" if simple is None else None
+                holds = simple == []
             else:
-                fails = ("negative" if _always_positive(-expr, positive) else
-                         "never positive" if nonzero and _never_positive(expr, positive)
-                         else None)
-                holds = _never_positive(-expr, positive)
+                opposite = positive_conditions(-expr, positive)
+                fails = ("negative" if opposite == [] else
+                         "never positive" if nonzero and simple is None else None)
+                holds = opposite is None
             if fails:
                 raise ModelError(f"{what} must be {'positive' if strict else 'non-negative'}, "
                                  f"but {expr} is {fails} under the declared signs "
@@ -218,7 +220,6 @@ class SystemChecks:
             if not holds:
                 condition = expr > 0 if strict else expr >= 0
                 # positive factors dropped (m*(A*C - D^2) >= 0 is A*C - D^2 >= 0)
-                simple = positive_conditions(expr, positive)
                 if simple is None:          # never positive: expr >= 0 only where it is 0
                     zero = nonzero_conditions(expr, positive) or []
                     if len(zero) == 1:      # -A*D^2 >= 0 is D == 0
@@ -227,7 +228,8 @@ class SystemChecks:
                     rel = simple[0]
                     expr = (rel.lhs() - rel.rhs()) * (1 if rel.operator() is operator.gt else -1)
                     condition = expr > 0 if strict else expr >= 0
-                if not any(bool(c == condition) for c in open_conditions):
+                if str(condition) not in listed:
+                    listed.add(str(condition))
                     open_conditions.append(condition)
 
         for body in self._bodies:
@@ -271,11 +273,3 @@ class SystemChecks:
         if not low <= k <= len(self._bodies):
             raise ModelError(f"body index {k} out of range {low}..{len(self._bodies)}")
 
-
-def _always_positive(expr, positive):
-    # expr > 0 for all the values the declared signs allow
-    return positive_conditions(expr, positive) == []
-
-
-def _never_positive(expr, positive):
-    return positive_conditions(expr, positive) is None
