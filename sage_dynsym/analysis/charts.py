@@ -63,6 +63,7 @@ REFERENCES:
 """
 from sage.matrix.constructor import matrix
 from sage.rings.qqbar import AA
+from sage.rings.real_mpfi import RealIntervalField
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
@@ -84,6 +85,9 @@ class ConfigurationChart(SageObject):
       the same configuration iff these have the same values
     - ``velocity_matrix`` -- (optional) `E(q)`, square; default the identity
       (a regular chart)
+    - ``sheets`` -- (default: 1) the number of coordinate tuples (in the
+      solver's ranges, angles in `(-\pi, \pi]`) over each regular point:
+      2 for Euler angles, which cover `SO(3)` twice
 
     EXAMPLES::
 
@@ -102,7 +106,7 @@ class ConfigurationChart(SageObject):
         AnalysisError: chart: the velocity matrix must be square of size 1 (one row per coordinate), got 1 x 2
     """
 
-    def __init__(self, coordinates, embedding, velocity_matrix=None):
+    def __init__(self, coordinates, embedding, velocity_matrix=None, sheets=1):
         self._coordinates = [SR(q) for q in coordinates]
         self._embedding = [SR(e) for e in embedding]
         n = len(self._coordinates)
@@ -111,6 +115,7 @@ class ConfigurationChart(SageObject):
             raise AnalysisError(f"the velocity matrix must be square of size {n} (one row per "
                                 f"coordinate), got {E.nrows()} x {E.ncols()}", entry="chart")
         self._E = E
+        self._sheets = int(sheets)
 
     def _repr_(self):
         return (f"Chart ({', '.join(map(str, self._coordinates))}) of a configuration space "
@@ -137,6 +142,18 @@ class ConfigurationChart(SageObject):
             [x]
         """
         return list(self._embedding)
+
+    def sheets(self):
+        r"""The number of coordinate tuples over each regular point.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.mechanics.charts import euler_angles
+            sage: a, b, c = var('a b c')
+            sage: euler_angles([(3, a), (1, b), (2, c)]).sheets()
+            2
+        """
+        return self._sheets
 
     def velocity_matrix(self):
         r"""The matrix `E(q)` of `\omega = E(q)\dot q`.
@@ -249,8 +266,21 @@ class ConfigurationPoint(SageObject):
         return self._evaluate(expr)
 
 
-def _algebraic(value, what):
-    r"""``value`` (an exact constant) as a real algebraic number."""
+def algebraic_value(value, what):
+    r"""
+    ``value`` (an exact constant) as a real algebraic number; ``what`` names
+    it in the error.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.charts import algebraic_value
+        sage: algebraic_value(sqrt(2)/2, 'x')
+        0.7071067811865475?
+        sage: algebraic_value(var('k'), 'x')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: configuration_points: the value k of x is not a real algebraic number that Sage can compare exactly; give numerical values to every parameter (values=...)
+    """
     try:
         return AA(value)
     except (TypeError, ValueError, NotImplementedError):
@@ -354,7 +384,7 @@ def configuration_points(solutions, chart=None, families=None):
         chart = ConfigurationChart(variables, embedding)
     singular = chart.singular_function()
     obstruction = None
-    found = {}
+    regular, on_singular = [], {}
     for s in solutions:
         free = s.solution().free_unknowns()
         for evaluate in _evaluators(s, angles):
@@ -363,17 +393,48 @@ def configuration_points(solutions, chart=None, families=None):
                 if families is not None:
                     families.append(s)
                 break
-            key = tuple(_algebraic(v, f"{e}") for v, e in zip(image, chart.embedding()))
-            on_singular = SR(evaluate(singular)).is_zero()
-            if on_singular:
-                if obstruction is None:
-                    obstruction = chart.equilibrium_obstruction(
-                        solutions.stationary_problem().function)
-                if not all(SR(evaluate(m)).is_zero() for m in obstruction.list()):
-                    continue
-            if key in found:
-                found[key][1].append(s)
-            else:
-                found[key] = (evaluate, [s], on_singular)
-    return [ConfigurationPoint(key, sols, evaluate, on_singular)
-            for key, (evaluate, sols, on_singular) in sorted(found.items())]
+            key = tuple(algebraic_value(v, f"{e}") for v, e in zip(image, chart.embedding()))
+            if not SR(evaluate(singular)).is_zero():
+                regular.append((key, evaluate, s))
+                continue
+            if obstruction is None:
+                obstruction = chart.equilibrium_obstruction(solutions.stationary_problem().function)
+            if all(SR(evaluate(m)).is_zero() for m in obstruction.list()):
+                # few, with simple values: compared exactly
+                on_singular.setdefault(key, (evaluate, []))[1].append(s)
+    points = [ConfigurationPoint(group[0][0], [s for _, _, s in group], group[0][1], False)
+              for group in _sheets(regular, chart.sheets())]
+    points += [ConfigurationPoint(key, sols, evaluate, True)
+               for key, (evaluate, sols) in on_singular.items()]
+    return sorted(points, key=lambda p: [float(x) for x in p.embedding()])
+
+
+def _sheets(found, sheets, precisions=(53, 128, 256, 512, 1024)):
+    r"""
+    The solutions ``found`` (``(embedding, evaluate, solution)``) at regular
+    points of a chart grouped by their point: a regular point has exactly
+    ``sheets`` solutions over it, so a grouping where every group has
+    ``sheets`` members whose embeddings overlap (interval arithmetic) and
+    the embeddings of different groups are disjoint is the exact one,
+    without comparing algebraic numbers for equality (which can need their
+    minimal polynomials); exact comparison is the fallback.
+    """
+    for prec in precisions:
+        field = RealIntervalField(prec)
+        boxes = [[x.interval(field) for x in key] for key, _, _ in found]
+        groups, seen = [], set()
+        for i, box in enumerate(boxes):
+            if i in seen:
+                continue
+            group = [j for j in range(len(boxes)) if j not in seen and
+                     all(a.overlaps(b) for a, b in zip(box, boxes[j]))]
+            seen.update(group)
+            groups.append(group)
+        if all(len(g) == sheets for g in groups) and all(
+                all(a.overlaps(b) for a, b in zip(boxes[i], boxes[j]))
+                for g in groups for i in g for j in g):
+            return [[found[i] for i in g] for g in groups]
+    exact = {}
+    for item in found:
+        exact.setdefault(item[0], []).append(item)
+    return list(exact.values())

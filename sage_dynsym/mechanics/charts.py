@@ -59,7 +59,7 @@ class EulerAngles(ConfigurationChart):
         columns = [(Rs[1] * Rs[2]).transpose() * axes[0], Rs[2].transpose() * axes[1], axes[2]]
         E = matrix(SR, columns).transpose()
         self._R = R
-        ConfigurationChart.__init__(self, [q for _, q in self._rotations], R.list(), E)
+        ConfigurationChart.__init__(self, [q for _, q in self._rotations], R.list(), E, sheets=2)
 
     def _repr_(self):
         return "Euler angles " + ", ".join(f"{q} about axis {a}" for a, q in self._rotations)
