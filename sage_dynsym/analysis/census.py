@@ -66,6 +66,7 @@ from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.qqbar import AA, QQbar
+from sage.rings.real_mpfi import RealIntervalField
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
@@ -159,7 +160,7 @@ def _is_positive_definite(K):
                for k in range(1, K.nrows() + 1))
 
 
-def _verdict(point, problem):
+def _verdict(point, problem, gyroscopic):
     r"""The stability of an equilibrium at numerical parameter values, exact."""
     if point.is_singular():
         return 'undecided'
@@ -177,7 +178,7 @@ def _verdict(point, problem):
         return A.apply_map(lambda e: algebraic_value(e, 'the first approximation'))
     if linear.order() == 2:
         Mx, Sx, Wx = exact(linear.M()), exact(linear.S()), exact(linear.W())
-        if Sx == -Sx.transpose() and Wx == Wx.transpose() and _is_positive_definite(Mx):
+        if gyroscopic and _is_positive_definite(Mx):
             return _gyroscopic_verdict(Mx, Sx, Wx)
         poly = (Mx * z**2 + Sx * z + Wx).det()
     else:
@@ -189,6 +190,19 @@ def _verdict(point, problem):
     if all(r.real() == 0 and m == 1 for r, m in roots):
         return 'stable in first approximation'
     return 'undecided'
+
+
+def _is_gyroscopic(problem):
+    r"""Whether the first approximation has a skew velocity matrix and a
+    symmetric positional one at every point, decided on the symbolic
+    matrices (at a point, equal algebraic numbers given by different
+    expressions would need their minimal polynomials)."""
+    linear = problem.linear_system(lambda e: e)
+    if linear is None or linear.order() != 2:
+        return False
+    S, W = linear.S(), linear.W()
+    return all(SR(e).simplify_full().is_zero()
+               for e in (S + S.transpose()).list() + (W - W.transpose()).list())
 
 
 def _gyroscopic_verdict(M, G, K):
@@ -203,17 +217,71 @@ def _gyroscopic_verdict(M, G, K):
     n = K.nrows()
     if K.det() < 0:
         return 'unstable'
-    z = PolynomialRing(AA, 'z').gen()
-    p = (M * z**2 + G * z + K).det()
-    q = PolynomialRing(AA, 'mu')([p[2 * k] for k in range(n + 1)])
-    roots = q.roots(AA)
-    if len(roots) == n and all(r < 0 and m == 1 for r, m in roots):
+    for prec in (128, 512):
+        counts = _sturm_counts(M, G, K, prec)
+        if counts is not None:
+            break
+    else:
+        counts = _exact_counts(M, G, K)
+    if counts is None:
+        return 'undecided'
+    negative, positive = counts
+    if negative == n:
         return 'stable in first approximation'
-    # a root mu that is not real and negative gives lambda with Re > 0,
-    # unless mu = 0 or a multiple root (critical cases)
-    if sum(m for _, m in roots) < n or any(r > 0 for r, _ in roots):
+    # fewer distinct real roots than the degree (q squarefree), or a positive
+    # one: a root mu not real and negative, so lambda with Re > 0
+    if negative + positive < n or positive:
         return 'unstable'
     return 'undecided'
+
+
+def _sturm_counts(M, G, K, prec):
+    r"""
+    The numbers of distinct negative and positive real roots of `q`, where
+    `\det(M z^2 + G z + K) = q(z^2)`, by a Sturm sequence in interval
+    arithmetic of precision ``prec``: exact when every leading coefficient
+    of the sequence and `q(0)` have a certain sign and `q` is squarefree;
+    ``None`` otherwise.
+    """
+    F = RealIntervalField(prec)
+    z = PolynomialRing(F, 'z').gen()
+    p = (M.change_ring(F) * z**2 + G.change_ring(F) * z + K.change_ring(F)).det()
+    n = K.nrows()
+    q = PolynomialRing(F, 'mu')([p[2 * k] for k in range(n + 1)])
+    sequence = [q, q.derivative()]
+    while sequence[-1].degree() > 0:
+        r = -(sequence[-2] % sequence[-1])
+        if r.degree() < 0 or r.leading_coefficient().contains_zero():
+            return None     # its degree is not certain (or q is not squarefree)
+        sequence.append(r)
+    if any(f.leading_coefficient().contains_zero() or f[0].contains_zero() for f in sequence):
+        return None
+
+    def changes(signs):
+        signs = [x for x in signs if x != 0]
+        return sum(1 for a, b in zip(signs, signs[1:]) if a != b)
+
+    def sign(x):
+        return 1 if x > 0 else -1
+    at_minus = changes([sign(f.leading_coefficient()) * (-1) ** f.degree() for f in sequence])
+    at_plus = changes([sign(f.leading_coefficient()) for f in sequence])
+    at_zero = changes([sign(f[0]) for f in sequence])
+    return at_minus - at_zero, at_zero - at_plus
+
+
+def _exact_counts(M, G, K):
+    r"""The numbers of distinct negative and positive real roots of `q`
+    (see :func:`_sturm_counts`), exactly; ``None`` when `q` has a multiple
+    root (a critical case)."""
+    z = PolynomialRing(AA, 'z').gen()
+    p = (M * z**2 + G * z + K).det()
+    n = K.nrows()
+    q = PolynomialRing(AA, 'mu')([p[2 * k] for k in range(n + 1)])
+    roots = q.roots(AA)
+    if any(m > 1 for _, m in roots) or sum(m for _, m in roots) < n and \
+            not q.is_squarefree():
+        return None
+    return sum(1 for r, _ in roots if r < 0), sum(1 for r, _ in roots if r > 0)
 
 
 def equilibria_at(system, values, chart=None, regular=None, positive=()):
@@ -272,7 +340,8 @@ def _points(system, values, chart, stationary_motions, positive):
                             "census counts isolated equilibria: this point of the parameter "
                             "space is on the bifurcation set", entry="equilibrium_census")
     problem = sols.stationary_problem()
-    return [(p, _verdict(p, problem)) for p in points]
+    gyroscopic = _is_gyroscopic(problem)
+    return [(p, _verdict(p, problem, gyroscopic)) for p in points]
 
 
 def _counts(verdicts):
@@ -284,6 +353,7 @@ def _counts(verdicts):
 
 def _count_task(system, values, chart, regular, positive):
     r"""One sample point's counts (a task: module level, picklable arguments)."""
+    _log(f"solving at {values}")
     return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
 
 
