@@ -62,6 +62,7 @@ REFERENCES:
   satellite*, Cosmic Research 22 (1984) 257--260.
 """
 from sage.arith.misc import gcd
+from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
@@ -130,27 +131,35 @@ def discriminant_polynomials(W, coordinates, parameters):
     """
     q = [SR(x) for x in coordinates]
     H = matrix(SR, [[SR(W).diff(x).diff(y) for y in q] for x in q])
-    T = Translation([SR(W).diff(x) for x in q] + [H.det()], q + list(parameters))
+    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[H.det()])
     P = T.ring()
     keep = {str(g) for p in parameters for g in T.generators_of(p)}
     state = [g for g in P.gens() if str(g) not in keep]
+    determinant = T.numerator(H.det())[0]
     ideal = P.ideal(T.equations())
     for d in T.denominators():
         ideal = ideal.saturation(P.ideal(d))[0]
-    _log(f"eliminating {len(state)} variables from {len(T.equations())} equations")
-    eliminated = ideal.elimination_ideal(state)
-    gens = [g for g in eliminated.gens() if g != 0]
-    if not gens:
-        raise AnalysisError(f"the stationary equations are degenerate for all values of "
-                            f"{', '.join(map(str, parameters))} (a family of equilibria); "
-                            "the census counts isolated equilibria only",
-                            entry="equilibrium_census")
-    # the zero set of the ideal: the factors of the gcd for one parameter, of
-    # each generator's for two (a curve is cut out by one equation here)
-    g = gcd(gens) if len(gens) > 1 else gens[0]
-    if g.is_constant():
-        g = gens[0]
-    return [T.symbolic(f) for f, _ in g.factor() if not f.is_constant()]
+    # split first (Singular's factorizing Groebner basis): eliminating from
+    # each part takes milliseconds where the whole ideal can take minutes
+    parts = [P.ideal(list(part)) for part in ff.facstd(ideal)]
+    _log(f"eliminating {len(state)} variables from {len(parts)} parts")
+    factors = []
+    for part in parts:
+        gens = [g for g in (part + P.ideal([determinant])).elimination_ideal(state).gens()
+                if g != 0]
+        if not gens:
+            raise AnalysisError(f"the stationary equations are degenerate for all values of "
+                                f"{', '.join(map(str, parameters))} (a family of equilibria); "
+                                "the census counts isolated equilibria only",
+                                entry="equilibrium_census")
+        # the zero set of the ideal: the factors of the gcd for one parameter;
+        # for two, a curve through it (a finite set of points lies on it)
+        g = gcd(gens) if len(gens) > 1 else gens[0]
+        if g.is_constant():
+            g = gens[0]
+        factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
+                    and -f not in factors]
+    return [T.symbolic(f) for f in factors]
 
 
 # -- the equilibria at one point of the parameter space ----------------------------------
