@@ -88,7 +88,7 @@ def gyrostat(sequence):
 @pytest.fixture(scope='module')
 def models():
     first = gyrostat([(3, 'alpha'), (1, 'beta'), (2, 'gamma')])
-    second = gyrostat([(1, 'alpha'), (2, 'beta'), (3, 'gamma')])
+    second = gyrostat([(3, 'alpha'), (2, 'beta'), (1, 'gamma')])
     return first, second
 
 

@@ -325,19 +325,47 @@ def equilibria_at(system, values, chart=None, regular=None, positive=()):
     from .stationary import stationary_motions
     found = _points(system, values, chart, stationary_motions, positive)
     if regular is not None and any(p.is_singular() for p, _ in found):
-        other = {p.embedding(): (p, v) for p, v in
-                 _points(regular[0], values, regular[1], stationary_motions, positive)}
-        kept = [(p, v) for p, v in found if not p.is_singular()]
-        keys = {p.embedding() for p, _ in kept}
-        # every point of the second chart not regular in the first: the
-        # singular set of the first, decided where it is regular
-        kept += [pv for k, pv in other.items() if k not in keys and not pv[0].is_singular()]
-        if any(pv[0].is_singular() for k, pv in other.items() if k not in keys):
+        other = _points(regular[0], values, regular[1], stationary_motions, positive)
+        found = [first if not first[0].is_singular() else second
+                 for first, second in _matching(found, other)]
+        if any(p.is_singular() for p, _ in found):
             raise AnalysisError("a point is singular in both charts; give a second chart "
-                                "regular on the singular set of the first",
-                                entry="regular")
-        found = sorted(kept, key=lambda pv: pv[0].embedding())
+                                "regular on the singular set of the first (for Euler angles "
+                                "z, x, y, singular where |R[2, 1]| = 1: z, y, x, singular where "
+                                "|R[2, 0]| = 1)", entry="regular")
     return found
+
+
+def _matching(first, second, precisions=(53, 128, 256, 512, 1024)):
+    r"""
+    The pairs of the same point in two lists of ``(point, verdict)``: both
+    charts give every equilibrium once, so when the embeddings' intervals
+    overlap in exactly one partner for every point, that pairing is the
+    identity (the equal pairs always overlap); exact comparison is the
+    fallback.
+    """
+    if len(first) != len(second):
+        raise AnalysisError(f"the two charts give {len(first)} and {len(second)} equilibria: "
+                            "they are not charts of the same model", entry="regular")
+    for prec in precisions:
+        field = RealIntervalField(prec)
+
+        def box(pv):
+            return [x.interval(field) for x in pv[0].embedding()]
+        boxes = [box(pv) for pv in second]
+        pairs = []
+        for pv in first:
+            b = box(pv)
+            partners = [j for j, c in enumerate(boxes)
+                        if all(x.overlaps(y) for x, y in zip(b, c))]
+            if len(partners) != 1:
+                break
+            pairs.append((pv, second[partners[0]]))
+        else:
+            if len({id(q) for _, q in pairs}) == len(second):
+                return pairs
+    return [(pv, next(q for q in second if q[0].embedding() == pv[0].embedding()))
+            for pv in first]
 
 
 def _points(system, values, chart, stationary_motions, positive):
@@ -405,10 +433,12 @@ def _intervals(roots, positive):
 
 
 def _shown(value):
+    r"""A bound as radicals when they are real ones, else as a real algebraic number."""
     try:
-        return str(value.radical_expression())
+        text = str(value.radical_expression())
     except (AttributeError, ValueError, NotImplementedError, TypeError):
         return str(value)
+    return str(value) if 'I' in text else text
 
 
 class CensusCell(SageObject):
@@ -661,7 +691,7 @@ def _cylinders(polys, p1, p2, positive1, positive2):
                     (f" < {_shown(hi)}" if hi is not None else "") +
                     (f", {p2} in section {k + 1} of {len(sections) + (0 if positive2 else 1)}"
                      if len(sections) > (1 if positive2 else 0) else ""))
-            out.append((text, {p1: s1, p2: _between(a, b)}, (lo, hi, k)))
+            out.append((text, {p1: s1, p2: _between(a, b)}, (lo, hi, k, len(sections))))
     return out
 
 

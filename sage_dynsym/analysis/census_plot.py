@@ -90,23 +90,27 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **opt
     polys = census.bifurcation_set()
     labelled = set()
     for c in cells:
-        lo, hi, k = c.bounds()
+        lo, hi, k, n = c.bounds()
         a = xmin if lo is None else max(xmin, float(lo))
         b = xmax if hi is None else min(xmax, float(hi))
         if a >= b:
             continue
-        ts = [a + (b - a) * (i + 0.5) / POINTS for i in range(POINTS)]
         lower, upper = [], []
-        for t in ts:
+        for i in range(POINTS + 1):
+            t = a + (b - a) * i / POINTS
             roots = [r for r in _sections(polys, p1, p2, t) if not (signs[1] and r <= 0)]
-            below = ([0.0] if signs[1] else [ymin]) + roots
-            above = roots + [ymax]
-            lower.append((t, min(max(below[k] if k < len(below) else ymin, ymin), ymax)))
-            upper.append((t, min(max(above[k] if k < len(above) else ymax, ymin), ymax)))
+            roots = [r for j, r in enumerate(roots) if j == 0 or r - roots[j - 1] > 1e-9]
+            if len(roots) != n - (1 if signs[1] else 0):
+                continue    # the numerical roots miss one here (the picture only)
+            bounds = ([0.0] if signs[1] else [ymin]) + roots + [ymax]
+            lower.append((t, min(max(bounds[k], ymin), ymax)))
+            upper.append((t, min(max(bounds[k + 1], ymin), ymax)))
+        if not lower:
+            continue
         key = (c.count(), c.stable_count())
         label = _label(*key) if key not in labelled else None
         labelled.add(key)
-        G += polygon(lower + upper[::-1], color=colours[key], alpha=0.6,
+        G += polygon(lower + upper[::-1], color=colours[key], alpha=0.7, thickness=0,
                      **({'legend_label': label} if label else {}))
     for f in polys:
         G += implicit_plot(SR(f), (p1, xmin, xmax), (p2, ymin, ymax), color='black')
