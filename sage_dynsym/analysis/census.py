@@ -679,6 +679,9 @@ def _cylinders(polys, p1, p2, positive1, positive2):
     critical = [F.polynomial(y).leading_coefficient()]
     if F.degree(y) > 0:
         critical.append(F.polynomial(y).discriminant())
+    if positive2:
+        # a section crossing the boundary p2 = 0 changes the count of sections
+        critical.append(F.subs({y: 0}))
     critical = [SR(c) for c in critical if not c.is_constant()]
     out = []
     for lo, hi in _intervals(_real_roots(critical, p1, positive1), positive1):

@@ -116,4 +116,5 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **opt
         G += implicit_plot(SR(f), (p1, xmin, xmax), (p2, ymin, ymax), color='black')
     G.axes_labels([str(p1), str(p2)])
     G.set_axes_range(xmin, xmax, ymin, ymax)
+    G.set_legend_options(loc=(1.02, 0.4))     # beside the plane, not over it
     return G
