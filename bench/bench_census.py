@@ -81,7 +81,7 @@ def main():
     if args.quick:
         for value in (0, QQ(1) / 3):
             start = time.time()
-            found = equilibria_at(first[0], dict(VALUES, **{h: value}), first[1],
+            found = equilibria_at(first[0], {**VALUES, h: value}, first[1],
                                   (second[0].subs(VALUES), second[1]))
             exact_time = time.time() - start
             start = time.time()

@@ -118,7 +118,7 @@ def test_linear_function_on_so3_has_four_critical_orientations():
 def test_gyrostat_equilibria_are_orientations(models, h):
     (R1, chart1), (R2, chart2) = models
     p = R1.momenta()[0]
-    values = dict(VALUES, **{p: h})
+    values = {**VALUES, p: h}
     found = equilibria_at(R1, values, chart1, regular=(R2, chart2))
     n, stable, _, undecided = _counts([v for _, v in found])
     direct, minima = critical_orientations(gyrostat_torque(*INERTIA, float(h)))
