@@ -12,7 +12,7 @@ same sample points. The table gives, per cell, both counts and both times.
 
 Target: the whole census within minutes on 2 cores.
 
-Usage: python bench/bench_census.py [--quick] [--executor dask]
+Usage: python bench/bench_census.py [--quick] [--executor process]
 """
 import argparse
 import time
@@ -68,7 +68,8 @@ def direct(h, starts=300):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--quick', action='store_true', help='one sample point only')
-    parser.add_argument('--executor', choices=['none', 'dask'], default='none')
+    parser.add_argument('--executor', choices=['none', 'process'], default='none',
+                        help='solve the sample points in 2 worker processes')
     args = parser.parse_args()
     first, second = gyrostat([(3, 'alpha'), (1, 'beta'), (2, 'gamma')]), \
         gyrostat([(3, 'alpha'), (2, 'beta'), (1, 'gamma')])
@@ -91,9 +92,9 @@ def main():
                   f"direct numerical {ref[0]}, {ref[1]} in {time.time() - start:.2f} s")
         return
     executor = None
-    if args.executor == 'dask':
-        from dask.distributed import Client
-        executor = Client(processes=True, n_workers=2, threads_per_worker=1)
+    if args.executor == 'process':
+        from concurrent.futures import ProcessPoolExecutor
+        executor = ProcessPoolExecutor(max_workers=2)
     start = time.time()
     census = equilibrium_census(first[0], [h], positive=[h], values=VALUES, chart=first[1],
                                 regular=second, executor=executor)
@@ -111,7 +112,7 @@ def main():
               f"{ref[0]:>5}/{ref[1]:<4} {time.time() - start:9.2f}")
     print(f"agreement: {agree} of {len(census.cells())} cells")
     if executor is not None:
-        executor.close()
+        executor.shutdown()
 
 
 if __name__ == '__main__':

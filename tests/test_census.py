@@ -173,3 +173,18 @@ def test_gyrostat_census_against_direct_solve(models):
     assert counts[0] == (24, 4) and counts[-1] == (8, 2)
     assert all(8 <= n <= 24 and 2 <= s <= 4 for n, s in counts)
     assert census.count_at({h: 0}) == (24, 4)
+
+
+def test_census_samples_in_worker_processes():
+    # Sage's PARI is not thread-safe: the samples go to processes (a Dask
+    # worker runs its tasks in a thread, where PARI crashes)
+    from concurrent.futures import ProcessPoolExecutor
+    th, dth, w, g = var('theta dtheta w g')
+    L = Lagrangian(dth**2 / 2 + w**2 * sin(th)**2 / 2 + g * cos(th), [th])
+    here = equilibrium_census(L, [w], positive=[w], values={g: 2})
+    with ProcessPoolExecutor(max_workers=2) as executor:
+        there = equilibrium_census(L, [w], positive=[w], values={g: 2}, executor=executor)
+    # a bead on a hoop of radius 1: tilted equilibria for w^2 > g
+    assert [(c.sample(), c.count(), c.stable_count()) for c in there.cells()] == \
+        [(c.sample(), c.count(), c.stable_count()) for c in here.cells()] == \
+        [({w: 1}, 2, 1), ({w: 2}, 4, 2)]

@@ -724,9 +724,12 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
       model in a chart regular on the singular set of ``chart``; the
       equilibria there, and their stability, are decided in it
     - ``executor`` -- (optional) an object with ``submit(f, *args)``
-      returning futures with ``result()`` (a ``dask.distributed.Client``,
-      a ``concurrent.futures`` executor): the sample points are solved as
-      its tasks; default: in this process
+      returning futures with ``result()`` whose tasks run in the main
+      thread of their process, e.g. a
+      ``concurrent.futures.ProcessPoolExecutor``: the sample points are
+      solved as its tasks; default: in this process. (Sage's PARI is not
+      thread-safe: a ``dask.distributed`` worker, which runs its tasks in a
+      thread, crashes in it.)
 
     OUTPUT: a :class:`Census`
 
