@@ -33,6 +33,8 @@ from .kelvin_chetaev import kelvin_chetaev, StabilityVerdict
 from .damping_limit import small_damping_limit, DampingLimit
 from .spectrum import spectrum_regions
 from .stability import linear_stability, energy_stability
+from .charts import ConfigurationChart, configuration_points
+from .census import equilibrium_census, Census, CensusCell
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, StationaryProblem,
                          solve_stationary, ModifiedRouthLyapunov)

@@ -964,6 +964,24 @@ class StationarySolutions(SolutionList):
         """
         return self._problem.hessian()
 
+    def configuration_points(self, chart=None, families=None):
+        r"""
+        The distinct points of the configuration space where the solutions
+        lie, at numerical values of the parameters: covers of the chart
+        merged, solutions on its singular set kept only if they are
+        equilibria, implicit components' points listed (see
+        :func:`~sage_dynsym.analysis.charts.configuration_points`).
+
+        EXAMPLES: `\cos 2x` has four critical points on the circle::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: [p.embedding() for p in stationary_solutions([cos(2*x)], [x]).configuration_points()]
+            [(-1, 0), (0, -1), (0, 1), (1, 0)]
+        """
+        from .charts import configuration_points
+        return configuration_points(self, chart, families)
+
 
 def solve_stationary(problem):
     r"""

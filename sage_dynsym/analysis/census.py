@@ -1,0 +1,823 @@
+r"""
+A census of equilibria over the parameter space
+
+For which values of the parameters are there how many equilibria, and how
+many of them are stable? :func:`equilibrium_census` answers it exactly for
+the stationary motions of a Lagrangian or Routh function whose stationary
+equations depend on one or two parameters:
+
+1. the *bifurcation set*: the polynomials in the parameters whose zero sets
+   bound the regions where the number of real equilibria is constant. With
+   `W` the amended potential and `F = \nabla W` the stationary equations
+   (in the cosines and sines of the angles, `c_q^2 + s_q^2 = 1`), the
+   number of real solutions can change only where a solution is degenerate:
+   the discriminant variety is the projection of `\{F = 0,\ \det
+   \partial^2 W/\partial q^2 = 0\}` on the parameters, computed by
+   elimination (Singular). Routh's sufficient condition of stability (a
+   definite Hessian of `W`) changes only where that determinant vanishes
+   too, so the same set bounds the stable count;
+2. the *cells*: for one parameter, the open intervals between the real
+   roots (exact, real algebraic numbers) inside the declared signs; for
+   two, the open cells of a cylindrical decomposition (the sections of
+   each bifurcation curve over the intervals between the critical values of
+   its projection), each with a rational sample point;
+3. at each sample point the equilibria are solved exactly, made points of
+   the configuration space (:func:`~sage_dynsym.analysis.charts.configuration_points`:
+   covers of a chart merged, solutions on its singular set kept only if
+   they are equilibria), and the stability of each is decided exactly:
+   ``'stable'`` where `W` has a nondegenerate minimum (Routh's theorem),
+   ``'unstable'`` where the characteristic polynomial has a root with a
+   positive real part, ``'stable in first approximation'`` where all its
+   roots are simple and on the imaginary axis, ``'undecided'`` otherwise
+   (or at a singular point of the chart when no regular chart is given).
+
+The values where only a chart artifact degenerates (solutions on the
+chart's singular set that are not equilibria) are in the bifurcation set
+too; the counts on both sides of them are equal.
+
+EXAMPLES: a bead on a hoop turning at the rate `w` (`g = R = 1`): two
+equilibria below `w^2 = 1`, four above, the bottom stable below and the two
+tilted ones above (Goldstein, *Classical Mechanics*, §2.6)::
+
+    sage: from sage_dynsym import Lagrangian
+    sage: from sage_dynsym.analysis.census import equilibrium_census
+    sage: th, dth, w = var('theta dtheta w')
+    sage: L = Lagrangian(dth^2/2 + w^2*sin(th)^2/2 + cos(th), [th])
+    sage: census = equilibrium_census(L, [w], positive=[w]); census
+    Census of the equilibria over w > 0: bifurcation set [w - 1]
+      0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
+      1 < w (sample w = 2): 4 equilibria, 2 stable
+    sage: census.count_at({w: 3})
+    (4, 2)
+    sage: [c.stable_count(first_approximation=True) for c in census.cells()]
+    [1, 2]
+
+REFERENCES:
+
+- D. Lazard, F. Rouillier, *Solving parametric polynomial systems*, J.
+  Symbolic Comput. 42 (2007) 636--667 (discriminant varieties).
+- G. E. Collins, *Quantifier elimination for real closed fields by
+  cylindrical algebraic decomposition*, LNCS 33 (1975) 134--183.
+- V. V. Sarychev, S. A. Gutnik, *Relative equilibria of a gyrostat
+  satellite*, Cosmic Research 22 (1984) 257--260.
+"""
+from sage.arith.misc import gcd
+from sage.libs.singular.function_factory import ff
+from sage.matrix.constructor import matrix
+from sage.misc.verbose import verbose
+from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.qqbar import AA, QQbar
+from sage.rings.real_mpfi import RealIntervalField
+from sage.rings.rational_field import QQ
+from sage.structure.sage_object import SageObject
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from ..arguments import symbol_arguments
+from ..algebra.translation import Translation
+from .charts import configuration_points, algebraic_value
+from .verdict import STABLE_VERDICTS
+
+
+def _log(message, level=1):
+    verbose(f"equilibrium_census: {message}", level=level)
+
+
+# -- the stationary problem -------------------------------------------------------
+
+def _amended_potential(system):
+    r"""The coordinates and `W = -R|_{\dot q = 0}` of a Lagrangian or Routh function."""
+    from .linear import equations_of_motion
+    from .motion import SecondOrderEquations
+    data = equations_of_motion(system)
+    if not isinstance(data, SecondOrderEquations) or data.function() is None:
+        raise AnalysisError(f"expected a Lagrangian or Routh function, got "
+                            f"{type(system).__name__}; for a mechanical model pass "
+                            "model.lagrangian() (or its routh([...]))",
+                            entry="equilibrium_census")
+    q = list(data.coordinates())
+    return q, -data.function().subs({v: 0 for v in data.velocities()})
+
+
+def discriminant_polynomials(W, coordinates, parameters):
+    r"""
+    The discriminant of the stationary equations of `W` with respect to the
+    coordinates: the generators of the elimination ideal of `\{\nabla W =
+    0,\ \det \partial^2 W/\partial q^2 = 0\}` (in the cosines and sines of
+    the angles) in the parameters, as irreducible factors.
+
+    INPUT:
+
+    - ``W`` -- an expression in the coordinates and the parameters only
+    - ``coordinates``, ``parameters`` -- lists of symbols
+
+    OUTPUT: a list of symbolic polynomials in the parameters (no constants)
+
+    EXAMPLES: `W = x^3/3 - a x` has two critical points for `a > 0`, none
+    for `a < 0`::
+
+        sage: from sage_dynsym.analysis.census import discriminant_polynomials
+        sage: x, a = var('x a')
+        sage: discriminant_polynomials(x^3/3 - a*x, [x], [a])
+        [a]
+
+    TESTS::
+
+        sage: y = var('y')
+        sage: discriminant_polynomials((x - a)^2, [x, y], [a])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: equilibrium_census: the stationary equations are degenerate for all values of a (a family of equilibria); the census counts isolated equilibria only
+    """
+    q = [SR(x) for x in coordinates]
+    H = matrix(SR, [[SR(W).diff(x).diff(y) for y in q] for x in q])
+    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[H.det()])
+    P = T.ring()
+    keep = {str(g) for p in parameters for g in T.generators_of(p)}
+    state = [g for g in P.gens() if str(g) not in keep]
+    determinant = T.numerator(H.det())[0]
+    ideal = P.ideal(T.equations())
+    for d in T.denominators():
+        ideal = ideal.saturation(P.ideal(d))[0]
+    # split first (Singular's factorizing Groebner basis): eliminating from
+    # each part takes milliseconds where the whole ideal can take minutes
+    parts = [P.ideal(list(part)) for part in ff.facstd(ideal)]
+    _log(f"eliminating {len(state)} variables from {len(parts)} parts")
+    factors = []
+    for part in parts:
+        gens = [g for g in (part + P.ideal([determinant])).elimination_ideal(state).gens()
+                if g != 0]
+        if not gens:
+            raise AnalysisError(f"the stationary equations are degenerate for all values of "
+                                f"{', '.join(map(str, parameters))} (a family of equilibria); "
+                                "the census counts isolated equilibria only",
+                                entry="equilibrium_census")
+        # the zero set of the ideal: the factors of the gcd for one parameter;
+        # for two, a curve through it (a finite set of points lies on it)
+        g = gcd(gens) if len(gens) > 1 else gens[0]
+        if g.is_constant():
+            g = gens[0]
+        factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
+                    and -f not in factors]
+    return [T.symbolic(f) for f in factors]
+
+
+# -- the equilibria at one point of the parameter space ----------------------------------
+
+def _is_positive_definite(K):
+    return all(K.matrix_from_rows_and_columns(range(k), range(k)).det() > 0
+               for k in range(1, K.nrows() + 1))
+
+
+def _verdict(point, problem, gyroscopic):
+    r"""The stability of an equilibrium at numerical parameter values, exact."""
+    if point.is_singular():
+        return 'undecided'
+    K = problem.hessian().apply_map(lambda e: algebraic_value(point.value(e), e))
+    M = problem.kinetic
+    M = None if M is None else M.apply_map(lambda e: algebraic_value(point.value(e), e))
+    if _is_positive_definite(K) and (M is None or _is_positive_definite(M)):
+        return 'stable'
+    linear = problem.linear_system(point.value)
+    if linear is None:
+        return 'undecided'
+    z = PolynomialRing(AA, 'z').gen()
+
+    def exact(A):
+        return A.apply_map(lambda e: algebraic_value(e, 'the first approximation'))
+    if linear.order() == 2:
+        Mx, Sx, Wx = exact(linear.M()), exact(linear.S()), exact(linear.W())
+        if gyroscopic and _is_positive_definite(Mx):
+            return _gyroscopic_verdict(Mx, Sx, Wx)
+        poly = (Mx * z**2 + Sx * z + Wx).det()
+    else:
+        J = exact(linear.jacobian())
+        poly = (z * matrix.identity(AA, J.nrows()) - J).det()
+    roots = poly.roots(QQbar)
+    if any(r.real() > 0 for r, _ in roots):
+        return 'unstable'
+    if all(r.real() == 0 and m == 1 for r, m in roots):
+        return 'stable in first approximation'
+    return 'undecided'
+
+
+def _is_gyroscopic(problem):
+    r"""Whether the first approximation has a skew velocity matrix and a
+    symmetric positional one at every point, decided on the symbolic
+    matrices (at a point, equal algebraic numbers given by different
+    expressions would need their minimal polynomials)."""
+    linear = problem.linear_system(lambda e: e)
+    if linear is None or linear.order() != 2:
+        return False
+    S, W = linear.S(), linear.W()
+    return all(SR(e).simplify_full().is_zero()
+               for e in (S + S.transpose()).list() + (W - W.transpose()).list())
+
+
+def _gyroscopic_verdict(M, G, K):
+    r"""
+    The stability of `M\ddot x + G\dot x + Kx = 0` with `G` skew and `M`
+    positive definite (and `K` not positive definite): an odd number of
+    negative eigenvalues of `K` (`\det K < 0`) gives instability whatever
+    the gyroscopic forces (Kelvin--Chetaev); otherwise the characteristic
+    polynomial is `q(\lambda^2)`, and the roots are simple and on the
+    imaginary axis iff those of `q` are real, negative and simple.
+    """
+    n = K.nrows()
+    if K.det() < 0:
+        return 'unstable'
+    for prec in (128, 512):
+        counts = _sturm_counts(M, G, K, prec)
+        if counts is not None:
+            break
+    else:
+        counts = _exact_counts(M, G, K)
+    if counts is None:
+        return 'undecided'
+    negative, positive = counts
+    if negative == n:
+        return 'stable in first approximation'
+    # fewer distinct real roots than the degree (q squarefree), or a positive
+    # one: a root mu not real and negative, so lambda with Re > 0
+    if negative + positive < n or positive:
+        return 'unstable'
+    return 'undecided'
+
+
+def _sturm_counts(M, G, K, prec):
+    r"""
+    The numbers of distinct negative and positive real roots of `q`, where
+    `\det(M z^2 + G z + K) = q(z^2)`, by a Sturm sequence in interval
+    arithmetic of precision ``prec``: exact when every leading coefficient
+    of the sequence and `q(0)` have a certain sign and `q` is squarefree;
+    ``None`` otherwise.
+    """
+    F = RealIntervalField(prec)
+    z = PolynomialRing(F, 'z').gen()
+    p = (M.change_ring(F) * z**2 + G.change_ring(F) * z + K.change_ring(F)).det()
+    n = K.nrows()
+    q = PolynomialRing(F, 'mu')([p[2 * k] for k in range(n + 1)])
+    sequence = [q, q.derivative()]
+    while sequence[-1].degree() > 0:
+        r = -(sequence[-2] % sequence[-1])
+        if r.degree() < 0 or r.leading_coefficient().contains_zero():
+            return None     # its degree is not certain (or q is not squarefree)
+        sequence.append(r)
+    if any(f.leading_coefficient().contains_zero() or f[0].contains_zero() for f in sequence):
+        return None
+
+    def changes(signs):
+        signs = [x for x in signs if x != 0]
+        return sum(1 for a, b in zip(signs, signs[1:]) if a != b)
+
+    def sign(x):
+        return 1 if x > 0 else -1
+    at_minus = changes([sign(f.leading_coefficient()) * (-1) ** f.degree() for f in sequence])
+    at_plus = changes([sign(f.leading_coefficient()) for f in sequence])
+    at_zero = changes([sign(f[0]) for f in sequence])
+    return at_minus - at_zero, at_zero - at_plus
+
+
+def _exact_counts(M, G, K):
+    r"""The numbers of distinct negative and positive real roots of `q`
+    (see :func:`_sturm_counts`), exactly; ``None`` when `q` has a multiple
+    root (a critical case)."""
+    z = PolynomialRing(AA, 'z').gen()
+    p = (M * z**2 + G * z + K).det()
+    n = K.nrows()
+    q = PolynomialRing(AA, 'mu')([p[2 * k] for k in range(n + 1)])
+    roots = q.roots(AA)
+    if any(m > 1 for _, m in roots) or sum(m for _, m in roots) < n and \
+            not q.is_squarefree():
+        return None
+    return sum(1 for r, _ in roots if r < 0), sum(1 for r, _ in roots if r > 0)
+
+
+def equilibria_at(system, values, chart=None, regular=None, positive=()):
+    r"""
+    The equilibria (stationary motions) of a Lagrangian or Routh function at
+    numerical values of its parameters, as distinct points of the
+    configuration space, each with its stability decided exactly.
+
+    INPUT:
+
+    - ``system`` -- a Lagrangian or Routh function
+    - ``values`` -- a dict giving every parameter a rational (or exact) value
+    - ``chart`` -- (optional) the :class:`~sage_dynsym.analysis.charts.ConfigurationChart`
+      of the coordinates (e.g. :func:`~sage_dynsym.mechanics.charts.euler_angles`)
+    - ``regular`` -- (optional) a pair ``(system2, chart2)``: the same model
+      in a chart that is regular on the singular set of ``chart``; the
+      points on that set are decided (existence and stability) there
+    - ``positive`` -- symbols declared positive
+
+    OUTPUT: a list of pairs ``(point, verdict)``, ``point`` a
+    :class:`~sage_dynsym.analysis.charts.ConfigurationPoint`
+
+    EXAMPLES: the pendulum has two equilibria, the lower one stable::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import equilibria_at
+        sage: th, dth, g = var('theta dtheta g')
+        sage: L = Lagrangian(dth^2/2 + g*cos(th), [th])
+        sage: [(p.embedding(), v) for p, v in equilibria_at(L, {g: 1})]
+        [((-1, 0), 'unstable'), ((1, 0), 'stable')]
+    """
+    from .stationary import stationary_motions
+    found = _points(system, values, chart, stationary_motions, positive)
+    if regular is not None and any(p.is_singular() for p, _ in found):
+        other = _points(regular[0], values, regular[1], stationary_motions, positive)
+        found = [first if not first[0].is_singular() else second
+                 for first, second in _matching(found, other)]
+        if any(p.is_singular() for p, _ in found):
+            raise AnalysisError("a point is singular in both charts; give a second chart "
+                                "regular on the singular set of the first (for Euler angles "
+                                "z, x, y, singular where |R[2, 1]| = 1: z, y, x, singular where "
+                                "|R[2, 0]| = 1)", entry="regular")
+    return found
+
+
+def _matching(first, second, precisions=(53, 128, 256, 512, 1024)):
+    r"""
+    The pairs of the same point in two lists of ``(point, verdict)``: both
+    charts give every equilibrium once, so when the embeddings' intervals
+    overlap in exactly one partner for every point, that pairing is the
+    identity (the equal pairs always overlap); exact comparison is the
+    fallback.
+    """
+    if len(first) != len(second):
+        raise AnalysisError(f"the two charts give {len(first)} and {len(second)} equilibria: "
+                            "they are not charts of the same model", entry="regular")
+    for prec in precisions:
+        field = RealIntervalField(prec)
+
+        def box(pv):
+            return [x.interval(field) for x in pv[0].embedding()]
+        boxes = [box(pv) for pv in second]
+        pairs = []
+        for pv in first:
+            b = box(pv)
+            partners = [j for j, c in enumerate(boxes)
+                        if all(x.overlaps(y) for x, y in zip(b, c))]
+            if len(partners) != 1:
+                break
+            pairs.append((pv, second[partners[0]]))
+        else:
+            if len({id(q) for _, q in pairs}) == len(second):
+                return pairs
+    return [(pv, next(q for q in second if q[0].embedding() == pv[0].embedding()))
+            for pv in first]
+
+
+def _points(system, values, chart, stationary_motions, positive):
+    sols = stationary_motions(system.subs(values), positive=positive)
+    families = []
+    points = configuration_points(sols, chart, families)
+    if families:
+        raise AnalysisError(f"at {values} the equilibria form families ({families[0]}); the "
+                            "census counts isolated equilibria: this point of the parameter "
+                            "space is on the bifurcation set", entry="equilibrium_census")
+    problem = sols.stationary_problem()
+    gyroscopic = _is_gyroscopic(problem)
+    return [(p, _verdict(p, problem, gyroscopic)) for p in points]
+
+
+def _counts(verdicts):
+    stable = sum(1 for v in verdicts if v == 'stable')
+    linear = sum(1 for v in verdicts if v in STABLE_VERDICTS)
+    undecided = sum(1 for v in verdicts if v == 'undecided')
+    return len(verdicts), stable, linear, undecided
+
+
+def _count_task(system, values, chart, regular, positive):
+    r"""One sample point's counts (a task: module level, picklable arguments)."""
+    _log(f"solving at {values}")
+    return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
+
+
+# -- cells ----------------------------------------------------------------------------
+
+def _between(a, b):
+    r"""A rational strictly between ``a < b`` (``None`` for no bound), of the
+    smallest denominator, the closest to ``a`` among those."""
+    if a is None and b is None:
+        return QQ(0)
+    if a is None:
+        return QQ((b - 1).ceil())
+    if b is None:
+        return QQ(a.floor() + 1)
+    den = 1
+    while True:
+        n = (a * den).floor() + 1
+        if QQ(n) / den < b:
+            return QQ(n) / den
+        den += 1
+
+
+def _real_roots(polys, x, positive):
+    r"""The distinct real roots in ``x`` of the univariate ``polys``,
+    sorted; with ``positive``, those `> 0` and `0` itself as a bound."""
+    ring = PolynomialRing(QQ, 'z')
+    roots = set()
+    for f in polys:
+        if SR(f).has(x):
+            f = ring(SR(f).coefficients(x, sparse=False))
+            roots.update(r for r, _ in f.roots(AA))
+    if positive:
+        roots = {r for r in roots if r > 0} | {AA(0)}
+    return sorted(roots)
+
+
+def _intervals(roots, positive):
+    bounds = ([] if positive else [None]) + list(roots) + [None]
+    return list(zip(bounds[:-1], bounds[1:]))
+
+
+def _shown(value):
+    r"""A bound as radicals when they are real ones, else as a real algebraic number."""
+    try:
+        text = str(value.radical_expression())
+    except (AttributeError, ValueError, NotImplementedError, TypeError):
+        return str(value)
+    return str(value) if 'I' in text else text
+
+
+class CensusCell(SageObject):
+    r"""
+    A cell of a census: an open region of the parameter space where the
+    numbers of equilibria and of stable ones are constant, with its
+    rational sample point and those numbers there. Created by
+    :func:`equilibrium_census`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import equilibrium_census
+        sage: th, dth, w = var('theta dtheta w')
+        sage: L = Lagrangian(dth^2/2 + w^2*sin(th)^2/2 + cos(th), [th])
+        sage: cell = equilibrium_census(L, [w], positive=[w]).cells()[1]; cell
+        1 < w (sample w = 2): 4 equilibria, 2 stable
+        sage: cell.sample(), cell.count(), cell.stable_count(), cell.undecided_count()
+        ({w: 2}, 4, 2, 0)
+    """
+
+    def __init__(self, description, sample, counts, bounds=None):
+        self._description = description
+        self._sample = sample
+        self._counts = counts
+        self._bounds = bounds
+
+    def _repr_(self):
+        n, stable, linear, undecided = self._counts
+        text = f"{self._description} (sample {', '.join(f'{k} = {v}' for k, v in self._sample.items())}): {n} equilibri{'um' if n == 1 else 'a'}, {stable} stable"
+        if linear > stable:
+            text += f", {linear - stable} more stable in first approximation"
+        if undecided:
+            text += f", {undecided} undecided"
+        return text
+
+    def description(self):
+        r"""The cell as inequalities (text).
+
+        EXAMPLES: see :class:`CensusCell`.
+        """
+        return self._description
+
+    def bounds(self):
+        r"""For one parameter: the pair of bounds of the interval (real
+        algebraic numbers, ``None`` for an infinite end).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: th, dth, w = var('theta dtheta w')
+            sage: L = Lagrangian(dth^2/2 + w^2*sin(th)^2/2 + cos(th), [th])
+            sage: equilibrium_census(L, [w], positive=[w]).cells()[0].bounds()
+            (0, 1)
+        """
+        return self._bounds
+
+    def sample(self):
+        r"""The sample point, a dict of rational values of the parameters.
+
+        EXAMPLES: see :class:`CensusCell`.
+        """
+        return dict(self._sample)
+
+    def count(self):
+        r"""The number of distinct equilibria (points of the configuration space).
+
+        EXAMPLES: see :class:`CensusCell`.
+        """
+        return self._counts[0]
+
+    def stable_count(self, first_approximation=False):
+        r"""
+        The number of equilibria stable in the sense of Lyapunov (Routh's
+        theorem); with ``first_approximation=True`` those stable in first
+        approximation are added.
+
+        EXAMPLES: see :class:`CensusCell`.
+        """
+        return self._counts[2] if first_approximation else self._counts[1]
+
+    def undecided_count(self):
+        r"""The number of equilibria whose stability was not decided.
+
+        EXAMPLES: see :class:`CensusCell`.
+        """
+        return self._counts[3]
+
+
+class Census(SageObject):
+    r"""
+    The census of the equilibria of a system over one or two parameters:
+    its bifurcation set and its cells. Created by :func:`equilibrium_census`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import equilibrium_census
+        sage: th, dth, w = var('theta dtheta w')
+        sage: L = Lagrangian(dth^2/2 + w^2*sin(th)^2/2 + cos(th), [th])
+        sage: census = equilibrium_census(L, [w], positive=[w])
+        sage: census.parameters(), census.bifurcation_set(), census.bifurcation_values()
+        ([w], [w - 1], [1])
+    """
+
+    def __init__(self, parameters, polynomials, cells, task, positive, region=None):
+        self._parameters = parameters
+        self._polynomials = polynomials
+        self._cells = cells
+        self._task = task
+        self._positive = positive
+        self._region = region
+
+    def _repr_(self):
+        where = " and ".join(f"{p} > 0" for p in self._parameters if self._is_positive(p))
+        names = ", ".join(map(str, self._parameters))
+        lines = [f"Census of the equilibria over {where or names}: bifurcation set "
+                 f"{self._polynomials}"]
+        lines += [f"  {c}" for c in self._cells]
+        return "\n".join(lines)
+
+    def _is_positive(self, p):
+        return any(str(p) == str(q) for q in self._positive)
+
+    def parameters(self):
+        r"""The parameters of the census.
+
+        EXAMPLES: see :class:`Census`.
+        """
+        return list(self._parameters)
+
+    def bifurcation_set(self):
+        r"""
+        The polynomials in the parameters whose zero sets bound the cells
+        (irreducible over `\QQ`): where an equilibrium is degenerate, in the
+        chart or in the regular chart.
+
+        EXAMPLES: see :class:`Census`.
+        """
+        return list(self._polynomials)
+
+    def bifurcation_values(self):
+        r"""
+        For a census over one parameter: the bifurcation values inside the
+        declared signs, exact (real algebraic numbers; ``radical_expression()``
+        gives radicals), sorted.
+
+        EXAMPLES: see :class:`Census`.
+
+        TESTS::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: x, dx, a, b = var('x dx a b')
+            sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
+            sage: equilibrium_census(L, [a, b], values=None).bifurcation_values()
+            Traceback (most recent call last):
+            ...
+            AnalysisError: bifurcation_values: the census is over 2 parameters (a, b): its bifurcation set is a set of curves, bifurcation_set() gives their equations
+        """
+        if len(self._parameters) != 1:
+            raise AnalysisError(f"the census is over {len(self._parameters)} parameters "
+                                f"({', '.join(map(str, self._parameters))}): its bifurcation "
+                                "set is a set of curves, bifurcation_set() gives their "
+                                "equations", entry="bifurcation_values")
+        p = self._parameters[0]
+        return [r for r in _real_roots(self._polynomials, p, self._is_positive(p))
+                if r != 0 or any(SR(f).subs({p: 0}).is_zero() for f in self._polynomials)]
+
+    def cells(self):
+        r"""The cells (:class:`CensusCell`), each with a sample point and its counts.
+
+        EXAMPLES: see :class:`Census`.
+        """
+        return list(self._cells)
+
+    def count_at(self, values):
+        r"""
+        The number of equilibria and of stable ones at given values of the
+        parameters (solved there, exactly).
+
+        OUTPUT: a pair ``(count, stable_count)``
+
+        EXAMPLES: see the module documentation.
+        """
+        values = {SR(k) if not isinstance(k, str) else SR.var(k): v for k, v in values.items()}
+        missing = [p for p in self._parameters if all(str(p) != str(k) for k in values)]
+        if missing:
+            raise AnalysisError(f"give a value to {', '.join(map(str, missing))}, e.g. "
+                                f"count_at({{{', '.join(f'{p}: 1' for p in self._parameters)}}})",
+                                entry="count_at")
+        n, stable, _, _ = self._task(values)
+        return n, stable
+
+    def plot(self, **options):
+        r"""
+        The cells of a census over two parameters coloured by the number of
+        equilibria (the legend gives it, with the stable count), with the
+        bifurcation curves in black; over one parameter, the counts as
+        steps.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: x, dx, a, b = var('x dx a b')
+            sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
+            sage: census = equilibrium_census(L, [a, b])
+            sage: census.plot()
+            Graphics object consisting of ... graphics primitives
+        """
+        from .census_plot import census_plot
+        return census_plot(self, self._region, **options)
+
+
+def _cells_one(polys, p, positive, counts):
+    cells = []
+    for lo, hi in _intervals(_real_roots(polys, p, positive), positive):
+        sample = {p: _between(lo, hi)}
+        text = (f"{_shown(lo)} < " if lo is not None else "") + str(p) + \
+            (f" < {_shown(hi)}" if hi is not None else "")
+        cells.append((text, sample, (lo, hi)))
+    return [CensusCell(text, sample, counts(sample), bounds) for text, sample, bounds in cells]
+
+
+def _cylinders(polys, p1, p2, positive1, positive2):
+    r"""Sample points of the open cells of a cylindrical decomposition of
+    the plane adapted to ``polys``: the intervals of ``p1`` between the
+    critical values of the projection, and in each the intervals of ``p2``
+    between the sections."""
+    ring = PolynomialRing(QQ, [str(p1), str(p2)])
+    F = ring(1)
+    for f in polys:
+        F *= ring(SR(f).polynomial(QQ))
+    F = F.radical() if hasattr(F, 'radical') else F
+    y = ring.gen(1)
+    critical = [F.polynomial(y).leading_coefficient()]
+    if F.degree(y) > 0:
+        critical.append(F.polynomial(y).discriminant())
+    if positive2:
+        # a section crossing the boundary p2 = 0 changes the count of sections
+        critical.append(F.subs({y: 0}))
+    critical = [SR(c) for c in critical if not c.is_constant()]
+    out = []
+    for lo, hi in _intervals(_real_roots(critical, p1, positive1), positive1):
+        s1 = _between(lo, hi)
+        over = SR(F.subs({ring.gen(0): s1}))
+        sections = _real_roots([over], p2, positive2) if over.has(p2) else \
+            ([AA(0)] if positive2 else [])
+        for k, (a, b) in enumerate(_intervals(sections, positive2)):
+            text = ((f"{_shown(lo)} < " if lo is not None else "") + str(p1) +
+                    (f" < {_shown(hi)}" if hi is not None else "") +
+                    (f", {p2} in section {k + 1} of {len(sections) + (0 if positive2 else 1)}"
+                     if len(sections) > (1 if positive2 else 0) else ""))
+            out.append((text, {p1: s1, p2: _between(a, b)}, (lo, hi, k, len(sections))))
+    return out
+
+
+def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
+                       regular=None, executor=None):
+    r"""
+    The census of the equilibria (stationary motions) of a Lagrangian or
+    Routh function over one or two parameters: the bifurcation set, the
+    cells of the parameter space where the numbers of equilibria and of
+    stable ones are constant, and those numbers (see the module
+    documentation for the method).
+
+    INPUT:
+
+    - ``system`` -- a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
+      or :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` (a
+      mechanical model's ``lagrangian()``, or its ``routh([...])``)
+    - ``parameters`` -- one or two symbols: the axes of the census
+    - ``positive`` -- symbols declared positive (a parameter declared
+      positive is censused over its positive values only)
+    - ``values`` -- a dict of values for the other symbols; every symbol
+      other than the coordinates, velocities and ``parameters`` needs one
+    - ``chart`` -- (optional) a :class:`~sage_dynsym.analysis.charts.ConfigurationChart`
+      of the coordinates (e.g. :func:`~sage_dynsym.mechanics.charts.euler_angles`):
+      equilibria are counted as points of the configuration space
+    - ``regular`` -- (optional) a pair ``(system2, chart2)``, the same
+      model in a chart regular on the singular set of ``chart``; the
+      equilibria there, and their stability, are decided in it
+    - ``executor`` -- (optional) an object with ``submit(f, *args)``
+      returning futures with ``result()`` whose tasks run in the main
+      thread of their process, e.g. a
+      ``concurrent.futures.ProcessPoolExecutor``: the sample points are
+      solved as its tasks; default: in this process. (Sage's PARI is not
+      thread-safe: a ``dask.distributed`` worker, which runs its tasks in a
+      thread, crashes in it.)
+
+    OUTPUT: a :class:`Census`
+
+    Progress is reported through Sage's ``verbose`` (``set_verbose(1)``).
+
+    EXAMPLES: the cusp: `W = x^4/4 - a x^2/2 + b x` has three equilibria
+    (two stable) inside `4a^3 > 27 b^2`, one outside (Arnold,
+    *Catastrophe Theory*, ch. 1)::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import equilibrium_census
+        sage: x, dx, a, b = var('x dx a b')
+        sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
+        sage: census = equilibrium_census(L, [a, b]); census.bifurcation_set()
+        [4*a^3 - 27*b^2]
+        sage: sorted({(c.count(), c.stable_count()) for c in census.cells()})
+        [(1, 1), (3, 2)]
+        sage: census.count_at({a: 3, b: 1}), census.count_at({a: 1, b: 1})
+        ((3, 2), (1, 1))
+
+    TESTS::
+
+        sage: equilibrium_census(L, [a])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: values: give a value to b (the census is over a), e.g. values={b: 1}
+        sage: equilibrium_census(L, [a, b, x])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: a census is over one or two parameters, got 3 (a, b, x)
+        sage: equilibrium_census(L, [x])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: x is a coordinate of the system, not a parameter; the parameters are a, b
+    """
+    parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    if len(parameters) not in (1, 2):
+        raise AnalysisError(f"a census is over one or two parameters, got {len(parameters)} "
+                            f"({', '.join(map(str, parameters))})", entry="parameters")
+    values = {SR.var(k) if isinstance(k, str) else SR(k): v for k, v in (values or {}).items()}
+    q, W = _amended_potential(system)
+    names = {str(x) for x in q}
+    symbols = sorted((v for v in SR(W).variables() if str(v) not in names), key=str)
+    for p in parameters:
+        if str(p) in names:
+            raise AnalysisError(f"{p} is a coordinate of the system, not a parameter; the "
+                                f"parameters are {', '.join(map(str, symbols))}",
+                                entry="parameters")
+    chosen = {str(p) for p in parameters} | {str(k) for k in values}
+    missing = [s for s in symbols if str(s) not in chosen]
+    if missing:
+        raise AnalysisError(f"give a value to {', '.join(map(str, missing))} (the census is "
+                            f"over {', '.join(map(str, parameters))}), e.g. values="
+                            f"{{{', '.join(f'{s}: 1' for s in missing)}}}", entry="values")
+    fixed = system.subs(values) if values else system
+    signs = [any(str(p) == str(s) for s in positive) for p in parameters]
+    polys = discriminant_polynomials(SR(W).subs(values), q, parameters)
+    if regular is not None:
+        q2, W2 = _amended_potential(regular[0])
+        polys += [f for f in discriminant_polynomials(SR(W2).subs(values), q2, parameters)
+                  if all(not bool(SR(f) - g == 0) for g in polys)]
+    if len(parameters) == 1:
+        # only the factors with a zero inside the declared signs bound cells
+        polys = [f for f in polys if any(r > 0 or not signs[0] for r in
+                                         _real_roots([f], parameters[0], False))]
+    _log(f"bifurcation set {polys}")
+    fixed2 = None if regular is None else \
+        ((regular[0].subs(values) if values else regular[0]), regular[1])
+
+    def task(at):
+        return _count_task(fixed, at, chart, fixed2, positive)
+
+    def counts_of(samples):
+        _log(f"solving at {len(samples)} sample points")
+        if executor is None:
+            return [task(s) for s in samples]
+        futures = [executor.submit(_count_task, fixed, s, chart, fixed2, positive)
+                   for s in samples]
+        return [f.result() for f in futures]
+
+    if len(parameters) == 1:
+        shape = _cells_one(polys, parameters[0], signs[0], lambda s: None)
+        found = counts_of([c.sample() for c in shape])
+        cells = [CensusCell(c.description(), c.sample(), n, c.bounds())
+                 for c, n in zip(shape, found)]
+        return Census(parameters, polys, cells, task, positive)
+    shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
+    found = counts_of([s for _, s, _ in shape])
+    cells = [CensusCell(text, sample, n, bounds) for (text, sample, bounds), n in zip(shape, found)]
+    return Census(parameters, polys, cells, task, positive, region=signs)

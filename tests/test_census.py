@@ -1,0 +1,190 @@
+"""
+The census of equilibria (sage_dynsym.analysis.census, .charts) against
+independent computations.
+
+- Charts: the critical points of a function on SO(3) counted as
+  orientations, against a direct numerical search on the rotation group
+  (SciPy root finding on the torque, from many random starts, in rotation
+  vectors: no Euler angles).
+- The gyrostat satellite on a circular orbit (gravity-gradient torque,
+  rotor along the third principal axis with gyrostatic moment h). Its
+  amended potential is written here from the physics, in direction
+  cosines: with gamma and n the radial and orbit-normal unit vectors in
+  body axes, I_s the carrier's inertia and I = I_s + diag(0, 0, J),
+
+      W = 3/2 w0^2 gamma.I gamma - 1/2 w0^2 n.I_s n - h w0 n_3,
+
+  whose torque for a body rotation eps is
+  3 w0^2 (I gamma) x gamma - w0^2 (I_s n) x n - h w0 e_3 x n.
+  At h = 0: 24 equilibrium orientations, 4 stable (Beletsky; Sarychev);
+  for h along a principal axis: between 8 and 24 equilibria, the stable
+  ones from 4 to 2 (Gutnik and Sarychev).
+"""
+import numpy as np
+import pytest
+from scipy.optimize import root
+from scipy.spatial.transform import Rotation
+
+from sage.all import SR, QQ, var, diagonal_matrix, zero_matrix, cos, sin
+from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField, Lagrangian
+from sage_dynsym.analysis.charts import configuration_points
+from sage_dynsym.analysis.census import equilibria_at, equilibrium_census, _counts
+from sage_dynsym.analysis.stationary import stationary_solutions
+from sage_dynsym.mechanics.charts import euler_angles
+
+
+# -- the independent route: critical points on SO(3) by numerical search ----------
+
+def critical_orientations(torque, starts=300, seed=7):
+    """Distinct rotation matrices where ``torque(R)`` vanishes, and how
+    many are minima (the Hessian d tau / d eps positive definite)."""
+    rng = np.random.default_rng(seed)
+    found = []
+    for R0 in Rotation.random(starts, random_state=rng).as_matrix():
+        sol = root(lambda w: torque(R0 @ Rotation.from_rotvec(w).as_matrix()), np.zeros(3),
+                   tol=1e-13)
+        R = R0 @ Rotation.from_rotvec(sol.x).as_matrix()
+        if np.linalg.norm(torque(R)) < 1e-9 and all(np.linalg.norm(R - S) > 1e-6 for S in found):
+            found.append(R)
+    minima = 0
+    for R in found:
+        eps = 1e-6
+        H = np.array([(torque(R @ Rotation.from_rotvec(eps * e).as_matrix())
+                       - torque(R @ Rotation.from_rotvec(-eps * e).as_matrix())) / (2 * eps)
+                      for e in np.eye(3)])
+        minima += bool(np.all(np.linalg.eigvalsh((H + H.T) / 2) > 1e-7))
+    return found, minima
+
+
+def gyrostat_torque(Is, It, h, w0=1.0):
+    def torque(R):
+        gamma, n = R[0, :], R[2, :]
+        return (3 * w0**2 * np.cross(It @ gamma, gamma) - w0**2 * np.cross(Is @ n, n)
+                - h * w0 * np.cross([0, 0, 1.0], n))
+    return torque
+
+
+# -- the model, as in worksheets/05_gyrostat_satellite.ipynb, with three angles ------
+
+w0, A, B, C, J, r, t, chi = var('w0 A B C J r t chi')
+VALUES = {A: 1, B: 2, C: QQ(5) / 2, w0: 1, J: 1, r: 1}
+INERTIA = (np.diag([1.0, 2.0, 2.5]), np.diag([1.0, 2.0, 3.5]))
+
+
+def gyrostat(sequence):
+    angles = [SR.var(n) for _, n in sequence]
+    orbit = RigidBody('orbital frame', rotations=[(3, w0 * t)], mass=0, inertia=zero_matrix(3))
+    sat = RigidBody('satellite', parent=1, rotations=[(a, q) for (a, _), q in zip(sequence, angles)],
+                    mass=1, inertia=diagonal_matrix([A, B, C]))
+    rotor = RigidBody('rotor', parent=2, rotations=[(3, chi)], mass=0,
+                      inertia=diagonal_matrix([0, 0, J]))
+    S = MechanicalSystem([orbit, sat, rotor], angles + [chi],
+                         force_function=NewtonianField(w0**2 * r**3, r, [cos(w0 * t), sin(w0 * t), 0]))
+    L = Lagrangian(S.lagrangian().expr().simplify_trig().expand(), angles + [chi])
+    R = L.routh([chi])
+    return R, euler_angles(list(zip([a for a, _ in sequence], angles)))
+
+
+@pytest.fixture(scope='module')
+def models():
+    first = gyrostat([(3, 'alpha'), (1, 'beta'), (2, 'gamma')])
+    second = gyrostat([(3, 'alpha'), (2, 'beta'), (1, 'gamma')])
+    return first, second
+
+
+# -- charts ---------------------------------------------------------------------------
+
+def test_linear_function_on_so3_has_four_critical_orientations():
+    a, b, c = var('a b c')
+    chart = euler_angles([(3, a), (1, b), (2, c)])
+    exact = [[1, 0, 0], [0, 2, 0], [0, QQ(1) / 3, 3]]
+    M = np.array(exact, dtype=float)
+    R = chart.rotation_matrix()
+    W = sum(exact[i][j] * R[i, j] for i in range(3) for j in range(3))
+    points = configuration_points(stationary_solutions([W], [a, b, c]), chart)
+    # dW along R exp(eps^) is tr(M^T R eps^): the torque is vee(R^T M - M^T R)
+    def torque(Rn):
+        S = Rn.T @ M - M.T @ Rn
+        return np.array([S[2, 1], S[0, 2], S[1, 0]])
+    found, _ = critical_orientations(torque, starts=100)
+    assert len(points) == len(found) == 4
+    numeric = sorted(tuple(np.round(np.array([float(x) for x in p.embedding()]), 8)) for p in points)
+    direct = sorted(tuple(np.round(Rn.flatten(), 8)) for Rn in found)
+    assert np.allclose(numeric, direct, atol=1e-7)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize('h', [0, QQ(1) / 10])
+def test_gyrostat_equilibria_are_orientations(models, h):
+    (R1, chart1), (R2, chart2) = models
+    p = R1.momenta()[0]
+    values = {**VALUES, p: h}
+    found = equilibria_at(R1, values, chart1, regular=(R2, chart2))
+    n, stable, _, undecided = _counts([v for _, v in found])
+    direct, minima = critical_orientations(gyrostat_torque(*INERTIA, float(h)))
+    assert (n, stable, undecided) == (len(direct), minima, 0)
+    if h == 0:
+        assert (n, stable) == (24, 4)      # Beletsky; Sarychev
+
+
+# -- census ---------------------------------------------------------------------------
+
+def cusp_counts(a, b):
+    """Real roots of W'(x) = x^3 - a x + b, and the minima among them (NumPy)."""
+    roots = [z.real for z in np.roots([1, 0, -a, b]) if abs(z.imag) < 1e-9]
+    return len(roots), sum(1 for x in roots if 3 * x**2 - a > 0)
+
+
+def test_cusp_census_against_numpy():
+    x, dx, a, b = var('x dx a b')
+    census = equilibrium_census(Lagrangian(dx**2 / 2 - x**4 / 4 + a * x**2 / 2 - b * x, [x]), [a, b])
+    # the discriminant of x^3 - a x + b (Arnold, Catastrophe Theory, ch. 1)
+    assert [SR(f) for f in census.bifurcation_set()] == [4 * a**3 - 27 * b**2]
+    for cell in census.cells():
+        s = cell.sample()
+        assert (cell.count(), cell.stable_count()) == cusp_counts(float(s[a]), float(s[b]))
+    rng = np.random.default_rng(3)
+    for a0, b0 in rng.integers(-6, 7, size=(4, 2)):
+        if 4 * a0**3 != 27 * b0**2:
+            assert census.count_at({a: int(a0), b: int(b0)}) == cusp_counts(a0, b0)
+
+
+def test_hoop_census_bifurcation_value():
+    th, dth, w, g = var('theta dtheta w g')
+    # bead on a hoop (R = 1) turning at w: tilted equilibria for w^2 > g
+    L = Lagrangian(dth**2 / 2 + w**2 * sin(th)**2 / 2 + g * cos(th), [th])
+    census = equilibrium_census(L, [w], positive=[w], values={g: 2})
+    assert [v**2 for v in census.bifurcation_values()] == [2]
+    assert [(c.count(), c.stable_count()) for c in census.cells()] == [(2, 1), (4, 2)]
+
+
+@pytest.mark.slow
+def test_gyrostat_census_against_direct_solve(models):
+    (R1, chart1), (R2, chart2) = models
+    h = R1.momenta()[0]
+    census = equilibrium_census(R1, [h], positive=[h], values=VALUES, chart=chart1,
+                                regular=(R2, chart2))
+    counts = []
+    for cell in census.cells():
+        direct, minima = critical_orientations(gyrostat_torque(*INERTIA, float(cell.sample()[h])))
+        assert (cell.count(), cell.stable_count()) == (len(direct), minima), cell
+        counts.append((cell.count(), cell.stable_count()))
+    # Gutnik and Sarychev: no fewer than 8, no more than 24; stable from 4 to 2
+    assert counts[0] == (24, 4) and counts[-1] == (8, 2)
+    assert all(8 <= n <= 24 and 2 <= s <= 4 for n, s in counts)
+    assert census.count_at({h: 0}) == (24, 4)
+
+
+def test_census_samples_in_worker_processes():
+    # Sage's PARI is not thread-safe: the samples go to processes (a Dask
+    # worker runs its tasks in a thread, where PARI crashes)
+    from concurrent.futures import ProcessPoolExecutor
+    th, dth, w, g = var('theta dtheta w g')
+    L = Lagrangian(dth**2 / 2 + w**2 * sin(th)**2 / 2 + g * cos(th), [th])
+    here = equilibrium_census(L, [w], positive=[w], values={g: 2})
+    with ProcessPoolExecutor(max_workers=2) as executor:
+        there = equilibrium_census(L, [w], positive=[w], values={g: 2}, executor=executor)
+    # a bead on a hoop of radius 1: tilted equilibria for w^2 > g
+    assert [(c.sample(), c.count(), c.stable_count()) for c in there.cells()] == \
+        [(c.sample(), c.count(), c.stable_count()) for c in here.cells()] == \
+        [({w: 1}, 2, 1), ({w: 2}, 4, 2)]
