@@ -68,6 +68,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
+from ..arguments import expression_list, model_argument
 from ..algebra.translation import expand_angles
 
 
@@ -107,8 +108,10 @@ class ConfigurationChart(SageObject):
     """
 
     def __init__(self, coordinates, embedding, velocity_matrix=None, sheets=1):
-        self._coordinates = [SR(q) for q in coordinates]
-        self._embedding = [SR(e) for e in embedding]
+        self._coordinates = expression_list(coordinates, 'coordinates', AnalysisError,
+                                            entry="ConfigurationChart", names=True)
+        self._embedding = expression_list(embedding, 'embedding', AnalysisError,
+                                          entry="ConfigurationChart")
         n = len(self._coordinates)
         E = matrix.identity(SR, n) if velocity_matrix is None else matrix(SR, velocity_matrix)
         if E.nrows() != n or E.ncols() != n:
@@ -370,6 +373,9 @@ def configuration_points(solutions, chart=None, families=None):
         ...
         AnalysisError: configuration_points: the value 1/2*k of x is not a real algebraic number that Sage can compare exactly; give numerical values to every parameter (values=...)
     """
+    model_argument(solutions, ['variables', 'stationary_problem'], 'solutions',
+                   "the stationary solutions of a model",
+                   AnalysisError, hint="e.g. configuration_points(stationary_motions(L), chart)")
     variables = solutions.variables()
     translation = None
     for s in solutions:

@@ -30,7 +30,7 @@ REFERENCES:
 from sage.matrix.constructor import matrix, vector
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError
+from ..errors import ModelError, brief
 from ..analysis.charts import ConfigurationChart
 from .frames import rotation_matrix
 
@@ -103,6 +103,10 @@ def euler_angles(rotations):
         ...
         ModelError: rotations: a chart of SO(3) needs three rotations, got 2
     """
+    if not isinstance(rotations, (list, tuple)) or not all(
+            isinstance(r, (list, tuple)) and len(r) == 2 for r in rotations):
+        raise ModelError(f"expected three rotations [(axis, angle), ...], got {brief(rotations)}",
+                         entry="rotations")
     rotations = list(rotations)
     if len(rotations) != 3:
         raise ModelError(f"a chart of SO(3) needs three rotations, got {len(rotations)}",
