@@ -54,9 +54,9 @@ The pendulum `H = p^2/2 + 1 - \cos q` (`I - I^2/16 - I^3/256`)::
 
 REFERENCES:
 
-- [Deprit1969]_ A. Deprit, Canonical transformations depending on a small
+- A. Deprit, Canonical transformations depending on a small
   parameter, Celestial Mechanics 1 (1969) 12--30.
-- [MeyerHallOffin2009]_ K. R. Meyer, G. R. Hall, D. Offin, Introduction to
+- K. R. Meyer, G. R. Hall, D. Offin, Introduction to
   Hamiltonian Dynamical Systems and the N-Body Problem, 2nd ed., Springer
   2009, chapters 10 and 13.
 """
@@ -371,8 +371,10 @@ class FormalArithmetic(SageObject):
 
     @cached_method
     def exact_lambdas(self):
-        r"""The `\lambda_k` as algebraic numbers (the root nearest to each
-        numeric one)."""
+        r"""
+        The `\lambda_k` as algebraic numbers (the root nearest to each
+        numeric one).
+        """
         try:
             point = [QQbar(self.values[g]) for g in _names(self.H.base_ring())]
         except (TypeError, ValueError):

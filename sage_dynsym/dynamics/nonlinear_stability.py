@@ -40,12 +40,12 @@ EXAMPLES: the pendulum at its lower position (a minimum of the energy)::
 
 REFERENCES:
 
-- [Markeev1978]_ A. P. Markeev, Libration points in celestial mechanics
+- A. P. Markeev, Libration points in celestial mechanics
   and space dynamics, Nauka, Moscow 1978.
-- [ArnoldKozlovNeishtadt2006]_ V. I. Arnold, V. V. Kozlov, A. I.
+- V. I. Arnold, V. V. Kozlov, A. I.
   Neishtadt, Mathematical aspects of classical and celestial mechanics,
   3rd ed., Springer 2006, sections 7.3 and 8.3.
-- [MeyerHallOffin2009]_ (see :mod:`~sage_dynsym.analysis.normal_forms`).
+- K. R. Meyer, G. R. Hall, D. Offin (see :mod:`~sage_dynsym.analysis.normal_forms`).
 """
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.qqbar import QQbar
