@@ -23,12 +23,10 @@ layer importing only the ones below it:
 
 The modules of earlier versions (``sage_dynsym.lagrangian``,
 ``sage_dynsym.mechanical_system``, ``sage_dynsym.analysis.solving``, ...)
-remain importable under their old names.
+remain importable under their old names, as deprecated aliases: each
+warns (``DeprecationWarning``) and gives the module at its new place.
 """
 import importlib
-import importlib.abc
-import importlib.util
-import sys
 
 #: The public names and the module each comes from. They are imported on
 #: first use (PEP 562), so that ``import sage_dynsym`` and the command
@@ -76,37 +74,6 @@ _SOURCE = {name: module for module, names in _PUBLIC.items() for name in names}
 #: The public names of the package (its subpackages are public too).
 __all__ = [name for names in _PUBLIC.values() for name in names]
 
-#: Earlier module names and where they live now.
-_MOVED = {
-    'names': 'symbols',
-    'expressions': 'io.expressions',
-    'trig': 'algebra.trigonometric',
-    'lagrangian': 'dynamics.lagrangian',
-    'routh': 'dynamics.lagrangian',
-    'natural_equations': 'dynamics.natural_equations',
-    'hamiltonian': 'dynamics.hamiltonian',
-    'dirac': 'dynamics.dirac',
-    'frames': 'mechanics.frames',
-    'rigid_body': 'mechanics.rigid_body',
-    'force_functions': 'mechanics.force_functions',
-    'kinematics': 'mechanics.kinematics',
-    'mechanical_system': 'mechanics.system',
-    'circuits.inductance': 'circuits.elements.windings',
-    'analysis._polynomials': 'algebra.polynomials',
-    'analysis.conditions': 'algebra.conditions',
-    'analysis.decomposition': 'algebra.decomposition',
-    'analysis.determinants': 'algebra.determinants',
-    'analysis.quantifier_elimination': 'algebra.quantifier_elimination',
-    'analysis.regions': 'algebra.regions',
-    'analysis.size': 'algebra.size',
-    'analysis.solving': 'algebra.solving',
-    'analysis.translation': 'algebra.translation',
-    'analysis.trig_linear': 'algebra.trig_linear',
-    'analysis.trigonometric': 'algebra.trigonometric',
-    'lie._polynomials': 'algebra.polynomial_spaces',
-}
-
-
 def __getattr__(name):
     if name not in _SOURCE:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
@@ -121,23 +88,3 @@ def __getattr__(name):
 def __dir__():
     return sorted(set(globals()) | set(__all__))
 
-
-class _MovedModules(importlib.abc.MetaPathFinder, importlib.abc.Loader):
-    r"""Imports an earlier module name (``sage_dynsym.lagrangian``) as the
-    module that lives at its new place, the same module object."""
-
-    def find_spec(self, fullname, path=None, target=None):
-        old = fullname.partition(__name__ + '.')[2]
-        if fullname.startswith(__name__ + '.') and old in _MOVED:
-            return importlib.util.spec_from_loader(fullname, self)
-        return None
-
-    def create_module(self, module_spec):
-        return importlib.import_module(f"{__name__}.{_MOVED[module_spec.name.partition('.')[2]]}")
-
-    def exec_module(self, module):
-        pass
-
-
-if not any(isinstance(f, _MovedModules) for f in sys.meta_path):
-    sys.meta_path.append(_MovedModules())

@@ -19,8 +19,12 @@ def _start():
     import sage_dynsym
     from sage.calculus.calculus import maxima
 
+    from deprecated_aliases import DEPRECATED_ALIASES
+
     for info in pkgutil.walk_packages(sage_dynsym.__path__, 'sage_dynsym.'):
-        importlib.import_module(info.name)
+        # a deprecated alias would only warn: its module is imported anyway
+        if info.name not in DEPRECATED_ALIASES:
+            importlib.import_module(info.name)
     maxima.eval('1+1')
 
 

@@ -1,18 +1,35 @@
 r"""
-The exact algebra moved from ``sage_dynsym.analysis`` (and ``lie._polynomials``)
-to ``sage_dynsym.algebra``: every earlier module path still imports, as the
-same module object, with the names it had; the renamed method keeps its old
-name.
+Modules moved (the exact algebra from ``sage_dynsym.analysis`` and
+``lie._polynomials`` to ``sage_dynsym.algebra``, the top-level modules into
+their layers): every earlier module path still imports, warns with a
+``DeprecationWarning`` naming the new module, and is the same module object,
+with the names it had; the renamed method keeps its old name.
 """
 import importlib
+import sys
 
 import pytest
 
 import sage.all  # noqa: F401
-import sage_dynsym
 
-#: (old module, new module) of the exact algebra, as they were released.
+from deprecated_aliases import DEPRECATED_ALIASES
+
+#: (old module, new module), as they were released.
 MOVED = [
+    ("names", "symbols"),
+    ("expressions", "io.expressions"),
+    ("trig", "algebra.trigonometric"),
+    ("lagrangian", "dynamics.lagrangian"),
+    ("routh", "dynamics.lagrangian"),
+    ("natural_equations", "dynamics.natural_equations"),
+    ("hamiltonian", "dynamics.hamiltonian"),
+    ("dirac", "dynamics.dirac"),
+    ("frames", "mechanics.frames"),
+    ("rigid_body", "mechanics.rigid_body"),
+    ("force_functions", "mechanics.force_functions"),
+    ("kinematics", "mechanics.kinematics"),
+    ("mechanical_system", "mechanics.system"),
+    ("circuits.inductance", "circuits.elements.windings"),
     ("analysis._polynomials", "algebra.polynomials"),
     ("analysis.conditions", "algebra.conditions"),
     ("analysis.decomposition", "algebra.decomposition"),
@@ -25,8 +42,18 @@ MOVED = [
     ("analysis.trig_linear", "algebra.trig_linear"),
     ("analysis.trigonometric", "algebra.trigonometric"),
     ("lie._polynomials", "algebra.polynomial_spaces"),
-    ("trig", "algebra.trigonometric"),
 ]
+
+
+def import_old(old):
+    r"""Import ``sage_dynsym.<old>`` afresh (the warning comes at the first
+    import of a process only) and return the module and the warnings."""
+    name = f"sage_dynsym.{old}"
+    sys.modules.pop(name, None)
+    with pytest.warns(DeprecationWarning) as caught:
+        __import__(name)        # as the import statement does (no importlib frame)
+    return sys.modules[name], caught
+
 
 #: Names imported from the earlier paths (by the documentation, worksheets
 #: and the package's own earlier modules).
@@ -58,25 +85,47 @@ OLD_IMPORTS = [
 
 
 @pytest.mark.parametrize("old, new", MOVED)
-def test_an_earlier_path_is_the_same_module(old, new):
-    module = importlib.import_module(f"sage_dynsym.{old}")
+def test_an_earlier_path_warns_and_is_the_same_module(old, new):
+    module, caught = import_old(old)
     assert module is importlib.import_module(f"sage_dynsym.{new}")
     package, _, child = f"sage_dynsym.{old}".rpartition(".")
     assert getattr(importlib.import_module(package), child) is module
+    ours = [w for w in caught if w.category is DeprecationWarning
+            and str(w.message).startswith(f"sage_dynsym.{old} is deprecated")]
+    assert len(ours) == 1 and f"import sage_dynsym.{new} instead" in str(ours[0].message)
+    # the warning points at the import, not at the alias or at importlib
+    assert ours[0].filename == __file__
 
 
 @pytest.mark.parametrize("old, names", OLD_IMPORTS)
 def test_the_earlier_names_import(old, names):
-    module = importlib.import_module(f"sage_dynsym.{old}")
+    if f"sage_dynsym.{old}" in DEPRECATED_ALIASES:
+        module, _ = import_old(old)
+    else:
+        module = importlib.import_module(f"sage_dynsym.{old}")
     missing = [n for n in names if not hasattr(module, n)]
     assert not missing
 
 
 def test_the_moved_table_is_the_one_of_the_package():
-    # every move listed here is served by the package, and no other move of
-    # the exact algebra is
-    served = {(k, v) for k, v in sage_dynsym._MOVED.items() if v.startswith("algebra.")}
-    assert served == set(MOVED)
+    # every move listed here has its alias module, and there is no other alias
+    assert DEPRECATED_ALIASES == {f"sage_dynsym.{old}" for old, _ in MOVED}
+
+
+def test_the_package_imports_no_earlier_name():
+    # the package's own modules import the new names: importing all of them
+    # with deprecation warnings as errors, in a fresh process, succeeds
+    import subprocess
+    code = ("import importlib, pkgutil, warnings, sage.all, sage_dynsym\n"
+            "warnings.filterwarnings('error', category=DeprecationWarning,"
+            " module='sage_dynsym')\n"
+            "aliases = set(%r)\n"
+            "for info in pkgutil.walk_packages(sage_dynsym.__path__, 'sage_dynsym.'):\n"
+            "    if info.name not in aliases:\n"
+            "        importlib.import_module(info.name)\n") % sorted(DEPRECATED_ALIASES)
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300)
+    assert run.returncode == 0, run.stderr[-3000:]
 
 
 def test_the_lyapunov_function_keeps_its_one_letter_name():

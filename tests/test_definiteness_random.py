@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from sage.all import SR, QQ, var, matrix
 
-from sage_dynsym.analysis.conditions import holds
+from sage_dynsym.algebra.conditions import holds
 from sage_dynsym.analysis.quadratic_forms import definiteness_conditions, sylvester_conditions
 
 a, b, c = var('a b c')

@@ -6,6 +6,8 @@ not silently missing from the documentation."""
 import re
 from pathlib import Path
 
+from deprecated_aliases import is_deprecated_alias
+
 ROOT = Path(__file__).resolve().parents[1]
 DOC = ROOT / "doc"
 #: the entries of an ``autosummary`` table: indented dotted names under the directive
@@ -19,7 +21,9 @@ def _modules():
         package = parts[-1] == "__init__"
         if package:
             parts.pop()
-        if any(p.startswith("_") and p != "__main__" for p in parts[1:]):
+        # a deprecated alias is documented by the module it gives
+        if any(p.startswith("_") and p != "__main__" for p in parts[1:]) \
+                or is_deprecated_alias(path):
             continue
         yield ".".join(parts), package
 

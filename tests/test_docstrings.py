@@ -8,6 +8,8 @@ import re
 
 import sage_dynsym
 
+from deprecated_aliases import DEPRECATED_ALIASES
+
 #: Methods every class gets from Python or Sage: not the package's to document.
 INHERITED = {"dump", "dumps", "save", "rename", "reset_name", "category", "db", "parent",
              "version", "plot"}
@@ -15,8 +17,9 @@ INHERITED = {"dump", "dumps", "save", "rename", "reset_name", "category", "db", 
 
 def package_modules():
     for info in pkgutil.walk_packages(sage_dynsym.__path__, prefix="sage_dynsym."):
-        if info.name.endswith("__main__") or any(part.startswith("_")
-                                                 for part in info.name.split(".")[1:]):
+        # a deprecated alias warns and is the module it names, checked there
+        if info.name.endswith("__main__") or info.name in DEPRECATED_ALIASES or any(
+                part.startswith("_") for part in info.name.split(".")[1:]):
             continue
         yield importlib.import_module(info.name)
 

@@ -17,9 +17,9 @@ import pytest
 from sage.all import (SR, QQ, var, sqrt, sin, cos, matrix, function, diff, identity_matrix)
 
 from sage_dynsym import Lagrangian
-from sage_dynsym.analysis.conditions import holds, region_holds
+from sage_dynsym.algebra.conditions import holds, region_holds
 from sage_dynsym.analysis.linear import LinearSystem, linearize
-from sage_dynsym.analysis.solving import solve_exactly
+from sage_dynsym.algebra.solving import solve_exactly
 from sage_dynsym.analysis.stationary import stationary_solutions
 from sage_dynsym.errors import AnalysisError, DynSymError
 

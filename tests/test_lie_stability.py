@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 from sage.all import SR, var, vector
 
-from sage_dynsym.analysis.conditions import region_holds
+from sage_dynsym.algebra.conditions import region_holds
 from sage_dynsym.lie import LiePoissonSystem
 
 M = list(var('M1 M2 M3'))

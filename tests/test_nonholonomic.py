@@ -27,7 +27,7 @@ from sage.all import SR, QQ, CDF, cos, sin
 
 from sage_dynsym import linearize, load, save, DynSymError
 from sage_dynsym.analysis.operating_point import OperatingPoint
-from sage_dynsym.analysis.trigonometric import trig_rational_simplify
+from sage_dynsym.algebra.trigonometric import trig_rational_simplify
 from sage_dynsym.description import model_from_dict
 from sage_dynsym.symbols import acceleration
 

@@ -22,8 +22,8 @@ from conftest import slow_except
 from scipy.optimize import brentq, minimize
 from sage.all import SR, QQ, var, matrix
 
-import sage_dynsym.analysis.quantifier_elimination as qe
-from sage_dynsym.analysis.conditions import region_holds
+import sage_dynsym.algebra.quantifier_elimination as qe
+from sage_dynsym.algebra.conditions import region_holds
 from sage_dynsym.analysis.stationary import stationary_solutions
 
 a = var('a')

@@ -15,7 +15,7 @@ import pytest
 from sage.all import SR, QQ, var, sin, cos
 
 from sage_dynsym import Lagrangian, load
-from sage_dynsym.analysis.conditions import region_holds, holds
+from sage_dynsym.algebra.conditions import region_holds, holds
 from sage_dynsym.analysis.stationary import stationary_solutions, stationary_motions
 
 

@@ -17,7 +17,7 @@ from sage.all import QQ, SR, RealField, ComplexField, PolynomialRing, cos, sin, 
 
 from sage_dynsym import load, linearize, hurwitz_conditions, LinearSystem
 from sage_dynsym.description import example_path
-from sage_dynsym.analysis.trigonometric import trig_rational_simplify
+from sage_dynsym.algebra.trigonometric import trig_rational_simplify
 
 def _q(text):
     # a decimal of Table 1, exactly
