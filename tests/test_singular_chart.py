@@ -80,3 +80,16 @@ def test_near_singular_attitude_integrates(solver):
     assert np.all(np.isfinite(solution.y))
     energies = [_energy(solution.y[:, i]) for i in range(solution.y.shape[1])]
     assert max(abs(e - energies[0]) for e in energies) < 1e-7 * energies[0]
+
+
+@pytest.mark.parametrize('method', ['DOP853', 'Radau'])
+def test_simulate_from_a_singular_attitude_refused(method):
+    from sage_dynsym import MechanicalSystem, RigidBody
+    x, y, z, psi, theta, phi = var('x y z psi theta phi')
+    base = RigidBody('base', joint=[x, y, z], rotations=[(3, psi), (2, theta), (1, phi)],
+                     mass=MASS, inertia=diagonal_matrix(list(INERTIA)))
+    S = MechanicalSystem([base], [x, y, z, psi, theta, phi])
+    variables = S.numerical_rhs({}).variables()
+    initial = dict(zip(variables, _state(-math.pi / 2)))
+    with pytest.raises(AnalysisError, match=r"body 'base' is singular at theta = -pi/2"):
+        S.simulate({}, initial, 1, method=method)
