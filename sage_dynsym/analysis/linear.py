@@ -47,7 +47,7 @@ A pendulum with a damper, from its Lagrangian::
     sage: linearize(L, {phi: 1})
     Traceback (most recent call last):
     ...
-    AnalysisError: linearize: the point {phi: 1} is not an equilibrium: equation 0 gives g*l*m*sin(1) != 0
+    AnalysisError: linearize: the point {phi: 1} is not an equilibrium: equation 0 gives g*l*m*sin(1) != 0; for the linearization at any state numerically, give the parameters' values: linearize(system, state, values={parameter: number})
 """
 from sage.matrix.constructor import matrix, identity_matrix
 from sage.structure.sage_object import SageObject
@@ -117,7 +117,9 @@ def _check_equilibrium(values, point):
     for i, v in enumerate(values):
         if not _is_zero(v):
             raise AnalysisError(f"the point {_shown(point)} is not an equilibrium: "
-                                f"equation {i} gives {_tidy(v)} != 0",
+                                f"equation {i} gives {_tidy(v)} != 0; for the "
+                                f"linearization at any state numerically, give the parameters' "
+                                f"values: linearize(system, state, values={{parameter: number}})",
                                 entry="linearize")
 
 
@@ -680,7 +682,8 @@ class LinearSystem(SageObject):
         return result
 
 
-def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, speeds=None):
+def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, speeds=None,
+              values=None):
     r"""
     The first-approximation system around an equilibrium, or around a
     steady motion (an operating point).
@@ -707,11 +710,20 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
       with constraints, holonomic or on the velocities (rolling wheels), see
       :mod:`~sage_dynsym.analysis.steady`
     - ``speeds`` -- (optional, with ``coordinates``) the independent speeds
+    - ``values`` -- (optional) dict ``{parameter: number}``: linearize
+      numerically at any state ``at`` (a dict over the coordinates and
+      velocities, or a sequence in the order `x = (q, \dot q)`), not only
+      at equilibria, through the compiled Jacobian of the model's
+      right-hand side (a model with ``numerical_linearization``, e.g. a
+      :class:`~sage_dynsym.mechanics.system.MechanicalSystem`; the same as
+      ``system.numerical_linearization(values, at)``)
 
     OUTPUT: a :class:`LinearSystem`; second-order for a Lagrangian, else
-    first-order
+    first-order. With ``values``: the matrix `A` over ``RDF`` of
+    `\dot x = A x`, `x` the deviation of the state from ``at``
 
-    Raises :class:`AnalysisError` if the point is not an equilibrium.
+    Raises :class:`AnalysisError` if the point is not an equilibrium
+    (without ``values``).
 
     EXAMPLES: see the module documentation, and Example 4 in
     :mod:`sage_dynsym.analysis.tutorial`. A first-order system::
@@ -724,9 +736,31 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
         sage: linearize([y, -sin(x) - a*y], {x: 0, y: 1}, [x, y])
         Traceback (most recent call last):
         ...
-        AnalysisError: linearize: the point {x: 0, y: 1} is not an equilibrium: equation 0 gives 1 != 0
+        AnalysisError: linearize: the point {x: 0, y: 1} is not an equilibrium: equation 0 gives 1 != 0; for the linearization at any state numerically, give the parameters' values: linearize(system, state, values={parameter: number})
+
+    At any state numerically, with the parameters' values (a pendulum,
+    `\ddot\varphi = -(g/l)\sin\varphi`, moving through `\varphi = \pi/3`:
+    `\partial\ddot\varphi/\partial\varphi = -(g/l)\cos\varphi`)::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+        sage: phi, m, l, g = var('phi m l g')
+        sage: P = MechanicalSystem([RigidBody('rod', rotations=[(1, phi)], mass=m,
+        ....:                      mass_center=[0, 0, -l], inertia=diagonal_matrix([m*l^2, m*l^2, 0]))],
+        ....:                      [phi], force_function=UniformGravity([0, 0, -g]))
+        sage: A = linearize(P, {phi: pi/3, 'dphi': 1}, values={m: 1, l: 2, g: 9.81})
+        sage: A.parent(), A[0, 1], bool(abs(A[1, 0] + 9.81*cos(pi/3)/2) < 1e-14)
+        (Full MatrixSpace of 2 by 2 dense matrices over Real Double Field, 1.0, True)
 
     TESTS::
+
+        sage: linearize([y, x], {x: 1, y: 0}, [x, y], values={})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: values: linearize(..., values=...) linearizes a model with a compiled Jacobian (a mechanical system), got [y, x]; without values, linearize about an equilibrium symbolically
+        sage: linearize(P, {phi: 1, 'dphi': 0}, values=[1, 2, 3])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: values: expected the parameters' values as a dict {parameter: number}, got [1, 2, 3]
 
         sage: linearize([y, x], {x: 0}, [x, y])
         Traceback (most recent call last):
@@ -750,6 +784,8 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
         AnalysisError: linearize: the point {theta: 0} is a singularity of the coordinates: a denominator of the equations vanishes at theta = 0 (the chart degenerates there, as Euler angles do at theta = 0); linearize in a regular chart instead (e.g. other angles for the axis)
     """
     from .operating_point import OperatingPoint
+    if values is not None:
+        return _linearize_numerically(system, at, values)
     data = _record(system)
     if coordinates is not None or speeds is not None or isinstance(at, OperatingPoint) or (
             isinstance(data, SecondOrderEquations) and data.velocity_constraints()):
@@ -783,6 +819,20 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
         raise AnalysisError("a list of right-hand sides needs the list of "
                             "variables", entry="linearize")
     return _linearize_first_order(list(system), at, variables, lhs_matrix)
+
+
+def _linearize_numerically(system, at, values):
+    # the model's own compiled Jacobian (duck typing: the analysis layer
+    # does not know the mechanical models)
+    if not hasattr(system, 'numerical_linearization'):
+        raise AnalysisError(f"linearize(..., values=...) linearizes a model with a compiled "
+                            f"Jacobian (a mechanical system), got {brief(system)}; without "
+                            f"values, linearize about an equilibrium symbolically",
+                            entry="values")
+    if not isinstance(values, dict):
+        raise AnalysisError(f"expected the parameters' values as a dict {{parameter: number}}, "
+                            f"got {brief(values)}", entry="values")
+    return system.numerical_linearization(values, at)
 
 
 def equations_of_motion(system):

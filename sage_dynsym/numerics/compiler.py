@@ -132,8 +132,9 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
     ``t``, ``x``, ``p``), in functions of bounded size.
 
     - without ``solve``: ``out[i]`` is ``outputs[i]``; the function returns
-      1 when one of the ``pivots`` (nodes) is zero or an output is not
-      finite;
+      1 when one of the ``pivots`` (nodes: margins of the pivots, see
+      :data:`~sage_dynsym.numerics.recursive.PIVOT_TOLERANCE`) is not
+      positive or an output is not finite;
     - with ``solve = (k, lead, size)``: the first ``k`` outputs are `b`,
       the next ``k*k`` the matrix `A` (by rows) of `A y = b`, solved by
       Gaussian elimination (returns 1 when `A` is singular); ``out`` (of
@@ -175,7 +176,7 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
     lines += [f'    dynsym_part{i}(t, x, p, w);' for i in range(count)]
     if solve is None:
         m = len(outputs)
-        lines += [f'    if (!(w[{slot}] != 0.0)) return 1;' for slot in slots[m:]]
+        lines += [f'    if (!(w[{slot}] > 0.0)) return 1;' for slot in slots[m:]]
         lines += [f'    out[{i}] = w[{slot}];' for i, slot in enumerate(slots[:m])]
         lines.append(f'    for (int i = 0; i < {m}; i++) if (!isfinite(out[i])) return 1;')
     else:
@@ -205,7 +206,8 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     that depend on no direction are computed once, the others once per
     column (the functions of each entry of ``columns`` are their own
     group, see :meth:`~sage_dynsym.numerics.graph.ExpressionGraph.c_functions`).
-    Returns 1 when one of the ``pivots`` is zero or an entry is not finite.
+    Returns 1 when one of the ``pivots`` (margins) is not positive or an
+    entry is not finite.
 
     EXAMPLES: `f = (y, -x^3)`, Jacobian `((0, 1), (-3x^2, 0))`::
 
@@ -254,7 +256,7 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
              f'    static _Thread_local double xe[{2 * size}];',
              f'    for (int i = 0; i < {size}; i++) {{ xe[i] = x[i]; xe[{size} + i] = 0.0; }}']
     lines += [f'    dynsym_part{i}(t, xe, p, w);' for i in range(counts[0])]
-    lines += [f'    if (!({value(a, slot)} != 0.0)) return 1;'
+    lines += [f'    if (!({value(a, slot)} > 0.0)) return 1;'
               for a, slot in zip(pivots, slots[len(outputs):])]
     done, position = counts[0], 0
     for number, (nodes, first, count) in enumerate(columns, 1):
@@ -529,6 +531,7 @@ class Kernel:
         self._solve = self._k is not None
         self._lead = self._size // 2 if form.order() == 2 else 0
         self._n_params = len(form.parameters())
+        self._chart = getattr(form, 'singular_chart', lambda x: None)
         if backend == 'c':
             # a prototype called with plain addresses: the cheapest ctypes call
             self._function = _PROTOTYPE(ctypes.cast(function, ctypes.c_void_p).value)
@@ -615,6 +618,9 @@ class Kernel:
         return out
 
     def _singular(self, t, x):
+        chart = self._chart(x)
+        if chart is not None:
+            raise AnalysisError(chart, entry="numerical_rhs")
         raise AnalysisError(f"the matrix of the equations is singular at t = {float(t)}, "
                             f"state {list(map(float, x))}", entry="numerical_rhs")
 

@@ -604,7 +604,7 @@ class _Assembly:
                       for c in range(len(S))] for r in range(len(S))]
                 u = [G.sub(applied[i], G.add(G.dot(w, nk), G.dot(v, f)))
                      for i, (w, v) in zip(coordinates, S)]
-                Dinv = _inverse(G, D, pivots)
+                Dinv = _inverse(G, D, pivots, _pivot_scales(G, A, C, S))
                 # U D^-1 (as 6-vectors f, n) and the updated inertia and force
                 UD = [(tuple(G.sum([G.mul(U[a][0][x], Dinv[a][b]) for a in range(len(S))])
                              for x in range(3)),
@@ -706,7 +706,7 @@ class _Assembly:
         pivots = []
         for k in range(n - 1, -1, -1):
             d = H.get((k, k), G.zero)
-            pivots.append(d)
+            _pivot(G, d, M.get((order[k], order[k]), G.zero), pivots)
             below = rows[k]
             for i in reversed(below):
                 factor = G.div(H[k, i], d)
@@ -747,31 +747,54 @@ class _Assembly:
             m = len(J)
             S = [[G.dot(J[a], Y[b]) for b in range(m)] for a in range(m)]
             rhs = [G.sub(gamma[a], G.dot(J[a], ddq)) for a in range(m)]
-            mu = _dense_solve(G, S, rhs, pivots)
+            mu = _dense_solve(G, S, rhs, pivots, [S[a][a] for a in range(m)])
             ddq = [G.add(ddq[i], G.dot([Y[b][i] for b in range(m)], mu)) for i in range(n)]
         return ddq, pivots, 'ltdl'
 
 
-def _inverse(G, A, pivots):
+#: a pivot at most this fraction of its scale is taken as zero: the system
+#: is singular or as close to it as rounding can tell (a rotation chart
+#: within about 1e-6 of its singular set)
+PIVOT_TOLERANCE = 1e-12
+
+
+def _pivot(G, d, scale, pivots):
+    # appends the margin |d| - tol |scale| of the pivot d: the compiled code
+    # refuses the state where a margin is not positive
+    pivots.append(G.sub(G.call('abs', d), G.mul(G.constant(PIVOT_TOLERANCE),
+                                                 G.call('abs', scale))))
+
+
+def _pivot_scales(G, A, C, S):
+    # the scale of each pivot S^T I S of the articulated inertia
+    # I = ((A, B), (B^T, C)) and the joint columns S = (w, v): as I is
+    # positive semidefinite, S^T I S <= 2 (|w|^2 tr A + |v|^2 tr C), so a
+    # pivot small against it is a joint the articulated body cannot move
+    # (a singular chart)
+    traces = (G.sum([A[i][i] for i in range(3)]), G.sum([C[i][i] for i in range(3)]))
+    return [G.add(G.mul(G.dot(w, w), traces[0]), G.mul(G.dot(v, v), traces[1])) for w, v in S]
+
+
+def _inverse(G, A, pivots, scales):
     # the inverse of a small symmetric positive definite matrix (Gauss-Jordan
-    # without pivoting); appends the pivots
+    # without pivoting); appends the pivots' margins against ``scales``
     m = len(A)
     if m == 1:
-        pivots.append(A[0][0])
+        _pivot(G, A[0][0], scales[0], pivots)
         return [[G.div(G.one, A[0][0])]]
     columns = [[G.one if i == j else G.zero for i in range(m)] for j in range(m)]
-    return [list(x) for x in zip(*[_dense_solve(G, A, b, pivots if j == 0 else [])
+    return [list(x) for x in zip(*[_dense_solve(G, A, b, pivots if j == 0 else [], scales)
                                    for j, b in enumerate(columns)])]
 
 
-def _dense_solve(G, A, b, pivots):
+def _dense_solve(G, A, b, pivots, scales):
     # Gaussian elimination without pivoting of a small symmetric positive
-    # definite system; appends the pivots
+    # definite system; appends the pivots' margins against ``scales``
     m = len(b)
     A = [list(row) for row in A]
     b = list(b)
     for c in range(m):
-        pivots.append(A[c][c])
+        _pivot(G, A[c][c], scales[c], pivots)
         for r in range(c + 1, m):
             factor = G.div(A[r][c], A[c][c])
             for k in range(c + 1, m):
@@ -1035,6 +1058,51 @@ class RecursiveForm:
         """
         return [p for p in self._tree.parameters() if p not in self._values]
 
+    def singular_chart(self, x):
+        r"""
+        The message naming a rotation chart singular at the state ``x`` (a
+        body's three successive elementary rotations by coordinates, whose
+        angular-velocity matrix has the determinant `\pm\cos` of the middle
+        angle when the outer axes differ (Cardan angles) and `\pm\sin` of it
+        when they are equal (Euler angles)), or ``None``.
+
+        The compiled right-hand side and Jacobian refuse the states where
+        a pivot is small against its scale (see :data:`PIVOT_TOLERANCE`);
+        this says why when the cause is the chart.
+
+        EXAMPLES: a free body by the (3, 2, 1) sequence, at `\theta = \pi/2`::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: psi, theta, phi = var('psi theta phi')
+            sage: base = TreeBody(0, rotations=[(3, psi), (2, theta), (1, phi)], mass=1,
+            ....:                 inertia=diagonal_matrix([1, 2, 3]), name='base')
+            sage: F = RecursiveForm(BodyTree([base], [psi, theta, phi]))
+            sage: F.singular_chart([0.0, float(pi/2), 0.0, 0, 0, 0])
+            "the rotation chart of body 'base' is singular at theta = pi/2 (gimbal lock): ..."
+            sage: F.singular_chart([0.0, 1.5, 0.0, 0, 0, 0]) is None
+            True
+        """
+        import math
+        position = {q: i for i, q in enumerate(self._tree.coordinates())}
+        for k, body in enumerate(self._tree.bodies(), 1):
+            rotations = body.rotations()
+            for (a1, _), (a2, angle), (a3, _) in zip(rotations, rotations[1:], rotations[2:]):
+                if a1 == a2 or a2 == a3 or angle not in position:
+                    continue
+                value = float(x[position[angle]])
+                if abs(math.cos(value) if a1 != a3 else math.sin(value)) > 1e-5:
+                    continue
+                where = str(SR(round(2 * value / math.pi)) * SR.pi() / 2)
+                where = {'1/2*pi': 'pi/2', '-1/2*pi': '-pi/2'}.get(where, where)
+                name = repr(body.name()) if body.name() else f"number {k}"
+                return (f"the rotation chart of body {name} is singular at {angle} = "
+                        f"{where} (gimbal lock): its angular velocity does not determine the "
+                        f"rates of the angles (state {list(map(float, x))}); use another "
+                        f"sequence of axes for attitudes near this one, e.g. a chart whose "
+                        f"middle angle is away from {where} there")
+        return None
+
     def solve_size(self):
         r"""``None``: the kernel solves for the accelerations itself.
 
@@ -1130,8 +1198,14 @@ class RecursiveForm:
             sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x],
             ....:                            potential=-k*x^2/2))
             sage: G, outputs, pivots = F.graph()
-            sage: [G.show(a) for a in outputs], [G.show(a) for a in pivots]
-            (['x[1]', '-((x[0]*p[0])*(1.0/p[1]))'], ['p[1]'])
+            sage: [G.show(a) for a in outputs]
+            ['x[1]', '-((x[0]*p[0])*(1.0/p[1]))']
+
+        The margin of the pivot `m` against its scale, the trace `3m` of
+        the translational inertia (see :data:`PIVOT_TOLERANCE`)::
+
+            sage: [G.show(a) for a in pivots]
+            ['abs(p[1]) - (1e-12*abs(p[1] + (p[1] + p[1])))']
         """
         if self._graph is None:
             assembly = _Assembly(self._tree, self._values)
@@ -1173,7 +1247,7 @@ class RecursiveForm:
 
             def evaluate(t, x, p):
                 values = function(t, x, p)
-                if any(d == 0 for d in values[m:]):
+                if not all(d > 0 for d in values[m:]):
                     raise ZeroDivisionError
                 return values[:m], None
             kernel = Kernel(self, 'python', evaluate)
@@ -1268,7 +1342,7 @@ class RecursiveForm:
                         extended[size + j] = 1.0
                         values = python(t, extended, p)
                         extended[size + j] = 0.0
-                        if any(d == 0 for d in values[len(outputs):]):
+                        if not all(d > 0 for d in values[len(outputs):]):
                             raise ZeroDivisionError
                         out[:, j] = values[begin:begin + len(nodes)]
                     begin += len(nodes)

@@ -310,6 +310,9 @@ class StateJacobian(SageObject):
         try:
             return self._function(t, x, self._p)
         except ZeroDivisionError:
+            chart = getattr(self._form, 'singular_chart', lambda x: None)(x)
+            if chart is not None:
+                raise AnalysisError(chart, entry="jacobian") from None
             raise AnalysisError(f"the system is singular at t = {float(t)}, state "
                                 f"{list(map(float, x))}", entry="jacobian") from None
 
