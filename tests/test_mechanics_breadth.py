@@ -300,15 +300,6 @@ def test_interaction_force_is_two_opposite_loads():
 # (d) constraints: Cartesian models with multipliers vs reduced models
 # ---------------------------------------------------------------------------
 
-def _lagrangian_has_constraints():
-    from sage_dynsym import Lagrangian
-    return hasattr(Lagrangian, 'accelerations_and_multipliers')
-
-
-needs_constraints = pytest.mark.skipif(not _lagrangian_has_constraints(),
-                                       reason="Lagrangian(..., constraints=) not available")
-
-
 def _solve_numeric(L, values):
     sol = L.accelerations_and_multipliers()
     return {key: sage_at(value, values) for key, value in sol.items()}
@@ -330,7 +321,6 @@ def _sympy_constrained(coords, L_sym, coneqs, values, state):
     return [float(v) for v in x[n:2 * n]], [float(v) for v in x[2 * n:]]
 
 
-@needs_constraints
 def test_particle_on_sphere():
     x, y, z, m, g, l = [SR.var(n) for n in 'x y z m g l'.split()]
     S = MechanicalSystem([RigidBody('bob', joint=[x, y, z], mass=m)], [x, y, z],
@@ -393,7 +383,6 @@ def test_particle_on_sphere():
     assert len(signs) == 1   # one sign convention throughout
 
 
-@needs_constraints
 def test_simple_pendulum_tension_textbook():
     x, z, m, g, l = [SR.var(n) for n in 'x z m g l'.split()]
     S = MechanicalSystem([RigidBody('bob', joint=[x, 0, z], mass=m)], [x, z],
@@ -415,7 +404,6 @@ def test_simple_pendulum_tension_textbook():
         assert close(sol[acceleration(x)], pl * (math.cos(q) * ddq - math.sin(q) * dq ** 2))
 
 
-@needs_constraints
 def test_double_pendulum_cartesian():
     import math
     x1, z1, x2, z2, m1, m2, l1, l2, g = [SR.var(n) for n in 'x1 z1 x2 z2 m1 m2 l1 l2 g'.split()]
@@ -485,7 +473,6 @@ def test_double_pendulum_cartesian():
         assert close(abs(lam[0]), abs(sol[mu1])) and close(abs(lam[1]), abs(sol[mu2]))
 
 
-@needs_constraints
 def test_constraints_round_trip(tmp_path):
     x, z, m, g, l = [SR.var(n) for n in 'x z m g l'.split()]
     S = MechanicalSystem([RigidBody('bob', joint=[x, 0, z], mass=m)], [x, z],
