@@ -2,11 +2,6 @@ r"""
 Deprecated alias of :mod:`sage_dynsym.dynamics.dirac`: the module's earlier name,
 which warns and gives that module itself.
 """
-import importlib
-import sys
-import warnings
+from sage_dynsym.errors import moved_module
 
-NEW = "sage_dynsym.dynamics.dirac"
-warnings.warn(f"{__name__} is deprecated: import {NEW} instead",
-              DeprecationWarning, stacklevel=2)
-sys.modules[__name__] = importlib.import_module(NEW)
+moved_module(__name__, "sage_dynsym.dynamics.dirac")

@@ -201,3 +201,27 @@ class BudgetError(DynSymError):
             entry = f"{entry}.{self.entry}"
         return type(self)(self.message, entry=entry or self.entry, source=source or self.source,
                           estimate=self.estimate, budget=self.budget)
+
+
+def moved_module(old, new):
+    r"""
+    Make the module being imported under the earlier name ``old`` the
+    module at its new place ``new``, with a ``DeprecationWarning`` that
+    points at the ``import`` of the caller (the body of a deprecated alias
+    module, e.g. ``sage_dynsym/lagrangian.py``).
+
+    EXAMPLES::
+
+        sage: import warnings, sage_dynsym.dynamics.lagrangian as new
+        sage: with warnings.catch_warnings(record=True) as caught:
+        ....:     warnings.simplefilter('always')
+        ....:     import sage_dynsym.lagrangian as old
+        sage: old is new, str(caught[0].message)
+        (True, 'sage_dynsym.lagrangian is deprecated: import sage_dynsym.dynamics.lagrangian instead')
+    """
+    import importlib
+    import sys
+    import warnings
+    # the caller's frame is the alias module's body; the importer is above it
+    warnings.warn(f"{old} is deprecated: import {new} instead", DeprecationWarning, stacklevel=3)
+    sys.modules[old] = importlib.import_module(new)
