@@ -31,20 +31,12 @@ def reference(f, y0, t_end, points):
     return sol.y.T
 
 
-def simulate_model(model, values, initial, t_end, points, energy):
-    """The model's own simulate once the lead wires the mixin, else the
-    function on its record (the same code)."""
-    if hasattr(model, 'simulate'):
-        return model.simulate(values, initial, t_end, points=points)
-    return simulate(model.to_linearizer(), values, initial, t_end, points=points, energy=energy)
-
-
 def test_spherical_pendulum():
     L = load(example_path('spherical_pendulum.yaml')).lagrangian()
     m, l, g = 1.5, 0.8, 9.81
     psi, theta, dpsi, dtheta = var('psi theta dpsi dtheta')
     initial = {psi: 0.3, theta: 2.5, dpsi: 1.2, dtheta: -0.4}
-    T = simulate_model(L, {'m': m, 'l': l, 'g': g}, initial, 5, 51, energy=L.energy())
+    T = L.simulate({'m': m, 'l': l, 'g': g}, initial, 5, points=51)
 
     # theta from the upward vertical (mass centre at (0, 0, l) in the body axes)
     def textbook(t, y):
@@ -88,7 +80,7 @@ def test_double_pendulum():
                    + (m1 + m2) * g * l1 * cos(t1) + m2 * g * l2 * cos(t2), [t1, t2])
     values = {m1: 1.0, m2: 2.0, l1: 1.0, l2: 1.5, g: 9.81}
     initial = {t1: 1.0, t2: -0.5, d1: 0.0, d2: 0.3}
-    T = simulate_model(L, values, initial, 10, 101, energy=L.energy())
+    T = L.simulate(values, initial, 10, points=101)
     M1, M2, L1, L2, G = 1.0, 2.0, 1.0, 1.5, 9.81
 
     def textbook(t, y):     # angles from the downward vertical
@@ -311,7 +303,7 @@ def test_constrained_lagrangian_end_to_end():
                    constraints=[x ** 2 + y ** 2 - l ** 2])
     G, Lv, th0 = 9.81, 0.9, 1.0
     initial = {x: Lv * math.sin(th0), y: -Lv * math.cos(th0), dx: 0, dy: 0}
-    T = simulate_model(L, {m: 1.5, g: G, l: Lv}, initial, 5, 51, energy=L.energy())
+    T = L.simulate({m: 1.5, g: G, l: Lv}, initial, 5, points=51)
     expected = reference(lambda t, s: [s[1], -G / Lv * math.sin(s[0])], [th0, 0.0], 5, 51)
     assert np.allclose(T.values(x), Lv * np.sin(expected[:, 0]), rtol=0, atol=1e-8)
     assert max(abs(r) for r in T.values(x ** 2 + y ** 2 - l ** 2)) < 1e-12
