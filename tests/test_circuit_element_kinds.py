@@ -1,5 +1,9 @@
 """Only the elements package names the kinds of circuit elements.
 
+Nor does any module outside ``circuits/elements/kinds.py`` (where the
+classes are defined) switch on an element's class with ``isinstance``:
+what differs per kind is a method or attribute of the element class.
+
 The analyses (loop and node Lagrangians, mixed potential, modified nodal
 analysis), the circuit class and every other module ask the element
 objects of ``sage_dynsym.circuits.elements`` what they contribute; none
@@ -74,4 +78,46 @@ def test_no_kind_strings_outside_the_elements_package():
         offenders += [f"{relative}:{line}: {value!r}"
                       for line, value in kind_strings(path, names)]
     assert not offenders, ("element kinds named outside circuits/elements/ (ask the "
+                           "element object instead):\n" + "\n".join(offenders))
+
+
+def element_class_names():
+    from sage_dynsym.circuits.elements import ELEMENTS as classes, Branch
+    return {cls.__name__ for cls in classes.values()} | {Branch.__name__}
+
+
+def isinstance_switches(path, names):
+    r"""``(line, class name)`` of the calls ``isinstance(x, C)`` (or with a
+    tuple of classes) in ``path`` with ``C`` one of ``names``."""
+    def named(node):
+        if isinstance(node, ast.Tuple):
+            return [n for e in node.elts for n in named(e)]
+        name = node.id if isinstance(node, ast.Name) else getattr(node, "attr", None)
+        return [name] if name in names else []
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    return [(node.lineno, name) for node in ast.walk(tree)
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+            and node.func.id == "isinstance" and len(node.args) == 2
+            for name in named(node.args[1])]
+
+
+@pytest.mark.parametrize("source, found", [
+    ("if isinstance(b, Inductor):\n    pass\n", [(1, "Inductor")]),
+    ("x = isinstance(b, (kinds.Capacitor, int))\n", [(1, "Capacitor")]),
+    ("x = isinstance(b, Circuit) and b.is_inductive()\n", []),
+])
+def test_the_isinstance_check_itself(tmp_path, source, found):
+    path = tmp_path / "module.py"
+    path.write_text(source, encoding="utf-8")
+    assert isinstance_switches(path, element_class_names()) == found
+
+
+def test_no_isinstance_switch_on_element_classes():
+    names = element_class_names()
+    assert {"Inductor", "Capacitor", "Resistor", "Branch"} <= names
+    offenders = [f"{path.relative_to(PACKAGE).as_posix()}:{line}: {name}"
+                 for path in sorted(PACKAGE.rglob("*.py"))
+                 if path != ELEMENTS / "kinds.py"
+                 for line, name in isinstance_switches(path, names)]
+    assert not offenders, ("isinstance switches on circuit element classes (ask the "
                            "element object instead):\n" + "\n".join(offenders))

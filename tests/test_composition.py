@@ -120,8 +120,6 @@ def private_reaches(klass):
 #: removed when its class no longer reaches (a test says when).
 REACH_ALLOWED = {
     "sage_dynsym.algebra.solving.SolutionList": {"_solutions"},
-    "sage_dynsym.circuits.linear._BranchAnalysis": {"_T", "_rows", "_R", "_forces", "_Pi", "_terms",
-                                                    "_coordinates"},
     "sage_dynsym.dynamics.holonomic.HolonomicConstraints": {
         "_velocities", "_expr", "_dissipation", "_forces", "_derived", "_accelerations",
         "_coordinates"},
@@ -262,9 +260,6 @@ def _foreign():
 FOREIGN_ALLOWED = {
     "sage_dynsym.analysis.charts": {"inner._reduce"},
     "sage_dynsym.analysis.normal_form_stability": {"nf._form_values"},
-    "sage_dynsym.circuits.linear": {"circuit._graph"},
-    "sage_dynsym.circuits.mixed_potential": {"circuit._graph"},
-    "sage_dynsym.circuits.nodal": {"circuit._graph"},
     "sage_dynsym.dynamics.nonlinear_stability": {"H._conserved_energy"},
     "sage_dynsym.dynamics.reduced": {"K._eliminate"},
     "sage_dynsym.mechanics.recursive_numerics": {"system.lagrangian()._conserved_energy",

@@ -228,7 +228,20 @@ class Circuit(StateEquations, NumericalMethods, Model):
         """
         return result_symbols(self, results)
 
-    def _graph(self):
+    def circuit_graph(self):
+        r"""
+        The :class:`~sage_dynsym.circuits.graph.CircuitGraph` of the
+        branches (spanning trees, fundamental loops, cut-sets): what the
+        loop, node, nodal and Brayton--Moser analyses share.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits import Circuit
+            sage: CG = Circuit([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1']]).circuit_graph(); CG
+            Circuit graph with 3 branches on 3 nodes
+            sage: CG.nodes, [b.name for b in CG.branches]
+            ((1, 2, 3), ['R1', 'C1', 'L1'])
+        """
         return self._cgraph
 
     def name(self):

@@ -9,11 +9,11 @@ drawing: non-planar circuits are handled like any other.
 
 EXAMPLES::
 
-    sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
+    sage: from sage_dynsym.circuits.elements import parse_entries
     sage: from sage_dynsym.circuits.graph import CircuitGraph
     sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
     sage: CG = CircuitGraph(branches)
-    sage: tree = CG.spanning_tree(priority=[VoltageSource, Capacitor])
+    sage: tree = CG.spanning_tree(rank=lambda b: b.tree_rank)    # the normal tree
     sage: sorted(tree)
     [1, 3]
     sage: T = CG.rooted(tree)
@@ -23,7 +23,6 @@ EXAMPLES::
 from sage.graphs.graph import Graph
 
 from ..errors import CircuitError
-from .elements.kinds import Capacitor
 
 
 class UnionFind:
@@ -109,7 +108,7 @@ def capacitor_order(cgraph):
     """
     adjacency = {v: [] for v in cgraph.nodes}
     for p, b in enumerate(cgraph.branches):
-        if isinstance(b, Capacitor):
+        if b.is_capacitive():
             adjacency[b.tail].append((b.head, p))
             adjacency[b.head].append((b.tail, p))
     order, seen = [], set()
@@ -125,7 +124,7 @@ def capacitor_order(cgraph):
                     order.append(p)
                     queue.append(w)
     return order + [p for p, b in enumerate(cgraph.branches)
-                    if isinstance(b, Capacitor) and p not in order]
+                    if b.is_capacitive() and p not in order]
 
 
 class CircuitGraph:
@@ -187,36 +186,46 @@ class CircuitGraph:
         self.graph = graph.copy(immutable=True)
         self.nodes = tuple(sorted(graph.vertices(sort=False), key=node_key))
 
-    def spanning_tree(self, priority=(), exclude=()):
+    def __repr__(self):
+        return f"Circuit graph with {len(self.branches)} branches on {len(self.nodes)} nodes"
+
+    def spanning_tree(self, rank=None, keep=None):
         r"""
         Return a spanning tree (a spanning forest when the graph has
         several parts) as a set of branch positions.
 
-        Kruskal's algorithm (Sage's ``min_spanning_tree``) with branches of
-        the element classes listed first in ``priority`` preferred, then
-        the others, ties broken by branch order; branches of the element
-        classes in ``exclude`` are never taken. Returns ``None`` when the
-        remaining branches do not connect the nodes of each part.
+        INPUT:
 
-        EXAMPLES::
+        - ``rank`` -- (optional) a function of a branch, a number: branches
+          of lower rank are preferred (for instance the normal tree's
+          :attr:`~sage_dynsym.circuits.elements.kinds.Branch.tree_rank`);
+          by default all alike
+        - ``keep`` -- (optional) a predicate on branches: the branches it
+          refuses are never taken; by default all may be
 
-            sage: from sage_dynsym.circuits.elements import parse_entries, Capacitor, CurrentSource
+        Kruskal's algorithm (Sage's ``min_spanning_tree``), ties broken by
+        branch order. Returns ``None`` when the kept branches do not
+        connect the nodes of each part.
+
+        EXAMPLES: by :attr:`~sage_dynsym.circuits.elements.kinds.Branch.tree_rank`
+        (capacitors before inductors), and without current sources::
+
+            sage: from sage_dynsym.circuits.elements import parse_entries
             sage: from sage_dynsym.circuits.graph import CircuitGraph
             sage: CG = CircuitGraph(parse_entries([[1, 2, 'L1'], [1, 2, 'C1'], [2, 3, 'I1']])[0])
-            sage: sorted(CG.spanning_tree(priority=[Capacitor])), CG.spanning_tree(exclude=[CurrentSource])
-            ([1, 2], None)
+            sage: sorted(CG.spanning_tree(rank=lambda b: b.tree_rank)), sorted(CG.spanning_tree())
+            ([1, 2], [0, 2])
+            sage: CG.spanning_tree(keep=lambda b: b.fixed_current() is None) is None
+            True
         """
-        def rank(b):
-            return next((r for r, cls in enumerate(priority) if isinstance(b, cls)),
-                        len(priority))
         m = len(self.branches)
         kept = [(b.tail, b.head, pos) for pos, b in enumerate(self.branches)
-                if not isinstance(b, tuple(exclude))]
+                if keep is None or keep(b)]
         sub = Graph(kept, multiedges=True, loops=False, format='list_of_edges')
         sub.add_vertices(self.nodes)
         if sub.connected_components_number() != self.graph.connected_components_number():
             return None
-        weight = {pos: rank(self.branches[pos]) * m + pos
+        weight = {pos: (0 if rank is None else rank(self.branches[pos])) * m + pos
                   for _, _, pos in kept}
         tree = sub.min_spanning_tree(weight_function=lambda e: weight[e[2]],
                                      algorithm='Kruskal')
@@ -325,11 +334,11 @@ class RootedTree:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
+        sage: from sage_dynsym.circuits.elements import parse_entries
         sage: from sage_dynsym.circuits.graph import CircuitGraph
         sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
         sage: CG = CircuitGraph(branches)
-        sage: T = CG.rooted(CG.spanning_tree(priority=[VoltageSource, Capacitor]))
+        sage: T = CG.rooted(CG.spanning_tree(rank=lambda b: b.tree_rank))
         sage: [branches[k].name for k in sorted(T.positions)]
         ['C1', 'E1']
         sage: [(b.name, s) for b, s in T.path(2, 1)]    # along C1, against E1
@@ -370,11 +379,11 @@ class RootedTree:
         EXAMPLES: the tree of the module's example: ``C1`` (from node 2 to
         3) and ``E1`` (from 1 to 3)::
 
-            sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
+            sage: from sage_dynsym.circuits.elements import parse_entries
             sage: from sage_dynsym.circuits.graph import CircuitGraph
             sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
             sage: CG = CircuitGraph(branches)
-            sage: T = CG.rooted(CG.spanning_tree(priority=[VoltageSource, Capacitor]))
+            sage: T = CG.rooted(CG.spanning_tree(rank=lambda b: b.tree_rank))
             sage: [(b.name, s) for b, s in T.path(1, 2)]
             [('E1', 1), ('C1', -1)]
         """
@@ -398,11 +407,11 @@ class RootedTree:
         EXAMPLES: the tree of the module's example: ``C1`` (from node 2 to
         3) and ``E1`` (from 1 to 3)::
 
-            sage: from sage_dynsym.circuits.elements import parse_entries, VoltageSource, Capacitor
+            sage: from sage_dynsym.circuits.elements import parse_entries
             sage: from sage_dynsym.circuits.graph import CircuitGraph
             sage: branches, _ = parse_entries([[1, 2, 'R1'], [2, 3, 'C1'], [3, 1, 'L1'], [1, 3, 'E1']])
             sage: CG = CircuitGraph(branches)
-            sage: T = CG.rooted(CG.spanning_tree(priority=[VoltageSource, Capacitor]))
+            sage: T = CG.rooted(CG.spanning_tree(rank=lambda b: b.tree_rank))
             sage: [(b.name, s) for b, s in T.loop(branches[0])]     # R1
             [('R1', 1), ('C1', 1), ('E1', -1)]
             sage: [(b.name, s) for b, s in T.loop(branches[2])]     # L1

@@ -48,15 +48,20 @@ from sage.symbolic.integration.integral import definite_integral
 
 from ..errors import CircuitError
 from ..symbols import velocity, t
-from .elements.kinds import ELEMENTS, CurrentSource, Inductor
 from .elements.windings import winding_groups, winding_matrix
 from .graph import node_key
 
-#: The loop method's spanning tree prefers voltage sources, then
-#: capacitors, resistors, nonlinear resistors and inductors (the order of
-#: the normal tree, :attr:`~.elements.kinds.Branch.tree_rank`); it never
-#: takes a current source.
-_LOOP_TREE = sorted(ELEMENTS.values(), key=lambda cls: cls.tree_rank)
+
+def _tree_rank(branch):
+    # the loop method's spanning tree prefers voltage sources, then
+    # capacitors, resistors, nonlinear resistors and inductors: the order of
+    # the normal tree (Branch.tree_rank)
+    return branch.tree_rank
+
+
+def _not_current_source(branch):
+    # a current source is never a tree branch of the loop method
+    return branch.fixed_current() is None
 
 
 def source_integral(value):
@@ -101,21 +106,26 @@ def _quadratic(rows, weights, n):
     return M.dense_matrix()
 
 
+def _energy(terms, role, variables):
+    # sum of w_b x_b^2 / 2 over the branches whose term has this role
+    return SR(sum(term[1] * x ** 2 / 2 for term, x in zip(terms, variables)
+                  if term is not None and term[0] == role))
+
+
 class _BranchAnalysis:
     r"""
     What the loop and the node descriptions of a linear circuit share: the
-    coordinates, the branch-to-coordinate incidence ``_rows`` (one dict
-    ``{coordinate index: sign}`` per branch), each branch's term ``_terms``
+    coordinates, the branch-to-coordinate incidence ``rows`` (one dict
+    ``{coordinate index: sign}`` per branch), each branch's term ``terms``
     (``(role, weight)`` or ``None``, see
     :meth:`~sage_dynsym.circuits.elements.kinds.Branch.loop_term`), the
-    energies and the generalized forces, assembled branch by branch by the
-    subclasses.
+    energies ``T, Pi, R`` and the generalized ``forces``, assembled branch
+    by branch by the subclasses.
     """
 
-    def _energy(self, role, variables):
-        # sum of w_b x_b^2 / 2 over the branches whose term has this role
-        return SR(sum(term[1] * x ** 2 / 2 for term, x in zip(self._terms, variables)
-                      if term is not None and term[0] == role))
+    def __init__(self, coordinates, rows, terms, T, Pi, R, forces):
+        self._coordinates, self._rows, self._terms = coordinates, rows, terms
+        self._T, self._Pi, self._R, self._forces = T, Pi, R, forces
 
     def coordinates(self):
         r"""The coordinates: loop charges ``q1, q2, ...`` (loop method) or
@@ -212,9 +222,9 @@ class LoopAnalysis(_BranchAnalysis):
 
     def __init__(self, circuit):
         _check_linear(circuit, "loop-current")
-        cg = circuit._graph()
+        cg = circuit.circuit_graph()
         br = cg.branches
-        tree = cg.spanning_tree(priority=_LOOP_TREE, exclude=[CurrentSource])
+        tree = cg.spanning_tree(rank=_tree_rank, keep=_not_current_source)
         if tree is None:
             raise CircuitError("the current sources form a cut-set: Kirchhoff's "
                                "current law cannot hold for arbitrary source values")
@@ -222,10 +232,10 @@ class LoopAnalysis(_BranchAnalysis):
         rooted = cg.rooted(tree)
         chords = [p for p in range(len(br)) if p not in tree]
         coords = [p for p in chords if br[p].fixed_current() is None]
-        self._coordinates = [SR.var(f"q{k + 1}") for k in range(len(coords))]
+        coordinates = [SR.var(f"q{k + 1}") for k in range(len(coords))]
         index = {p: k for k, p in enumerate(coords)}
         pos_of = {b.name: p for p, b in enumerate(br)}
-        self._rows = rows = [dict() for _ in br]        # branch -> {loop: sign}
+        rows = [dict() for _ in br]        # branch -> {loop: sign}
         current = [SR(0)] * len(br)
         charge = [SR(0)] * len(br)
         self._loops = []
@@ -233,7 +243,7 @@ class LoopAnalysis(_BranchAnalysis):
             loop = rooted.loop(br[c])
             if c in index:
                 self._loops.append(loop)
-                x, X = velocity(self._coordinates[index[c]]), self._coordinates[index[c]]
+                x, X = velocity(coordinates[index[c]]), coordinates[index[c]]
             else:
                 x, X = br[c].fixed_current(), source_integral(br[c].fixed_current())
             for b, sign in loop:
@@ -242,19 +252,17 @@ class LoopAnalysis(_BranchAnalysis):
                 charge[p] += sign * X
                 if c in index:
                     rows[p][index[c]] = sign
-        self._terms = [b.loop_term() for b in br]
-        T = self._energy('kinetic', current)
+        terms = [b.loop_term() for b in br]
+        T = _energy(terms, 'kinetic', current)
         for cp in circuit.couplings():
             T += cp.value * current[pos_of[cp.first]] * current[pos_of[cp.second]]
-        self._T = SR(T)
-        self._Pi = self._energy('potential', charge)
-        self._R = self._energy('dissipation', current)
         forces = [SR(0)] * len(coords)
         for p, b in enumerate(br):
             if b.fixed_voltage() is not None:
                 for k, sign in rows[p].items():
                     forces[k] += sign * b.fixed_voltage()
-        self._forces = forces
+        super().__init__(coordinates, rows, terms, SR(T), _energy(terms, 'potential', charge),
+                         _energy(terms, 'dissipation', current), forces)
         self._circuit = circuit
         self._pos_of = pos_of
 
@@ -351,7 +359,7 @@ class NodeAnalysis(_BranchAnalysis):
 
     def __init__(self, circuit, ground=None):
         _check_linear(circuit, "node-potential")
-        cg = circuit._graph()
+        cg = circuit.circuit_graph()
         br, nodes = cg.branches, cg.nodes
         if ground is None:
             ground = 0 if 0 in nodes else nodes[-1]
@@ -381,16 +389,16 @@ class NodeAnalysis(_BranchAnalysis):
                         rep[w], offset[w] = root, offset[v] + e
                         queue.append(w)
         reps = [v for v in nodes if rep[v] == v and v not in grounds]
-        self._coordinates = [SR.var(f"phi{v}" if not isinstance(v, str) else f"phi_{v}")
-                             for v in reps]
+        coordinates = [SR.var(f"phi{v}" if not isinstance(v, str) else f"phi_{v}")
+                       for v in reps]
         index = {v: k for k, v in enumerate(reps)}
         flux = {}
         dflux = {}
         for v in nodes:
-            base = self._coordinates[index[rep[v]]] if rep[v] in index else SR(0)
+            base = coordinates[index[rep[v]]] if rep[v] in index else SR(0)
             flux[v] = base + source_integral(offset[v])
             dflux[v] = (velocity(base) if rep[v] in index else SR(0)) + offset[v]
-        self._rows = rows = []
+        rows = []
         for b in br:
             row = {}
             for v, sign in ((b.head, 1), (b.tail, -1)):
@@ -400,9 +408,7 @@ class NodeAnalysis(_BranchAnalysis):
             rows.append({k: s for k, s in row.items() if s})
         delta = [flux[b.head] - flux[b.tail] for b in br]
         ddelta = [dflux[b.head] - dflux[b.tail] for b in br]
-        self._terms = [b.node_term() for b in br]
-        self._T = self._energy('kinetic', ddelta)
-        self._R = self._energy('dissipation', ddelta)
+        terms = [b.node_term() for b in br]
         # the potential energy of the windings: the inverse inductance
         # matrix of each group of coupled inductors
         self._gamma_blocks = self._inverse_inductance(circuit, br)
@@ -410,14 +416,14 @@ class NodeAnalysis(_BranchAnalysis):
         for block, G in self._gamma_blocks:
             d = [delta[p] for p in block]
             Pi += sum(G[a, b] * d[a] * d[b] for a in range(len(d)) for b in range(len(d))) / 2
-        self._Pi = Pi
         forces = [SR(0)] * len(reps)
         for b in br:
             if b.fixed_current() is not None:
                 for v, sign in ((b.head, 1), (b.tail, -1)):
                     if rep[v] in index:
                         forces[index[rep[v]]] += sign * b.fixed_current()
-        self._forces = forces
+        super().__init__(coordinates, rows, terms, _energy(terms, 'kinetic', ddelta), Pi,
+                         _energy(terms, 'dissipation', ddelta), forces)
         self._ground = ground
         self._reps = reps
 
@@ -427,7 +433,7 @@ class NodeAnalysis(_BranchAnalysis):
         # inductors (an uncoupled one: its node term 1/L)
         pos_of = {b.name: p for p, b in enumerate(br)}
         blocks = []
-        for group in winding_groups([b for b in br if isinstance(b, Inductor)],
+        for group in winding_groups([b for b in br if b.is_inductive()],
                                     circuit.couplings()):
             block = [pos_of[b.name] for b in group]
             if len(group) == 1:

@@ -134,7 +134,7 @@ from sage.symbolic.ring import SR
 from sage.matrix.constructor import matrix
 
 from ..errors import CircuitError
-from .elements.kinds import Capacitor, Inductor, state_symbols
+from .elements.kinds import state_symbols
 from .elements.windings import winding_matrix
 from .graph import capacitor_order
 
@@ -181,7 +181,7 @@ class MixedPotential:
 
     def __init__(self, circuit):
         self._circuit = circuit
-        cg = circuit._graph()
+        cg = circuit.circuit_graph()
         self._branches = br = cg.branches
         self._pos = pos_of = {b.name: p for p, b in enumerate(br)}
         tc = [p for p, b in enumerate(br) if b.sets_voltage]
@@ -237,7 +237,7 @@ class MixedPotential:
 
     def _name_states(self, cg):
         br = self._branches
-        inductors = [p for p, b in enumerate(br) if isinstance(b, Inductor)]
+        inductors = [p for p, b in enumerate(br) if b.is_inductive()]
         capacitors = capacitor_order(cg)     # a forest here: the circuit is complete
         self._inductors, self._capacitors = inductors, capacitors
         self._symbol = state_symbols(br, inductors + capacitors)
@@ -284,7 +284,7 @@ class MixedPotential:
                                            if pos_of[sigma.name] in tc)
             else:   # a current source of Omega_i; constant terms dropped
                 G -= I * sum(sign * self._symbol[pos_of[sigma.name]]
-                             for sigma, sign in loop[1:] if isinstance(sigma, Capacitor))
+                             for sigma, sign in loop[1:] if sigma.is_capacitive())
         self._F, self._G, self._J = F, G, J
         self._P = F - G + J
 
@@ -460,7 +460,7 @@ class MixedPotential:
         for p in self._inductors:
             row = {q: 0 for q in self._capacitors}
             for sigma, sign in self._loops[p][1:]:
-                if isinstance(sigma, Capacitor):
+                if sigma.is_capacitive():
                     row[self._pos[sigma.name]] += sign
             rows.append([row[q] for q in self._capacitors])
         return matrix(SR, len(self._inductors), len(self._capacitors), rows)

@@ -128,7 +128,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import CircuitError, brief
 from ..symbols import t
-from .elements.kinds import ELEMENTS, Capacitor, Inductor, state_symbols
+from .elements.kinds import ELEMENTS, state_symbols
 from .elements.windings import winding_matrix
 from .graph import UnionFind, capacitor_order
 
@@ -215,11 +215,11 @@ class NodalAnalysis:
     """
 
     def __init__(self, circuit):
-        if not callable(getattr(circuit, '_graph', None)):
+        if not callable(getattr(circuit, 'circuit_graph', None)):
             raise CircuitError(f"expected a circuit, got {brief(circuit)}; the call is "
                                "Circuit(branches).nodal_analysis()", entry="circuit")
         self._circuit = circuit
-        cg = circuit._graph()
+        cg = circuit.circuit_graph()
         self._branches = br = cg.branches
         caps = capacitor_order(cg)
         tie = {p: k for k, p in enumerate(caps)}
@@ -248,7 +248,7 @@ class NodalAnalysis:
             self._loops[k] = [(pos_of[b.name], s) for b, s in rooted.loop(br[k])[1:]]
             for p, s in self._loops[k]:
                 self._cut[p].append((k, s))
-        self._inductors = [p for p in self._chords if isinstance(br[p], Inductor)]
+        self._inductors = [p for p in self._chords if br[p].is_inductive()]
         self._capacitors = [p for p in caps if p in self._tree]
         self._symbol = state_symbols(br, self._inductors + self._capacitors)
         self._solve()
@@ -455,7 +455,7 @@ class NodalAnalysis:
         br = self._branches
         current = {p: self._symbol[p] for p in self._inductors}
         for p, b in enumerate(br):
-            if isinstance(b, Inductor) and p in self._tree:
+            if b.is_inductive() and p in self._tree:
                 current[p] = sum((s * self._chord_current(k) for k, s in self._cut[p]), SR(0))
         return current
 
@@ -463,7 +463,7 @@ class NodalAnalysis:
         br = self._branches
         voltage = {p: self._symbol[p] for p in self._capacitors}
         for p, b in enumerate(br):
-            if isinstance(b, Capacitor) and p not in self._tree:
+            if b.is_capacitive() and p not in self._tree:
                 voltage[p] = -sum((s * self._tree_voltage(q) for q, s in self._loops[p]),
                                   SR(0))
         return voltage
@@ -471,34 +471,34 @@ class NodalAnalysis:
     def _inductor_blocks(self):
         # (P_L^T L P_L, P_L^T L Q_L, the chord current sources)
         br = self._branches
-        inductors = [p for p, b in enumerate(br) if isinstance(b, Inductor)]
+        inductors = [p for p, b in enumerate(br) if b.is_inductive()]
         index = {p: a for a, p in enumerate(inductors)}
         current = self._inductor_currents()
         L = winding_matrix([br[p] for p in inductors], self._circuit.couplings(),
                            currents=[current[p] for p in inductors])
         sources = [k for k in self._chords if br[k].fixed_current() is not None
-                   and any(isinstance(br[q], Inductor) for q, _ in self._loops[k])]
+                   and any(br[q].is_inductive() for q, _ in self._loops[k])]
         P = matrix(SR, len(inductors), len(self._inductors))
         Q = matrix(SR, len(inductors), len(sources))
         for j, k in enumerate(self._inductors):
             P[index[k], j] = 1
             for q, s in self._loops[k]:
-                if isinstance(br[q], Inductor):
+                if br[q].is_inductive():
                     P[index[q], j] += s
         for j, k in enumerate(sources):
             for q, s in self._loops[k]:
-                if isinstance(br[q], Inductor):
+                if br[q].is_inductive():
                     Q[index[q], j] += s
         return P.transpose() * L * P, P.transpose() * L * Q, sources
 
     def _capacitor_blocks(self):
         # (P_C^T C P_C, P_C^T C Q_C, the tree voltage sources)
         br = self._branches
-        capacitors = [p for p, b in enumerate(br) if isinstance(b, Capacitor)]
+        capacitors = [p for p, b in enumerate(br) if b.is_capacitive()]
         index = {p: a for a, p in enumerate(capacitors)}
         voltage = self._capacitor_voltages()
         Cd = matrix.diagonal(SR, [br[p].value_at(voltage[p]) for p in capacitors])
-        sources = sorted({q for k in self._chords if isinstance(br[k], Capacitor)
+        sources = sorted({q for k in self._chords if br[k].is_capacitive()
                           for q, _ in self._loops[k] if br[q].fixed_voltage() is not None})
         column = {q: j for j, q in enumerate(self._capacitors)}
         scol = {q: j for j, q in enumerate(sources)}
@@ -507,7 +507,7 @@ class NodalAnalysis:
         for q in self._capacitors:
             P[index[q], column[q]] = 1
         for k in self._chords:
-            if isinstance(br[k], Capacitor):
+            if br[k].is_capacitive():
                 for q, s in self._loops[k]:
                     if q in column:
                         P[index[k], column[q]] -= s
@@ -573,14 +573,14 @@ class NodalAnalysis:
         rhs = []
         for j, k in enumerate(self._inductors):
             F = sum((s * self._tree_voltage(q) for q, s in self._loops[k]
-                     if not isinstance(br[q], Inductor)), SR(0))
+                     if not br[q].is_inductive()), SR(0))
             if isources:
                 F -= (LQ * rate(isources))[j, 0]
             rhs.append(F)
         column = {q: j for j, q in enumerate(self._capacitors)}
         currents = [SR(0)] * len(self._capacitors)
         for k in self._chords:
-            if not isinstance(br[k], Capacitor):
+            if not br[k].is_capacitive():
                 for q, s in self._loops[k]:
                     if q in column:
                         currents[column[q]] -= s * self._chord_current(k)

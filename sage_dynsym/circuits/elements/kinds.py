@@ -394,6 +394,36 @@ class Branch(namedtuple('Branch', 'index name kind tail head value')):
         """
         return None
 
+    def is_inductive(self):
+        r"""
+        Whether the element stores magnetic energy: its current is a state
+        variable (:attr:`state` is :data:`CURRENT`), it is a winding that
+        mutual inductances may couple, and its term in the loop method is
+        kinetic. The analyses ask this instead of testing the class.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import Branch
+            sage: [Branch(0, n, k, 1, 2, var(n)).is_inductive()
+            ....:  for n, k in [('L1', 'inductor'), ('C1', 'capacitor'), ('I1', 'current_source')]]
+            [True, False, False]
+        """
+        return self.state == CURRENT
+
+    def is_capacitive(self):
+        r"""
+        Whether the element stores electric energy: its voltage is a state
+        variable (:attr:`state` is :data:`VOLTAGE`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.circuits.elements import Branch
+            sage: [Branch(0, n, k, 1, 2, var(n)).is_capacitive()
+            ....:  for n, k in [('C1', 'capacitor'), ('E1', 'voltage_source'), ('L1', 'inductor')]]
+            [True, False, False]
+        """
+        return self.state == VOLTAGE
+
     # -- the Lagrangians of linear circuits -----------------------------------
 
     def is_linear(self):

@@ -71,7 +71,7 @@ from sage.symbolic.ring import SR
 from ...errors import CircuitError, brief
 from ...symbols import is_exact
 from ..graph import UnionFind
-from .kinds import CURRENT, VOLTAGE, Inductor, check_real
+from .kinds import CURRENT, VOLTAGE, check_real
 
 #: Most windings in one group of coupled windings whose symbolic inductance
 #: matrix is examined (all its `2^n - 1` principal minors); a larger group
@@ -196,7 +196,7 @@ def check_couplings(branches, couplings, positions):
     pairs = set()
     for k, c in zip(positions, couplings):
         for name in (c.first, c.second):
-            if not isinstance(by_name.get(name), Inductor):
+            if name not in by_name or not by_name[name].is_inductive():
                 raise CircuitError(f"a mutual inductance couples two inductors; {name} "
                                    "is not an inductor", entry=f"branches[{k}]")
         pair = frozenset((c.first, c.second))
