@@ -78,15 +78,15 @@ MAP_ERRORS = [
     ("output folder", ['--param', 'R1=0:1:3', '--param', 'R2=0:1:3', '-o', 'no_such_dir/out'],
      "-o: the folder no_such_dir does not exist"),
     ("10^5 x 10^5", ['--param', 'R1=0:1:100000', '--param', 'R2=0:1:100000'],
-     "--param: 10000000000 points are more than --max-points 10000000"),
+     "--param: 10000000000 points are more than the limit of 10000000; raise it with --max-points"),
     ("huge n", ['--param', 'R1=0:1:10000000000000000000000', '--param', 'R2=0:1:3'],
-     "--param: 30000000000000000000000 points are more than --max-points"),
+     "--param: 30000000000000000000000 points are more than the limit of 10000000"),
     ("10^10 samples", ['--param', 'R1=0:1', '--param', 'R2=0:1', '--samples', '10000000000'],
-     "--samples: 10000000000 points are more than --max-points 10000000"),
+     "--samples: 10000000000 points are more than the limit of 10000000; raise it with --max-points"),
     ("overflowing bounds", ['--param', 'R1=-1e308:1e308:5', '--param', 'R2=0:1:3'],
-     "parameters[R1]: the range (-1e+308, 1e+308, 5) is too wide for floating point"),
+     "--param[R1]: the range (-1e+308, 1e+308, 5) is too wide for floating point"),
     ("infinite bound", ['--param', 'R1=0:inf:5', '--param', 'R2=0:1:3'],
-     "parameters[R1]: the bounds must be finite"),
+     "--param[R1]: the bounds must be finite"),
     ("--at names no state", ['--param', 'R1=0:1:3', '--param', 'R2=0:1:3', '--at', 'zz=1'],
      "at: zz is not a state variable of the model; the state variables are i1, i2, i3, u4, u5"),
     ("--value twice", ['--param', 'R1=0:1:3', '--param', 'R2=0:1:3', '--value', 'R3=5'],
@@ -203,4 +203,5 @@ def test_map_process_with_limits(tmp_path):
                "--numpy", "-o", str(tmp_path / "out"))
     assert run.returncode == 1 and run.stdout == ""
     assert run.stderr == (f"sage-dynsym: error: {LADDER}: --param: 10000000000 points are more "
-                          "than --max-points 10000000\n")
+                          "than the limit of 10000000; raise it with --max-points if that is "
+                          "what you want\n")

@@ -84,9 +84,9 @@ def test_random_samples_and_one_parameter(tmp_path, capsys):
 @pytest.mark.parametrize("arguments, message", [
     (['--param', 'X=0:1:3'], "unknown parameter X: the symbols of the system are C1, C2"),
     (['--param', 'R1=0:1:3'], "no value for C1, C2, C3, L1, L2, L3, R2, R3, R4: give them"),
-    (['--param', 'R1=0:1:0'], r"parameters\[R1\]: empty range"),
-    (['--param', 'R1=1:0:3'], r"parameters\[R1\]: empty range"),
-    (['--param', 'R1=0:1'], r"parameters\[R1\]: expected \(low, high, n\)"),
+    (['--param', 'R1=0:1:0'], r"--param\[R1\]: empty range"),
+    (['--param', 'R1=1:0:3'], r"--param\[R1\]: empty range"),
+    (['--param', 'R1=0:1'], r"--param\[R1\]: expected \(low, high, n\)"),
     (['--param', 'R1=0:1:3', '--param', 'R1=0:2:3'], "--param: a parameter is given twice"),
 ])
 def test_errors_are_one_line(arguments, message, capsys):

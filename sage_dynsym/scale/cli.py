@@ -69,11 +69,11 @@ EXAMPLES::
     wrote ....png, ....npz
     0
     sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:0', '--numpy'])
-    sage-dynsym: error: ...rlc_ladder.yaml: parameters[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
+    sage-dynsym: error: ...rlc_ladder.yaml: --param[R1]: empty range (0.0, 1.0, 0): n must be a positive integer
     1
     sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:100000', '--param',
     ....:       'R2=0:1:100000', '--numpy'])
-    sage-dynsym: error: ...rlc_ladder.yaml: --param: 10000000000 points are more than --max-points 10000000
+    sage-dynsym: error: ...rlc_ladder.yaml: --param: 10000000000 points are more than the limit of 10000000; raise it with --max-points if that is what you want
     1
     sage: main([example_path('rlc_ladder.yaml'), '--param', 'R1=0:1:3', '--numpy', '-o',
     ....:       '/no/such/dir/out'])
@@ -250,23 +250,23 @@ def _located(err, path):
 def _checked(args):
     r"""
     Everything the command line can check before the model is loaded and
-    the map computed: no symbol twice, at most ``--max-points`` points, the
-    output files (the folder exists and is writable; existing files only
-    with ``--force``). Returns the output files.
+    the map computed: no symbol twice, the points (parsed here, once, and
+    passed to the map; at most ``--max-points``), the output files (the
+    folder exists and is writable; existing files only with ``--force``).
+    Returns the output files and the points.
     """
     from ..errors import DescriptionError
+    from .points import parse_points
     for option, what, pairs in (('--param', 'parameter', args.param),
                                 ('--value', 'value', args.value), ('--at', 'point', args.at)):
         names = [name for name, _ in pairs]
         twice = sorted({n for n in names if names.count(n) > 1})
         if twice:
             raise DescriptionError(f"a {what} is given twice: {', '.join(twice)}", entry=option)
-    size = args.samples if args.samples is not None else math.prod(
-        r[2] for _, r in args.param if len(r) == 3)
-    if size > args.max_points:
-        raise DescriptionError(f"{size} points are more than --max-points {args.max_points}",
-                               entry="--samples" if args.samples is not None else "--param")
-    return _outputs(args)
+    points = parse_points(dict(args.param), args.samples, args.seed, entry="--param",
+                          max_points=args.max_points, samples_entry="--samples",
+                          raise_with="--max-points")
+    return _outputs(args), points
 
 
 def _outputs(args):
@@ -329,19 +329,16 @@ def _numbers(pairs, option):
 
 
 def _run(args):
-    outputs = _checked(args)            # nothing loaded nor computed before these checks
+    outputs, points = _checked(args)    # nothing loaded nor computed before these checks
     values, point = _numbers(args.value, '--value'), _numbers(args.at, '--at')
     from ..description import load
     from ..errors import DynSymError
     from .maps import stability_map
     model = load(args.file)
-    parameters = dict(args.param)
     client = False if args.numpy else 'local' if args.cluster else (args.scheduler or None)
-    S = stability_map(model, parameters, fixed=values, client=client,
-                      samples=args.samples, seed=args.seed, at=point,
+    S = stability_map(model, points, fixed=values, client=client, at=point,
                       method=args.method, conditions='lienard-chipart', classes='spectrum',
-                      workers=args.workers, timeout=args.timeout, progress=args.progress,
-                      max_points=args.max_points)
+                      workers=args.workers, timeout=args.timeout, progress=args.progress)
     name = model.name() if callable(getattr(model, 'name', None)) else None
     print(f"{name or args.file}: {str(S)[0].lower()}{str(S)[1:]} (method: {S.method()})")
     if S.conditions() is not None:

@@ -117,7 +117,7 @@ from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
 from .kernel import map_chunk, chunk_points, run_program
 from .equilibria import point_diagnosis
-from .points import (parse_points, check_positive_ranges, number_text, result_arrays,
+from .points import (Points, parse_points, check_positive_ranges, number_text, result_arrays,
                      MAX_POINTS)
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
@@ -142,7 +142,11 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
       or a mechanical system (its Lagrangian around ``at``, default all
       coordinates 0)
     - ``parameters`` -- dict ``{symbol: (low, high, n)}`` (symbols or their
-      names); the result arrays are indexed in this order
+      names); the result arrays are indexed in this order. Or the
+      :class:`~sage_dynsym.scale.points.Points` of
+      :func:`~sage_dynsym.scale.points.parse_points`, already checked (as
+      the command line does before loading the model; then ``samples``,
+      ``seed`` and ``max_points`` are theirs)
     - ``fixed`` -- dict ``{symbol: number}``, the values of the other
       symbols; a key may also be an expression of the system such as
       ``diff(f(u), u).subs(u=0)``
@@ -258,19 +262,18 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         tol = -1.0
     if not tol >= 0:
         raise AnalysisError("tol must be a non-negative number", entry=entry)
-    if not isinstance(parameters, dict) or not parameters:
-        parse_points(parameters)            # the error for a missing or malformed dict
+    points = (parameters if isinstance(parameters, Points) else
+              parse_points(parameters, samples, seed, max_points=max_points))
     for name, value in (('fixed', fixed), ('at', at)):
         if not isinstance(value, (dict, type(None))):
             raise AnalysisError(f"{name}= must be a dict, got {value!r}", entry=entry)
     if callable(getattr(system, 'positive_parameters', None)):     # declared signs, first
         check_model_values(system, dict(fixed or {}), entry="fixed")
-        check_positive_ranges(parse_points(parameters, samples, seed, max_points=max_points),
-                              system.positive_parameters())
+        check_positive_ranges(points, system.positive_parameters())
     linear = _linear_system(system, at, variables, lhs_matrix)
     symbols = _symbols(linear)
     names = {str(s): s for s in symbols}
-    keys = [_resolve(k, names, symbols, "unknown parameter") for k in parameters]
+    keys = [_resolve(k, names, symbols, "unknown parameter") for k in points.keys]
     if len(set(keys)) < len(keys):
         raise AnalysisError("a parameter is given twice", entry=entry)
     values = {}
@@ -279,8 +282,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         if key in keys:
             raise AnalysisError(f"{key} is both a parameter and fixed", entry=entry)
         values[key] = _exact_number(v, f"fixed[{k}]")
-    points = parse_points(dict(zip(keys, parameters.values())), samples, seed,
-                          max_points=max_points)
+    points = points.with_keys(keys)
     fixed_system = _substitute(linear, values)
     missing = sorted(set(_symbols(fixed_system)) - set(keys), key=str)
     if missing:

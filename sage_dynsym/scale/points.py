@@ -116,6 +116,21 @@ class Points:
         """
         return list(self.layout[1]) if self.is_grid() else None
 
+    def with_keys(self, keys):
+        r"""The same points with other keys (one per parameter, in order):
+        the symbols a map resolved the user's names to.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.scale.points import parse_points
+            sage: P = parse_points({'a': (0, 1, 3)}).with_keys([var('a')]); P.keys, P.shape
+            ([a], (3,))
+        """
+        if len(keys) != len(self.keys):
+            raise AnalysisError(f"expected {len(self.keys)} keys, one per parameter, got "
+                                f"{brief(keys)}", entry="parameters")
+        return Points(keys, self.layout, self.shape)
+
     def __repr__(self):
         names = ', '.join(map(str, self.keys))
         if self.is_grid():
@@ -123,11 +138,17 @@ class Points:
         return f"{self.size} points: random samples in ({names})"
 
 
-def parse_points(parameters, samples=None, seed=0, entry="parameters", max_points=MAX_POINTS):
+def parse_points(parameters, samples=None, seed=0, entry="parameters", max_points=MAX_POINTS,
+                 samples_entry="samples", raise_with="max_points="):
     r"""
     Check ``parameters`` (a dict ``{key: range}``), ``samples`` and
     ``seed``, and the number of points against ``max_points``, and return
-    the :class:`Points`.
+    the :class:`Points`: parsed once, then passed on (a map renames its
+    keys with :meth:`Points.with_keys`).
+
+    ``entry`` and ``samples_entry`` name the parameters and the number of
+    samples in the messages, ``raise_with`` how to raise ``max_points``
+    (the command line says ``--param``, ``--samples``, ``--max-points``).
 
     TESTS::
 
@@ -177,6 +198,11 @@ def parse_points(parameters, samples=None, seed=0, entry="parameters", max_point
         Traceback (most recent call last):
         ...
         AnalysisError: parameters: 10000000000 points are more than the limit of 10000000; raise it with max_points= if that is what you want
+        sage: parse_points({'a': (0, 1, 10^5), 'b': (0, 1, 10^5)}, entry='--param',
+        ....:              raise_with='--max-points')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: --param: 10000000000 points are more than the limit of 10000000; raise it with --max-points if that is what you want
         sage: parse_points({'a': (0, 1)}, samples=10^10)
         Traceback (most recent call last):
         ...
@@ -193,9 +219,9 @@ def parse_points(parameters, samples=None, seed=0, entry="parameters", max_point
     if samples is not None:
         if not is_integer(samples) or int(samples) < 1:
             raise AnalysisError(f"expected a positive number of random points, got {samples!r}",
-                                entry="samples")
-        samples = count(samples, 'samples', maximum=max_points, error=AnalysisError,
-                        what="points", raise_with="max_points=")
+                                entry=samples_entry)
+        samples = count(samples, samples_entry, maximum=max_points, error=AnalysisError,
+                        what="points", raise_with=raise_with)
         seed = count(seed, 'seed', minimum=0, error=AnalysisError)
         lows, highs = [], []
         for key, axis_range in parameters.items():
@@ -210,7 +236,7 @@ def parse_points(parameters, samples=None, seed=0, entry="parameters", max_point
         else:
             shape.append(_range(key, axis_range, entry)[2])
     count(math.prod(shape), entry, maximum=max_points, error=AnalysisError, what="points",
-          raise_with="max_points=", minimum=0)
+          raise_with=raise_with, minimum=0)
     axes = []
     for key, axis_range in parameters.items():
         if isinstance(axis_range, np.ndarray):
