@@ -18,7 +18,8 @@ from sage.all import var
 from sage_dynsym import load
 from scale_helpers import example_path
 from sage_dynsym.errors import AnalysisError
-from sage_dynsym.scale import stability_map, sweep, model_linear_system
+from sage_dynsym import linearize
+from sage_dynsym.scale import stability_map, sweep
 
 LADDER_FIXED = {'R3': 1, 'R4': 2, 'L1': 1, 'L2': 0.5, 'L3': 1, 'C1': 1, 'C2': 2, 'C3': 1}
 LADDER_GRID = {'R1': (-1, 2, 60), 'R2': (-1, 2, 50)}
@@ -32,7 +33,7 @@ def cluster(n):
 
 @pytest.fixture(scope="module")
 def ladder():
-    return model_linear_system(load(example_path('rlc_ladder.yaml')))
+    return linearize(load(example_path("rlc_ladder.yaml")), sources=False)
 
 
 @pytest.fixture(scope="module")

@@ -682,11 +682,12 @@ class LinearSystem(SageObject):
         return result
 
 
-def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, speeds=None,
-              values=None):
+def linearize(system, at=None, variables=None, lhs_matrix=None, coordinates=None, speeds=None,
+              values=None, sources=True):
     r"""
     The first-approximation system around an equilibrium, or around a
-    steady motion (an operating point).
+    steady motion (an operating point): the one way to build a linear
+    system from a model, a characteristic function or right-hand sides.
 
     INPUT:
 
@@ -717,6 +718,12 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
       right-hand side (a model with ``numerical_linearization``, e.g. a
       :class:`~sage_dynsym.mechanics.system.MechanicalSystem`; the same as
       ``system.numerical_linearization(values, at)``)
+    - ``sources`` -- (default: ``True``) with ``False``, a model (a
+      circuit, a mechanical or a Lie--Poisson system) is linearized with
+      its sources switched off, around its zero state or the state ``at``
+      (a dict over its state variables or coordinates, others 0): its
+      :meth:`~sage_dynsym.dynamics.model.Model.free_linear_system`, what a
+      stability map maps
 
     OUTPUT: a :class:`LinearSystem`; second-order for a Lagrangian, else
     first-order. With ``values``: the matrix `A` over ``RDF`` of
@@ -751,8 +758,20 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
         sage: A.parent(), A[0, 1], bool(abs(A[1, 0] + 9.81*cos(pi/3)/2) < 1e-14)
         (Full MatrixSpace of 2 by 2 dense matrices over Real Double Field, 1.0, True)
 
+    A circuit with its sources off, around the zero state (`L_1 C_1
+    \lambda^2 + R_1 C_1 \lambda + 1` for a series RLC circuit)::
+
+        sage: from sage_dynsym import Circuit
+        sage: C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']])
+        sage: linearize(C, sources=False).characteristic_polynomial(var('lam'))
+        C1*L1*lam^2 + C1*R1*lam + 1
+
     TESTS::
 
+        sage: linearize([y, x], {x: 0, y: 0}, [x, y], sources=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: sources: linearize(..., sources=False) switches off the sources of a model (a circuit, a mechanical or a Lie-Poisson system), got [y, x]; for right-hand sides, set the sources to 0 in them
         sage: linearize([y, x], {x: 1, y: 0}, [x, y], values={})
         Traceback (most recent call last):
         ...
@@ -786,6 +805,13 @@ def linearize(system, at, variables=None, lhs_matrix=None, coordinates=None, spe
     from .operating_point import OperatingPoint
     if values is not None:
         return _linearize_numerically(system, at, values)
+    if not sources:
+        if not callable(getattr(system, 'free_linear_system', None)):
+            raise AnalysisError("linearize(..., sources=False) switches off the sources of a "
+                                "model (a circuit, a mechanical or a Lie-Poisson system), got "
+                                f"{brief(system)}; for right-hand sides, set the sources to 0 "
+                                "in them", entry="sources")
+        return system.free_linear_system(at)
     data = _record(system)
     if coordinates is not None or speeds is not None or isinstance(at, OperatingPoint) or (
             isinstance(data, SecondOrderEquations) and data.velocity_constraints()):

@@ -36,9 +36,11 @@ EXAMPLES::
     1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m - g*l*m*cos(theta)
 """
 import re
+from collections import namedtuple
 
 import ipywidgets as widgets
 
+from ..description import kinds
 from ..errors import DescriptionError, DynSymError
 
 
@@ -297,6 +299,12 @@ _EXAMPLE2 = "\n".join(["1 2 L1", "2 3 f1", "2 3 C1", "3 4 L2", "4 5 I02", "4 5 C
                        "3 5 C2", "3 5 f2", "5 2 I0", "1 5 C3", "1 5 f3", "1 5 I01"])
 
 
+#: The fields of one kind of model on the builder's page: their ``box``,
+#: the function that turns them into a description, and the function that
+#: names a loader's entry as the page shows it (``None``: as the loader does).
+_Panel = namedtuple('_Panel', 'box description as_seen')
+
+
 class SystemBuilder:
     r"""
     The system-builder page: form fields for a mechanical system (bodies
@@ -335,7 +343,6 @@ class SystemBuilder:
     def __init__(self):
         W = widgets
         wide = W.Layout(width='95%')
-        self.kind = W.ToggleButtons(options=['mechanical', 'circuit'], description='kind')
         self.name = W.Text(value='spherical pendulum', description='name', layout=wide)
         self.parameters = W.Text(value='m, l, g', description='parameters', layout=wide)
         self.coordinates = W.Text(value='psi, theta', description='coordinates', layout=wide)
@@ -364,8 +371,16 @@ class SystemBuilder:
         self.branches = W.Textarea(value=_EXAMPLE2, description='branches',
                                    layout=W.Layout(width='95%', height='14em'))
         self.circuit = W.VBox([self.circuit_name, self.circuit_parameters, self.branches])
-        self.circuit.layout.display = 'none'
+        # what differs per kind on this page: its fields, how they become a
+        # description, how the loader's entries are shown; the kinds offered
+        # are those of the registry that have fields here
+        self._panels = {'mechanical': _Panel(self.mechanical, self._mechanical_description,
+                                             self._bodies_as_seen),
+                        'circuit': _Panel(self.circuit, self._circuit_description, None)}
+        self.kind = W.ToggleButtons(options=[kind for kind in kinds() if kind in self._panels],
+                                    description='kind')
         self.kind.observe(self._switch, names='value')
+        self._switch({'new': self.kind.value})
         derive = W.Button(description='derive equations', button_style='primary')
         derive.on_click(lambda _: self.derive())
         self.path = W.Text(value='built_system.yaml', description='file')
@@ -386,9 +401,8 @@ class SystemBuilder:
         self.confirm.layout.display = 'none'
 
     def _switch(self, change):
-        mech = change['new'] == 'mechanical'
-        self.mechanical.layout.display = None if mech else 'none'
-        self.circuit.layout.display = 'none' if mech else None
+        for kind, panel in self._panels.items():
+            panel.box.layout.display = None if kind == change['new'] else 'none'
 
     def add_body(self, values=None):
         r"""
@@ -474,17 +488,21 @@ class SystemBuilder:
             [[1, 2, 'L1'], [2, 3, 'f1']]
         """
         try:
-            if self.kind.value == 'circuit':
-                return circuit_description(self.circuit_name.value, self.branches.value,
-                                           self.circuit_parameters.value)
-            values = [{k: w.value for k, w in fields.items()} for fields in self._body_fields]
-            loads = [{k: w.value for k, w in fields.items()} for fields in self._load_fields]
-            return mechanical_description(self.name.value, self.parameters.value,
-                                          self.coordinates.value, self.gravity.value, values,
-                                          self.dissipation.value, self.potential.value,
-                                          self.constraints.value, loads)
+            return self._panels[self.kind.value].description()
         except DynSymError as err:
             raise self._as_seen(err) from None
+
+    def _mechanical_description(self):
+        values = [{k: w.value for k, w in fields.items()} for fields in self._body_fields]
+        loads = [{k: w.value for k, w in fields.items()} for fields in self._load_fields]
+        return mechanical_description(self.name.value, self.parameters.value,
+                                      self.coordinates.value, self.gravity.value, values,
+                                      self.dissipation.value, self.potential.value,
+                                      self.constraints.value, loads)
+
+    def _circuit_description(self):
+        return circuit_description(self.circuit_name.value, self.branches.value,
+                                   self.circuit_parameters.value)
 
     def model(self):
         r"""
@@ -519,11 +537,14 @@ class SystemBuilder:
             raise self._as_seen(err) from None
 
     def _as_seen(self, err):
+        # the loader's entry as the page shows it, where the kind's fields
+        # name it otherwise
+        as_seen = self._panels[self.kind.value].as_seen
+        return err if not err.entry or as_seen is None else as_seen(err)
+
+    def _bodies_as_seen(self, err):
         # the loader names list positions (bodies[1].mass); the page shows
         # "body 2 (bob)" with its fields
-        if not err.entry or self.kind.value == 'circuit':
-            return err
-
         def body(match):
             k = int(match.group(1))
             name = (self._body_fields[k]['name'].value.strip()
@@ -557,8 +578,9 @@ class SystemBuilder:
         self.output.value = ""
         try:
             model = self.model()
-            form = 'Brayton-Moser' if self.kind.value == 'circuit' else 'Lagrange'
-            block = derivation_latex(derive(model, form))
+            # the kind's first form (Lagrange for a mechanical system,
+            # Brayton-Moser for a circuit), from the model's class
+            block = derivation_latex(derive(model, next(iter(model.equation_forms()))))
         except DynSymError as err:
             self.status.value = f"<b>error:</b> {_escape(err)}"
             return

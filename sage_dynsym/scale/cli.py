@@ -1,9 +1,10 @@
 r"""
 Command line: ``sage-dynsym map FILE --param NAME=LOW:HIGH:N ...``
 
-Computes the stability map of the model of a description file (see
-:func:`~sage_dynsym.scale.maps.model_linear_system` for the system mapped:
-a circuit's free state equations around the zero state, a mechanical
+Computes the stability map of the model of a description file (its
+``linearize(model, at, sources=False)``, see
+:func:`~sage_dynsym.analysis.linear.linearize`: a circuit's free state
+equations around the zero state, a mechanical
 model's Lagrangian around ``--at``, by default all coordinates 0) and
 writes it as a picture (``PREFIX.png``) and as arrays (``PREFIX.npz``, see
 :meth:`~sage_dynsym.scale.maps.StabilityMap.save`). The region of the

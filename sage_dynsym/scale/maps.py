@@ -102,6 +102,7 @@ import numpy as np
 
 from sage.matrix.constructor import block_matrix, identity_matrix, zero_matrix
 from sage.misc.latex import latex
+from sage.misc.superseded import deprecation
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
@@ -111,7 +112,7 @@ from ..errors import AnalysisError, DynSymError, brief
 from ..io.files import write_atomically
 from ..dynamics.hamiltonian import Hamiltonian
 from ..dynamics.lagrangian import Lagrangian
-from ..dynamics.model import Model
+from ..description import kinds
 from ..numerics.values import check_model_values
 from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .compile import compile_expressions
@@ -138,7 +139,8 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
       (from :func:`~sage_dynsym.analysis.linear.linearize`); or what
       ``linearize`` accepts, with ``at=`` (and ``variables=``,
       ``lhs_matrix=``); or a model: a circuit (its free state equations,
-      sources off, around the zero state; see :func:`model_linear_system`)
+      sources off, around the zero state: ``linearize(model, at,
+      sources=False)``)
       or a mechanical system (its Lagrangian around ``at``, default all
       coordinates 0)
     - ``parameters`` -- dict ``{symbol: (low, high, n)}`` (symbols or their
@@ -251,6 +253,23 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         Traceback (most recent call last):
         ...
         AnalysisError: at: zz is not a state variable of the model; the state variables are i1, u2
+
+    A point of a model that is not a regular equilibrium: the coordinate at
+    fault is named, and a point that works suggested (see
+    :mod:`~sage_dynsym.scale.equilibria`)::
+
+        sage: from sage_dynsym import load
+        sage: from sage_dynsym.description import example_path
+        sage: cart = load(example_path('cart_pendulum_spring_damper.yaml'))
+        sage: stability_map(cart, {'k': (1, 2, 3)}, at={'theta': 3.14}, client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: the point {y: 0, theta: 3.14} is not an equilibrium: ... did you mean theta = pi? ...
+        sage: stability_map(load(example_path('spherical_pendulum.yaml')), {'m': (1, 2, 3)},
+        ....:               at={'zz': 1}, client=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: at: zz is not a coordinate of the model; the coordinates are psi, theta
     """
     entry = "stability_map"
     if method not in ('auto', 'polynomial', 'eigvals'):
@@ -328,7 +347,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
             raise AnalysisError(f"classes must be 'spectrum', a dict or a verdict, got "
                                 f"{classes!r}", entry=entry)
         classes, note = _spectrum_classes(fixed_system, note)
-    name = system.name() if isinstance(system, Model) else None
+    name = system.name() if _model_kind(system) is not None else None
     return StabilityMap(points, alpha.reshape(points.shape), stable.reshape(points.shape),
                         values, method, tol, conditions, note, name,
                         classes=kinds.reshape(points.shape), exact_classes=classes,
@@ -344,8 +363,8 @@ def _linear_system(system, at, variables, lhs_matrix):
     from ..analysis import LinearSystem, linearize
     if isinstance(system, LinearSystem):
         return system
-    if isinstance(system, Model):
-        return model_linear_system(system, at)
+    if _model_kind(system) is not None:
+        return _free_linear_system(system, at)
     # right-hand sides, or a characteristic function (Lagrangian, Routh
     # function, Hamiltonian): linearize checks the rest
     if at is None or not isinstance(system, (list, tuple, Lagrangian, Hamiltonian)):
@@ -374,8 +393,35 @@ def _point(at):
     return point
 
 
+def _model_kind(system):
+    # the class of the registered kind of a model (``kinds()``), ``None``
+    # for anything else: what differs per kind comes from that class
+    cls = kinds().get(getattr(system, 'kind', None))
+    return cls if cls is not None and isinstance(system, cls) else None
+
+
+def _free_linear_system(model, at):
+    # linearize(model, at, sources=False), a point that is not an
+    # equilibrium diagnosed: which coordinate, and a point that works
+    from ..analysis import linearize
+    point = _point(at)
+    try:
+        return linearize(model, point, sources=False)
+    except AnalysisError as err:
+        if err.entry != "linearize":
+            raise
+        better = point_diagnosis(model, point)
+        if better is None:
+            raise
+        raise better from None
+
+
 def model_linear_system(model, at=None):
     r"""
+    Deprecated: use ``linearize(model, at, sources=False)``
+    (:func:`~sage_dynsym.analysis.linear.linearize`, the one way to build a
+    linear system).
+
     The linear system whose stability :func:`stability_map` maps for a
     model (also the ``map`` command line): the model's
     :meth:`~sage_dynsym.dynamics.model.Model.free_linear_system` -- for a
@@ -387,10 +433,18 @@ def model_linear_system(model, at=None):
 
     EXAMPLES::
 
-        sage: from sage_dynsym import load
+        sage: from sage_dynsym import load, linearize
         sage: from sage_dynsym.description import example_path
         sage: from sage_dynsym.scale.maps import model_linear_system
-        sage: model_linear_system(load(example_path('rlc_ladder.yaml'))).lhs_matrix()
+        sage: ladder = load(example_path('rlc_ladder.yaml'))
+        sage: S = model_linear_system(ladder)
+        doctest:warning...
+        DeprecationWarning: model_linear_system(model, at) is deprecated; use linearize(model, at, sources=False)
+        See https://github.com/sagemath/sage/issues/31 for details.
+        sage: T = linearize(ladder, sources=False)
+        sage: (S.jacobian(), S.lhs_matrix()) == (T.jacobian(), T.lhs_matrix())
+        True
+        sage: S.lhs_matrix()
         [L1  0  0  0  0  0]
         [ 0 L2  0  0  0  0]
         [ 0  0 L3  0  0  0]
@@ -398,12 +452,7 @@ def model_linear_system(model, at=None):
         [ 0  0  0  0 C1  0]
         [ 0  0  0  0  0 C2]
 
-    TESTS::
-
-        sage: model_linear_system(load(example_path('spherical_pendulum.yaml')), {'zz': 1})
-        Traceback (most recent call last):
-        ...
-        AnalysisError: at: zz is not a coordinate of the model; the coordinates are psi, theta
+    TESTS:
 
     A point that is not a regular equilibrium: the coordinate at fault is
     named, and a point that works suggested (see
@@ -418,17 +467,9 @@ def model_linear_system(model, at=None):
         ...
         AnalysisError: at: the point {y: 0, theta: 3.14} is not an equilibrium: ... did you mean theta = pi? ...
     """
-    point = _point(at)
-    try:
-        return model.free_linear_system(point)
-    except AnalysisError as err:
-        if err.entry != "linearize":
-            raise
-        # which coordinate, and a point that works (see scale.equilibria)
-        better = point_diagnosis(model, point)
-        if better is None:
-            raise
-        raise better from None
+    deprecation(31, "model_linear_system(model, at) is deprecated; use "
+                    "linearize(model, at, sources=False)")
+    return _free_linear_system(model, at)
 
 
 def linear_symbols(linear):
