@@ -97,6 +97,7 @@ REFERENCES:
 """
 from sage.matrix.constructor import matrix
 from sage.misc.latex import latex
+from sage.misc.superseded import deprecation
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, DynSymError, brief
@@ -104,7 +105,7 @@ from ..arguments import expression_list, known_symbols, symbol_arguments
 from ..algebra.conditions import positive_conditions_all, conjunction, simplify_conjunction
 from .motion_solution import MotionSolution
 from .verdict import verdict_from_parts
-from .linear import LinearSystem
+from .linear import LinearSystem, equations_of_motion
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
                               signed_leading_minors)
@@ -143,7 +144,7 @@ class StationaryProblem:
     the amended potential `W`) and the variables of its Hessian, the
     equations and their unknowns, the multipliers and the integrals, and
     what the stability tests need. Built by :func:`stationary_solutions`
-    and :func:`stationary_motions`, solved by :func:`solve_stationary`;
+    and :func:`stationary_motions`, solved by :func:`stationary_solutions`;
     nothing is computed here.
 
     INPUT:
@@ -173,13 +174,13 @@ class StationaryProblem:
 
     EXAMPLES::
 
-        sage: from sage_dynsym.analysis.stationary import StationaryProblem, solve_stationary
+        sage: from sage_dynsym.analysis.stationary import StationaryProblem, stationary_solutions
         sage: x, y, l = var('x y l')
         sage: P = StationaryProblem(x^2 + l*(x^2 + y^2), [x, y], [x, y, l], [l],
         ....:                       [4*x + 2*l*x, 2*l*y], integrals=[x^2, x^2 + y^2])
         sage: P.solved_variables(), P.constraint_integrals()
         ([x, y], [x^2 + y^2])
-        sage: solve_stationary(P)
+        sage: stationary_solutions(P)
         3 stationary solutions of K = (x^2 + y^2)*l + x^2
     """
 
@@ -716,7 +717,7 @@ class StationarySolutions(SolutionList):
     The stationary solutions of a problem (iterable): created by
     :func:`stationary_solutions` (conditional extrema of first integrals)
     or :func:`stationary_motions` (a Lagrangian or Routh function at rest),
-    through :func:`solve_stationary`. It holds the results only.
+    through :func:`stationary_solutions`. It holds the results only.
 
     INPUT:
 
@@ -985,22 +986,30 @@ class StationarySolutions(SolutionList):
 
 def solve_stationary(problem):
     r"""
-    The stationary solutions of ``problem`` (a :class:`StationaryProblem`):
-    its equations solved exactly (:func:`~sage_dynsym.algebra.solving.solve_exactly`,
-    with Maxima's ``solve`` as the fallback for transcendental equations),
-    the dimensions counted in the unknowns that are not multipliers.
+    Deprecated: use ``stationary_solutions(problem)``
+    (:func:`stationary_solutions`, the one way to ask for stationary
+    solutions).
 
-    OUTPUT: a :class:`StationarySolutions`
-
-    EXAMPLES: the critical points of `x^3/3 - a x`::
+    EXAMPLES::
 
         sage: from sage_dynsym.analysis.stationary import StationaryProblem, solve_stationary
         sage: x, a = var('x a')
         sage: sols = solve_stationary(StationaryProblem(x^3/3 - a*x, [x], [x], [], [x^2 - a],
         ....:                                           positive=[a]))
+        doctest:warning...
+        DeprecationWarning: solve_stationary(problem) is deprecated; use stationary_solutions(problem)
+        See https://github.com/sagemath/sage/issues/31 for details.
         sage: [s.point() for s in sols]
         [{x: sqrt(a)}, {x: -sqrt(a)}]
     """
+    deprecation(31, "solve_stationary(problem) is deprecated; use stationary_solutions(problem)")
+    return stationary_solutions(problem)
+
+
+def _solved(problem):
+    # the equations of the problem solved exactly (Maxima's solve the
+    # fallback for transcendental equations), the dimensions counted in the
+    # unknowns that are not multipliers
     found = solve_exactly(problem.equations, problem.unknowns,
                           counted=problem.solved_variables(), positive=problem.positive,
                           extra=[problem.function] + list(problem.rhs or []),
@@ -1008,17 +1017,26 @@ def solve_stationary(problem):
     return StationarySolutions(problem, found)
 
 
-def stationary_solutions(integrals, variables, equations=None, multipliers=None,
+def stationary_solutions(integrals, variables=None, equations=None, multipliers=None,
                          levels=None, positive=(), solve_for=None):
     r"""
     Routh--Lyapunov: stationary solutions as conditional extrema of the
-    first integrals, computed exactly (see the module documentation).
+    first integrals, computed exactly (see the module documentation). The
+    one way to ask for stationary solutions: of first integrals, of a
+    Routh function or a Lagrangian (its stationary motions, as
+    :func:`stationary_motions`), or of a :class:`StationaryProblem`
+    written out.
 
     INPUT:
 
     - ``integrals`` -- list `[V_0, V_1, \dots, V_k]` of first integrals;
-      `K = V_0 + \lambda_1 V_1 + \dots + \lambda_k V_k`
-    - ``variables`` -- the phase variables `x`
+      `K = V_0 + \lambda_1 V_1 + \dots + \lambda_k V_k`. Or a
+      :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` or
+      :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`: its stationary
+      motions (see :func:`stationary_motions`; then only ``solve_for``
+      and ``positive`` apply). Or a :class:`StationaryProblem`, solved as
+      it is (no other argument applies).
+    - ``variables`` -- the phase variables `x` (with integrals)
     - ``equations`` -- (optional) the right-hand sides `X(x)`; if given,
       every integral is checked to be conserved, each solution says whether
       it is made of equilibria (:meth:`StationarySolution.is_equilibrium`)
@@ -1047,8 +1065,38 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
         sage: [(s.dimension(), s.point(), s.equations()) for s in sols]
         [(0, {x: 0, y: 0}, []), (1, {x: x, y: y}, [x^2 + y^2 - 1])]
 
+    The stationary motions of a Routh function (the same as
+    :func:`stationary_motions`): a particle on a smooth cone of half-angle
+    `\alpha`, `R = m(\dot r^2/\sin^2\alpha)/2 - p^2/(2 m r^2) - m g r
+    \cot\alpha`, circles at `r^3 = p^2 \tan\alpha/(m^2 g)`::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: r, phi, dr, dphi, m, g, al = var('r phi dr dphi m g alpha')
+        sage: L = Lagrangian(m/2*(dr^2/sin(al)^2 + r^2*dphi^2) - m*g*r*cot(al), [r, phi])
+        sage: R = L.routh([phi]); p = R.momenta()[0]
+        sage: sols = stationary_solutions(R, solve_for=[p], positive=[m, g, r])
+        sage: [s.point()[p]^2 for s in sols]
+        [g*m^2*r^3*cot(alpha), g*m^2*r^3*cot(alpha)]
+
+    A problem written out: the critical points of `x^3/3 - a x`::
+
+        sage: from sage_dynsym.analysis.stationary import StationaryProblem
+        sage: a = var('a')
+        sage: sols = stationary_solutions(StationaryProblem(x^3/3 - a*x, [x], [x], [], [x^2 - a],
+        ....:                                               positive=[a]))
+        sage: [s.point() for s in sols]
+        [{x: sqrt(a)}, {x: -sqrt(a)}]
+
     TESTS::
 
+        sage: stationary_solutions([x^2])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stationary_solutions: the phase variables are needed with integrals: stationary_solutions(integrals, variables)
+        sage: stationary_solutions(R, [r])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: stationary_solutions: variables, equations, multipliers and levels are for integrals; the stationary motions of a Routh function or Lagrangian take solve_for= and positive= only
         sage: stationary_solutions([exp(x) - x], [x])
         1 stationary solution of K = -x + e^x (transcendental equations: found by Maxima's solve, possibly not all)
         sage: stationary_solutions([x*cos(x)], [x])
@@ -1056,6 +1104,19 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
         ...
         AnalysisError: solve_exactly: the equations are not algebraic in x (x occurs both inside and outside trigonometric functions) and Maxima's solve could not solve them: [-x*sin(x) + cos(x)]
     """
+    if isinstance(integrals, StationaryProblem):
+        return _solved(integrals)
+    if isinstance(equations_of_motion(integrals), SecondOrderEquations):
+        if (variables, equations, multipliers, levels) != (None,) * 4:
+            raise AnalysisError("variables, equations, multipliers and levels are for "
+                                "integrals; the stationary motions of a Routh function or "
+                                "Lagrangian take solve_for= and positive= only",
+                                entry="stationary_solutions")
+        return _solved(_motions_problem(integrals, solve_for, positive))
+    if variables is None:
+        raise AnalysisError("the phase variables are needed with integrals: "
+                            "stationary_solutions(integrals, variables)",
+                            entry="stationary_solutions")
     integrals = expression_list(integrals, "integrals", AnalysisError,
                                 expected="a list of integrals (symbolic expressions)")
     variables = expression_list(variables, "variables", AnalysisError, names=True)
@@ -1091,7 +1152,7 @@ def stationary_solutions(integrals, variables, equations=None, multipliers=None,
         J = matrix(SR, [[at(X.diff(x)) for x in variables] for X in rhs])
         return LinearSystem(variables, J=J)
 
-    return solve_stationary(StationaryProblem(
+    return _solved(StationaryProblem(
         K, variables, unknowns, multipliers, system, integrals=integrals,
         linear=None if rhs is None else linear, rhs=rhs, positive=positive))
 
@@ -1152,8 +1213,15 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
         ...
         AnalysisError: positive: expected symbols or their names, got 'not a name'
     """
-    from .linear import equations_of_motion
-    system = routh_or_lagrangian
+    if not isinstance(equations_of_motion(routh_or_lagrangian), SecondOrderEquations):
+        raise AnalysisError(f"expected a Lagrangian or Routh function, got "
+                            f"{type(routh_or_lagrangian).__name__}", entry="stationary_motions")
+    return stationary_solutions(routh_or_lagrangian, solve_for=solve_for, positive=positive)
+
+
+def _motions_problem(system, solve_for, positive):
+    # the StationaryProblem of the stationary motions of a Routh function
+    # or Lagrangian (see stationary_motions)
     data = equations_of_motion(system)
     if not isinstance(data, SecondOrderEquations):
         raise AnalysisError(f"expected a Lagrangian or Routh function, got "
@@ -1180,9 +1248,9 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     what = "equations at rest of " + ("the Routh function" if hasattr(system, 'momenta')
                                       else "the Lagrangian")
     shown = [normalize(e, angles=q, factor=True) for e in at_rest]
-    return solve_stationary(StationaryProblem(
+    return StationaryProblem(
         W, q, unknowns, [], at_rest, kinetic=kinetic, signs=('positive',), linear=linear,
-        positive=positive, description=what, shown=shown))
+        positive=positive, description=what, shown=shown)
 
 
 def _unknowns(solve_for, first, equations, entry):
