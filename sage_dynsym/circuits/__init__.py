@@ -8,10 +8,11 @@ analysis), description files.
 import sage.all  # noqa: F401
 from .circuit import Circuit
 from .elements import Branch, Coupling
+from .graph import CircuitGraph
 from .mixed_potential import MixedPotential
 from .linear import LoopAnalysis, NodeAnalysis
 from .nodal import NodalAnalysis
 from .description import circuit_from_dict, circuit_to_dict
 
-__all__ = ['Circuit', 'Branch', 'Coupling', 'MixedPotential', 'LoopAnalysis', 'NodeAnalysis',
-           'NodalAnalysis', 'circuit_from_dict', 'circuit_to_dict']
+__all__ = ['Circuit', 'CircuitGraph', 'Branch', 'Coupling', 'MixedPotential', 'LoopAnalysis',
+           'NodeAnalysis', 'NodalAnalysis', 'circuit_from_dict', 'circuit_to_dict']
