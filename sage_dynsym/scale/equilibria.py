@@ -41,7 +41,7 @@ from sage.symbolic.ring import SR
 
 from ..algebra.determinants import fraction_free_det
 from ..algebra.solving import normalize
-from ..analysis.linear import equations_of_motion
+from ..analysis.linear import equations_of_motion, linearize
 from ..analysis.motion import SecondOrderEquations
 from ..dynamics.model import linearization_point
 from ..errors import AnalysisError, DynSymError
@@ -214,7 +214,7 @@ class _Problem:
         if not self.regular(trial):
             return False
         try:
-            self.model.free_linear_system(trial)
+            linearize(self.model, trial, sources=False)
         except (DynSymError, TypeError, ValueError, ArithmeticError, RuntimeError):
             return False
         return True
