@@ -86,16 +86,15 @@ def element_class_names():
     return {cls.__name__ for cls in classes.values()} | {Branch.__name__}
 
 
-def isinstance_switches(path, names):
+def isinstance_switches(source, names):
     r"""``(line, class name)`` of the calls ``isinstance(x, C)`` (or with a
-    tuple of classes) in ``path`` with ``C`` one of ``names``."""
+    tuple of classes) in the code ``source`` with ``C`` one of ``names``."""
     def named(node):
         if isinstance(node, ast.Tuple):
             return [n for e in node.elts for n in named(e)]
         name = node.id if isinstance(node, ast.Name) else getattr(node, "attr", None)
         return [name] if name in names else []
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    return [(node.lineno, name) for node in ast.walk(tree)
+    return [(node.lineno, name) for node in ast.walk(ast.parse(source))
             if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
             and node.func.id == "isinstance" and len(node.args) == 2
             for name in named(node.args[1])]
@@ -106,10 +105,8 @@ def isinstance_switches(path, names):
     ("x = isinstance(b, (kinds.Capacitor, int))\n", [(1, "Capacitor")]),
     ("x = isinstance(b, Circuit) and b.is_inductive()\n", []),
 ])
-def test_the_isinstance_check_itself(tmp_path, source, found):
-    path = tmp_path / "module.py"
-    path.write_text(source, encoding="utf-8")
-    assert isinstance_switches(path, element_class_names()) == found
+def test_the_isinstance_check_itself(source, found):
+    assert isinstance_switches(source, element_class_names()) == found
 
 
 def test_no_isinstance_switch_on_element_classes():
@@ -118,6 +115,7 @@ def test_no_isinstance_switch_on_element_classes():
     offenders = [f"{path.relative_to(PACKAGE).as_posix()}:{line}: {name}"
                  for path in sorted(PACKAGE.rglob("*.py"))
                  if path != ELEMENTS / "kinds.py"
-                 for line, name in isinstance_switches(path, names)]
+                 for line, name in isinstance_switches(path.read_text(encoding="utf-8"),
+                                                       names)]
     assert not offenders, ("isinstance switches on circuit element classes (ask the "
                            "element object instead):\n" + "\n".join(offenders))
