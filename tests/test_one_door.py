@@ -96,3 +96,40 @@ def test_the_doors_themselves_do_not_warn():
         warnings.simplefilter("error", DeprecationWarning)
         linearize(_rlc(), sources=False)
         stationary_motions(L.routh([L.coordinates()[1]]), solve_for=None, positive=[m, g])
+
+
+def _counting_parse_points(monkeypatch):
+    # every call of parse_points, wherever it is imported from
+    import sage_dynsym.scale.maps as maps
+    import sage_dynsym.scale.points as points
+    calls, real = [], points.parse_points
+
+    def counting(*args, **kwargs):
+        calls.append(args)
+        return real(*args, **kwargs)
+    monkeypatch.setattr(maps, "parse_points", counting)
+    monkeypatch.setattr(points, "parse_points", counting)
+    return calls
+
+
+def test_a_map_parses_its_points_once(monkeypatch):
+    from sage_dynsym.scale import stability_map
+    calls = _counting_parse_points(monkeypatch)
+    C = Circuit([[0, 1, 'E1'], [1, 2, 'R1'], [2, 3, 'L1'], [3, 0, 'C1']],
+                positive=['R1', 'L1', 'C1'])
+    S = stability_map(C, {'R1': (1, 2, 3)}, fixed={'L1': 1, 'C1': 1}, client=False)
+    assert len(calls) == 1
+    # L C lam^2 + R C lam + 1 with positive coefficients: Hurwitz, every point stable
+    assert S.stable().all() and S.stable().shape == (3,)
+
+
+def test_the_command_line_parses_the_points_once(monkeypatch, tmp_path, capsys):
+    from sage_dynsym.__main__ import main
+    calls = _counting_parse_points(monkeypatch)
+    path = tmp_path / "rlc.yaml"
+    path.write_text("kind: circuit\nname: RLC\nbranches:\n  - [0, 1, E1]\n  - [1, 2, R1]\n"
+                    "  - [2, 3, L1]\n  - [3, 0, C1]\n", encoding="utf-8")
+    status = main(['map', str(path), '--param', 'R1=1:2:3', '--value', 'L1=1', '--value',
+                   'C1=1', '--numpy', '-o', str(tmp_path / "m")])
+    assert status == 0, capsys.readouterr().err
+    assert len(calls) == 1
