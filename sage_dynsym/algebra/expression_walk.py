@@ -85,7 +85,7 @@ class ExpressionWalker:
 
     A subclass overrides :meth:`symbol`, :meth:`number` and :meth:`atom`
     (refuse or register), and, as needed, :meth:`known` (generators looked
-    up whole), :meth:`trig`, :meth:`takes_power` and the arithmetic
+    up whole), :meth:`trig`, :meth:`takes_power`, :meth:`operands` and the arithmetic
     :meth:`add`, :meth:`mul`, :meth:`power`. By default the arithmetic is
     that of the values (``sum``, product, ``**``) and a trigonometric
     function that is not expanded is an atom.
@@ -130,9 +130,9 @@ class ExpressionWalker:
                 return self.number(e)
             return self.atom(e)       # constants: pi, e, ...
         if op is add_vararg:
-            return self.add([self.walk(x) for x in e.operands()])
+            return self.add([self.walk(x) for x in self.operands(e)])
         if op is mul_vararg:
-            return self.mul([self.walk(x) for x in e.operands()])
+            return self.mul([self.walk(x) for x in self.operands(e)])
         if op is operator.pow:
             base, exponent = e.operands()
             k = integer_exponent(exponent)
@@ -142,6 +142,18 @@ class ExpressionWalker:
         if op in TRIGONOMETRIC:
             return self.trig(op, e)
         return self.atom(e)
+
+    def operands(self, e):
+        r"""The terms of a sum or the factors of a product ``e``, in the
+        order they are walked (default: Sage's).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.expression_walk import ExpressionWalker
+            sage: ExpressionWalker().operands(var('x')*var('y'))
+            [x, y]
+        """
+        return e.operands()
 
     def known(self, e):
         r"""The value of ``e`` if it is a generator looked up whole, else

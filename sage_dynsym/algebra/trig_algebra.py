@@ -1,0 +1,449 @@
+r"""
+The algebra of trigonometric polynomials, a Sage parent
+
+Polynomials over `\QQ` in parameters and in the cosines and sines `c_i,
+s_i` of angles `\theta_i`, modulo the relations `c_i^2 + s_i^2 = 1`:
+
+.. MATH::
+
+    A = \QQ[c_1, s_1, \dots, c_k, s_k, p_1, \dots, p_m] \,/\,
+        (c_1^2 + s_1^2 - 1, \dots, c_k^2 + s_k^2 - 1).
+
+The generators of the ideal are a Gröbner basis (their leading monomials
+`c_i^2` are coprime), so every class has one representative of degree at
+most one in each `c_i`: the elements of :class:`TrigAlgebra` are those
+representatives (computed in linear time by
+:func:`~sage_dynsym.algebra.trigonometric.circle_reduce`), equal exactly when
+they are equal as functions. Each `c_i^2 + s_i^2 - 1` is irreducible and the
+ideal is prime, so `A` is an integral domain.
+
+Symbolic expressions convert into the algebra (``A(expr)``: the walk of
+:mod:`~sage_dynsym.algebra.expression_walk`; an expression that is not a
+polynomial in the generators raises
+:class:`~sage_dynsym.algebra.trigonometric.NotPolynomial`) and elements
+back (``SR(x)``, in the recursive form of
+:meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.to_symbolic`).
+The arithmetic underneath -- the Singular polynomial ring of the
+representatives (:meth:`TrigAlgebra.cover_ring`), what a kinematics backend
+computes in before one reduction at the end -- is
+:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`
+(:meth:`TrigAlgebra.polynomial_ring`); fractions and their linear algebra
+are :class:`~sage_dynsym.algebra.trig_linear.TrigFractionField`.
+
+EXAMPLES::
+
+    sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+    sage: a, b, m = var('a b m')
+    sage: A = TrigAlgebra([a, b], [m]); A
+    Algebra of polynomials in cos(a), cos(b), sin(a), sin(b), m over Rational Field modulo cos^2 + sin^2 = 1
+    sage: x = A(m*cos(a)^2 + m*sin(a)^2*cos(b)^2 + m*sin(a)^2*sin(b)^2); x
+    m
+    sage: x == A(m), A(cos(a)^3)
+    (True, -(sin(a)^2 - 1)*cos(a))
+    sage: c, s = A.trig(a); SR(c^2 + s^2)
+    1
+    sage: latex(A(m*sin(a)))
+    m \sin\left(a\right)
+    sage: TestSuite(A).run()
+
+Expressions that are not polynomial in the generators are refused::
+
+    sage: A(1/m)
+    Traceback (most recent call last):
+    ...
+    NotPolynomial: 1/m is not polynomial in the rotation variables and parameters
+
+REFERENCES:
+
+- D. Cox, J. Little, D. O'Shea, *Ideals, Varieties, and Algorithms*, 4th
+  ed., Springer, 2015, ch. 2 (normal forms modulo a Gröbner basis) and
+  ch. 5 §2 (quotient rings `k[x]/I`).
+"""
+from sage.categories.commutative_algebras import CommutativeAlgebras
+from sage.misc.latex import latex
+from sage.rings.integer_ring import ZZ
+from sage.rings.rational_field import QQ
+from sage.structure.element import CommutativeAlgebraElement, Element
+from sage.structure.parent import Parent
+from sage.structure.richcmp import richcmp
+from sage.structure.unique_representation import UniqueRepresentation
+from sage.symbolic.expression import Expression
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from .trigonometric import TrigPolynomialRing
+
+__all__ = ['TrigAlgebra', 'TrigAlgebraElement']
+
+
+class TrigAlgebraElement(CommutativeAlgebraElement):
+    r"""
+    An element of a :class:`TrigAlgebra`: a polynomial of its
+    :meth:`~TrigAlgebra.cover_ring` of degree at most one in every cosine.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+        sage: a, m = var('a m'); A = TrigAlgebra([a], [m])
+        sage: x = A(m*cos(a)^2); x, x.lift()
+        (-(sin(a)^2 - 1)*m, -dynsymsin0^2*m + m)
+        sage: TestSuite(x).run()
+    """
+
+    def __init__(self, parent, lift):
+        r"""
+        INPUT:
+
+        - ``parent`` -- a :class:`TrigAlgebra`
+        - ``lift`` -- a reduced polynomial of its cover ring
+
+        TESTS::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: A = TrigAlgebra([var('a')], []); A(cos(a)^2).lift().degree(A.cover_ring().gen(0))
+            0
+        """
+        CommutativeAlgebraElement.__init__(self, parent)
+        self._lift = lift
+
+    def lift(self):
+        r"""The representative: a polynomial of the cover ring, of degree at
+        most one in every cosine.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); TrigAlgebra([a], [])(cos(a)^3).lift()
+            -dynsymcos0*dynsymsin0^2 + dynsymcos0
+        """
+        return self._lift
+
+    def _symbolic_(self, ring):
+        r"""The element as a symbolic expression (``SR(x)``).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a, m = var('a m'); A = TrigAlgebra([a], [m])
+            sage: SR(A(m*cos(a) + m*sin(a)^2 + m*cos(a)^2))
+            m*(cos(a) + 1)
+        """
+        return ring(self.parent().polynomial_ring().to_symbolic(self._lift, reduced=True))
+
+    def _repr_(self):
+        return repr(self._symbolic_(SR))
+
+    def _latex_(self):
+        return latex(self._symbolic_(SR))
+
+    def _new(self, lift):
+        return self.parent().element_class(self.parent(), lift)
+
+    def _add_(self, other):
+        # sums and differences of representatives are representatives
+        return self._new(self._lift + other.lift())
+
+    def _sub_(self, other):
+        return self._new(self._lift - other.lift())
+
+    def _neg_(self):
+        return self._new(-self._lift)
+
+    def _mul_(self, other):
+        return self._new(self.parent().polynomial_ring().reduce(self._lift * other.lift()))
+
+    def _div_(self, other):
+        r"""
+        Division by a nonzero rational number (the units of the algebra);
+        fractions are :class:`~sage_dynsym.algebra.trig_linear.TrigFractionField`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); A = TrigAlgebra([a], [])
+            sage: A(cos(a)) / 2
+            1/2*cos(a)
+            sage: A(1) / A(cos(a))
+            Traceback (most recent call last):
+            ...
+            ArithmeticError: TrigAlgebra: cos(a) is not a unit (a nonzero rational number); for fractions use TrigFractionField
+        """
+        divisor = other.lift()
+        if divisor.is_constant() and not divisor.is_zero():
+            return self._new(self._lift / divisor.constant_coefficient())
+        raise ArithmeticError(f"TrigAlgebra: {other} is not a unit (a nonzero rational "
+                              "number); for fractions use TrigFractionField")
+
+    def _richcmp_(self, other, op):
+        # the representatives are a normal form: equal elements, equal lifts
+        return richcmp(self._lift, other.lift(), op)
+
+    def __hash__(self):
+        return hash(self._lift)
+
+    def __bool__(self):
+        return not self._lift.is_zero()
+
+    def __reduce__(self):
+        return self.parent(), (self._lift,)
+
+
+class TrigAlgebra(UniqueRepresentation, Parent):
+    r"""
+    The algebra of polynomials over `\QQ` in the cosines and sines of
+    ``angles`` and in ``symbols`` and ``atoms``, modulo `\cos^2 + \sin^2 =
+    1` for every angle (see the module documentation).
+
+    INPUT:
+
+    - ``angles`` -- the angles (symbolic expressions; an angle and its
+      negative share a pair, a constant angle whose sine and cosine
+      evaluate has none)
+    - ``symbols`` -- the other symbols
+    - ``atoms`` -- (default: none) other non-polynomial parts held as
+      generators (`\pi`, `\sqrt 2`, `1/m`, ...)
+
+    or ``TrigAlgebra(R)``: the algebra of the
+    :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing` ``R``
+    (what a kinematics backend computes in).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+        sage: t, w, x = var('t w x')
+        sage: A = TrigAlgebra([w*t], [x], [sqrt(2)]); A.gens()
+        (cos(t*w), sin(t*w), x, sqrt(2))
+        sage: A(x*cos(-w*t)^2 + x*sin(w*t)^2 - sqrt(2)*sin(-w*t))
+        sqrt(2)*sin(t*w) + x
+        sage: A is TrigAlgebra([w*t], [x], [sqrt(2)]) is TrigAlgebra(A.polynomial_ring())
+        True
+        sage: TestSuite(A).run()
+
+    TESTS::
+
+        sage: A('x')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: TrigAlgebra: expected a symbolic expression, a rational number or a polynomial of the cover ring, got 'x' (str)
+    """
+    Element = TrigAlgebraElement
+
+    @staticmethod
+    def __classcall_private__(cls, angles=(), symbols=(), atoms=()):
+        # keyed by the normalized polynomial ring: equal algebras are one object
+        ring = (angles if isinstance(angles, TrigPolynomialRing)
+                else TrigPolynomialRing(angles, symbols, atoms))
+        return super().__classcall__(cls, ring)
+
+    def __init__(self, ring):
+        r"""
+        TESTS::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], []).category()
+            Category of commutative algebras over Rational Field
+        """
+        self._ring = ring
+        Parent.__init__(self, base=QQ, category=CommutativeAlgebras(QQ))
+        self._populate_coercion_lists_(coerce_list=[ring.ring])
+
+    @classmethod
+    def for_expressions(cls, expressions, dynamic=()):
+        r"""
+        The algebra holding ``expressions``: a pair for every argument of a
+        sine or cosine, a generator for every symbol and every other
+        non-polynomial part (see
+        :meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.for_expressions`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a, g, l = var('a g l')
+            sage: A = TrigAlgebra.for_expressions([sqrt(g/l)*cos(a)]); A.gens()
+            (cos(a), sin(a), a, sqrt(g/l))
+
+        (The symbols of the angles are generators too: their derivatives
+        are.)
+        """
+        ring = TrigPolynomialRing.for_expressions(expressions, dynamic)
+        return cls(ring.angles(), ring.symbols(), ring.atoms())
+
+    def _repr_(self):
+        return (f"Algebra of polynomials in {', '.join(map(str, self.gens()))} over "
+                f"{self.base_ring()} modulo cos^2 + sin^2 = 1")
+
+    def _latex_(self):
+        gens = ', '.join(latex(SR(g)) for g in self.gens())
+        return r"\Bold{Q}[%s] / (\cos^2 + \sin^2 - 1)" % gens
+
+    def polynomial_ring(self):
+        r"""The :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`
+        underneath: conversions and reduction on representatives.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], []).polynomial_ring().angles()
+            [a]
+        """
+        return self._ring
+
+    def cover_ring(self):
+        r"""The Singular polynomial ring of the representatives.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], [var('m')]).cover_ring()
+            Multivariate Polynomial Ring in dynsymcos0, dynsymsin0, m over Rational Field
+        """
+        return self._ring.ring
+
+    def _element_constructor_(self, x):
+        if isinstance(x, Element) and x.parent() is self.cover_ring():
+            return self.element_class(self, self._ring.reduce(x))
+        if isinstance(x, Expression):
+            return self.element_class(self, self._ring.reduce(self._ring.convert(x)))
+        if x in QQ:
+            return self.element_class(self, self.cover_ring()(QQ(x)))
+        raise AnalysisError("expected a symbolic expression, a rational number or a "
+                            f"polynomial of the cover ring, got {x!r} ({type(x).__name__})",
+                            entry="TrigAlgebra")
+
+    def ngens(self):
+        r"""The number of generators: two per angle, one per symbol and atom.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], [var('m')]).ngens()
+            3
+        """
+        return self.cover_ring().ngens()
+
+    def gens(self):
+        r"""The generators: the cosines, the sines, the symbols, the atoms.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a'), var('b')], [var('m')]).gens()
+            (cos(a), cos(b), sin(a), sin(b), m)
+        """
+        return tuple(self(g) for g in self.cover_ring().gens())
+
+    def gen(self, i=0):
+        r"""The generator of index ``i`` (see :meth:`gens`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], [var('m')]).gen(2)
+            m
+        """
+        return self.gens()[i]
+
+    def trig(self, angle):
+        r"""The pair `(\cos, \sin)` of ``angle`` as elements.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); TrigAlgebra([a], []).trig(-a)
+            (cos(a), -sin(a))
+        """
+        return tuple(self(x) for x in self._ring.trig(angle))
+
+    def angles(self):
+        r"""The angles whose cosine and sine are generators.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a'), -var('a'), pi/2], []).angles()
+            [a]
+        """
+        return self._ring.angles()
+
+    def characteristic(self):
+        r"""Zero: the algebra contains `\QQ`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], []).characteristic()
+            0
+        """
+        return ZZ.zero()
+
+    def is_integral_domain(self, proof=True):
+        r"""``True``: every `c^2 + s^2 - 1` is irreducible and they involve
+        disjoint variables, so the ideal is prime.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], []).is_integral_domain()
+            True
+        """
+        return True
+
+    def some_elements(self):
+        r"""A few elements for the tests: the generators, sums, squares, a
+        product over every generator.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); TrigAlgebra([a], []).some_elements()[:6]
+            [0, 1, cos(a), sin(a), cos(a) + sin(a), -sin(a)^2 + 1]
+        """
+        gens = list(self.gens())
+        elements = [self.zero(), self.one()] + gens
+        for g, h in zip(gens, gens[1:] + gens[:1]):
+            elements += [g + h, g * g, 2 * g * h - g / 2]
+        product = self.one()
+        for g in gens:
+            product *= g + 1
+        return elements + [product]
+
+    def _test_circle(self, **options):
+        r"""
+        `c^2 + s^2` is `1` for every angle, and the representatives have
+        degree at most one in each cosine.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a'), var('b')], [var('m')])._test_circle()
+        """
+        tester = self._tester(**options)
+        for angle in self.angles():
+            c, s = self.trig(angle)
+            tester.assertEqual(c * c + s * s, self.one())
+            cosine = c.lift()
+            for x in tester.some_elements():
+                tester.assertLessEqual((x * x).lift().degree(cosine), 1)
+
+    def _test_symbolic_roundtrip(self, **options):
+        r"""
+        From the symbolic ring and back gives the same expression; to the
+        symbolic ring and back is the identity when there are no atoms (an
+        atom such as `\sqrt 2` is an independent generator of the algebra,
+        but the symbolic ring knows `\sqrt 2^2 = 2`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], [var('m')])._test_symbolic_roundtrip()
+            sage: A = TrigAlgebra([var('a')], [var('m')], [sqrt(2)])
+            sage: A._test_symbolic_roundtrip()
+            sage: x = A.gen(3); x, A(SR(x*x)) == x*x
+            (sqrt(2), False)
+        """
+        tester = self._tester(**options)
+        for x in tester.some_elements():
+            e = SR(x)
+            tester.assertTrue((SR(self(e)) - e).expand().is_trivial_zero())
+            if not self._ring.atoms():
+                tester.assertEqual(self(e), x)
