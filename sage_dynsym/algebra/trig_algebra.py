@@ -60,6 +60,7 @@ REFERENCES:
   ch. 5 §2 (quotient rings `k[x]/I`).
 """
 from sage.categories.commutative_algebras import CommutativeAlgebras
+from sage.categories.fields import Fields
 from sage.misc.latex import latex
 from sage.rings.integer_ring import ZZ
 from sage.rings.rational_field import QQ
@@ -73,7 +74,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from .trigonometric import TrigPolynomialRing
 
-__all__ = ['TrigAlgebra', 'TrigAlgebraElement']
+__all__ = ['TrigAlgebra', 'TrigAlgebraElement', 'TrigFractions', 'TrigFraction']
 
 
 class TrigAlgebraElement(CommutativeAlgebraElement):
@@ -407,6 +408,20 @@ class TrigAlgebra(UniqueRepresentation, Parent):
             product *= g + 1
         return elements + [product]
 
+    def fraction_field(self):
+        r"""The field of fractions of the algebra (an integral domain): a
+        :class:`TrigFractions`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); K = TrigAlgebra([a], []).fraction_field(); K
+            Fractions of Algebra of polynomials in cos(a), sin(a) over Rational Field modulo cos^2 + sin^2 = 1
+            sage: K(sin(a)^2/(1 - cos(a)))
+            cos(a) + 1
+        """
+        return TrigFractions(self)
+
     def _test_circle(self, **options):
         r"""
         `c^2 + s^2` is `1` for every angle, and the representatives have
@@ -447,3 +462,252 @@ class TrigAlgebra(UniqueRepresentation, Parent):
             tester.assertTrue((SR(self(e)) - e).expand().is_trivial_zero())
             if not self._ring.atoms():
                 tester.assertEqual(self(e), x)
+
+
+class TrigFraction(Element):
+    r"""
+    An element of :class:`TrigFractions`: a fraction of polynomials of the
+    cover ring. The arithmetic is that of the fractions (Singular's, the
+    greatest common divisors cancelled); the reduction modulo
+    `\cos^2 + \sin^2 = 1` is done by :meth:`normal`, and by the comparisons
+    (so that ``x == 0`` exactly when ``x`` vanishes as a function).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+        sage: a, m = var('a m'); K = TrigAlgebra([a], [m]).fraction_field()
+        sage: x = K(cos(a))^2 + K(sin(a))^2; x.numerator()
+        dynsymcos0^2 + dynsymsin0^2
+        sage: x == 1, x.normal().numerator()
+        (True, 1)
+        sage: TestSuite(x).run()
+    """
+
+    def __init__(self, parent, value):
+        r"""
+        INPUT:
+
+        - ``parent`` -- a :class:`TrigFractions`
+        - ``value`` -- an element of the fraction field of the cover ring
+
+        TESTS::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: K = TrigAlgebra([var('a')], []).fraction_field(); K(1/2), K(1/2).numerator()
+            (1/2, 1/2)
+        """
+        Element.__init__(self, parent)
+        self._value = value
+
+    def numerator(self):
+        r"""The numerator, a polynomial of the cover ring.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); K = TrigAlgebra([a], []).fraction_field()
+            sage: K(cos(a)/sin(a)).numerator()
+            dynsymcos0
+        """
+        return self._value.numerator()
+
+    def denominator(self):
+        r"""The denominator, a polynomial of the cover ring.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); K = TrigAlgebra([a], []).fraction_field()
+            sage: K(cos(a)/sin(a)).denominator()
+            dynsymsin0
+        """
+        return self._value.denominator()
+
+    def normal(self):
+        r"""The fraction with numerator and denominator reduced modulo
+        `\cos^2 + \sin^2 = 1` and their common factors cancelled.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); K = TrigAlgebra([a], []).fraction_field()
+            sage: x = K(cos(a)^2 - 1) / K(sin(a)); x.numerator(), x.normal().numerator()
+            (dynsymcos0^2 - 1, -dynsymsin0)
+        """
+        reduce, field = self.parent().algebra().polynomial_ring().reduce, self._value.parent()
+        return self._new(field(reduce(self.numerator())) / field(reduce(self.denominator())))
+
+    def _new(self, value):
+        return self.parent().element_class(self.parent(), value)
+
+    def _add_(self, other):
+        return self._new(self._value + other._value)
+
+    def _sub_(self, other):
+        return self._new(self._value - other._value)
+
+    def _neg_(self):
+        return self._new(-self._value)
+
+    def _mul_(self, other):
+        return self._new(self._value * other._value)
+
+    def _div_(self, other):
+        return self._new(self._value / other._value)
+
+    def __invert__(self):
+        return self._new(~self._value)
+
+    def __bool__(self):
+        return not self.parent().algebra().polynomial_ring().reduce(self.numerator()).is_zero()
+
+    def _richcmp_(self, other, op):
+        # a field of functions: equality (zero difference modulo the circle
+        # relations) is the only comparison
+        difference = bool(self._sub_(other))
+        return richcmp(difference, False, op)
+
+    def __hash__(self):
+        # equal fractions have the same reduced, cancelled, monic form
+        x = self.normal()
+        unit = x.denominator().lc()
+        return hash((x.numerator() / unit, x.denominator() / unit))
+
+    def _symbolic_(self, ring):
+        r"""The fraction as a symbolic expression, in the shortest form found
+        (see :meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.simplest_fraction`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a, m = var('a m'); K = TrigAlgebra([a], [m]).fraction_field()
+            sage: SR(K(m*sin(a)^2)/K(m - m*cos(a)))
+            cos(a) + 1
+        """
+        return ring(self.parent().algebra().polynomial_ring().simplest_fraction(
+            self.numerator(), self.denominator()))
+
+    def _repr_(self):
+        return repr(self._symbolic_(SR))
+
+    def _latex_(self):
+        return latex(self._symbolic_(SR))
+
+    def __reduce__(self):
+        return self.parent(), (self._value,)
+
+
+class TrigFractions(UniqueRepresentation, Parent):
+    r"""
+    The field of fractions of a :class:`TrigAlgebra` (an integral domain):
+    rational functions of the parameters and of the sines and cosines,
+    equal when they are equal as functions.
+
+    INPUT:
+
+    - ``algebra`` -- a :class:`TrigAlgebra`
+
+    Symbolic expressions that are rational functions of the generators
+    convert (inexact numbers are refused: see
+    :class:`~sage_dynsym.algebra.trig_linear.TrigFractionField` for their
+    rational values).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+        sage: a, m = var('a m'); A = TrigAlgebra([a], [m]); K = A.fraction_field()
+        sage: K(m/sin(a)) * K(sin(a)) == K(m), K(A(cos(a))) == K(cos(a))
+        (True, True)
+        sage: TestSuite(K).run()
+
+    TESTS::
+
+        sage: K(sqrt(m))
+        Traceback (most recent call last):
+        ...
+        NotPolynomial: sqrt(m) is not a rational function of the generators
+    """
+    Element = TrigFraction
+
+    def __init__(self, algebra):
+        r"""
+        TESTS::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], []).fraction_field().category()
+            Category of fields
+        """
+        self._algebra = algebra
+        self._field = algebra.cover_ring().fraction_field()
+        Parent.__init__(self, base=QQ, category=Fields())
+        self._populate_coercion_lists_(coerce_list=[algebra, algebra.cover_ring(), self._field])
+
+    def _repr_(self):
+        return f"Fractions of {self._algebra}"
+
+    def _latex_(self):
+        return r"\operatorname{Frac}(%s)" % latex(self._algebra)
+
+    def algebra(self):
+        r"""The :class:`TrigAlgebra` of the numerators and denominators.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: A = TrigAlgebra([var('a')], []); A.fraction_field().algebra() is A
+            True
+        """
+        return self._algebra
+
+    def _element_constructor_(self, x):
+        if isinstance(x, Element) and x.parent() is self._algebra:
+            x = x.lift()
+        if isinstance(x, Expression):
+            numerator, denominator = self._algebra.polynomial_ring().fraction(x)
+            return self.element_class(self, self._field(numerator) / self._field(denominator))
+        if isinstance(x, Element) and self._field.has_coerce_map_from(x.parent()):
+            return self.element_class(self, self._field(x))
+        if x in QQ:
+            return self.element_class(self, self._field(QQ(x)))
+        raise AnalysisError("expected a symbolic expression, a rational number or an element "
+                            f"of the algebra, got {x!r} ({type(x).__name__})",
+                            entry="TrigFractions")
+
+    def characteristic(self):
+        r"""Zero.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a')], []).fraction_field().characteristic()
+            0
+        """
+        return ZZ.zero()
+
+    def some_elements(self):
+        r"""The algebra's elements for the tests, and quotients of them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); TrigAlgebra([a], []).fraction_field().some_elements()[-1]
+            1/2*(4*cos(a) - 1)*sin(a)/((cos(a) + 1)*(sin(a) + 1))
+        """
+        elements = [self(x) for x in self._algebra.some_elements()]
+        nonzero = [x for x in elements if x]
+        return elements + [x / y for x, y in zip(nonzero, nonzero[1:])]
+
+    def _test_circle(self, **options):
+        r"""
+        `c^2 + s^2 = 1` and `c/s \cdot s/c = 1` for every angle.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: TrigAlgebra([var('a'), var('b')], []).fraction_field()._test_circle()
+        """
+        tester = self._tester(**options)
+        for angle in self._algebra.angles():
+            c, s = (self(x) for x in self._algebra.trig(angle))
+            tester.assertEqual(c * c + s * s, self.one())
+            tester.assertTrue((c / s) * (s / c) == self.one())
