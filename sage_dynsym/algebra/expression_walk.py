@@ -43,6 +43,7 @@ valued `1`)::
     sage: sorted(P.found, key=str)
     [('atom', sqrt(2)), ('cos', 2*x), ('symbol', m), ('symbol', m), ('symbol', x)]
 """
+from functools import reduce
 import operator
 
 from sage.functions.trig import sin, cos, tan, cot, sec, csc
@@ -243,10 +244,7 @@ class ExpressionWalker:
             sage: ExpressionWalker().add([1, 2, 3])
             6
         """
-        total = values[0]
-        for v in values[1:]:
-            total = total + v
-        return total
+        return reduce(operator.add, values)
 
     def mul(self, values):
         r"""The product of ``values`` (a nonempty list).
@@ -257,10 +255,7 @@ class ExpressionWalker:
             sage: ExpressionWalker().mul([2, 3, 4])
             24
         """
-        product = values[0]
-        for v in values[1:]:
-            product = product * v
-        return product
+        return reduce(operator.mul, values)
 
     def power(self, value, k):
         r"""``value`` to the integer power ``k``.
@@ -272,6 +267,52 @@ class ExpressionWalker:
             1/4
         """
         return value ** k
+
+
+class ExpressionScan(ExpressionWalker):
+    r"""
+    A walk that only registers what it meets (the first pass of a
+    translation): the arithmetic gives ``None``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.expression_walk import ExpressionScan
+        sage: class Symbols(ExpressionScan):
+        ....:     def __init__(self):
+        ....:         self.found = set()
+        ....:     def symbol(self, e):
+        ....:         self.found.add(e)
+        ....:     def number(self, e):
+        ....:         pass
+        ....:     def atom(self, e):
+        ....:         pass
+        sage: S = Symbols(); S.walk(var('x')^2*var('y') + sqrt(2)); sorted(S.found, key=str)
+        [x, y]
+    """
+
+    def add(self, values):
+        r"""Nothing: a scan computes no value.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.expression_walk import ExpressionScan
+            sage: ExpressionScan().add([None, None]) is None
+            True
+        """
+        return None
+
+    mul = add
+
+    def power(self, value, k):
+        r"""Nothing: a scan computes no value.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.expression_walk import ExpressionScan
+            sage: ExpressionScan().power(None, 2) is None
+            True
+        """
+        return None
 
 
 def split_angle(op, argument, is_angle, refuse=AnalysisError):

@@ -83,8 +83,8 @@ from sage.rings.real_mpfr import RR
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .expression_walk import (ExpressionWalker, TRIGONOMETRIC, MAX_ANGLE_MULTIPLE, split_angle,
-                              angle_sum, trig_value)
+from .expression_walk import (ExpressionWalker, ExpressionScan, TRIGONOMETRIC, MAX_ANGLE_MULTIPLE,
+                              split_angle, angle_sum, trig_value)
 from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
 
 __all__ = ['Translation', 'NotAlgebraic', 'exact_rational', 'translate_expressions',
@@ -171,7 +171,7 @@ class _TranslationWalk(ExpressionWalker):
         return self.angle(op, [(self.index[str(v)], k) for v, k in multiples], rest)
 
 
-class _Registration(_TranslationWalk):
+class _Registration(_TranslationWalk, ExpressionScan):
     r"""
     The first pass of :class:`Translation`: which unknowns occur as angles
     and which plainly, and the parameters and atoms (by name).
@@ -208,14 +208,6 @@ class _Registration(_TranslationWalk):
         if not rest.is_zero():
             self.parameter(cos(rest))
             self.parameter(sin(rest))
-
-    def add(self, values):
-        return None
-
-    mul = add
-
-    def power(self, value, k):
-        return None
 
 
 class _Evaluation(_TranslationWalk):

@@ -48,7 +48,7 @@ from sage.structure.unique_representation import UniqueRepresentation
 
 from ..arguments import expression_argument
 from ..errors import AnalysisError
-from .expression_walk import ExpressionWalker
+from .expression_walk import ExpressionWalker, ExpressionScan
 
 _ZERO, _ONE = SR(0), SR(1)
 
@@ -97,7 +97,7 @@ def _unsigned_angle(angle):
     return angle
 
 
-class _Scan(ExpressionWalker):
+class _Scan(ExpressionScan):
     r"""
     What a polynomial ring needs to hold expressions: the arguments of their
     sines and cosines in ``angles``, their non-polynomial parts (constants
@@ -150,14 +150,6 @@ class _Scan(ExpressionWalker):
 
     def takes_power(self, k):
         return self.fractions or k > 0
-
-    def add(self, values):
-        return None
-
-    mul = add
-
-    def power(self, value, k):
-        return None
 
 
 class _Fraction(ExpressionWalker):
