@@ -53,6 +53,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['ExpressionWalker', 'ExpressionScan', 'TRIGONOMETRIC', 'MAX_ANGLE_MULTIPLE',
+           'integer_exponent', 'split_angle', 'angle_sum', 'trig_value']
+
 #: The trigonometric functions the walk recognises.
 TRIGONOMETRIC = (sin, cos, tan, cot, sec, csc)
 

@@ -235,13 +235,28 @@ class TrigFractionField:
             top += 1
         return A, B, pivots
 
+    def pivot_columns(self, A):
+        r"""
+        The indices of the pivot columns of ``A`` (a list of rows) in
+        Gauss--Jordan elimination: the first columns, from the left, that are
+        independent of the ones before them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
+            sage: a = var('a'); K = TrigFractionField([cos(a)])
+            sage: K.pivot_columns(K.matrix([[cos(a), cos(a)^2, sin(a)], [1, cos(a), 0]]))
+            [0, 2]
+        """
+        return self._eliminate(A)[2] if A else []
+
     def rank(self, A):
         r"""
         The rank of ``A`` (a list of rows) as a matrix of functions.
 
         EXAMPLES: see the module documentation.
         """
-        return len(self._eliminate(A)[2]) if A else 0
+        return len(self.pivot_columns(A))
 
     def solve_right(self, A, B):
         r"""

@@ -19,6 +19,13 @@ still not polynomial (e.g. `\sqrt{x}` of a coordinate) use
 :class:`SymbolicBackend`. :func:`trig_rational_simplify` applies the same
 reduction to symbolic rational expressions (Routh functions, Hamiltonians).
 
+The Sage parent of the reduced polynomials, with elements, coercions and
+the category checks, is :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`
+(``TrigAlgebra(R)`` for a ring ``R`` of this module); the ring here is the
+arithmetic on representatives that a backend needs (one reduction at the
+end instead of one per product). Expressions are read by the walk of
+:mod:`~sage_dynsym.algebra.expression_walk`.
+
 EXAMPLES::
 
     sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
@@ -49,6 +56,9 @@ from sage.structure.unique_representation import UniqueRepresentation
 from ..arguments import expression_argument
 from ..errors import AnalysisError
 from .expression_walk import ExpressionWalker, ExpressionScan
+
+__all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
+           'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
 
 _ZERO, _ONE = SR(0), SR(1)
 
@@ -393,7 +403,9 @@ class TrigPolynomialRing(UniqueRepresentation):
     - ``symbols`` -- every other symbolic variable that may appear
 
     Converting an expression that is not polynomial in these raises
-    :class:`NotPolynomial`.
+    :class:`NotPolynomial`. Rings with the same generators are one object
+    (``UniqueRepresentation``); their Sage parent is
+    :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`.
 
     EXAMPLES::
 
@@ -407,6 +419,11 @@ class TrigPolynomialRing(UniqueRepresentation):
         Traceback (most recent call last):
         ...
         NotPolynomial: 1/a is not polynomial in the rotation variables and parameters
+        sage: R is TrigPolynomialRing([a, -a], [da, l, l])
+        True
+        sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+        sage: TrigAlgebra(R)(l^2*cos(a)^2 + l^2*sin(a)^2)
+        l^2
     """
 
     @staticmethod

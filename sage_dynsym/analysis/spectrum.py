@@ -98,6 +98,8 @@ from .hurwitz import (lienard_chipart_conditions, real_negative_roots_conditions
 from ..algebra.regions import simplify_region
 from ..algebra.translation import ParameterAtoms
 
+__all__ = ['SpectrumRegions', 'spectrum_regions']
+
 
 def _as_relations(expressions):
     return [SR(e) > 0 for e in expressions]
