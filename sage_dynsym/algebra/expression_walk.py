@@ -393,20 +393,28 @@ def angle_sum(C, S, multiples, pair):
     return C, S
 
 
-def trig_value(op, C, S):
+def trig_value(op, C, S, one=1, divide=operator.truediv):
     r"""
     The trigonometric function ``op`` of an angle whose cosine and sine are
-    ``C`` and ``S``.
+    ``C`` and ``S``, in an arithmetic whose one is ``one`` and quotient
+    ``divide``.
 
     EXAMPLES::
 
         sage: from sage_dynsym.algebra.expression_walk import trig_value
         sage: [trig_value(f, QQ(3/5), QQ(4/5)) for f in (sin, cos, tan, cot, sec, csc)]
         [4/5, 3/5, 4/3, 3/4, 5/3, 5/4]
+
+    With fractions written as pairs ``(numerator, denominator)``::
+
+        sage: def divide(x, y):
+        ....:     return x[0]*y[1], x[1]*y[0]
+        sage: trig_value(sec, (3, 5), (4, 5), one=(1, 1), divide=divide)
+        (5, 3)
     """
     if op is sin:
         return S
     if op is cos:
         return C
-    return {tan: lambda: S / C, cot: lambda: C / S, sec: lambda: 1 / C,
-            csc: lambda: 1 / S}[op]()
+    return {tan: lambda: divide(S, C), cot: lambda: divide(C, S), sec: lambda: divide(one, C),
+            csc: lambda: divide(one, S)}[op]()

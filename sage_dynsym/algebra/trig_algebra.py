@@ -18,8 +18,9 @@ they are equal as functions. Each `c_i^2 + s_i^2 - 1` is irreducible and the
 ideal is prime, so `A` is an integral domain.
 
 Symbolic expressions convert into the algebra (``A(expr)``: the walk of
-:mod:`~sage_dynsym.algebra.expression_walk`; an expression that is not a
-polynomial in the generators raises
+:mod:`~sage_dynsym.algebra.expression_walk`; sines and cosines of integer
+multiples of the angles that are symbols, and of their sums, are expanded;
+an expression that is not a polynomial in the generators raises
 :class:`~sage_dynsym.algebra.trigonometric.NotPolynomial`) and elements
 back (``SR(x)``, in the recursive form of
 :meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.to_symbolic`).
@@ -45,6 +46,11 @@ EXAMPLES::
     sage: latex(A(m*sin(a)))
     m \sin\left(a\right)
     sage: TestSuite(A).run()
+
+Multiple angles and sums are expanded::
+
+    sage: A(sin(2*a - b)), A(cos(a + b)^2 - cos(a - b)^2) == A(-sin(2*a)*sin(2*b))
+    (2*cos(a)*cos(b)*sin(a) + 2*sin(a)^2*sin(b) - sin(b), True)
 
 Expressions that are not polynomial in the generators are refused::
 
@@ -304,7 +310,8 @@ class TrigAlgebra(UniqueRepresentation, Parent):
         if isinstance(x, Element) and x.parent() is self.cover_ring():
             return self.element_class(self, self._ring.reduce(x))
         if isinstance(x, Expression):
-            return self.element_class(self, self._ring.reduce(self._ring.convert(x)))
+            return self.element_class(self, self._ring.reduce(self._ring.convert(x,
+                                                                                  multiples=True)))
         if x in QQ:
             return self.element_class(self, self.cover_ring()(QQ(x)))
         raise AnalysisError("expected a symbolic expression, a rational number or a "
@@ -665,7 +672,7 @@ class TrigFractions(UniqueRepresentation, Parent):
         if isinstance(x, Element) and x.parent() is self._algebra:
             x = x.lift()
         if isinstance(x, Expression):
-            numerator, denominator = self._algebra.polynomial_ring().fraction(x)
+            numerator, denominator = self._algebra.polynomial_ring().fraction(x, multiples=True)
             return self.element_class(self, self._field(numerator) / self._field(denominator))
         if isinstance(x, Element) and self._field.has_coerce_map_from(x.parent()):
             return self.element_class(self, self._field(x))

@@ -55,7 +55,7 @@ from sage.structure.unique_representation import UniqueRepresentation
 
 from ..arguments import expression_argument
 from ..errors import AnalysisError
-from .expression_walk import ExpressionWalker, ExpressionScan
+from .expression_walk import ExpressionWalker, ExpressionScan, split_angle, angle_sum, trig_value
 
 __all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
            'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
@@ -169,20 +169,39 @@ class _Fraction(ExpressionWalker):
     generator, and of the cosines and sines of the negative angles, to its
     ring element). Numbers are rational (``exact``: only integers and
     rationals, else the rational value of an inexact number); numerator
-    and denominator of a part get at most ``limit`` terms. Anything else
-    raises :class:`NotPolynomial`.
+    and denominator of a part get at most ``limit`` terms. With ``pairs``
+    (a dict: angles that are symbols to their pairs ``(c, s)``), a
+    trigonometric function of integer multiples of them plus a generator
+    angle is expanded by the addition formulas. Anything else raises
+    :class:`NotPolynomial`.
 
     EXAMPLES::
 
         sage: from sage_dynsym.algebra.trigonometric import _Fraction
-        sage: R.<c, m> = QQ[]; a, M = var('a M')
+        sage: R.<c, s, m> = QQ[]; a, M = var('a M')
         sage: _Fraction(R, {cos(a): c, M: m}, exact=True).walk(M/cos(a) + cos(a)/M^2)
         (m^3 + c^2, c*m^2)
+        sage: _Fraction(R, {}, exact=True, pairs={a: (c, s)}).walk(tan(2*a))
+        (2*c*s, c^2 - s^2)
     """
 
-    def __init__(self, ring, generators, exact, limit=None):
+    def __init__(self, ring, generators, exact, limit=None, pairs=None):
         self.ring, self.generators, self.exact, self.limit = ring, generators, exact, limit
+        self.pairs = pairs or {}
         self.one, self.zero = ring.one(), ring.zero()
+
+    def trig(self, op, e):
+        if not self.pairs:
+            return self.atom(e)
+        multiples, rest = split_angle(op, e.operands()[0], self.pairs.__contains__,
+                                      NotPolynomial)
+        C, S = (self.one, self.zero) if rest.is_zero() else (self.generators.get(rest.cos()),
+                                                             self.generators.get(rest.sin()))
+        if not multiples or C is None or S is None:
+            return self.atom(e)
+        C, S = angle_sum(C, S, multiples, self.pairs.get)
+        return trig_value(op, (C, self.one), (S, self.one), one=(self.one, self.one),
+                          divide=lambda x, y: (x[0] * y[1], x[1] * y[0]))
 
     def checked(self, n, d):
         if self.limit is not None and n.number_of_terms() + d.number_of_terms() > self.limit:
@@ -547,9 +566,17 @@ class TrigPolynomialRing(UniqueRepresentation):
         """
         return list(self._atoms)
 
-    def convert(self, expr):
+    def _walk(self, exact, limit=None, multiples=False):
+        # multiples: the angles that are symbols, for the addition formulas
+        pairs = {a: p for a, p in self._pairs.items() if a.is_symbol()} if multiples else None
+        return _Fraction(self.ring, self._elements, exact, limit, pairs)
+
+    def convert(self, expr, multiples=False):
         r"""The ring element of the symbolic expression ``expr``; raises
         :class:`NotPolynomial` if it is not polynomial in the generators.
+        With ``multiples``, sines and cosines of integer multiples of the
+        angles that are symbols, and of their sums, are expanded (else each
+        argument must be an angle of the ring).
 
         EXAMPLES::
 
@@ -558,10 +585,16 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.convert(l*da*cos(a))
             dynsymcos0*da*l
+            sage: R.convert(sin(2*a), multiples=True)
+            2*dynsymcos0*dynsymsin0
+            sage: R.convert(sin(2*a))
+            Traceback (most recent call last):
+            ...
+            NotPolynomial: sin(2*a) is not polynomial in the rotation variables and parameters
         """
         expr = SR(expr)
         try:
-            numerator, denominator = _Fraction(self.ring, self._elements, exact=False).walk(expr)
+            numerator, denominator = self._walk(False, multiples=multiples).walk(expr)
         except NotPolynomial as error:
             raise NotPolynomial(f"{expr} is not polynomial in the rotation variables "
                                 "and parameters") from error
@@ -707,7 +740,7 @@ class TrigPolynomialRing(UniqueRepresentation):
                  for e, group in groups.items()]
         return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
 
-    def fraction(self, expr, limit=None):
+    def fraction(self, expr, limit=None, multiples=False):
         r"""
         ``expr``, a rational function of the generators of the ring (see
         :meth:`for_expressions` with ``fractions=True``), as a pair
@@ -716,7 +749,8 @@ class TrigPolynomialRing(UniqueRepresentation):
         Raises :class:`NotPolynomial` if ``expr`` is not such a function, or
         if numerator or denominator of a part get more than ``limit`` terms
         (common denominators of nested fractions grow fast, and their
-        greatest common divisors take minutes).
+        greatest common divisors take minutes). ``multiples``: as in
+        :meth:`convert`.
 
         EXAMPLES::
 
@@ -726,8 +760,10 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: R = TrigPolynomialRing.for_expressions([e], fractions=True)
             sage: [R.to_symbolic(p) for p in R.fraction(e)]
             [m^2 + cos(a), m*sin(a)]
+            sage: [R.to_symbolic(p) for p in R.fraction(tan(a - 2*a), multiples=True)]
+            [-sin(a), cos(a)]
         """
-        return _Fraction(self.ring, self._elements, exact=True, limit=limit).walk(SR(expr))
+        return self._walk(True, limit, multiples).walk(SR(expr))
 
     def simplest_fraction(self, numerator, denominator=1, printed=False):
         r"""
