@@ -244,19 +244,15 @@ class ExpressionWalker:
         EXAMPLES::
 
             sage: from sage_dynsym.algebra.expression_walk import ExpressionWalker
-            sage: ExpressionWalker().add([1, 2, 3])
-            6
+            sage: ExpressionWalker().add([1, 2, 3]), ExpressionWalker().mul([2, 3, 4])
+            (6, 24)
         """
         return reduce(operator.add, values)
 
     def mul(self, values):
         r"""The product of ``values`` (a nonempty list).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym.algebra.expression_walk import ExpressionWalker
-            sage: ExpressionWalker().mul([2, 3, 4])
-            24
+        EXAMPLES: see :meth:`add`.
         """
         return reduce(operator.mul, values)
 
