@@ -78,7 +78,7 @@ from sage.symbolic.expression import Expression
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .trigonometric import TrigPolynomialRing
+from .trigonometric import TrigPolynomialRing, NotPolynomial
 
 __all__ = ['TrigAlgebra', 'TrigAlgebraElement', 'TrigFractions', 'TrigFraction']
 
@@ -173,13 +173,13 @@ class TrigAlgebraElement(CommutativeAlgebraElement):
             sage: A(1) / A(cos(a))
             Traceback (most recent call last):
             ...
-            ArithmeticError: TrigAlgebra: cos(a) is not a unit (a nonzero rational number); for fractions use TrigFractionField
+            NotPolynomial: TrigAlgebra: 1/(cos(a)) is not in the algebra (only nonzero rational numbers divide); divide in A.fraction_field()
         """
         divisor = other.lift()
         if divisor.is_constant() and not divisor.is_zero():
             return self._new(self._lift / divisor.constant_coefficient())
-        raise ArithmeticError(f"TrigAlgebra: {other} is not a unit (a nonzero rational "
-                              "number); for fractions use TrigFractionField")
+        raise NotPolynomial(f"TrigAlgebra: {self}/({other}) is not in the algebra (only nonzero "
+                            "rational numbers divide); divide in A.fraction_field()")
 
     def _richcmp_(self, other, op):
         # the representatives are a normal form: equal elements, equal lifts
@@ -557,10 +557,35 @@ class TrigFraction(Element):
         return self._new(self._value * other._value)
 
     def _div_(self, other):
-        return self._new(self._value / other._value)
+        r"""
+        The quotient; a divisor that vanishes as a function (modulo the
+        circle relations, even if its numerator is not the zero polynomial)
+        raises ``ZeroDivisionError``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: a = var('a'); K = TrigAlgebra([a], []).fraction_field()
+            sage: K(sin(a)) / K(cos(a)), ~K(cos(a))
+            (sin(a)/cos(a), 1/cos(a))
+            sage: K(1) / K(cos(a)^2 + sin(a)^2 - 1)
+            Traceback (most recent call last):
+            ...
+            ZeroDivisionError: TrigFractions: cos(a)^2 + sin(a)^2 - 1 is zero modulo cos^2 + sin^2 = 1
+        """
+        return self._new(self._value / other._nonzero()._value)
 
     def __invert__(self):
-        return self._new(~self._value)
+        return self._new(~self._nonzero()._value)
+
+    def _nonzero(self):
+        if not self:
+            # the numerator as written (reduced it would print 0)
+            written = self.parent().algebra().polynomial_ring().to_symbolic(self.numerator(),
+                                                                            reduced=True)
+            raise ZeroDivisionError(f"TrigFractions: {written} is zero modulo "
+                                    "cos^2 + sin^2 = 1")
+        return self
 
     def __bool__(self):
         return not self.parent().algebra().polynomial_ring().reduce(self.numerator()).is_zero()
