@@ -11,6 +11,8 @@ in sines and cosines, fraction-free determinants, and linear algebra on
 spaces of polynomials over the field of the parameters.
 
 The modules: :mod:`~sage_dynsym.algebra.polynomials` (conversions),
+:mod:`~sage_dynsym.algebra.expression_walk` (the one walk over symbolic
+expressions under every translation into polynomials),
 :mod:`~sage_dynsym.algebra.translation`,
 :mod:`~sage_dynsym.algebra.decomposition`,
 :mod:`~sage_dynsym.algebra.solving`, :mod:`~sage_dynsym.algebra.radicals`,
@@ -19,6 +21,8 @@ The modules: :mod:`~sage_dynsym.algebra.polynomials` (conversions),
 :mod:`~sage_dynsym.algebra.regions`,
 :mod:`~sage_dynsym.algebra.quantifier_elimination`,
 :mod:`~sage_dynsym.algebra.trigonometric`,
+:mod:`~sage_dynsym.algebra.trig_algebra` (the Sage parents of trigonometric
+polynomials and fractions),
 :mod:`~sage_dynsym.algebra.trig_linear`,
 :mod:`~sage_dynsym.algebra.determinants`, :mod:`~sage_dynsym.algebra.size`
 and :mod:`~sage_dynsym.algebra.polynomial_spaces`.
@@ -35,7 +39,8 @@ from .number_fields import AlgebraicConstants
 from .radicals import roots_in_radicals, real_algebraic_roots
 from .size import polynomial_terms, determinant_terms, matrix_terms
 from .solving import solve_exactly, normalize
-from .translation import Translation, NotAlgebraic
+from .translation import Translation, NotAlgebraic, ParameterAtoms
+from .trig_algebra import TrigAlgebra, TrigFractions
 from .trig_linear import TrigFractionField
 from .trigonometric import TrigPolynomialRing, trig_rational_simplify
 
@@ -45,4 +50,5 @@ __all__ = ['positive_conditions', 'positive_conditions_all', 'nonzero_conditions
            'partition', 'polynomial_terms', 'determinant_terms', 'matrix_terms',
            'solve_exactly', 'normalize', 'Translation', 'NotAlgebraic', 'TrigFractionField',
            'TrigPolynomialRing', 'trig_rational_simplify', 'drop_redundant',
-           'AlgebraicConstants', 'roots_in_radicals', 'real_algebraic_roots']
+           'AlgebraicConstants', 'roots_in_radicals', 'real_algebraic_roots',
+           'ParameterAtoms', 'TrigAlgebra', 'TrigFractions']

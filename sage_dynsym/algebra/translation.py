@@ -73,25 +73,22 @@ TESTS::
 """
 import operator
 
-from sage.functions.trig import sin, cos, tan, cot, sec, csc
+from sage.functions.trig import sin, cos
 from sage.misc.misc_c import prod
 from sage.rings.fraction_field import FractionField
 from sage.rings.integer_ring import ZZ
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 from sage.rings.real_mpfr import RR
-from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
+from .expression_walk import (ExpressionWalker, ExpressionScan, TRIGONOMETRIC, MAX_ANGLE_MULTIPLE,
+                              split_angle, angle_sum, trig_value)
 from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
 
-#: The largest integer multiple `k q` of an unknown angle that is expanded
-#: by the multiple-angle formulas (higher multiples are refused as not
-#: algebraic rather than producing huge polynomials).
-MAX_ANGLE_MULTIPLE = 24
-
-_TRIG = (sin, cos, tan, cot, sec, csc)
+__all__ = ['Translation', 'NotAlgebraic', 'exact_rational', 'translate_expressions',
+           'expand_angles', 'ParameterAtoms', 'MAX_ANGLE_MULTIPLE']
 
 
 class NotAlgebraic(AnalysisError):
@@ -144,6 +141,107 @@ def exact_rational(number, what="equations"):
     return value.simplest_rational()
 
 
+class _TranslationWalk(ExpressionWalker):
+    r"""
+    The walk of :class:`Translation`: symbols are unknowns (by name, in
+    ``index``) or parameters; numbers exact rationals; a part free of the
+    unknowns that is not polynomial an atom; an unknown elsewhere than in a
+    polynomial or a trigonometric function of integer multiples of the
+    angles is :class:`NotAlgebraic`.
+    """
+
+    def __init__(self, index):
+        self.index = index
+
+    def is_unknown(self, v):
+        return str(v) in self.index
+
+    def has_unknown(self, e):
+        return any(map(self.is_unknown, e.variables()))
+
+    def atom(self, e):
+        if self.has_unknown(e):
+            raise NotAlgebraic(str(e))
+        return self.parameter(e)
+
+    def trig(self, op, e):
+        if not self.has_unknown(e):
+            return self.atom(e)
+        multiples, rest = split_angle(op, e.operands()[0], self.is_unknown, NotAlgebraic)
+        return self.angle(op, [(self.index[str(v)], k) for v, k in multiples], rest)
+
+
+class _Registration(_TranslationWalk, ExpressionScan):
+    r"""
+    The first pass of :class:`Translation`: which unknowns occur as angles
+    and which plainly, and the parameters and atoms (by name).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.translation import _Registration
+        sage: x, q, a = var('x q a')
+        sage: R = _Registration({'x': 0, 'q': 1}); R.walk(a*x + cos(2*q + a))
+        sage: R.angles, R.plain, R.parameters, R.atoms
+        ({1}, {0}, {'a': a}, {'cos(a)': cos(a), 'sin(a)': sin(a)})
+    """
+
+    def __init__(self, index):
+        super().__init__(index)
+        self.angles, self.plain = set(), set()
+        self.parameters, self.atoms = {}, {}
+
+    def symbol(self, e):
+        i = self.index.get(str(e))
+        if i is None:
+            self.parameters.setdefault(str(e), e)
+        else:
+            self.plain.add(i)
+
+    def number(self, e):
+        exact_rational(e)
+
+    def parameter(self, e):
+        self.atoms.setdefault(str(e), e)
+
+    def angle(self, op, multiples, rest):
+        self.angles.update(i for i, _ in multiples)
+        if not rest.is_zero():
+            self.parameter(cos(rest))
+            self.parameter(sin(rest))
+
+
+class _Evaluation(_TranslationWalk):
+    r"""
+    The second pass of :class:`Translation`: an expression as an element of
+    the fraction field ``field`` of the flat ring, from the elements of the
+    parameters and atoms (``parameters``, by name) and ``generator(i,
+    kind)``, the variable ``'x'``, ``'c'`` or ``'s'`` of the unknown ``i``.
+    An unregistered parameter raises ``KeyError``.
+    """
+
+    def __init__(self, index, parameters, generator, field):
+        super().__init__(index)
+        self.parameters, self.generator, self.field = parameters, generator, field
+
+    def symbol(self, e):
+        i = self.index.get(str(e))
+        return self.parameter(e) if i is None else self.generator(i, 'x')
+
+    def number(self, e):
+        return self.field(exact_rational(e))
+
+    def parameter(self, e):
+        return self.parameters[str(e)]
+
+    def angle(self, op, multiples, rest):
+        one, zero = self.field(1), self.field(0)
+        C, S = (one, zero) if rest.is_zero() else (self.parameter(cos(rest)),
+                                                   self.parameter(sin(rest)))
+        C, S = angle_sum(C, S, multiples, lambda i: (self.generator(i, 'c'),
+                                                     self.generator(i, 's')))
+        return trig_value(op, C, S)
+
+
 class Translation:
     r"""
     The translation of a list of symbolic expressions into polynomials over
@@ -190,17 +288,16 @@ class Translation:
         expressions = [self._prepare(e) for e in expressions]
         extra = [self._prepare(e) for e in extra]
         # first pass: which unknowns are angles, which parameters and atoms occur
-        self._angles, self._plain = set(), set()
-        self._parameter_names, self._atoms = {}, {}
-        self._FF = None
+        found = _Registration(self._index)
         for e in expressions + extra:
-            self._walk(e)
-        mixed = self._angles & self._plain
+            found.walk(e)
+        self._angles = found.angles
+        mixed = self._angles & found.plain
         if mixed:
             u = self._unknowns[min(mixed)]
             raise NotAlgebraic(f"{u} occurs both inside and outside trigonometric "
                                f"functions")
-        self._build_rings()
+        self._build_rings(found.parameters, found.atoms)
         self._equations, self._denominators = [], []
         for e in expressions:
             num, dens = self.numerator(e)
@@ -219,104 +316,12 @@ class Translation:
             e = e.lhs() - e.rhs()
         return e.subs(self._stand_ins) if self._stand_ins else e
 
-    def _unknown_index(self, e):
-        return self._index.get(str(e)) if e.is_symbol() else None
-
-    def _has_unknown(self, e):
-        return any(str(v) in self._index for v in e.variables())
-
-    def _walk(self, e):
-        r"""First pass (``self._FF is None``): register; second pass: the
-        element of the flat fraction field."""
-        if e.is_symbol():
-            i = self._unknown_index(e)
-            if i is not None:
-                if self._FF is None:
-                    self._plain.add(i)
-                    return None
-                return self._FF(self._ring_gen(i, 'x'))
-            return self._parameter(e)
-        if e.is_numeric():
-            q = exact_rational(e)
-            return None if self._FF is None else self._FF(q)
-        op = e.operator()
-        if op is add_vararg or op is mul_vararg:
-            parts = [self._walk(a) for a in e.operands()]
-            if self._FF is None:
-                return None
-            return sum(parts, self._FF(0)) if op is add_vararg else prod(parts, self._FF(1))
-        if op is operator.pow:
-            base, exponent = e.operands()
-            if exponent.is_numeric() and exponent.pyobject() in ZZ:
-                b = self._walk(base)
-                return None if self._FF is None else b ** ZZ(exponent.pyobject())
-            if self._has_unknown(e):
-                raise NotAlgebraic(str(e))
-            return self._atom(e)
-        if op in _TRIG and self._has_unknown(e):
-            return self._trig(op, e.operands()[0])
-        if op is None and not e.variables():      # pi, e, ...
-            return self._atom(e)
-        if self._has_unknown(e):
-            raise NotAlgebraic(str(e))
-        return self._atom(e)
-
-    def _parameter(self, e):
-        return self._coefficient(self._parameter_names, e)
-
-    def _atom(self, e):
-        return self._coefficient(self._atoms, e)
-
-    def _coefficient(self, seen, e):
-        # first pass (no field yet): record e under its name in ``seen``;
-        # second pass: e as a generator of the coefficient field
-        if self._FF is None:
-            seen.setdefault(str(e), e)
-            return None
-        return self._FF(self._param_gen[str(e)])
-
-    def _trig(self, op, argument):
-        # argument = sum k_j u_j + rest, k_j integers, rest free of unknowns
-        multiples = {}
-        rest = argument
-        for v in argument.variables():
-            i = self._index.get(str(v))
-            if i is None:
-                continue
-            k = argument.diff(v)
-            if not k.is_numeric() or k.pyobject() not in ZZ:
-                raise NotAlgebraic(str(op(argument)))
-            k = ZZ(k.pyobject())
-            if abs(k) > MAX_ANGLE_MULTIPLE:
-                raise NotAlgebraic(f"{op(argument)} (multiples of an angle above "
-                                   f"{MAX_ANGLE_MULTIPLE} are not expanded)")
-            multiples[i] = k
-            rest = rest - k * v
-        rest = rest.expand()
-        if self._has_unknown(rest):
-            raise NotAlgebraic(str(op(argument)))
-        if self._FF is None:
-            self._angles.update(multiples)
-            if not rest.is_zero():
-                self._atom(cos(rest))
-                self._atom(sin(rest))
-            return None
-        one, zero = self._FF(1), self._FF(0)
-        C, S = (one, zero) if rest.is_zero() else (self._atom(cos(rest)), self._atom(sin(rest)))
-        for i, k in multiples.items():
-            c, s = self._FF(self._ring_gen(i, 'c')), self._FF(self._ring_gen(i, 's'))
-            if k < 0:
-                s, k = -s, -k
-            for _ in range(k):
-                C, S = C * c - S * s, S * c + C * s
-        return {sin: S, cos: C, tan: S / C, cot: C / S, sec: 1 / C, csc: 1 / S}[op]
-
     # -- rings -----------------------------------------------------------
 
-    def _build_rings(self):
-        params = sorted(self._parameter_names) + sorted(self._atoms)
-        self._params = [self._parameter_names.get(p, self._atoms.get(p)) for p in params]
-        self._is_atom = [p not in self._parameter_names for p in params]
+    def _build_rings(self, parameters, atoms):
+        params = sorted(parameters) + sorted(atoms)
+        self._params = [parameters.get(p, atoms.get(p)) for p in params]
+        self._is_atom = [p not in parameters for p in params]
         # ring variables: the last unknown first, so that a lexicographic
         # order solves the first unknown first; an angle gives (s, c)
         gens, self._generator_of = [], {}
@@ -334,8 +339,11 @@ class Translation:
         names = pnames + vnames
         self._flat = PolynomialRing(QQ, names, len(names)) if names else None
         self._FF = self._flat.fraction_field() if self._flat is not None else QQ
-        self._param_gen = {p: self._flat.gen(k) for k, p in enumerate(params)}
         self._nparams = len(params)
+        FF = self._FF
+        self._evaluation = _Evaluation(
+            self._index, {p: FF(self._flat.gen(k)) for k, p in enumerate(params)},
+            lambda i, kind: FF(self._ring_gen(i, kind)), FF)
 
     def _ring_gen(self, i, kind):
         return self._flat.gen(self._nparams + self._generator_of[(i, kind)])
@@ -547,7 +555,7 @@ class Translation:
         """
         e = self._prepare(expr)
         try:
-            return self._walk(e)
+            return self._evaluation.walk(e)
         except KeyError as err:
             raise AnalysisError(f"{expr} contains {err.args[0]}, which is not "
                                 f"among the registered symbols", entry="translation") from None
@@ -689,6 +697,109 @@ class Translation:
         return SR(F.unit()) * prod((self.symbolic(f) ** e for f, e in F), SR(1))
 
 
+class ParameterAtoms:
+    r"""
+    The atoms among the parameters of ``expressions`` (``cos(alpha)``,
+    ``diff(f(u), u)``, ``sqrt(g*l)``: what :class:`Translation` takes as
+    independent parameters, ``unknowns`` aside) replaced by fresh symbols,
+    and back: for algebra that wants symbols (polynomial rings in the
+    parameters, the size of a polynomial counted in terms of symbols).
+
+    INPUT:
+
+    - ``expressions`` -- symbolic expressions
+    - ``unknowns`` -- (default: none) symbols that are not parameters
+    - ``positive`` -- (default: none) parameters declared positive
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.translation import ParameterAtoms
+        sage: lam, a, k = var('lam a k')
+        sage: A = ParameterAtoms([lam^2 + k*cos(a) + pi], [lam], positive=[k])
+        sage: e = A.expression(lam^2 + k*cos(a) + pi); e.has(cos(a)), e.has(pi)
+        (False, False)
+        sage: bool(A.restore(e) == lam^2 + k*cos(a) + pi)
+        True
+        sage: len(A.symbols()), len(A.positive())
+        (3, 2)
+        sage: A.relations([[A.expression(k*cos(a)) > 0]])
+        [[k*cos(a) > 0]]
+    """
+
+    def __init__(self, expressions, unknowns=(), positive=()):
+        T = Translation([], list(unknowns), extra=list(expressions))
+        names = T.positive_names(positive)
+        self._symbols, self._back = [], {}
+        self._positive = [SR(p) for p in positive]
+        for k, p in enumerate(T.parameters()):
+            s = p if p.is_symbol() else SR.symbol()
+            if not p.is_symbol():
+                self._back[s] = p
+                if f"a{k}" in names:
+                    self._positive.append(s)
+            self._symbols.append(s)
+        self._forward = {v: k for k, v in self._back.items()}
+
+    def symbols(self):
+        r"""The parameters, atoms replaced by their symbols.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import ParameterAtoms
+            sage: ParameterAtoms([var('b')*sqrt(2)]).symbols()[0]
+            b
+        """
+        return list(self._symbols)
+
+    def positive(self):
+        r"""The parameters declared positive and the symbols of the atoms
+        known to be positive (positive constants, square roots).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import ParameterAtoms
+            sage: A = ParameterAtoms([var('b')*sqrt(2)]); A.positive() == [A.symbols()[1]]
+            True
+        """
+        return list(self._positive)
+
+    def expression(self, e):
+        r"""``e`` with the atoms replaced by their symbols.
+
+        EXAMPLES: see the class documentation.
+        """
+        return SR(e).subs(self._forward) if self._forward else SR(e)
+
+    def restore(self, e):
+        r"""``e`` with the symbols of the atoms replaced by the atoms.
+
+        EXAMPLES: see the class documentation.
+        """
+        return SR(e).subs(self._back) if self._back else SR(e)
+
+    def relations(self, region):
+        r"""A region (a list of alternatives, each a list of relations) with
+        the atoms restored; ``None`` stays ``None``.
+
+        EXAMPLES: see the class documentation.
+        """
+        if region is None:
+            return None
+        return [[self.restore_relation(r) for r in alternative] for alternative in region]
+
+    def restore_relation(self, r):
+        r"""The relation ``r`` with the atoms restored on both sides.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import ParameterAtoms
+            sage: A = ParameterAtoms([cos(var('a'))]); s = A.symbols()[0]
+            sage: A.restore_relation(s == 1)
+            cos(a) == 1
+        """
+        return r.operator()(self.restore(r.lhs()), self.restore(r.rhs()))
+
+
 def translate_expressions(expressions):
     r"""
     The translation of ``expressions`` that have no unknowns (every symbol
@@ -736,35 +847,22 @@ def expand_angles(expr, angles):
     if not names:
         return SR(expr)
 
+    def is_angle(v):
+        return str(v) in names
+
     def walk(e):
         op = e.operator()
         if op is None:
             return e
         args = [walk(a) for a in e.operands()]
-        if op in _TRIG and any(str(v) in names for v in args[0].variables()):
-            argument = args[0]
-            multiples, rest = [], argument
-            for v in argument.variables():
-                if str(v) not in names:
-                    continue
-                k = argument.diff(v)
-                if not k.is_numeric() or k.pyobject() not in ZZ or \
-                        abs(ZZ(k.pyobject())) > MAX_ANGLE_MULTIPLE:
-                    return op(*args)
-                multiples.append((v, ZZ(k.pyobject())))
-                rest = rest - k * v
-            rest = rest.expand()
-            if any(str(v) in names for v in rest.variables()):
+        if op in TRIGONOMETRIC and any(map(is_angle, args[0].variables())):
+            try:
+                multiples, rest = split_angle(op, args[0], is_angle)
+            except AnalysisError:
                 return op(*args)
             C, S = (SR(1), SR(0)) if rest.is_zero() else (cos(rest), sin(rest))
-            for v, k in multiples:
-                c, s = cos(v), sin(v)
-                if k < 0:
-                    s, k = -s, -k
-                for _ in range(k):
-                    C, S = C * c - S * s, S * c + C * s
-            C, S = C.expand(), S.expand()
-            return {sin: S, cos: C, tan: S / C, cot: C / S, sec: 1 / C, csc: 1 / S}[op]
+            C, S = angle_sum(C, S, multiples, lambda v: (cos(v), sin(v)))
+            return trig_value(op, C.expand(), S.expand())
         return op(*args)
 
     return walk(SR(expr))

@@ -6,8 +6,9 @@ kinetic matrices at a point -- have entries that are rational functions of
 parameters and of the sines and cosines of angles. Solving them in the
 symbolic ring is slow (every pivot goes through a general simplifier) and
 can miss a zero hidden by `\cos^2 + \sin^2 = 1`. :class:`TrigFractionField`
-writes every entry as a fraction of polynomials of a
-:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing` (Singular's
+writes every entry in the field of fractions of the
+:class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra` of the entries
+(:class:`~sage_dynsym.algebra.trig_algebra.TrigFractions`: Singular's
 arithmetic, greatest common divisors cancelled), reduces numerators and
 denominators modulo `\cos^2 + \sin^2 - 1` after every operation -- a normal
 form, so that an entry is zero exactly when it is zero as a function -- and
@@ -32,8 +33,11 @@ EXAMPLES::
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .trigonometric import TrigPolynomialRing, NotPolynomial, circle_reduce
+from .trig_algebra import TrigAlgebra
+from .trigonometric import TrigPolynomialRing, NotPolynomial
 from .translation import exact_rational
+
+__all__ = ['TrigFractionField', 'exact_numbers']
 
 
 def exact_numbers(expr):
@@ -73,8 +77,9 @@ class TrigFractionField:
     - ``expressions`` -- every expression that will be converted (they fix
       the generators)
 
-    Elements are fractions of Sage's polynomial ring; matrices are lists
-    of rows.
+    Elements are those of the field :meth:`fractions` (a Sage parent,
+    :class:`~sage_dynsym.algebra.trig_algebra.TrigFractions`); matrices are
+    lists of rows.
 
     EXAMPLES::
 
@@ -93,38 +98,47 @@ class TrigFractionField:
     """
 
     def __init__(self, expressions):
-        self._ring = TrigPolynomialRing.for_expressions(
-            [exact_numbers(e) for e in expressions], fractions=True)
-        self._field = self._ring.ring.fraction_field()
-        self._pairs = list(self._ring._pairs.values())
-        self.zero, self.one = self._field.zero(), self._field.one()
+        ring = TrigPolynomialRing.for_expressions([exact_numbers(e) for e in expressions],
+                                                  fractions=True)
+        self._fractions = TrigAlgebra(ring).fraction_field()
+        self.zero, self.one = self._fractions.zero(), self._fractions.one()
 
-    def _reduced(self, polynomial):
-        return circle_reduce(polynomial, self._pairs, self._ring.zero)
+    def fractions(self):
+        r"""
+        The field of the entries: a
+        :class:`~sage_dynsym.algebra.trig_algebra.TrigFractions`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
+            sage: TrigFractionField([cos(var('a'))]).fractions()
+            Fractions of Algebra of polynomials in cos(a), sin(a), a over Rational Field modulo cos^2 + sin^2 = 1
+        """
+        return self._fractions
 
     def normal(self, x):
         r"""
         ``x`` with numerator and denominator reduced modulo
-        `\cos^2 + \sin^2 = 1` and their common factors cancelled.
+        `\cos^2 + \sin^2 = 1` and their common factors cancelled (see
+        :meth:`~sage_dynsym.algebra.trig_algebra.TrigFraction.normal`).
 
         EXAMPLES::
 
             sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
             sage: a = var('a'); K = TrigFractionField([cos(a)])
             sage: c, s = K(cos(a)), K(sin(a))
-            sage: K.normal(c^2 + s^2) == K.one
-            True
+            sage: K.normal(c^2 + s^2).numerator()
+            1
         """
-        return (self._field(self._reduced(x.numerator()))
-                / self._field(self._reduced(x.denominator())))
+        return x.normal()
 
     def __call__(self, expr):
         try:
-            numerator, denominator = self._ring.fraction(exact_numbers(expr))
-        except NotPolynomial:
+            x = self._fractions(exact_numbers(expr))
+        except NotPolynomial as error:
             raise AnalysisError(f"{expr} is not a rational function of the symbols and sines "
-                                "and cosines of the equations", entry="linearize") from None
-        return self.normal(self._field(numerator) / self._field(denominator))
+                                "and cosines of the equations", entry="linearize") from error
+        return x.normal()
 
     def is_zero(self, x):
         r"""
@@ -137,7 +151,7 @@ class TrigFractionField:
             sage: K.is_zero(K(cos(a))^2 + K(sin(a))^2 - 1)
             True
         """
-        return self._reduced(x.numerator()).is_zero()
+        return not x
 
     def expression(self, x):
         r"""
@@ -151,7 +165,7 @@ class TrigFractionField:
             sage: K.expression(K(r*cos(a)) / K(r))
             cos(a)
         """
-        return self._ring.simplest_fraction(x.numerator(), x.denominator())
+        return SR(x)
 
     def matrix(self, rows):
         r"""
@@ -221,13 +235,28 @@ class TrigFractionField:
             top += 1
         return A, B, pivots
 
+    def pivot_columns(self, A):
+        r"""
+        The indices of the pivot columns of ``A`` (a list of rows) in
+        Gauss--Jordan elimination: the first columns, from the left, that are
+        independent of the ones before them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trig_linear import TrigFractionField
+            sage: a = var('a'); K = TrigFractionField([cos(a)])
+            sage: K.pivot_columns(K.matrix([[cos(a), cos(a)^2, sin(a)], [1, cos(a), 0]]))
+            [0, 2]
+        """
+        return self._eliminate(A)[2] if A else []
+
     def rank(self, A):
         r"""
         The rank of ``A`` (a list of rows) as a matrix of functions.
 
         EXAMPLES: see the module documentation.
         """
-        return len(self._eliminate(A)[2]) if A else 0
+        return len(self.pivot_columns(A))
 
     def solve_right(self, A, B):
         r"""

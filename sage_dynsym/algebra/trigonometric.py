@@ -19,6 +19,13 @@ still not polynomial (e.g. `\sqrt{x}` of a coordinate) use
 :class:`SymbolicBackend`. :func:`trig_rational_simplify` applies the same
 reduction to symbolic rational expressions (Routh functions, Hamiltonians).
 
+The Sage parent of the reduced polynomials, with elements, coercions and
+the category checks, is :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`
+(``TrigAlgebra(R)`` for a ring ``R`` of this module); the ring here is the
+arithmetic on representatives that a backend needs (one reduction at the
+end instead of one per product). Expressions are read by the walk of
+:mod:`~sage_dynsym.algebra.expression_walk`.
+
 EXAMPLES::
 
     sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
@@ -33,7 +40,6 @@ EXAMPLES::
 """
 from collections import Counter
 from itertools import chain
-import operator
 from operator import itemgetter
 
 from sage.arith.functions import lcm
@@ -43,11 +49,16 @@ from sage.rings.integer import Integer
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational import Rational
 from sage.rings.rational_field import QQ
-from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
+
+from sage.structure.unique_representation import UniqueRepresentation
 
 from ..arguments import expression_argument
 from ..errors import AnalysisError
+from .expression_walk import ExpressionWalker, ExpressionScan, split_angle, angle_sum, trig_value
+
+__all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
+           'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
 
 _ZERO, _ONE = SR(0), SR(1)
 
@@ -96,13 +107,13 @@ def _unsigned_angle(angle):
     return angle
 
 
-def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
+class _Scan(ExpressionScan):
     r"""
-    Record what a polynomial ring needs to hold ``expr``: the arguments of
-    its sines and cosines in ``angles``, its non-polynomial parts
-    (constants such as `\pi` or `\sqrt 2`, powers of parameters with
-    fractional or negative exponents, other functions) in ``atoms`` (dicts
-    used as ordered sets) and its symbols in the set ``symbols``. With
+    What a polynomial ring needs to hold expressions: the arguments of their
+    sines and cosines in ``angles``, their non-polynomial parts (constants
+    such as `\pi` or `\sqrt 2`, powers of parameters with fractional or
+    negative exponents, other functions) in ``atoms`` (dicts used as
+    ordered sets) and their symbols in the set ``symbols``. With
     ``fractions``, negative integer powers are allowed (rational functions).
 
     A non-polynomial part containing a symbol of ``dynamic`` (coordinates,
@@ -110,35 +121,133 @@ def _scan(expr, dynamic, angles, atoms, symbols, fractions=False):
     :class:`NotPolynomial`, as does an inexact number with ``fractions``
     (otherwise the ring's conversion takes its rational value, as kinematic
     data always did).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import _Scan
+        sage: x, m = var('x m'); S = _Scan([x], fractions=False)
+        sage: S.walk(x/m + cos(-x)*pi); S.angles, S.atoms, sorted(S.symbols, key=str)
+        ({x: None}, {1/m: None, pi: None}, [x])
     """
-    stack = [SR(expr)]
-    while stack:
-        e = stack.pop()
-        op = e.operator()
-        if op is None:
-            if e.is_symbol():
-                symbols.add(e)
-                continue
-            if e.is_numeric():
-                if fractions and not _is_rational(e):
-                    raise NotPolynomial(f"{e} is not a rational number")
-                continue
-        elif op is add_vararg or op is mul_vararg:
-            stack.extend(e.operands())
-            continue
-        elif op is operator.pow:
-            base, exponent = e.operands()
-            if exponent.is_numeric() and isinstance(exponent.pyobject(), Integer) and (
-                    fractions or exponent > 0):
-                stack.append(base)
-                continue
-        elif op is cos or op is sin:
-            angles.setdefault(_unsigned_angle(e.operands()[0]))
-            continue
-        if any(e.has(v) for v in dynamic):
+
+    def __init__(self, dynamic, fractions):
+        self.dynamic, self.fractions = dynamic, fractions
+        self.angles, self.atoms, self.symbols = {}, {}, set()
+
+    def operands(self, e):
+        # right to left: the order of the generators (and so the printed
+        # forms) the rings have always had
+        return reversed(e.operands())
+
+    def symbol(self, e):
+        self.symbols.add(e)
+
+    def number(self, e):
+        if self.fractions and not _is_rational(e):
+            raise NotPolynomial(f"{e} is not a rational number")
+
+    def atom(self, e):
+        if any(e.has(v) for v in self.dynamic):
             raise NotPolynomial(f"{e} is not polynomial in the rotation variables and "
                                 "parameters")
-        atoms.setdefault(e)
+        self.atoms.setdefault(e)
+
+    def trig(self, op, e):
+        if op is cos or op is sin:
+            self.angles.setdefault(_unsigned_angle(e.operands()[0]))
+        else:
+            self.atom(e)
+
+    def takes_power(self, k):
+        return self.fractions or k > 0
+
+
+class _Fraction(ExpressionWalker):
+    r"""
+    An expression as a pair ``(numerator, denominator)`` of elements of the
+    polynomial ring of ``generators`` (a dict: the symbolic value of each
+    generator, and of the cosines and sines of the negative angles, to its
+    ring element). Numbers are rational (``exact``: only integers and
+    rationals, else the rational value of an inexact number); numerator
+    and denominator of a part get at most ``limit`` terms. With ``pairs``
+    (a dict: angles that are symbols to their pairs ``(c, s)``), a
+    trigonometric function of integer multiples of them plus a generator
+    angle is expanded by the addition formulas. Anything else raises
+    :class:`NotPolynomial`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import _Fraction
+        sage: R.<c, s, m> = QQ[]; a, M = var('a M')
+        sage: _Fraction(R, {cos(a): c, M: m}, exact=True).walk(M/cos(a) + cos(a)/M^2)
+        (m^3 + c^2, c*m^2)
+        sage: _Fraction(R, {}, exact=True, pairs={a: (c, s)}).walk(tan(2*a))
+        (2*c*s, c^2 - s^2)
+    """
+
+    def __init__(self, ring, generators, exact, limit=None, pairs=None):
+        self.ring, self.generators, self.exact, self.limit = ring, generators, exact, limit
+        self.pairs = pairs or {}
+        self.one, self.zero = ring.one(), ring.zero()
+
+    def trig(self, op, e):
+        if not self.pairs:
+            return self.atom(e)
+        multiples, rest = split_angle(op, e.operands()[0], self.pairs.__contains__,
+                                      NotPolynomial)
+        C, S = (self.one, self.zero) if rest.is_zero() else (self.generators.get(rest.cos()),
+                                                             self.generators.get(rest.sin()))
+        if not multiples or C is None or S is None:
+            return self.atom(e)
+        C, S = angle_sum(C, S, multiples, self.pairs.get)
+        return trig_value(op, (C, self.one), (S, self.one), one=(self.one, self.one),
+                          divide=lambda x, y: (x[0] * y[1], x[1] * y[0]))
+
+    def checked(self, n, d):
+        if self.limit is not None and n.number_of_terms() + d.number_of_terms() > self.limit:
+            raise NotPolynomial(f"the fraction has more than {self.limit} terms")
+        return n, d
+
+    def known(self, e):
+        element = self.generators.get(e)
+        return None if element is None else (element, self.one)
+
+    def number(self, e):
+        if self.exact:
+            if _is_rational(e):
+                return self.ring(e.pyobject()), self.one
+        else:
+            try:
+                return self.ring(QQ(e.pyobject())), self.one
+            except (TypeError, ValueError):
+                pass
+        return self.atom(e)
+
+    def atom(self, e):
+        raise NotPolynomial(f"{e} is not a rational function of the generators")
+
+    symbol = atom
+
+    def add(self, values):
+        # terms over the same denominator are added first
+        groups = {}
+        for n, d in values:
+            groups[d] = groups.get(d, self.zero) + n
+        denominator = self.one
+        for d in groups:
+            denominator = denominator.lcm(d)
+        return self.checked(sum((n * (denominator // d) for d, n in groups.items()), self.zero),
+                            denominator)
+
+    def mul(self, values):
+        n, d = self.one, self.one
+        for xn, xd in values:
+            n, d = self.checked(n * xn, d * xd)
+        return n, d
+
+    def power(self, value, k):
+        n, d = value
+        return self.checked(*((n ** k, d ** k) if k >= 0 else (d ** -k, n ** -k)))
 
 
 # Fractions whose numerator and denominator have at most this many terms
@@ -300,7 +409,7 @@ class SymbolicBackend:
         return element
 
 
-class TrigPolynomialRing:
+class TrigPolynomialRing(UniqueRepresentation):
     r"""
     Kinematic quantities as polynomials over `\mathbb{Q}` in the parameters,
     velocities and the cosines and sines of the rotation angles, reduced
@@ -313,7 +422,9 @@ class TrigPolynomialRing:
     - ``symbols`` -- every other symbolic variable that may appear
 
     Converting an expression that is not polynomial in these raises
-    :class:`NotPolynomial`.
+    :class:`NotPolynomial`. Rings with the same generators are one object
+    (``UniqueRepresentation``); their Sage parent is
+    :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`.
 
     EXAMPLES::
 
@@ -327,43 +438,43 @@ class TrigPolynomialRing:
         Traceback (most recent call last):
         ...
         NotPolynomial: 1/a is not polynomial in the rotation variables and parameters
+        sage: R is TrigPolynomialRing([a, -a], [da, l, l])
+        True
+        sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+        sage: TrigAlgebra(R)(l^2*cos(a)^2 + l^2*sin(a)^2)
+        l^2
     """
 
-    def __init__(self, angles, symbols, atoms=()):
-        self._angles = []
+    @staticmethod
+    def __classcall__(cls, angles, symbols, atoms=()):
+        # the normal form of the arguments: equal rings are one object
+        # (UniqueRepresentation), and the parent TrigAlgebra is keyed by it
+        unique = []
         for angle in angles:
             angle = _unsigned_angle(angle)
             # no pair for a constant angle whose sine and cosine evaluate
             # (pi/6: sqrt(3) is an atom)
-            if angle not in self._angles and (angle.cos().operator() is cos
-                                              or angle.sin().operator() is sin):
-                self._angles.append(angle)
-        self._atoms = [SR(a) for a in atoms]
+            if angle not in unique and (angle.cos().operator() is cos
+                                        or angle.sin().operator() is sin):
+                unique.append(angle)
+        return super().__classcall__(cls, tuple(unique),
+                                     tuple(sorted({str(v) for v in symbols}, key=str)),
+                                     tuple(SR(a) for a in atoms))
+
+    def __init__(self, angles, symbols, atoms=()):
+        self._angles, self._symbols, self._atoms = list(angles), list(symbols), list(atoms)
         k = len(self._angles)
-        self._cos_names = [f'dynsymcos{i}' for i in range(k)]
-        self._sin_names = [f'dynsymsin{i}' for i in range(k)]
-        atom_names = [f'dynsymatom{i}' for i in range(len(self._atoms))]
-        others = sorted({str(v) for v in symbols}, key=str)
-        names = self._cos_names + self._sin_names + others + atom_names
+        names = ([f'dynsymcos{i}' for i in range(k)] + [f'dynsymsin{i}' for i in range(k)]
+                 + self._symbols + [f'dynsymatom{i}' for i in range(len(self._atoms))])
         # always multivariate (one variable would give a univariate ring)
         self.ring = PolynomialRing(QQ, names, len(names), order='degrevlex')
         gens = self.ring.gens()
         self._pairs = {angle: (gens[i], gens[k + i]) for i, angle in enumerate(self._angles)}
-        self._forward = {}
-        for i, angle in enumerate(self._angles):
-            self._forward[angle.cos()] = self._forward[(-angle).cos()] = SR.var(self._cos_names[i])
-            self._forward[angle.sin()] = SR.var(self._sin_names[i])
-            self._forward[(-angle).sin()] = -SR.var(self._sin_names[i])
-        self._backward = {SR.var(n): a.cos() for n, a in zip(self._cos_names, self._angles)}
-        self._backward.update({SR.var(n): a.sin() for n, a in zip(self._sin_names, self._angles)})
-        for name, atom in zip(atom_names, self._atoms):
-            self._forward[atom] = SR.var(name)
-            self._backward[SR.var(name)] = atom
         self.zero = self.ring.zero()
         # the symbolic value of every generator, for the conversion back
-        self._values = [self._backward.get(SR.var(name), SR.var(name))
-                        for name in self.ring.variable_names()]
-        # the ring element of every symbol, atom, cosine and sine (fraction())
+        self._values = ([a.cos() for a in self._angles] + [a.sin() for a in self._angles]
+                        + [SR.var(name) for name in self._symbols] + self._atoms)
+        # the ring element of every symbol, atom, cosine and sine (the walk)
         self._elements = {value: gen for value, gen in zip(self._values, gens)}
         for angle, (c, s) in self._pairs.items():
             self._elements[(-angle).cos()], self._elements[(-angle).sin()] = c, -s
@@ -406,15 +517,15 @@ class TrigPolynomialRing:
             ...
             NotPolynomial: sqrt(x) is not polynomial in the rotation variables and parameters
         """
-        angles, atoms, symbols = {}, {}, set()
+        found = _Scan(dynamic, fractions)
         for expr in expressions:
-            _scan(expr, dynamic, angles, atoms, symbols, fractions)
-        for angle in list(angles):
+            found.walk(expr)
+        for angle in list(found.angles):
             # the derivatives of an angle are converted as well
             for v in SR(angle).variables():
-                _scan(SR(angle).diff(v), dynamic, angles, atoms, symbols, fractions)
-            symbols.update(SR(angle).variables())
-        return cls(angles, symbols, atoms)
+                found.walk(SR(angle).diff(v))
+            found.symbols.update(SR(angle).variables())
+        return cls(found.angles, found.symbols, found.atoms)
 
     def angles(self):
         r"""
@@ -430,6 +541,18 @@ class TrigPolynomialRing:
         """
         return list(self._angles)
 
+    def symbols(self):
+        r"""
+        The names of the symbols that are generators of the ring (sorted).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
+            sage: TrigPolynomialRing([var('a')], [var('m'), var('l'), var('m')]).symbols()
+            ['l', 'm']
+        """
+        return list(self._symbols)
+
     def atoms(self):
         r"""
         The non-polynomial parts held as generators of the ring (see
@@ -443,9 +566,17 @@ class TrigPolynomialRing:
         """
         return list(self._atoms)
 
-    def convert(self, expr):
+    def _walk(self, exact, limit=None, multiples=False):
+        # multiples: the angles that are symbols, for the addition formulas
+        pairs = {a: p for a, p in self._pairs.items() if a.is_symbol()} if multiples else None
+        return _Fraction(self.ring, self._elements, exact, limit, pairs)
+
+    def convert(self, expr, multiples=False):
         r"""The ring element of the symbolic expression ``expr``; raises
         :class:`NotPolynomial` if it is not polynomial in the generators.
+        With ``multiples``, sines and cosines of integer multiples of the
+        angles that are symbols, and of their sums, are expanded (else each
+        argument must be an angle of the ring).
 
         EXAMPLES::
 
@@ -454,13 +585,23 @@ class TrigPolynomialRing:
             sage: R = TrigPolynomialRing([a], [l, da]); c, s = R.trig(a)
             sage: R.convert(l*da*cos(a))
             dynsymcos0*da*l
+            sage: R.convert(sin(2*a), multiples=True)
+            2*dynsymcos0*dynsymsin0
+            sage: R.convert(sin(2*a))
+            Traceback (most recent call last):
+            ...
+            NotPolynomial: sin(2*a) is not polynomial in the rotation variables and parameters
         """
         expr = SR(expr)
         try:
-            return self.ring(expr.subs(self._forward) if self._forward else expr)
-        except (TypeError, ValueError, NotImplementedError):
+            numerator, denominator = self._walk(False, multiples=multiples).walk(expr)
+        except NotPolynomial as error:
             raise NotPolynomial(f"{expr} is not polynomial in the rotation variables "
-                                "and parameters") from None
+                                "and parameters") from error
+        if not denominator.is_constant():
+            raise NotPolynomial(f"{expr} is not polynomial in the rotation variables "
+                                "and parameters")
+        return numerator / denominator.constant_coefficient()
 
     def trig(self, angle):
         r"""The pair `(\cos, \sin)` of ``angle`` as ring elements: the
@@ -599,7 +740,7 @@ class TrigPolynomialRing:
                  for e, group in groups.items()]
         return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
 
-    def fraction(self, expr, limit=None):
+    def fraction(self, expr, limit=None, multiples=False):
         r"""
         ``expr``, a rational function of the generators of the ring (see
         :meth:`for_expressions` with ``fractions=True``), as a pair
@@ -608,7 +749,8 @@ class TrigPolynomialRing:
         Raises :class:`NotPolynomial` if ``expr`` is not such a function, or
         if numerator or denominator of a part get more than ``limit`` terms
         (common denominators of nested fractions grow fast, and their
-        greatest common divisors take minutes).
+        greatest common divisors take minutes). ``multiples``: as in
+        :meth:`convert`.
 
         EXAMPLES::
 
@@ -618,48 +760,10 @@ class TrigPolynomialRing:
             sage: R = TrigPolynomialRing.for_expressions([e], fractions=True)
             sage: [R.to_symbolic(p) for p in R.fraction(e)]
             [m^2 + cos(a), m*sin(a)]
+            sage: [R.to_symbolic(p) for p in R.fraction(tan(a - 2*a), multiples=True)]
+            [-sin(a), cos(a)]
         """
-        one, zero = self.ring.one(), self.zero
-        elements = self._elements
-
-        def checked(n, d):
-            if limit is not None and n.number_of_terms() + d.number_of_terms() > limit:
-                raise NotPolynomial(f"the fraction has more than {limit} terms")
-            return n, d
-
-        def walk(e):
-            element = elements.get(e)
-            if element is not None:
-                return element, one
-            op = e.operator()
-            if op is None and e.is_numeric() and _is_rational(e):
-                return self.ring(e.pyobject()), one
-            if op is add_vararg:
-                # terms over the same denominator are added first
-                groups = {}
-                for x in e.operands():
-                    n, d = walk(x)
-                    groups[d] = groups.get(d, zero) + n
-                denominator = one
-                for d in groups:
-                    denominator = denominator.lcm(d)
-                return checked(sum((n * (denominator // d) for d, n in groups.items()), zero),
-                               denominator)
-            if op is mul_vararg:
-                n, d = one, one
-                for x in e.operands():
-                    xn, xd = walk(x)
-                    n, d = checked(n * xn, d * xd)
-                return n, d
-            if op is operator.pow:
-                base, exponent = e.operands()
-                if exponent.is_numeric() and isinstance(exponent.pyobject(), Integer):
-                    n, d = walk(base)
-                    k = int(exponent)
-                    return checked(*((n ** k, d ** k) if k >= 0 else (d ** -k, n ** -k)))
-            raise NotPolynomial(f"{e} is not a rational function of the generators")
-
-        return walk(SR(expr))
+        return self._walk(True, limit, multiples).walk(SR(expr))
 
     def simplest_fraction(self, numerator, denominator=1, printed=False):
         r"""

@@ -96,41 +96,9 @@ from .hurwitz import polynomial_arguments
 from .hurwitz import (lienard_chipart_conditions, real_negative_roots_conditions,
                       hurwitz_determinants)
 from ..algebra.regions import simplify_region
-from ..algebra.translation import Translation
+from ..algebra.translation import ParameterAtoms
 
-
-class _Atoms:
-    r"""The non-symbol parameters of an expression (``cos(alpha)``,
-    ``diff(f(u), u)``) replaced by fresh symbols, and back."""
-
-    def __init__(self, expressions, var, positive):
-        T = Translation([], [var], extra=list(expressions))
-        names = T.positive_names(positive)
-        self.symbols, self.back = [], {}
-        self.positive = [SR(p) for p in positive]
-        for k, p in enumerate(T.parameters()):
-            s = p if p.is_symbol() else SR.symbol()
-            if not p.is_symbol():
-                self.back[s] = p
-                if f"a{k}" in names:
-                    self.positive.append(s)
-            self.symbols.append(s)
-        self.forward = {v: k for k, v in self.back.items()}
-
-    def expression(self, e):
-        return SR(e).subs(self.forward) if self.forward else SR(e)
-
-    def restore(self, e):
-        return SR(e).subs(self.back) if self.back else SR(e)
-
-    def relations(self, region):
-        if region is None:
-            return None
-        return [[_restore_relation(self, r) for r in alt] for alt in region]
-
-
-def _restore_relation(atoms, r):
-    return r.operator()(atoms.restore(r.lhs()), atoms.restore(r.rhs()))
+__all__ = ['SpectrumRegions', 'spectrum_regions']
 
 
 def _as_relations(expressions):
@@ -181,11 +149,10 @@ class SpectrumRegions(SageObject):
         poly, name = polynomial_arguments(poly, var)
         self._poly = SR(poly)
         self._var = SR.var(name)
-        atoms = _Atoms([self._poly], self._var, positive)
-        self._atoms = atoms
-        positive = atoms.positive
+        atoms = ParameterAtoms([self._poly], [self._var], positive)
+        positive = atoms.positive()
         name = str(self._var)
-        ring = parameter_ring(atoms.symbols, extra=[name])
+        ring = parameter_ring(atoms.symbols(), extra=[name])
         L = ring.gen(ring.ngens() - 1)
         chi = to_ring(atoms.expression(self._poly).expand(), ring, "characteristic polynomial")
         if chi.degree(L) < 1:
@@ -255,7 +222,7 @@ class SpectrumRegions(SageObject):
                     self._marginal = region
                 else:
                     self._undecided = region
-        self._boundaries = {k: [_restore_relation(atoms, r) for r in v]
+        self._boundaries = {k: [atoms.restore_relation(r) for r in v]
                             for k, v in boundaries.items() if v}
         self._asymptotic = atoms.relations(self._asymptotic)
         self._marginal = atoms.relations(self._marginal) if self._marginal else None

@@ -285,8 +285,7 @@ def stability_condition_lines(poly, lam, positive, context, linear=None):
         companion = [[1 if j == i + 1 else 0 for j in range(n)] for i in range(n - 1)]
         companion.append([-c / coefficients[-1] for c in coefficients[:-1]])
         linear = LinearSystem([SR.var(f'x{i}') for i in range(n)], J=companion)
-    from ..algebra.translation import Translation
-    # the budget counts terms: atoms such as cos(lam) count as symbols
-    atoms = [a for a in Translation([], [lam], extra=[poly]).parameters() if not a.is_symbol()]
-    check_routh_scheme(SR(poly).subs({a: SR.symbol() for a in atoms}), lam, context.budget)
+    from ..algebra.translation import ParameterAtoms
+    # the budget counts terms: atoms such as cos(alpha) count as symbols
+    check_routh_scheme(ParameterAtoms([poly], [lam]).expression(poly), lam, context.budget)
     return linear.stability(positive=positive).report_lines()
