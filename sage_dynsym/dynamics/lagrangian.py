@@ -380,6 +380,40 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         """
         return list(self._positive)
 
+    def conserved_energy(self):
+        r"""
+        The generalized energy when it is an integral of the motion, else
+        ``None`` (explicit time, dissipation or generalized forces): what
+        ``simulate(...).energy_drift()`` measures.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, c = var('x dx c')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).conserved_energy()
+            1/2*dx^2 + 1/2*x^2
+            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).conserved_energy() is None
+            True
+        """
+        return self._conserved_energy()
+
+    def numerical_form(self):
+        r"""
+        The :class:`~sage_dynsym.numerics.form.NumericalForm` of the
+        equations (built once): what :meth:`numerical_rhs`, :meth:`simulate`
+        and :meth:`code` compile.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, k = var('x dx k')
+            sage: L = Lagrangian(dx^2/2 - k*x^2/2, [x]); L.numerical_form()
+            Numerical form M x'' = F in (x), parameters (k)
+            sage: L.numerical_form() is L.numerical_form()
+            True
+        """
+        return self._numerical_form()
+
     # ------------------------------------------------------------------
     # value semantics
 

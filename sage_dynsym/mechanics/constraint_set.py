@@ -19,32 +19,51 @@ EXAMPLES::
     ....:                  mass=m, inertia=diagonal_matrix([m*r^2/4, m*r^2/2, m*r^2/4]))
     sage: S = MechanicalSystem([frame, disk], [x, y, psi, th, phi],
     ....:                      rolling=[{'body': 'disk', 'radius': r, 'axle': 2}])
-    sage: for line in S.constraint_set().lines(): print(line)
+    sage: C = S.constraint_set(); C
+    Constraint set: 0 holonomic, 2 on the velocities (1 rolling disk)
+    sage: for line in C.lines(): print(line)
     rolling[0] (disk): contact with the plane z = 0 held by the coordinates
     rolling[0] (disk): no slip, 0 = -dphi*r*cos(psi) + dx
     rolling[0] (disk): no slip, 0 = -dphi*r*sin(psi) + dy
 """
+from sage.structure.sage_object import SageObject
+
 from ..errors import ModelError
 from ..dynamics.nonholonomic import check_velocity_constraints
+from .loads import body_index
 from .rolling import RollingDisk, rolling_contact
 
 
-class ConstraintSet:
+class ConstraintSet(SageObject):
     r"""
-    The constraints of ``system`` (see the module documentation).
+    The constraints of a mechanical system (see the module documentation).
 
     INPUT:
 
-    - ``system`` -- the :class:`~sage_dynsym.mechanics.system.MechanicalSystem`
-      (its bodies and kinematics)
+    - ``kinematics`` -- the
+      :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics` of
+      the system (its bodies, in the order given for a 1-based body index,
+      its coordinates and velocities)
     - ``holonomic`` -- the holonomic constraints given (already checked)
     - ``nonholonomic`` -- the velocity constraints given
     - ``rolling`` -- :class:`~sage_dynsym.mechanics.rolling.RollingDisk`
       objects or dicts with their keys
-    - ``given_names`` -- the body names in the order given (a 1-based body
-      index refers to it)
+    - ``parameters`` -- (optional) the declared parameters (``None``: not
+      declared)
 
-    EXAMPLES: see the module documentation.
+    EXAMPLES: see the module documentation; on its own, a skate (a blade
+    that cannot move sideways)::
+
+        sage: from sage_dynsym import RigidBody
+        sage: from sage_dynsym.mechanics.system_kinematics import SystemKinematics
+        sage: from sage_dynsym.mechanics.constraint_set import ConstraintSet
+        sage: x, y, th, dx, dy = var('x y theta dx dy')
+        sage: K = SystemKinematics([RigidBody('blade', joint=[x, y, 0], rotations=[(3, th)])],
+        ....:                      [x, y, th])
+        sage: C = ConstraintSet(K, [], [sin(th)*dx - cos(th)*dy], []); C
+        Constraint set: 0 holonomic, 1 on the velocities
+        sage: C.nonholonomic()
+        [-dy*cos(theta) + dx*sin(theta)]
 
     TESTS::
 
@@ -61,10 +80,9 @@ class ConstraintSet:
         ModelError: nonholonomic: the constraints are not independent: with the holonomic ones differentiated, their matrix of velocity coefficients has rank less than 2 at a generic point; remove the redundant ones
     """
 
-    def __init__(self, system, holonomic, nonholonomic, rolling, given_names):
-        from .loads import body_index
-        q, dq = system.coordinates(), system.velocities()
-        parameters = system.parameters()
+    def __init__(self, kinematics, holonomic, nonholonomic, rolling, parameters=None):
+        q, dq = kinematics.coordinates(), kinematics.velocities()
+        given_names = kinematics.given_names()
         self._given = check_velocity_constraints(nonholonomic, q, dq, holonomic, parameters)
         self._rolling, self._contacts = [], []
         for i, disk in enumerate(rolling):
@@ -73,7 +91,7 @@ class ConstraintSet:
             body = disk.body()
             if isinstance(body, int) and 0 < body <= len(given_names):
                 body = given_names[body - 1]
-            body_index(system, body, f"{entry}.body")
+            body_index(kinematics, body, f"{entry}.body")
             disk = disk.with_body(body)
             if parameters is not None:
                 undeclared = set(disk.radius().variables()) - set(parameters)
@@ -85,7 +103,7 @@ class ConstraintSet:
                 raise ModelError("the radius cannot depend on the coordinates or velocities",
                                  entry=f"{entry}.radius")
             self._rolling.append(disk)
-            self._contacts.append(rolling_contact(system, disk, entry))
+            self._contacts.append(rolling_contact(kinematics, disk, entry))
         self._given_holonomic = list(holonomic)
         self._holonomic = list(holonomic) + [c.holonomic() for c in self._contacts
                                              if c.holonomic() is not None]
@@ -94,6 +112,12 @@ class ConstraintSet:
             # the rolling conditions with the rest: none redundant
             check_velocity_constraints(self._velocity, q, dq, self._holonomic, None,
                                        entry="rolling")
+
+    def _repr_(self):
+        disks = len(self._rolling)
+        rolling = f" ({disks} rolling disk{'' if disks == 1 else 's'})" if disks else ""
+        return (f"Constraint set: {len(self._holonomic)} holonomic, {len(self._velocity)} on "
+                f"the velocities{rolling}")
 
     def holonomic(self):
         r"""

@@ -10,7 +10,8 @@ The force function `U` (minus the potential energy) enters the Lagrangian
   the gravity-gradient torques of satellite dynamics.
 
 A force function object is a description; the system evaluates it with its
-kinematics through :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.force_function`.
+kinematics (a :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`)
+through :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.force_function`.
 
 EXAMPLES::
 
@@ -72,22 +73,24 @@ class UniformGravity(SageObject):
         """
         return UniformGravity([SR(c).subs(values) for c in self._g])
 
-    def evaluate(self, system):
+    def evaluate(self, kinematics):
         r"""
-        The force function of ``system`` in this field.
+        The force function in this field of the bodies of ``kinematics``
+        (a :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`,
+        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`).
 
         EXAMPLES::
 
             sage: from sage_dynsym import RigidBody, MechanicalSystem, UniformGravity
             sage: z, m, g = var('z m g')
             sage: S = MechanicalSystem([RigidBody('ball', joint=[0, 0, z], mass=m)], [z])
-            sage: UniformGravity([0, 0, -g]).evaluate(S)
+            sage: UniformGravity([0, 0, -g]).evaluate(S.kinematics())
             -g*m*z
         """
         from .frames import FrameVector
-        g = FrameVector(system.frame_tree(), {0: self._g})
-        return sum((body.mass() * g.dot(system.mass_center_position(k))
-                    for k, body in enumerate(system.bodies(), 1)
+        g = FrameVector(kinematics.frame_tree(), {0: self._g})
+        return sum((body.mass() * g.dot(kinematics.mass_center_position(k))
+                    for k, body in enumerate(kinematics.bodies(), 1)
                     if not body.mass().is_zero()), SR(0))
 
 
@@ -222,29 +225,31 @@ class NewtonianField(SageObject):
         return NewtonianField(self._nu.subs(values), self._r.subs(values),
                               [SR(c).subs(values) for c in self._e])
 
-    def evaluate(self, system):
+    def evaluate(self, kinematics):
         r"""
-        The force function (2) of ``system`` in this field.
+        The force function (2) in this field of the bodies of ``kinematics``
+        (a :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`,
+        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`).
 
         EXAMPLES::
 
             sage: from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField
             sage: m, nu, r = var('m nu r')
             sage: S = MechanicalSystem([RigidBody('point', mass=m)], [])
-            sage: NewtonianField(nu, r, [0, 0, 1]).evaluate(S)
+            sage: NewtonianField(nu, r, [0, 0, 1]).evaluate(S.kinematics())
             m*nu/r
         """
         from .frames import FrameVector
-        tree = system.frame_tree()
+        tree = kinematics.frame_tree()
         e = FrameVector(tree, {0: self._e})
-        origin = system.joint_position(1)
+        origin = kinematics.joint_position(1)
         nu, r = self._nu, self._r
         U = SR(0)
-        for k, body in enumerate(system.bodies(), 1):
+        for k, body in enumerate(kinematics.bodies(), 1):
             if body.is_massless():
                 continue
-            m, frame = body.mass(), system.body_frame(k)
-            a = system.joint_position(k) - origin
+            m, frame = body.mass(), kinematics.body_frame(k)
+            a = kinematics.joint_position(k) - origin
             c = FrameVector(tree, {frame: body.mass_center()})
             ea, ec = e.dot(a), e.dot(c)
             gamma = e.components(frame)
@@ -257,14 +262,34 @@ class NewtonianField(SageObject):
         return U
 
 
-def split_force_terms(system):
+def force_terms(force_function):
     r"""
-    The terms of the force function of ``system`` in two parts: the summed
-    acceleration of its uniform gravity fields (``None`` if there is none)
-    and the sum of the other terms' force functions, not expanded (see
-    :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.force_terms`).
-    Recursive assemblies take gravity as an acceleration of the inertial
-    frame and differentiate only the rest.
+    The terms of a force function as given to a
+    :class:`~sage_dynsym.mechanics.system.MechanicalSystem` (``None``, a
+    field or an expression, or a list of those): a list, empty if none.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import UniformGravity
+        sage: from sage_dynsym.mechanics.force_functions import force_terms
+        sage: x = var('x')
+        sage: force_terms(None), force_terms(-x^2), force_terms([UniformGravity([0, 0, -1]), x])
+        ([], [-x^2], [uniform gravity field g = (0, 0, -1), x])
+    """
+    if force_function is None:
+        return []
+    return list(force_function) if isinstance(force_function, list) else [force_function]
+
+
+def split_force_terms(terms, kinematics):
+    r"""
+    The terms ``terms`` of a force function (see :func:`force_terms`) in two
+    parts: the summed acceleration of the uniform gravity fields (``None``
+    if there is none) and the sum of the other terms' force functions on the
+    bodies of ``kinematics`` (a
+    :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`), not
+    expanded. Recursive assemblies take gravity as an acceleration of the
+    inertial frame and differentiate only the rest.
 
     EXAMPLES::
 
@@ -274,16 +299,16 @@ def split_force_terms(system):
         sage: S = MechanicalSystem([RigidBody('b', joint=[0, 0, z], mass=m)], [z],
         ....:                      force_function=[UniformGravity([0, 0, -g]), -k*z^2/2,
         ....:                                      UniformGravity([1, 0, 0])])
-        sage: split_force_terms(S)
+        sage: split_force_terms(S.force_terms(), S.kinematics())
         ((1, 0, -g), -1/2*k*z^2)
     """
     gravity, rest = None, SR(0)
-    for term in system.force_terms():
+    for term in terms:
         if isinstance(term, UniformGravity):
             g = term.acceleration()
             gravity = g if gravity is None else tuple(a + b for a, b in zip(gravity, g))
         elif hasattr(term, 'evaluate'):
-            rest += term.evaluate(system)
+            rest += term.evaluate(kinematics)
         else:
             rest += SR(term)
     return gravity, rest

@@ -290,24 +290,26 @@ class Load(SageObject):
         out['axes'] = self._axes
         return out
 
-    def _vectors(self, system, entry):
+    def _vectors(self, kinematics, entry):
         # (force, velocity of the point, torque, angular velocity) as
         # FrameVector, the force and torque None when absent
         from .frames import FrameVector
-        k = body_index(system, self._body, f"{entry}.body")
-        j = 0 if self._axes == 0 else body_index(system, self._axes, f"{entry}.axes")
-        tree, frame = system.frame_tree(), system.body_frame(k)
-        axes = system.body_frame(j) if j else 0
-        W = system.angular_velocity_vector(k)
+        k = body_index(kinematics, self._body, f"{entry}.body")
+        j = 0 if self._axes == 0 else body_index(kinematics, self._axes, f"{entry}.axes")
+        tree, frame = kinematics.frame_tree(), kinematics.body_frame(k)
+        axes = kinematics.body_frame(j) if j else 0
+        W = kinematics.angular_velocity_vector(k)
         r = FrameVector(tree, {frame: self._point})
-        v = system.joint_velocity_vector(k) + FrameVector(tree, {frame: W.cross(r, frame)})
+        v = kinematics.joint_velocity_vector(k) + FrameVector(tree, {frame: W.cross(r, frame)})
         F = None if self._force is None else FrameVector(tree, {axes: self._force})
         M = None if self._torque is None else FrameVector(tree, {axes: self._torque})
         return F, v, M, W
 
-    def power(self, system, entry="load"):
+    def power(self, kinematics, entry="load"):
         r"""
-        The power `F \cdot v_P + M \cdot W_k` of the load on ``system``.
+        The power `F \cdot v_P + M \cdot W_k` of the load on the bodies of
+        ``kinematics`` (a :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`,
+        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`).
 
         EXAMPLES: a torque `M` about the axis of a rotor turned by `a`::
 
@@ -315,18 +317,19 @@ class Load(SageObject):
             sage: from sage_dynsym.mechanics.loads import Load
             sage: a, M = var('a M')
             sage: S = MechanicalSystem([RigidBody('rotor', rotations=[(3, a)])], [a])
-            sage: Load('rotor', torque=[0, 0, M]).power(S)
+            sage: Load('rotor', torque=[0, 0, M]).power(S.kinematics())
             M*da
         """
-        F, v, M, W = self._vectors(system, entry)
+        F, v, M, W = self._vectors(kinematics, entry)
         return (SR(0) if F is None else F.dot(v)) + (SR(0) if M is None else M.dot(W))
 
-    def generalized_forces(self, system, entry="load"):
+    def generalized_forces(self, kinematics, entry="load"):
         r"""
         The generalized forces `Q_i = F \cdot \partial v_P/\partial \dot q_i
-        + M \cdot \partial W_k/\partial \dot q_i` of the load on ``system``
-        (see the module documentation for the sign convention). The force
-        and torque may depend on the velocities (a drag force).
+        + M \cdot \partial W_k/\partial \dot q_i` of the load on the bodies of
+        ``kinematics`` (as in :meth:`power`; see the module documentation for
+        the sign convention). The force and torque may depend on the
+        velocities (a drag force).
 
         EXAMPLES: a force along the inertial `x` axis at the point `(l, 0, 0)`
         of a body turned by `a` about the `z` axis::
@@ -335,7 +338,7 @@ class Load(SageObject):
             sage: from sage_dynsym.mechanics.loads import Load
             sage: a, l, F = var('a l F')
             sage: S = MechanicalSystem([RigidBody('arm', rotations=[(3, a)])], [a])
-            sage: Load('arm', point=[l, 0, 0], force=[F, 0, 0]).generalized_forces(S)
+            sage: Load('arm', point=[l, 0, 0], force=[F, 0, 0]).generalized_forces(S.kinematics())
             [-F*l*sin(a)]
 
         A linear drag `-c\, v_P` at that point gives
@@ -343,13 +346,13 @@ class Load(SageObject):
 
             sage: c, da = var('c da')
             sage: drag = Load('arm', point=[l, 0, 0], force=[c*l*da*sin(a), -c*l*da*cos(a), 0])
-            sage: drag.generalized_forces(S)
+            sage: drag.generalized_forces(S.kinematics())
             [-c*da*l^2]
         """
         from ..algebra.trigonometric import trig_rational_simplify
-        F, v, M, W = self._vectors(system, entry)
+        F, v, M, W = self._vectors(kinematics, entry)
         forces = []
-        for dq in system.velocities():
+        for dq in kinematics.velocities():
             Q = SR(0)
             if F is not None:
                 Q += F.dot(v.map_components(lambda c: SR(c).diff(dq)))
@@ -382,7 +385,10 @@ def load_list(loads):
 
 def body_index(system, reference, entry):
     r"""
-    The 1-based index in ``system`` of the body ``reference`` (a name, a
+    The 1-based index in ``system`` (anything with the method ``bodies()``:
+    a :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`
+    or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`) of the
+    body ``reference`` (a name, a
     1-based index or a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`);
     :class:`~sage_dynsym.errors.ModelError` naming ``entry`` if there is no
     such body.

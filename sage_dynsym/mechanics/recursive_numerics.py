@@ -69,7 +69,7 @@ def body_tree(system):
                        velocity=body.velocity(), mass=body.mass(),
                        mass_center=body.mass_center(), inertia=body.inertia(), name=body.name())
               for k, body in enumerate(system.bodies(), 1)]
-    gravity, potential = split_force_terms(system)
+    gravity, potential = split_force_terms(system.force_terms(), system.kinematics())
     loads = []
     for i, load in enumerate(system.loads()):
         k = body_index(system, load.body(), f"loads[{i}].body")
@@ -124,12 +124,12 @@ def numerical_form(system, algorithm='auto'):
         tree = body_tree(system)
         reason = unsupported(tree)
         if reason is None:
-            form = RecursiveForm(tree, energy=lambda: system.lagrangian()._conserved_energy())
+            form = RecursiveForm(tree, energy=lambda: system.lagrangian().conserved_energy())
         elif algorithm == 'recursive':
             raise ModelError(f"the recursive form does not apply: {reason}", entry="algorithm")
         else:
             _LOG.info("numerical_rhs: the equations of motion are used: %s", reason)
     if form is None:
-        form = system.lagrangian()._numerical_form()
+        form = system.lagrangian().numerical_form()
     cache[algorithm] = form
     return form

@@ -48,7 +48,7 @@ tilt `\theta` (from the vertical), spin `\varphi`, the centre at the height
     sage: disk = RigidBody('disk', parent='frame', joint=[0, 0, r], rotations=[(2, phi)],
     ....:                  mass=m, inertia=diagonal_matrix([m*r^2/4, m*r^2/2, m*r^2/4]))
     sage: S = MechanicalSystem([frame, disk], [x, y, psi, th, phi])
-    sage: C = rolling_contact(S, RollingDisk('disk', r, 2)); C
+    sage: C = rolling_contact(S.kinematics(), RollingDisk('disk', r, 2)); C
     rolling contact of disk: holonomic condition imposed by the coordinates, 2 nonholonomic constraints
     sage: C.point()
     (x, y, 0)
@@ -254,7 +254,7 @@ class RollingContact(SageObject):
             sage: from sage_dynsym.mechanics.rolling import RollingDisk, rolling_contact
             sage: x, r = var('x r')
             sage: S = MechanicalSystem([RigidBody('disk', joint=[x, 0, r], rotations=[(2, x/r)])], [x])
-            sage: rolling_contact(S, RollingDisk('disk', r, 2)).disk()
+            sage: rolling_contact(S.kinematics(), RollingDisk('disk', r, 2)).disk()
             thin disk of radius r on 'disk', axle along its axis 2
         """
         return self._disk
@@ -277,7 +277,7 @@ class RollingContact(SageObject):
             sage: from sage_dynsym.mechanics.rolling import RollingDisk, rolling_contact
             sage: x, z, r = var('x z r')
             sage: S = MechanicalSystem([RigidBody('disk', joint=[x, 0, z])], [x, z])
-            sage: rolling_contact(S, RollingDisk('disk', r, 2)).holonomic()
+            sage: rolling_contact(S.kinematics(), RollingDisk('disk', r, 2)).holonomic()
             -r + z
         """
         return self._holonomic
@@ -317,11 +317,13 @@ def _is_zero(expr):
         return False
 
 
-def rolling_contact(system, disk, entry="rolling"):
+def rolling_contact(kinematics, disk, entry="rolling"):
     r"""
     The contact point, the holonomic contact condition and the no-slip
-    constraints of ``disk`` (a :class:`RollingDisk` whose body is in
-    ``system``), see the module documentation.
+    constraints of ``disk`` (a :class:`RollingDisk` whose body is one of
+    ``kinematics``, a
+    :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`),
+    see the module documentation.
 
     EXAMPLES: see the module documentation.
 
@@ -334,24 +336,24 @@ def rolling_contact(system, disk, entry="rolling"):
         sage: x, th, r = var('x theta r')
         sage: S = MechanicalSystem([RigidBody('f', joint=[x, 0, 0], rotations=[(1, th)]),
         ....:                       RigidBody('disk', parent='f', joint=[0, 0, -r])], [x, th])
-        sage: rolling_contact(S, RollingDisk('disk', r, 2), 'rolling[0]')
+        sage: rolling_contact(S.kinematics(), RollingDisk('disk', r, 2), 'rolling[0]')
         Traceback (most recent call last):
         ...
         ModelError: rolling[0]: the centre of the disk on 'disk' is below the plane z = 0 (its height is -r*cos(theta) when it touches); write its height as r*sqrt(1 - a_z^2) above the contact point
     """
     from .loads import body_index
-    k = body_index(system, disk.body(), f"{entry}.body")
+    k = body_index(kinematics, disk.body(), f"{entry}.body")
     r = disk.radius()
-    frame = system.body_frame(k)
+    frame = kinematics.body_frame(k)
     e = [0, 0, 0]
     e[disk.axle() - 1] = 1
-    a = [SR(x) for x in system.frame_tree().express(e, frame, 0)]
-    c = [SR(x) for x in system.joint_position(k).components(0)]
+    a = [SR(x) for x in kinematics.frame_tree().express(e, frame, 0)]
+    c = [SR(x) for x in kinematics.joint_position(k).components(0)]
     az = _simplified(a[2])
     d = [-az * a[0], -az * a[1], _simplified(1 - az ** 2)]
     if _is_zero(c[2] ** 2 - r ** 2 * (1 - az ** 2)):
         s = _simplified(c[2] / r)
-        at_rest = _simplified(s.subs({q: 0 for q in system.coordinates()}))
+        at_rest = _simplified(s.subs({q: 0 for q in kinematics.coordinates()}))
         if at_rest.is_numeric() and at_rest < 0:
             raise ModelError(f"the centre of the disk on {disk.body()!r} is below the plane "
                              f"z = 0 (its height is {_simplified(c[2])} when it touches); "
@@ -363,8 +365,8 @@ def rolling_contact(system, disk, entry="rolling"):
         holonomic = _simplified(c[2]) - r * s
     arm = [-r * x / s for x in d]
     point = tuple(_simplified(ci + xi) for ci, xi in zip(c, arm))
-    V = system.joint_velocity_vector(k).components(0)
-    W = system.angular_velocity_vector(k).components(0)
+    V = kinematics.joint_velocity_vector(k).components(0)
+    W = kinematics.angular_velocity_vector(k).components(0)
     spin = cross(W, arm)
     no_slip = [_simplified(SR(V[i]) + spin[i]) for i in range(2)]
     return RollingContact(disk, point, holonomic, no_slip)

@@ -9,14 +9,21 @@ energy (1), the force function ((2) or (3)) and the Lagrangian (4) are
 derived; the Lagrangian object then gives the Lagrange, Routh and Hamilton
 equations.
 
-The class is assembled from base classes, one concern each: the checks of
-its construction (:mod:`~sage_dynsym.mechanics.system_checks`), the
-kinematics (:mod:`~sage_dynsym.mechanics.system_kinematics`), the energies
-and the Lagrangian (:mod:`~sage_dynsym.mechanics.system_lagrangian`), the
-constraints (:mod:`~sage_dynsym.mechanics.system_constraints`), the
-operating points (:mod:`~sage_dynsym.mechanics.operating_points`), the
-description format (:mod:`~sage_dynsym.mechanics.format`) and the numerics
-(:mod:`~sage_dynsym.mechanics.system_numerics`).
+The system holds its description and is composed of objects with public
+interfaces, each built from explicit data: its
+:class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics` (the
+bodies, parents first, with the coordinates: what loads, force fields and
+rolling disks receive; :meth:`MechanicalSystem.kinematics`), its
+:class:`~sage_dynsym.mechanics.constraint_set.ConstraintSet`
+(:meth:`MechanicalSystem.constraint_set`), the
+:class:`~sage_dynsym.mechanics.system_checks.PhysicalConditions` of its data
+(:meth:`MechanicalSystem.conditions`) and the
+:class:`~sage_dynsym.mechanics.system_lagrangian.LagrangianBuilder` of its
+energies and Lagrangian (:meth:`MechanicalSystem.lagrangian_builder`); the
+methods of the same names on the system delegate to them. The description
+format (:mod:`~sage_dynsym.mechanics.format`) and the numerics
+(:mod:`~sage_dynsym.mechanics.system_numerics`) are base classes that use
+only the public methods.
 
 EXAMPLES:
 
@@ -41,36 +48,145 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
     sage: bool(2*L.expr() == m*l^2*(sin(theta)^2*var('dpsi')^2 + var('dtheta')^2)
     ....:                    - 2*m*g*l*cos(theta))
     True
+
+TESTS:
+
+The checks of the construction::
+
+    sage: from sage_dynsym import MechanicalSystem, RigidBody
+    sage: m = var('m')
+    sage: MechanicalSystem([RigidBody('arm', parent='nothing')], [])
+    Traceback (most recent call last):
+    ...
+    ModelError: bodies[0].parent: unknown parent body 'nothing'; known bodies are: arm
+    sage: MechanicalSystem([RigidBody('p', parent='q'), RigidBody('q', parent='p')], [])
+    Traceback (most recent call last):
+    ...
+    ModelError: bodies: the parents form a cycle: p -> q -> p
+    sage: MechanicalSystem([RigidBody('p', parent=2)], [])
+    Traceback (most recent call last):
+    ...
+    ModelError: bodies[0].parent: body index 2 out of range 1..1
+    sage: MechanicalSystem([RigidBody('p', mass=m), RigidBody('p')], [])
+    Traceback (most recent call last):
+    ...
+    ModelError: bodies[1].name: duplicate body name 'p'
+    sage: MechanicalSystem([RigidBody('p', mass=m*var('k'))], [], parameters=[m])
+    Traceback (most recent call last):
+    ...
+    ModelError: p.mass: undeclared symbol k; declared are: m, t
+
+Names that clash with the package's own symbols, and force functions
+that depend on velocities, are refused::
+
+    sage: x = var('x')
+    sage: MechanicalSystem([RigidBody('p', mass=m)], [x], parameters=[var('dx')])
+    Traceback (most recent call last):
+    ...
+    ModelError: parameters[0]: the name 'dx' is the velocity of the coordinate 'x' (coordinates[0]); choose another name
+    sage: MechanicalSystem([RigidBody('p', mass=m)], [x], force_function=var('dx')^2)
+    Traceback (most recent call last):
+    ...
+    ModelError: force_function: the force function U(q, t) cannot depend on the velocity dx; velocity-dependent forces belong in the dissipation function or the generalized forces
+
+Several force-function terms are added together (gravity and a
+spring)::
+
+    sage: from sage_dynsym import UniformGravity
+    sage: z, k, g = var('z k g')
+    sage: S = MechanicalSystem([RigidBody('p', joint=[0, 0, z], mass=m)], [z],
+    ....:                      force_function=[UniformGravity([0, 0, -g]), -k*z^2/2])
+    sage: S.force_function()
+    -g*m*z - 1/2*k*z^2
+
+Loads on unknown bodies, and constraints that are not holonomic
+relations between the coordinates, are refused::
+
+    sage: MechanicalSystem([RigidBody('p', mass=m)], [z], loads=[{'body': 'q', 'force': [1, 0, 0]}])
+    Traceback (most recent call last):
+    ...
+    ModelError: loads[0].body: unknown body 'q'; known bodies are: p
+    sage: MechanicalSystem([RigidBody('p', mass=m)], [z], constraints=[k - 1])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[0]: the constraint k - 1 == 0 does not depend on the coordinates z
+    sage: MechanicalSystem([RigidBody('p', mass=m)], [z], constraints=[z - var('dz')])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dz
 """
 from sage.misc.cachefunc import cached_method
 from sage.symbolic.ring import SR
 
-from ..errors import ModelError, brief
-from ..symbols import velocity, momentum, t, check_mechanical_names, exact_decimals
-from ..arguments import expression_list, symbol_arguments
-from ..algebra.trigonometric import SymbolicBackend
+from ..errors import ModelError
+from ..symbols import momentum, t, check_mechanical_names, exact_decimals
+from ..arguments import symbol_arguments
 from ..dynamics.holonomic import check_constraints
 from ..dynamics.model import Model
 from ..numerics.values import check_model_values
-from .force_functions import check_force_function
+from .force_functions import check_force_function, force_terms
 from .constraint_set import ConstraintSet
 from .format import MechanicalFormat
-from .kinematics import Kinematics
 from .loads import load_list
-from .operating_points import checked_operating_points, SystemOperatingPoints
+from .operating_points import checked_operating_points
 from .report import report_title, report_sections
-from .rigid_body import RigidBody
-from .system_checks import SystemChecks
-from .system_constraints import SystemConstraints
+from .system_checks import check_declared_symbols, checked_load, PhysicalConditions
 from .system_kinematics import SystemKinematics
-from .system_lagrangian import SystemLagrangian
+from .system_lagrangian import LagrangianBuilder
 from .system_numerics import MechanicalNumerics
 
 __all__ = ['MechanicalSystem', 'check_constraints']
 
 
-class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemConstraints,
-                       SystemOperatingPoints, MechanicalFormat, MechanicalNumerics, Model):
+class DelegatedMethod:
+    r"""
+    A method of a system that is a method of one of its composed objects:
+    in the body of a class, ``angular_velocity = DelegatedMethod('kinematics',
+    SystemKinematics)`` makes ``S.angular_velocity`` the bound method
+    ``S.kinematics().angular_velocity`` (so its documentation and examples
+    are those of :meth:`SystemKinematics.angular_velocity
+    <sage_dynsym.mechanics.system_kinematics.SystemKinematics.angular_velocity>`).
+
+    INPUT:
+
+    - ``part`` -- the name of the system's method that gives the composed
+      object
+    - ``cls`` -- the class of the composed object (what the class attribute
+      documents)
+    - ``target`` -- (default: the attribute's own name) the name of the
+      method of the composed object
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import MechanicalSystem, RigidBody
+        sage: from sage_dynsym.mechanics.system_kinematics import SystemKinematics
+        sage: a = var('a')
+        sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a)])], [a])
+        sage: S.angular_velocity(1), S.angular_velocity == S.kinematics().angular_velocity
+        ((0, 0, da), True)
+        sage: MechanicalSystem.angular_velocity is SystemKinematics.angular_velocity
+        True
+        sage: MechanicalSystem.__dict__['constraints']
+        Method holonomic of the constraint_set() of the object
+    """
+
+    def __init__(self, part, cls, target=None):
+        self._part, self._class, self._target = part, cls, target
+
+    def __set_name__(self, owner, name):
+        if self._target is None:
+            self._target = name
+
+    def __repr__(self):
+        return f"Method {self._target} of the {self._part}() of the object"
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return getattr(self._class, self._target)
+        return getattr(getattr(obj, self._part)(), self._target)
+
+
+class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
     r"""
     A system of rigid bodies.
 
@@ -120,121 +236,45 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         sage: S = MechanicalSystem([arm, base], [a, b]); S.bodies()
         [Rigid body 'base' (parent 0, rotations [(3, a)], mass 0),
          Rigid body 'arm' (parent base, rotations [(1, b)], mass m)]
-
-    TESTS::
-
-        sage: MechanicalSystem([RigidBody('arm', parent='nothing')], [])
-        Traceback (most recent call last):
-        ...
-        ModelError: bodies[0].parent: unknown parent body 'nothing'; known bodies are: arm
-        sage: MechanicalSystem([RigidBody('p', parent='q'), RigidBody('q', parent='p')], [])
-        Traceback (most recent call last):
-        ...
-        ModelError: bodies: the parents form a cycle: p -> q -> p
-        sage: MechanicalSystem([RigidBody('p', parent=2)], [])
-        Traceback (most recent call last):
-        ...
-        ModelError: bodies[0].parent: body index 2 out of range 1..1
-        sage: MechanicalSystem([RigidBody('p', mass=m), RigidBody('p')], [])
-        Traceback (most recent call last):
-        ...
-        ModelError: bodies[1].name: duplicate body name 'p'
-        sage: MechanicalSystem([RigidBody('p', mass=m*var('k'))], [], parameters=[m])
-        Traceback (most recent call last):
-        ...
-        ModelError: p.mass: undeclared symbol k; declared are: m, t
-
-    Names that clash with the package's own symbols, and force functions
-    that depend on velocities, are refused::
-
-        sage: x = var('x')
-        sage: MechanicalSystem([RigidBody('p', mass=m)], [x], parameters=[var('dx')])
-        Traceback (most recent call last):
-        ...
-        ModelError: parameters[0]: the name 'dx' is the velocity of the coordinate 'x' (coordinates[0]); choose another name
-        sage: MechanicalSystem([RigidBody('p', mass=m)], [x], force_function=var('dx')^2)
-        Traceback (most recent call last):
-        ...
-        ModelError: force_function: the force function U(q, t) cannot depend on the velocity dx; velocity-dependent forces belong in the dissipation function or the generalized forces
-
-    Several force-function terms are added together (gravity and a
-    spring)::
-
-        sage: from sage_dynsym import UniformGravity
-        sage: z, k, g = var('z k g')
-        sage: S = MechanicalSystem([RigidBody('p', joint=[0, 0, z], mass=m)], [z],
-        ....:                      force_function=[UniformGravity([0, 0, -g]), -k*z^2/2])
-        sage: S.force_function()
-        -g*m*z - 1/2*k*z^2
-
-    Loads on unknown bodies, and constraints that are not holonomic
-    relations between the coordinates, are refused::
-
-        sage: MechanicalSystem([RigidBody('p', mass=m)], [z], loads=[{'body': 'q', 'force': [1, 0, 0]}])
-        Traceback (most recent call last):
-        ...
-        ModelError: loads[0].body: unknown body 'q'; known bodies are: p
-        sage: MechanicalSystem([RigidBody('p', mass=m)], [z], constraints=[k - 1])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: the constraint k - 1 == 0 does not depend on the coordinates z
-        sage: MechanicalSystem([RigidBody('p', mass=m)], [z], constraints=[z - var('dz')])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dz
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
                  dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=(),
                  nonholonomic=(), rolling=(), operating_points=None):
-        if not isinstance(bodies, (list, tuple)):
-            raise ModelError(f"expected a list of RigidBody, got {brief(bodies)}; e.g. "
-                             "MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])",
-                             entry="bodies")
-        bodies = list(bodies)
-        given_names = [b.name() if isinstance(b, RigidBody) else None for b in bodies]
-        for i, body in enumerate(bodies):
-            if not isinstance(body, RigidBody):
-                raise ModelError(f"expected a RigidBody, got {body!r}", entry=f"bodies[{i}]")
-        self._bodies = self._sorted_by_parents(bodies)
-        self._coordinates = expression_list(coordinates, "coordinates",
-                                            expected="a list of symbolic variables")
-        for q in self._coordinates:
-            if not q.is_symbol():
-                raise ModelError(f"coordinates must be symbolic variables, got {q}",
-                                 entry="coordinates")
-        self._velocities = [velocity(q) for q in self._coordinates]
+        self._kinematics = kinematics = SystemKinematics(bodies, coordinates)
+        q = kinematics.coordinates()
         self._parameters = None if parameters is None else [SR(p) for p in parameters]
-        check_mechanical_names(self._coordinates, self._parameters or (), ModelError)
-        check_force_function(force_function, self._coordinates)
+        check_mechanical_names(q, self._parameters or (), ModelError)
+        check_force_function(force_function, q)
         if isinstance(force_function, (list, tuple)):
             force_function = list(force_function)
         self._force = force_function
         self._dissipation = SR(dissipation)
-        n = len(self._coordinates)
-        self._forces = [SR(0)] * n if forces is None else [SR(f) for f in forces]
-        if len(self._forces) != n:
-            raise ModelError(f"expected {n} generalized forces, one per coordinate, got "
+        self._forces = [SR(0)] * len(q) if forces is None else [SR(f) for f in forces]
+        if len(self._forces) != len(q):
+            raise ModelError(f"expected {len(q)} generalized forces, one per coordinate, got "
                              f"{len(self._forces)}", entry="forces")
         self._name = name
         self._positive = symbol_arguments(positive, 'positive')
         if self._parameters is not None:
-            self._check_symbols()
+            check_declared_symbols(kinematics, self._parameters, self._dissipation,
+                                   self._forces, self._force)
             names = {str(p) for p in self._parameters}
             for p in self._positive:
                 if str(p) not in names:
                     raise ModelError(f"{p} is not a declared parameter", entry="positive")
-        self._symbolic = Kinematics(self, SymbolicBackend())
-        self._tree = self._symbolic.tree
-        self._loads = [self._checked_load(load, f"loads[{i}]", given_names)
+        self._loads = [checked_load(load, f"loads[{i}]", kinematics, self._parameters)
                        for i, load in enumerate(load_list(loads))]
-        self._constraints = check_constraints(constraints, self._coordinates, self._parameters)
-        self._constraint_set = ConstraintSet(self, self._constraints, nonholonomic, rolling,
-                                             given_names)
+        self._constraint_set = ConstraintSet(
+            kinematics, check_constraints(constraints, q, self._parameters), nonholonomic,
+            rolling, self._parameters)
         self._operating_points = checked_operating_points(
-            operating_points, self._coordinates, self._velocities, self._parameters)
-        self._physical = self._physical_conditions(given_names)
-
+            operating_points, q, kinematics.velocities(), self._parameters)
+        self._physical = PhysicalConditions(kinematics, self._positive,
+                                            self._constraint_set.rolling(), self.force_terms())
+        self._builder = LagrangianBuilder(kinematics, self._force, self._dissipation,
+                                          self._forces, self._loads, self._constraint_set,
+                                          self._name, self._positive)
 
     # ------------------------------------------------------------------
     # the model interface
@@ -333,8 +373,9 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
                              entry="subs")
         values = exact_decimals(values)
         check_model_values(self, values, entry="subs")
-        protected = set(self._coordinates) | set(self._velocities) | {t}
-        protected |= set(self._accelerations()) | {momentum(q) for q in self._coordinates}
+        K = self._kinematics
+        protected = set(K.coordinates()) | set(K.velocities()) | {t}
+        protected |= set(K.accelerations()) | {momentum(q) for q in K.coordinates()}
         substitution = {}
         for key, value in values.items():
             symbol = SR.var(key) if isinstance(key, str) else SR(key)
@@ -355,16 +396,17 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         force = terms if isinstance(self._force, list) else (terms[0] if terms else None)
         kept = [p for p in self._parameters if p not in substitution] \
             if self._parameters is not None else None
-        bodies = [b.subs(substitution, parent=self._bodies[self._parents[k] - 1].name()
-                         if self._parents[k] else 0)
-                  for k, b in enumerate(self._bodies, 1)]
-        return MechanicalSystem(bodies, self._coordinates,
+        bodies = [b.subs(substitution, parent=K.bodies()[K.parent_index(k) - 1].name()
+                         if K.parent_index(k) else 0)
+                  for k, b in enumerate(K.bodies(), 1)]
+        return MechanicalSystem(bodies, K.coordinates(),
                                 parameters=kept, force_function=force,
                                 dissipation=sub(self._dissipation),
                                 forces=[sub(f) for f in self._forces], name=self._name,
                                 positive=[p for p in self._positive if p not in substitution],
                                 loads=[load.subs(substitution) for load in self._loads],
-                                constraints=[sub(f) for f in self._constraints],
+                                constraints=[sub(f) for f in
+                                             self._constraint_set.given_holonomic()],
                                 nonholonomic=[sub(g) for g in
                                               self._constraint_set.given_nonholonomic()],
                                 rolling=[disk.subs(substitution)
@@ -395,10 +437,10 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
     # the system's data
 
     def _repr_(self):
-        n = len(self._bodies)
+        n = len(self._kinematics.bodies())
         name = f" {self._name!r}" if self._name else ""
         return (f"Mechanical system{name}: {n} bod{'y' if n == 1 else 'ies'}, coordinates "
-                f"({', '.join(map(str, self._coordinates))})")
+                f"({', '.join(map(str, self._kinematics.coordinates()))})")
 
     def name(self):
         r"""
@@ -411,45 +453,6 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             'empty'
         """
         return self._name
-
-    def bodies(self):
-        r"""
-        The bodies, parents before children; body `k` (1-based) is
-        ``bodies()[k-1]``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import MechanicalSystem, RigidBody
-            sage: MechanicalSystem([RigidBody('b')], []).bodies()
-            [Rigid body 'b' (parent 0, rotations [], mass 0)]
-        """
-        return list(self._bodies)
-
-    def parent_index(self, k):
-        r"""
-        The 1-based index of the parent of body ``k`` (0: inertial frame).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import MechanicalSystem, RigidBody
-            sage: S = MechanicalSystem([RigidBody('a'), RigidBody('b', parent='a')], [])
-            sage: S.parent_index(2), S.parent_index(1)
-            (1, 0)
-        """
-        self._check_index(k, inertial=True)
-        return self._parents[k]
-
-    def coordinates(self):
-        r"""
-        The generalized coordinates.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import MechanicalSystem
-            sage: MechanicalSystem([], [var('x')]).coordinates()
-            [x]
-        """
-        return list(self._coordinates)
 
     def parameters(self):
         r"""
@@ -480,9 +483,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             sage: MechanicalSystem([], [x], force_function=-k*x^2/2).force_terms()
             [-1/2*k*x^2]
         """
-        if self._force is None:
-            return []
-        return list(self._force) if isinstance(self._force, list) else [self._force]
+        return force_terms(self._force)
 
     def conditions(self):
         r"""
@@ -507,23 +508,10 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
             [e1^2 + e2^2 == 1, r > 0]
 
         What the declared signs decide is not a condition; what they
-        contradict is refused::
-
-            sage: A, C = var('A C')
-            sage: top = RigidBody('top', rotations=[(3, phi)], mass=1,
-            ....:                 inertia=diagonal_matrix([A, A, C]))
-            sage: MechanicalSystem([top], [phi], positive=[A, C]).conditions()
-            [2*A - C >= 0]
-            sage: MechanicalSystem([top], [phi], positive=[A, C],
-            ....:                  force_function=NewtonianField(nu, r, [1, 0, 0])).conditions()
-            [2*A - C >= 0, r > 0]
-            sage: MechanicalSystem([top], [phi], positive=[A, C, r],
-            ....:                  force_function=NewtonianField(nu, -r, [1, 0, 0]))
-            Traceback (most recent call last):
-            ...
-            ModelError: force_function: the distance from the attracting centre must be positive, but -r is never positive under the declared signs (A > 0, C > 0, r > 0)
+        contradict is refused (see
+        :class:`~sage_dynsym.mechanics.system_checks.PhysicalConditions`).
         """
-        return list(self._physical)
+        return self._physical.conditions()
 
     def report_title(self):
         r"""The heading of the system's report (see :mod:`~sage_dynsym.mechanics.report`).
@@ -624,28 +612,6 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         """
         return self._dissipation
 
-    @cached_method
-    def generalized_forces(self):
-        r"""
-        The generalized non-potential forces `Q_i`: those given as
-        ``forces`` plus those of the :meth:`loads` (see
-        :mod:`~sage_dynsym.mechanics.loads` for the sign convention).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import MechanicalSystem, RigidBody
-            sage: x, F = var('x F')
-            sage: MechanicalSystem([], [x], forces=[1]).generalized_forces()
-            [1]
-            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x], forces=[1],
-            ....:                  loads=[{'body': 'b', 'force': [F, 0, 0]}]).generalized_forces()
-            [F + 1]
-        """
-        forces = list(self._forces)
-        for i, load in enumerate(self._loads):
-            forces = [a + b for a, b in zip(forces, load.generalized_forces(self, f"loads[{i}]"))]
-        return forces
-
     def given_forces(self):
         r"""
         The generalized forces given as ``forces`` (zeros if none), without
@@ -661,3 +627,136 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
         """
         return list(self._forces)
 
+
+    # ------------------------------------------------------------------
+    # the composed objects, and the methods that delegate to them
+
+    def kinematics(self):
+        r"""
+        The :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`
+        of the system: its bodies with its coordinates, and their kinematics
+        (what its loads, force fields and rolling disks are evaluated on).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: K = load(example_path('spherical_pendulum.yaml')).kinematics(); K
+            Kinematics of 1 body in coordinates (psi, theta)
+            sage: K.angular_velocity(1)
+            (dtheta, dpsi*sin(theta), dpsi*cos(theta))
+        """
+        return self._kinematics
+
+    def lagrangian_builder(self):
+        r"""
+        The :class:`~sage_dynsym.mechanics.system_lagrangian.LagrangianBuilder`
+        of the system: its energies and its Lagrangian.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).lagrangian_builder()
+            Builder of the Lagrangian of spherical pendulum: 1 body, coordinates (psi, theta)
+        """
+        return self._builder
+
+
+    # the kinematics: the methods of the kinematics of the same names
+    bodies = DelegatedMethod('kinematics', SystemKinematics)
+    parent_index = DelegatedMethod('kinematics', SystemKinematics)
+    coordinates = DelegatedMethod('kinematics', SystemKinematics)
+    velocities = DelegatedMethod('kinematics', SystemKinematics)
+    frame_tree = DelegatedMethod('kinematics', SystemKinematics)
+    body_frame = DelegatedMethod('kinematics', SystemKinematics)
+    direction_cosines = DelegatedMethod('kinematics', SystemKinematics)
+    angular_velocity_vector = DelegatedMethod('kinematics', SystemKinematics)
+    angular_velocity = DelegatedMethod('kinematics', SystemKinematics)
+    relative_angular_velocity = DelegatedMethod('kinematics', SystemKinematics)
+    joint_velocity_vector = DelegatedMethod('kinematics', SystemKinematics)
+    joint_velocity = DelegatedMethod('kinematics', SystemKinematics)
+    joint_position = DelegatedMethod('kinematics', SystemKinematics)
+    mass_center_position = DelegatedMethod('kinematics', SystemKinematics)
+
+    # the energies: the methods of the builder of the Lagrangian
+    body_decomposition = DelegatedMethod('lagrangian_builder', LagrangianBuilder)
+    decomposition = DelegatedMethod('lagrangian_builder', LagrangianBuilder)
+    kinetic_energy = DelegatedMethod('lagrangian_builder', LagrangianBuilder)
+    force_function = DelegatedMethod('lagrangian_builder', LagrangianBuilder)
+    generalized_forces = DelegatedMethod('lagrangian_builder', LagrangianBuilder)
+
+    # the constraints: those of the constraint set
+    constraints = DelegatedMethod('constraint_set', ConstraintSet, 'holonomic')
+    nonholonomic_constraints = DelegatedMethod('constraint_set', ConstraintSet, 'nonholonomic')
+
+    @cached_method
+    def lagrangian(self, christoffel='auto'):
+        r"""
+        The Lagrangian `L = T + U`, with the system's dissipation function,
+        generalized forces and constraints; ``christoffel`` chooses how the
+        equations get their Christoffel coefficients (see
+        :meth:`LagrangianBuilder.lagrangian
+        <sage_dynsym.mechanics.system_lagrangian.LagrangianBuilder.lagrangian>`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, m, k, c = var('x m k c')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      force_function=-k*x^2/2, dissipation=c*var('dx')^2/2)
+            sage: S.lagrangian().lagrange_equations()
+            [c*dx + ddx*m + k*x]
+            sage: S.lagrangian() is S.lagrangian()
+            True
+        """
+        return self._builder.lagrangian(christoffel)
+
+    def constraint_set(self):
+        r"""
+        All the constraints with their origins: the
+        :class:`~sage_dynsym.mechanics.constraint_set.ConstraintSet` (the
+        rolling contacts, which conditions are holonomic).
+
+        EXAMPLES: see :mod:`~sage_dynsym.mechanics.constraint_set`.
+        """
+        return self._constraint_set
+
+    def operating_points(self):
+        r"""
+        The named operating points (a dict ``{name: OperatingPoint}``, see
+        :mod:`~sage_dynsym.mechanics.operating_points`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, v = var('x v')
+            sage: MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x],
+            ....:                  operating_points={'moving': {'velocities': {'dx': v}}}).operating_points()
+            {'moving': Operating point 'moving': dx = v}
+        """
+        return dict(self._operating_points)
+
+    def operating_point(self, name):
+        r"""
+        The operating point ``name``, for
+        :func:`~sage_dynsym.analysis.linear.linearize`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, linearize
+            sage: x, m, v = var('x m v')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x],
+            ....:                      operating_points={'moving': {'velocities': {'dx': v}}})
+            sage: linearize(S, S.operating_point('moving'), coordinates=[x]).M()
+            [m]
+            sage: S.operating_point('resting')
+            Traceback (most recent call last):
+            ...
+            ModelError: operating_points: no operating point 'resting'; the operating points are moving
+        """
+        if not isinstance(name, str) or name not in self._operating_points:
+            raise ModelError(f"no operating point {name!r}; the operating points are "
+                             f"{', '.join(self._operating_points) or '(none)'}",
+                             entry="operating_points")
+        return self._operating_points[name]

@@ -1,26 +1,32 @@
 r"""
 The energies and the Lagrangian of a mechanical system
 
-:class:`SystemLagrangian` is a base class of
-:class:`~sage_dynsym.mechanics.system.MechanicalSystem`: the decomposition
-(4) of the kinetic energy of each body and of the system, the force
-function, and the Lagrangian with the strategy that forms the Christoffel
-coefficients of its equations (5): as polynomials in the sines and cosines
-of the angles, from the symbolic mass matrix, or body by body (see
-:meth:`SystemLagrangian.lagrangian`).
+A :class:`LagrangianBuilder` builds the Lagrangian of a
+:class:`~sage_dynsym.mechanics.system.MechanicalSystem` (which composes one,
+see its :meth:`~sage_dynsym.mechanics.system.MechanicalSystem.lagrangian_builder`)
+from the system's kinematics, force function, dissipation function,
+generalized forces, loads and constraints: the decomposition (4) of the
+kinetic energy of each body and of the system, the force function, the
+generalized forces, and the Lagrangian with the strategy that forms the
+Christoffel coefficients of its equations (5): as polynomials in the sines
+and cosines of the angles, from the symbolic mass matrix, or body by body
+(see :meth:`LagrangianBuilder.lagrangian`).
 
 EXAMPLES::
 
     sage: from sage_dynsym import load
     sage: from sage_dynsym.description import example_path
     sage: S = load(example_path('spherical_pendulum.yaml'))
-    sage: S.kinetic_energy()
+    sage: B = S.lagrangian_builder(); B
+    Builder of the Lagrangian of spherical pendulum: 1 body, coordinates (psi, theta)
+    sage: B.kinetic_energy()
     1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m
 """
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
 from sage.misc.verbose import verbose
 from sage.modules.free_module_element import vector
+from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
@@ -30,7 +36,7 @@ from ..dynamics.lagrangian import Lagrangian
 from ..dynamics.nonholonomic import NonholonomicLagrangian
 from ..dynamics.natural_equations import natural_equations
 from ..dynamics.natural_form import natural_form
-from .force_functions import split_force_terms, UniformGravity
+from .force_functions import force_terms, split_force_terms, UniformGravity
 from .frames import held_product
 from .kinematics import Kinematics
 
@@ -39,15 +45,65 @@ from .kinematics import Kinematics
 # derivation (see bench/bench_chain.py); see lagrangian().
 _POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
 
+__all__ = ['LagrangianBuilder']
 
-class SystemLagrangian:
+
+class LagrangianBuilder(SageObject):
     r"""
-    The energies and the Lagrangian of a
-    :class:`~sage_dynsym.mechanics.system.MechanicalSystem` (a base class
-    of it, see the module documentation).
+    The builder of the Lagrangian of a mechanical system, and of its
+    energies (see the module documentation).
 
-    EXAMPLES: see :class:`~sage_dynsym.mechanics.system.MechanicalSystem`.
+    INPUT:
+
+    - ``kinematics`` -- the
+      :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics` of
+      the system
+    - ``force_function`` -- (optional) the force function as given to the
+      system (a field, an expression, or a list of those)
+    - ``dissipation`` -- (default: 0) the Rayleigh function
+    - ``forces`` -- (optional) the generalized forces given, one per
+      coordinate
+    - ``loads`` -- (optional) the checked
+      :class:`~sage_dynsym.mechanics.loads.Load` objects
+    - ``constraints`` -- (optional) the
+      :class:`~sage_dynsym.mechanics.constraint_set.ConstraintSet` of the
+      system
+    - ``name`` -- (optional) the name of the Lagrangian
+    - ``positive`` -- (optional) the parameters declared positive
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import RigidBody
+        sage: from sage_dynsym.mechanics.system_kinematics import SystemKinematics
+        sage: from sage_dynsym.mechanics.system_lagrangian import LagrangianBuilder
+        sage: x, m, k = var('x m k')
+        sage: K = SystemKinematics([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])
+        sage: B = LagrangianBuilder(K, force_function=-k*x^2/2, name='spring'); B
+        Builder of the Lagrangian of spring: 1 body, coordinates (x)
+        sage: B.lagrangian().lagrange_equations()
+        [ddx*m + k*x]
     """
+
+    def __init__(self, kinematics, force_function=None, dissipation=0, forces=None, loads=(),
+                 constraints=None, name=None, positive=()):
+        self._kinematics = kinematics
+        self._coordinates = kinematics.coordinates()
+        self._velocities = kinematics.velocities()
+        self._terms = force_terms(force_function)
+        self._dissipation = SR(dissipation)
+        self._forces = ([SR(0)] * len(self._coordinates) if forces is None
+                        else [SR(f) for f in forces])
+        self._loads = list(loads)
+        self._holonomic = [] if constraints is None else constraints.holonomic()
+        self._nonholonomic = [] if constraints is None else constraints.nonholonomic()
+        self._name = name
+        self._positive = list(positive)
+
+    def _repr_(self):
+        n = len(self._kinematics.bodies())
+        return (f"Builder of the Lagrangian{' of ' + self._name if self._name else ''}: "
+                f"{n} bod{'y' if n == 1 else 'ies'}, coordinates "
+                f"({', '.join(map(str, self._coordinates))})")
 
     @cached_method
     def body_decomposition(self, k):
@@ -74,10 +130,10 @@ class SystemLagrangian:
             [l^2*m*sin(b)^2              0]
             [             0          l^2*m]
         """
-        self._check_index(k)
+        self._kinematics.check_index(k)
         kinematics = self._polynomial_kinematics()
         if kinematics is None:
-            kinematics, to_symbolic = self._symbolic, trig_rational_simplify
+            kinematics, to_symbolic = self._kinematics.symbolic(), trig_rational_simplify
         else:
             to_symbolic = kinematics.backend().simplest_fraction
         A, A1, A0 = kinematics.body_decomposition(k)
@@ -94,7 +150,7 @@ class SystemLagrangian:
         """
         dynamic = self._coordinates + self._velocities + [t]
         data = list(dynamic)
-        for body in self._bodies:
+        for body in self._kinematics.bodies():
             for _, angle in body.rotations():
                 # the sines and cosines of constant angles may be numbers
                 # (sqrt(3)/2 at pi/6: an atom of the ring); rates enter W_k
@@ -109,8 +165,8 @@ class SystemLagrangian:
             # sines and cosines of every angle, including known functions of
             # time and parameters, are generators: their squares reduce
             ring = TrigPolynomialRing.for_expressions(data, dynamic)
-            kinematics = Kinematics(self, ring)
-            for k in range(1, len(self._bodies) + 1):
+            kinematics = Kinematics(self._kinematics, ring)
+            for k in range(1, len(self._kinematics.bodies()) + 1):
                 kinematics.body_decomposition(k)
         except NotPolynomial:
             return None
@@ -136,7 +192,8 @@ class SystemLagrangian:
         data = self._polynomial_decomposition()
         if data is None:
             n = len(self._coordinates)
-            parts = [self.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
+            parts = [self.body_decomposition(k)
+                     for k in range(1, len(self._kinematics.bodies()) + 1)]
             A = sum((p[0] for p in parts), matrix(SR, n, n)).apply_map(trig_rational_simplify)
             A1 = sum((p[1] for p in parts), vector(SR, n)).apply_map(trig_rational_simplify)
             A0 = trig_rational_simplify(sum((p[2] for p in parts), SR(0))) + self.force_function()
@@ -172,7 +229,8 @@ class SystemLagrangian:
             return None
         # sum the polynomials first: contributions of the bodies combine
         n = len(self._coordinates)
-        parts = [kinematics.body_decomposition(k) for k in range(1, len(self._bodies) + 1)]
+        parts = [kinematics.body_decomposition(k)
+                 for k in range(1, len(self._kinematics.bodies()) + 1)]
         zero, reduce = calculus.zero, kinematics.backend().reduce
         A = [[None] * n for _ in range(n)]
         for i in range(n):
@@ -201,7 +259,7 @@ class SystemLagrangian:
             A, A1, A0 = self.decomposition()
             A0 -= self.force_function()
         else:
-            self._check_index(k)
+            self._kinematics.check_index(k)
             A, A1, A0 = self.body_decomposition(k)
         return natural_form(A, A1, A0, self._velocities)
 
@@ -218,13 +276,36 @@ class SystemLagrangian:
             sage: MechanicalSystem([], [x], force_function=-x^2/2).force_function()
             -1/2*x^2
         """
-        terms = self.force_terms()
+        terms = self._terms
         if len(terms) == 1 and not hasattr(terms[0], 'evaluate'):
             return SR(terms[0])
         total = SR(0)
         for term in terms:
-            total += term.evaluate(self).expand() if hasattr(term, 'evaluate') else SR(term)
+            total += (term.evaluate(self._kinematics).expand() if hasattr(term, 'evaluate')
+                      else SR(term))
         return trig_rational_simplify(total) if terms else total
+
+    @cached_method
+    def generalized_forces(self):
+        r"""
+        The generalized non-potential forces `Q_i`: those given plus those
+        of the loads (see :mod:`~sage_dynsym.mechanics.loads` for the sign
+        convention).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: x, F = var('x F')
+            sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0])], [x], forces=[1],
+            ....:                      loads=[{'body': 'b', 'force': [F, 0, 0]}])
+            sage: S.lagrangian_builder().generalized_forces()
+            [F + 1]
+        """
+        forces = list(self._forces)
+        for i, load in enumerate(self._loads):
+            forces = [a + b for a, b in
+                      zip(forces, load.generalized_forces(self._kinematics, f"loads[{i}]"))]
+        return forces
 
     @cached_method
     def lagrangian(self, christoffel='auto'):
@@ -321,14 +402,14 @@ class SystemLagrangian:
         if christoffel not in ('auto', 'polynomial', 'recursive', 'symbolic'):
             raise ModelError("christoffel must be 'auto', 'polynomial', 'recursive' or "
                              f"'symbolic', got {christoffel!r}")
-        kinematics = self._symbolic
+        kinematics, bodies = self._kinematics.symbolic(), self._kinematics.bodies()
         if christoffel == 'recursive' and not kinematics.recursive_applies():
             christoffel = 'symbolic'
         if christoffel == 'auto':
             # deep bodies: the polynomial forms grow faster than the nested
             # ones, and even computing them costs seconds (bench/bench_chain.py)
-            depth = max((len(self._tree.path_to_root(kinematics.body_frame(k))) - 1
-                         for k in range(1, len(self._bodies) + 1)), default=0)
+            depth = max((len(kinematics.tree.path_to_root(kinematics.body_frame(k))) - 1
+                         for k in range(1, len(bodies) + 1)), default=0)
             if depth > 8 and kinematics.recursive_applies():
                 christoffel = 'recursive'
         data = None if christoffel == 'recursive' else self._polynomial_decomposition()
@@ -339,10 +420,10 @@ class SystemLagrangian:
         if christoffel == 'recursive':
             # gravity enters the recursion; only the other terms, not
             # expanded, are differentiated (nothing of the size of the tree is)
-            gravity, rest = split_force_terms(self)
+            gravity, rest = split_force_terms(self._terms, self._kinematics)
             A, A1, T0, h = kinematics.recursive_equations(gravity)
             ddq = [acceleration(q) for q in self._coordinates]
-            U = rest + sum((term.evaluate(self) for term in self.force_terms()
+            U = rest + sum((term.evaluate(self._kinematics) for term in self._terms
                             if isinstance(term, UniformGravity)), SR(0))
 
             def recursive_equations():
@@ -369,9 +450,9 @@ class SystemLagrangian:
             builder = ring_equations if use_ring else None
         options = dict(decomposition=decomposition, dissipation=self._dissipation,
                        forces=self.generalized_forces(), name=self._name,
-                       equation_builder=builder, constraints=self.constraints(),
+                       equation_builder=builder, constraints=self._holonomic,
                        positive=self._positive)
-        if self.nonholonomic_constraints():
+        if self._nonholonomic:
             return NonholonomicLagrangian(None, self._coordinates, self._velocities,
-                                          nonholonomic=self.nonholonomic_constraints(), **options)
+                                          nonholonomic=self._nonholonomic, **options)
         return Lagrangian(None, self._coordinates, self._velocities, **options)
