@@ -57,7 +57,7 @@ import operator
 
 from ..errors import AnalysisError, brief
 from ..analysis.normal_forms import normal_form, FormalArithmetic, BirkhoffNormalForm
-from ..analysis.normal_form_stability import normal_form_stability
+from ..analysis.normal_form_stability import normal_form_stability, stability_over_parameter
 from .hamiltonian import Hamiltonian
 
 __all__ = ['birkhoff_normal_form', 'nonlinear_stability', 'BirkhoffNormalForm',
@@ -290,7 +290,7 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False
     return normal_form(FormalArithmetic(H, n, values, relations, sample=sample), order)
 
 
-def nonlinear_stability(model, at, order=4, positive=(), prec=256):
+def nonlinear_stability(model, at, order=4, positive=(), prec=256, interval=None):
     r"""
     Lyapunov stability of an equilibrium of a conservative system beyond
     the first approximation (see the module documentation for the
@@ -307,6 +307,14 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
       the verdict)
     - ``prec`` -- (default: 256) bits of the numeric normal form; the
       linearization, the frequencies and the resonances are exact
+    - ``interval`` -- (optional) a pair ``(a, b)``: with one parameter
+      left free in ``at`` (two degrees of freedom), the verdict over
+      `a < \mu < b`, case by case: between the exceptional values of
+      :func:`exceptional_values` (decided at an exact rational sample of
+      each interval) and at each of them (exactly at the boundary of the
+      first approximation and at the resonances; at a zero of Arnold's
+      determinant, a numerical approximation, ``'undecided'`` at order 4
+      and decided by the determinant of degree 6 with ``order=6``)
 
     OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
 
@@ -326,22 +334,62 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
         sage: nonlinear_stability(L, {**L4, mu: mu2}).reason()
         'resonance 1:2 (k = (1, 2)) with a nonzero resonant term of degree 3 (amplitude ...): unstable (Markeev)'
 
+    Over the mass ratio (Deprit's diagram; the exceptional values are
+    cases of their own, see :func:`exceptional_values`; at Routh's value
+    the double root on the imaginary axis is a critical case left
+    'undecided')::
+
+        sage: v = nonlinear_stability(L, L4, interval=(0, 1/2))  # long time
+        sage: [(c.verdict(), c.region()[0][0].rhs().n(digits=8)) for c in v.cases()]  # long time
+        [('stable', 0.00000000),
+         ('undecided', 0.010913668),
+         ('stable', 0.010913668),
+         ('unstable', 0.013516016),
+         ('stable', 0.013516016),
+         ('unstable', 0.024293897),
+         ('stable', 0.024293897),
+         ('undecided', 0.038520897),
+         ('unstable', 0.038520897)]
+        sage: v.cases()[7].reason()  # long time
+        'first approximation: multiple or zero roots of the linearization: ...'
+        sage: v.at({mu: 1/50}), v.at({mu: 1/10})  # long time
+        ('stable', 'unstable')
+
     TESTS::
 
         sage: nonlinear_stability(L, L4)
         Traceback (most recent call last):
         ...
-        AnalysisError: at: give a value to the parameters ['mu'] ...
+        AnalysisError: at: give a value to the parameters ['mu'], or leave one free with interval=(a, b) ...
     """
     H = taylor_polynomial(model, at, 2)
     free = sorted({str(v) for c in H.coefficients() for v in c.variables()})
+    if free and (len(free) > 1 or interval is None):
+        raise AnalysisError(f"give a value to the parameters {free}, or leave one free with "
+                            "interval=(a, b) for the cases over it (in two degrees of "
+                            "freedom; see also exceptional_values)", entry="at")
     if free:
-        raise AnalysisError(f"give a value to the parameters {free} (for the cases over the "
-                            "parameters see birkhoff_normal_form(..., sample=...) and "
-                            "critical_values)", entry="at")
+        return _over_parameter(model, at, free[0], interval, order, positive, prec)
     return normal_form_stability(
         H, lambda degree: birkhoff_normal_form(model, at, degree, prec=prec),
         order=order, positive=positive, prec=prec)
+
+
+def _over_parameter(model, at, name, interval, order, positive, prec):
+    parameter = SR.var(name)
+    found = exceptional_values(model, at, parameter, interval, order=order, prec=prec)
+
+    def verdict_at(value, kinds):
+        # at a zero of Arnold's determinant of degree 4 (a rational within
+        # the tolerance of the zero) its small value decides nothing: the
+        # next degree decides
+        degenerate = (4,) if 'Arnold determinant' in kinds else ()
+        point = {**at, parameter: SR(QQ(value) if degenerate else value)}
+        return normal_form_stability(
+            taylor_polynomial(model, point, 2),
+            lambda degree: birkhoff_normal_form(model, point, degree, prec=prec),
+            order=order, positive=positive, prec=prec, degenerate=degenerate)
+    return stability_over_parameter(parameter, interval, found, verdict_at, positive)
 
 
 def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec=128,
