@@ -133,6 +133,27 @@ def test_l4_cases_over_the_mass_ratio():
                                    'first approximation'}
 
 
+def test_l4_exact_normal_form_with_the_mass_ratio_free():
+    # the whole normal form in QQ(mu)[sqrt 3, lambda1, lambda2]/P: Arnold's
+    # determinant is Deprit's closed form identically in mu, and its norm
+    # vanishes exactly on Deprit's 644 x^2 - 541 x + 36 = 0
+    from sage.all import PolynomialRing, AA
+    from sage_dynsym.analysis.parametric_normal_forms import arnold_polynomial
+    nf = birkhoff_normal_form(THREE_BODY, L4, order=4, sample={mu: QQ(1) / 100})
+    D, N = arnold_polynomial(nf)
+    A = nf.arithmetic()
+    m = A.K.base_ring().gen()
+    X = 27 * m * (1 - m) / 4
+    # D/2 with the normalization of the quartic terms of the numeric test above
+    closed = A.K((36 - 541 * X + 644 * X ** 2) / (8 * (1 - 4 * X) * (4 - 25 * X)))
+    assert A.reduce(D - closed / 2) == 0
+    t = PolynomialRing(QQ, 't').gen()
+    deprit = (644 * (27 * t * (1 - t) / 4) ** 2 - 541 * (27 * t * (1 - t) / 4) + 36).monic()
+    assert N.radical().change_ring(QQ) == deprit.change_variable_name('mu')
+    zeros = exceptional_values(THREE_BODY, L4, mu, (0, QQ(1) / 2))['Arnold determinant']
+    assert len(zeros) == 1 and zeros[0].parent() is AA and deprit(zeros[0]) == 0
+
+
 def test_a_free_parameter_needs_an_interval():
     with pytest.raises(AnalysisError, match="interval"):
         nonlinear_stability(THREE_BODY, L4)

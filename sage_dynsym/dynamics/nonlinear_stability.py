@@ -57,6 +57,7 @@ import operator
 
 from ..errors import AnalysisError, brief
 from ..analysis.normal_forms import normal_form, FormalArithmetic, BirkhoffNormalForm
+from ..analysis.parametric_normal_forms import FieldArithmetic, arnold_polynomial
 from ..analysis.normal_form_stability import normal_form_stability, stability_over_parameter
 from .hamiltonian import Hamiltonian
 
@@ -287,6 +288,9 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False
     H, values, relations = polynomial_hamiltonian(model, at, order)
     n = len(H.parent().gens()) // 2
     sample = {str(k): v for k, v in (sample or {}).items()}
+    if any(v is None for v in values.values()):
+        # free parameters: exact in the field of the data over QQ(params)
+        return normal_form(FieldArithmetic(H, n, values, relations, sample=sample), order)
     return normal_form(FormalArithmetic(H, n, values, relations, sample=sample), order)
 
 
@@ -482,9 +486,53 @@ def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec
             hits = [r for r in roots_in(q) if _ratio(p, r, k2 / QQ(k1))]
             if hits:
                 found[f"resonance {k1}:{k2}"] = hits
-    found['Arnold determinant'] = _determinant_zeros(H, values, name, found, a, b,
-                                                     order, samples, prec, tolerance)
+    exact = _exact_determinant_zeros(H, values, relations, name, found, a, b, prec)
+    found['Arnold determinant'] = exact if exact is not None else _determinant_zeros(
+        H, values, name, found, a, b, order, samples, prec, tolerance)
     return dict(sorted(found.items()))
+
+
+def _exact_determinant_zeros(H, values, relations, name, found, a, b, prec):
+    r"""The zeros of Arnold's determinant in ``(a, b)`` as real algebraic
+    numbers: the roots of its norm (:func:`~sage_dynsym.analysis.parametric_normal_forms.arnold_polynomial`)
+    at which the determinant of these modes (not a conjugate's) vanishes,
+    checked on the numeric normal form; ``None`` when the exact normal form
+    is out of reach (the bisection then decides)."""
+    from sage.rings.qqbar import AA
+    from sage.rings.complex_mpfr import ComplexField
+    from sage.rings.real_mpfi import RIF
+    cuts = sorted([a, b] + [r for rs in found.values() for r in rs])
+    # a sample where the modes are elliptic and simple (the pieces between
+    # the exceptional values, widest first; beyond the first approximation
+    # the normal form is refused)
+    pieces = sorted(zip(cuts, cuts[1:]), key=lambda p: -RIF(p[1] - p[0]).center())
+    norm = None
+    for lo, hi in pieces:
+        width = (RIF(hi) - RIF(lo)) / 4
+        sample = RIF(RIF(lo) + width, RIF(hi) - width).simplest_rational()
+        try:
+            nf = normal_form(FieldArithmetic(H, 2, values, relations, sample={name: sample}), 4)
+        except AnalysisError:
+            continue
+        _, norm = arnold_polynomial(nf)
+        break
+    if norm is None:
+        return None
+    CC = ComplexField(prec)
+    names = H.base_ring().variable_names()
+    zeros = []
+    for root in norm.roots(AA, multiplicities=False):
+        if not a < root < b or any(root in rs for rs in found.values()):
+            continue
+        point = [CC(root) if g == name else CC(values[g]) for g in names]
+        numeric = H.map_coefficients(lambda c: CC(c(*point)), new_base_ring=CC)
+        try:
+            D = normal_form(FormalArithmetic.numeric(numeric, 2, prec), 4).arnold_determinant()
+        except AnalysisError:
+            continue            # not elliptic there: no normal form, no determinant
+        if abs(D) < QQ(2) ** (-prec // 3):
+            zeros.append(root)
+    return zeros
 
 
 def _symbolic_hessian(H, point):
