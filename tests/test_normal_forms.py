@@ -109,6 +109,56 @@ def test_l4_undecided_at_mu_c_at_order_4():
     assert v.verdict() == 'undecided' and 'order' in v.reason()
 
 
+def test_l4_cases_over_the_mass_ratio():
+    # Deprit's diagram over 0 < mu < 1/2: the cases change exactly at the
+    # literature's mu_c, mu3, mu2, mu1; stable between them (Arnold-Moser),
+    # unstable at the resonances (Markeev) and beyond mu1 (Routh)
+    v = nonlinear_stability(THREE_BODY, L4, interval=(0, QQ(1) / 2))
+    cuts = sorted({float(c.region()[0][0].rhs()) for c in v.cases()} - {0.0})
+    for found, expected in zip(cuts, [MUC, MU3, MU2, MU1]):
+        assert abs(found - expected.n(100)) < 1e-10
+    assert len(cuts) == 4
+    expected = {QQ(1) / 200: 'stable', QQ(12) / 1000: 'stable', QQ(2) / 100: 'stable',
+                QQ(3) / 100: 'stable', QQ(1) / 10: 'unstable', QQ(4) / 10: 'unstable'}
+    for m, verdict in expected.items():
+        assert v.at({mu: m}) == verdict, m
+    at_points = {c.region()[0][0].rhs().n(60): c for c in v.cases()
+                 if c.region()[0][0].operator().__name__ == 'eq'}
+    by_value = sorted(at_points.items())
+    assert [c.verdict() for _, c in by_value] == ['undecided', 'unstable', 'unstable',
+                                                  'undecided']
+    assert 'resonance 1:3' in by_value[1][1].reason()
+    assert 'resonance 1:2' in by_value[2][1].reason()
+    assert set(v.boundaries()) == {'Arnold determinant', 'resonance 1:2', 'resonance 1:3',
+                                   'first approximation'}
+
+
+def test_l4_exact_normal_form_with_the_mass_ratio_free():
+    # the whole normal form in QQ(mu)[sqrt 3, lambda1, lambda2]/P: Arnold's
+    # determinant is Deprit's closed form identically in mu, and its norm
+    # vanishes exactly on Deprit's 644 x^2 - 541 x + 36 = 0
+    from sage.all import PolynomialRing, AA
+    from sage_dynsym.analysis.parametric_normal_forms import arnold_polynomial
+    nf = birkhoff_normal_form(THREE_BODY, L4, order=4, sample={mu: QQ(1) / 100})
+    D, N = arnold_polynomial(nf)
+    A = nf.arithmetic()
+    m = A.K.base_ring().gen()
+    X = 27 * m * (1 - m) / 4
+    # D/2 with the normalization of the quartic terms of the numeric test above
+    closed = A.K((36 - 541 * X + 644 * X ** 2) / (8 * (1 - 4 * X) * (4 - 25 * X)))
+    assert A.reduce(D - closed / 2) == 0
+    t = PolynomialRing(QQ, 't').gen()
+    deprit = (644 * (27 * t * (1 - t) / 4) ** 2 - 541 * (27 * t * (1 - t) / 4) + 36).monic()
+    assert N.radical().change_ring(QQ) == deprit.change_variable_name('mu')
+    zeros = exceptional_values(THREE_BODY, L4, mu, (0, QQ(1) / 2))['Arnold determinant']
+    assert len(zeros) == 1 and zeros[0].parent() is AA and deprit(zeros[0]) == 0
+
+
+def test_a_free_parameter_needs_an_interval():
+    with pytest.raises(AnalysisError, match="interval"):
+        nonlinear_stability(THREE_BODY, L4)
+
+
 @pytest.mark.slow
 def test_l4_order_6_decides_at_mu_c():
     # Meyer & Schmidt (1986): stable at mu_c

@@ -41,7 +41,8 @@ from .normal_forms import symplectic_unit
 from .verdict import StabilityVerdict
 
 
-def normal_form_stability(H, compute_normal_form, order=4, positive=(), prec=256):
+def normal_form_stability(H, compute_normal_form, order=4, positive=(), prec=256,
+                          degenerate=()):
     r"""
     The stability verdict of the equilibrium at the origin of the
     Hamiltonian whose Taylor polynomial (of degree at least 2, exact
@@ -55,6 +56,9 @@ def normal_form_stability(H, compute_normal_form, order=4, positive=(), prec=256
       of the same Hamiltonian
     - ``order``, ``positive``, ``prec`` -- as for
       :func:`~sage_dynsym.dynamics.nonlinear_stability.nonlinear_stability`
+    - ``degenerate`` -- (optional) degrees of Arnold's determinant known to
+      vanish at the point (``H`` then being a numerical approximation of a
+      point where it does: its small value there decides nothing)
 
     OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
 
@@ -100,7 +104,7 @@ def normal_form_stability(H, compute_normal_form, order=4, positive=(), prec=256
                        f"{order} has {'the resonances ' + str(resonances) if resonances else 'no resonance'}"
                        "; in more than two degrees of freedom it gives formal stability only, "
                        "not Lyapunov stability", 'normal form')
-    return _two_degrees(nf, resonances, order, verdict)
+    return _two_degrees(nf, resonances, order, verdict, degenerate)
 
 
 def _exact_linearization(H):
@@ -147,7 +151,7 @@ def _exact_resonances(chi, nf, order, eps):
     return sorted(found, key=lambda k: sum(map(abs, k)))
 
 
-def _two_degrees(nf, resonances, order, verdict):
+def _two_degrees(nf, resonances, order, verdict, degenerate=()):
     eps = QQ(2) ** (-nf.arithmetic().prec // 2) if nf.arithmetic().is_numeric() else 0
     for k in resonances:
         size = sum(map(abs, k))
@@ -180,7 +184,7 @@ def _two_degrees(nf, resonances, order, verdict):
         if low:
             break
         D = nf.arnold_determinant(degree)
-        if abs(D) > eps:
+        if degree not in degenerate and abs(D) > eps:
             return verdict('stable', f"Arnold-Moser theorem: no resonance up to order "
                            f"{degree} and Arnold's determinant of degree {degree} "
                            f"D = {D.real().n(30)} is not zero", 'Arnold-Moser')
@@ -190,3 +194,84 @@ def _two_degrees(nf, resonances, order, verdict):
     return verdict('undecided', f"Arnold's determinant vanishes up to order {order}: "
                    f"compute the normal form to order {order + 2} (order={order + 2})",
                    'Arnold-Moser')
+
+
+def stability_over_parameter(parameter, interval, exceptional, verdict_at, positive=()):
+    r"""
+    The verdict over an interval of one parameter, case by case: the open
+    intervals between the exceptional values (where the verdict of
+    :func:`normal_form_stability` cannot change: no root crosses the
+    imaginary axis, no resonance of the orders considered, Arnold's
+    determinant keeps its sign), each decided at an exact rational sample,
+    and the exceptional values themselves.
+
+    INPUT:
+
+    - ``parameter`` -- the symbol
+    - ``interval`` -- a pair ``(a, b)`` (open)
+    - ``exceptional`` -- dict kind -> list of values in ``(a, b)``: real
+      algebraic numbers (exact) or real numbers (approximations, e.g. the
+      zeros of Arnold's determinant)
+    - ``verdict_at`` -- a function ``(value, kinds) -> StabilityVerdict``:
+      the verdict at one value (``kinds``: the exceptional kinds of the
+      value, empty at a sample)
+    - ``positive`` -- symbols declared positive
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`,
+    ``'depends on the parameters'`` with one case per interval and per
+    exceptional value (their regions partition the interval), and the
+    exceptional values as its :meth:`~sage_dynsym.analysis.verdict.StabilityVerdict.boundaries`
+
+    EXAMPLES: a made-up verdict, unstable at `a = 1/2` only::
+
+        sage: from sage_dynsym.analysis.normal_form_stability import stability_over_parameter
+        sage: from sage_dynsym.analysis.verdict import StabilityVerdict
+        sage: a = var('a')
+        sage: def at(value, kinds):
+        ....:     kind = 'unstable' if kinds else 'stable'
+        ....:     return StabilityVerdict(kind, f'at {value}')
+        sage: v = stability_over_parameter(a, (0, 1), {'resonance 1:2': [AA(1/2)]}, at)
+        sage: [(c.verdict(), c.region()) for c in v.cases()]
+        [('stable', [[a > 0, a < (1/2)]]), ('unstable', [[a == (1/2)]]),
+         ('stable', [[a > (1/2), a < 1]])]
+        sage: v.boundaries(), v.at({a: 1/2}), v.at({a: 1/3})
+        ({'resonance 1:2': [a == (1/2)]}, 'unstable', 'stable')
+    """
+    from sage.rings.qqbar import AA
+    from sage.rings.real_mpfi import RIF
+    from sage.symbolic.ring import SR
+    a, b = AA(interval[0]), AA(interval[1])
+    points = {}
+    for kind, values in exceptional.items():
+        for value in values:
+            key = next((v for v in points if v == value), value)
+            points.setdefault(key, []).append(kind)
+    cuts = sorted(points, key=lambda v: RIF(v).center())
+
+    def expression(value):
+        if value in AA:
+            exact = AA(value).radical_expression()
+            return exact if exact in SR and not isinstance(exact, type(AA(0))) else SR(value)
+        return SR(value)
+    cases = []
+    ends = [a] + cuts + [b]
+    for k, (lo, hi) in enumerate(zip(ends, ends[1:])):
+        width = (RIF(hi) - RIF(lo)) / 4
+        sample = RIF(RIF(lo) + width, RIF(hi) - width).simplest_rational()
+        v = verdict_at(sample, [])
+        cases.append(StabilityVerdict(
+            v.verdict(), f"{v.reason()} (decided at {parameter} = {sample})",
+            method=v.method(), positive=positive,
+            region=[[SR(parameter) > expression(lo), SR(parameter) < expression(hi)]]))
+        if k < len(cuts):
+            v = verdict_at(hi, points[hi])
+            cases.append(StabilityVerdict(
+                v.verdict(), f"{', '.join(points[hi])}: {v.reason()}", method=v.method(),
+                region=[[SR(parameter) == expression(hi)]], positive=positive))
+    boundaries = {}
+    for value in cuts:
+        for kind in points[value]:
+            boundaries.setdefault(kind, []).append(SR(parameter) == expression(value))
+    return StabilityVerdict('depends on the parameters', "see cases(): " +
+                            ", ".join(c.verdict() for c in cases), cases=cases,
+                            boundaries=boundaries, positive=positive)

@@ -271,6 +271,28 @@ class FormalArithmetic(SageObject):
         point += [1 / x(*filled) for x in self._inverted()]
         return self.K(c)(*point)
 
+    def symbolic(self, c):
+        r"""An element of the ring of the computation as a symbolic
+        expression: the parameters and constants by their names,
+        `\lambda_k \to i\omega_k` (symbols ``omega1, ...``) and each
+        inverse generator by the inverse of its element.
+
+        EXAMPLES: the pendulum `H = p^2/2 + a q^2/2 - a q^4/24`, frequency
+        `\sqrt a`::
+
+            sage: from sage_dynsym.analysis.normal_forms import FormalArithmetic, normal_form
+            sage: B = PolynomialRing(QQ, 'a'); S = PolynomialRing(B, 'q, p')
+            sage: A = FormalArithmetic(S('p^2/2 + a*q^2/2 - a*q^4/24'), 1, {'a': None},
+            ....:                      sample={'a': 4})
+            sage: N = normal_form(A, 4); A.symbolic(A.lambdas[0]^2 + A.K('a'))
+            -omega1^2 + a
+        """
+        omegas = [SR.var(f"omega{k + 1}") for k in range(self.n)]
+        images = [SR.var(g) for g in _names(self.H.base_ring())] + [SR.I() * w for w in omegas]
+        images += [1 / x(*(images + [0] * (self.K.ngens() - len(images))))
+                   for x in self._inverted()]
+        return self.K(c)(*(images + [0] * (self.K.ngens() - len(images))))
+
     def _base_point(self):
         return [self.values[g] if self.values[g] is not None else self.sample[g]
                 for g in _names(self.H.base_ring())]
@@ -427,7 +449,7 @@ class _PhaseRing:
         names = [f"xi{k + 1}" for k in range(n)] + [f"eta{k + 1}" for k in range(n)]
         self.n, self.A, self.flat = n, A, not A.is_numeric()
         if self.flat:
-            self.P = PolynomialRing(QQ, names + list(A.K.variable_names()),
+            self.P = PolynomialRing(A.K.base_ring(), names + list(A.K.variable_names()),
                                     order=TermOrder('degrevlex', 2 * n)
                                     + TermOrder('lex', A.K.ngens()))
             self.groebner = [self.P(g) for g in A.groebner]
@@ -661,9 +683,21 @@ class BirkhoffNormalForm(SageObject):
             return [s * SR.var(f"omega{k + 1}") for k, s in enumerate(self.signs())]
         return [s * AA(lam.imag()) for s, lam in zip(self.signs(), A.exact_lambdas())]
 
-    def _monomials_in_actions(self):
-        r"""The normal form's terms: ``(exponents in the actions, value)``
-        for the terms in `\xi_k\eta_k` only; the resonant ones apart."""
+    def action_terms(self):
+        r"""
+        The normal form's terms, in the ring of the computation: a pair of
+        dicts, exponents ``(m_1, .., m_n)`` of the actions -> coefficient of
+        `\prod (\xi_k\eta_k)^{m_k}`, and the resonant terms apart
+        (exponents of `(\xi, \eta)` -> coefficient).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.normal_forms import normal_form, FormalArithmetic
+            sage: R = PolynomialRing(QQ, 'q, p'); q, p = R.gens()
+            sage: nf = normal_form(FormalArithmetic.numeric(p^2/2 + q^2/2 - q^4/24, 1), 4)
+            sage: terms, resonant = nf.action_terms(); sorted(terms), resonant
+            ([(1,), (2,)], {})
+        """
         n = self._A.n
         terms, resonant = {}, {}
         for e, h in self._phase.terms(self._H).items():
@@ -701,7 +735,7 @@ class BirkhoffNormalForm(SageObject):
             [-omega1^2 + 1]
         """
         A = self._A
-        terms, _ = self._monomials_in_actions()
+        terms, _ = self.action_terms()
         result = {}
         for m, h in terms.items():
             sign, phase = self._real_factor(m)
@@ -718,17 +752,10 @@ class BirkhoffNormalForm(SageObject):
 
     def _symbolic_real(self, h, phase):
         r"""The real value of `i^{phase} h` as a symbolic expression: each
-        generator `\lambda_k \to i\omega_k`, `u \to 1/(\dots)` with the
-        divisors in the `\omega_k` (the imaginary parts cancel)."""
-        A = self._A
-        base = A.H.base_ring()
-        omegas = [SR.var(f"omega{k + 1}") for k in range(A.n)]
-        i = SR.I()
-        images = [SR.var(g) for g in _names(base)] + [i * w for w in omegas]
-        inverted = A._inverted()
-        images += [1 / x(*(images + [0] * (A.K.ngens() - len(images)))) for x in inverted]
-        value = (i ** phase * h(*images)).expand()
-        return value.real_part().simplify_rational() if value.has(i) else value.simplify_rational()
+        generator `\lambda_k \to i\omega_k` (see
+        :meth:`FormalArithmetic.symbolic_images`; the imaginary parts cancel)."""
+        value = (SR.I() ** phase * self._A.symbolic(h)).expand()
+        return value.real_part().simplify_rational() if value.has(SR.I()) else value.simplify_rational()
 
     def relations(self):
         r"""With a free parameter: the relations of the symbols
@@ -737,11 +764,7 @@ class BirkhoffNormalForm(SageObject):
 
         EXAMPLES: see :meth:`coefficients`.
         """
-        A = self._A
-        omegas = [SR.var(f"omega{k + 1}") for k in range(A.n)]
-        images = [SR.var(g) for g in _names(A.H.base_ring())] + \
-            [SR.I() * w for w in omegas] + [0] * (A.K.ngens() - len(_names(A.H.base_ring())) - A.n)
-        return [r(*images).expand() for r in A.groebner]
+        return [self._A.symbolic(r).expand() for r in self._A.groebner]
 
     def polynomial(self):
         r"""The normal form as a polynomial in the actions ``I1, ...``
@@ -769,7 +792,7 @@ class BirkhoffNormalForm(SageObject):
             sage: sorted(normal_form(FormalArithmetic.numeric(H, 2), 3).resonant_terms())
             [(0, 2, 1, 0), (1, 0, 0, 2)]
         """
-        return self._monomials_in_actions()[1]
+        return self.action_terms()[1]
 
     def hamiltonian(self):
         r"""The normal form as a polynomial in the complex canonical
@@ -842,7 +865,7 @@ class BirkhoffNormalForm(SageObject):
         ``degree`` (in the phase variables) as values (intervals or numbers)."""
         A = self._A
         found = {}
-        for m, h in self._monomials_in_actions()[0].items():
+        for m, h in self.action_terms()[0].items():
             if 2 * sum(m) == degree:
                 sign, phase = self._real_factor(m)
                 if A.is_numeric():

@@ -57,7 +57,8 @@ import operator
 
 from ..errors import AnalysisError, brief
 from ..analysis.normal_forms import normal_form, FormalArithmetic, BirkhoffNormalForm
-from ..analysis.normal_form_stability import normal_form_stability
+from ..analysis.parametric_normal_forms import FieldArithmetic, arnold_polynomial
+from ..analysis.normal_form_stability import normal_form_stability, stability_over_parameter
 from .hamiltonian import Hamiltonian
 
 __all__ = ['birkhoff_normal_form', 'nonlinear_stability', 'BirkhoffNormalForm',
@@ -287,10 +288,13 @@ def birkhoff_normal_form(model, at, order=4, sample=None, prec=None, exact=False
     H, values, relations = polynomial_hamiltonian(model, at, order)
     n = len(H.parent().gens()) // 2
     sample = {str(k): v for k, v in (sample or {}).items()}
+    if any(v is None for v in values.values()):
+        # free parameters: exact in the field of the data over QQ(params)
+        return normal_form(FieldArithmetic(H, n, values, relations, sample=sample), order)
     return normal_form(FormalArithmetic(H, n, values, relations, sample=sample), order)
 
 
-def nonlinear_stability(model, at, order=4, positive=(), prec=256):
+def nonlinear_stability(model, at, order=4, positive=(), prec=256, interval=None):
     r"""
     Lyapunov stability of an equilibrium of a conservative system beyond
     the first approximation (see the module documentation for the
@@ -307,6 +311,14 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
       the verdict)
     - ``prec`` -- (default: 256) bits of the numeric normal form; the
       linearization, the frequencies and the resonances are exact
+    - ``interval`` -- (optional) a pair ``(a, b)``: with one parameter
+      left free in ``at`` (two degrees of freedom), the verdict over
+      `a < \mu < b`, case by case: between the exceptional values of
+      :func:`exceptional_values` (decided at an exact rational sample of
+      each interval) and at each of them (exactly at the boundary of the
+      first approximation and at the resonances; at a zero of Arnold's
+      determinant, a numerical approximation, ``'undecided'`` at order 4
+      and decided by the determinant of degree 6 with ``order=6``)
 
     OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
 
@@ -326,22 +338,62 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256):
         sage: nonlinear_stability(L, {**L4, mu: mu2}).reason()
         'resonance 1:2 (k = (1, 2)) with a nonzero resonant term of degree 3 (amplitude ...): unstable (Markeev)'
 
+    Over the mass ratio (Deprit's diagram; the exceptional values are
+    cases of their own, see :func:`exceptional_values`; at Routh's value
+    the double root on the imaginary axis is a critical case left
+    'undecided')::
+
+        sage: v = nonlinear_stability(L, L4, interval=(0, 1/2))  # long time
+        sage: [(c.verdict(), c.region()[0][0].rhs().n(digits=8)) for c in v.cases()]  # long time
+        [('stable', 0.00000000),
+         ('undecided', 0.010913668),
+         ('stable', 0.010913668),
+         ('unstable', 0.013516016),
+         ('stable', 0.013516016),
+         ('unstable', 0.024293897),
+         ('stable', 0.024293897),
+         ('undecided', 0.038520897),
+         ('unstable', 0.038520897)]
+        sage: v.cases()[7].reason()  # long time
+        'first approximation: multiple or zero roots of the linearization: ...'
+        sage: v.at({mu: 1/50}), v.at({mu: 1/10})  # long time
+        ('stable', 'unstable')
+
     TESTS::
 
         sage: nonlinear_stability(L, L4)
         Traceback (most recent call last):
         ...
-        AnalysisError: at: give a value to the parameters ['mu'] ...
+        AnalysisError: at: give a value to the parameters ['mu'], or leave one free with interval=(a, b) ...
     """
     H = taylor_polynomial(model, at, 2)
     free = sorted({str(v) for c in H.coefficients() for v in c.variables()})
+    if free and (len(free) > 1 or interval is None):
+        raise AnalysisError(f"give a value to the parameters {free}, or leave one free with "
+                            "interval=(a, b) for the cases over it (in two degrees of "
+                            "freedom; see also exceptional_values)", entry="at")
     if free:
-        raise AnalysisError(f"give a value to the parameters {free} (for the cases over the "
-                            "parameters see birkhoff_normal_form(..., sample=...) and "
-                            "critical_values)", entry="at")
+        return _over_parameter(model, at, free[0], interval, order, positive, prec)
     return normal_form_stability(
         H, lambda degree: birkhoff_normal_form(model, at, degree, prec=prec),
         order=order, positive=positive, prec=prec)
+
+
+def _over_parameter(model, at, name, interval, order, positive, prec):
+    parameter = SR.var(name)
+    found = exceptional_values(model, at, parameter, interval, order=order, prec=prec)
+
+    def verdict_at(value, kinds):
+        # at a zero of Arnold's determinant of degree 4 (a rational within
+        # the tolerance of the zero) its small value decides nothing: the
+        # next degree decides
+        degenerate = (4,) if 'Arnold determinant' in kinds else ()
+        point = {**at, parameter: SR(QQ(value) if degenerate else value)}
+        return normal_form_stability(
+            taylor_polynomial(model, point, 2),
+            lambda degree: birkhoff_normal_form(model, point, degree, prec=prec),
+            order=order, positive=positive, prec=prec, degenerate=degenerate)
+    return stability_over_parameter(parameter, interval, found, verdict_at, positive)
 
 
 def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec=128,
@@ -434,9 +486,53 @@ def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec
             hits = [r for r in roots_in(q) if _ratio(p, r, k2 / QQ(k1))]
             if hits:
                 found[f"resonance {k1}:{k2}"] = hits
-    found['Arnold determinant'] = _determinant_zeros(H, values, name, found, a, b,
-                                                     order, samples, prec, tolerance)
+    exact = _exact_determinant_zeros(H, values, relations, name, found, a, b, prec)
+    found['Arnold determinant'] = exact if exact is not None else _determinant_zeros(
+        H, values, name, found, a, b, order, samples, prec, tolerance)
     return dict(sorted(found.items()))
+
+
+def _exact_determinant_zeros(H, values, relations, name, found, a, b, prec):
+    r"""The zeros of Arnold's determinant in ``(a, b)`` as real algebraic
+    numbers: the roots of its norm (:func:`~sage_dynsym.analysis.parametric_normal_forms.arnold_polynomial`)
+    at which the determinant of these modes (not a conjugate's) vanishes,
+    checked on the numeric normal form; ``None`` when the exact normal form
+    is out of reach (the bisection then decides)."""
+    from sage.rings.qqbar import AA
+    from sage.rings.complex_mpfr import ComplexField
+    from sage.rings.real_mpfi import RIF
+    cuts = sorted([a, b] + [r for rs in found.values() for r in rs])
+    # a sample where the modes are elliptic and simple (the pieces between
+    # the exceptional values, widest first; beyond the first approximation
+    # the normal form is refused)
+    pieces = sorted(zip(cuts, cuts[1:]), key=lambda p: -RIF(p[1] - p[0]).center())
+    norm = None
+    for lo, hi in pieces:
+        width = (RIF(hi) - RIF(lo)) / 4
+        sample = RIF(RIF(lo) + width, RIF(hi) - width).simplest_rational()
+        try:
+            nf = normal_form(FieldArithmetic(H, 2, values, relations, sample={name: sample}), 4)
+        except AnalysisError:
+            continue
+        _, norm = arnold_polynomial(nf)
+        break
+    if norm is None:
+        return None
+    CC = ComplexField(prec)
+    names = H.base_ring().variable_names()
+    zeros = []
+    for root in norm.roots(AA, multiplicities=False):
+        if not a < root < b or any(root in rs for rs in found.values()):
+            continue
+        point = [CC(root) if g == name else CC(values[g]) for g in names]
+        numeric = H.map_coefficients(lambda c: CC(c(*point)), new_base_ring=CC)
+        try:
+            D = normal_form(FormalArithmetic.numeric(numeric, 2, prec), 4).arnold_determinant()
+        except AnalysisError:
+            continue            # not elliptic there: no normal form, no determinant
+        if abs(D) < QQ(2) ** (-prec // 3):
+            zeros.append(root)
+    return zeros
 
 
 def _symbolic_hessian(H, point):
