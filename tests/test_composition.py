@@ -122,16 +122,6 @@ REACH_ALLOWED = {
     "sage_dynsym.algebra.solving.SolutionList": {"_solutions"},
     "sage_dynsym.circuits.linear._BranchAnalysis": {"_T", "_rows", "_R", "_forces", "_Pi", "_terms",
                                                     "_coordinates"},
-    "sage_dynsym.dynamics.holonomic.HolonomicConstraints": {
-        "_velocities", "_expr", "_dissipation", "_forces", "_derived", "_accelerations",
-        "_coordinates"},
-    "sage_dynsym.dynamics.lagrange_equations.LagrangeEquations": {
-        "_velocities", "_expr", "_multipliers", "_constraints", "_dissipation", "_forces",
-        "_constraint_forces", "_equation_builder", "_accelerations", "_coordinates"},
-    "sage_dynsym.dynamics.legendre.LegendreTransform": {
-        "_velocities", "_expr", "_constraints", "_dissipation", "_forces", "_structure"},
-    "sage_dynsym.dynamics.routh.CyclicCoordinates": {
-        "_velocities", "_expr", "_constraints", "_dissipation", "_forces", "_coordinates"},
     "sage_dynsym.mechanics.operating_points.SystemOperatingPoints": {"_operating_points"},
     "sage_dynsym.mechanics.system_checks.SystemChecks": {
         "_parameters", "_velocities", "_dissipation", "_forces", "_bodies", "_constraint_set",
@@ -265,8 +255,6 @@ FOREIGN_ALLOWED = {
     "sage_dynsym.circuits.linear": {"circuit._graph"},
     "sage_dynsym.circuits.mixed_potential": {"circuit._graph"},
     "sage_dynsym.circuits.nodal": {"circuit._graph"},
-    "sage_dynsym.dynamics.nonlinear_stability": {"H._conserved_energy"},
-    "sage_dynsym.dynamics.reduced": {"K._eliminate"},
     "sage_dynsym.mechanics.recursive_numerics": {"system.lagrangian()._conserved_energy",
                                                  "system.lagrangian()._numerical_form"},
     # Sage's Graphics keeps its keyword options behind private names only

@@ -26,10 +26,14 @@ in the structured form (5): mass-matrix entries times accelerations, Christoffel
 coefficients times products of velocities, gyroscopic and non-stationary
 terms; nothing is expanded. Any other Lagrangian is differentiated directly.
 
-The class is assembled from base classes, one concern each: the equations
-(:mod:`~sage_dynsym.dynamics.lagrange_equations`), the holonomic
-constraints and their multipliers (:mod:`~sage_dynsym.dynamics.holonomic`),
-the momenta, energy and Legendre transform
+A Lagrangian is its expression, its coordinates and the data of the model
+it is given (dissipation, forces, its constraint set), read through its
+methods. What is computed from it is done by method objects and functions
+that take it, which its methods call: the equations
+(:class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations`),
+with the constraint set and its multipliers
+(:class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`), the
+momenta, energy and Legendre transform
 (:mod:`~sage_dynsym.dynamics.legendre`), the cyclic coordinates and the
 Routh reduction (:mod:`~sage_dynsym.dynamics.routh`), and the numerics
 (:class:`~sage_dynsym.numerics.methods.NumericalMethods`).
@@ -129,11 +133,12 @@ from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, momentum, t, exact_decimals
 from ..numerics.methods import NumericalMethods
 from ..numerics.values import check_model_values
-from .holonomic import HolonomicConstraints
+from ..numerics.expressions import symbols_and_functions
+from .holonomic import HolonomicConstraints, independent_coordinates
 from .lagrange_equations import LagrangeEquations
-from .legendre import LegendreTransform
+from .legendre import generalized_momenta, energy, legendre
 from .natural_form import symbol_list, is_at_most_quadratic, natural_form
-from .routh import CyclicCoordinates, check_cyclic, routh_reduction
+from .routh import check_cyclic, routh_reduction, cyclic_coordinates
 # names earlier versions of this module held, importable from it as before
 from .compact import equations_cse
 from .natural_equations import natural_equations, SymbolicCalculus
@@ -144,8 +149,7 @@ __all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations',
            'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
 
 
-class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, CyclicCoordinates,
-                 NumericalMethods, SageObject):
+class Lagrangian(NumericalMethods, SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
     generalized forces.
@@ -252,7 +256,10 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
                              f"coordinate, got {len(forces)}", entry="forces")
         self._forces = [SR(f) for f in forces]
         self._name = name
-        self._set_constraints(constraints)
+        # the multipliers avoid the symbols of the model
+        self._constraint_set = HolonomicConstraints(
+            self._coordinates, self._velocities, constraints,
+            taken=lambda: [self._expr, self._dissipation] + self._forces)
 
     @property
     def _expr(self):
@@ -386,7 +393,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     def _content(self):
         return (type(self).__name__, self._expr, tuple(self._coordinates),
                 tuple(self._velocities), self._dissipation, tuple(self._forces),
-                tuple(self._constraints))
+                tuple(self.constraints()))
 
     def __eq__(self, other):
         r"""
@@ -446,7 +453,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
                 (self._expr, self._coordinates, self._velocities,
                  {'dissipation': self._dissipation, 'forces': self._forces,
                   'name': self._name, 'decomposition': self._structure,
-                  'constraints': self._constraints, 'positive': self._positive}))
+                  'constraints': self.constraints(), 'positive': self._positive}))
 
     def _repr_(self):
         coords = ", ".join(str(q) for q in self._coordinates)
@@ -455,14 +462,14 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
 
     def _latex_(self):
         return "L = " + latex(self._expr) + "".join(
-            r", \quad " + latex(f) + " = 0" for f in self._constraints)
+            r", \quad " + latex(f) + " = 0" for f in self.constraints())
 
     def _derived(self, expr, **changes):
         r"""
         A Lagrangian of the same kind with a new expression (and options).
         """
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
-                       forces=self._forces, name=self._name, constraints=self._constraints,
+                       forces=self._forces, name=self._name, constraints=self.constraints(),
                        positive=self._positive)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
@@ -516,7 +523,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         return self._derived(self._expr.subs(*args, **kwds),
                              dissipation=self._dissipation.subs(*args, **kwds),
                              forces=[f.subs(*args, **kwds) for f in self._forces],
-                             constraints=[f.subs(*args, **kwds) for f in self._constraints],
+                             constraints=[f.subs(*args, **kwds) for f in self.constraints()],
                              positive=[p for p in self._positive if p not in given])
 
     # ------------------------------------------------------------------
@@ -603,8 +610,387 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         return matrix(SR, n, n, lambda i, j:
                       self._expr.diff(self._velocities[i], self._velocities[j]))
 
+    def is_singular(self):
+        r"""
+        Whether `\det(\partial^2 L/\partial \dot q^2) = 0` identically: then
+        the Legendre transform is not invertible and :meth:`hamiltonian`
+        applies Dirac's scheme.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).is_singular()
+            True
+            sage: Lagrangian(dx^2 + dy^2, [x, y]).is_singular()
+            False
+        """
+        return is_singular(self.mass_matrix())
+
+    def equation_builder(self):
+        r"""
+        The function given as ``equation_builder`` (computing the equations
+        (5) without dissipation and forces in a faster arithmetic), or
+        ``None``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: Lagrangian(var('dx')^2, [var('x')]).equation_builder() is None
+            True
+        """
+        return self._equation_builder
+
     # ------------------------------------------------------------------
-    # the Routh function (the reduction itself: dynamics.routh)
+    # constraints (the constraint set: dynamics.holonomic)
+
+    def constraint_set(self):
+        r"""
+        The constraint set of the Lagrangian: its constraints with their
+        multipliers (:class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).constraint_set()
+            Holonomic constraints x - y == 0 with multipliers mu1
+        """
+        return self._constraint_set
+
+    def constraints(self):
+        r"""
+        The holonomic constraints `f_j(q, t)`, each meaning `f_j = 0` (a new
+        list, empty if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, l = var('x y dx dy l')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x^2 + y^2 - l^2]).constraints()
+            [-l^2 + x^2 + y^2]
+        """
+        return self._constraint_set.expressions()
+
+    def multipliers(self):
+        r"""
+        The multipliers of the constraints: symbols ``mu1, mu2, ...`` that
+        occur nowhere else in the model (see
+        :func:`~sage_dynsym.symbols.constraint_multipliers`). The equations
+        contain `-\sum_j \mu_j \partial f_j/\partial q_i`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, mu1 = var('x y dx dy mu1')
+            sage: Lagrangian((dx^2 + dy^2)/2 + mu1*x, [x, y], constraints=[x - y]).multipliers()
+            [mu2]
+        """
+        return self._constraint_set.multipliers()
+
+    def nonholonomic_constraints(self):
+        r"""
+        The constraints on the velocities (none but for a
+        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: Lagrangian(var('dx')^2/2, [var('x')]).nonholonomic_constraints()
+            []
+        """
+        return self._constraint_set.velocity_constraints()
+
+    def velocity_multipliers(self):
+        r"""
+        The multipliers of the constraints on the velocities (see
+        :meth:`nonholonomic_constraints`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: Lagrangian(var('dx')^2/2, [var('x')]).velocity_multipliers()
+            []
+        """
+        return self._constraint_set.velocity_multipliers()
+
+    def _subject_to(self):
+        if not self.constraints():
+            return ""
+        return ", subject to " + ", ".join(f"{f} == 0" for f in self.constraints())
+
+    def reduce(self, independent, parametrization):
+        r"""
+        The Lagrangian in independent coordinates ``independent``: the
+        other coordinates replaced by their values in ``parametrization``,
+        a dict ``{q_i: phi_i(s, t)}`` under which the constraints hold
+        identically (see
+        :func:`~sage_dynsym.dynamics.holonomic.independent_coordinates`).
+
+        EXAMPLES:
+
+        The Cartesian pendulum reduced to its angle::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
+            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
+            sage: P = L.reduce([th], {x: l*sin(th), y: -l*cos(th)})
+            sage: P.lagrange_equations()[0].simplify_full()
+            ddtheta*l^2*m + g*l*m*sin(theta)
+        """
+        expr, coordinates, velocities, dissipation, forces = \
+            independent_coordinates(self, independent, parametrization)
+        # a plain Lagrangian, whatever the kind of this one
+        return self._derived(expr, coordinates=coordinates, velocities=velocities,
+                             dissipation=dissipation, forces=forces, constraints=())
+
+    # ------------------------------------------------------------------
+    # equations (the method object: dynamics.lagrange_equations)
+
+    @cached_method
+    def _equations_method(self):
+        return LagrangeEquations(self, self._constraint_set)
+
+    def lagrange_equations(self, form=None):
+        r"""
+        The Lagrange equations (5), with dissipation, generalized forces and
+        constraint forces: a list of expressions `E_i` meaning `E_i = 0`
+        (see :meth:`LagrangeEquations.equations
+        <sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.equations>`
+        for ``form``).
+
+        EXAMPLES:
+
+        The structured form keeps the mass matrix entries as factors of the
+        accelerations; a relativistic particle (not natural) is
+        differentiated directly::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
+            sage: Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi]).lagrange_equations()
+            [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(-sqrt(1 - dx^2), [x]).lagrange_equations()
+            [ddx*(dx^2/(-dx^2 + 1)^(3/2) + 1/sqrt(-dx^2 + 1))]
+        """
+        return self._equations_method().equations(form)
+
+    def equations(self):
+        r"""
+        The equations of motion: :meth:`lagrange_equations` (the name every
+        model and characteristic function of the package shares).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations()
+            [ddx + x]
+        """
+        return self.lagrange_equations()
+
+    def equations_cse(self):
+        r"""
+        The Lagrange equations written with their common subexpressions
+        (see :func:`~sage_dynsym.dynamics.compact.equations_cse`), exactly
+        equal to :meth:`lagrange_equations` after ``expand()``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: psi, theta, dpsi, dtheta, m, l, g = var('psi theta dpsi dtheta m l g')
+            sage: L = Lagrangian(m*l^2*(dtheta^2 + sin(theta)^2*dpsi^2)/2 + m*g*l*cos(theta),
+            ....:                [psi, theta])
+            sage: C = L.equations_cse(); C.subexpressions()
+            [(x1_, cos(theta)), (x2_, sin(theta))]
+            sage: C.expand() == L.lagrange_equations()
+            True
+        """
+        return equations_cse(self.lagrange_equations())
+
+    def equations_record(self):
+        r"""
+        The equations as neutral data for the analysis (see
+        :meth:`LagrangeEquations.record
+        <sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.record>`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
+            sage: E
+            Second-order equations in (x, y): [ddx - mu1, ddy + mu1] == 0 with constraints [x - y] == 0
+            sage: E.constraints(), E.multipliers()
+            ([x - y], [mu1])
+        """
+        return self._equations_method().record()
+
+    def accelerations_and_multipliers(self):
+        r"""
+        The accelerations and the multipliers, solved from the `n` equations
+        together with the twice-differentiated constraints (Lagrange's
+        equations of the first kind, see :meth:`LagrangeEquations.accelerations_and_multipliers
+        <sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_and_multipliers>`):
+        a dict ``{ddq_i: ..., mu_j: ...}``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m = var('x dx m')
+            sage: Lagrangian(m*dx^2/2 - x^2/2, [x]).accelerations_and_multipliers()
+            {ddx: -x/m}
+        """
+        return dict(self._equations_method().accelerations_and_multipliers())
+
+    def accelerations_solved(self):
+        r"""
+        The equations solved for the accelerations: a list of expressions
+        `\ddot q_i = f_i(q, \dot q, t)` (only for natural Lagrangians with an
+        invertible mass matrix; with constraints, valid on the constraint
+        surface).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).accelerations_solved()
+            [-k*x/m]
+        """
+        return self._equations_method().accelerations_solved()
+
+    def first_order_system(self):
+        r"""
+        The equations as a first-order system `\dot x = F(x, t)` with state
+        `x = (q, \dot q)`: a pair ``(state, rhs)`` of lists.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).first_order_system()
+            ([x, dx], [dx, -k*x/m])
+        """
+        return self._equations_method().first_order_system()
+
+    # ------------------------------------------------------------------
+    # momenta, energy, Hamiltonian (dynamics.legendre)
+
+    def generalized_momenta(self):
+        r"""
+        The expressions `p_i = \partial L / \partial \dot q_i` (see
+        :func:`~sage_dynsym.dynamics.legendre.generalized_momenta`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m = var('x dx m')
+            sage: Lagrangian(m*dx^2/2, [x]).generalized_momenta()
+            [dx*m]
+        """
+        return generalized_momenta(self)
+
+    def energy(self):
+        r"""
+        The generalized energy (Jacobi integral)
+        `h = \sum \dot q_i \partial L/\partial \dot q_i - L` (see
+        :func:`~sage_dynsym.dynamics.legendre.energy`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).energy()
+            1/2*dx^2*m + 1/2*k*x^2
+        """
+        return energy(self)
+
+    def conserved_energy(self):
+        r"""
+        The generalized energy (:meth:`energy`) when it is an integral of
+        the motion -- no explicit time in `L` or the constraints, no
+        dissipation, no generalized forces, velocity constraints
+        homogeneous and stationary --, else ``None``; what
+        ``simulate(...).energy_drift()`` measures.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, c = var('x dx c')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).conserved_energy()
+            1/2*dx^2 + 1/2*x^2
+            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).conserved_energy() is None
+            True
+
+        From the decomposition of a mechanical system, `T_2 - T_0 - U`::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: load(example_path('spherical_pendulum.yaml')).lagrangian().conserved_energy()
+            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
+        """
+        velocities = self._velocities
+        # velocity constraints do no work when homogeneous and stationary
+        if any(g.has(t) or not SR(g).subs({v: 0 for v in velocities}).is_zero()
+               for g in self.nonholonomic_constraints()):
+            return None
+        if self._structure is not None:
+            # h = T_2 - T_0 - U from the decomposition: nothing expanded (a
+            # memoized walk looks for t: large models share subexpressions)
+            A, A1, A0 = self._structure
+            if str(t) in symbols_and_functions(list(A.list()) + list(A1) + [A0])[0]:
+                return None
+            h = natural_form(A, [0] * len(velocities), -A0, velocities)
+        elif self._expr.has(t):
+            return None
+        else:
+            h = None
+        if (not self._dissipation.is_zero() or any(not f.is_zero() for f in self._forces)
+                or any(SR(f).has(t) for f in self.constraints())):
+            return None
+        return self.energy() if h is None else h
+
+    def _conserved_energy(self):
+        # the hook of NumericalMethods
+        return self.conserved_energy()
+
+    def hamiltonian(self):
+        r"""
+        The Hamiltonian by the Legendre transform; for a singular Lagrangian
+        the result carries Dirac's constraint analysis (see
+        :func:`~sage_dynsym.dynamics.legendre.legendre`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian().expr()
+            1/2*k*x^2 + 1/2*p_x^2/m
+        """
+        return legendre(self)
+
+    # ------------------------------------------------------------------
+    # cyclic coordinates and the Routh function (dynamics.routh)
+
+    def cyclic_coordinates(self):
+        r"""
+        The coordinates whose momentum is conserved, exactly those
+        :meth:`routh` accepts (see
+        :func:`~sage_dynsym.dynamics.routh.why_not_cyclic`).
+
+        EXAMPLES:
+
+        A damper on a cart makes its position non-cyclic::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, phi, dx, dphi, c = var('x phi dx dphi c')
+            sage: Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi]).cyclic_coordinates()
+            [x]
+            sage: L = Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi], dissipation=c*dx^2/2)
+            sage: L.cyclic_coordinates()
+            []
+        """
+        return cyclic_coordinates(self)
 
     def routh(self, cyclic):
         r"""
@@ -691,10 +1077,10 @@ class RouthFunction(Lagrangian):
         self._lagrangian = lagrangian
         coordinates, velocities, decomposition, self._solved_velocities, dissipation, forces = \
             routh_reduction(lagrangian, self._cyclic, self._momenta)
-        Lagrangian.__init__(self, None, coordinates, velocities, dissipation=dissipation,
-                            forces=forces, name=lagrangian.name(), decomposition=decomposition,
-                            constraints=lagrangian.constraints(),
-                            positive=lagrangian.positive_parameters())
+        super().__init__(None, coordinates, velocities, dissipation=dissipation,
+                         forces=forces, name=lagrangian.name(), decomposition=decomposition,
+                         constraints=lagrangian.constraints(),
+                         positive=lagrangian.positive_parameters())
 
     def _repr_(self):
         coords = ", ".join(map(str, self.coordinates()))
