@@ -305,6 +305,25 @@ def independent_coordinates(lagrangian, independent, parametrization):
         sage: E, q, dq, R, Q = independent_coordinates(L, [th], {x: l*sin(th), y: -l*cos(th)})
         sage: E.simplify_full(), q, dq, Q
         (1/2*dtheta^2*l^2 + l*cos(theta), [theta], [dtheta], [0])
+
+    TESTS::
+
+        sage: L.reduce([th], {x: l*sin(th), y: l*sin(th)})
+        Traceback (most recent call last):
+        ...
+        ModelError: parametrization: the constraint constraints[0] = -l^2 + x^2 + y^2 does not hold identically under the parametrization {x: l*sin(theta), y: l*sin(theta)}
+        sage: L.reduce([x, th], {y: th})
+        Traceback (most recent call last):
+        ...
+        ModelError: independent: expected 1 independent coordinate(s) (2 coordinates, 1 constraint(s)), got [x, theta]
+        sage: L.reduce([th], {x: l*sin(th)})
+        Traceback (most recent call last):
+        ...
+        ModelError: parametrization: the coordinate y is neither independent nor given
+        sage: L.reduce([th], [l*sin(th), -l*cos(th)])
+        Traceback (most recent call last):
+        ...
+        ModelError: parametrization: expected a dict {coordinate: expression in the independent ones}, got [l*sin(theta), -l*cos(theta)]
     """
     if lagrangian.nonholonomic_constraints():
         raise ModelError("reduce() does not carry velocity constraints; use "

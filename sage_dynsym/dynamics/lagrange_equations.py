@@ -126,16 +126,50 @@ class LagrangeEquations(SageObject):
     @cached_method
     def equations(self, form=None):
         r"""
-        The Lagrange equations (5) with dissipation, generalized forces and
-        constraint forces: a list of expressions `E_i` meaning `E_i = 0`.
+        The Lagrange equations of the second kind (5), with dissipation,
+        generalized forces and constraint forces: a list of expressions `E_i` meaning `E_i = 0`.
 
         INPUT:
 
         - ``form`` -- (default: ``"structured"`` for a natural Lagrangian,
-          ``"direct"`` otherwise) see :meth:`Lagrangian.lagrange_equations
-          <sage_dynsym.dynamics.lagrangian.Lagrangian.lagrange_equations>`
+          ``"direct"`` otherwise) ``"structured"`` assembles (5) from the
+          decomposition (4); ``"direct"`` differentiates
+          `d/dt (\partial L/\partial \dot q_i) - \partial L/\partial q_i`.
+          Both are equal as functions.
 
-        EXAMPLES: see the class documentation.
+        With constraints, `E_i` contains `-\sum_j \mu_j \partial f_j/\partial
+        q_i` (`M\ddot q = F + J^T\mu`, see the module documentation).
+
+        EXAMPLES:
+
+        The structured form keeps the mass matrix entries as factors of the
+        accelerations::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.dynamics.lagrange_equations import LagrangeEquations
+            sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
+            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi])
+            sage: LagrangeEquations(L).equations()
+            [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
+
+        A relativistic particle (not natural) is differentiated directly::
+
+            sage: x, dx = var('x dx')
+            sage: LagrangeEquations(Lagrangian(-sqrt(1 - dx^2), [x])).equations()
+            [ddx*(dx^2/(-dx^2 + 1)^(3/2) + 1/sqrt(-dx^2 + 1))]
+
+        TESTS::
+
+            sage: t = var('t')
+            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 + r*dphi*t, [r, phi])
+            sage: E = LagrangeEquations(L)
+            sage: S, D = E.equations('structured'), E.equations('direct')
+            sage: all(bool((s - d).expand() == 0) for s, d in zip(S, D))
+            True
+            sage: E.equations('nonsense')
+            Traceback (most recent call last):
+            ...
+            ModelError: form: expected 'structured' or 'direct', got 'nonsense'
         """
         if form is None:
             form = "structured" if self._lagrangian.is_natural() else "direct"
@@ -235,12 +269,56 @@ class LagrangeEquations(SageObject):
     @cached_method
     def accelerations_and_multipliers(self):
         r"""
-        The accelerations and the multipliers solved from
-        :meth:`acceleration_system`, exactly: a dict ``{ddq_i: ..., mu_j:
-        ...}`` (see :meth:`Lagrangian.accelerations_and_multipliers
-        <sage_dynsym.dynamics.lagrangian.Lagrangian.accelerations_and_multipliers>`).
+        The accelerations and the multipliers, solved from the `n` equations
+        together with the twice-differentiated constraints (Lagrange's
+        equations of the first kind).
 
-        EXAMPLES: see the class documentation.
+        With `E = M\ddot q - F - J^T\mu` and
+        `\ddot f = J\ddot q + b(q, \dot q, t)`, the linear system
+        `\begin{pmatrix} M & -J^T \\ J & 0\end{pmatrix}
+        \begin{pmatrix}\ddot q \\ \mu\end{pmatrix}
+        = \begin{pmatrix} F \\ -b\end{pmatrix}` is solved exactly.
+        `J^T\mu` is the generalized constraint force.
+
+        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}`` of functions of `q`,
+        `\dot q` and `t` (valid on the constraint surface, where
+        `f = \dot f = 0`).
+
+        EXAMPLES:
+
+        A pendulum of length `l` in Cartesian coordinates: with
+        `x = l\sin\theta`, `y = -l\cos\theta` the tension of the rod is
+        `-2\mu_1 l = m(l\dot\theta^2 + g\cos\theta)` [Gol2002]_::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.dynamics.lagrange_equations import LagrangeEquations
+            sage: x, y, dx, dy, m, g, l, th, dth = var('x y dx dy m g l theta dtheta')
+            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
+            sage: sol = LagrangeEquations(L).accelerations_and_multipliers(); sol
+            {ddx: (g*x*y - (dx^2 + dy^2)*x)/(x^2 + y^2),
+             ddy: -(g*x^2 + (dx^2 + dy^2)*y)/(x^2 + y^2),
+             mu1: 1/2*(g*m*y - (dx^2 + dy^2)*m)/(x^2 + y^2)}
+            sage: polar = {x: l*sin(th), y: -l*cos(th), dx: l*cos(th)*dth, dy: l*sin(th)*dth}
+            sage: (-2*sol[L.multipliers()[0]]*l).subs(polar).full_simplify()
+            dtheta^2*l*m + g*m*cos(theta)
+
+        Without constraints, the accelerations alone::
+
+            sage: LagrangeEquations(Lagrangian(m*dx^2/2 - x^2/2, [x])).accelerations_and_multipliers()
+            {ddx: -x/m}
+
+        TESTS::
+
+            sage: LagrangeEquations(Lagrangian(-sqrt(1 - dx^2), [x], constraints=[x - var('t')])).accelerations_and_multipliers()
+            Traceback (most recent call last):
+            ...
+            ModelError: the Lagrangian is not quadratic in the velocities (dx)
+
+        REFERENCES:
+
+        .. [Gol2002] H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
+           3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
+           and forces of constraint).
         """
         K, rhs, unknowns = self.acceleration_system()
         solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
@@ -248,11 +326,27 @@ class LagrangeEquations(SageObject):
 
     def accelerations_solved(self):
         r"""
-        The equations solved for the accelerations, in the order of the
-        coordinates (see :meth:`Lagrangian.accelerations_solved
-        <sage_dynsym.dynamics.lagrangian.Lagrangian.accelerations_solved>`).
+        The equations solved for the accelerations: a list of expressions
+        `\ddot q_i = f_i(q, \dot q, t)` (only for natural Lagrangians with an
+        invertible mass matrix). With constraints: the accelerations of
+        :meth:`accelerations_and_multipliers` (valid on the constraint
+        surface).
 
-        EXAMPLES: see the module documentation.
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.dynamics.lagrange_equations import LagrangeEquations
+            sage: x, dx, m, k = var('x dx m k')
+            sage: LagrangeEquations(Lagrangian(m*dx^2/2 - k*x^2/2, [x])).accelerations_solved()
+            [-k*x/m]
+
+        TESTS::
+
+            sage: y, dy = var('y dy')
+            sage: LagrangeEquations(Lagrangian(dx^2 + x*dy, [x, y])).accelerations_solved()
+            Traceback (most recent call last):
+            ...
+            ModelError: the mass matrix is singular: the accelerations cannot be solved for
         """
         L = self._lagrangian
         if self._constraints.expressions():

@@ -121,6 +121,84 @@ The Kepler problem in polar coordinates::
     [ddr*m + m*mu/r^2 - p_phi^2/(m*r^3)]
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
+
+TESTS:
+
+The checks of the constructor of :class:`Lagrangian`::
+
+    sage: Lagrangian(dx^2, [x, x])
+    Traceback (most recent call last):
+    ...
+    ModelError: coordinates must be distinct, got [x, x]
+    sage: Lagrangian(dx^2, [x], forces=[1, 2])
+    Traceback (most recent call last):
+    ...
+    ModelError: forces: expected 1 generalized force(s), one per coordinate, got 2
+    sage: Lagrangian(dx^2, [x^2])
+    Traceback (most recent call last):
+    ...
+    ModelError: coordinates must be symbolic variables, got x^2
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[1]: the constraint l - 1 == 0 does not depend on the coordinates x, y
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dx
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
+    [x - y]
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[0]: expected an expression f meaning f = 0 or an equation, got the relation x < y
+
+The parameters declared positive of a model are checked where values are
+given::
+
+    sage: from sage_dynsym import load
+    sage: from sage_dynsym.description import example_path
+    sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
+    sage: L.positive_parameters()
+    [m, l, g]
+    sage: values = {'m': 1, 'l': 1, 'g': 9.81}
+    sage: L.simulate(dict(values, m=-1), {'theta': 1, 'psi': 0, 'dtheta': 0, 'dpsi': 0}, 1)
+    Traceback (most recent call last):
+    ...
+    ModelError: values: m is declared positive, got -1
+    sage: L.subs(g=-9.81)
+    Traceback (most recent call last):
+    ...
+    ModelError: subs: g is declared positive, got -981/100
+    sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
+    ([m, l], [m, l, g])
+
+Lagrangians are values, pickled by content (a structured form of the
+equations, where one was attached, is recomputed after unpickling)::
+
+    sage: x, dx, m, k = var('x dx m k')
+    sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=var('c')*dx^2/2)
+    sage: loads(dumps(L)) == L
+    True
+    sage: TestSuite(L).run()
+    sage: C = Lagrangian(m*dx^2/2, [x], constraints=[x - k]); loads(dumps(C)) == C
+    True
+    sage: C == Lagrangian(m*dx^2/2, [x]), C
+    (False, Lagrangian in coordinates (x) : 1/2*dx^2*m, subject to -k + x == 0)
+    sage: latex(C)
+    L = \frac{1}{2} \, {\dot{x}}^{2} m , \quad -k + x = 0
+    sage: len({Lagrangian(dx^2/2, [x]), Lagrangian(dx^2/2, [x])})
+    1
+
+The conserved energy of a mechanical system, from its decomposition::
+
+    sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
+    sage: L.conserved_energy()
+    1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
 """
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
@@ -137,7 +215,7 @@ from ..numerics.expressions import symbols_and_functions
 from .holonomic import HolonomicConstraints, independent_coordinates
 from .lagrange_equations import LagrangeEquations
 from .legendre import generalized_momenta, energy, legendre
-from .natural_form import symbol_list, is_at_most_quadratic, natural_form
+from .natural_form import symbol_list, is_at_most_quadratic, natural_form, natural_decomposition
 from .routh import check_cyclic, routh_reduction, cyclic_coordinates
 # names earlier versions of this module held, importable from it as before
 from .compact import equations_cse
@@ -188,41 +266,14 @@ class Lagrangian(NumericalMethods, SageObject):
         Lagrangian of oscillator in coordinates (x, y) : 1/2*dx^2 + 1/2*dy^2 - 1/2*x^2 - 1/2*y^2
         sage: L.coordinates(), L.velocities(), L.accelerations()
         ([x, y], [dx, dy], [ddx, ddy])
+        sage: L.expr(), L.name(), L.equation_builder()
+        (1/2*dx^2 + 1/2*dy^2 - 1/2*x^2 - 1/2*y^2, 'oscillator', None)
         sage: latex(L)
         L = \frac{1}{2} \, ...
-
-    TESTS::
-
-        sage: Lagrangian(dx^2, [x, x])
-        Traceback (most recent call last):
-        ...
-        ModelError: coordinates must be distinct, got [x, x]
-        sage: Lagrangian(dx^2, [x], forces=[1, 2])
-        Traceback (most recent call last):
-        ...
-        ModelError: forces: expected 1 generalized force(s), one per coordinate, got 2
-        sage: Lagrangian(dx^2, [x^2])
-        Traceback (most recent call last):
-        ...
-        ModelError: coordinates must be symbolic variables, got x^2
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[1]: the constraint l - 1 == 0 does not depend on the coordinates x, y
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dx
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
-        [x - y]
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: expected an expression f meaning f = 0 or an equation, got the relation x < y
+        sage: t, c = var('t c')
+        sage: D = Lagrangian(dx^2/2, [x], dissipation=c*dx^2/2, forces=[sin(t)])
+        sage: D.dissipation(), D.generalized_forces()
+        (1/2*c*dx^2, [sin(t)])
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
@@ -275,12 +326,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The Lagrangian as a symbolic expression.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^4, [x]).expr()
-            -x^4 + 1/2*dx^2
+        EXAMPLES: see the class documentation.
         """
         return self._expr
 
@@ -288,11 +334,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The generalized coordinates `q` (a new list).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).coordinates()
-            [x]
+        EXAMPLES: see the class documentation.
         """
         return list(self._coordinates)
 
@@ -300,11 +342,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The velocity symbols `\dot q`, in the order of the coordinates.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).velocities()
-            [dx]
+        EXAMPLES: see the class documentation.
         """
         return list(self._velocities)
 
@@ -312,11 +350,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The acceleration symbols `\ddot q`, in the order of the coordinates.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).accelerations()
-            [ddx]
+        EXAMPLES: see the class documentation.
         """
         return list(self._accelerations)
 
@@ -324,12 +358,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The Rayleigh dissipation function `R(q, \dot q)`.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, c = var('x dx c')
-            sage: Lagrangian(dx^2, [x], dissipation=c*dx^2/2).dissipation()
-            1/2*c*dx^2
+        EXAMPLES: see the class documentation.
         """
         return self._dissipation
 
@@ -337,12 +366,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The non-potential generalized forces `Q_i` (a new list).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, t = var('x dx t')
-            sage: Lagrangian(dx^2, [x], forces=[sin(t)]).generalized_forces()
-            [sin(t)]
+        EXAMPLES: see the class documentation.
         """
         return list(self._forces)
 
@@ -350,11 +374,7 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The name given at construction (or ``None``).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')], name="free").name()
-            'free'
+        EXAMPLES: see the class documentation.
         """
         return self._name
 
@@ -368,22 +388,11 @@ class Lagrangian(NumericalMethods, SageObject):
 
         EXAMPLES::
 
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
-            sage: L.positive_parameters()
-            [m, l, g]
-            sage: values = {'m': 1, 'l': 1, 'g': 9.81}
-            sage: L.simulate(dict(values, m=-1), {'theta': 1, 'psi': 0, 'dtheta': 0, 'dpsi': 0}, 1)
-            Traceback (most recent call last):
-            ...
-            ModelError: values: m is declared positive, got -1
-            sage: L.subs(g=-9.81)
-            Traceback (most recent call last):
-            ...
-            ModelError: subs: g is declared positive, got -981/100
-            sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
-            ([m, l], [m, l, g])
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], positive=[m, k])
+            sage: L.positive_parameters(), L.subs(k=2).positive_parameters()
+            ([m, k], [m])
         """
         return list(self._positive)
 
@@ -396,19 +405,7 @@ class Lagrangian(NumericalMethods, SageObject):
                 tuple(self.constraints()))
 
     def __eq__(self, other):
-        r"""
-        Lagrangians are values: equal when their expressions, coordinates,
-        velocities, dissipation and forces are (structurally) the same.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]) == Lagrangian(dx^2/2 - x^2/2, [x])
-            True
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]) == Lagrangian(dx^2/2 - x^2, [x])
-            False
-        """
+        # values: equal when their contents are structurally the same
         if type(self) is not type(other):
             return False
         return all(_same(a, b) for a, b in zip(self._content(), other._content()))
@@ -417,38 +414,11 @@ class Lagrangian(NumericalMethods, SageObject):
         return not self == other
 
     def __hash__(self):
-        r"""
-        A hash consistent with ``==`` (structural hashes of the expressions).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: len({Lagrangian(dx^2/2, [x]), Lagrangian(dx^2/2, [x])})
-            1
-        """
+        # consistent with ==: structural hashes of the expressions
         return hash(tuple(_hashable(a) for a in self._content()))
 
     def __reduce__(self):
-        r"""
-        Pickling: by content (a structured form of the equations, where one
-        was attached, is recomputed after unpickling).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=var('c')*dx^2/2)
-            sage: loads(dumps(L)) == L
-            True
-            sage: TestSuite(L).run()
-            sage: C = Lagrangian(m*dx^2/2, [x], constraints=[x - k]); loads(dumps(C)) == C
-            True
-            sage: C == Lagrangian(m*dx^2/2, [x]), C
-            (False, Lagrangian in coordinates (x) : 1/2*dx^2*m, subject to -k + x == 0)
-            sage: latex(C)
-            L = \frac{1}{2} \, {\dot{x}}^{2} m , \quad -k + x = 0
-        """
+        # by content (see the module documentation)
         return (_rebuild_lagrangian,
                 (self._expr, self._coordinates, self._velocities,
                  {'dissipation': self._dissipation, 'forces': self._forces,
@@ -465,9 +435,7 @@ class Lagrangian(NumericalMethods, SageObject):
             r", \quad " + latex(f) + " = 0" for f in self.constraints())
 
     def _derived(self, expr, **changes):
-        r"""
-        A Lagrangian of the same kind with a new expression (and options).
-        """
+        # a Lagrangian of the same kind with a new expression (and options)
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
                        forces=self._forces, name=self._name, constraints=self.constraints(),
                        positive=self._positive)
@@ -478,53 +446,18 @@ class Lagrangian(NumericalMethods, SageObject):
     def subs(self, *args, **kwds):
         r"""
         Substitute values for parameters (in `L`, `R`, `Q` and the
-        constraints). A number given for a parameter declared positive
-        (:meth:`positive_parameters`) must be positive; the substituted
-        parameters leave that list.
-
-        Coordinates and velocities must not be substituted: that would change
-        the dynamics in a way this method cannot track. A float is the exact
-        decimal it prints as (``0.3`` is `3/10`: see
-        :func:`~sage_dynsym.symbols.exact_decimals`).
+        constraints), see :func:`substituted`.
 
         EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
             sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs(m=2, k=8)
+            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs(m=2, k=8); L
             Lagrangian in coordinates (x) : dx^2 - 4*x^2
-            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
-            sage: L.first_order_system()
-            ([x, dx], [dx, -4*x])
-
-        TESTS::
-
-            sage: Lagrangian(m*dx^2/2, [x]).subs(x=1)
-            Traceback (most recent call last):
-            ...
-            ModelError: cannot substitute for the coordinate or velocity x
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({'k': 2}, m == 1)
-            Lagrangian in coordinates (x) : 1/2*dx^2 - x^2
-            sage: Lagrangian(m*dx^2/2, [x]).subs(2)
-            Traceback (most recent call last):
-            ...
-            ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
+            sage: L.accelerations_solved(), L.first_order_system()
+            ([-4*x], ([x, dx], [dx, -4*x]))
         """
-        args = [substitution(a) for a in args]
-        kwds = {k: exact_decimals(v) for k, v in kwds.items()}
-        probe = SR.var('_probe_')
-        protected = set(self._coordinates) | set(self._velocities) | {t}
-        for v in protected:
-            if (v + probe).subs(*args, **kwds) != v + probe:
-                raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
-        given = {p: p.subs(*args, **kwds) for p in self._positive}
-        given = {p: v for p, v in given.items() if not v.is_trivially_equal(p)}
-        check_model_values(self, given, entry="subs")
-        return self._derived(self._expr.subs(*args, **kwds),
-                             dissipation=self._dissipation.subs(*args, **kwds),
-                             forces=[f.subs(*args, **kwds) for f in self._forces],
-                             constraints=[f.subs(*args, **kwds) for f in self.constraints()],
-                             positive=[p for p in self._positive if p not in given])
+        return self._derived(**substituted(self, *args, **kwds))
 
     # ------------------------------------------------------------------
     # structure
@@ -551,46 +484,20 @@ class Lagrangian(NumericalMethods, SageObject):
     def decomposition(self):
         r"""
         The decomposition (4) `L = \tfrac12 \sum A_{ij} \dot q_i \dot q_j +
-        \sum A_i \dot q_i + A_0`.
-
-        OUTPUT: a triple ``(A, A1, A0)``: the symmetric matrix `A_{ij}`, the
-        vector `A_i` and the expression `A_0`, functions of `q` and `t`.
+        \sum A_i \dot q_i + A_0`: a triple ``(A, A1, A0)`` of functions of
+        `q` and `t` (see
+        :func:`~sage_dynsym.dynamics.natural_form.natural_decomposition`).
 
         EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, w = var('x y dx dy w')
-            sage: L = Lagrangian(((dx - w*y)^2 + (dy + w*x)^2)/2, [x, y])
-            sage: A, A1, A0 = L.decomposition()
-            sage: A, A1, A0
-            (
-            [1 0]
-            [0 1], (-w*y, w*x), 1/2*w^2*x^2 + 1/2*w^2*y^2
-            )
-
-        TESTS::
-
-            sage: Lagrangian(dx^4, [x]).decomposition()
-            Traceback (most recent call last):
-            ...
-            ModelError: the Lagrangian is not quadratic in the velocities (dx)
+            sage: x, dx, w = var('x dx w')
+            sage: Lagrangian((dx - w*x)^2/2, [x]).decomposition()
+            ([1], (-w*x), 1/2*w^2*x^2)
         """
         if self._structure is not None:
             return self._structure
-        if not self.is_natural():
-            names = ", ".join(map(str, self._velocities))
-            raise ModelError(f"the Lagrangian is not quadratic in the velocities ({names})")
-        zero = {v: 0 for v in self._velocities}
-        gradient = [self._expr.diff(v) for v in self._velocities]
-        n = len(self._coordinates)
-        A = matrix(SR, n, n)
-        for i in range(n):
-            for j in range(i, n):
-                A[i, j] = A[j, i] = gradient[i].diff(self._velocities[j])
-        A1 = matrix(SR, [g.subs(zero) for g in gradient]).row(0) if n else matrix(SR, 0, 0)
-        A0 = self._expr.subs(zero)
-        A.set_immutable()
-        return A, A1, A0
+        return natural_decomposition(self._expr, self._velocities)
 
     def mass_matrix(self):
         r"""
@@ -613,8 +520,7 @@ class Lagrangian(NumericalMethods, SageObject):
     def is_singular(self):
         r"""
         Whether `\det(\partial^2 L/\partial \dot q^2) = 0` identically: then
-        the Legendre transform is not invertible and :meth:`hamiltonian`
-        applies Dirac's scheme.
+        :meth:`hamiltonian` applies Dirac's scheme.
 
         EXAMPLES::
 
@@ -622,22 +528,14 @@ class Lagrangian(NumericalMethods, SageObject):
             sage: x, y, dx, dy = var('x y dx dy')
             sage: Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).is_singular()
             True
-            sage: Lagrangian(dx^2 + dy^2, [x, y]).is_singular()
-            False
         """
         return is_singular(self.mass_matrix())
 
     def equation_builder(self):
         r"""
-        The function given as ``equation_builder`` (computing the equations
-        (5) without dissipation and forces in a faster arithmetic), or
-        ``None``.
+        The function given as ``equation_builder``, or ``None``.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).equation_builder() is None
-            True
+        EXAMPLES: see the class documentation.
         """
         return self._equation_builder
 
@@ -646,15 +544,10 @@ class Lagrangian(NumericalMethods, SageObject):
 
     def constraint_set(self):
         r"""
-        The constraint set of the Lagrangian: its constraints with their
-        multipliers (:class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`).
+        The constraint set: the constraints with their multipliers
+        (:class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).constraint_set()
-            Holonomic constraints x - y == 0 with multipliers mu1
+        EXAMPLES: see :class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations`.
         """
         return self._constraint_set
 
@@ -690,27 +583,18 @@ class Lagrangian(NumericalMethods, SageObject):
 
     def nonholonomic_constraints(self):
         r"""
-        The constraints on the velocities (none but for a
+        The constraints on the velocities (see
         :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2/2, [var('x')]).nonholonomic_constraints()
-            []
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.nonholonomic`.
         """
         return self._constraint_set.velocity_constraints()
 
     def velocity_multipliers(self):
         r"""
-        The multipliers of the constraints on the velocities (see
-        :meth:`nonholonomic_constraints`).
+        The multipliers of the constraints on the velocities.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2/2, [var('x')]).velocity_multipliers()
-            []
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.nonholonomic`.
         """
         return self._constraint_set.velocity_multipliers()
 
@@ -721,21 +605,16 @@ class Lagrangian(NumericalMethods, SageObject):
 
     def reduce(self, independent, parametrization):
         r"""
-        The Lagrangian in independent coordinates ``independent``: the
-        other coordinates replaced by their values in ``parametrization``,
-        a dict ``{q_i: phi_i(s, t)}`` under which the constraints hold
-        identically (see
+        The Lagrangian in the coordinates ``independent``, the others given
+        by ``parametrization`` (see
         :func:`~sage_dynsym.dynamics.holonomic.independent_coordinates`).
 
-        EXAMPLES:
-
-        The Cartesian pendulum reduced to its angle::
+        EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
             sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
             sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: P = L.reduce([th], {x: l*sin(th), y: -l*cos(th)})
-            sage: P.lagrange_equations()[0].simplify_full()
+            sage: L.reduce([th], {x: l*sin(th), y: -l*cos(th)}).equations()[0].simplify_full()
             ddtheta*l^2*m + g*l*m*sin(theta)
         """
         expr, coordinates, velocities, dissipation, forces = \
@@ -791,85 +670,54 @@ class Lagrangian(NumericalMethods, SageObject):
 
     def equations_cse(self):
         r"""
-        The Lagrange equations written with their common subexpressions
-        (see :func:`~sage_dynsym.dynamics.compact.equations_cse`), exactly
-        equal to :meth:`lagrange_equations` after ``expand()``.
+        The Lagrange equations written with their common subexpressions (see
+        :func:`~sage_dynsym.dynamics.compact.equations_cse`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: psi, theta, dpsi, dtheta, m, l, g = var('psi theta dpsi dtheta m l g')
-            sage: L = Lagrangian(m*l^2*(dtheta^2 + sin(theta)^2*dpsi^2)/2 + m*g*l*cos(theta),
-            ....:                [psi, theta])
-            sage: C = L.equations_cse(); C.subexpressions()
-            [(x1_, cos(theta)), (x2_, sin(theta))]
-            sage: C.expand() == L.lagrange_equations()
-            True
+        EXAMPLES: see :func:`~sage_dynsym.dynamics.compact.equations_cse`.
         """
         return equations_cse(self.lagrange_equations())
 
     def equations_record(self):
         r"""
         The equations as neutral data for the analysis (see
-        :meth:`LagrangeEquations.record
-        <sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.record>`).
+        :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.record`).
 
         EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
             sage: x, y, dx, dy = var('x y dx dy')
-            sage: E = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
-            sage: E
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
             Second-order equations in (x, y): [ddx - mu1, ddy + mu1] == 0 with constraints [x - y] == 0
-            sage: E.constraints(), E.multipliers()
-            ([x - y], [mu1])
         """
         return self._equations_method().record()
 
     def accelerations_and_multipliers(self):
         r"""
-        The accelerations and the multipliers, solved from the `n` equations
-        together with the twice-differentiated constraints (Lagrange's
-        equations of the first kind, see :meth:`LagrangeEquations.accelerations_and_multipliers
-        <sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_and_multipliers>`):
-        a dict ``{ddq_i: ..., mu_j: ...}``.
+        The accelerations and the multipliers solved together with the
+        constraints differentiated (Lagrange's equations of the first kind):
+        a dict ``{ddq_i: ..., mu_j: ...}`` (see
+        :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_and_multipliers`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m = var('x dx m')
-            sage: Lagrangian(m*dx^2/2 - x^2/2, [x]).accelerations_and_multipliers()
-            {ddx: -x/m}
+        EXAMPLES: see the module documentation.
         """
         return dict(self._equations_method().accelerations_and_multipliers())
 
     def accelerations_solved(self):
         r"""
-        The equations solved for the accelerations: a list of expressions
-        `\ddot q_i = f_i(q, \dot q, t)` (only for natural Lagrangians with an
-        invertible mass matrix; with constraints, valid on the constraint
-        surface).
+        The equations solved for the accelerations `\ddot q_i = f_i(q, \dot
+        q, t)` (see
+        :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_solved`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).accelerations_solved()
-            [-k*x/m]
+        EXAMPLES: see :meth:`subs`.
         """
         return self._equations_method().accelerations_solved()
 
     def first_order_system(self):
         r"""
-        The equations as a first-order system `\dot x = F(x, t)` with state
-        `x = (q, \dot q)`: a pair ``(state, rhs)`` of lists.
+        The equations as a first-order system `\dot x = F(x, t)`, `x = (q,
+        \dot q)`: a pair ``(state, rhs)`` of lists.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).first_order_system()
-            ([x, dx], [dx, -k*x/m])
+        EXAMPLES: see :meth:`subs`.
         """
         return self._equations_method().first_order_system()
 
@@ -878,30 +726,19 @@ class Lagrangian(NumericalMethods, SageObject):
 
     def generalized_momenta(self):
         r"""
-        The expressions `p_i = \partial L / \partial \dot q_i` (see
+        The momenta `p_i = \partial L / \partial \dot q_i` (see
         :func:`~sage_dynsym.dynamics.legendre.generalized_momenta`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m = var('x dx m')
-            sage: Lagrangian(m*dx^2/2, [x]).generalized_momenta()
-            [dx*m]
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.legendre`.
         """
         return generalized_momenta(self)
 
     def energy(self):
         r"""
-        The generalized energy (Jacobi integral)
-        `h = \sum \dot q_i \partial L/\partial \dot q_i - L` (see
-        :func:`~sage_dynsym.dynamics.legendre.energy`).
+        The generalized energy `h = \sum \dot q_i \partial L/\partial \dot
+        q_i - L` (see :func:`~sage_dynsym.dynamics.legendre.energy`).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).energy()
-            1/2*dx^2*m + 1/2*k*x^2
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.legendre`.
         """
         return energy(self)
 
@@ -909,9 +746,9 @@ class Lagrangian(NumericalMethods, SageObject):
         r"""
         The generalized energy (:meth:`energy`) when it is an integral of
         the motion -- no explicit time in `L` or the constraints, no
-        dissipation, no generalized forces, velocity constraints
-        homogeneous and stationary --, else ``None``; what
-        ``simulate(...).energy_drift()`` measures.
+        dissipation or generalized forces, velocity constraints homogeneous
+        and stationary --, else ``None``; what ``simulate(...).energy_drift()``
+        measures. From a decomposition given, `T_2 - T_0 - U` unexpanded.
 
         EXAMPLES::
 
@@ -919,15 +756,8 @@ class Lagrangian(NumericalMethods, SageObject):
             sage: x, dx, c = var('x dx c')
             sage: Lagrangian(dx^2/2 - x^2/2, [x]).conserved_energy()
             1/2*dx^2 + 1/2*x^2
-            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).conserved_energy() is None
+            sage: Lagrangian(dx^2/2, [x], dissipation=c*dx^2/2).conserved_energy() is None
             True
-
-        From the decomposition of a mechanical system, `T_2 - T_0 - U`::
-
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: load(example_path('spherical_pendulum.yaml')).lagrangian().conserved_energy()
-            1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
         """
         velocities = self._velocities
         # velocity constraints do no work when homogeneous and stationary
@@ -974,37 +804,25 @@ class Lagrangian(NumericalMethods, SageObject):
 
     def cyclic_coordinates(self):
         r"""
-        The coordinates whose momentum is conserved, exactly those
-        :meth:`routh` accepts (see
-        :func:`~sage_dynsym.dynamics.routh.why_not_cyclic`).
+        The coordinates whose momentum is conserved, those :meth:`routh`
+        accepts (see :func:`~sage_dynsym.dynamics.routh.why_not_cyclic`).
 
-        EXAMPLES:
-
-        A damper on a cart makes its position non-cyclic::
+        EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
-            sage: x, phi, dx, dphi, c = var('x phi dx dphi c')
-            sage: Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi]).cyclic_coordinates()
-            [x]
-            sage: L = Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi], dissipation=c*dx^2/2)
-            sage: L.cyclic_coordinates()
-            []
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).cyclic_coordinates()
+            [phi]
         """
         return cyclic_coordinates(self)
 
     def routh(self, cyclic):
         r"""
-        The Routh function for the given cyclic coordinates.
+        The Routh function for the given cyclic coordinates (see
+        :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` and the
+        module documentation).
 
-        See :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
-            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi])
-            sage: R = L.routh([phi]); R.expr()
-            1/2*dr^2*m - 1/2*k*r^2 - 1/2*p_phi^2/(m*r^2)
+        EXAMPLES: see :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`.
         """
         return RouthFunction(self, cyclic)
 
@@ -1193,6 +1011,64 @@ class RouthFunction(Lagrangian):
         """
         return self.lagrange_equations()
 
+
+
+def substituted(lagrangian, *args, **kwds):
+    r"""
+    The parts of ``lagrangian`` with values substituted for parameters, what
+    :meth:`Lagrangian.subs` makes a Lagrangian of: a dict with the keys
+    ``expr``, ``dissipation``, ``forces``, ``constraints`` and
+    ``positive`` (the parameters declared positive that were not
+    substituted).
+
+    A number given for a parameter declared positive
+    (:meth:`Lagrangian.positive_parameters`) must be positive. Coordinates
+    and velocities must not be substituted: that would change the dynamics
+    in a way this function cannot track. A float is the exact decimal it
+    prints as (``0.3`` is `3/10`: see
+    :func:`~sage_dynsym.symbols.exact_decimals`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.lagrangian import substituted
+        sage: x, dx, m, k = var('x dx m k')
+        sage: substituted(Lagrangian(m*dx^2/2 - k*x^2/2, [x], positive=[m]), m=2)
+        {'constraints': [], 'dissipation': 0, 'expr': -1/2*k*x^2 + dx^2, 'forces': [0],
+         'positive': []}
+        sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
+        sage: L.first_order_system()
+        ([x, dx], [dx, -4*x])
+
+    TESTS::
+
+        sage: Lagrangian(m*dx^2/2, [x]).subs(x=1)
+        Traceback (most recent call last):
+        ...
+        ModelError: cannot substitute for the coordinate or velocity x
+        sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({'k': 2}, m == 1)
+        Lagrangian in coordinates (x) : 1/2*dx^2 - x^2
+        sage: Lagrangian(m*dx^2/2, [x]).subs(2)
+        Traceback (most recent call last):
+        ...
+        ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
+    """
+    args = [substitution(a) for a in args]
+    kwds = {k: exact_decimals(v) for k, v in kwds.items()}
+    probe = SR.var('_probe_')
+    protected = set(lagrangian.coordinates()) | set(lagrangian.velocities()) | {t}
+    for v in protected:
+        if (v + probe).subs(*args, **kwds) != v + probe:
+            raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
+    positive = lagrangian.positive_parameters()
+    given = {p: p.subs(*args, **kwds) for p in positive}
+    given = {p: v for p, v in given.items() if not v.is_trivially_equal(p)}
+    check_model_values(lagrangian, given, entry="subs")
+    return dict(expr=lagrangian.expr().subs(*args, **kwds),
+                dissipation=lagrangian.dissipation().subs(*args, **kwds),
+                forces=[f.subs(*args, **kwds) for f in lagrangian.generalized_forces()],
+                constraints=[f.subs(*args, **kwds) for f in lagrangian.constraints()],
+                positive=[p for p in positive if p not in given])
 
 
 def substitution(arg):
