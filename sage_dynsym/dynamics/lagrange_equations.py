@@ -123,7 +123,6 @@ class LagrangeEquations(SageObject):
         R = L.dissipation()
         return [R.diff(v) - Q for v, Q in zip(L.velocities(), L.generalized_forces())]
 
-    @cached_method
     def equations(self, form=None):
         r"""
         The Lagrange equations of the second kind (5), with dissipation,
@@ -173,12 +172,16 @@ class LagrangeEquations(SageObject):
         """
         if form is None:
             form = "structured" if self._lagrangian.is_natural() else "direct"
+        if not isinstance(form, str) or form not in ("structured", "direct"):
+            raise ModelError(f"expected 'structured' or 'direct', got {form!r}", entry='form')
+        return self._formed(form)
+
+    @cached_method
+    def _formed(self, form):
         if form == "structured":
             equations = self._structured_equations()
-        elif form == "direct":
-            equations = self._direct_equations()
         else:
-            raise ModelError(f"expected 'structured' or 'direct', got {form!r}", entry='form')
+            equations = self._direct_equations()
         return [e + extra - force for e, extra, force in
                 zip(equations, self.nonpotential_terms(),
                     self._constraints.generalized_forces())]
