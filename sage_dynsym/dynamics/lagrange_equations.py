@@ -324,8 +324,12 @@ class LagrangeEquations(SageObject):
            and forces of constraint).
         """
         K, rhs, unknowns = self.acceleration_system()
-        solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
-        return {v: solution[i, 0].simplify_rational() for i, v in enumerate(unknowns)}
+        return dict(zip(unknowns, self._solve(K, rhs)))
+
+    def _solve(self, K, rhs):
+        # the solution of K x = rhs, each entry simplified
+        X = K.solve_right(matrix(SR, [[v] for v in rhs]))
+        return [X[i, 0].simplify_rational() for i in range(X.nrows())]
 
     def accelerations_solved(self):
         r"""

@@ -330,33 +330,19 @@ class NonholonomicEquations(LagrangeEquations):
         [-1/2, -1/2]
     """
 
-    @cached_method
-    def accelerations_and_multipliers(self):
-        r"""
-        The accelerations and the multipliers of all constraints, solved from
-        the `n` equations together with the holonomic constraints
-        differentiated twice and the velocity constraints differentiated once
-        (see :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.acceleration_system`).
-
-        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}``, valid where the
-        constraints hold
-
-        EXAMPLES: see the module documentation.
-        """
-        K, rhs, unknowns = self.acceleration_system()
+    def _solve(self, K, rhs):
         try:
             field = TrigFractionField(K.list() + rhs)
             X = field.solve_right(field.matrix(K), [[field(v)] for v in rhs])
-            values = [field.expression(x[0]) for x in X]
+            return [field.expression(x[0]) for x in X]
         except AnalysisError:   # not rational in the sines and cosines
-            X = K.solve_right(matrix(SR, [[v] for v in rhs]))
-            values = [X[i, 0].simplify_rational() for i in range(len(unknowns))]
-        return dict(zip(unknowns, values))
+            return super()._solve(K, rhs)
 
     def accelerations_solved(self):
         r"""
-        The accelerations of :meth:`accelerations_and_multipliers`, in the
-        order of the coordinates.
+        The accelerations of :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_and_multipliers`
+        (solved exactly where the equations are rational in the sines and
+        cosines), in the order of the coordinates.
 
         EXAMPLES: see the class documentation.
         """
