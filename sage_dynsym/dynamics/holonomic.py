@@ -34,6 +34,8 @@ from ..symbols import velocity, acceleration, time_derivative, t, constraint_mul
 from ..numerics.form import constraint_terms
 from .natural_form import symbol_list, has_full_row_rank
 
+__all__ = ['check_constraints', 'HolonomicConstraints', 'independent_coordinates']
+
 
 def check_constraints(constraints, coordinates, parameters=None, entry="constraints",
                       velocities=None):

@@ -38,6 +38,8 @@ from ..analysis.motion import SecondOrderEquations
 from .natural_equations import natural_equations, SymbolicCalculus
 from .natural_form import is_singular
 
+__all__ = ['LagrangeEquations']
+
 
 class LagrangeEquations(SageObject):
     r"""

@@ -75,6 +75,9 @@ from .lagrangian import Lagrangian, substitution
 from .lagrange_equations import LagrangeEquations
 from .natural_form import has_full_row_rank
 
+__all__ = ['check_velocity_constraints', 'VelocityConstraints', 'NonholonomicEquations',
+           'NonholonomicLagrangian']
+
 
 def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(),
                                parameters=None, entry="nonholonomic"):

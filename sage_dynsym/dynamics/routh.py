@@ -29,6 +29,8 @@ from ..errors import ModelError
 from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from .natural_form import natural_form, linear_collected, is_singular, Elimination
 
+__all__ = ['cyclic_coordinates', 'why_not_cyclic', 'check_cyclic', 'routh_reduction']
+
 
 def cyclic_coordinates(lagrangian):
     r"""
