@@ -120,16 +120,6 @@ def private_reaches(klass):
 #: removed when its class no longer reaches (a test says when).
 REACH_ALLOWED = {
     "sage_dynsym.algebra.solving.SolutionList": {"_solutions"},
-    "sage_dynsym.dynamics.holonomic.HolonomicConstraints": {
-        "_velocities", "_expr", "_dissipation", "_forces", "_derived", "_accelerations",
-        "_coordinates"},
-    "sage_dynsym.dynamics.lagrange_equations.LagrangeEquations": {
-        "_velocities", "_expr", "_multipliers", "_constraints", "_dissipation", "_forces",
-        "_constraint_forces", "_equation_builder", "_accelerations", "_coordinates"},
-    "sage_dynsym.dynamics.legendre.LegendreTransform": {
-        "_velocities", "_expr", "_constraints", "_dissipation", "_forces", "_structure"},
-    "sage_dynsym.dynamics.routh.CyclicCoordinates": {
-        "_velocities", "_expr", "_constraints", "_dissipation", "_forces", "_coordinates"},
     "sage_dynsym.numerics.codegen.GeneratedCode": {"_language"},
 }
 
@@ -250,8 +240,6 @@ def _foreign():
 FOREIGN_ALLOWED = {
     "sage_dynsym.analysis.charts": {"inner._reduce"},
     "sage_dynsym.analysis.normal_form_stability": {"nf._form_values"},
-    "sage_dynsym.dynamics.nonlinear_stability": {"H._conserved_energy"},
-    "sage_dynsym.dynamics.reduced": {"K._eliminate"},
     # Sage's Graphics keeps its keyword options behind private names only
     "sage_dynsym.numerics.trajectory": {"G._set_extra_kwds"},
     "sage_dynsym.scale.maps": {"G._extra_kwds"},

@@ -199,7 +199,7 @@ class Hamiltonian(SageObject, NumericalMethods):
         return FirstOrderEquations([a for a, _ in pairs] + [b for _, b in pairs],
                                    list(self._coordinates) + list(self._momenta))
 
-    def _conserved_energy(self):
+    def conserved_energy(self):
         r"""
         `H` when it is conserved: no explicit time, no dissipation or
         generalized forces, a regular Lagrangian; else ``None``.
@@ -209,18 +209,22 @@ class Hamiltonian(SageObject, NumericalMethods):
             sage: from sage_dynsym import Lagrangian
             sage: x, dx, c = var('x dx c')
             sage: H = Lagrangian(dx^2/2 - x^2/2, [x]).hamiltonian()
-            sage: H._conserved_energy()
+            sage: H.conserved_energy()
             1/2*p_x^2 + 1/2*x^2
             sage: T = H.simulate({}, {x: 1, 'p_x': 0}, 2*pi, points=3)
             sage: T.values(x).round(8), T.energy_drift() < 1e-9
             (array([ 1., -1.,  1.]), True)
-            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).hamiltonian()._conserved_energy() is None
+            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).hamiltonian().conserved_energy() is None
             True
         """
         if self._dirac is not None or self._expr.has(_t) or any(
                 not F.is_zero() for F in self._nonpotential_forces()):
             return None
         return self._expr
+
+    def _conserved_energy(self):
+        # the hook of NumericalMethods
+        return self.conserved_energy()
 
     def _repr_(self):
         kind = "Hamiltonian" if self._dirac is None else "Canonical Hamiltonian (singular Lagrangian)"

@@ -5,11 +5,13 @@ equations of the first kind
 :func:`check_constraints` reads and checks holonomic constraints
 `f_j(q, t) = 0`, for a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
 and for a :class:`~sage_dynsym.mechanics.system.MechanicalSystem` alike.
-:class:`HolonomicConstraints` gives a Lagrangian its constraints, their
-multipliers `\mu_j`, the generalized constraint forces `J^T\mu` and the
-accelerations and multipliers solved together (see the module
-documentation of :mod:`~sage_dynsym.dynamics.lagrangian`), and the
-reduction to independent coordinates.
+:class:`HolonomicConstraints` is the constraint set a Lagrangian holds: its
+constraints, their multipliers `\mu_j`, the generalized constraint forces
+`J^T\mu` and the constraints differentiated twice, which
+:class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations` solves
+with the equations (see the module documentation of
+:mod:`~sage_dynsym.dynamics.lagrangian`). :func:`independent_coordinates`
+is the reduction to independent coordinates.
 
 EXAMPLES::
 
@@ -22,14 +24,17 @@ EXAMPLES::
 import operator
 
 from sage.matrix.constructor import matrix
-from sage.misc.cachefunc import cached_method
+from sage.structure.sage_object import SageObject
 from sage.symbolic.expression import Expression
 from sage.symbolic.ring import SR
 
 from ..arguments import expression_argument
 from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, time_derivative, t, constraint_multipliers, momentum
-from .natural_form import symbol_list, is_singular, has_full_row_rank
+from ..numerics.form import constraint_terms
+from .natural_form import symbol_list, has_full_row_rank
+
+__all__ = ['check_constraints', 'HolonomicConstraints', 'independent_coordinates']
 
 
 def check_constraints(constraints, coordinates, parameters=None, entry="constraints",
@@ -146,286 +151,233 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
     return out
 
 
-class HolonomicConstraints:
+class HolonomicConstraints(SageObject):
     r"""
-    The holonomic constraints of a
-    :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian` and their
-    multipliers (a base class of it, see the module documentation).
+    The holonomic constraints `f_j(q, t) = 0` of a Lagrangian with their
+    multipliers `\mu_j`: what the equations of motion need of them, the
+    generalized constraint forces `J^T\mu` and the constraints at the level
+    of accelerations.
 
-    EXAMPLES: see :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`.
+    INPUT:
+
+    - ``coordinates``, ``velocities`` -- the coordinates `q` and their
+      velocity symbols
+    - ``constraints`` -- (default: none) the constraints, checked by
+      :func:`check_constraints`
+    - ``taken`` -- (optional) a function without arguments returning the
+      other expressions of the model (the Lagrangian, the dissipation
+      function, the forces): the multipliers avoid their symbols; called
+      only when there are constraints
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+        sage: x, y, dx, dy, l = var('x y dx dy l')
+        sage: C = HolonomicConstraints([x, y], [dx, dy], [x^2 + y^2 == l^2]); C
+        Holonomic constraints -l^2 + x^2 + y^2 == 0 with multipliers mu1
+        sage: C.generalized_forces()
+        [2*mu1*x, 2*mu1*y]
+        sage: C.acceleration_constraints()
+        ([2*x 2*y], [-2*dx^2 - 2*dy^2], [mu1])
+        sage: HolonomicConstraints([x], [dx], [x], taken=lambda: [var('mu1')]).multipliers()
+        [mu2]
     """
 
-    def _set_constraints(self, constraints):
-        # after the coordinates, velocities, expression, dissipation and forces
+    def __init__(self, coordinates, velocities, constraints=(), taken=None):
+        self._coordinates, self._velocities = list(coordinates), list(velocities)
         self._constraints = check_constraints(constraints, self._coordinates,
                                               velocities=self._velocities)
         self._multipliers = []
         if self._constraints:
-            taken = set().union(*(SR(e).variables() for e in [self._expr, self._dissipation]
-                                  + self._forces + self._constraints))
-            taken |= {momentum(q) for q in self._coordinates}
-            self._multipliers = constraint_multipliers(len(self._constraints), taken)
+            used = set().union(*(SR(e).variables() for e in
+                                 (taken() if taken else []) + self._constraints))
+            used |= {momentum(q) for q in self._coordinates}
+            self._multipliers = constraint_multipliers(len(self._constraints), used)
 
-    def constraints(self):
+    def _repr_(self):
+        if not self._constraints:
+            return "No holonomic constraints"
+        return ("Holonomic constraints " + ", ".join(f"{f} == 0" for f in self._constraints)
+                + " with multipliers " + ", ".join(map(str, self._multipliers)))
+
+    def expressions(self):
         r"""
-        The holonomic constraints `f_j(q, t)`, each meaning `f_j = 0` (a new
-        list, empty if none).
+        The constraints `f_j(q, t)`, each meaning `f_j = 0` (a new list).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, l = var('x y dx dy l')
-            sage: L = Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: L.constraints()
-            [-l^2 + x^2 + y^2]
-            sage: Lagrangian(dx^2, [x]).constraints()
-            []
+        EXAMPLES: see the class documentation.
         """
         return list(self._constraints)
 
     def multipliers(self):
         r"""
-        The multipliers `\mu_j`, one per constraint: symbols ``mu1, mu2,
-        ...`` that occur nowhere else in the model (see
-        :func:`~sage_dynsym.symbols.constraint_multipliers`).
+        The multipliers of all the constraints (here `\mu_j`, one per
+        constraint; see :func:`~sage_dynsym.symbols.constraint_multipliers`).
 
-        The equations contain `-\sum_j \mu_j \partial f_j/\partial q_i`,
-        so `\mu_j \partial f_j/\partial q` is the generalized force of the
-        constraint `j`.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, mu1 = var('x y dx dy mu1')
-            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).multipliers()
-            [mu1]
-            sage: Lagrangian((dx^2 + dy^2)/2 + mu1*x, [x, y], constraints=[x - y]).multipliers()
-            [mu2]
+        EXAMPLES: see the class documentation.
         """
         return list(self._multipliers)
 
-    def nonholonomic_constraints(self):
+    def velocity_constraints(self):
         r"""
         The constraints on the velocities (none here; see
-        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+        :class:`~sage_dynsym.dynamics.nonholonomic.VelocityConstraints`).
 
         EXAMPLES::
 
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2, [x]).nonholonomic_constraints()
+            sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+            sage: HolonomicConstraints([var('x')], [var('dx')]).velocity_constraints()
             []
         """
         return []
 
     def velocity_multipliers(self):
         r"""
-        The multipliers of the constraints on the velocities (none here;
-        see :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+        The multipliers of the constraints on the velocities (none here).
 
         EXAMPLES::
 
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2, [x]).velocity_multipliers()
+            sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+            sage: HolonomicConstraints([var('x')], [var('dx')]).velocity_multipliers()
             []
         """
         return []
 
-    def _subject_to(self):
-        if not self._constraints:
-            return ""
-        return ", subject to " + ", ".join(f"{f} == 0" for f in self._constraints)
+    def jacobian(self):
+        r"""
+        The Jacobian `J = \partial f/\partial q` of the constraints.
 
-    def _constraint_forces(self):
-        # the generalized constraint forces J^T mu, one per coordinate
-        J = self._constraint_jacobian()
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: HolonomicConstraints([x, y], [dx, dy], [x*y - 1]).jacobian()
+            [y x]
+        """
+        return matrix(SR, len(self._constraints), len(self._coordinates),
+                      constraint_terms(self._constraints, self._coordinates,
+                                       self._velocities)[0])
+
+    def generalized_forces(self):
+        r"""
+        The generalized constraint forces `J^T\mu`, one per coordinate (the
+        equations of motion contain them with a minus sign).
+
+        EXAMPLES: see the class documentation.
+        """
+        J = self.jacobian()
         return [sum(mu * J[j, i] for j, mu in enumerate(self._multipliers))
                 for i in range(len(self._coordinates))]
 
-    def _constraint_jacobian(self):
-        return matrix(SR, len(self._constraints), len(self._coordinates),
-                      [[f.diff(q) for q in self._coordinates] for f in self._constraints])
-
-    def _acceleration_constraints(self):
-        # the constraints at the level of accelerations, G ddq = h: the
-        # holonomic ones differentiated twice; with their multipliers
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        zero = {v: 0 for v in ddq}
-        h = [-time_derivative(time_derivative(f, q, dq, ddq), q, dq, ddq).subs(zero)
-             for f in self._constraints]
-        return self._constraint_jacobian(), h, list(self._multipliers)
-
-    @cached_method
-    def accelerations_and_multipliers(self):
+    def acceleration_constraints(self):
         r"""
-        The accelerations and the multipliers, solved from the `n` equations
-        together with the twice-differentiated constraints (Lagrange's
-        equations of the first kind).
+        The constraints at the level of accelerations, `G\ddot q = h`: the
+        holonomic ones differentiated twice
+        (:func:`~sage_dynsym.numerics.form.constraint_terms`).
 
-        With `E = M\ddot q - F - J^T\mu` and
-        `\ddot f = J\ddot q + b(q, \dot q, t)`, the linear system
-        `\begin{pmatrix} M & -J^T \\ J & 0\end{pmatrix}
-        \begin{pmatrix}\ddot q \\ \mu\end{pmatrix}
-        = \begin{pmatrix} F \\ -b\end{pmatrix}` is solved exactly.
-        `J^T\mu` is the generalized constraint force.
+        OUTPUT: a triple ``(G, h, multipliers)``, the multipliers in the
+        order of the rows of ``G``
 
-        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}`` of functions of `q`,
-        `\dot q` and `t` (valid on the constraint surface, where
-        `f = \dot f = 0`).
-
-        EXAMPLES:
-
-        A pendulum of length `l` in Cartesian coordinates: with
-        `x = l\sin\theta`, `y = -l\cos\theta` the tension of the rod is
-        `-2\mu_1 l = m(l\dot\theta^2 + g\cos\theta)` [Gol2002]_::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, m, g, l, th, dth = var('x y dx dy m g l theta dtheta')
-            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: sol = L.accelerations_and_multipliers(); sol
-            {ddx: (g*x*y - (dx^2 + dy^2)*x)/(x^2 + y^2),
-             ddy: -(g*x^2 + (dx^2 + dy^2)*y)/(x^2 + y^2),
-             mu1: 1/2*(g*m*y - (dx^2 + dy^2)*m)/(x^2 + y^2)}
-            sage: polar = {x: l*sin(th), y: -l*cos(th), dx: l*cos(th)*dth, dy: l*sin(th)*dth}
-            sage: (-2*sol[L.multipliers()[0]]*l).subs(polar).full_simplify()
-            dtheta^2*l*m + g*m*cos(theta)
-
-        Without constraints, the accelerations alone::
-
-            sage: Lagrangian(m*dx^2/2 - x^2/2, [x]).accelerations_and_multipliers()
-            {ddx: -x/m}
-
-        TESTS::
-
-            sage: Lagrangian(-sqrt(1 - dx^2), [x], constraints=[x - var('t')]).accelerations_and_multipliers()
-            Traceback (most recent call last):
-            ...
-            ModelError: the Lagrangian is not quadratic in the velocities (dx)
-
-        REFERENCES:
-
-        .. [Gol2002] H. Goldstein, C. Poole, J. Safko, *Classical Mechanics*,
-           3rd ed., Addison-Wesley 2002, section 2.4 (Lagrange multipliers
-           and forces of constraint).
+        EXAMPLES: see the class documentation.
         """
-        K, rhs, unknowns = self._acceleration_system()
-        solution = K.solve_right(matrix(SR, [[v] for v in rhs]))
-        return {v: solution[i, 0].simplify_rational() for i, v in enumerate(unknowns)}
+        J, h, _ = constraint_terms(self._constraints, self._coordinates, self._velocities)
+        G = matrix(SR, len(self._constraints), len(self._coordinates), J)
+        return G, h, list(self._multipliers)
 
-    def _acceleration_system(self):
-        # the linear system [[M, -G^T], [G, 0]] (ddq, multipliers) = (F, h),
-        # as (matrix, right-hand side, unknowns)
-        q, ddq = self._coordinates, self._accelerations
-        M = self.decomposition()[0]
-        G, h, multipliers = self._acceleration_constraints()
-        n, m = len(q), len(multipliers)
-        zero = {v: 0 for v in ddq + multipliers}
-        F = [-e.subs(zero) for e in self.lagrange_equations()]
-        K = matrix(SR, n + m, n + m)
-        K.set_block(0, 0, M)
-        if m:
-            K.set_block(0, n, -G.transpose())
-            K.set_block(n, 0, G)
-        if is_singular(K):
-            raise ModelError("the equations cannot be solved for the accelerations and "
-                             "multipliers (the matrix [[M, -J^T], [J, 0]] is singular)")
-        return K, F + h, ddq + multipliers
 
-    def reduce(self, independent, parametrization):
-        r"""
-        The Lagrangian in independent coordinates: the constrained
-        coordinates are replaced by functions of the independent ones.
+def independent_coordinates(lagrangian, independent, parametrization):
+    r"""
+    The data of ``lagrangian`` in independent coordinates: the constrained
+    coordinates replaced by functions of the independent ones (what
+    :meth:`Lagrangian.reduce
+    <sage_dynsym.dynamics.lagrangian.Lagrangian.reduce>` returns as a
+    Lagrangian; see there for the arguments and the checks).
 
-        INPUT:
+    OUTPUT: a tuple ``(expr, coordinates, velocities, dissipation,
+    forces)``: `L(\varphi(s, t), \dot\varphi, t)`, the independent
+    coordinates and their velocities, the dissipation function substituted
+    the same way and the generalized forces by virtual work,
+    `Q'_k = \sum_i Q_i\,\partial\varphi_i/\partial s_k`
 
-        - ``independent`` -- the `n - m` independent coordinates `s_k`: kept
-          coordinates of `L` or new symbols
-        - ``parametrization`` -- a dict ``{q_i: phi_i(s, t)}`` giving every
-          other coordinate; the constraints must hold identically under it
+    EXAMPLES::
 
-        OUTPUT: a :class:`Lagrangian` in ``independent`` without
-        constraints: `L(\varphi(s, t), \dot\varphi, t)`, the dissipation
-        function substituted the same way, and the generalized forces by
-        virtual work, `Q'_k = \sum_i Q_i\,\partial\varphi_i/\partial s_k`.
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.holonomic import independent_coordinates
+        sage: x, y, dx, dy, l, th = var('x y dx dy l theta')
+        sage: L = Lagrangian((dx^2 + dy^2)/2 - y, [x, y], constraints=[x^2 + y^2 - l^2])
+        sage: E, q, dq, R, Q = independent_coordinates(L, [th], {x: l*sin(th), y: -l*cos(th)})
+        sage: E.simplify_full(), q, dq, Q
+        (1/2*dtheta^2*l^2 + l*cos(theta), [theta], [dtheta], [0])
 
-        EXAMPLES:
+    TESTS::
 
-        The Cartesian pendulum reduced to its angle::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
-            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
-            sage: P = L.reduce([th], {x: l*sin(th), y: -l*cos(th)})
-            sage: P.lagrange_equations()[0].simplify_full()
-            ddtheta*l^2*m + g*l*m*sin(theta)
-
-        TESTS::
-
-            sage: L.reduce([th], {x: l*sin(th), y: l*sin(th)})
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: the constraint constraints[0] = -l^2 + x^2 + y^2 does not hold identically under the parametrization {x: l*sin(theta), y: l*sin(theta)}
-            sage: L.reduce([x, th], {y: th})
-            Traceback (most recent call last):
-            ...
-            ModelError: independent: expected 1 independent coordinate(s) (2 coordinates, 1 constraint(s)), got [x, theta]
-            sage: L.reduce([th], {x: l*sin(th)})
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: the coordinate y is neither independent nor given
-            sage: L.reduce([th], [l*sin(th), -l*cos(th)])
-            Traceback (most recent call last):
-            ...
-            ModelError: parametrization: expected a dict {coordinate: expression in the independent ones}, got [l*sin(theta), -l*cos(theta)]
-        """
-        independent = symbol_list(independent, "independent")
-        if not isinstance(parametrization, dict):
-            raise ModelError(f"expected a dict {{coordinate: expression in the independent "
-                             f"ones}}, got {brief(parametrization)}", entry="parametrization")
-        sub = {SR.var(k) if isinstance(k, str) and k.isidentifier() else
-               expression_argument(k, "parametrization"): expression_argument(v, "parametrization")
-               for k, v in parametrization.items()}
-        n, m = len(self._coordinates), len(self._constraints)
-        if len(independent) != n - m:
-            raise ModelError(f"expected {n - m} independent coordinate(s) ({n} coordinates, "
-                             f"{m} constraint(s)), got {independent}", entry="independent")
-        for k in sub:
-            if k not in self._coordinates:
-                raise ModelError(f"{k} is not a coordinate of the Lagrangian; coordinates "
-                                 f"are {self._coordinates}", entry="parametrization")
-            if k in independent:
-                raise ModelError(f"the coordinate {k} is both independent and given",
-                                 entry="parametrization")
-        parts = [self._expr, self._dissipation] + self._forces + self._constraints
-        for q in self._coordinates:
-            if q not in sub and q not in independent:
-                raise ModelError(f"the coordinate {q} is neither independent nor given",
-                                 entry="parametrization")
-        for s_k in independent:
-            if s_k not in self._coordinates and any(p.has(s_k) for p in parts):
-                raise ModelError(f"the new coordinate {s_k} is already a symbol of the model",
-                                 entry="independent")
-        removed = [q for q in self._coordinates if q in sub]
-        for k, v in sub.items():
-            bad = [w for w in removed + self._velocities if v.has(w)]
-            if bad:
-                raise ModelError(f"the value of {k} depends on {bad[0]}; give it in the "
-                                 "independent coordinates and t", entry="parametrization")
-        ds = [velocity(s_k) for s_k in independent]
-        position = {q: sub.get(q, q) for q in self._coordinates}
-        rate = {dq: time_derivative(position[q], independent, ds)
-                for q, dq in zip(self._coordinates, self._velocities)}
-        for j, f in enumerate(self._constraints):
-            if not bool(f.subs(position).simplify_full() == 0):
-                raise ModelError(f"the constraint constraints[{j}] = {f} does not hold "
-                                 f"identically under the parametrization {sub}",
-                                 entry="parametrization")
-        full = {**position, **rate}
-        forces = [sum(Q.subs(full) * position[q].diff(s_k)
-                      for q, Q in zip(self._coordinates, self._forces))
-                  for s_k in independent]
-        # a plain Lagrangian, whatever the kind of this one
-        return self._derived(self._expr.subs(full), coordinates=independent, velocities=ds,
-                             dissipation=self._dissipation.subs(full), forces=forces,
-                             constraints=())
+        sage: L.reduce([th], {x: l*sin(th), y: l*sin(th)})
+        Traceback (most recent call last):
+        ...
+        ModelError: parametrization: the constraint constraints[0] = -l^2 + x^2 + y^2 does not hold identically under the parametrization {x: l*sin(theta), y: l*sin(theta)}
+        sage: L.reduce([x, th], {y: th})
+        Traceback (most recent call last):
+        ...
+        ModelError: independent: expected 1 independent coordinate(s) (2 coordinates, 1 constraint(s)), got [x, theta]
+        sage: L.reduce([th], {x: l*sin(th)})
+        Traceback (most recent call last):
+        ...
+        ModelError: parametrization: the coordinate y is neither independent nor given
+        sage: L.reduce([th], [l*sin(th), -l*cos(th)])
+        Traceback (most recent call last):
+        ...
+        ModelError: parametrization: expected a dict {coordinate: expression in the independent ones}, got [l*sin(theta), -l*cos(theta)]
+    """
+    if lagrangian.nonholonomic_constraints():
+        raise ModelError("reduce() does not carry velocity constraints; use "
+                         "reduced_equations() (Kane's equations in independent speeds)",
+                         entry="nonholonomic")
+    coordinates, velocities = lagrangian.coordinates(), lagrangian.velocities()
+    expr, dissipation = lagrangian.expr(), lagrangian.dissipation()
+    constraints, generalized_forces = lagrangian.constraints(), lagrangian.generalized_forces()
+    independent = symbol_list(independent, "independent")
+    if not isinstance(parametrization, dict):
+        raise ModelError(f"expected a dict {{coordinate: expression in the independent "
+                         f"ones}}, got {brief(parametrization)}", entry="parametrization")
+    sub = {SR.var(k) if isinstance(k, str) and k.isidentifier() else
+           expression_argument(k, "parametrization"): expression_argument(v, "parametrization")
+           for k, v in parametrization.items()}
+    n, m = len(coordinates), len(constraints)
+    if len(independent) != n - m:
+        raise ModelError(f"expected {n - m} independent coordinate(s) ({n} coordinates, "
+                         f"{m} constraint(s)), got {independent}", entry="independent")
+    for k in sub:
+        if k not in coordinates:
+            raise ModelError(f"{k} is not a coordinate of the Lagrangian; coordinates "
+                             f"are {coordinates}", entry="parametrization")
+        if k in independent:
+            raise ModelError(f"the coordinate {k} is both independent and given",
+                             entry="parametrization")
+    parts = [expr, dissipation] + generalized_forces + constraints
+    for q in coordinates:
+        if q not in sub and q not in independent:
+            raise ModelError(f"the coordinate {q} is neither independent nor given",
+                             entry="parametrization")
+    for s_k in independent:
+        if s_k not in coordinates and any(p.has(s_k) for p in parts):
+            raise ModelError(f"the new coordinate {s_k} is already a symbol of the model",
+                             entry="independent")
+    removed = [q for q in coordinates if q in sub]
+    for k, v in sub.items():
+        bad = [w for w in removed + velocities if v.has(w)]
+        if bad:
+            raise ModelError(f"the value of {k} depends on {bad[0]}; give it in the "
+                             "independent coordinates and t", entry="parametrization")
+    ds = [velocity(s_k) for s_k in independent]
+    position = {q: sub.get(q, q) for q in coordinates}
+    rate = {dq: time_derivative(position[q], independent, ds)
+            for q, dq in zip(coordinates, velocities)}
+    for j, f in enumerate(constraints):
+        if not bool(f.subs(position).simplify_full() == 0):
+            raise ModelError(f"the constraint constraints[{j}] = {f} does not hold "
+                             f"identically under the parametrization {sub}",
+                             entry="parametrization")
+    full = {**position, **rate}
+    forces = [sum(Q.subs(full) * position[q].diff(s_k)
+                  for q, Q in zip(coordinates, generalized_forces))
+              for s_k in independent]
+    return expr.subs(full), independent, ds, dissipation.subs(full), forces

@@ -26,10 +26,14 @@ in the structured form (5): mass-matrix entries times accelerations, Christoffel
 coefficients times products of velocities, gyroscopic and non-stationary
 terms; nothing is expanded. Any other Lagrangian is differentiated directly.
 
-The class is assembled from base classes, one concern each: the equations
-(:mod:`~sage_dynsym.dynamics.lagrange_equations`), the holonomic
-constraints and their multipliers (:mod:`~sage_dynsym.dynamics.holonomic`),
-the momenta, energy and Legendre transform
+A Lagrangian is its expression, its coordinates and the data of the model
+it is given (dissipation, forces, its constraint set), read through its
+methods. What is computed from it is done by method objects and functions
+that take it, which its methods call: the equations
+(:class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations`),
+with the constraint set and its multipliers
+(:class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`), the
+momenta, energy and Legendre transform
 (:mod:`~sage_dynsym.dynamics.legendre`), the cyclic coordinates and the
 Routh reduction (:mod:`~sage_dynsym.dynamics.routh`), and the numerics
 (:class:`~sage_dynsym.numerics.methods.NumericalMethods`).
@@ -117,6 +121,84 @@ The Kepler problem in polar coordinates::
     [ddr*m + m*mu/r^2 - p_phi^2/(m*r^3)]
     sage: R.cyclic_velocities()
     [p_phi/(m*r^2)]
+
+TESTS:
+
+The checks of the constructor of :class:`Lagrangian`::
+
+    sage: Lagrangian(dx^2, [x, x])
+    Traceback (most recent call last):
+    ...
+    ModelError: coordinates must be distinct, got [x, x]
+    sage: Lagrangian(dx^2, [x], forces=[1, 2])
+    Traceback (most recent call last):
+    ...
+    ModelError: forces: expected 1 generalized force(s), one per coordinate, got 2
+    sage: Lagrangian(dx^2, [x^2])
+    Traceback (most recent call last):
+    ...
+    ModelError: coordinates must be symbolic variables, got x^2
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[1]: the constraint l - 1 == 0 does not depend on the coordinates x, y
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dx
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
+    [x - y]
+    sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
+    Traceback (most recent call last):
+    ...
+    ModelError: constraints[0]: expected an expression f meaning f = 0 or an equation, got the relation x < y
+
+The parameters declared positive of a model are checked where values are
+given::
+
+    sage: from sage_dynsym import load
+    sage: from sage_dynsym.description import example_path
+    sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
+    sage: L.positive_parameters()
+    [m, l, g]
+    sage: values = {'m': 1, 'l': 1, 'g': 9.81}
+    sage: L.simulate(dict(values, m=-1), {'theta': 1, 'psi': 0, 'dtheta': 0, 'dpsi': 0}, 1)
+    Traceback (most recent call last):
+    ...
+    ModelError: values: m is declared positive, got -1
+    sage: L.subs(g=-9.81)
+    Traceback (most recent call last):
+    ...
+    ModelError: subs: g is declared positive, got -981/100
+    sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
+    ([m, l], [m, l, g])
+
+Lagrangians are values, pickled by content (a structured form of the
+equations, where one was attached, is recomputed after unpickling)::
+
+    sage: x, dx, m, k = var('x dx m k')
+    sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=var('c')*dx^2/2)
+    sage: loads(dumps(L)) == L
+    True
+    sage: TestSuite(L).run()
+    sage: C = Lagrangian(m*dx^2/2, [x], constraints=[x - k]); loads(dumps(C)) == C
+    True
+    sage: C == Lagrangian(m*dx^2/2, [x]), C
+    (False, Lagrangian in coordinates (x) : 1/2*dx^2*m, subject to -k + x == 0)
+    sage: latex(C)
+    L = \frac{1}{2} \, {\dot{x}}^{2} m , \quad -k + x = 0
+    sage: len({Lagrangian(dx^2/2, [x]), Lagrangian(dx^2/2, [x])})
+    1
+
+The conserved energy of a mechanical system, from its decomposition::
+
+    sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
+    sage: L.conserved_energy()
+    1/2*dpsi^2*l^2*m*sin(theta)^2 + 1/2*dtheta^2*l^2*m + g*l*m*cos(theta)
 """
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
@@ -129,11 +211,12 @@ from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, momentum, t, exact_decimals
 from ..numerics.methods import NumericalMethods
 from ..numerics.values import check_model_values
-from .holonomic import HolonomicConstraints
+from ..numerics.expressions import symbols_and_functions
+from .holonomic import HolonomicConstraints, independent_coordinates
 from .lagrange_equations import LagrangeEquations
-from .legendre import LegendreTransform
-from .natural_form import symbol_list, is_at_most_quadratic, natural_form
-from .routh import CyclicCoordinates, check_cyclic, routh_reduction
+from .legendre import generalized_momenta, energy, legendre
+from .natural_form import symbol_list, is_at_most_quadratic, natural_form, natural_decomposition
+from .routh import check_cyclic, routh_reduction, cyclic_coordinates
 # names earlier versions of this module held, importable from it as before
 from .compact import equations_cse
 from .natural_equations import natural_equations, SymbolicCalculus
@@ -144,8 +227,7 @@ __all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations',
            'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
 
 
-class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, CyclicCoordinates,
-                 NumericalMethods, SageObject):
+class Lagrangian(NumericalMethods, SageObject):
     r"""
     A Lagrangian `L(q, \dot q, t)` with its dissipation function and
     generalized forces.
@@ -184,41 +266,14 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         Lagrangian of oscillator in coordinates (x, y) : 1/2*dx^2 + 1/2*dy^2 - 1/2*x^2 - 1/2*y^2
         sage: L.coordinates(), L.velocities(), L.accelerations()
         ([x, y], [dx, dy], [ddx, ddy])
+        sage: L.expr(), L.name(), L.equation_builder()
+        (1/2*dx^2 + 1/2*dy^2 - 1/2*x^2 - 1/2*y^2, 'oscillator', None)
         sage: latex(L)
         L = \frac{1}{2} \, ...
-
-    TESTS::
-
-        sage: Lagrangian(dx^2, [x, x])
-        Traceback (most recent call last):
-        ...
-        ModelError: coordinates must be distinct, got [x, x]
-        sage: Lagrangian(dx^2, [x], forces=[1, 2])
-        Traceback (most recent call last):
-        ...
-        ModelError: forces: expected 1 generalized force(s), one per coordinate, got 2
-        sage: Lagrangian(dx^2, [x^2])
-        Traceback (most recent call last):
-        ...
-        ModelError: coordinates must be symbolic variables, got x^2
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, 2*y - 2*x])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints: the 2 constraints are not independent: their Jacobian with respect to the coordinates has rank less than 2 at a generic point; remove the redundant ones
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x - y, var('l') - 1])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[1]: the constraint l - 1 == 0 does not depend on the coordinates x, y
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[dx - y])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: a holonomic constraint f(q, t) cannot depend on the velocity dx
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x == y]).constraints()
-        [x - y]
-        sage: Lagrangian(dx^2 + dy^2, [x, y], constraints=[x < y])
-        Traceback (most recent call last):
-        ...
-        ModelError: constraints[0]: expected an expression f meaning f = 0 or an equation, got the relation x < y
+        sage: t, c = var('t c')
+        sage: D = Lagrangian(dx^2/2, [x], dissipation=c*dx^2/2, forces=[sin(t)])
+        sage: D.dissipation(), D.generalized_forces()
+        (1/2*c*dx^2, [sin(t)])
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,
@@ -252,7 +307,10 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
                              f"coordinate, got {len(forces)}", entry="forces")
         self._forces = [SR(f) for f in forces]
         self._name = name
-        self._set_constraints(constraints)
+        # the multipliers avoid the symbols of the model
+        self._constraint_set = HolonomicConstraints(
+            self._coordinates, self._velocities, constraints,
+            taken=lambda: [self._expr, self._dissipation] + self._forces)
 
     @property
     def _expr(self):
@@ -268,12 +326,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The Lagrangian as a symbolic expression.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^4, [x]).expr()
-            -x^4 + 1/2*dx^2
+        EXAMPLES: see the class documentation.
         """
         return self._expr
 
@@ -281,11 +334,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The generalized coordinates `q` (a new list).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).coordinates()
-            [x]
+        EXAMPLES: see the class documentation.
         """
         return list(self._coordinates)
 
@@ -293,11 +342,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The velocity symbols `\dot q`, in the order of the coordinates.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).velocities()
-            [dx]
+        EXAMPLES: see the class documentation.
         """
         return list(self._velocities)
 
@@ -305,11 +350,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The acceleration symbols `\ddot q`, in the order of the coordinates.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')]).accelerations()
-            [ddx]
+        EXAMPLES: see the class documentation.
         """
         return list(self._accelerations)
 
@@ -317,12 +358,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The Rayleigh dissipation function `R(q, \dot q)`.
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, c = var('x dx c')
-            sage: Lagrangian(dx^2, [x], dissipation=c*dx^2/2).dissipation()
-            1/2*c*dx^2
+        EXAMPLES: see the class documentation.
         """
         return self._dissipation
 
@@ -330,12 +366,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The non-potential generalized forces `Q_i` (a new list).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, t = var('x dx t')
-            sage: Lagrangian(dx^2, [x], forces=[sin(t)]).generalized_forces()
-            [sin(t)]
+        EXAMPLES: see the class documentation.
         """
         return list(self._forces)
 
@@ -343,11 +374,7 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         r"""
         The name given at construction (or ``None``).
 
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: Lagrangian(var('dx')^2, [var('x')], name="free").name()
-            'free'
+        EXAMPLES: see the class documentation.
         """
         return self._name
 
@@ -361,58 +388,13 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
 
         EXAMPLES::
 
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: L = load(example_path('spherical_pendulum.yaml')).lagrangian()
-            sage: L.positive_parameters()
-            [m, l, g]
-            sage: values = {'m': 1, 'l': 1, 'g': 9.81}
-            sage: L.simulate(dict(values, m=-1), {'theta': 1, 'psi': 0, 'dtheta': 0, 'dpsi': 0}, 1)
-            Traceback (most recent call last):
-            ...
-            ModelError: values: m is declared positive, got -1
-            sage: L.subs(g=-9.81)
-            Traceback (most recent call last):
-            ...
-            ModelError: subs: g is declared positive, got -981/100
-            sage: L.subs(g=9.81).positive_parameters(), L.routh([var('psi')]).positive_parameters()
-            ([m, l], [m, l, g])
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], positive=[m, k])
+            sage: L.positive_parameters(), L.subs(k=2).positive_parameters()
+            ([m, k], [m])
         """
         return list(self._positive)
-
-    def conserved_energy(self):
-        r"""
-        The generalized energy when it is an integral of the motion, else
-        ``None`` (explicit time, dissipation or generalized forces): what
-        ``simulate(...).energy_drift()`` measures.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, c = var('x dx c')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]).conserved_energy()
-            1/2*dx^2 + 1/2*x^2
-            sage: Lagrangian(dx^2/2 - x^2/2, [x], dissipation=c*dx^2/2).conserved_energy() is None
-            True
-        """
-        return self._conserved_energy()
-
-    def numerical_form(self):
-        r"""
-        The :class:`~sage_dynsym.numerics.form.NumericalForm` of the
-        equations (built once): what :meth:`numerical_rhs`, :meth:`simulate`
-        and :meth:`code` compile.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, k = var('x dx k')
-            sage: L = Lagrangian(dx^2/2 - k*x^2/2, [x]); L.numerical_form()
-            Numerical form M x'' = F in (x), parameters (k)
-            sage: L.numerical_form() is L.numerical_form()
-            True
-        """
-        return self._numerical_form()
 
     # ------------------------------------------------------------------
     # value semantics
@@ -420,22 +402,10 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     def _content(self):
         return (type(self).__name__, self._expr, tuple(self._coordinates),
                 tuple(self._velocities), self._dissipation, tuple(self._forces),
-                tuple(self._constraints))
+                tuple(self.constraints()))
 
     def __eq__(self, other):
-        r"""
-        Lagrangians are values: equal when their expressions, coordinates,
-        velocities, dissipation and forces are (structurally) the same.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]) == Lagrangian(dx^2/2 - x^2/2, [x])
-            True
-            sage: Lagrangian(dx^2/2 - x^2/2, [x]) == Lagrangian(dx^2/2 - x^2, [x])
-            False
-        """
+        # values: equal when their contents are structurally the same
         if type(self) is not type(other):
             return False
         return all(_same(a, b) for a, b in zip(self._content(), other._content()))
@@ -444,43 +414,16 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         return not self == other
 
     def __hash__(self):
-        r"""
-        A hash consistent with ``==`` (structural hashes of the expressions).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx = var('x dx')
-            sage: len({Lagrangian(dx^2/2, [x]), Lagrangian(dx^2/2, [x])})
-            1
-        """
+        # consistent with ==: structural hashes of the expressions
         return hash(tuple(_hashable(a) for a in self._content()))
 
     def __reduce__(self):
-        r"""
-        Pickling: by content (a structured form of the equations, where one
-        was attached, is recomputed after unpickling).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: x, dx, m, k = var('x dx m k')
-            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=var('c')*dx^2/2)
-            sage: loads(dumps(L)) == L
-            True
-            sage: TestSuite(L).run()
-            sage: C = Lagrangian(m*dx^2/2, [x], constraints=[x - k]); loads(dumps(C)) == C
-            True
-            sage: C == Lagrangian(m*dx^2/2, [x]), C
-            (False, Lagrangian in coordinates (x) : 1/2*dx^2*m, subject to -k + x == 0)
-            sage: latex(C)
-            L = \frac{1}{2} \, {\dot{x}}^{2} m , \quad -k + x = 0
-        """
+        # by content (see the module documentation)
         return (_rebuild_lagrangian,
                 (self._expr, self._coordinates, self._velocities,
                  {'dissipation': self._dissipation, 'forces': self._forces,
                   'name': self._name, 'decomposition': self._structure,
-                  'constraints': self._constraints, 'positive': self._positive}))
+                  'constraints': self.constraints(), 'positive': self._positive}))
 
     def _repr_(self):
         coords = ", ".join(str(q) for q in self._coordinates)
@@ -489,14 +432,12 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
 
     def _latex_(self):
         return "L = " + latex(self._expr) + "".join(
-            r", \quad " + latex(f) + " = 0" for f in self._constraints)
+            r", \quad " + latex(f) + " = 0" for f in self.constraints())
 
     def _derived(self, expr, **changes):
-        r"""
-        A Lagrangian of the same kind with a new expression (and options).
-        """
+        # a Lagrangian of the same kind with a new expression (and options)
         options = dict(velocities=self._velocities, dissipation=self._dissipation,
-                       forces=self._forces, name=self._name, constraints=self._constraints,
+                       forces=self._forces, name=self._name, constraints=self.constraints(),
                        positive=self._positive)
         options.update(changes)
         coordinates = options.pop('coordinates', self._coordinates)
@@ -505,53 +446,18 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     def subs(self, *args, **kwds):
         r"""
         Substitute values for parameters (in `L`, `R`, `Q` and the
-        constraints). A number given for a parameter declared positive
-        (:meth:`positive_parameters`) must be positive; the substituted
-        parameters leave that list.
-
-        Coordinates and velocities must not be substituted: that would change
-        the dynamics in a way this method cannot track. A float is the exact
-        decimal it prints as (``0.3`` is `3/10`: see
-        :func:`~sage_dynsym.symbols.exact_decimals`).
+        constraints), see :func:`substituted`.
 
         EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
             sage: x, dx, m, k = var('x dx m k')
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs(m=2, k=8)
+            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs(m=2, k=8); L
             Lagrangian in coordinates (x) : dx^2 - 4*x^2
-            sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
-            sage: L.first_order_system()
-            ([x, dx], [dx, -4*x])
-
-        TESTS::
-
-            sage: Lagrangian(m*dx^2/2, [x]).subs(x=1)
-            Traceback (most recent call last):
-            ...
-            ModelError: cannot substitute for the coordinate or velocity x
-            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({'k': 2}, m == 1)
-            Lagrangian in coordinates (x) : 1/2*dx^2 - x^2
-            sage: Lagrangian(m*dx^2/2, [x]).subs(2)
-            Traceback (most recent call last):
-            ...
-            ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
+            sage: L.accelerations_solved(), L.first_order_system()
+            ([-4*x], ([x, dx], [dx, -4*x]))
         """
-        args = [substitution(a) for a in args]
-        kwds = {k: exact_decimals(v) for k, v in kwds.items()}
-        probe = SR.var('_probe_')
-        protected = set(self._coordinates) | set(self._velocities) | {t}
-        for v in protected:
-            if (v + probe).subs(*args, **kwds) != v + probe:
-                raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
-        given = {p: p.subs(*args, **kwds) for p in self._positive}
-        given = {p: v for p, v in given.items() if not v.is_trivially_equal(p)}
-        check_model_values(self, given, entry="subs")
-        return self._derived(self._expr.subs(*args, **kwds),
-                             dissipation=self._dissipation.subs(*args, **kwds),
-                             forces=[f.subs(*args, **kwds) for f in self._forces],
-                             constraints=[f.subs(*args, **kwds) for f in self._constraints],
-                             positive=[p for p in self._positive if p not in given])
+        return self._derived(**substituted(self, *args, **kwds))
 
     # ------------------------------------------------------------------
     # structure
@@ -578,46 +484,20 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
     def decomposition(self):
         r"""
         The decomposition (4) `L = \tfrac12 \sum A_{ij} \dot q_i \dot q_j +
-        \sum A_i \dot q_i + A_0`.
-
-        OUTPUT: a triple ``(A, A1, A0)``: the symmetric matrix `A_{ij}`, the
-        vector `A_i` and the expression `A_0`, functions of `q` and `t`.
+        \sum A_i \dot q_i + A_0`: a triple ``(A, A1, A0)`` of functions of
+        `q` and `t` (see
+        :func:`~sage_dynsym.dynamics.natural_form.natural_decomposition`).
 
         EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
-            sage: x, y, dx, dy, w = var('x y dx dy w')
-            sage: L = Lagrangian(((dx - w*y)^2 + (dy + w*x)^2)/2, [x, y])
-            sage: A, A1, A0 = L.decomposition()
-            sage: A, A1, A0
-            (
-            [1 0]
-            [0 1], (-w*y, w*x), 1/2*w^2*x^2 + 1/2*w^2*y^2
-            )
-
-        TESTS::
-
-            sage: Lagrangian(dx^4, [x]).decomposition()
-            Traceback (most recent call last):
-            ...
-            ModelError: the Lagrangian is not quadratic in the velocities (dx)
+            sage: x, dx, w = var('x dx w')
+            sage: Lagrangian((dx - w*x)^2/2, [x]).decomposition()
+            ([1], (-w*x), 1/2*w^2*x^2)
         """
         if self._structure is not None:
             return self._structure
-        if not self.is_natural():
-            names = ", ".join(map(str, self._velocities))
-            raise ModelError(f"the Lagrangian is not quadratic in the velocities ({names})")
-        zero = {v: 0 for v in self._velocities}
-        gradient = [self._expr.diff(v) for v in self._velocities]
-        n = len(self._coordinates)
-        A = matrix(SR, n, n)
-        for i in range(n):
-            for j in range(i, n):
-                A[i, j] = A[j, i] = gradient[i].diff(self._velocities[j])
-        A1 = matrix(SR, [g.subs(zero) for g in gradient]).row(0) if n else matrix(SR, 0, 0)
-        A0 = self._expr.subs(zero)
-        A.set_immutable()
-        return A, A1, A0
+        return natural_decomposition(self._expr, self._velocities)
 
     def mass_matrix(self):
         r"""
@@ -637,22 +517,312 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
         return matrix(SR, n, n, lambda i, j:
                       self._expr.diff(self._velocities[i], self._velocities[j]))
 
-    # ------------------------------------------------------------------
-    # the Routh function (the reduction itself: dynamics.routh)
-
-    def routh(self, cyclic):
+    def is_singular(self):
         r"""
-        The Routh function for the given cyclic coordinates.
-
-        See :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`.
+        Whether `\det(\partial^2 L/\partial \dot q^2) = 0` identically: then
+        :meth:`hamiltonian` applies Dirac's scheme.
 
         EXAMPLES::
 
             sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian(x*dy - y*dx - x^2 - y^2, [x, y]).is_singular()
+            True
+        """
+        return is_singular(self.mass_matrix())
+
+    def equation_builder(self):
+        r"""
+        The function given as ``equation_builder``, or ``None``.
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._equation_builder
+
+    # ------------------------------------------------------------------
+    # constraints (the constraint set: dynamics.holonomic)
+
+    def constraint_set(self):
+        r"""
+        The constraint set: the constraints with their multipliers
+        (:class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`).
+
+        EXAMPLES: see :class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations`.
+        """
+        return self._constraint_set
+
+    def constraints(self):
+        r"""
+        The holonomic constraints `f_j(q, t)`, each meaning `f_j = 0` (a new
+        list, empty if none).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, l = var('x y dx dy l')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x^2 + y^2 - l^2]).constraints()
+            [-l^2 + x^2 + y^2]
+        """
+        return self._constraint_set.expressions()
+
+    def multipliers(self):
+        r"""
+        The multipliers of the constraints: symbols ``mu1, mu2, ...`` that
+        occur nowhere else in the model (see
+        :func:`~sage_dynsym.symbols.constraint_multipliers`). The equations
+        contain `-\sum_j \mu_j \partial f_j/\partial q_i`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, mu1 = var('x y dx dy mu1')
+            sage: Lagrangian((dx^2 + dy^2)/2 + mu1*x, [x, y], constraints=[x - y]).multipliers()
+            [mu2]
+        """
+        return self._constraint_set.multipliers()
+
+    def nonholonomic_constraints(self):
+        r"""
+        The constraints on the velocities (see
+        :class:`~sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian`).
+
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.nonholonomic`.
+        """
+        return self._constraint_set.velocity_constraints()
+
+    def velocity_multipliers(self):
+        r"""
+        The multipliers of the constraints on the velocities.
+
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.nonholonomic`.
+        """
+        return self._constraint_set.velocity_multipliers()
+
+    def _subject_to(self):
+        if not self.constraints():
+            return ""
+        return ", subject to " + ", ".join(f"{f} == 0" for f in self.constraints())
+
+    def reduce(self, independent, parametrization):
+        r"""
+        The Lagrangian in the coordinates ``independent``, the others given
+        by ``parametrization`` (see
+        :func:`~sage_dynsym.dynamics.holonomic.independent_coordinates`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy, m, g, l, th = var('x y dx dy m g l theta')
+            sage: L = Lagrangian(m*(dx^2 + dy^2)/2 - m*g*y, [x, y], constraints=[x^2 + y^2 - l^2])
+            sage: L.reduce([th], {x: l*sin(th), y: -l*cos(th)}).equations()[0].simplify_full()
+            ddtheta*l^2*m + g*l*m*sin(theta)
+        """
+        expr, coordinates, velocities, dissipation, forces = \
+            independent_coordinates(self, independent, parametrization)
+        # a plain Lagrangian, whatever the kind of this one
+        return self._derived(expr, coordinates=coordinates, velocities=velocities,
+                             dissipation=dissipation, forces=forces, constraints=())
+
+    # ------------------------------------------------------------------
+    # equations (the method object: dynamics.lagrange_equations)
+
+    @cached_method
+    def _equations_method(self):
+        return LagrangeEquations(self, self._constraint_set)
+
+    def lagrange_equations(self, form=None):
+        r"""
+        The Lagrange equations (5), with dissipation, generalized forces and
+        constraint forces: a list of expressions `E_i` meaning `E_i = 0`
+        (see :meth:`LagrangeEquations.equations
+        <sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.equations>`
+        for ``form``).
+
+        EXAMPLES:
+
+        The structured form keeps the mass matrix entries as factors of the
+        accelerations; a relativistic particle (not natural) is
+        differentiated directly::
+
+            sage: from sage_dynsym import Lagrangian
             sage: r, phi, dr, dphi, m, k = var('r phi dr dphi m k')
-            sage: L = Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi])
-            sage: R = L.routh([phi]); R.expr()
-            1/2*dr^2*m - 1/2*k*r^2 - 1/2*p_phi^2/(m*r^2)
+            sage: Lagrangian(m*(dr^2 + r^2*dphi^2)/2 - k*r^2/2, [r, phi]).lagrange_equations()
+            [-dphi^2*m*r + ddr*m + k*r, 2*dphi*dr*m*r + ddphi*m*r^2]
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(-sqrt(1 - dx^2), [x]).lagrange_equations()
+            [ddx*(dx^2/(-dx^2 + 1)^(3/2) + 1/sqrt(-dx^2 + 1))]
+        """
+        return self._equations_method().equations(form)
+
+    def equations(self):
+        r"""
+        The equations of motion: :meth:`lagrange_equations` (the name every
+        model and characteristic function of the package shares).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx = var('x dx')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).equations()
+            [ddx + x]
+        """
+        return self.lagrange_equations()
+
+    def equations_cse(self):
+        r"""
+        The Lagrange equations written with their common subexpressions (see
+        :func:`~sage_dynsym.dynamics.compact.equations_cse`).
+
+        EXAMPLES: see :func:`~sage_dynsym.dynamics.compact.equations_cse`.
+        """
+        return equations_cse(self.lagrange_equations())
+
+    def equations_record(self):
+        r"""
+        The equations as neutral data for the analysis (see
+        :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.record`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: Lagrangian((dx^2 + dy^2)/2, [x, y], constraints=[x - y]).equations_record()
+            Second-order equations in (x, y): [ddx - mu1, ddy + mu1] == 0 with constraints [x - y] == 0
+        """
+        return self._equations_method().record()
+
+    def accelerations_and_multipliers(self):
+        r"""
+        The accelerations and the multipliers solved together with the
+        constraints differentiated (Lagrange's equations of the first kind):
+        a dict ``{ddq_i: ..., mu_j: ...}`` (see
+        :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_and_multipliers`).
+
+        EXAMPLES: see the module documentation.
+        """
+        return dict(self._equations_method().accelerations_and_multipliers())
+
+    def accelerations_solved(self):
+        r"""
+        The equations solved for the accelerations `\ddot q_i = f_i(q, \dot
+        q, t)` (see
+        :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_solved`).
+
+        EXAMPLES: see :meth:`subs`.
+        """
+        return self._equations_method().accelerations_solved()
+
+    def first_order_system(self):
+        r"""
+        The equations as a first-order system `\dot x = F(x, t)`, `x = (q,
+        \dot q)`: a pair ``(state, rhs)`` of lists.
+
+        EXAMPLES: see :meth:`subs`.
+        """
+        return self._equations_method().first_order_system()
+
+    # ------------------------------------------------------------------
+    # momenta, energy, Hamiltonian (dynamics.legendre)
+
+    def generalized_momenta(self):
+        r"""
+        The momenta `p_i = \partial L / \partial \dot q_i` (see
+        :func:`~sage_dynsym.dynamics.legendre.generalized_momenta`).
+
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.legendre`.
+        """
+        return generalized_momenta(self)
+
+    def energy(self):
+        r"""
+        The generalized energy `h = \sum \dot q_i \partial L/\partial \dot
+        q_i - L` (see :func:`~sage_dynsym.dynamics.legendre.energy`).
+
+        EXAMPLES: see :mod:`~sage_dynsym.dynamics.legendre`.
+        """
+        return energy(self)
+
+    def conserved_energy(self):
+        r"""
+        The generalized energy (:meth:`energy`) when it is an integral of
+        the motion -- no explicit time in `L` or the constraints, no
+        dissipation or generalized forces, velocity constraints homogeneous
+        and stationary --, else ``None``; what ``simulate(...).energy_drift()``
+        measures. From a decomposition given, `T_2 - T_0 - U` unexpanded.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, c = var('x dx c')
+            sage: Lagrangian(dx^2/2 - x^2/2, [x]).conserved_energy()
+            1/2*dx^2 + 1/2*x^2
+            sage: Lagrangian(dx^2/2, [x], dissipation=c*dx^2/2).conserved_energy() is None
+            True
+        """
+        velocities = self._velocities
+        # velocity constraints do no work when homogeneous and stationary
+        if any(g.has(t) or not SR(g).subs({v: 0 for v in velocities}).is_zero()
+               for g in self.nonholonomic_constraints()):
+            return None
+        if self._structure is not None:
+            # h = T_2 - T_0 - U from the decomposition: nothing expanded (a
+            # memoized walk looks for t: large models share subexpressions)
+            A, A1, A0 = self._structure
+            if str(t) in symbols_and_functions(list(A.list()) + list(A1) + [A0])[0]:
+                return None
+            h = natural_form(A, [0] * len(velocities), -A0, velocities)
+        elif self._expr.has(t):
+            return None
+        else:
+            h = None
+        if (not self._dissipation.is_zero() or any(not f.is_zero() for f in self._forces)
+                or any(SR(f).has(t) for f in self.constraints())):
+            return None
+        return self.energy() if h is None else h
+
+    def _conserved_energy(self):
+        # the hook of NumericalMethods
+        return self.conserved_energy()
+
+    def hamiltonian(self):
+        r"""
+        The Hamiltonian by the Legendre transform; for a singular Lagrangian
+        the result carries Dirac's constraint analysis (see
+        :func:`~sage_dynsym.dynamics.legendre.legendre`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, m, k = var('x dx m k')
+            sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).hamiltonian().expr()
+            1/2*k*x^2 + 1/2*p_x^2/m
+        """
+        return legendre(self)
+
+    # ------------------------------------------------------------------
+    # cyclic coordinates and the Routh function (dynamics.routh)
+
+    def cyclic_coordinates(self):
+        r"""
+        The coordinates whose momentum is conserved, those :meth:`routh`
+        accepts (see :func:`~sage_dynsym.dynamics.routh.why_not_cyclic`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: r, phi, dr, dphi = var('r phi dr dphi')
+            sage: Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).cyclic_coordinates()
+            [phi]
+        """
+        return cyclic_coordinates(self)
+
+    def routh(self, cyclic):
+        r"""
+        The Routh function for the given cyclic coordinates (see
+        :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` and the
+        module documentation).
+
+        EXAMPLES: see :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction`.
         """
         return RouthFunction(self, cyclic)
 
@@ -725,10 +895,10 @@ class RouthFunction(Lagrangian):
         self._lagrangian = lagrangian
         coordinates, velocities, decomposition, self._solved_velocities, dissipation, forces = \
             routh_reduction(lagrangian, self._cyclic, self._momenta)
-        Lagrangian.__init__(self, None, coordinates, velocities, dissipation=dissipation,
-                            forces=forces, name=lagrangian.name(), decomposition=decomposition,
-                            constraints=lagrangian.constraints(),
-                            positive=lagrangian.positive_parameters())
+        super().__init__(None, coordinates, velocities, dissipation=dissipation,
+                         forces=forces, name=lagrangian.name(), decomposition=decomposition,
+                         constraints=lagrangian.constraints(),
+                         positive=lagrangian.positive_parameters())
 
     def _repr_(self):
         coords = ", ".join(map(str, self.coordinates()))
@@ -841,6 +1011,64 @@ class RouthFunction(Lagrangian):
         """
         return self.lagrange_equations()
 
+
+
+def substituted(lagrangian, *args, **kwds):
+    r"""
+    The parts of ``lagrangian`` with values substituted for parameters, what
+    :meth:`Lagrangian.subs` makes a Lagrangian of: a dict with the keys
+    ``expr``, ``dissipation``, ``forces``, ``constraints`` and
+    ``positive`` (the parameters declared positive that were not
+    substituted).
+
+    A number given for a parameter declared positive
+    (:meth:`Lagrangian.positive_parameters`) must be positive. Coordinates
+    and velocities must not be substituted: that would change the dynamics
+    in a way this function cannot track. A float is the exact decimal it
+    prints as (``0.3`` is `3/10`: see
+    :func:`~sage_dynsym.symbols.exact_decimals`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.lagrangian import substituted
+        sage: x, dx, m, k = var('x dx m k')
+        sage: substituted(Lagrangian(m*dx^2/2 - k*x^2/2, [x], positive=[m]), m=2)
+        {'constraints': [], 'dissipation': 0, 'expr': -1/2*k*x^2 + dx^2, 'forces': [0],
+         'positive': []}
+        sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({m: float(2), k: 8})
+        sage: L.first_order_system()
+        ([x, dx], [dx, -4*x])
+
+    TESTS::
+
+        sage: Lagrangian(m*dx^2/2, [x]).subs(x=1)
+        Traceback (most recent call last):
+        ...
+        ModelError: cannot substitute for the coordinate or velocity x
+        sage: Lagrangian(m*dx^2/2 - k*x^2/2, [x]).subs({'k': 2}, m == 1)
+        Lagrangian in coordinates (x) : 1/2*dx^2 - x^2
+        sage: Lagrangian(m*dx^2/2, [x]).subs(2)
+        Traceback (most recent call last):
+        ...
+        ModelError: subs: expected a dict {parameter: value} or equations parameter == value, got 2
+    """
+    args = [substitution(a) for a in args]
+    kwds = {k: exact_decimals(v) for k, v in kwds.items()}
+    probe = SR.var('_probe_')
+    protected = set(lagrangian.coordinates()) | set(lagrangian.velocities()) | {t}
+    for v in protected:
+        if (v + probe).subs(*args, **kwds) != v + probe:
+            raise ModelError(f"cannot substitute for the coordinate or velocity {v}")
+    positive = lagrangian.positive_parameters()
+    given = {p: p.subs(*args, **kwds) for p in positive}
+    given = {p: v for p, v in given.items() if not v.is_trivially_equal(p)}
+    check_model_values(lagrangian, given, entry="subs")
+    return dict(expr=lagrangian.expr().subs(*args, **kwds),
+                dissipation=lagrangian.dissipation().subs(*args, **kwds),
+                forces=[f.subs(*args, **kwds) for f in lagrangian.generalized_forces()],
+                constraints=[f.subs(*args, **kwds) for f in lagrangian.constraints()],
+                positive=[p for p in positive if p not in given])
 
 
 def substitution(arg):

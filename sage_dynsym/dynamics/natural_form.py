@@ -108,6 +108,49 @@ def natural_form(A, A1, A0, velocities):
     return quadratic + sum((A1[i] * v[i] for i in range(n)), SR(0)) + SR(A0)
 
 
+def natural_decomposition(expr, velocities):
+    r"""
+    The decomposition (4) of ``expr``, a polynomial of degree at most two
+    in ``velocities`` (checked with :func:`is_at_most_quadratic`):
+    `\tfrac12 \sum A_{ij} \dot q_i \dot q_j + \sum A_i \dot q_i + A_0`.
+
+    OUTPUT: a triple ``(A, A1, A0)``: the symmetric matrix `A_{ij}`
+    (immutable), the vector `A_i` and the expression `A_0`
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.natural_form import natural_decomposition
+        sage: x, y, dx, dy, w = var('x y dx dy w')
+        sage: A, A1, A0 = natural_decomposition(((dx - w*y)^2 + (dy + w*x)^2)/2, [dx, dy])
+        sage: A, A1, A0
+        (
+        [1 0]
+        [0 1], (-w*y, w*x), 1/2*w^2*x^2 + 1/2*w^2*y^2
+        )
+
+    TESTS::
+
+        sage: natural_decomposition(dx^4, [dx])
+        Traceback (most recent call last):
+        ...
+        ModelError: the Lagrangian is not quadratic in the velocities (dx)
+    """
+    if not is_at_most_quadratic(expr, velocities):
+        names = ", ".join(map(str, velocities))
+        raise ModelError(f"the Lagrangian is not quadratic in the velocities ({names})")
+    zero = {v: 0 for v in velocities}
+    gradient = [expr.diff(v) for v in velocities]
+    n = len(velocities)
+    A = matrix(SR, n, n)
+    for i in range(n):
+        for j in range(i, n):
+            A[i, j] = A[j, i] = gradient[i].diff(velocities[j])
+    A1 = matrix(SR, [g.subs(zero) for g in gradient]).row(0) if n else matrix(SR, 0, 0)
+    A0 = expr.subs(zero)
+    A.set_immutable()
+    return A, A1, A0
+
+
 def linear_collected(expr, symbols):
     r"""
     ``expr``, linear in ``symbols``, as `\sum_s c_s s + c_0` with every

@@ -21,7 +21,7 @@ force of the velocity constraints (for a rolling wheel, the friction force
 at the contact). Together with the holonomic constraints differentiated
 twice and the velocity constraints differentiated once they determine the
 accelerations and the multipliers
-(:meth:`~NonholonomicLagrangian.accelerations_and_multipliers`).
+(:meth:`~sage_dynsym.dynamics.lagrangian.Lagrangian.accelerations_and_multipliers`, solved by :class:`NonholonomicEquations` with the constraint set :class:`VelocityConstraints`).
 :meth:`~NonholonomicLagrangian.reduced_equations` eliminates the
 multipliers: Kane's equations in independent speeds
 (:mod:`~sage_dynsym.dynamics.reduced`).
@@ -63,15 +63,20 @@ REFERENCES:
 import operator
 
 from sage.matrix.constructor import matrix
+from sage.misc.cachefunc import cached_method
+from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError, ModelError
 from ..symbols import acceleration, constraint_multipliers, momentum, t, exact_decimals
-from ..symbols import time_derivative
-from ..analysis.motion import SecondOrderEquations
 from ..algebra.trig_linear import TrigFractionField
+from ..numerics.form import velocity_constraint_terms
 from .lagrangian import Lagrangian, substitution
+from .lagrange_equations import LagrangeEquations
 from .natural_form import has_full_row_rank
+
+__all__ = ['check_velocity_constraints', 'VelocityConstraints', 'NonholonomicEquations',
+           'NonholonomicLagrangian']
 
 
 def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(),
@@ -168,6 +173,186 @@ def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(
     return out
 
 
+class VelocityConstraints(SageObject):
+    r"""
+    A constraint set with constraints on the velocities: the holonomic
+    constraints of a :class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`
+    and the velocity constraints `g_k = A_k(q, t)\dot q + b_k(q, t) = 0`
+    with their multipliers `\lambda_k`, which follow those of the holonomic
+    ones. It has the interface of
+    :class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`, the
+    generalized constraint forces being `J^T\mu + A^T\lambda`.
+
+    INPUT:
+
+    - ``coordinates``, ``velocities`` -- the coordinates `q` and their
+      velocity symbols
+    - ``holonomic`` -- the
+      :class:`~sage_dynsym.dynamics.holonomic.HolonomicConstraints`
+    - ``nonholonomic`` -- the velocity constraints, checked by
+      :func:`check_velocity_constraints`
+    - ``taken`` -- (optional) a function without arguments returning the
+      other expressions of the model: the multipliers avoid their symbols
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+        sage: from sage_dynsym.dynamics.nonholonomic import VelocityConstraints
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: H = HolonomicConstraints([x, y], [dx, dy])
+        sage: C = VelocityConstraints([x, y], [dx, dy], H, [y*dx - dy]); C
+        Velocity constraints dx*y - dy == 0 with multipliers mu1
+        sage: C.generalized_forces(), C.multipliers(), C.velocity_multipliers()
+        ([mu1*y, -mu1], [mu1], [mu1])
+        sage: C.acceleration_constraints()
+        ([ y -1], [-dx*dy], [mu1])
+    """
+
+    def __init__(self, coordinates, velocities, holonomic, nonholonomic, taken=None):
+        self._coordinates, self._velocities = list(coordinates), list(velocities)
+        self._holonomic = holonomic
+        self._nonholonomic = check_velocity_constraints(nonholonomic, self._coordinates,
+                                                        self._velocities, holonomic.expressions())
+        self._lambdas = []
+        if self._nonholonomic:
+            used = set().union(*(SR(e).variables() for e in (taken() if taken else [])
+                                 + holonomic.expressions() + self._nonholonomic))
+            used |= {momentum(q) for q in self._coordinates} | set(holonomic.multipliers())
+            self._lambdas = constraint_multipliers(len(self._nonholonomic), used)
+
+    def _repr_(self):
+        return ("Velocity constraints " + ", ".join(f"{g} == 0" for g in self._nonholonomic)
+                + " with multipliers " + ", ".join(map(str, self._lambdas))
+                + ("; " + repr(self._holonomic) if self._holonomic.expressions() else ""))
+
+    def expressions(self):
+        r"""
+        The holonomic constraints `f_j(q, t)`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+            sage: from sage_dynsym.dynamics.nonholonomic import VelocityConstraints
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: H = HolonomicConstraints([x, y], [dx, dy], [x - y^2])
+            sage: VelocityConstraints([x, y], [dx, dy], H, [dx - x*dy]).expressions()
+            [-y^2 + x]
+        """
+        return self._holonomic.expressions()
+
+    def multipliers(self):
+        r"""
+        The multipliers of all the constraints: those of the holonomic ones,
+        then those of the velocity constraints.
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._holonomic.multipliers() + list(self._lambdas)
+
+    def velocity_constraints(self):
+        r"""
+        The velocity constraints `g_k`, each meaning `g_k = 0` (a new list).
+
+        EXAMPLES: see the class documentation.
+        """
+        return list(self._nonholonomic)
+
+    def velocity_multipliers(self):
+        r"""
+        The multipliers `\lambda_k` of the velocity constraints.
+
+        EXAMPLES: see the class documentation.
+        """
+        return list(self._lambdas)
+
+    def matrix(self):
+        r"""
+        The velocity constraints as `A(q, t)\dot q + b(q, t) = 0`: the pair
+        ``(A, b)``.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.dynamics.holonomic import HolonomicConstraints
+            sage: from sage_dynsym.dynamics.nonholonomic import VelocityConstraints
+            sage: x, y, dx, dy = var('x y dx dy')
+            sage: H = HolonomicConstraints([x, y], [dx, dy])
+            sage: VelocityConstraints([x, y], [dx, dy], H, [dx - x*dy + 1]).matrix()
+            ([ 1 -x], [1])
+        """
+        rows, _, b = velocity_constraint_terms(self._nonholonomic, self._coordinates,
+                                               self._velocities)
+        return matrix(SR, len(rows), len(self._velocities), rows), b
+
+    def generalized_forces(self):
+        r"""
+        The generalized constraint forces `J^T\mu + A^T\lambda`, one per
+        coordinate.
+
+        EXAMPLES: see the class documentation.
+        """
+        A, _ = self.matrix()
+        return [f + sum(la * A[k, i] for k, la in enumerate(self._lambdas))
+                for i, f in enumerate(self._holonomic.generalized_forces())]
+
+    def acceleration_constraints(self):
+        r"""
+        The constraints at the level of accelerations, `G\ddot q = h`: the
+        holonomic ones differentiated twice, then the velocity constraints
+        differentiated once (:func:`~sage_dynsym.numerics.form.velocity_constraint_terms`).
+
+        OUTPUT: a triple ``(G, h, multipliers)``
+
+        EXAMPLES: see the class documentation.
+        """
+        G, h, multipliers = self._holonomic.acceleration_constraints()
+        rows, gamma, _ = velocity_constraint_terms(self._nonholonomic, self._coordinates,
+                                                   self._velocities)
+        A = matrix(SR, len(rows), len(self._velocities), rows)
+        return G.stack(A), h + gamma, multipliers + self._lambdas
+
+
+class NonholonomicEquations(LagrangeEquations):
+    r"""
+    The Lagrange equations with velocity constraints: those of
+    :class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations`,
+    the accelerations and multipliers solved exactly modulo
+    `\cos^2 + \sin^2 = 1` where the equations are rational in the sines and
+    cosines (see :mod:`~sage_dynsym.algebra.trig_linear`), the accelerations
+    always through them.
+
+    INPUT: as :class:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations`
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian, NonholonomicEquations
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: L = NonholonomicLagrangian((dx^2 + dy^2)/2 - y, [x, y], nonholonomic=[dx - dy])
+        sage: E = NonholonomicEquations(L); E.equations()
+        [ddx - mu1, ddy + mu1 + 1]
+        sage: E.accelerations_solved()
+        [-1/2, -1/2]
+    """
+
+    def _solve(self, K, rhs):
+        try:
+            field = TrigFractionField(K.list() + rhs)
+            X = field.solve_right(field.matrix(K), [[field(v)] for v in rhs])
+            return [field.expression(x[0]) for x in X]
+        except AnalysisError:   # not rational in the sines and cosines
+            return super()._solve(K, rhs)
+
+    def accelerations_solved(self):
+        r"""
+        The accelerations of :meth:`~sage_dynsym.dynamics.lagrange_equations.LagrangeEquations.accelerations_and_multipliers`
+        (solved exactly where the equations are rational in the sines and
+        cosines), in the order of the coordinates.
+
+        EXAMPLES: see the class documentation.
+        """
+        solution = self.accelerations_and_multipliers()
+        return [solution[a] for a in self.lagrangian().accelerations()]
+
+
 class NonholonomicLagrangian(Lagrangian):
     r"""
     A Lagrangian with constraints on the velocities (see the module
@@ -213,54 +398,29 @@ class NonholonomicLagrangian(Lagrangian):
         Traceback (most recent call last):
         ...
         ModelError: nonholonomic: the Legendre transform of a Lagrangian with velocity constraints is not supported: use reduced_equations() (Kane's equations in independent speeds)
+        sage: L.reduce([x, y], {z: 0})
+        Traceback (most recent call last):
+        ...
+        ModelError: nonholonomic: reduce() does not carry velocity constraints; use reduced_equations() (Kane's equations in independent speeds)
         sage: loads(dumps(L)) == L, L == NonholonomicLagrangian((dx^2 + dy^2 + dz^2)/2, [x, y, z])
         (True, False)
+        sage: L.conserved_energy()
+        1/2*dx^2 + 1/2*dy^2 + 1/2*dz^2
+        sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - 1]).conserved_energy() is None
+        True
+        sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy]).equations_record()
+        Second-order equations in (x, y): [ddx - mu1, mu1*y + ddy] == 0 with velocity constraints [-dy*y + dx] == 0
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, nonholonomic=(), **options):
-        Lagrangian.__init__(self, expr, coordinates, velocities, **options)
-        self._nonholonomic = check_velocity_constraints(nonholonomic, self._coordinates,
-                                                        self._velocities, self._constraints)
-        taken = set().union(*(SR(e).variables() for e in [self._expr, self._dissipation]
-                              + self._forces + self._constraints + self._nonholonomic))
-        taken |= {momentum(q) for q in self._coordinates} | set(self._multipliers)
-        self._velocity_multipliers = constraint_multipliers(len(self._nonholonomic), taken)
+        super().__init__(expr, coordinates, velocities, **options)
+        self._constraint_set = VelocityConstraints(
+            self.coordinates(), self.velocities(), self.constraint_set(), nonholonomic,
+            taken=lambda: [self.expr(), self.dissipation()] + self.generalized_forces())
 
-    # ------------------------------------------------------------------
-    # accessors
-
-    def nonholonomic_constraints(self):
-        r"""
-        The velocity constraints `g_k`, each meaning `g_k = 0` (a new list).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - x*dy]).nonholonomic_constraints()
-            [-dy*x + dx]
-        """
-        return list(self._nonholonomic)
-
-    def multipliers(self):
-        r"""
-        The multipliers of all constraints: those of the holonomic ones
-        (`\mu_j`, see :meth:`Lagrangian.multipliers
-        <sage_dynsym.dynamics.lagrangian.Lagrangian.multipliers>`), then those
-        of the velocity constraints (:meth:`velocity_multipliers`).
-
-        EXAMPLES: see the class documentation.
-        """
-        return list(self._multipliers) + list(self._velocity_multipliers)
-
-    def velocity_multipliers(self):
-        r"""
-        The multipliers `\lambda_k` of the velocity constraints: the
-        equations contain `-\sum_k \lambda_k \partial g_k/\partial\dot q_i`.
-
-        EXAMPLES: see the class documentation.
-        """
-        return list(self._velocity_multipliers)
+    @cached_method
+    def _equations_method(self):
+        return NonholonomicEquations(self, self.constraint_set())
 
     def velocity_constraint_matrix(self):
         r"""
@@ -276,111 +436,7 @@ class NonholonomicLagrangian(Lagrangian):
             sage: L.velocity_constraint_matrix()
             ([ sin(theta) -cos(theta)           0], [0])
         """
-        A = matrix(SR, len(self._nonholonomic), len(self._velocities),
-                   [[g.diff(v) for v in self._velocities] for g in self._nonholonomic])
-        zero = {v: 0 for v in self._velocities}
-        return A, [g.subs(zero) for g in self._nonholonomic]
-
-    # ------------------------------------------------------------------
-    # equations
-
-    def _constraint_forces(self):
-        A, _ = self.velocity_constraint_matrix()
-        holonomic = Lagrangian._constraint_forces(self)
-        return [f + sum(la * A[k, i] for k, la in enumerate(self._velocity_multipliers))
-                for i, f in enumerate(holonomic)]
-
-    def _acceleration_constraints(self):
-        # the velocity constraints differentiated once: A ddq = -(d/dt g at ddq = 0)
-        G, h, multipliers = Lagrangian._acceleration_constraints(self)
-        q, dq, ddq = self._coordinates, self._velocities, self._accelerations
-        A, _ = self.velocity_constraint_matrix()
-        zero = {a: 0 for a in ddq}
-        h = h + [-time_derivative(g, q, dq, ddq).subs(zero) for g in self._nonholonomic]
-        return G.stack(A), h, multipliers + self._velocity_multipliers
-
-    def accelerations_and_multipliers(self):
-        r"""
-        The accelerations and the multipliers of all constraints, solved from
-        the `n` equations together with the holonomic constraints
-        differentiated twice and the velocity constraints differentiated once
-        (see :meth:`Lagrangian.accelerations_and_multipliers
-        <sage_dynsym.dynamics.lagrangian.Lagrangian.accelerations_and_multipliers>`);
-        exactly, modulo `\cos^2 + \sin^2 = 1`, where the equations are
-        rational in the sines and cosines (see
-        :mod:`~sage_dynsym.algebra.trig_linear`).
-
-        OUTPUT: a dict ``{ddq_i: ..., mu_j: ...}``, valid where the
-        constraints hold
-
-        EXAMPLES: see the module documentation.
-        """
-        if not hasattr(self, '_solved'):
-            K, rhs, unknowns = self._acceleration_system()
-            try:
-                field = TrigFractionField(K.list() + rhs)
-                X = field.solve_right(field.matrix(K), [[field(v)] for v in rhs])
-                values = [field.expression(x[0]) for x in X]
-            except AnalysisError:   # not rational in the sines and cosines
-                X = K.solve_right(matrix(SR, [[v] for v in rhs]))
-                values = [X[i, 0].simplify_rational() for i in range(len(unknowns))]
-            self._solved = dict(zip(unknowns, values))
-        return dict(self._solved)
-
-    def accelerations_solved(self):
-        r"""
-        The accelerations of :meth:`accelerations_and_multipliers`, in the
-        order of the coordinates.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2 - y, [x, y], nonholonomic=[dx - dy]).accelerations_solved()
-            [-1/2, -1/2]
-        """
-        solution = self.accelerations_and_multipliers()
-        return [solution[a] for a in self._accelerations]
-
-    def _conserved_energy(self):
-        r"""
-        The energy, when the velocity constraints are homogeneous and
-        stationary (`b = 0`, no explicit time): then they do no work.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy])._conserved_energy()
-            1/2*dx^2 + 1/2*dy^2
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - 1])._conserved_energy() is None
-            True
-        """
-        _, b = self.velocity_constraint_matrix()
-        if any(not SR(e).is_zero() for e in b) or any(g.has(t) for g in self._nonholonomic):
-            return None
-        return Lagrangian._conserved_energy(self)
-
-    def equations_record(self):
-        r"""
-        The equations as neutral data, with the velocity constraints and
-        their multipliers (see :class:`~sage_dynsym.analysis.motion.SecondOrderEquations`).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy]).equations_record()
-            Second-order equations in (x, y): [ddx - mu1, mu1*y + ddy] == 0 with velocity constraints [-dy*y + dx] == 0
-        """
-        kinetic = self.mass_matrix() if self.is_natural() else None
-        return SecondOrderEquations(self.lagrange_equations(), self._coordinates,
-                                    self._velocities, self._accelerations,
-                                    function=self._expr, kinetic=kinetic,
-                                    constraints=self._constraints,
-                                    multipliers=self._multipliers,
-                                    velocity_constraints=self._nonholonomic,
-                                    velocity_multipliers=self._velocity_multipliers)
+        return self.constraint_set().matrix()
 
     def reduced_equations(self, speeds=None):
         r"""
@@ -402,28 +458,30 @@ class NonholonomicLagrangian(Lagrangian):
     # value semantics and derived Lagrangians
 
     def _content(self):
-        return Lagrangian._content(self) + (tuple(self._nonholonomic),)
+        return super()._content() + (tuple(self.nonholonomic_constraints()),)
 
     def __reduce__(self):
-        function, (expr, coordinates, velocities, keywords) = Lagrangian.__reduce__(self)
+        function, (expr, coordinates, velocities, keywords) = super().__reduce__()
         return (_rebuild, (expr, coordinates, velocities,
-                           dict(keywords, nonholonomic=self._nonholonomic)))
+                           dict(keywords, nonholonomic=self.nonholonomic_constraints())))
 
     def _repr_(self):
-        return Lagrangian._repr_(self) + ", with velocity constraints " + ", ".join(
-            f"{g} == 0" for g in self._nonholonomic)
+        return super()._repr_() + ", with velocity constraints " + ", ".join(
+            f"{g} == 0" for g in self.nonholonomic_constraints())
 
     def _latex_(self):
         from sage.misc.latex import latex
-        return Lagrangian._latex_(self) + "".join(r", \quad " + latex(g) + " = 0"
-                                                  for g in self._nonholonomic)
+        return super()._latex_() + "".join(r", \quad " + latex(g) + " = 0"
+                                           for g in self.nonholonomic_constraints())
 
     def _derived(self, expr, **changes):
-        options = dict(velocities=self._velocities, dissipation=self._dissipation,
-                       forces=self._forces, name=self._name, constraints=self._constraints,
-                       nonholonomic=self._nonholonomic, positive=self._positive)
+        options = dict(velocities=self.velocities(), dissipation=self.dissipation(),
+                       forces=self.generalized_forces(), name=self.name(),
+                       constraints=self.constraints(),
+                       nonholonomic=self.nonholonomic_constraints(),
+                       positive=self.positive_parameters())
         options.update(changes)
-        coordinates = options.pop('coordinates', self._coordinates)
+        coordinates = options.pop('coordinates', self.coordinates())
         return NonholonomicLagrangian(expr, coordinates, **options)
 
     def subs(self, *args, **kwds):
@@ -439,59 +497,11 @@ class NonholonomicLagrangian(Lagrangian):
             sage: L.subs(r=2).nonholonomic_constraints()
             [dx - 2*dy]
         """
-        derived = Lagrangian.subs(self, *args, **kwds)
+        derived = super().subs(*args, **kwds)
         args = [substitution(a) for a in args]
         kwds = {k: exact_decimals(v) for k, v in kwds.items()}
-        return derived._derived(derived.expr(), nonholonomic=[g.subs(*args, **kwds)
-                                                              for g in self._nonholonomic])
-
-    def _not_cyclic(self, q):
-        reason = Lagrangian._not_cyclic(self, q)
-        if reason is None:
-            dq = self._velocities[self._coordinates.index(q)]
-            if any(g.has(q) or g.has(dq) for g in self._nonholonomic):
-                return "a velocity constraint involves it or its velocity"
-        return reason
-
-    def routh(self, cyclic):
-        r"""
-        Not available: the Routh function of a Lagrangian would lose the
-        velocity constraints.
-
-        EXAMPLES: see the class documentation.
-        """
-        raise ModelError("Routh's reduction does not apply with velocity constraints; use "
-                         "reduced_equations() (Kane's equations in independent speeds)",
-                         entry="nonholonomic")
-
-    def hamiltonian(self):
-        r"""
-        Not available: Hamilton's equations need a Legendre transform of
-        unconstrained velocities.
-
-        EXAMPLES: see the class documentation.
-        """
-        raise ModelError("the Legendre transform of a Lagrangian with velocity constraints is "
-                         "not supported: use reduced_equations() (Kane's equations in "
-                         "independent speeds)", entry="nonholonomic")
-
-    def reduce(self, independent, parametrization):
-        r"""
-        Not available: a parametrization of the holonomic constraints would
-        have to be carried into the velocity constraints.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
-            sage: x, y, dx, dy = var('x y dx dy')
-            sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy]).reduce([x], {y: x})
-            Traceback (most recent call last):
-            ...
-            ModelError: nonholonomic: reduce() does not carry velocity constraints; use reduced_equations() (Kane's equations in independent speeds)
-        """
-        raise ModelError("reduce() does not carry velocity constraints; use "
-                         "reduced_equations() (Kane's equations in independent speeds)",
-                         entry="nonholonomic")
+        return derived._derived(derived.expr(), nonholonomic=[
+            g.subs(*args, **kwds) for g in self.nonholonomic_constraints()])
 
 
 def _rebuild(expr, coordinates, velocities, keywords):

@@ -74,7 +74,7 @@ def _hamiltonian(model):
     else:
         raise AnalysisError(f"expected a Lagrangian, RouthFunction or Hamiltonian, got "
                             f"{type(model).__name__}", entry="model")
-    if H.is_singular() or H._conserved_energy() is None:
+    if H.is_singular() or H.conserved_energy() is None:
         raise AnalysisError("the Hamiltonian must be conserved and regular (no explicit "
                             "time, no dissipation or forces, a regular Lagrangian)",
                             entry="model")

@@ -150,8 +150,16 @@ class ReducedEquations(SageObject):
         if not C:
             return list(range(n))
         K = TrigFractionField([a for row in C for a in row])
-        rows = K.matrix(C)
-        pivots = K._eliminate(rows)[2]
+        columns = list(zip(*K.matrix(C)))
+        # the pivot columns of the elimination in the order of the columns:
+        # those that raise the rank of the columns before them
+        pivots, rank = [], 0
+        for j in range(n):
+            if rank == len(C):
+                break
+            if K.rank(list(zip(*columns[:j + 1]))) > rank:
+                pivots.append(j)
+                rank += 1
         return [i for i in range(n) if i not in pivots]
 
     def _repr_(self):

@@ -1,9 +1,10 @@
 r"""
 Cyclic coordinates and the Routh reduction
 
-:class:`CyclicCoordinates` is a base class of
-:class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`: its cyclic
-coordinates, those whose momentum is conserved. :func:`routh_reduction`
+:func:`cyclic_coordinates` gives the cyclic coordinates of a
+:class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`, those whose momentum
+is conserved (:func:`why_not_cyclic` says why a coordinate is not).
+:func:`routh_reduction`
 eliminates the velocities of cyclic coordinates through their constant
 momenta, the computation behind
 :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` (see the module
@@ -28,65 +29,68 @@ from ..errors import ModelError
 from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from .natural_form import natural_form, linear_collected, is_singular, Elimination
 
+__all__ = ['cyclic_coordinates', 'why_not_cyclic', 'check_cyclic', 'routh_reduction']
 
-class CyclicCoordinates:
+
+def cyclic_coordinates(lagrangian):
     r"""
-    The cyclic coordinates of a
-    :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian` (a base class of
-    it, see the module documentation).
+    The coordinates `q_l` of ``lagrangian`` whose momentum is conserved,
+    exactly those the Routh reduction accepts (see :func:`why_not_cyclic`).
 
-    EXAMPLES: see :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`.
+    EXAMPLES::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.routh import cyclic_coordinates
+        sage: r, phi, dr, dphi = var('r phi dr dphi')
+        sage: cyclic_coordinates(Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]))
+        [phi]
     """
+    return [q for q in lagrangian.coordinates() if why_not_cyclic(lagrangian, q) is None]
 
-    def cyclic_coordinates(self):
-        r"""
-        The coordinates `q_l` whose momentum is conserved, exactly those
-        :meth:`routh` accepts: `q_l` appears neither in `L` nor in the
-        dissipation function, the generalized forces or the constraints,
-        the dissipation function does not depend on `\dot q_l`, and no
-        generalized force acts on `q_l`.
 
-        EXAMPLES::
+def why_not_cyclic(lagrangian, q):
+    r"""
+    Why the coordinate ``q`` of ``lagrangian`` is not cyclic, or ``None`` if
+    it is: `q_l` appears neither in `L` nor in the dissipation function,
+    the generalized forces or the constraints, the dissipation function does
+    not depend on `\dot q_l`, no generalized force acts on `q_l`, and no
+    velocity constraint involves `q_l` or `\dot q_l`.
 
-            sage: from sage_dynsym import Lagrangian
-            sage: r, phi, dr, dphi = var('r phi dr dphi')
-            sage: Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).cyclic_coordinates()
-            [phi]
+    EXAMPLES::
 
-        A damper on a cart makes its position non-cyclic::
-
-            sage: x, dx, c = var('x dx c')
-            sage: L = Lagrangian((dx^2 + dphi^2)/2 + cos(phi), [x, phi], dissipation=c*dx^2/2)
-            sage: L.cyclic_coordinates()
-            []
-        """
-        return [q for q in self._coordinates if self._not_cyclic(q) is None]
-
-    def _not_cyclic(self, q):
-        r"""
-        Why the coordinate ``q`` is not cyclic, or ``None`` if it is.
-        """
-        i = self._coordinates.index(q)
-        if self._expr.has(q):
-            return "the Lagrangian depends on it"
-        if self._dissipation.diff(self._velocities[i]) != 0:
-            return ("the dissipation function depends on its velocity, so its momentum "
-                    "is not conserved")
-        if self._forces[i] != 0:
-            return "a generalized force acts on it"
-        for what, parts in (("the dissipation function", [self._dissipation]),
-                            ("a generalized force", self._forces),
-                            ("a constraint", self._constraints)):
-            if any(p.has(q) for p in parts):
-                return f"{what} depends on it"
-        return None
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.dynamics.routh import why_not_cyclic
+        sage: x, y, dx, dy, c = var('x y dx dy c')
+        sage: L = Lagrangian((dx^2 + dy^2)/2 + cos(y), [x, y], dissipation=c*dx^2/2)
+        sage: why_not_cyclic(L, x), why_not_cyclic(L, y)
+        ('the dissipation function depends on its velocity, so its momentum is not conserved',
+         'the Lagrangian depends on it')
+    """
+    i = lagrangian.coordinates().index(q)
+    dq = lagrangian.velocities()[i]
+    dissipation, forces = lagrangian.dissipation(), lagrangian.generalized_forces()
+    if lagrangian.expr().has(q):
+        return "the Lagrangian depends on it"
+    if dissipation.diff(dq) != 0:
+        return ("the dissipation function depends on its velocity, so its momentum "
+                "is not conserved")
+    if forces[i] != 0:
+        return "a generalized force acts on it"
+    for what, parts in (("the dissipation function", [dissipation]),
+                        ("a generalized force", forces),
+                        ("a constraint", lagrangian.constraints())):
+        if any(p.has(q) for p in parts):
+            return f"{what} depends on it"
+    if any(g.has(q) or g.has(dq) for g in lagrangian.nonholonomic_constraints()):
+        return "a velocity constraint involves it or its velocity"
+    return None
 
 
 def check_cyclic(lagrangian, cyclic):
     r"""
     Check that the coordinates ``cyclic`` of ``lagrangian`` are cyclic
-    (see :meth:`~CyclicCoordinates.cyclic_coordinates`) and that the
-    Lagrangian is natural, as the Routh reduction needs.
+    (see :func:`why_not_cyclic`) and that the Lagrangian is natural and has
+    no velocity constraints, as the Routh reduction needs.
 
     EXAMPLES::
 
@@ -99,6 +103,10 @@ def check_cyclic(lagrangian, cyclic):
         ...
         ModelError: cyclic: x is not cyclic: the Lagrangian depends on it
     """
+    if lagrangian.nonholonomic_constraints():
+        raise ModelError("Routh's reduction does not apply with velocity constraints; use "
+                         "reduced_equations() (Kane's equations in independent speeds)",
+                         entry="nonholonomic")
     coordinates = lagrangian.coordinates()
     velocities = dict(zip(coordinates, lagrangian.velocities()))
     for c in cyclic:
@@ -106,7 +114,7 @@ def check_cyclic(lagrangian, cyclic):
         if c not in velocities:
             raise ModelError(f"{c} is not a coordinate of the Lagrangian; "
                              f"coordinates are {coordinates}", entry="cyclic")
-        reason = lagrangian._not_cyclic(c)
+        reason = why_not_cyclic(lagrangian, c)
         if reason is not None:
             raise ModelError(f"{c} is not cyclic: {reason}", entry="cyclic")
         if not lagrangian.is_natural():

@@ -98,12 +98,29 @@ class NumericalMethods:
         """
         return self.equations_record()
 
-    def _numerical_form(self):
+    def numerical_form(self):
+        r"""
+        The numerical form of ``equations_record()`` (built once per
+        object, see :class:`~sage_dynsym.numerics.form.NumericalForm`), with
+        the model's conserved energy, computed only if a trajectory's drift
+        asks for it.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: x, dx, k = var('x dx k')
+            sage: L = Lagrangian(dx^2/2 - k*x^2/2, [x])
+            sage: L.numerical_form(), L.numerical_form() is L.numerical_form()
+            (Numerical form M x'' = F in (x), parameters (k), True)
+        """
         cache = object_cache(self)
         if 'form' not in cache:
             # the energy is computed only if a trajectory's drift asks for it
             cache['form'] = NumericalForm(self.equations_record(), energy=self._conserved_energy)
         return cache['form']
+
+    # the name earlier versions read from outside (mechanics.recursive_numerics)
+    _numerical_form = numerical_form
 
     def numerical_rhs(self, values, backend='auto'):
         r"""
@@ -128,7 +145,7 @@ class NumericalMethods:
             [x, y]
         """
         check_model_values(self, values)
-        return RightHandSide(self._numerical_form(), values, backend)
+        return RightHandSide(self.numerical_form(), values, backend)
 
     def simulate(self, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
                  atol=1e-12, backend='auto', **options):
@@ -195,4 +212,4 @@ class NumericalMethods:
                 F[0] = -a*x;
             }
         """
-        return generate_code(self._numerical_form(), language=language, cse=cse)
+        return generate_code(self.numerical_form(), language=language, cse=cse)
