@@ -119,9 +119,6 @@ class NumericalMethods:
             cache['form'] = NumericalForm(self.equations_record(), energy=self._conserved_energy)
         return cache['form']
 
-    # the name earlier versions read from outside (mechanics.recursive_numerics)
-    _numerical_form = numerical_form
-
     def numerical_rhs(self, values, backend='auto'):
         r"""
         A callable ``f(t, x)`` returning `\dot x` as a NumPy array, ``x``
