@@ -302,7 +302,9 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256, interval=None
 
     INPUT:
 
-    - ``model`` -- a Lagrangian, Routh function or Hamiltonian (conserved)
+    - ``model`` -- a Lagrangian, Routh function or Hamiltonian (conserved),
+      or a Lie--Poisson system (then the energy--Casimir method, see
+      :meth:`~sage_dynsym.lie.system.LiePoissonSystem.nonlinear_stability`)
     - ``at`` -- dict coordinate -> value at the equilibrium, with a value
       of every parameter
     - ``order`` -- (default: 4) the degree of the normal form (6 decides
@@ -365,7 +367,19 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256, interval=None
         Traceback (most recent call last):
         ...
         AnalysisError: at: give a value to the parameters ['mu'], or leave one free with interval=(a, b) ...
+
+    A Lie--Poisson system, by the energy--Casimir method (Euler's free
+    rigid body rotating about the axis of its smallest moment of inertia)::
+
+        sage: from sage_dynsym.lie.system import LiePoissonSystem
+        sage: M1, M2, M3 = var('M1 M2 M3')
+        sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/3)/2)
+        sage: nonlinear_stability(S, {M1: 1, M2: 0, M3: 0}).method()
+        'energy-Casimir'
     """
+    if callable(getattr(model, 'nonlinear_stability', None)):
+        # a model with a method of its own (a Lie-Poisson system: energy-Casimir)
+        return model.nonlinear_stability(at, positive=positive or None)
     H = taylor_polynomial(model, at, 2)
     free = sorted({str(v) for c in H.coefficients() for v in c.variables()})
     if free and (len(free) > 1 or interval is None):

@@ -542,6 +542,38 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
         """
         return _linearize(self.equations(), at, self.variables())
 
+    def nonlinear_stability(self, at, integrals=(), positive=None):
+        r"""
+        The Lyapunov stability of the equilibrium ``at`` by the
+        energy--Casimir method (the second variation of `H + \sum\lambda_i
+        C_i` on the Casimir level), then the first approximation: see
+        :func:`~sage_dynsym.analysis.energy_casimir.energy_casimir_stability`.
+
+        INPUT:
+
+        - ``at`` -- dict variable -> exact value (and parameter -> value)
+        - ``integrals`` -- (optional) first integrals besides the Casimirs
+          (e.g. a momentum of a symmetry: the energy--Casimir--momentum
+          method)
+        - ``positive`` -- (default: the system's) symbols declared positive
+
+        OUTPUT: a :class:`~sage_dynsym.analysis.verdict.StabilityVerdict`
+
+        EXAMPLES: the free rigid body about its axes (Euler; moments of
+        inertia `A_1 < A_2 < A_3`)::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3 = var('M1 M2 M3')
+            sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/2 + M3^2/3)/2)
+            sage: [S.nonlinear_stability(dict(zip([M1, M2, M3], e))).verdict()
+            ....:  for e in identity_matrix(3)]
+            ['stable', 'unstable', 'stable']
+        """
+        from ..analysis.energy_casimir import energy_casimir_stability
+        return energy_casimir_stability(
+            self._H, self.casimirs(), self.poisson_matrix(), self.variables(), at,
+            integrals=integrals, positive=self._positive if positive is None else positive)
+
     def free_linear_system(self, at=None):
         r"""
         The first-approximation system at ``at`` (a dict over the
