@@ -484,15 +484,37 @@ class _PhaseRing:
         eps = RealField(self.A.prec)(2) ** (-self.A.prec // 2)
         return self.P({e: c for e, c in f.dict().items() if abs(c) >= eps})
 
+    def graded(self, f):
+        r"""``f`` by its degrees in the phase variables: a dict degree ->
+        homogeneous part."""
+        m, parts = 2 * self.n, {}
+        for e, c in f.dict().items():
+            parts.setdefault(sum(e[:m]), {})[e] = c
+        return {d: self.P(terms) for d, terms in parts.items()}
+
     def lie_transform(self, f, W, top):
-        r"""`\exp(L_W) f = \sum_j \{\dots\{f, W\}, \dots, W\}/j!` up to degree ``top``."""
-        result, term, j = f, f, 1
+        r"""`\exp(L_W) f = \sum_j \{\dots\{f, W\}, \dots, W\}/j!` up to degree
+        ``top``, for ``W`` homogeneous: the bracket of parts of degrees `a`
+        and `b` has the degree `a + b - 2`, so the parts that would exceed
+        ``top`` are never multiplied (nor sorted out afterwards)."""
+        if W.is_zero():
+            return f
+        w = sum(next(iter(W.dict()))[:2 * self.n])
+        result = self.graded(f)
+        term, j = result, 1
         while True:
-            term = self.reduce(self.part(_bracket(term, W, self.gens, self.n),
-                                         range(top + 1))) / j
-            if term.is_zero():
-                return self.reduce(result)
-            result, j = result + term, j + 1
+            found = {}
+            for d, part in term.items():
+                if d + w - 2 <= top:
+                    found[d + w - 2] = found.get(d + w - 2, 0) + \
+                        _bracket(part, W, self.gens, self.n)
+            term = {d: self.reduce(part) / j for d, part in found.items()}
+            term = {d: part for d, part in term.items() if not part.is_zero()}
+            if not term:
+                return self.reduce(sum(result.values(), self.P(0)))
+            for d, part in term.items():
+                result[d] = result.get(d, 0) + part
+            j += 1
 
 
 def normal_form(arithmetic, order=4):

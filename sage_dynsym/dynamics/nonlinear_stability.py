@@ -393,6 +393,20 @@ def nonlinear_stability(model, at, order=4, positive=(), prec=256, interval=None
         order=order, positive=positive, prec=prec)
 
 
+def _exact_symbolic(value):
+    r"""A parameter value as an exact symbolic number: a real algebraic
+    number by its radicals where it has them, a real number (an
+    approximation of a zero found by bisection) by the rational it prints
+    as."""
+    from sage.rings.qqbar import AA
+    if value in QQ:
+        return SR(QQ(value))
+    if isinstance(value, type(AA(0))):
+        exact = value.radical_expression()
+        return exact if not isinstance(exact, type(AA(0))) else SR(value)
+    return SR(QQ(value))
+
+
 def _over_parameter(model, at, name, interval, order, positive, prec):
     parameter = SR.var(name)
     found = exceptional_values(model, at, parameter, interval, order=order, prec=prec)
@@ -402,7 +416,7 @@ def _over_parameter(model, at, name, interval, order, positive, prec):
         # the tolerance of the zero) its small value decides nothing: the
         # next degree decides
         degenerate = (4,) if 'Arnold determinant' in kinds else ()
-        point = {**at, parameter: SR(QQ(value) if degenerate else value)}
+        point = {**at, parameter: _exact_symbolic(value)}
         return normal_form_stability(
             taylor_polynomial(model, point, 2),
             lambda degree: birkhoff_normal_form(model, point, degree, prec=prec),
