@@ -54,7 +54,7 @@ from sage.rings.rational_field import QQ
 from sage.matrix.constructor import matrix
 
 from ..errors import AnalysisError
-from .normal_forms import FormalArithmetic, DECISION_BITS, _names
+from .normal_forms import FormalArithmetic, DECISION_BITS
 
 __all__ = ['FieldArithmetic', 'arnold_polynomial']
 
@@ -109,7 +109,7 @@ class FieldArithmetic(FormalArithmetic):
         """
         data = self.H.base_ring()
         self.data_ring = data
-        constants = [g for g in _names(data) if g not in self.free]
+        constants = [g for g in data.variable_names() if g not in self.free]
         # named by a string: Singular takes QQ(mu) as the field of a ring
         parameters = PolynomialRing(QQ, ", ".join(self.free))
         names = constants + [f"lambda{k + 1}" for k in range(self.n)]
@@ -155,7 +155,7 @@ class FieldArithmetic(FormalArithmetic):
         generators of the field at the sample."""
         CIF = ComplexIntervalField(DECISION_BITS)
         parameters = [CIF(self.sample[g]) for g in self.free]
-        constants = [CIF(self.values[g]) for g in _names(self.data_ring)
+        constants = [CIF(self.values[g]) for g in self.data_ring.variable_names()
                      if g not in self.free]
         return parameters, constants + [CIF(v) for v in self.lambda_values]
 
