@@ -173,9 +173,36 @@ class TreeBody(SageObject):
             sage: len(TreeBody(0).expressions())
             16
         """
-        out = [angle for _, angle in self._rotations] + list(self._joint)
-        out += list(self._velocity or ()) + [self._mass] + list(self._mass_center)
-        return out + self._inertia.list()
+        return body_expressions(self)
+
+    def is_massless(self):
+        r"""Whether mass and inertia are both zero (a body that only carries a frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import TreeBody
+            sage: TreeBody(0).is_massless(), TreeBody(0, mass=1).is_massless()
+            (True, False)
+        """
+        return self._mass.is_zero() and self._inertia.is_zero()
+
+
+def body_expressions(body):
+    r"""
+    Every expression of ``body`` (a :class:`TreeBody`, or any body with its
+    methods, such as a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`):
+    angles, joint, velocity, mass, mass centre, inertia, for finding its
+    symbols.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.body_tree import TreeBody, body_expressions
+        sage: body_expressions(TreeBody(0, rotations=[(3, var('a'))], mass=var('m')))[:5]
+        [a, 0, 0, 0, m]
+    """
+    out = [angle for _, angle in body.rotations()] + list(body.joint())
+    out += list(body.velocity() or ()) + [body.mass()] + list(body.mass_center())
+    return out + body.inertia().list()
 
 
 class TreeLoad(SageObject):
@@ -225,7 +252,10 @@ class BodyTree(SageObject):
 
     INPUT:
 
-    - ``bodies`` -- list of :class:`TreeBody`, parents before children
+    - ``bodies`` -- list of :class:`TreeBody`, parents before children, or
+      of other bodies with their methods (the
+      :class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects of a
+      mechanical system: the tree holds them, it does not copy them)
     - ``coordinates`` -- the generalized coordinates (symbols); the
       velocities are their ``d<q>`` symbols
     - ``gravity`` -- (optional) the acceleration of a uniform gravity field
@@ -240,6 +270,8 @@ class BodyTree(SageObject):
       `g_k = A_k(q, t)\dot q + b_k(q, t) = 0`, linear in them
     - ``parameters`` -- (optional) the parameters in the order wanted;
       default the other symbols, sorted by name
+    - ``parents`` -- (optional) per body the 1-based index of its parent,
+      0 for the inertial frame; default the bodies' own ``parent()``
 
     The equations are those of the Lagrangian `T + U` (`U` of gravity and
     ``potential``) with `\partial R/\partial \dot q_i - Q_i` and the
@@ -263,12 +295,15 @@ class BodyTree(SageObject):
     """
 
     def __init__(self, bodies, coordinates, gravity=None, loads=(), potential=0, dissipation=0,
-                 forces=None, constraints=(), velocity_constraints=(), parameters=None):
+                 forces=None, constraints=(), velocity_constraints=(), parameters=None,
+                 parents=None):
         self._bodies = list(bodies)
-        for k, body in enumerate(self._bodies, 1):
-            if not 0 <= body.parent() < k:
+        self._parents = [body.parent() for body in self._bodies] if parents is None else [
+            int(j) for j in parents]
+        for k, j in enumerate(self._parents, 1):
+            if not (isinstance(j, int) and 0 <= j < k):
                 raise AnalysisError(f"the parent of body {k} must be an earlier body or 0, got "
-                                    f"{body.parent()}", entry="body tree")
+                                    f"{j}", entry="body tree")
         self._q = [SR(q) for q in coordinates]
         self._dq = [velocity(q) for q in self._q]
         self._gravity = None if gravity is None else _vector(gravity, "gravity")
@@ -309,6 +344,18 @@ class BodyTree(SageObject):
         EXAMPLES: see the module documentation.
         """
         return list(self._bodies)
+
+    def parent(self, k):
+        r"""The index of the parent of body ``k`` (1-based; 0: the inertial frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: T = BodyTree([TreeBody(0), TreeBody(1), TreeBody(1)], [])
+            sage: [T.parent(k) for k in (1, 2, 3)]
+            [0, 1, 1]
+        """
+        return self._parents[k - 1]
 
     def coordinates(self):
         r"""The coordinates.
@@ -424,7 +471,7 @@ class BodyTree(SageObject):
         """
         out = []
         for body in self._bodies:
-            out += body.expressions()
+            out += body_expressions(body)
         for load in self._loads:
             out += load.expressions()
         out += list(self._gravity or ()) + [self._potential, self._dissipation]
