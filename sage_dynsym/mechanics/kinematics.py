@@ -29,6 +29,7 @@ from sage.misc.verbose import verbose
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
+from ..numerics.body_tree import BodyTree
 from ..symbols import time_derivative, t
 from .frames import FrameTree, FrameVector, cross, held_product
 
@@ -36,7 +37,8 @@ from .frames import FrameTree, FrameVector, cross, held_product
 class Kinematics:
     r"""
     Velocities, positions and kinetic-energy decompositions of the bodies of
-    ``system``, with the arithmetic of ``backend``
+    ``system`` (a :class:`~sage_dynsym.numerics.body_tree.BodyTree`, or a
+    mechanical system: then the tree of its bodies), with the arithmetic of ``backend``
     (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend` or
     :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`).
 
@@ -55,10 +57,14 @@ class Kinematics:
     """
 
     def __init__(self, system, backend):
-        self._system = system
+        if not isinstance(system, BodyTree):
+            bodies = system.bodies()
+            system = BodyTree(bodies, system.coordinates(),
+                              parents=[system.parent_index(k) for k in range(1, len(bodies) + 1)])
+        self._body_tree = system
         self._backend = backend
         self._bodies = system.bodies()
-        self._parents = [None] + [system.parent_index(k) for k in range(1, len(self._bodies) + 1)]
+        self._parents = [None] + [system.parent(k) for k in range(1, len(self._bodies) + 1)]
         self._coordinates = system.coordinates()
         self._velocities = system.velocities()
         self.tree = FrameTree(trig=backend.trig, zero=backend.zero)
@@ -66,6 +72,29 @@ class Kinematics:
         for k, body in enumerate(self._bodies, 1):
             self._frames.append(self.tree.add_rotations(self._frames[self._parents[k]],
                                                         body.rotations()))
+
+    def body_tree(self):
+        r"""
+        The :class:`~sage_dynsym.numerics.body_tree.BodyTree` whose
+        kinematics this is: the system's own bodies with their parents'
+        indices and the coordinates, the description the recursive
+        numerics read too.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: T = Kinematics(S, SymbolicBackend()).body_tree(); T
+            Tree of 1 body in (psi, theta), parameters (l, m)
+            sage: T.bodies()[0] is S.bodies()[0]
+            True
+            sage: Kinematics(T, SymbolicBackend()).angular_velocity(1).components(0)
+            (dtheta*cos(psi), dtheta*sin(psi), dpsi)
+        """
+        return self._body_tree
 
     def backend(self):
         r"""The arithmetic backend (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`

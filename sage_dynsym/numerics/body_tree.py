@@ -322,21 +322,14 @@ class BodyTree(SageObject):
                 raise AnalysisError(f"the velocity constraint {g} is not linear in the "
                                     f"velocities ({', '.join(map(str, self._dq))})",
                                     entry="body tree")
-        if parameters is None:
-            hidden = {str(v) for v in self._q + self._dq + [_t]}
-            found = {}
-            for e in self.expressions():
-                for v in SR(e).variables():
-                    if str(v) not in hidden:
-                        found[str(v)] = v
-            parameters = [found[k] for k in sorted(found)]
-        self._parameters = [SR(p) for p in parameters]
+        # found when first asked for: the symbolic kinematics never needs them
+        self._parameters = None if parameters is None else [SR(p) for p in parameters]
 
     def _repr_(self):
         n = len(self._bodies)
         return (f"Tree of {n} bod{'y' if n == 1 else 'ies'} in "
                 f"({', '.join(map(str, self._q))}), parameters "
-                f"({', '.join(map(str, self._parameters))})")
+                f"({', '.join(map(str, self.parameters()))})")
 
     def bodies(self):
         r"""The :class:`TreeBody` records, parents first.
@@ -344,6 +337,23 @@ class BodyTree(SageObject):
         EXAMPLES: see the module documentation.
         """
         return list(self._bodies)
+
+    def with_forces(self, **forces):
+        r"""
+        The tree of the same bodies (not copied) and coordinates with the
+        forces ``forces`` (the keywords of the class: ``gravity``,
+        ``loads``, ``potential``, ...) instead of these.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: x = var('x'); T = BodyTree([TreeBody(0, joint=[x, 0, 0], mass=1)], [x])
+            sage: U = T.with_forces(gravity=[-10, 0, 0]); U
+            Tree of 1 body in (x), parameters ()
+            sage: U.gravity(), U.bodies()[0] is T.bodies()[0]
+            ((-10, 0, 0), True)
+        """
+        return BodyTree(self._bodies, self._q, parents=self._parents, **forces)
 
     def parent(self, k):
         r"""The index of the parent of body ``k`` (1-based; 0: the inertial frame).
@@ -380,6 +390,14 @@ class BodyTree(SageObject):
 
         EXAMPLES: see the module documentation.
         """
+        if self._parameters is None:
+            hidden = {str(v) for v in self._q + self._dq + [_t]}
+            found = {}
+            for e in self.expressions():
+                for v in SR(e).variables():
+                    if str(v) not in hidden:
+                        found[str(v)] = v
+            self._parameters = [found[k] for k in sorted(found)]
         return list(self._parameters)
 
     def gravity(self):
