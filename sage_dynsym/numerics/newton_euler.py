@@ -36,7 +36,7 @@ from sage.symbolic.ring import SR
 
 from .spatial import add, cross, matvec, rotate, scale
 
-__all__ = ['body_forces', 'generalized_bias_forces', 'velocity_corrections',
+__all__ = ['body_forces', 'generalized_bias_forces', 'project', 'velocity_corrections',
            'applied_forces', 'forcing']
 
 
@@ -85,14 +85,41 @@ def body_forces(kin):
 
 def generalized_bias_forces(kin):
     r"""
-    The generalized forces of :func:`body_forces`, summed from the leaves
-    and projected on the joints ([Fea2008]_, Table 5.1): the terms `h` of
-    `M\ddot q + h` of the kinetic energy, gravity and the loads.
+    The generalized forces of :func:`body_forces` (see :func:`project`):
+    the terms `h` of `M\ddot q + h` of the kinetic energy, gravity and the
+    loads.
 
     EXAMPLES: see the module documentation.
     """
+    return project(kin, body_forces(kin))
+
+
+def project(kin, forces):
+    r"""
+    The generalized forces `\sum_k \partial V_{0k}/\partial\dot q_i\cdot f_k
+    + \partial W_k/\partial\dot q_i\cdot n_k` of the forces ``forces`` (a dict:
+    body `k` -> `(f_k, n_k)` about its joint point, in its axes), summed from
+    the leaves and projected on the joints ([Fea2008]_, Table 5.1). The
+    dict is changed (it receives the sums over the subtrees).
+
+    EXAMPLES: on a bead at `x` on a turntable turned by `a`, a force `F`
+    along the table acts on `x` only, a force `F` across it on `a` only,
+    with the moment `F x`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.spatial import SymbolicArithmetic
+        sage: from sage_dynsym.numerics.tree_kinematics import TreeKinematics
+        sage: from sage_dynsym.numerics.newton_euler import project
+        sage: a, x, F = var('a x F')
+        sage: tree = BodyTree([TreeBody(0, rotations=[(3, a)]), TreeBody(1, joint=[x, 0, 0])],
+        ....:                 [a, x])
+        sage: K = TreeKinematics(tree, SymbolicArithmetic())
+        sage: project(K, {1: ((0, 0, 0), (0, 0, 0)), 2: ((F, 0, 0), (0, 0, 0))})
+        [0, F]
+        sage: project(K, {1: ((0, 0, 0), (0, 0, 0)), 2: ((0, F, 0), (0, 0, 0))})
+        [F*x, 0]
+    """
     G, n = kin.G, kin.n
-    forces = body_forces(kin)
     forces[0] = (kin.zero3, kin.zero3)
     tau = [[] for _ in range(n)]
     for k in range(len(kin.tree.bodies()), 0, -1):
