@@ -33,10 +33,34 @@ arithmetics::
     sage: [G.show(e) for e in rotate(G, 3, c, s, (y, G.zero, G.zero))]
     ['x[0]*x[2]', 'x[1]*x[2]', '0.0']
 """
+from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
-__all__ = ['SymbolicArithmetic', 'cross', 'add', 'scale', 'matvec', 'skew', 'rotate',
+__all__ = ['SymbolicArithmetic', 'held_product', 'cross', 'add', 'scale', 'matvec', 'skew', 'rotate',
            'rotate_matrix']
+
+
+def held_product(a, b):
+    r"""
+    `a b`, left unevaluated when a factor is a sum (and none a number): the
+    product of :class:`SymbolicArithmetic`. Sage's
+    evaluation of a product of large nested sums costs far more than the
+    product itself (tenths of a second each for the chain of 15 links with
+    numerical data of ``bench/bench_pipeline.py``), and the recursive
+    equations multiply such sums throughout.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.spatial import held_product
+        sage: x, y = var('x y')
+        sage: held_product(x + y, x - y), held_product(x, y), held_product(2, x + y)
+        ((x + y)*(x - y), x*y, 2*x + 2*y)
+    """
+    a, b = SR(a), SR(b)
+    if a.is_numeric() or b.is_numeric() or not (a.operator() is add_vararg
+                                                or b.operator() is add_vararg):
+        return a * b
+    return a.mul(b, hold=True)
 
 
 class SymbolicArithmetic:
@@ -83,11 +107,11 @@ class SymbolicArithmetic:
         return a - b
 
     def mul(self, a, b):
-        r"""`a b`.
+        r"""`a b`, held when a factor is a sum (see :func:`held_product`).
 
         EXAMPLES: see the class documentation.
         """
-        return a * b
+        return held_product(a, b)
 
     def div(self, a, b):
         r"""`a / b`.
@@ -108,7 +132,7 @@ class SymbolicArithmetic:
 
         EXAMPLES: see the class documentation.
         """
-        return SR.zero().add(*[a * b for a, b in zip(u, w)
+        return SR.zero().add(*[held_product(a, b) for a, b in zip(u, w)
                                if not (SR(a).is_trivial_zero() or SR(b).is_trivial_zero())])
 
     def sum(self, terms):

@@ -166,7 +166,7 @@ class TreeKinematics:
         self._q_index = {v: i for i, v in enumerate(q)}
         self._dq_index = {v: i for i, v in enumerate(dq)}
         self.zero3 = (G.zero, G.zero, G.zero)
-        self._orientation = {}
+        self._orientation, self._partials = {}, {0: {}}
         self._build()
 
     # symbolic helpers --------------------------------------------------
@@ -362,4 +362,44 @@ class TreeKinematics:
                 e = list(out.get(i, self.zero3))
                 e[step.axis - 1] = G.add(e[step.axis - 1], column)
                 out[i] = tuple(e)
+        return out
+
+    def partial_velocities(self, k):
+        r"""
+        The partial velocities of body ``k`` in its axes: a dict mapping the
+        index `i` of each coordinate that moves it to the pair
+        `(\partial W_k/\partial\dot q_i, \partial V_{0k}/\partial\dot q_i)`
+        (angular velocity, velocity of the joint point); built body by body
+        from the parent's.
+
+        EXAMPLES: a bead at `x` on a turntable turned by `a`::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.spatial import SymbolicArithmetic
+            sage: from sage_dynsym.numerics.tree_kinematics import TreeKinematics
+            sage: a, x = var('a x')
+            sage: tree = BodyTree([TreeBody(0, rotations=[(3, a)]),
+            ....:                  TreeBody(1, joint=[x, 0, 0])], [a, x])
+            sage: TreeKinematics(tree, SymbolicArithmetic()).partial_velocities(2)
+            {0: ((0, 0, 1), (0, x, 0)), 1: ((0, 0, 0), (1, 0, 0))}
+        """
+        if k in self._partials:
+            return self._partials[k]
+        G, steps = self.G, self.body_steps[k]
+        r = steps[0].r
+        out = {i: (w, add(G, v, cross(G, w, r)))
+               for i, (w, v) in self.partial_velocities(self.parent[k]).items()}
+        for i, column in steps[0].columns.items():
+            w, v = out.get(i, (self.zero3, self.zero3))
+            out[i] = (w, add(G, v, column))
+        for step in steps[1:]:
+            out = {i: (rotate(G, step.axis, step.c, step.s, w, inverse=True),
+                       rotate(G, step.axis, step.c, step.s, v, inverse=True))
+                   for i, (w, v) in out.items()}
+            for i, column in step.columns.items():
+                w, v = out.get(i, (self.zero3, self.zero3))
+                w = list(w)
+                w[step.axis - 1] = G.add(w[step.axis - 1], column)
+                out[i] = (tuple(w), v)
+        self._partials[k] = out
         return out
