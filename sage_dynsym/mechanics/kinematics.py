@@ -267,13 +267,8 @@ class Kinematics:
             sage: Kinematics(S, SymbolicBackend()).recursive_applies()
             False
         """
-        dynamic = set(self._coordinates) | set(self._velocities) | {t}
-        for body in self._bodies:
-            data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
-            if body.velocity() is not None or any(
-                    dynamic.intersection(SR(e).variables()) for e in data):
-                return False
-        return True
+        return (self._body_tree.varying_inertia() is None
+                and all(body.velocity() is None for body in self._bodies))
 
     @cached_method
     def recursive_equations(self, gravity=None):

@@ -367,6 +367,28 @@ class BodyTree(SageObject):
         """
         return self._parents[k - 1]
 
+    def varying_inertia(self):
+        r"""
+        The index of the first body whose mass, mass centre or inertia
+        depends on the coordinates, the velocities or `t` (``None`` if
+        none does: the recursive algorithms need constant inertias).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: x, m = var('x m')
+            sage: BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x]).varying_inertia() is None
+            True
+            sage: BodyTree([TreeBody(0), TreeBody(1, mass=m*x)], [x]).varying_inertia()
+            2
+        """
+        dynamic = set(self._q) | set(self._dq) | {_t}
+        for k, body in enumerate(self._bodies, 1):
+            data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
+            if any(dynamic.intersection(SR(e).variables()) for e in data):
+                return k
+        return None
+
     def coordinates(self):
         r"""The coordinates.
 
