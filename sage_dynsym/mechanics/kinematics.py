@@ -32,7 +32,6 @@ from sage.symbolic.ring import SR
 from ..numerics.body_tree import BodyTree
 from ..numerics.newton_euler import body_forces
 from ..numerics import spatial
-from ..numerics.tree_kinematics import TreeKinematics
 from ..symbols import time_derivative, t
 from .frames import FrameTree, FrameVector, cross
 
@@ -356,8 +355,7 @@ class Kinematics:
            Applications*, McGraw-Hill 1985, chapters 5 and 6 (generalized
            inertia forces from partial velocities).
         """
-        kin = TreeKinematics(self._body_tree.with_forces(gravity=gravity),
-                             spatial.SymbolicArithmetic())
+        kin = self._body_tree.with_forces(gravity=gravity).kinematics('symbolic')
         G, n = kin.G, kin.n
         forces = body_forces(kin)
         rest = {v: 0 for v in self._velocities}

@@ -367,6 +367,53 @@ class BodyTree(SageObject):
         """
         return self._parents[k - 1]
 
+    def kinematics(self, arithmetic='symbolic', values=None):
+        r"""
+        The kinematic pass of the recursive algorithms over this tree (a
+        :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`), in
+        the arithmetic chosen (as SageManifolds' ``calc_method``):
+
+        - ``'symbolic'`` -- Sage's symbolic expressions
+          (:class:`~sage_dynsym.numerics.spatial.SymbolicArithmetic`), as
+          the symbolic equations of motion use it;
+        - ``'graph'`` -- a new
+          :class:`~sage_dynsym.numerics.graph.ExpressionGraph`, to be
+          compiled (see :func:`~sage_dynsym.numerics.recursive.graph_kinematics`;
+          ``values``: parameters folded into it as numbers);
+        - or an arithmetic object (see :mod:`~sage_dynsym.numerics.spatial`).
+
+        EXAMPLES: the Newton--Euler terms of a pendulum in both arithmetics::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.newton_euler import generalized_bias_forces
+            sage: phi, m, l, g = var('phi m l g')
+            sage: T = BodyTree([TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l])],
+            ....:              [phi], gravity=[0, 0, -g])
+            sage: generalized_bias_forces(T.kinematics())
+            [g*l*m*sin(phi)]
+            sage: K = T.kinematics('graph', {g: 9.81})
+            sage: [K.G.show(e) for e in generalized_bias_forces(K)]
+            ['(9.81*sin(x[0]))*(p[0]*p[1])']
+
+        TESTS::
+
+            sage: T.kinematics('numbers')
+            Traceback (most recent call last):
+            ...
+            AnalysisError: arithmetic: must be 'symbolic', 'graph' or an arithmetic object, got 'numbers'
+        """
+        from .tree_kinematics import TreeKinematics
+        if arithmetic == 'graph':
+            from .recursive import graph_kinematics
+            return graph_kinematics(self, values)
+        if arithmetic == 'symbolic':
+            from .spatial import SymbolicArithmetic
+            arithmetic = SymbolicArithmetic()
+        elif isinstance(arithmetic, str) or not hasattr(arithmetic, 'mul'):
+            raise AnalysisError(f"must be 'symbolic', 'graph' or an arithmetic object, got "
+                                f"{arithmetic!r}", entry="arithmetic")
+        return TreeKinematics(self, arithmetic)
+
     def varying_inertia(self):
         r"""
         The index of the first body whose mass, mass centre or inertia

@@ -561,7 +561,7 @@ class RecursiveForm:
             ['abs(p[1]) - (1e-12*abs(p[1] + (p[1] + p[1])))']
         """
         if self._graph is None:
-            kin = graph_kinematics(self._tree, self._values)
+            kin = self._tree.kinematics('graph', self._values)
             ddq, pivots, self._solver = tree_accelerations(kin, self._solver)
             n = len(ddq)
             G = kin.G
