@@ -166,7 +166,7 @@ class TreeKinematics:
         self._q_index = {v: i for i, v in enumerate(q)}
         self._dq_index = {v: i for i, v in enumerate(dq)}
         self.zero3 = (G.zero, G.zero, G.zero)
-        self._orientation, self._partials = {}, {0: {}}
+        self._orientation, self._partial = {}, {False: {0: {}}, True: {0: {}}}
         self._build()
 
     # symbolic helpers --------------------------------------------------
@@ -352,17 +352,7 @@ class TreeKinematics:
             sage: TreeKinematics(tree, SymbolicArithmetic()).partial_angular_velocities(1)
             {0: (0, sin(b), cos(b)), 1: (1, 0, 0)}
         """
-        if k == 0:
-            return {}
-        G, out = self.G, dict(self.partial_angular_velocities(self.parent[k]))
-        for step in self.body_steps[k][1:]:
-            out = {i: rotate(G, step.axis, step.c, step.s, e, inverse=True)
-                   for i, e in out.items()}
-            for i, column in step.columns.items():
-                e = list(out.get(i, self.zero3))
-                e[step.axis - 1] = G.add(e[step.axis - 1], column)
-                out[i] = tuple(e)
-        return out
+        return {i: w for i, (w, _) in self._partials(k, False).items()}
 
     def partial_velocities(self, k):
         r"""
@@ -383,23 +373,29 @@ class TreeKinematics:
             sage: TreeKinematics(tree, SymbolicArithmetic()).partial_velocities(2)
             {0: ((0, 0, 1), (0, x, 0)), 1: ((0, 0, 0), (1, 0, 0))}
         """
-        if k in self._partials:
-            return self._partials[k]
+        return self._partials(k, True)
+
+    def _partials(self, k, linear):
+        # the partial angular velocities of body k, with those of its joint
+        # point if ``linear`` (else None), built from the parent's
+        if k in self._partial[linear]:
+            return self._partial[linear][k]
         G, steps = self.G, self.body_steps[k]
         r = steps[0].r
-        out = {i: (w, add(G, v, cross(G, w, r)))
-               for i, (w, v) in self.partial_velocities(self.parent[k]).items()}
-        for i, column in steps[0].columns.items():
-            w, v = out.get(i, (self.zero3, self.zero3))
-            out[i] = (w, add(G, v, column))
+        out = {i: (w, add(G, v, cross(G, w, r)) if linear else None)
+               for i, (w, v) in self._partials(self.parent[k], linear).items()}
+        if linear:
+            for i, column in steps[0].columns.items():
+                w, v = out.get(i, (self.zero3, self.zero3))
+                out[i] = (w, add(G, v, column))
         for step in steps[1:]:
             out = {i: (rotate(G, step.axis, step.c, step.s, w, inverse=True),
-                       rotate(G, step.axis, step.c, step.s, v, inverse=True))
+                       rotate(G, step.axis, step.c, step.s, v, inverse=True) if linear else None)
                    for i, (w, v) in out.items()}
             for i, column in step.columns.items():
-                w, v = out.get(i, (self.zero3, self.zero3))
+                w, v = out.get(i, (self.zero3, self.zero3 if linear else None))
                 w = list(w)
                 w[step.axis - 1] = G.add(w[step.axis - 1], column)
                 out[i] = (tuple(w), v)
-        self._partials[k] = out
+        self._partial[linear][k] = out
         return out
