@@ -105,3 +105,11 @@ def test_the_mechanics_equations_use_the_same_recursion():
     assert all(_zero(A[i][j] - M_REF[i, j]) for i in range(2) for j in range(2))
     assert all(_zero(h[i] - H_REF[i]) for i in range(2))
     assert A1 == [0, 0] and T0 == 0
+
+
+def test_inverse_dynamics_is_the_textbook_left_hand_side():
+    from sage_dynsym.numerics.newton_euler import inverse_dynamics
+    ddq1, ddq2 = var('ddq1 ddq2')
+    tau = inverse_dynamics(_tree().kinematics('symbolic'), [ddq1, ddq2])
+    reference = M_REF * vector(SR, [ddq1, ddq2]) + H_REF
+    assert all(_zero(a - b) for a, b in zip(tau, reference))

@@ -36,7 +36,8 @@ from sage.symbolic.ring import SR
 
 from .spatial import add, cross, matvec, rotate, scale
 
-__all__ = ['body_forces', 'generalized_bias_forces', 'project', 'velocity_corrections',
+__all__ = ['body_forces', 'generalized_bias_forces', 'generalized_forces', 'inverse_dynamics',
+           'velocity_corrections',
            'applied_forces', 'forcing']
 
 
@@ -91,16 +92,16 @@ def generalized_bias_forces(kin):
 
     EXAMPLES: see the module documentation.
     """
-    return project(kin, body_forces(kin))
+    return generalized_forces(kin, body_forces(kin))
 
 
-def project(kin, forces):
+def generalized_forces(kin, forces):
     r"""
     The generalized forces `\sum_k \partial V_{0k}/\partial\dot q_i\cdot f_k
     + \partial W_k/\partial\dot q_i\cdot n_k` of the forces ``forces`` (a dict:
     body `k` -> `(f_k, n_k)` about its joint point, in its axes), summed from
-    the leaves and projected on the joints ([Fea2008]_, Table 5.1). The
-    dict is changed (it receives the sums over the subtrees).
+    the leaves and projected on the joints: the backward pass of the
+    recursive Newton--Euler algorithm ([Fea2008]_, Table 5.1).
 
     EXAMPLES: on a bead at `x` on a turntable turned by `a`, a force `F`
     along the table acts on `x` only, a force `F` across it on `a` only,
@@ -109,17 +110,18 @@ def project(kin, forces):
         sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
         sage: from sage_dynsym.numerics.spatial import SymbolicArithmetic
         sage: from sage_dynsym.numerics.tree_kinematics import TreeKinematics
-        sage: from sage_dynsym.numerics.newton_euler import project
+        sage: from sage_dynsym.numerics.newton_euler import generalized_forces
         sage: a, x, F = var('a x F')
         sage: tree = BodyTree([TreeBody(0, rotations=[(3, a)]), TreeBody(1, joint=[x, 0, 0])],
         ....:                 [a, x])
         sage: K = TreeKinematics(tree, SymbolicArithmetic())
-        sage: project(K, {1: ((0, 0, 0), (0, 0, 0)), 2: ((F, 0, 0), (0, 0, 0))})
+        sage: generalized_forces(K, {1: ((0, 0, 0), (0, 0, 0)), 2: ((F, 0, 0), (0, 0, 0))})
         [0, F]
-        sage: project(K, {1: ((0, 0, 0), (0, 0, 0)), 2: ((0, F, 0), (0, 0, 0))})
+        sage: generalized_forces(K, {1: ((0, 0, 0), (0, 0, 0)), 2: ((0, F, 0), (0, 0, 0))})
         [F*x, 0]
     """
     G, n = kin.G, kin.n
+    forces = dict(forces)
     forces[0] = (kin.zero3, kin.zero3)
     tau = [[] for _ in range(n)]
     for k in range(len(kin.tree.bodies()), 0, -1):
@@ -131,6 +133,54 @@ def project(kin, forces):
         j = kin.parent[k]
         forces[j] = (add(G, forces[j][0], f), add(G, forces[j][1], nk))
     return [G.sum(parts) for parts in tau]
+
+
+def inverse_dynamics(kin, ddq):
+    r"""
+    The generalized forces `\tau(q, \dot q, \ddot q)` of the motion of the
+    bodies with the accelerations ``ddq`` (scalars of the arithmetic),
+    loads subtracted: the accelerations that ``ddq`` adds to each frame
+    propagated from the root, then :func:`generalized_forces` (the
+    recursive Newton--Euler algorithm, [Fea2008]_ Table 5.1). Lagrange's
+    equations of the tree are `\tau = Q`, `Q` the applied generalized forces.
+
+    EXAMPLES: a slider of mass 2 on `x`, `\tau = 2\ddot x`; and the
+    textbook pendulum `\tau = m l^2\ddot\varphi + m g l\sin\varphi`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.newton_euler import inverse_dynamics
+        sage: x, ddx = var('x ddx')
+        sage: K = BodyTree([TreeBody(0, joint=[x, 0, 0], mass=2)], [x]).kinematics('graph')
+        sage: K.G.show(inverse_dynamics(K, [K.G.input('x', 2)])[0])
+        'x[2]*2.0'
+        sage: phi, ddphi, m, l, g = var('phi ddphi m l g')
+        sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
+        ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
+        sage: K = BodyTree([rod], [phi], gravity=[0, 0, -g]).kinematics()
+        sage: inverse_dynamics(K, [ddphi])
+        [ddphi*l^2*m + g*l*m*sin(phi)]
+    """
+    G = kin.G
+    forces = body_forces(kin)
+    extra = {0: (kin.zero3, kin.zero3)}
+    for k, body in enumerate(kin.tree.bodies(), 1):
+        alpha, a = extra[kin.parent[k]]
+        for step in kin.body_steps[k]:
+            if step.rotation:
+                alpha = list(rotate(G, step.axis, step.c, step.s, alpha, inverse=True))
+                a = rotate(G, step.axis, step.c, step.s, a, inverse=True)
+                alpha[step.axis - 1] = G.add(alpha[step.axis - 1], G.sum(
+                    [G.mul(column, ddq[i]) for i, column in step.columns.items()]))
+                alpha = tuple(alpha)
+            else:
+                a = add(G, a, cross(G, alpha, step.r),
+                        *[scale(G, ddq[i], column) for i, column in step.columns.items()])
+        extra[k] = (alpha, a)
+        m, h, Theta = kin.inertia(body)
+        f, nk = forces[k]
+        forces[k] = (add(G, f, scale(G, m, a), cross(G, alpha, h)),
+                     add(G, nk, matvec(G, Theta, alpha), cross(G, h, a)))
+    return generalized_forces(kin, forces)
 
 
 def _prescribed(kin):

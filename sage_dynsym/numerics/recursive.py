@@ -64,11 +64,12 @@ from .articulated_body import articulated_accelerations
 from .composite_body import mass_matrix
 from .form import constraint_terms, deferred, velocity_constraint_terms
 from .graph import ExpressionGraph, SymbolicConverter
-from .newton_euler import applied_forces, forcing
+from .newton_euler import applied_forces, forcing, generalized_forces, inverse_dynamics
 from .tree_kinematics import TreeKinematics, not_applicable, tree_order
 from .tree_solve import PIVOT_TOLERANCE, dense_solve, ltdl
 
 __all__ = ['RecursiveForm', 'unsupported', 'tree_accelerations', 'graph_kinematics',
+           'generalized_forces', 'inverse_dynamics',
            'check_backend', 'compiled_library', 'optimization', 'LARGE_GRAPH',
            'PIVOT_TOLERANCE']
 
@@ -356,6 +357,26 @@ class RecursiveForm:
                 f"({', '.join(map(str, self._tree.coordinates()))}), parameters "
                 f"({', '.join(map(str, self.parameters()))})")
 
+    def kinematics(self):
+        r"""
+        A new kinematic pass of the tree over a new expression graph, the
+        parameter values of the form folded in (see
+        :func:`graph_kinematics`): for code built from the same algorithms,
+        such as the inverse dynamics
+        (:func:`~sage_dynsym.numerics.newton_euler.inverse_dynamics`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: x, m = var('x m')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x]),
+            ....:                   values={m: 2})
+            sage: K = F.kinematics(); K.n, K.G.show(K.convert(m*x))
+            (1, 'x[0]*2.0')
+        """
+        return self._tree.kinematics('graph', self._values)
+
     def tree(self):
         r"""The :class:`~sage_dynsym.numerics.body_tree.BodyTree`.
 
@@ -561,7 +582,7 @@ class RecursiveForm:
             ['abs(p[1]) - (1e-12*abs(p[1] + (p[1] + p[1])))']
         """
         if self._graph is None:
-            kin = self._tree.kinematics('graph', self._values)
+            kin = self.kinematics()
             ddq, pivots, self._solver = tree_accelerations(kin, self._solver)
             n = len(ddq)
             G = kin.G
