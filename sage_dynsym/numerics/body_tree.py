@@ -1,12 +1,18 @@
 r"""
-Trees of rigid bodies as neutral data for the recursive numerics
+Trees of rigid bodies: the description the rigid-body recursions read
 
-The recursive right-hand side (:mod:`~sage_dynsym.numerics.recursive`)
-does not know the classes that describe mechanical systems: a model hands
-over its bodies and forces as a :class:`BodyTree` of :class:`TreeBody`
-records -- the fields of a body in :doc:`the method </method>` (parent,
-elementary rotations, joint point, relative velocity, mass centre, mass,
-inertia tensor about the joint point) -- with the forces acting on them:
+A :class:`BodyTree` is the one description of a tree of rigid bodies that
+the recursive algorithms (:meth:`BodyTree.kinematics`, in the arithmetic
+chosen) read, for the compiled right-hand side
+(:mod:`~sage_dynsym.numerics.recursive`) and for the symbolic recursive
+equations of :mod:`~sage_dynsym.mechanics.kinematics` alike. It does not
+know the classes that describe mechanical systems: it holds bodies with the
+fields of a body in :doc:`the method </method>` (elementary rotations,
+joint point, relative velocity, mass centre, mass, inertia tensor about the
+joint point) -- a system's own
+:class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, or
+:class:`TreeBody` records -- with their parents' indices and the forces
+acting on them:
 uniform gravity, loads (:class:`TreeLoad`), a force function given only as
 an expression, a Rayleigh dissipation function, generalized forces,
 holonomic constraints and constraints on the velocities (rolling without
