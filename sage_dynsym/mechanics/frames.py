@@ -35,10 +35,10 @@ EXAMPLES::
 import operator
 
 from sage.matrix.constructor import matrix
-from sage.symbolic.operators import add_vararg
 from sage.symbolic.ring import SR
 
 from ..algebra.trigonometric import symbolic_trig
+from ..numerics.spatial import held_product  # noqa: F401 (the product of its users here)
 
 
 def rotation_matrix(axis, angle):
@@ -93,28 +93,6 @@ def _rotate(components, axis, trig, inverse=False, product=operator.mul):
     out[i] = product(c, components[i]) + product(-s, components[j])
     out[j] = product(s, components[i]) + product(c, components[j])
     return tuple(out)
-
-
-def held_product(a, b):
-    r"""
-    `a b`, left unevaluated when a factor is a sum (and none a number): Sage's
-    evaluation of a product of large nested sums costs far more than the
-    product itself (tenths of a second each for the chain of 15 links with
-    numerical data of ``bench/bench_pipeline.py``), and the recursive
-    equations multiply such sums throughout.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.mechanics.frames import held_product
-        sage: x, y = var('x y')
-        sage: held_product(x + y, x - y), held_product(x, y), held_product(2, x + y)
-        ((x + y)*(x - y), x*y, 2*x + 2*y)
-    """
-    a, b = SR(a), SR(b)
-    if a.is_numeric() or b.is_numeric() or not (a.operator() is add_vararg
-                                                or b.operator() is add_vararg):
-        return a * b
-    return a.mul(b, hold=True)
 
 
 class FrameTree:
@@ -245,7 +223,8 @@ class FrameTree:
         r"""
         Components in frame ``target`` of the vector with ``components`` in
         frame ``source``; rotates only through the frames between them
-        (``product``: the multiplication, e.g. :func:`held_product`).
+        (``product``: the multiplication, e.g.
+        :func:`~sage_dynsym.numerics.spatial.held_product`).
 
         EXAMPLES::
 

@@ -29,14 +29,18 @@ from sage.misc.verbose import verbose
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
+from ..numerics.body_tree import BodyTree
+from ..numerics.newton_euler import body_forces
+from ..numerics import spatial
 from ..symbols import time_derivative, t
-from .frames import FrameTree, FrameVector, cross, held_product
+from .frames import FrameTree, FrameVector, cross
 
 
 class Kinematics:
     r"""
     Velocities, positions and kinetic-energy decompositions of the bodies of
-    ``system``, with the arithmetic of ``backend``
+    ``system`` (a :class:`~sage_dynsym.numerics.body_tree.BodyTree`, or a
+    mechanical system: then the tree of its bodies), with the arithmetic of ``backend``
     (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend` or
     :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`).
 
@@ -55,10 +59,14 @@ class Kinematics:
     """
 
     def __init__(self, system, backend):
-        self._system = system
+        if not isinstance(system, BodyTree):
+            bodies = system.bodies()
+            system = BodyTree(bodies, system.coordinates(),
+                              parents=[system.parent_index(k) for k in range(1, len(bodies) + 1)])
+        self._body_tree = system
         self._backend = backend
         self._bodies = system.bodies()
-        self._parents = [None] + [system.parent_index(k) for k in range(1, len(self._bodies) + 1)]
+        self._parents = [None] + [system.parent(k) for k in range(1, len(self._bodies) + 1)]
         self._coordinates = system.coordinates()
         self._velocities = system.velocities()
         self.tree = FrameTree(trig=backend.trig, zero=backend.zero)
@@ -66,6 +74,29 @@ class Kinematics:
         for k, body in enumerate(self._bodies, 1):
             self._frames.append(self.tree.add_rotations(self._frames[self._parents[k]],
                                                         body.rotations()))
+
+    def body_tree(self):
+        r"""
+        The :class:`~sage_dynsym.numerics.body_tree.BodyTree` whose
+        kinematics this is: the system's own bodies with their parents'
+        indices and the coordinates, the description the recursive
+        numerics read too.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
+            sage: S = load(example_path('spherical_pendulum.yaml'))
+            sage: T = Kinematics(S, SymbolicBackend()).body_tree(); T
+            Tree of 1 body in (psi, theta), parameters (l, m)
+            sage: T.bodies()[0] is S.bodies()[0]
+            True
+            sage: Kinematics(T, SymbolicBackend()).angular_velocity(1).components(0)
+            (dtheta*cos(psi), dtheta*sin(psi), dpsi)
+        """
+        return self._body_tree
 
     def backend(self):
         r"""The arithmetic backend (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`
@@ -235,13 +266,8 @@ class Kinematics:
             sage: Kinematics(S, SymbolicBackend()).recursive_applies()
             False
         """
-        dynamic = set(self._coordinates) | set(self._velocities) | {t}
-        for body in self._bodies:
-            data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
-            if body.velocity() is not None or any(
-                    dynamic.intersection(SR(e).variables()) for e in data):
-                return False
-        return True
+        return (self._body_tree.varying_inertia() is None
+                and all(body.velocity() is None for body in self._bodies))
 
     @cached_method
     def recursive_equations(self, gravity=None):
@@ -273,9 +299,17 @@ class Kinematics:
 
         The accelerations' terms give the mass matrix `A`; the rest, at zero
         accelerations, the terms `h_i` in the velocities (and time). The
-        kinematic quantities are built frame by frame (one elementary
-        rotation at a time) and never expanded, so the equations of a long
-        chain stay far shorter than their expanded form.
+        kinematic quantities and the forces on the bodies are those of the
+        recursion of the compiled numerics, run in the symbolic arithmetic
+        (:class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`,
+        :func:`~sage_dynsym.numerics.newton_euler.body_forces` over
+        :class:`~sage_dynsym.numerics.spatial.SymbolicArithmetic`): built
+        frame by frame (one elementary rotation at a time) and never
+        expanded, so the equations of a long chain stay far shorter than
+        their expanded form. Each body's force is paired with its own
+        partial velocities (rather than summed up the tree as the compiled
+        code does, whose graph shares the sums): a symbolic expression is a
+        tree, and nested sums of forces would grow with the depth.
 
         OUTPUT: a tuple ``(A, A1, T0, h)``: the decomposition (4) of the
         kinetic energy (nested lists and an expression) and the list of `h_i`,
@@ -321,125 +355,42 @@ class Kinematics:
            Applications*, McGraw-Hill 1985, chapters 5 and 6 (generalized
            inertia forces from partial velocities).
         """
-        n = len(self._coordinates)
-        tree, zero = self.tree, SR(0)
-        no_acceleration = [0] * n
-
-        def rate(expr):
-            # time derivative at zero accelerations
-            return time_derivative(expr, self._coordinates, self._velocities, no_acceleration)
-
-        def at_rest(expr):
-            return SR(expr).subs({v: 0 for v in self._velocities})
-
-        def partials(expr):
-            return [SR(expr).diff(v) for v in self._velocities]
-
-        # per frame, in its own axes: W, its value at rest W0, the angular
-        # acceleration at zero accelerations, the partial angular velocities
-        W, W0, eps, JW = {0: _ZERO3}, {0: _ZERO3}, {0: _ZERO3}, {0: [None] * n}
-        # every frame lies on the path of some body; parents come first
-        frames = sorted(set().union(*[tree.path_to_root(f) for f in self._frames]) - {0})
-        for f in frames:
-            p, axis = tree.parent(f), tree.axis(f)
-
-            def down(v, p=p, f=f):
-                # components in f of the vector with components v in p
-                return tree.express(v, p, f, product=held_product)
-
-            angle_rate = rate(tree.angle(f))
-            w = down(W[p])
-            W[f] = _plus_axis(w, axis, angle_rate)
-            W0[f] = _plus_axis(down(W0[p]), axis, at_rest(angle_rate))
-            # d/dt (rate e) = (rate)' e + rate W_parent x e
-            spin = _plus_axis(_ZERO3, axis, angle_rate)
-            eps[f] = _add(_plus_axis(down(eps[p]), axis, rate(angle_rate)), cross(w, spin))
-            JW[f] = [_plus_axis(None if J is None else down(J), axis, d)
-                     for J, d in zip(JW[p], partials(angle_rate))]
-        # per body, in its own axes: V0k at rest, a0k at zero accelerations,
-        # the partial velocities
-        base = _ZERO3 if gravity is None else tuple(-SR(g) for g in gravity)
-        V0, acc, JV = {0: _ZERO3}, {0: base}, {0: [None] * n}
+        kin = self._body_tree.with_forces(gravity=gravity).kinematics('symbolic')
+        G, n = kin.G, kin.n
+        forces = body_forces(kin)
+        rest = {v: 0 for v in self._velocities}
+        moving = [False]
+        for k, body in enumerate(self._bodies, 1):
+            own = [angle for _, angle in body.rotations()] + list(body.joint())
+            moving.append(moving[self._parents[k]] or any(SR(e).has(t) for e in own))
         A = [[[] for _ in range(n)] for _ in range(n)]
         A1, T0, h = [[] for _ in range(n)], [], [[] for _ in range(n)]
         for k, body in enumerate(self._bodies, 1):
-            j = self._parents[k]
-            fj, fk = self._frames[j], self._frames[k]
-            r = [SR(c) for c in body.joint()]
-            dr = [rate(c) for c in r]
-            w, e = W[fj], eps[fj]
-            a = _add(acc[j], cross(e, r), cross(w, cross(w, r)),
-                     [2 * c for c in cross(w, dr)], [rate(c) for c in dr])
-            acc[k] = tree.express(a, fj, fk, product=held_product)
-            V0[k] = tree.express(_add(V0[j], cross(W0[fj], r), [at_rest(c) for c in dr]),
-                                 fj, fk, product=held_product)
-            dr_partials = [partials(c) for c in dr]
-            JV[k] = []
-            for i in range(n):
-                parts = [J for J in (JV[j][i], None if JW[fj][i] is None else cross(JW[fj][i], r),
-                                     [d[i] for d in dr_partials]) if J is not None]
-                J = _add(*parts)
-                JV[k].append(None if all(x.is_trivial_zero() for x in J)
-                             else tree.express(J, fj, fk, product=held_product))
             if body.is_massless():
                 continue
-            m = SR(body.mass())
-            c = [SR(x) for x in body.mass_center()]
-            inertia = body.inertia()
+            J = kin.partial_velocities(k)
+            m, mc, Theta = kin.inertia(body)
 
-            # the nonzero entries (a symbolic truth test would try to prove them nonzero)
-            rows = [[(b, inertia[a, b]) for b in range(3) if not inertia[a, b].is_trivial_zero()]
-                    for a in range(3)]
+            def momentum(W, V, m=m, mc=mc, Theta=Theta):
+                # the linear and angular momentum (about O_k) of velocities W, V
+                return (spatial.add(G, spatial.scale(G, m, V), spatial.cross(G, W, mc)),
+                        spatial.add(G, spatial.matvec(G, Theta, W), spatial.cross(G, mc, V)))
 
-            def Theta(u):
-                return [zero.add(*[x * u[b] for b, x in row]) for row in rows]
+            def pair(motion, P):
+                # the power of the force P = (f, n) in the motion (W, V)
+                return G.add(G.dot(motion[1], P[0]), G.dot(motion[0], P[1]))
 
-            def momentum(V, Wv):
-                # the linear and angular momentum (about O_k) of velocities V, W
-                return [m * x for x in _add(V, cross(Wv, c))], _add(
-                    Theta(Wv), [m * x for x in cross(c, V)])
-
-            def pair(V, Wv, P):
-                # <(V, W), (F, M)>; None stands for zero
-                return zero.add(*[_dot(X, Y) for X, Y in zip((V, Wv), P) if X is not None])
-
-            w, e, a = W[fk], eps[fk], acc[k]
-            force = ([m * x for x in _add(a, cross(e, c), cross(w, cross(w, c)))],
-                     _add(Theta(e), cross(w, Theta(w)), [m * x for x in cross(c, a)]))
-            rest = momentum(V0[k], W0[fk])
-            T0.append(pair(V0[k], W0[fk], rest) / 2)
-            for i in range(n):
-                if JV[k][i] is None and JW[fk][i] is None:
-                    continue
-                h[i].append(pair(JV[k][i], JW[fk][i], force))
-                A1[i].append(pair(JV[k][i], JW[fk][i], rest))
-                column = momentum(JV[k][i] or _ZERO3, JW[fk][i] or _ZERO3)
-                for s in range(i, n):
-                    if JV[k][s] is not None or JW[fk][s] is not None:
-                        A[i][s].append(pair(JV[k][s], JW[fk][s], column))
-        A = [[zero.add(*A[min(i, s)][max(i, s)]) for s in range(n)] for i in range(n)]
-        return A, [zero.add(*x) for x in A1], zero.add(*T0), [zero.add(*x) for x in h]
-
-
-_ZERO3 = (SR(0), SR(0), SR(0))
-
-
-def _add(*vectors):
-    return tuple(SR(0).add(*components) for components in zip(*vectors))
-
-
-def _dot(u, w):
-    return SR(0).add(*[held_product(a, b) for a, b in zip(u, w)
-                       if not (a.is_trivial_zero() or b.is_trivial_zero())])
-
-
-def _plus_axis(vector, axis, value):
-    # ``vector`` (None: zero) plus ``value`` times the unit vector of ``axis``;
-    # None if the result is zero
-    if vector is None:
-        if SR(value).is_trivial_zero():
-            return None
-        vector = _ZERO3
-    vector = list(vector)
-    vector[axis - 1] += value
-    return tuple(vector)
+            # the velocities at rest (only a rheonomic joint moves the body)
+            motion = (tuple(tuple(SR(x).subs(rest) for x in u) for u in kin.state[k][:2])
+                      if moving[k] else (kin.zero3, kin.zero3))
+            at_rest = momentum(*motion)
+            T0.append(pair(motion, at_rest) / 2)
+            for i in sorted(J):
+                h[i].append(pair(J[i], forces[k]))
+                A1[i].append(pair(J[i], at_rest))
+                column = momentum(*J[i])
+                for s in sorted(J):
+                    if s >= i:
+                        A[i][s].append(pair(J[s], column))
+        A = [[G.sum(A[min(i, s)][max(i, s)]) for s in range(n)] for i in range(n)]
+        return A, [G.sum(x) for x in A1], G.sum(T0), [G.sum(x) for x in h]

@@ -36,7 +36,7 @@ EXAMPLES::
 import logging
 
 from ..errors import ModelError
-from ..numerics.body_tree import BodyTree, TreeBody, TreeLoad
+from ..numerics.body_tree import BodyTree, TreeLoad
 from ..numerics.methods import object_cache
 from ..numerics.recursive import RecursiveForm, unsupported
 from .force_functions import split_force_terms
@@ -48,7 +48,9 @@ ALGORITHMS = ('auto', 'recursive', 'equations')
 
 def body_tree(system):
     r"""
-    The :class:`~sage_dynsym.numerics.body_tree.BodyTree` of ``system``.
+    The :class:`~sage_dynsym.numerics.body_tree.BodyTree` of ``system``:
+    the tree holds the system's own bodies (no copy of them), with their
+    parents' indices.
 
     Uniform gravity becomes the tree's gravity; the other terms of the
     force function (Newtonian fields, expressions) are evaluated
@@ -65,10 +67,7 @@ def body_tree(system):
         sage: T = body_tree(S); T.gravity(), T.potential(), T.loads()
         ((0, 0, -g), -1/2*k*x^2, [Tree load on body 1 at (0, 0, 0): force (0, 0, F), torque None, axes 0])
     """
-    bodies = [TreeBody(system.parent_index(k), rotations=body.rotations(), joint=body.joint(),
-                       velocity=body.velocity(), mass=body.mass(),
-                       mass_center=body.mass_center(), inertia=body.inertia(), name=body.name())
-              for k, body in enumerate(system.bodies(), 1)]
+    bodies = system.bodies()
     gravity, potential = split_force_terms(system.force_terms(), system.kinematics())
     loads = []
     for i, load in enumerate(system.loads()):
@@ -78,6 +77,7 @@ def body_tree(system):
                               axes=axes))
     # the generalized forces given as such (those of the loads come from the tree)
     return BodyTree(bodies, system.coordinates(), gravity=gravity, loads=loads,
+                    parents=[system.parent_index(k) for k in range(1, len(bodies) + 1)],
                     potential=potential, dissipation=system.dissipation(),
                     forces=system.given_forces(),
                     constraints=system.constraints(),

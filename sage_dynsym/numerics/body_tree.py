@@ -1,12 +1,18 @@
 r"""
-Trees of rigid bodies as neutral data for the recursive numerics
+Trees of rigid bodies: the description the rigid-body recursions read
 
-The recursive right-hand side (:mod:`~sage_dynsym.numerics.recursive`)
-does not know the classes that describe mechanical systems: a model hands
-over its bodies and forces as a :class:`BodyTree` of :class:`TreeBody`
-records -- the fields of a body in :doc:`the method </method>` (parent,
-elementary rotations, joint point, relative velocity, mass centre, mass,
-inertia tensor about the joint point) -- with the forces acting on them:
+A :class:`BodyTree` is the one description of a tree of rigid bodies that
+the recursive algorithms (:meth:`BodyTree.kinematics`, in the arithmetic
+chosen) read, for the compiled right-hand side
+(:mod:`~sage_dynsym.numerics.recursive`) and for the symbolic recursive
+equations of :mod:`~sage_dynsym.mechanics.kinematics` alike. It does not
+know the classes that describe mechanical systems: it holds bodies with the
+fields of a body in :doc:`the method </method>` (elementary rotations,
+joint point, relative velocity, mass centre, mass, inertia tensor about the
+joint point) -- a system's own
+:class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, or
+:class:`TreeBody` records -- with their parents' indices and the forces
+acting on them:
 uniform gravity, loads (:class:`TreeLoad`), a force function given only as
 an expression, a Rayleigh dissipation function, generalized forces,
 holonomic constraints and constraints on the velocities (rolling without
@@ -173,9 +179,36 @@ class TreeBody(SageObject):
             sage: len(TreeBody(0).expressions())
             16
         """
-        out = [angle for _, angle in self._rotations] + list(self._joint)
-        out += list(self._velocity or ()) + [self._mass] + list(self._mass_center)
-        return out + self._inertia.list()
+        return body_expressions(self)
+
+    def is_massless(self):
+        r"""Whether mass and inertia are both zero (a body that only carries a frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import TreeBody
+            sage: TreeBody(0).is_massless(), TreeBody(0, mass=1).is_massless()
+            (True, False)
+        """
+        return self._mass.is_zero() and self._inertia.is_zero()
+
+
+def body_expressions(body):
+    r"""
+    Every expression of ``body`` (a :class:`TreeBody`, or any body with its
+    methods, such as a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`):
+    angles, joint, velocity, mass, mass centre, inertia, for finding its
+    symbols.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.body_tree import TreeBody, body_expressions
+        sage: body_expressions(TreeBody(0, rotations=[(3, var('a'))], mass=var('m')))[:5]
+        [a, 0, 0, 0, m]
+    """
+    out = [angle for _, angle in body.rotations()] + list(body.joint())
+    out += list(body.velocity() or ()) + [body.mass()] + list(body.mass_center())
+    return out + body.inertia().list()
 
 
 class TreeLoad(SageObject):
@@ -225,7 +258,10 @@ class BodyTree(SageObject):
 
     INPUT:
 
-    - ``bodies`` -- list of :class:`TreeBody`, parents before children
+    - ``bodies`` -- list of :class:`TreeBody`, parents before children, or
+      of other bodies with their methods (the
+      :class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects of a
+      mechanical system: the tree holds them, it does not copy them)
     - ``coordinates`` -- the generalized coordinates (symbols); the
       velocities are their ``d<q>`` symbols
     - ``gravity`` -- (optional) the acceleration of a uniform gravity field
@@ -240,6 +276,8 @@ class BodyTree(SageObject):
       `g_k = A_k(q, t)\dot q + b_k(q, t) = 0`, linear in them
     - ``parameters`` -- (optional) the parameters in the order wanted;
       default the other symbols, sorted by name
+    - ``parents`` -- (optional) per body the 1-based index of its parent,
+      0 for the inertial frame; default the bodies' own ``parent()``
 
     The equations are those of the Lagrangian `T + U` (`U` of gravity and
     ``potential``) with `\partial R/\partial \dot q_i - Q_i` and the
@@ -263,12 +301,15 @@ class BodyTree(SageObject):
     """
 
     def __init__(self, bodies, coordinates, gravity=None, loads=(), potential=0, dissipation=0,
-                 forces=None, constraints=(), velocity_constraints=(), parameters=None):
+                 forces=None, constraints=(), velocity_constraints=(), parameters=None,
+                 parents=None):
         self._bodies = list(bodies)
-        for k, body in enumerate(self._bodies, 1):
-            if not 0 <= body.parent() < k:
+        self._parents = [body.parent() for body in self._bodies] if parents is None else [
+            int(j) for j in parents]
+        for k, j in enumerate(self._parents, 1):
+            if not (isinstance(j, int) and 0 <= j < k):
                 raise AnalysisError(f"the parent of body {k} must be an earlier body or 0, got "
-                                    f"{body.parent()}", entry="body tree")
+                                    f"{j}", entry="body tree")
         self._q = [SR(q) for q in coordinates]
         self._dq = [velocity(q) for q in self._q]
         self._gravity = None if gravity is None else _vector(gravity, "gravity")
@@ -287,21 +328,14 @@ class BodyTree(SageObject):
                 raise AnalysisError(f"the velocity constraint {g} is not linear in the "
                                     f"velocities ({', '.join(map(str, self._dq))})",
                                     entry="body tree")
-        if parameters is None:
-            hidden = {str(v) for v in self._q + self._dq + [_t]}
-            found = {}
-            for e in self.expressions():
-                for v in SR(e).variables():
-                    if str(v) not in hidden:
-                        found[str(v)] = v
-            parameters = [found[k] for k in sorted(found)]
-        self._parameters = [SR(p) for p in parameters]
+        # found when first asked for: the symbolic kinematics never needs them
+        self._parameters = None if parameters is None else [SR(p) for p in parameters]
 
     def _repr_(self):
         n = len(self._bodies)
         return (f"Tree of {n} bod{'y' if n == 1 else 'ies'} in "
                 f"({', '.join(map(str, self._q))}), parameters "
-                f"({', '.join(map(str, self._parameters))})")
+                f"({', '.join(map(str, self.parameters()))})")
 
     def bodies(self):
         r"""The :class:`TreeBody` records, parents first.
@@ -309,6 +343,104 @@ class BodyTree(SageObject):
         EXAMPLES: see the module documentation.
         """
         return list(self._bodies)
+
+    def with_forces(self, **forces):
+        r"""
+        The tree of the same bodies (not copied) and coordinates with the
+        forces ``forces`` (the keywords of the class: ``gravity``,
+        ``loads``, ``potential``, ...) instead of these.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: x = var('x'); T = BodyTree([TreeBody(0, joint=[x, 0, 0], mass=1)], [x])
+            sage: U = T.with_forces(gravity=[-10, 0, 0]); U
+            Tree of 1 body in (x), parameters ()
+            sage: U.gravity(), U.bodies()[0] is T.bodies()[0]
+            ((-10, 0, 0), True)
+        """
+        return BodyTree(self._bodies, self._q, parents=self._parents, **forces)
+
+    def parent(self, k):
+        r"""The index of the parent of body ``k`` (1-based; 0: the inertial frame).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: T = BodyTree([TreeBody(0), TreeBody(1), TreeBody(1)], [])
+            sage: [T.parent(k) for k in (1, 2, 3)]
+            [0, 1, 1]
+        """
+        return self._parents[k - 1]
+
+    def kinematics(self, arithmetic='symbolic', values=None):
+        r"""
+        The kinematic pass of the recursive algorithms over this tree (a
+        :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`), in
+        the arithmetic chosen (as SageManifolds' ``calc_method``):
+
+        - ``'symbolic'`` -- Sage's symbolic expressions
+          (:class:`~sage_dynsym.numerics.spatial.SymbolicArithmetic`), as
+          the symbolic equations of motion use it;
+        - ``'graph'`` -- a new
+          :class:`~sage_dynsym.numerics.graph.ExpressionGraph`, to be
+          compiled (see :func:`~sage_dynsym.numerics.recursive.graph_kinematics`;
+          ``values``: parameters folded into it as numbers);
+        - or an arithmetic object (see :mod:`~sage_dynsym.numerics.spatial`).
+
+        EXAMPLES: the Newton--Euler terms of a pendulum in both arithmetics::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.newton_euler import generalized_bias_forces
+            sage: phi, m, l, g = var('phi m l g')
+            sage: T = BodyTree([TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l])],
+            ....:              [phi], gravity=[0, 0, -g])
+            sage: generalized_bias_forces(T.kinematics())
+            [g*l*m*sin(phi)]
+            sage: K = T.kinematics('graph', {g: 9.81})
+            sage: [K.G.show(e) for e in generalized_bias_forces(K)]
+            ['(9.81*sin(x[0]))*(p[0]*p[1])']
+
+        TESTS::
+
+            sage: T.kinematics('numbers')
+            Traceback (most recent call last):
+            ...
+            AnalysisError: arithmetic: must be 'symbolic', 'graph' or an arithmetic object, got 'numbers'
+        """
+        from .tree_kinematics import TreeKinematics
+        if arithmetic == 'graph':
+            from .recursive import graph_kinematics
+            return graph_kinematics(self, values)
+        if arithmetic == 'symbolic':
+            from .spatial import SymbolicArithmetic
+            arithmetic = SymbolicArithmetic()
+        elif isinstance(arithmetic, str) or not hasattr(arithmetic, 'mul'):
+            raise AnalysisError(f"must be 'symbolic', 'graph' or an arithmetic object, got "
+                                f"{arithmetic!r}", entry="arithmetic")
+        return TreeKinematics(self, arithmetic)
+
+    def varying_inertia(self):
+        r"""
+        The index of the first body whose mass, mass centre or inertia
+        depends on the coordinates, the velocities or `t` (``None`` if
+        none does: the recursive algorithms need constant inertias).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: x, m = var('x m')
+            sage: BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x]).varying_inertia() is None
+            True
+            sage: BodyTree([TreeBody(0), TreeBody(1, mass=m*x)], [x]).varying_inertia()
+            2
+        """
+        dynamic = set(self._q) | set(self._dq) | {_t}
+        for k, body in enumerate(self._bodies, 1):
+            data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
+            if any(dynamic.intersection(SR(e).variables()) for e in data):
+                return k
+        return None
 
     def coordinates(self):
         r"""The coordinates.
@@ -333,6 +465,14 @@ class BodyTree(SageObject):
 
         EXAMPLES: see the module documentation.
         """
+        if self._parameters is None:
+            hidden = {str(v) for v in self._q + self._dq + [_t]}
+            found = {}
+            for e in self.expressions():
+                for v in SR(e).variables():
+                    if str(v) not in hidden:
+                        found[str(v)] = v
+            self._parameters = [found[k] for k in sorted(found)]
         return list(self._parameters)
 
     def gravity(self):
@@ -424,7 +564,7 @@ class BodyTree(SageObject):
         """
         out = []
         for body in self._bodies:
-            out += body.expressions()
+            out += body_expressions(body)
         for load in self._loads:
             out += load.expressions()
         out += list(self._gravity or ()) + [self._potential, self._dissipation]

@@ -133,7 +133,7 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
 
     - without ``solve``: ``out[i]`` is ``outputs[i]``; the function returns
       1 when one of the ``pivots`` (nodes: margins of the pivots, see
-      :data:`~sage_dynsym.numerics.recursive.PIVOT_TOLERANCE`) is not
+      :data:`~sage_dynsym.numerics.tree_solve.PIVOT_TOLERANCE`) is not
       positive or an output is not finite;
     - with ``solve = (k, lead, size)``: the first ``k`` outputs are `b`,
       the next ``k*k`` the matrix `A` (by rows) of `A y = b`, solved by

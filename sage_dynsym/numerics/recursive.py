@@ -59,751 +59,109 @@ REFERENCES:
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..symbols import t as _t, time_derivative
-from .form import deferred
+from ..symbols import t as _t
+from .articulated_body import articulated_accelerations
+from .composite_body import mass_matrix
+from .form import constraint_terms, deferred, velocity_constraint_terms
 from .graph import ExpressionGraph, SymbolicConverter
+from .newton_euler import applied_forces, forcing, generalized_forces, inverse_dynamics
+from .tree_kinematics import TreeKinematics, not_applicable, tree_order
+from .tree_solve import PIVOT_TOLERANCE, dense_solve, ltdl
+
+__all__ = ['RecursiveForm', 'unsupported', 'tree_accelerations', 'graph_kinematics',
+           'generalized_forces', 'inverse_dynamics',
+           'check_backend', 'compiled_library', 'optimization', 'LARGE_GRAPH',
+           'PIVOT_TOLERANCE']
 
 
-def _cross(G, u, w):
-    return (G.sub(G.mul(u[1], w[2]), G.mul(u[2], w[1])),
-            G.sub(G.mul(u[2], w[0]), G.mul(u[0], w[2])),
-            G.sub(G.mul(u[0], w[1]), G.mul(u[1], w[0])))
-
-
-def _add(G, *vectors):
-    return tuple(G.sum(parts) for parts in zip(*vectors))
-
-
-def _scale(G, s, v):
-    return tuple(G.mul(s, a) for a in v)
-
-
-def _matvec(G, A, v):
-    return tuple(G.dot(row, v) for row in A)
-
-
-_PLANE = {1: (1, 2), 2: (2, 0), 3: (0, 1)}
-
-
-def _rotate(G, axis, c, s, v, inverse=False):
-    # components in the old frame of v given in the new one (R v), or the
-    # converse (R^T v) with ``inverse``; R an elementary rotation about ``axis``
-    i, j = _PLANE[axis]
-    if inverse:
-        s = G.neg(s)
-    out = list(v)
-    out[i] = G.sub(G.mul(c, v[i]), G.mul(s, v[j]))
-    out[j] = G.add(G.mul(s, v[i]), G.mul(c, v[j]))
-    return tuple(out)
-
-
-def _rotate_matrix(G, axis, c, s, A, symmetric=True):
-    # R A R^T of a 3x3 matrix given in the new frame (R A R^T = (R (R A)^T)^T)
-    columns = [_rotate(G, axis, c, s, [A[r][col] for r in range(3)]) for col in range(3)]
-    RA = [[columns[col][r] for col in range(3)] for r in range(3)]
-    rows = [_rotate(G, axis, c, s, RA[r]) for r in range(3)]
-    if symmetric:
-        return [[rows[min(r, col)][max(r, col)] for col in range(3)] for r in range(3)]
-    return [list(row) for row in rows]
-
-
-def _present(exprs, index):
-    # the indices (values of the dict ``index`` of symbols) of the symbols in
-    # ``exprs``: the derivatives by the others vanish, and going through all
-    # of them would make the build quadratic in the number of coordinates
-    found = set()
-    for e in exprs:
-        found.update(index[v] for v in SR(e).variables() if v in index)
-    return sorted(found)
-
-
-class _Step:
-    """One elementary joint: a translation by r (axes unchanged, origin
-    moved to the joint point) or a rotation about a coordinate axis."""
-    __slots__ = ('body', 'rotation', 'axis', 'c', 's', 'r', 'columns')
-
-    def __init__(self, body, rotation, columns, axis=None, c=None, s=None, r=None):
-        self.body, self.rotation, self.columns = body, rotation, columns
-        self.axis, self.c, self.s, self.r = axis, c, s, r
-
-    def up(self, G, f, n):
-        """The force (f, n) given in this step's frame, in the previous one."""
-        if self.rotation:
-            return (_rotate(G, self.axis, self.c, self.s, f),
-                    _rotate(G, self.axis, self.c, self.s, n))
-        return f, _add(G, n, _cross(G, self.r, f))
-
-    def pair(self, G, i, f, n):
-        """The power of (f, n) in the partial velocity of coordinate i."""
-        if self.rotation:
-            return G.mul(self.columns[i], n[self.axis - 1])
-        return G.dot(self.columns[i], f)
-
-
-def _tree_order(steps, n):
-    """The coordinates ``0, ..., n - 1`` in the order of the tree (first
-    appearance in a joint of ``steps``, parents first), then the others."""
-    seen = {}
-    for step in steps:
-        for i in sorted(step.columns):
-            seen.setdefault(i, None)
-    return list(seen) + [i for i in range(n) if i not in seen]
-
-
-class _Assembly:
+def graph_kinematics(tree, values=None):
     r"""
-    The graph of the accelerations of a tree: see the module documentation.
-    ``values``: parameters folded into the graph as numbers.
+    The :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics` of
+    ``tree`` over a new :class:`~sage_dynsym.numerics.graph.ExpressionGraph`
+    whose inputs are ``t``, the state ``x`` (coordinates, then velocities)
+    and the parameters ``p`` of ``tree`` without those of ``values``
+    (numbers folded into the graph).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.recursive import graph_kinematics
+        sage: x, m, k = var('x m k')
+        sage: K = graph_kinematics(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x],
+        ....:                               potential=-k*x^2), {k: 2})
+        sage: K.G.show(K.convert(k*x + m))
+        'p[0] + (x[0]*2.0)'
     """
-
-    def __init__(self, tree, values=None):
-        G = self.G = ExpressionGraph()
-        self.tree = tree
-        q, dq = tree.coordinates(), tree.velocities()
-        self.q, self.dq, self.n = q, dq, len(q)
-        self._q_index = {v: i for i, v in enumerate(q)}
-        self._dq_index = {v: i for i, v in enumerate(dq)}
-        values = values or {}
-        inputs = {_t: G.input('t')}
-        inputs.update({v: G.input('x', i) for i, v in enumerate(q + dq)})
-        self.parameters = [v for v in tree.parameters() if v not in values]
-        inputs.update({v: G.input('p', j) for j, v in enumerate(self.parameters)})
-        self.convert = SymbolicConverter(G, inputs, values)
-        self._zero3 = (G.zero, G.zero, G.zero)
-        self._orientation = {}
-
-    # symbolic helpers --------------------------------------------------
-
-    def rate(self, e):
-        """d/dt of e at zero accelerations."""
-        i = _present([e], self._q_index)
-        return time_derivative(e, [self.q[k] for k in i], [self.dq[k] for k in i], [0] * len(i))
-
-    def vector(self, v):
-        return tuple(self.convert(c) for c in v)
-
-    def columns(self, exprs, scalar):
-        """Partial derivatives of rates by the velocities, nonzero only."""
-        out = {}
-        for i in _present(exprs, self._dq_index):
-            v = self.dq[i]
-            d = [SR(e).diff(v) for e in exprs]
-            if any(not x.is_trivial_zero() for x in d):
-                if _present(d, self._dq_index):
-                    return None
-                out[i] = self.convert(d[0]) if scalar else self.vector(d)
-        return out
-
-    # the kinematics ------------------------------------------------------
-
-    def build_steps(self):
-        G = self.G
-        gravity = self.tree.gravity()
-        self.g0 = self._zero3 if gravity is None else self.vector(gravity)
-        base = (self._zero3, self._zero3, self._zero3, tuple(G.neg(a) for a in self.g0))
-        # per body frame: (omega, v, alpha, a) in the body's axes, at O_k
-        self.state, self.steps, self.body_steps = {0: base}, [], {0: []}
-        self.parent = {}
-        for k, body in enumerate(self.tree.bodies(), 1):
-            j = body.parent()
-            self.parent[k] = j
-            w, v, alpha, a = self.state[j]
-            r = [SR(c) for c in body.joint()]
-            rdot = [self.rate(c) for c in r]
-            u = list(body.velocity()) if body.velocity() is not None else rdot
-            columns = self.columns(u, scalar=False)
-            if columns is None:
-                raise _Unsupported(f"the relative velocity of body {k} is not linear in the "
-                                   "velocities")
-            rn, rdn, un = self.vector(r), self.vector(rdot), self.vector(u)
-            udn = self.vector([self.rate(c) for c in u])
-            v = _add(G, v, _cross(G, w, rn), un)
-            a = _add(G, a, _cross(G, alpha, rn), _cross(G, w, _cross(G, w, rn)),
-                     _cross(G, w, _add(G, rdn, un)), udn)
-            steps = [_Step(k, False, columns, r=rn)]
-            for axis, angle in body.rotations():
-                theta = SR(angle)
-                c, s = self.convert(theta.cos()), self.convert(theta.sin())
-                dtheta = self.rate(theta)
-                columns = self.columns([dtheta], scalar=True)
-                if columns is None:
-                    raise _Unsupported(f"the rotation angle {theta} of body {k} depends on the "
-                                       "velocities")
-                rate, rate2 = self.convert(dtheta), self.convert(self.rate(dtheta))
-                w_old = _rotate(G, axis, c, s, w, inverse=True)
-                w = list(w_old)
-                w[axis - 1] = G.add(w[axis - 1], rate)
-                spin = [G.zero] * 3
-                spin[axis - 1] = rate
-                alpha = list(_rotate(G, axis, c, s, alpha, inverse=True))
-                alpha[axis - 1] = G.add(alpha[axis - 1], rate2)
-                alpha = _add(G, alpha, _cross(G, w_old, spin))
-                v = _rotate(G, axis, c, s, v, inverse=True)
-                a = _rotate(G, axis, c, s, a, inverse=True)
-                w = tuple(w)
-                steps.append(_Step(k, True, columns, axis=axis, c=c, s=s))
-            self.state[k] = (w, v, alpha, a)
-            self.body_steps[k] = steps
-            self.steps += steps
-        # the steps from the root to each body's frame
-        self.path = {0: []}
-        for k in range(1, len(self.tree.bodies()) + 1):
-            self.path[k] = self.path[self.parent[k]] + self.body_steps[k]
-
-    def orientation(self, k):
-        """Columns: the axes of body k in the inertial axes (rows of R_0k)."""
-        if k not in self._orientation:
-            G = self.G
-            if k == 0:
-                R = [[G.one if i == j else G.zero for j in range(3)] for i in range(3)]
-            else:
-                R = [list(row) for row in self.orientation(self.parent[k])]
-                for step in self.body_steps[k][1:]:
-                    # R_0,new = R_0,old R_step: each row of R_0 turns as a vector
-                    R = [list(_rotate(G, step.axis, step.c, step.s, row, inverse=True))
-                         for row in R]
-            self._orientation[k] = R
-        return self._orientation[k]
-
-    def to_body(self, k, axes, v):
-        """Components in body k's axes of v given in the axes of ``axes``."""
-        if axes == k:
-            return v
-        G = self.G
-        inertial = v if axes == 0 else _matvec(G, self.orientation(axes), v)
-        R = self.orientation(k)
-        return tuple(G.dot([R[i][c] for i in range(3)], inertial) for c in range(3))
-
-    # the recursive Newton-Euler pass -----------------------------------
-
-    def inertia(self, body):
-        G = self.G
-        m = self.convert(body.mass())
-        h = _scale(G, m, self.vector(body.mass_center()))
-        Theta = [[self.convert(body.inertia()[i, j]) for j in range(3)] for i in range(3)]
-        return m, h, Theta
-
-    def body_forces(self):
-        r"""
-        Per body, the force `(f, n)` (about its joint point, in its axes)
-        that its motion at `\ddot q = 0` requires, loads subtracted.
-        """
-        G = self.G
-        forces = {}
-        for k, body in enumerate(self.tree.bodies(), 1):
-            m, h, Theta = self.inertia(body)
-            w, v, alpha, a = self.state[k]
-            f = _add(G, _scale(G, m, a), _cross(G, alpha, h), _cross(G, w, _cross(G, w, h)))
-            nk = _add(G, _matvec(G, Theta, alpha), _cross(G, w, _matvec(G, Theta, w)),
-                      _cross(G, h, a))
-            forces[k] = (f, nk)
-        for load in self.tree.loads():
-            k = load.body
-            f, nk = forces[k]
-            point = self.vector(load.point)
-            if load.force is not None:
-                F = self.to_body(k, load.axes, self.vector(load.force))
-                f = tuple(G.sub(x, y) for x, y in zip(f, F))
-                nk = tuple(G.sub(x, y) for x, y in zip(nk, _cross(G, point, F)))
-            if load.torque is not None:
-                T = self.to_body(k, load.axes, self.vector(load.torque))
-                nk = tuple(G.sub(x, y) for x, y in zip(nk, T))
-            forces[k] = (f, nk)
-        return forces
-
-    def newton_euler(self):
-        r"""The generalized forces of :meth:`body_forces` (summed from the leaves)."""
-        G, n = self.G, self.n
-        forces = self.body_forces()
-        forces[0] = (self._zero3, self._zero3)
-        tau = [[] for _ in range(n)]
-        for k in range(len(self.tree.bodies()), 0, -1):
-            f, nk = forces[k]
-            for step in reversed(self.body_steps[k]):
-                for i in step.columns:
-                    tau[i].append(step.pair(G, i, f, nk))
-                f, nk = step.up(G, f, nk)
-            j = self.parent[k]
-            forces[j] = (_add(G, forces[j][0], f), _add(G, forces[j][1], nk))
-        return [G.sum(parts) for parts in tau]
-
-    # the composite rigid-body algorithm --------------------------------
-
-    def mass_matrix(self):
-        r"""The entries of `M`: a dict ``(i, j) -> node`` (both triangles)."""
-        G = self.G
-        composite = {k: self.inertia(body) for k, body in enumerate(self.tree.bodies(), 1)}
-        at_step = {}
-        for k in range(len(self.tree.bodies()), 0, -1):
-            m, h, Theta = composite[k]
-            for step in reversed(self.body_steps[k]):
-                at_step[id(step)] = (m, h, Theta)
-                if step.rotation:
-                    h = _rotate(G, step.axis, step.c, step.s, h)
-                    Theta = _rotate_matrix(G, step.axis, step.c, step.s, Theta)
-                else:
-                    r = step.r
-                    rr, rh = G.dot(r, r), G.dot(r, h)
-                    shifted = [[None] * 3 for _ in range(3)]
-                    for i in range(3):
-                        for j in range(i, 3):
-                            e = G.sub(G.neg(G.mul(m, G.mul(r[i], r[j]))),
-                                      G.add(G.mul(r[i], h[j]), G.mul(h[i], r[j])))
-                            if i == j:
-                                e = G.add(e, G.add(G.mul(m, rr), G.add(rh, rh)))
-                            shifted[i][j] = shifted[j][i] = G.add(Theta[i][j], e)
-                    h, Theta = _add(G, h, _scale(G, m, r)), shifted
-            j = self.parent[k]
-            if j:
-                mj, hj, Tj = composite[j]
-                composite[j] = (G.add(mj, m), _add(G, hj, h),
-                                [[G.add(Tj[a][b], Theta[a][b]) for b in range(3)]
-                                 for a in range(3)])
-        entries = {}
-
-        def accumulate(i, j, value):
-            entries[i, j] = G.add(entries.get((i, j), G.zero), value)
-
-        for k in range(1, len(self.tree.bodies()) + 1):
-            path = self.path[k]
-            for position in range(len(path) - len(self.body_steps[k]), len(path)):
-                step = path[position]
-                m, h, Theta = at_step[id(step)]
-                for i, column in step.columns.items():
-                    if step.rotation:
-                        w = [G.zero] * 3
-                        w[step.axis - 1] = column
-                        f, nk = _cross(G, w, h), _matvec(G, Theta, w)
-                    else:
-                        f, nk = _scale(G, m, column), _cross(G, h, column)
-                    for j in step.columns:
-                        accumulate(j, i, step.pair(G, j, f, nk))
-                    for above in range(position - 1, -1, -1):
-                        f, nk = path[above + 1].up(G, f, nk)
-                        other = path[above]
-                        for j in other.columns:
-                            value = other.pair(G, j, f, nk)
-                            accumulate(j, i, value)
-                            accumulate(i, j, value)
-        return entries
-
-    # Lagrange's equations for prescribed joint velocities --------------
-
-    def velocity_corrections(self):
-        r"""
-        The terms by which Lagrange's equations differ from Kane's when a
-        joint velocity `u_k` is prescribed that is not the time derivative of
-        the joint point `r_k`, so that `\delta_k = u_k - \dot r_k \ne 0`: every
-        point of the subtree of `k` moves with `R_{0j}\delta_k` more than the
-        derivative of its position, and (`j` the parent, all in its axes;
-        `P_k`, `m_k` the momentum and mass of the subtree, `e_i` the partial
-        angular velocity of frame `j`, `D_i = \partial\delta_k/\partial\dot q_i`)
-
-        .. MATH::
-
-            E_i - E_i^{Kane} = P_k\cdot\bigl(\omega_j\times D_i + \dot D_i
-            - e_i\times\delta_k - \partial\delta_k/\partial q_i\bigr)
-            + m_k\, g\cdot D_i .
-        """
-        G, n = self.G, self.n
-        corrections = [[] for _ in range(n)]
-        prescribed = []
-        for k, body in enumerate(self.tree.bodies(), 1):
-            if body.velocity() is None:
-                continue
-            delta = [SR(u) - self.rate(r) for u, r in zip(body.velocity(), body.joint())]
-            if all(d.is_trivial_zero() or d.expand().is_zero() for d in delta):
-                continue
-            prescribed.append((k, delta))
-        if not prescribed:
-            return [G.zero] * n
-        # momentum and mass of every subtree, in the parent's axes
-        momentum, mass = {}, {}
-        for k in range(len(self.tree.bodies()), 0, -1):
-            m, h, _ = self.inertia(self.tree.bodies()[k - 1])
-            w, v, _, _ = self.state[k]
-            p = _add(G, _scale(G, m, v), _cross(G, w, h), *[
-                momentum[c] for c in momentum if self.parent[c] == k])
-            total = G.sum([m] + [mass[c] for c in mass if self.parent[c] == k])
-            for step in reversed(self.body_steps[k][1:]):
-                p = _rotate(G, step.axis, step.c, step.s, p)
-            momentum[k], mass[k] = p, total
-        for k, delta in prescribed:
-            j = self.parent[k]
-            partial = self.partial_angular_velocities(j)
-            g = self.to_body(j, 0, self.g0)
-            w = self.state[j][0]
-            deltan = self.vector(delta)
-            for i, (qi, dqi) in enumerate(zip(self.q, self.dq)):
-                D = [d.diff(dqi) for d in delta]
-                beta = _add(G, self.vector([self.rate(x) for x in D]),
-                            tuple(G.neg(x) for x in self.vector([d.diff(qi) for d in delta])))
-                Dn = self.vector(D)
-                beta = _add(G, beta, _cross(G, w, Dn))
-                if i in partial:
-                    beta = tuple(G.sub(x, y) for x, y in zip(beta, _cross(G, partial[i], deltan)))
-                corrections[i].append(G.add(G.dot(momentum[k], beta),
-                                            G.mul(mass[k], G.dot(g, Dn))))
-        return [G.sum(parts) for parts in corrections]
-
-    def partial_angular_velocities(self, k):
-        """The partial angular velocities of body k's frame, in its axes
-        (dict: coordinate index -> vector; absent ones are zero)."""
-        if k == 0:
-            return {}
-        G, out = self.G, dict(self.partial_angular_velocities(self.parent[k]))
-        for step in self.body_steps[k][1:]:
-            out = {i: _rotate(G, step.axis, step.c, step.s, e, inverse=True)
-                   for i, e in out.items()}
-            for i, column in step.columns.items():
-                e = list(out.get(i, self._zero3))
-                e[step.axis - 1] = G.add(e[step.axis - 1], column)
-                out[i] = tuple(e)
-        return out
-
-    # the forcing and the solution --------------------------------------
-
-    def applied_forces(self):
-        r"""
-        The generalized forces besides those of :meth:`body_forces`: the
-        given ones, minus `\partial R/\partial\dot q`, plus the gradient of
-        the force function given as an expression, minus
-        :meth:`velocity_corrections`.
-        """
-        G, tree = self.G, self.tree
-        extra = self.velocity_corrections()
-        R, U = tree.dissipation(), tree.potential()
-        return [G.sub(self.convert(Q - R.diff(dqi) + U.diff(qi)), e)
-                for qi, dqi, Q, e in zip(self.q, self.dq, tree.forces(), extra)]
-
-    def forcing(self):
-        r"""`F` of `M\ddot q = F` (nodes), without the constraint forces."""
-        G = self.G
-        return [G.sub(a, b) for a, b in zip(self.applied_forces(), self.newton_euler())]
-
-    # the articulated-body algorithm ------------------------------------
-
-    def joint_groups(self):
-        r"""
-        The joints of the articulated-body algorithm: runs of consecutive
-        steps of one body that share coordinates, as a dict ``id(last step)
-        -> (steps, coordinates)``; ``None`` when a coordinate moves two
-        bodies (then only the mass matrix can be formed).
-        """
-        owner, groups = {}, {}
-        for k, steps in self.body_steps.items():
-            runs = []
-            for position, step in enumerate(steps):
-                for i in step.columns:
-                    if owner.setdefault(i, k) != k:
-                        return None
-                    runs.append([position, position, {i}])
-            # merge the runs of each coordinate, then the overlapping ones
-            merged = []
-            for run in sorted(runs):
-                for other in merged:
-                    if other[2] & run[2] or other[0] <= run[0] <= other[1]:
-                        other[0], other[1] = min(other[0], run[0]), max(other[1], run[1])
-                        other[2] |= run[2]
-                        break
-                else:
-                    merged.append(run)
-            changed = True
-            while changed:
-                changed = False
-                for a in merged:
-                    for b in merged:
-                        if a is not b and (a[2] & b[2] or not (a[1] < b[0] or b[1] < a[0])):
-                            a[0], a[1], a[2] = min(a[0], b[0]), max(a[1], b[1]), a[2] | b[2]
-                            merged.remove(b)
-                            changed = True
-                            break
-                    if changed:
-                        break
-            for first, last, coordinates in merged:
-                groups[id(steps[last])] = (steps[first:last + 1], sorted(coordinates))
-        return groups
-
-    def _motion_down(self, step, w, v):
-        # a motion vector (w, v) of the previous frame, in this step's frame
-        G = self.G
-        if step.rotation:
-            return (_rotate(G, step.axis, step.c, step.s, w, inverse=True),
-                    _rotate(G, step.axis, step.c, step.s, v, inverse=True))
-        return w, _add(G, v, _cross(G, w, step.r))
-
-    def _inertia_up(self, step, I):
-        # a 6x6 inertia (blocks A, B, C: n = A w + B v, f = B^T w + C v) of
-        # this step's frame, in the previous frame
-        G = self.G
-        A, B, C = I
-        if step.rotation:
-            return tuple(_rotate_matrix(G, step.axis, step.c, step.s, X, symmetric)
-                         for X, symmetric in ((A, True), (B, False), (C, True)))
-        r = step.r
-        rx = [[G.zero, G.neg(r[2]), r[1]], [r[2], G.zero, G.neg(r[0])],
-              [G.neg(r[1]), r[0], G.zero]]
-
-        def product(X, Y):
-            return [[G.dot(X[i], [Y[k][j] for k in range(3)]) for j in range(3)]
-                    for i in range(3)]
-        rC = product(rx, C)
-        Bnew = [[G.add(B[i][j], rC[i][j]) for j in range(3)] for i in range(3)]
-        # A - B [r] + [r] B^T - [r] C [r], symmetric
-        Br, rBt, rCr = product(B, rx), product(rx, [list(c) for c in zip(*B)]), product(rC, rx)
-        Anew = [[None] * 3 for _ in range(3)]
-        for i in range(3):
-            for j in range(i, 3):
-                Anew[i][j] = Anew[j][i] = G.sub(G.add(G.sub(A[i][j], Br[i][j]), rBt[i][j]),
-                                                rCr[i][j])
-        return Anew, Bnew, C
-
-    def articulated(self, applied):
-        r"""
-        `\ddot q` by the articulated-body algorithm ([Fea2008]_, Table 7.1)
-        with the bias forces of :meth:`body_forces` and the generalized
-        forces ``applied``; ``None`` when :meth:`joint_groups` is.
-        """
-        G = self.G
-        groups = self.joint_groups()
-        if groups is None:
-            return None
-        zero3, pivots = self._zero3, []
-        bias = self.body_forces()
-        previous, last = {}, {}
-        for k, steps in self.body_steps.items():
-            if not k:
-                continue
-            parent_steps = self.body_steps[self.parent[k]]
-            previous[id(steps[0])] = parent_steps[-1] if parent_steps else None
-            for a, b in zip(steps, steps[1:]):
-                previous[id(b)] = a
-            last[id(steps[-1])] = k
-        zero_inertia = ([[G.zero] * 3 for _ in range(3)],) * 3
-        inertia, force, joint = {}, {}, {}
-        for step in reversed(self.steps):
-            key = id(step)
-            I = inertia.pop(key, zero_inertia)
-            f, nk = force.pop(key, (zero3, zero3))
-            if key in last:
-                m, h, Theta = self.inertia(self.tree.bodies()[last[key] - 1])
-                hx = [[G.zero, G.neg(h[2]), h[1]], [h[2], G.zero, G.neg(h[0])],
-                      [G.neg(h[1]), h[0], G.zero]]
-                mE = [[m if i == j else G.zero for j in range(3)] for i in range(3)]
-                I = tuple([[G.add(X[i][j], Y[i][j]) for j in range(3)] for i in range(3)]
-                          for X, Y in zip(I, (Theta, hx, mE)))
-                f, nk = _add(G, f, bias[last[key]][0]), _add(G, nk, bias[last[key]][1])
-            if key in groups:
-                steps, coordinates = groups[key]
-                S = self._joint_columns(steps, coordinates)
-                A, B, C = I
-                Bt = [list(c) for c in zip(*B)]
-                U = [(_add(G, _matvec(G, Bt, w), _matvec(G, C, v)),
-                      _add(G, _matvec(G, A, w), _matvec(G, B, v))) for w, v in S]
-                D = [[G.add(G.dot(S[r][0], U[c][1]), G.dot(S[r][1], U[c][0]))
-                      for c in range(len(S))] for r in range(len(S))]
-                u = [G.sub(applied[i], G.add(G.dot(w, nk), G.dot(v, f)))
-                     for i, (w, v) in zip(coordinates, S)]
-                Dinv = _inverse(G, D, pivots, _pivot_scales(G, A, C, S))
-                # U D^-1 (as 6-vectors f, n) and the updated inertia and force
-                UD = [(tuple(G.sum([G.mul(U[a][0][x], Dinv[a][b]) for a in range(len(S))])
-                             for x in range(3)),
-                       tuple(G.sum([G.mul(U[a][1][x], Dinv[a][b]) for a in range(len(S))])
-                             for x in range(3))) for b in range(len(S))]
-
-                def update(X, left, right, symmetric):
-                    out = [[None] * 3 for _ in range(3)]
-                    for i in range(3):
-                        for j in range(i if symmetric else 0, 3):
-                            out[i][j] = G.sub(X[i][j], G.sum(
-                                [G.mul(UD[b][left][i], U[b][right][j]) for b in range(len(S))]))
-                            if symmetric:
-                                out[j][i] = out[i][j]
-                    return out
-                I = (update(A, 1, 1, True), update(B, 1, 0, False), update(C, 0, 0, True))
-                f = _add(G, f, *[_scale(G, u[b], UD[b][0]) for b in range(len(S))])
-                nk = _add(G, nk, *[_scale(G, u[b], UD[b][1]) for b in range(len(S))])
-                joint[key] = (S, U, Dinv, u, coordinates)
-            before = previous[key]
-            if before is not None:
-                I = self._inertia_up(step, I)
-                f, nk = step.up(G, f, nk)
-                if id(before) in inertia:
-                    other = inertia[id(before)]
-                    I = tuple([[G.add(X[i][j], Y[i][j]) for j in range(3)] for i in range(3)]
-                              for X, Y in zip(I, other))
-                    of, on = force[id(before)]
-                    f, nk = _add(G, f, of), _add(G, nk, on)
-                inertia[id(before)], force[id(before)] = I, (f, nk)
-        ddq = [G.zero] * self.n
-        motion = {}
-        for step in self.steps:
-            before = previous[id(step)]
-            w, v = motion[id(before)] if before is not None else (zero3, zero3)
-            w, v = self._motion_down(step, w, v)
-            if id(step) in joint:
-                S, U, Dinv, u, coordinates = joint[id(step)]
-                rest = [G.sub(u[a], G.add(G.dot(U[a][0], v), G.dot(U[a][1], w)))
-                        for a in range(len(S))]
-                values = [G.dot(row, rest) for row in Dinv]
-                for i, value in zip(coordinates, values):
-                    ddq[i] = value
-                w = _add(G, w, *[_scale(G, x, Sw) for x, (Sw, _) in zip(values, S)])
-                v = _add(G, v, *[_scale(G, x, Sv) for x, (_, Sv) in zip(values, S)])
-            motion[id(step)] = (w, v)
-        return ddq, pivots
-
-    def _joint_columns(self, steps, coordinates):
-        # the motion subspace of a joint in the frame of its last step: one
-        # motion vector (w, v) per coordinate
-        G, columns = self.G, []
-        for i in coordinates:
-            w, v = self._zero3, self._zero3
-            for step in steps:
-                w, v = (w, v) if step is steps[0] else self._motion_down(step, w, v)
-                if i in step.columns:
-                    if step.rotation:
-                        e = [G.zero] * 3
-                        e[step.axis - 1] = step.columns[i]
-                        w = _add(G, w, e)
-                    else:
-                        v = _add(G, v, step.columns[i])
-            columns.append((w, v))
-        return columns
-
-    def accelerations(self, solver='auto'):
-        r"""
-        The nodes of `\ddot q` (in the order of the coordinates) and of the
-        pivots of the factorizations (zero when the system is singular),
-        and the solver used: ``'articulated'`` (the articulated-body
-        algorithm: models without constraints whose coordinates each move
-        one body) or ``'ltdl'`` (the mass matrix, factorized).
-        """
-        from .form import constraint_terms, velocity_constraint_terms
-        G = self.G
-        self.build_steps()
-        constraints = self.tree.constraints()
-        velocity_constraints = self.tree.velocity_constraints()
-        if solver != 'ltdl' and not constraints and not velocity_constraints:
-            result = self.articulated(self.applied_forces())
-            if result is not None:
-                return result + ('articulated',)
-        if solver == 'articulated':
-            raise _Unsupported("the articulated-body algorithm needs a model without "
-                               "constraints whose coordinates each move one body")
-        M = self.mass_matrix()
-        F = self.forcing()
-        order = _tree_order(self.steps, self.n)
-        position = {i: a for a, i in enumerate(order)}
-        n = self.n
-        # H: the lower triangle of M in tree order, overwritten by L and D
-        H = {}
-        for (i, j), value in M.items():
-            a, b = position[i], position[j]
-            if a >= b and not G.is_zero(value):
-                H[a, b] = value
-        rows = [sorted(b for (a2, b) in H if a2 == a and b < a) for a in range(n)]
-        pivots = []
-        for k in range(n - 1, -1, -1):
-            d = H.get((k, k), G.zero)
-            _pivot(G, d, M.get((order[k], order[k]), G.zero), pivots)
-            below = rows[k]
-            for i in reversed(below):
-                factor = G.div(H[k, i], d)
-                for j in below:
-                    if j > i:
-                        break
-                    update = G.sub(H.get((i, j), G.zero), G.mul(factor, H[k, j]))
-                    if (i, j) not in H:
-                        rows[i].append(j)
-                        rows[i].sort()
-                    H[i, j] = update
-                H[k, i] = factor
-        D = [H.get((k, k), G.zero) for k in range(n)]
-
-        def solve(b):
-            y = [b[i] for i in order]
-            for k in range(n - 1, -1, -1):
-                for i in rows[k]:
-                    y[i] = G.sub(y[i], G.mul(H[k, i], y[k]))
-            x = [G.div(y[k], D[k]) for k in range(n)]
-            for k in range(n):
-                x[k] = G.sub(x[k], G.dot([H[k, i] for i in rows[k]], [x[i] for i in rows[k]]))
-            out = [None] * n
-            for a, i in enumerate(order):
-                out[i] = x[a]
-            return out
-
-        ddq = solve(F)
-        if constraints or velocity_constraints:
-            # the rows J ddq = gamma of the holonomic constraints and A ddq =
-            # gamma_A of those on the velocities take the same multipliers'
-            # elimination (the constraint forces J^T mu + A^T lambda)
-            J, gamma, _ = constraint_terms(constraints, self.q, self.dq)
-            A, gamma_A, _ = velocity_constraint_terms(velocity_constraints, self.q, self.dq)
-            J = [[self.convert(e) for e in row] for row in J + A]
-            gamma = [self.convert(e) for e in gamma + gamma_A]
-            Y = [solve(row) for row in J]
-            m = len(J)
-            S = [[G.dot(J[a], Y[b]) for b in range(m)] for a in range(m)]
-            rhs = [G.sub(gamma[a], G.dot(J[a], ddq)) for a in range(m)]
-            mu = _dense_solve(G, S, rhs, pivots, [S[a][a] for a in range(m)])
-            ddq = [G.add(ddq[i], G.dot([Y[b][i] for b in range(m)], mu)) for i in range(n)]
-        return ddq, pivots, 'ltdl'
+    G = ExpressionGraph()
+    values = values or {}
+    q, dq = tree.coordinates(), tree.velocities()
+    inputs = {_t: G.input('t')}
+    inputs.update({v: G.input('x', i) for i, v in enumerate(q + dq)})
+    parameters = [v for v in tree.parameters() if v not in values]
+    inputs.update({v: G.input('p', j) for j, v in enumerate(parameters)})
+    return TreeKinematics(tree, G, SymbolicConverter(G, inputs, values))
 
 
-#: a pivot at most this fraction of its scale is taken as zero: the system
-#: is singular or as close to it as rounding can tell (a rotation chart
-#: within about 1e-6 of its singular set)
-PIVOT_TOLERANCE = 1e-12
+def tree_accelerations(kin, solver='auto'):
+    r"""
+    The accelerations `\ddot q` (in the order of the coordinates) of the
+    tree of ``kin`` (a
+    :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`, in
+    either arithmetic), the margins of the pivots of the factorizations
+    (not positive where the system is singular, see
+    :mod:`~sage_dynsym.numerics.tree_solve`), and the solver used:
+    ``'articulated'`` (the articulated-body algorithm: models without
+    constraints whose coordinates each move one body) or ``'ltdl'`` (the
+    mass matrix of the composite rigid-body algorithm, factorized; with
+    holonomic constraints the multipliers from `J M^{-1} J^T \mu = \gamma
+    - J M^{-1} F`, the rows `A\ddot q = \gamma_A` of the constraints on
+    the velocities added to those of `J`).
 
+    EXAMPLES: a point on the circle `x^2 + y^2 = 1`, in the symbolic
+    arithmetic; at `(1, 0)` moving with speed 1 its acceleration is the
+    centripetal one::
 
-def _pivot(G, d, scale, pivots):
-    # appends the margin |d| - tol |scale| of the pivot d: the compiled code
-    # refuses the state where a margin is not positive
-    pivots.append(G.sub(G.call('abs', d), G.mul(G.constant(PIVOT_TOLERANCE),
-                                                 G.call('abs', scale))))
-
-
-def _pivot_scales(G, A, C, S):
-    # the scale of each pivot S^T I S of the articulated inertia
-    # I = ((A, B), (B^T, C)) and the joint columns S = (w, v): as I is
-    # positive semidefinite, S^T I S <= 2 (|w|^2 tr A + |v|^2 tr C), so a
-    # pivot small against it is a joint the articulated body cannot move
-    # (a singular chart)
-    traces = (G.sum([A[i][i] for i in range(3)]), G.sum([C[i][i] for i in range(3)]))
-    return [G.add(G.mul(G.dot(w, w), traces[0]), G.mul(G.dot(v, v), traces[1])) for w, v in S]
-
-
-def _inverse(G, A, pivots, scales):
-    # the inverse of a small symmetric positive definite matrix (Gauss-Jordan
-    # without pivoting); appends the pivots' margins against ``scales``
-    m = len(A)
-    if m == 1:
-        _pivot(G, A[0][0], scales[0], pivots)
-        return [[G.div(G.one, A[0][0])]]
-    columns = [[G.one if i == j else G.zero for i in range(m)] for j in range(m)]
-    return [list(x) for x in zip(*[_dense_solve(G, A, b, pivots if j == 0 else [], scales)
-                                   for j, b in enumerate(columns)])]
-
-
-def _dense_solve(G, A, b, pivots, scales):
-    # Gaussian elimination without pivoting of a small symmetric positive
-    # definite system; appends the pivots' margins against ``scales``
-    m = len(b)
-    A = [list(row) for row in A]
-    b = list(b)
-    for c in range(m):
-        _pivot(G, A[c][c], scales[c], pivots)
-        for r in range(c + 1, m):
-            factor = G.div(A[r][c], A[c][c])
-            for k in range(c + 1, m):
-                A[r][k] = G.sub(A[r][k], G.mul(factor, A[c][k]))
-            b[r] = G.sub(b[r], G.mul(factor, b[c]))
-    x = [None] * m
-    for r in range(m - 1, -1, -1):
-        x[r] = G.div(G.sub(b[r], G.dot(A[r][r + 1:], x[r + 1:])), A[r][r])
-    return x
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.spatial import SymbolicArithmetic
+        sage: from sage_dynsym.numerics.tree_kinematics import TreeKinematics
+        sage: from sage_dynsym.numerics.recursive import tree_accelerations
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: tree = BodyTree([TreeBody(0, joint=[x, y, 0], mass=1)], [x, y],
+        ....:                 constraints=[x^2 + y^2 - 1])
+        sage: ddq, pivots, solver = tree_accelerations(TreeKinematics(tree, SymbolicArithmetic()))
+        sage: solver, [e.subs(x=1, y=0, dx=0, dy=1) for e in ddq]
+        ('ltdl', [-1, 0])
+    """
+    G, tree = kin.G, kin.tree
+    constraints = tree.constraints()
+    velocity_constraints = tree.velocity_constraints()
+    if solver != 'ltdl' and not constraints and not velocity_constraints:
+        result = articulated_accelerations(kin, applied_forces(kin))
+        if result is not None:
+            return result + ('articulated',)
+    if solver == 'articulated':
+        raise not_applicable("the articulated-body algorithm needs a model without "
+                             "constraints whose coordinates each move one body")
+    M = mass_matrix(kin)
+    F = forcing(kin)
+    pivots = []
+    solve = ltdl(G, M, tree_order(kin.steps, kin.n), pivots)
+    ddq = solve(F)
+    if constraints or velocity_constraints:
+        # the rows J ddq = gamma of the holonomic constraints and A ddq =
+        # gamma_A of those on the velocities take the same multipliers'
+        # elimination (the constraint forces J^T mu + A^T lambda)
+        J, gamma, _ = constraint_terms(constraints, kin.q, kin.dq)
+        A, gamma_A, _ = velocity_constraint_terms(velocity_constraints, kin.q, kin.dq)
+        J = [[kin.convert(e) for e in row] for row in J + A]
+        gamma = [kin.convert(e) for e in gamma + gamma_A]
+        Y = [solve(row) for row in J]
+        m = len(J)
+        S = [[G.dot(J[a], Y[b]) for b in range(m)] for a in range(m)]
+        rhs = [G.sub(gamma[a], G.dot(J[a], ddq)) for a in range(m)]
+        mu = dense_solve(G, S, rhs, pivots, [S[a][a] for a in range(m)])
+        ddq = [G.add(ddq[i], G.dot([Y[b][i] for b in range(m)], mu)) for i in range(kin.n)]
+    return ddq, pivots, 'ltdl'
 
 
 #: Graphs of more nodes are compiled at ``-O1``: for their straight-line
@@ -878,11 +236,6 @@ def compiled_library(graph, source, backend, what):
         verbose(f"C backend unavailable ({error}); using Python", level=1)
         return None
 
-
-class _Unsupported(Exception):
-    """A model the recursive form cannot represent (the reason is the message)."""
-
-
 def unsupported(tree):
     r"""
     Why the recursive form cannot represent ``tree``, or ``None`` when it
@@ -905,12 +258,11 @@ def unsupported(tree):
         'f is not a known function (the equations take definitions of functions)'
     """
     from .expressions import symbols_and_functions
-    dynamic = set(tree.coordinates()) | set(tree.velocities()) | {_t}
+    k = tree.varying_inertia()
+    if k is not None:
+        return (f"the mass, mass centre or inertia of body {k} depends on the "
+                "coordinates, velocities or t")
     for k, body in enumerate(tree.bodies(), 1):
-        data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
-        if any(dynamic.intersection(SR(e).variables()) for e in data):
-            return (f"the mass, mass centre or inertia of body {k} depends on the "
-                    "coordinates, velocities or t")
         if body.velocity() is not None and any(
                 not SR(u).diff(a, b).is_zero() for u in body.velocity()
                 for a in tree.velocities() for b in tree.velocities()):
@@ -1005,6 +357,26 @@ class RecursiveForm:
                 f"({', '.join(map(str, self._tree.coordinates()))}), parameters "
                 f"({', '.join(map(str, self.parameters()))})")
 
+    def kinematics(self):
+        r"""
+        A new kinematic pass of the tree over a new expression graph, the
+        parameter values of the form folded in (see
+        :func:`graph_kinematics`): for code built from the same algorithms,
+        such as the inverse dynamics
+        (:func:`~sage_dynsym.numerics.newton_euler.inverse_dynamics`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: x, m = var('x m')
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=m)], [x]),
+            ....:                   values={m: 2})
+            sage: K = F.kinematics(); K.n, K.G.show(K.convert(m*x))
+            (1, 'x[0]*2.0')
+        """
+        return self._tree.kinematics('graph', self._values)
+
     def tree(self):
         r"""The :class:`~sage_dynsym.numerics.body_tree.BodyTree`.
 
@@ -1067,8 +439,9 @@ class RecursiveForm:
         when they are equal (Euler angles)), or ``None``.
 
         The compiled right-hand side and Jacobian refuse the states where
-        a pivot is small against its scale (see :data:`PIVOT_TOLERANCE`);
-        this says why when the cause is the chart.
+        a pivot is small against its scale (see
+        :data:`~sage_dynsym.numerics.tree_solve.PIVOT_TOLERANCE`); this says
+        why when the cause is the chart.
 
         EXAMPLES: a free body by the (3, 2, 1) sequence, at `\theta = \pi/2`::
 
@@ -1202,20 +575,17 @@ class RecursiveForm:
             ['x[1]', '-((x[0]*p[0])*(1.0/p[1]))']
 
         The margin of the pivot `m` against its scale, the trace `3m` of
-        the translational inertia (see :data:`PIVOT_TOLERANCE`)::
+        the translational inertia (see
+        :data:`~sage_dynsym.numerics.tree_solve.PIVOT_TOLERANCE`)::
 
             sage: [G.show(a) for a in pivots]
             ['abs(p[1]) - (1e-12*abs(p[1] + (p[1] + p[1])))']
         """
         if self._graph is None:
-            assembly = _Assembly(self._tree, self._values)
-            try:
-                ddq, pivots, self._solver = assembly.accelerations(self._solver)
-            except _Unsupported as error:
-                raise AnalysisError(f"the recursive form does not apply: {error}",
-                                    entry="numerical_rhs") from None
+            kin = self.kinematics()
+            ddq, pivots, self._solver = tree_accelerations(kin, self._solver)
             n = len(ddq)
-            G = assembly.G
+            G = kin.G
             outputs = [G.input('x', n + i) for i in range(n)] + ddq
             self._graph = (G, outputs, pivots)
         return self._graph
