@@ -119,7 +119,6 @@ def private_reaches(klass):
 #: Today's reaches, each being removed by composing the classes; an entry is
 #: removed when its class no longer reaches (a test says when).
 REACH_ALLOWED = {
-    "sage_dynsym.algebra.solving.SolutionList": {"_solutions"},
     "sage_dynsym.circuits.linear._BranchAnalysis": {"_T", "_rows", "_R", "_forces", "_Pi", "_terms",
                                                     "_coordinates"},
     "sage_dynsym.dynamics.holonomic.HolonomicConstraints": {
@@ -260,7 +259,6 @@ def _foreign():
 #: Today's reads of other modules' private state; removed as the objects get
 #: public interfaces (a test says when an entry is no longer needed).
 FOREIGN_ALLOWED = {
-    "sage_dynsym.analysis.charts": {"inner._reduce"},
     "sage_dynsym.analysis.normal_form_stability": {"nf._form_values"},
     "sage_dynsym.circuits.linear": {"circuit._graph"},
     "sage_dynsym.circuits.mixed_potential": {"circuit._graph"},

@@ -188,6 +188,9 @@ class SolutionList(SageObject):
         (True, 2)
     """
 
+    def __init__(self, solutions):
+        self._solutions = list(solutions)
+
     def __iter__(self):
         return iter(self._solutions)
 
@@ -214,8 +217,8 @@ class SolutionSet(SolutionList):
     """
 
     def __init__(self, translation, solutions, n_equations):
+        SolutionList.__init__(self, solutions)
         self._translation = translation
-        self._solutions = solutions
         self._n = n_equations
 
     def _repr_(self):
@@ -528,15 +531,25 @@ class AlgebraicSolution(SageObject):
                  (self._T.is_angle(k))}
         e = e.subs(trig).subs(plain)
         if self._relations and not isinstance(self._prime, ShapePrime):
-            reduced = self._reduce(e)
+            reduced = self.reduce(e)
             if reduced is not None:
                 return reduced
         return normalize(e)
 
-    def _reduce(self, expr):
-        r"""``expr`` (in the unknowns) in normal form modulo the component,
-        or ``None`` if it cannot be translated or its denominator vanishes
-        on the component."""
+    def reduce(self, expr):
+        r"""
+        ``expr`` (rational in the unknowns) in normal form modulo the
+        component, or ``None`` if it cannot be translated or its denominator
+        vanishes on the component.
+
+        EXAMPLES: on the circle, `x^2 + y^2` is `1`::
+
+            sage: from sage_dynsym.algebra.solving import solve_exactly
+            sage: x, y = var('x y')
+            sage: s = solve_exactly([x^2 + y^2 - 1], [x, y])[0]
+            sage: s.reduce(x^2 + y^2 + x), s.reduce(1/(x^2 + y^2 - 1))
+            (x + 1, None)
+        """
         T = self._T
         try:
             f = T.fraction(expr)
