@@ -1128,30 +1128,43 @@ class ChartPointSolution(StationarySolution):
     - ``regular`` -- (optional) the same point as a stationary solution in
       a regular chart
 
-    EXAMPLES: at `\beta = \pm\pi/2` the angles `z, x, y` are singular; the
-    critical points of `W = R_{21}` (the second body axis' vertical
-    component) there are two orientations, each a curve of angles::
+    EXAMPLES: the angles `a, b, c` about the axes `z, x, y` are singular at
+    `b = \pm\pi/2`; the four critical points of `W = R_{00} + 2R_{12} +
+    3R_{21}` on `SO(3)` are there, each a curve of angles::
 
         sage: from sage_dynsym.analysis.stationary import stationary_solutions
         sage: from sage_dynsym.mechanics.charts import euler_angles
         sage: a, b, c = var('a b c')
+        sage: def W(chart):
+        ....:     R = chart.rotation_matrix()
+        ....:     return R[0, 0] + 2*R[1, 2] + 3*R[2, 1]
         sage: chart = euler_angles([(3, a), (1, b), (2, c)])
-        sage: W = chart.rotation_matrix()[2, 1]
-        sage: sols = stationary_solutions([W], [a, b, c]).in_chart(chart)
+        sage: sols = stationary_solutions([W(chart)], [a, b, c], chart=chart)
         sage: [(s.dimension(), s.is_singular(), s.point()) for s in sols]
-        [(0, True, {a: 0, b: -1/2*pi, c: 0}), (0, True, {a: 0, b: 1/2*pi, c: 0})]
+        [(0, True, {a: 0, b: -1/2*pi, c: pi}),
+         (0, True, {a: 0, b: 1/2*pi, c: pi}),
+         (0, True, {a: 0, b: 1/2*pi, c: 0}),
+         (0, True, {a: 0, b: -1/2*pi, c: 0})]
+        sage: [s.dimension() for s in sols.chart_solutions()]
+        [1, 1, 1, 1]
         sage: sols[0].stability()
         undecided: the point is on the singular set of the chart, ...
 
-    In the angles `z, y, x` (singular where `|R_{20}| = 1`) both points are
-    regular: the minimum and the maximum of `W`, where `K = W` is definite::
+    In the angles about `z, y, x` (singular where `|R_{20}| = 1`) the four
+    points are regular: the minimum and the maximum of `W`, where `K = W`
+    is definite, and two saddles (no equations of motion were given, so
+    they stay undecided)::
 
         sage: second = euler_angles([(3, a), (2, b), (1, c)])
-        sage: other = stationary_solutions([second.rotation_matrix()[2, 1]], [a, b, c])
-        sage: sols = stationary_solutions([W], [a, b, c]).in_chart(
-        ....:     chart, regular=other.in_chart(second))
+        sage: sols = stationary_solutions([W(chart)], [a, b, c], chart=chart,
+        ....:     regular=stationary_solutions([W(second)], [a, b, c], chart=second))
         sage: [(s.regular_solution().point(), s.stability().verdict()) for s in sols]
-        [({a: 0, b: -1/2*pi, c: 0}, 'stable'), ({a: 0, b: 1/2*pi, c: 0}, 'stable')]
+        [({a: 0, b: pi, c: 1/2*pi}, 'stable'),
+         ({a: 0, b: pi, c: -1/2*pi}, 'stable'),
+         ({a: 0, b: 0, c: 1/2*pi}, 'undecided'),
+         ({a: 0, b: 0, c: -1/2*pi}, 'undecided')]
+        sage: [s.regular_solution().hessian().eigenvalues() for s in sols]
+        [[3, 4, 5], [-5, -2, -1], [-4, -1, 1], [-3, 1, 2]]
     """
 
     def __init__(self, problem, point, regular=None):
