@@ -399,6 +399,49 @@ def default_chart(variables, angles):
     return ConfigurationChart(variables, embedding)
 
 
+def product_chart(charts, coordinates):
+    r"""
+    The product of charts of the factors of a configuration space, as a
+    chart of ``coordinates`` (the union of the factors' coordinates, in any
+    order): the embeddings concatenated, `E` block-diagonal, the sheets
+    multiplied.
+
+    EXAMPLES: Euler angles of a body and the angle of a rotor on it::
+
+        sage: from sage_dynsym.analysis.charts import product_chart, default_chart
+        sage: from sage_dynsym.mechanics.charts import euler_angles
+        sage: a, b, c, r = var('a b c r')
+        sage: C = product_chart([euler_angles([(3, a), (1, b), (3, c)]),
+        ....:                    default_chart([r], [r])], [r, a, b, c])
+        sage: C.coordinates(), C.sheets(), C.singular_function()
+        ([r, a, b, c], 2, -sin(b))
+
+    TESTS::
+
+        sage: product_chart([default_chart([r], [r])], [a, r])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: chart: the charts' coordinates [r] are not the coordinates [a, r], each once
+    """
+    coordinates = [SR(q) for q in coordinates]
+    names = [str(q) for q in coordinates]
+    own = [str(q) for chart in charts for q in chart.coordinates()]
+    if sorted(own) != sorted(names) or len(set(names)) != len(names):
+        raise AnalysisError(f"the charts' coordinates [{', '.join(own)}] are not the "
+                            f"coordinates {coordinates}, each once", entry="chart")
+    E = matrix.zero(SR, len(coordinates))
+    embedding, sheets = [], 1
+    for chart in charts:
+        index = [names.index(str(q)) for q in chart.coordinates()]
+        F = chart.velocity_matrix()
+        for i, k in enumerate(index):
+            for j, l in enumerate(index):
+                E[k, l] = F[i, j]
+        embedding += chart.embedding()
+        sheets *= chart.sheets()
+    return ConfigurationChart(coordinates, embedding, E, sheets)
+
+
 def _angles(solutions):
     for s in solutions:
         translation = s.solution().translation()
