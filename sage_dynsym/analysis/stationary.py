@@ -659,16 +659,25 @@ class StationarySolution(MotionSolution):
         """
         positive = self._positive(positive)
         region = []
-        for sign in self._problem.signs:
-            for alt in self.stability_region(positive, sign):
-                if alt not in region:
-                    region.append(alt)
-        existence = simplify_conjunction(self.conditions(), positive) or []
+        first, why = [], "neither the second variation nor the first approximation decides"
+        try:
+            existence = simplify_conjunction(self.conditions(), positive) or []
+        except AnalysisError as err:
+            # where the solution is real is unknown: nothing is claimed
+            return StabilityVerdict('undecided', f"not decided: {err}")
+        try:
+            for sign in self._problem.signs:
+                for alt in self.stability_region(positive, sign):
+                    if alt not in region:
+                        region.append(alt)
+        except AnalysisError as err:
+            # the second variation is not decided (e.g. QEPCAD's budget):
+            # the first approximation may still decide
+            region, why = [], why + f" (second variation: {err})"
         lin = self.linear_system() if self.is_explicit() and \
             self.is_equilibrium() is not False else None
         # the first approximation is the one stability service's; the
         # Routh-Lyapunov theorem adds 'stable' (for the nonlinear system)
-        first, why = [], "neither the second variation nor the first approximation decides"
         try:
             first = lin.stability(positive=positive).cases() if lin is not None else []
         except AnalysisError as err:
