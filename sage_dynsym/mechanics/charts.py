@@ -31,6 +31,7 @@ from sage.matrix.constructor import matrix, vector
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, brief
+from ..arguments import model_argument
 from ..analysis.charts import ConfigurationChart, default_chart, product_chart
 from .frames import rotation_matrix
 
@@ -150,14 +151,21 @@ def model_chart(system, coordinates=None):
         (2, -sin(b))
         sage: model_chart(S, [a, b, c])
         Chart (a, b, c) of a configuration space embedded by [...]
+        sage: L = S.lagrangian()
 
     TESTS::
 
+        sage: model_chart(L)
+        Traceback (most recent call last):
+        ...
+        ModelError: system: expected a mechanical model, got ...
         sage: model_chart(S, [a, var('z')])
         Traceback (most recent call last):
         ...
         ModelError: coordinates: z is not a coordinate of the model; its coordinates are a, b, c, r
     """
+    model_argument(system, ['coordinates', 'bodies'], 'system', "a mechanical model",
+                   ModelError, hint="e.g. model_chart(MechanicalSystem([...], [...]))")
     model = system.coordinates()
     coordinates = model if coordinates is None else [SR(q) for q in coordinates]
     names = [str(q) for q in coordinates]
