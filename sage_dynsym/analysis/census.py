@@ -75,7 +75,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..arguments import symbol_arguments
 from ..algebra.translation import Translation
-from .charts import configuration_points, algebraic_value
+from .charts import configuration_points, algebraic_value, same_point
 from .verdict import STABLE_VERDICTS
 
 
@@ -326,8 +326,12 @@ def equilibria_at(system, values, chart=None, regular=None, positive=()):
     found = _points(system, values, chart, stationary_motions, positive)
     if regular is not None and any(p.is_singular() for p, _ in found):
         other = _points(regular[0], values, regular[1], stationary_motions, positive)
-        found = [first if not first[0].is_singular() else second
-                 for first, second in _matching(found, other)]
+        if len(other) != len(found):
+            raise AnalysisError(f"the two charts give {len(found)} and {len(other)} equilibria: "
+                                "they are not charts of the same model", entry="regular")
+        points = [p for p, _ in other]
+        found = [pv if not pv[0].is_singular() else other[_partner(pv[0], points)]
+                 for pv in found]
         if any(p.is_singular() for p, _ in found):
             raise AnalysisError("a point is singular in both charts; give a second chart "
                                 "regular on the singular set of the first (for Euler angles "
@@ -336,36 +340,14 @@ def equilibria_at(system, values, chart=None, regular=None, positive=()):
     return found
 
 
-def _matching(first, second, precisions=(53, 128, 256, 512, 1024)):
-    r"""
-    The pairs of the same point in two lists of ``(point, verdict)``: both
-    charts give every equilibrium once, so when the embeddings' intervals
-    overlap in exactly one partner for every point, that pairing is the
-    identity (the equal pairs always overlap); exact comparison is the
-    fallback.
-    """
-    if len(first) != len(second):
-        raise AnalysisError(f"the two charts give {len(first)} and {len(second)} equilibria: "
-                            "they are not charts of the same model", entry="regular")
-    for prec in precisions:
-        field = RealIntervalField(prec)
-
-        def box(pv):
-            return [x.interval(field) for x in pv[0].embedding()]
-        boxes = [box(pv) for pv in second]
-        pairs = []
-        for pv in first:
-            b = box(pv)
-            partners = [j for j, c in enumerate(boxes)
-                        if all(x.overlaps(y) for x, y in zip(b, c))]
-            if len(partners) != 1:
-                break
-            pairs.append((pv, second[partners[0]]))
-        else:
-            if len({id(q) for _, q in pairs}) == len(second):
-                return pairs
-    return [(pv, next(q for q in second if q[0].embedding() == pv[0].embedding()))
-            for pv in first]
+def _partner(point, points):
+    r"""The index of ``point`` among ``points`` (the same model in another chart)."""
+    j = same_point(point, points)
+    if j is None:
+        raise AnalysisError(f"the equilibrium {point.embedding()} of the first chart is not one "
+                            "of the second: they are not charts of the same model",
+                            entry="regular")
+    return j
 
 
 def _points(system, values, chart, stationary_motions, positive):
