@@ -169,6 +169,36 @@ def _is_positive_definite(K):
                for k in range(1, K.nrows() + 1))
 
 
+def point_verdict(point, problem):
+    r"""
+    The stability of a stationary solution at a point of the configuration
+    space, at numerical values of the parameters, decided exactly (real
+    algebraic numbers): ``'stable'`` where the function is definite of a
+    sign that gives stability (Routh; Lyapunov), else from the first
+    approximation as in the module documentation.
+
+    INPUT:
+
+    - ``point`` -- a :class:`~sage_dynsym.analysis.charts.ConfigurationPoint`
+    - ``problem`` -- the :class:`~sage_dynsym.analysis.stationary.StationaryProblem`,
+      without constraint integrals (the Hessian is not restricted)
+
+    OUTPUT: one of ``'stable'``, ``'unstable'``, ``'stable in first
+    approximation'``, ``'undecided'``
+
+    EXAMPLES: the real root of `x^5 - x - 1` (not solvable by radicals) is
+    a minimum of `x^6/6 - x^2/2 - x`::
+
+        sage: from sage_dynsym.analysis.census import point_verdict
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: x = var('x')
+        sage: sols = stationary_solutions([x^6/6 - x^2/2 - x], [x])
+        sage: [point_verdict(p, sols.stationary_problem()) for p in sols.configuration_points()]
+        ['stable']
+    """
+    return _verdict(point, problem, _is_gyroscopic(problem))
+
+
 def _verdict(point, problem, gyroscopic):
     r"""The stability of an equilibrium at numerical parameter values, exact."""
     if point.is_singular():
@@ -177,6 +207,8 @@ def _verdict(point, problem, gyroscopic):
     M = problem.kinetic
     M = None if M is None else M.apply_map(lambda e: algebraic_value(point.value(e), e))
     if _is_positive_definite(K) and (M is None or _is_positive_definite(M)):
+        return 'stable'
+    if 'negative' in problem.signs and M is None and _is_positive_definite(-K):
         return 'stable'
     linear = problem.linear_system(point.value)
     if linear is None:

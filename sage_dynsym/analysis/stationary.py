@@ -97,6 +97,7 @@ REFERENCES:
 """
 from sage.functions.trig import arctan2
 from sage.matrix.constructor import matrix
+from sage.rings.qqbar import AA
 from sage.misc.latex import latex
 from sage.symbolic.ring import SR
 
@@ -1288,6 +1289,13 @@ class ChartPointSolution(StationarySolution):
                 'undecided', "the point is on the singular set of the chart, where its "
                 "Hessian is degenerate: list the solutions with in_chart(chart, regular=...), "
                 "the same model in a chart regular there")
+        if not self._problem.constraint_integrals() and \
+                all(getattr(x, 'parent', lambda: None)() is AA for x in self.embedding()):
+            # a point of real algebraic numbers: decided exactly there
+            from .census import point_verdict
+            verdict = point_verdict(self._configuration_point, self._problem)
+            return StabilityVerdict(verdict, "decided exactly at the point (real algebraic "
+                                    "numbers): the Hessian and the first approximation")
         return StationarySolution.stability(self, positive)
 
 
