@@ -106,6 +106,7 @@ from ..arguments import expression_list, known_symbols, symbol_arguments
 from ..algebra.conditions import positive_conditions_all, conjunction, simplify_conjunction
 from .motion_solution import MotionSolution
 from .verdict import verdict_from_parts, StabilityVerdict
+from .point_stability import point_verdict
 from .linear import LinearSystem
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
@@ -1292,7 +1293,6 @@ class ChartPointSolution(StationarySolution):
         if not self._problem.constraint_integrals() and \
                 all(getattr(x, 'parent', lambda: None)() is AA for x in self.embedding()):
             # a point of real algebraic numbers: decided exactly there
-            from .census import point_verdict
             verdict = point_verdict(self._configuration_point, self._problem)
             return StabilityVerdict(verdict, "decided exactly at the point (real algebraic "
                                     "numbers): the Hessian and the first approximation")
