@@ -47,7 +47,7 @@ _PUBLIC = {
     '.mechanics.loads': ['Load'],
     '.mechanics.rolling': ['RollingDisk'],
     '.mechanics.system': ['MechanicalSystem'],
-    '.mechanics.charts': ['euler_angles'],
+    '.mechanics.charts': ['euler_angles', 'model_chart'],
     '.description': ['load', 'save', 'kinds', 'register_kind'],
     '.circuits': ['Circuit', 'NodalAnalysis'],
     '.analysis': ['stationary_solutions', 'stationary_motions', 'ModifiedRouthLyapunov',

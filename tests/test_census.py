@@ -29,8 +29,8 @@ from sage.all import SR, QQ, var, diagonal_matrix, zero_matrix, cos, sin
 from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField, Lagrangian
 from sage_dynsym.analysis.charts import configuration_points
 from sage_dynsym.analysis.census import equilibria_at, equilibrium_census, _counts
-from sage_dynsym.analysis.stationary import stationary_solutions
-from sage_dynsym.mechanics.charts import euler_angles
+from sage_dynsym.analysis.stationary import stationary_solutions, stationary_motions
+from sage_dynsym.mechanics.charts import euler_angles, model_chart
 
 
 # -- the independent route: critical points on SO(3) by numerical search ----------
@@ -82,7 +82,8 @@ def gyrostat(sequence):
                          force_function=NewtonianField(w0**2 * r**3, r, [cos(w0 * t), sin(w0 * t), 0]))
     L = Lagrangian(S.lagrangian().expr().simplify_trig().expand(), angles + [chi])
     R = L.routh([chi])
-    return R, euler_angles(list(zip([a for a, _ in sequence], angles)))
+    # the model knows its chart: the satellite turned by three angles
+    return R, model_chart(S, angles)
 
 
 @pytest.fixture(scope='module')
@@ -125,6 +126,59 @@ def test_gyrostat_equilibria_are_orientations(models, h):
     assert (n, stable, undecided) == (len(direct), minima, 0)
     if h == 0:
         assert (n, stable) == (24, 4)      # Beletsky; Sarychev
+
+
+# -- listings of stationary solutions in a chart -------------------------------------
+
+def rotation(chart, point, values=None):
+    point = {q: SR(v).subs(values or {}) for q, v in point.items()}
+    # the embedding of Euler angles is the rotation matrix, row by row
+    return np.array([float(SR(x).subs(point)) for x in chart.embedding()[:9]]).reshape(3, 3)
+
+
+def test_listing_in_a_chart_with_a_symbolic_parameter():
+    # W = tr(M^T R), M depending on k: the listing compares the images
+    # symbolically; at k = 1/3 its points are the numerical critical points
+    a, b, c, k = var('a b c k')
+    chart = euler_angles([(3, a), (1, b), (2, c)])
+    R = chart.rotation_matrix()
+    W = R[0, 0] + 2 * R[1, 1] + 3 * R[2, 2] + k * R[2, 1]
+    sols = stationary_solutions([W], [a, b, c], chart=chart)
+    M = np.array([[1, 0, 0], [0, 2, 0], [0, 1 / 3, 3]])
+
+    def torque(Rn):
+        S = Rn.T @ M - M.T @ Rn
+        return np.array([S[2, 1], S[0, 2], S[1, 0]])
+    found, _ = critical_orientations(torque, starts=100)
+    listed = [rotation(chart, s.point(), {k: QQ(1) / 3}) for s in sols]
+    assert len(sols.chart_solutions()) == 16 and len(listed) == len(found) == 4
+    assert all(sum(np.allclose(L, F, atol=1e-8) for F in found) == 1 for L in listed)
+    # the solutions left out are on the singular set (cos b = 0) and not critical
+    for s in sols.chart_artifacts():
+        Rn = rotation(chart, s.point(), {k: QQ(1) / 3})
+        assert abs(Rn[2, 1]) == pytest.approx(1) and np.linalg.norm(torque(Rn)) > 1e-3
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize('h', [0, QQ(1) / 10])
+def test_gyrostat_listing_is_orientations(models, h):
+    (R1, chart1), (R2, chart2) = models
+    values = {**VALUES, R1.momenta()[0]: h}
+    sols = stationary_motions(R1.subs(values), chart=chart1,
+                              regular=stationary_motions(R2.subs(values), chart=chart2))
+    torque = gyrostat_torque(*INERTIA, float(h))
+    direct, minima = critical_orientations(torque)
+    listed = [rotation(chart1, s.point()) for s in sols]
+    # each orientation once, every one an equilibrium, none missing
+    assert len(listed) == len(direct) == 24                   # Beletsky; Sarychev
+    assert all(sum(np.allclose(L, D, atol=1e-7) for D in direct) == 1 for L in listed)
+    # what the chart adds at beta = +-pi/2 (h != 0) is not an equilibrium
+    for s in sols.chart_artifacts():
+        Rn = rotation(chart1, s.point())
+        assert abs(Rn[2, 1]) == pytest.approx(1) and np.linalg.norm(torque(Rn)) > 1e-3
+    assert len(sols.chart_artifacts()) == (16 if h else 0)
+    # Routh: the minima of the amended potential on SO(3) are the stable ones
+    assert sum(1 for s in sols if s.stability().verdict() == 'stable') == minima == 4
 
 
 # -- census ---------------------------------------------------------------------------

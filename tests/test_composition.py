@@ -119,7 +119,6 @@ def private_reaches(klass):
 #: Today's reaches, each being removed by composing the classes; an entry is
 #: removed when its class no longer reaches (a test says when).
 REACH_ALLOWED = {
-    "sage_dynsym.algebra.solving.SolutionList": {"_solutions"},
     "sage_dynsym.numerics.codegen.GeneratedCode": {"_language"},
 }
 
@@ -238,7 +237,6 @@ def _foreign():
 #: Today's reads of other modules' private state; removed as the objects get
 #: public interfaces (a test says when an entry is no longer needed).
 FOREIGN_ALLOWED = {
-    "sage_dynsym.analysis.charts": {"inner._reduce"},
     "sage_dynsym.analysis.normal_form_stability": {"nf._form_values"},
     # Sage's Graphics keeps its keyword options behind private names only
     "sage_dynsym.numerics.trajectory": {"G._set_extra_kwds"},

@@ -188,6 +188,9 @@ class SolutionList(SageObject):
         (True, 2)
     """
 
+    def __init__(self, solutions):
+        self._solutions = list(solutions)
+
     def __iter__(self):
         return iter(self._solutions)
 
@@ -214,8 +217,8 @@ class SolutionSet(SolutionList):
     """
 
     def __init__(self, translation, solutions, n_equations):
+        SolutionList.__init__(self, solutions)
         self._translation = translation
-        self._solutions = solutions
         self._n = n_equations
 
     def _repr_(self):
@@ -528,15 +531,25 @@ class AlgebraicSolution(SageObject):
                  (self._T.is_angle(k))}
         e = e.subs(trig).subs(plain)
         if self._relations and not isinstance(self._prime, ShapePrime):
-            reduced = self._reduce(e)
+            reduced = self.reduce(e)
             if reduced is not None:
                 return reduced
         return normalize(e)
 
-    def _reduce(self, expr):
-        r"""``expr`` (in the unknowns) in normal form modulo the component,
-        or ``None`` if it cannot be translated or its denominator vanishes
-        on the component."""
+    def reduce(self, expr):
+        r"""
+        ``expr`` (rational in the unknowns) in normal form modulo the
+        component, or ``None`` if it cannot be translated or its denominator
+        vanishes on the component.
+
+        EXAMPLES: on the circle, `x^2 + y^2` is `1`::
+
+            sage: from sage_dynsym.algebra.solving import solve_exactly
+            sage: x, y = var('x y')
+            sage: s = solve_exactly([x^2 + y^2 - 1], [x, y])[0]
+            sage: s.reduce(x^2 + y^2 + x), s.reduce(1/(x^2 + y^2 - 1))
+            (x + 1, None)
+        """
         T = self._T
         try:
             f = T.fraction(expr)
@@ -720,13 +733,61 @@ def _solve_component(T, prime, sh, counted, positive):
     if free:
         family = _family(T, prime, free, counted, positive)
         if family is not None:
-            return [family]
+            # where its reality is not known, its branches may say
+            return [family] if family._reality_known else _branches(T, family, positive)
         return _singular_locus_solutions(T, prime, len(free), counted, positive)
     if T.field() is QQ:
         return _rational_points(T, prime, sh, counted)
     if sh is not None and sh[1].degree() > MAX_EXPLICIT_DEGREE:
         return [_implicit(T, prime, counted, positive)]
     return _parametric_points(T, prime, counted, positive)
+
+
+def _branches(T, family, positive):
+    r"""
+    An implicit family parametrised by its free unknowns: its relations
+    solved for the unknowns they bind, the free unknowns and the
+    parameters taken as parameters (a zero-dimensional system over their
+    field: radicals, with the conditions of reality). Each real branch is
+    an explicit family; the family is returned unchanged when a branch
+    cannot be written (or an unknown it binds is an angle).
+
+    Only families whose reality is not known otherwise are split (a curve
+    without parameters stays one implicit family).
+
+    EXAMPLES: the cone `x^2 = a y^2` over `x`, two branches real for
+    `a > 0`, besides the line `x = y = 0`::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, z, a = var('x y z a')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x^2 - a*y^2, z*x - y], [x, y, z])]
+        [({x: 0, y: 0, z: z}, []),
+         ({x: x, y: x/sqrt(a), z: 1/sqrt(a)}, [a > 0, x != 0]),
+         ({x: x, y: -x/sqrt(a), z: -1/sqrt(a)}, [a > 0, x != 0])]
+    """
+    unknowns = T.unknowns()
+    free = set(family._free)
+    bound = [i for i in range(len(unknowns)) if i not in free and i not in family._values]
+    if not bound or any(T.is_angle(unknowns[i]) for i in bound):
+        return [family]
+    try:
+        found = solve_exactly([SR(e).numerator() for e in family.equations()],
+                              [unknowns[i] for i in bound], positive=positive)
+    except (AnalysisError, ValueError, TypeError, NotImplementedError):
+        return [family]
+    if not found.is_complete() or any(b.dimension() or not b.is_explicit() for b in found):
+        return [family]
+    result = []
+    for b in found:
+        at = {unknowns[i]: b.values()[unknowns[i]] for i in bound}
+        values = {i: normalize(SR(v).subs(at)) for i, v in family._values.items()}
+        values.update({i: at[unknowns[i]] for i in bound})
+        conditions = conjunction(list(family._conditions), b.conditions())
+        if conditions is None:
+            continue
+        result.append(AlgebraicSolution(T, family._prime, family._free, family._counted,
+                                        values, dict(family._ring_values), [], conditions))
+    return result
 
 
 def _singular_locus_solutions(T, prime, dimension, counted, positive):

@@ -66,8 +66,7 @@ from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
-from sage.rings.qqbar import AA, QQbar
-from sage.rings.real_mpfi import RealIntervalField
+from sage.rings.qqbar import AA
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
@@ -75,8 +74,9 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..arguments import symbol_arguments
 from ..algebra.translation import Translation
-from .charts import configuration_points, algebraic_value
+from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
+from .point_stability import point_verdict, is_gyroscopic
 
 
 def _log(message, level=1):
@@ -164,135 +164,6 @@ def discriminant_polynomials(W, coordinates, parameters):
 
 # -- the equilibria at one point of the parameter space ----------------------------------
 
-def _is_positive_definite(K):
-    return all(K.matrix_from_rows_and_columns(range(k), range(k)).det() > 0
-               for k in range(1, K.nrows() + 1))
-
-
-def _verdict(point, problem, gyroscopic):
-    r"""The stability of an equilibrium at numerical parameter values, exact."""
-    if point.is_singular():
-        return 'undecided'
-    K = problem.hessian().apply_map(lambda e: algebraic_value(point.value(e), e))
-    M = problem.kinetic
-    M = None if M is None else M.apply_map(lambda e: algebraic_value(point.value(e), e))
-    if _is_positive_definite(K) and (M is None or _is_positive_definite(M)):
-        return 'stable'
-    linear = problem.linear_system(point.value)
-    if linear is None:
-        return 'undecided'
-    z = PolynomialRing(AA, 'z').gen()
-
-    def exact(A):
-        return A.apply_map(lambda e: algebraic_value(e, 'the first approximation'))
-    if linear.order() == 2:
-        Mx, Sx, Wx = exact(linear.M()), exact(linear.S()), exact(linear.W())
-        if gyroscopic and _is_positive_definite(Mx):
-            return _gyroscopic_verdict(Mx, Sx, Wx)
-        poly = (Mx * z**2 + Sx * z + Wx).det()
-    else:
-        J = exact(linear.jacobian())
-        poly = (z * matrix.identity(AA, J.nrows()) - J).det()
-    roots = poly.roots(QQbar)
-    if any(r.real() > 0 for r, _ in roots):
-        return 'unstable'
-    if all(r.real() == 0 and m == 1 for r, m in roots):
-        return 'stable in first approximation'
-    return 'undecided'
-
-
-def _is_gyroscopic(problem):
-    r"""Whether the first approximation has a skew velocity matrix and a
-    symmetric positional one at every point, decided on the symbolic
-    matrices (at a point, equal algebraic numbers given by different
-    expressions would need their minimal polynomials)."""
-    linear = problem.linear_system(lambda e: e)
-    if linear is None or linear.order() != 2:
-        return False
-    S, W = linear.S(), linear.W()
-    return all(SR(e).simplify_full().is_zero()
-               for e in (S + S.transpose()).list() + (W - W.transpose()).list())
-
-
-def _gyroscopic_verdict(M, G, K):
-    r"""
-    The stability of `M\ddot x + G\dot x + Kx = 0` with `G` skew and `M`
-    positive definite (and `K` not positive definite): an odd number of
-    negative eigenvalues of `K` (`\det K < 0`) gives instability whatever
-    the gyroscopic forces (Kelvin--Chetaev); otherwise the characteristic
-    polynomial is `q(\lambda^2)`, and the roots are simple and on the
-    imaginary axis iff those of `q` are real, negative and simple.
-    """
-    n = K.nrows()
-    if K.det() < 0:
-        return 'unstable'
-    for prec in (128, 512):
-        counts = _sturm_counts(M, G, K, prec)
-        if counts is not None:
-            break
-    else:
-        counts = _exact_counts(M, G, K)
-    if counts is None:
-        return 'undecided'
-    negative, positive = counts
-    if negative == n:
-        return 'stable in first approximation'
-    # fewer distinct real roots than the degree (q squarefree), or a positive
-    # one: a root mu not real and negative, so lambda with Re > 0
-    if negative + positive < n or positive:
-        return 'unstable'
-    return 'undecided'
-
-
-def _sturm_counts(M, G, K, prec):
-    r"""
-    The numbers of distinct negative and positive real roots of `q`, where
-    `\det(M z^2 + G z + K) = q(z^2)`, by a Sturm sequence in interval
-    arithmetic of precision ``prec``: exact when every leading coefficient
-    of the sequence and `q(0)` have a certain sign and `q` is squarefree;
-    ``None`` otherwise.
-    """
-    F = RealIntervalField(prec)
-    z = PolynomialRing(F, 'z').gen()
-    p = (M.change_ring(F) * z**2 + G.change_ring(F) * z + K.change_ring(F)).det()
-    n = K.nrows()
-    q = PolynomialRing(F, 'mu')([p[2 * k] for k in range(n + 1)])
-    sequence = [q, q.derivative()]
-    while sequence[-1].degree() > 0:
-        r = -(sequence[-2] % sequence[-1])
-        if r.degree() < 0 or r.leading_coefficient().contains_zero():
-            return None     # its degree is not certain (or q is not squarefree)
-        sequence.append(r)
-    if any(f.leading_coefficient().contains_zero() or f[0].contains_zero() for f in sequence):
-        return None
-
-    def changes(signs):
-        signs = [x for x in signs if x != 0]
-        return sum(1 for a, b in zip(signs, signs[1:]) if a != b)
-
-    def sign(x):
-        return 1 if x > 0 else -1
-    at_minus = changes([sign(f.leading_coefficient()) * (-1) ** f.degree() for f in sequence])
-    at_plus = changes([sign(f.leading_coefficient()) for f in sequence])
-    at_zero = changes([sign(f[0]) for f in sequence])
-    return at_minus - at_zero, at_zero - at_plus
-
-
-def _exact_counts(M, G, K):
-    r"""The numbers of distinct negative and positive real roots of `q`
-    (see :func:`_sturm_counts`), exactly; ``None`` when `q` has a multiple
-    root (a critical case)."""
-    z = PolynomialRing(AA, 'z').gen()
-    p = (M * z**2 + G * z + K).det()
-    n = K.nrows()
-    q = PolynomialRing(AA, 'mu')([p[2 * k] for k in range(n + 1)])
-    roots = q.roots(AA)
-    if any(m > 1 for _, m in roots) or sum(m for _, m in roots) < n and \
-            not q.is_squarefree():
-        return None
-    return sum(1 for r, _ in roots if r < 0), sum(1 for r, _ in roots if r > 0)
-
-
 def equilibria_at(system, values, chart=None, regular=None, positive=()):
     r"""
     The equilibria (stationary motions) of a Lagrangian or Routh function at
@@ -326,8 +197,12 @@ def equilibria_at(system, values, chart=None, regular=None, positive=()):
     found = _points(system, values, chart, stationary_motions, positive)
     if regular is not None and any(p.is_singular() for p, _ in found):
         other = _points(regular[0], values, regular[1], stationary_motions, positive)
-        found = [first if not first[0].is_singular() else second
-                 for first, second in _matching(found, other)]
+        if len(other) != len(found):
+            raise AnalysisError(f"the two charts give {len(found)} and {len(other)} equilibria: "
+                                "they are not charts of the same model", entry="regular")
+        points = [p for p, _ in other]
+        found = [pv if not pv[0].is_singular() else other[_partner(pv[0], points)]
+                 for pv in found]
         if any(p.is_singular() for p, _ in found):
             raise AnalysisError("a point is singular in both charts; give a second chart "
                                 "regular on the singular set of the first (for Euler angles "
@@ -336,36 +211,14 @@ def equilibria_at(system, values, chart=None, regular=None, positive=()):
     return found
 
 
-def _matching(first, second, precisions=(53, 128, 256, 512, 1024)):
-    r"""
-    The pairs of the same point in two lists of ``(point, verdict)``: both
-    charts give every equilibrium once, so when the embeddings' intervals
-    overlap in exactly one partner for every point, that pairing is the
-    identity (the equal pairs always overlap); exact comparison is the
-    fallback.
-    """
-    if len(first) != len(second):
-        raise AnalysisError(f"the two charts give {len(first)} and {len(second)} equilibria: "
-                            "they are not charts of the same model", entry="regular")
-    for prec in precisions:
-        field = RealIntervalField(prec)
-
-        def box(pv):
-            return [x.interval(field) for x in pv[0].embedding()]
-        boxes = [box(pv) for pv in second]
-        pairs = []
-        for pv in first:
-            b = box(pv)
-            partners = [j for j, c in enumerate(boxes)
-                        if all(x.overlaps(y) for x, y in zip(b, c))]
-            if len(partners) != 1:
-                break
-            pairs.append((pv, second[partners[0]]))
-        else:
-            if len({id(q) for _, q in pairs}) == len(second):
-                return pairs
-    return [(pv, next(q for q in second if q[0].embedding() == pv[0].embedding()))
-            for pv in first]
+def _partner(point, points):
+    r"""The index of ``point`` among ``points`` (the same model in another chart)."""
+    j = same_point(point, points)
+    if j is None:
+        raise AnalysisError(f"the equilibrium {point.embedding()} of the first chart is not one "
+                            "of the second: they are not charts of the same model",
+                            entry="regular")
+    return j
 
 
 def _points(system, values, chart, stationary_motions, positive):
@@ -377,8 +230,8 @@ def _points(system, values, chart, stationary_motions, positive):
                             "census counts isolated equilibria: this point of the parameter "
                             "space is on the bifurcation set", entry="equilibrium_census")
     problem = sols.stationary_problem()
-    gyroscopic = _is_gyroscopic(problem)
-    return [(p, _verdict(p, problem, gyroscopic)) for p in points]
+    gyroscopic = is_gyroscopic(problem)
+    return [(p, point_verdict(p, problem, gyroscopic)) for p in points]
 
 
 def _counts(verdicts):

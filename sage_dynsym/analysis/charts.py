@@ -70,6 +70,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..arguments import expression_list, model_argument
 from ..algebra.translation import expand_angles
+from ..algebra.solving import normalize
 
 
 class ConfigurationChart(SageObject):
@@ -304,9 +305,9 @@ def _evaluators(solution, angles):
     if points is None:
         def evaluate(expr):
             value = inner.evaluate(expr)
-            if not _is_constant(value, inner.free_unknowns()) and hasattr(inner, '_reduce'):
+            if not _is_constant(value, inner.free_unknowns()) and hasattr(inner, 'reduce'):
                 # on a family, the normal form modulo its ideal: cos^2 + sin^2 is 1 there
-                reduced = inner._reduce(SR(expr))
+                reduced = inner.reduce(SR(expr))
                 return value if reduced is None else reduced
             return value
         return [evaluate]
@@ -373,23 +374,130 @@ def configuration_points(solutions, chart=None, families=None):
         ...
         AnalysisError: configuration_points: the value 1/2*k of x is not a real algebraic number that Sage can compare exactly; give numerical values to every parameter (values=...)
     """
-    model_argument(solutions, ['variables', 'stationary_problem'], 'solutions',
-                   "the stationary solutions of a model",
+    model_argument(solutions, ['variables', 'stationary_problem', 'chart_solutions'],
+                   'solutions', "the stationary solutions of a model",
                    AnalysisError, hint="e.g. configuration_points(stationary_motions(L), chart)")
-    variables = solutions.variables()
-    translation = None
+    return points_of_chart(solutions.chart_solutions(), solutions.variables(),
+                           solutions.stationary_problem().function, chart, families)
+
+
+def default_chart(variables, angles):
+    r"""
+    The chart where every angle among ``variables`` is a point of a circle
+    (its cosine and sine) and every other variable a real number.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.charts import default_chart
+        sage: x, q = var('x q')
+        sage: default_chart([x, q], [q]).embedding()
+        [x, cos(q), sin(q)]
+    """
+    embedding = []
+    for q in variables:
+        embedding += [q.cos(), q.sin()] if any(str(q) == str(u) for u in angles) else [q]
+    return ConfigurationChart(variables, embedding)
+
+
+def product_chart(charts, coordinates):
+    r"""
+    The product of charts of the factors of a configuration space, as a
+    chart of ``coordinates`` (the union of the factors' coordinates, in any
+    order): the embeddings concatenated, `E` block-diagonal, the sheets
+    multiplied.
+
+    EXAMPLES: Euler angles of a body and the angle of a rotor on it::
+
+        sage: from sage_dynsym.analysis.charts import product_chart, default_chart
+        sage: from sage_dynsym.mechanics.charts import euler_angles
+        sage: a, b, c, r = var('a b c r')
+        sage: C = product_chart([euler_angles([(3, a), (1, b), (3, c)]),
+        ....:                    default_chart([r], [r])], [r, a, b, c])
+        sage: C.coordinates(), C.sheets(), C.singular_function()
+        ([r, a, b, c], 2, -sin(b))
+
+    TESTS::
+
+        sage: product_chart([default_chart([r], [r])], [a, r])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: chart: the charts' coordinates [r] are not the coordinates [a, r], each once
+    """
+    coordinates = [SR(q) for q in coordinates]
+    names = [str(q) for q in coordinates]
+    own = [str(q) for chart in charts for q in chart.coordinates()]
+    if sorted(own) != sorted(names) or len(set(names)) != len(names):
+        raise AnalysisError(f"the charts' coordinates [{', '.join(own)}] are not the "
+                            f"coordinates {coordinates}, each once", entry="chart")
+    E = matrix.zero(SR, len(coordinates))
+    embedding, sheets = [], 1
+    for chart in charts:
+        index = [names.index(str(q)) for q in chart.coordinates()]
+        F = chart.velocity_matrix()
+        for i, k in enumerate(index):
+            for j, l in enumerate(index):
+                E[k, l] = F[i, j]
+        embedding += chart.embedding()
+        sheets *= chart.sheets()
+    return ConfigurationChart(coordinates, embedding, E, sheets)
+
+
+def _angles(solutions):
     for s in solutions:
         translation = s.solution().translation()
-        break
-    angles = [] if translation is None else \
-        [u for u in translation.unknowns() if translation.is_angle(u)]
+        if translation is not None:
+            return [u for u in translation.unknowns() if translation.is_angle(u)]
+    return []
+
+
+def points_of_chart(solutions, variables, function, chart=None, families=None, artifacts=None,
+                    exact=True):
+    r"""
+    The distinct points of the configuration space where the stationary
+    solutions ``solutions`` (a list) of ``function`` in the chart lie:
+    the core of :func:`configuration_points`.
+
+    INPUT:
+
+    - ``solutions`` -- a list of
+      :class:`~sage_dynsym.analysis.stationary.StationarySolution`
+    - ``variables`` -- their variables; ``function`` -- the function whose
+      critical points they are (`K` or the amended potential `W`)
+    - ``chart``, ``families`` -- as in :func:`configuration_points`
+    - ``artifacts`` -- (optional) a list that receives the solutions on the
+      chart's singular set that are not equilibria
+    - ``exact`` -- (default: ``True``) compare the points as real algebraic
+      numbers (every parameter must have a numerical value); ``False``:
+      compare the symbolic images (a solution on the singular set is then
+      an artifact when the obstruction does not vanish identically in the
+      parameters)
+
+    OUTPUT: a list of :class:`ConfigurationPoint`, sorted by embedding when
+    ``exact``, in the order found otherwise
+
+    EXAMPLES: with a symbolic parameter, the covers of Euler angles merged
+    and the eight solutions on the singular set that are not critical
+    points (for `k \ne 0`) left out::
+
+        sage: from sage_dynsym.analysis.charts import points_of_chart
+        sage: from sage_dynsym.mechanics.charts import euler_angles
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: a, b, c, k = var('a b c k')
+        sage: chart = euler_angles([(3, a), (1, b), (2, c)])
+        sage: R = chart.rotation_matrix(); W = R[0, 0] + 2*R[1, 1] + 3*R[2, 2] + k*R[2, 1]
+        sage: sols = stationary_solutions([W], [a, b, c])
+        sage: artifacts = []
+        sage: points = points_of_chart(list(sols), [a, b, c], W, chart, artifacts=artifacts,
+        ....:                          exact=False)
+        sage: len(sols), len(points), len(artifacts)
+        (16, 4, 8)
+    """
+    solutions = list(solutions)
+    angles = _angles(solutions)
     if chart is None:
-        embedding = []
-        for q in variables:
-            embedding += [q.cos(), q.sin()] if any(str(q) == str(u) for u in angles) else [q]
-        chart = ConfigurationChart(variables, embedding)
+        chart = default_chart(variables, angles)
     singular = chart.singular_function()
-    obstruction = None
+    obstruction = []
     regular, on_singular = [], {}
     for s in solutions:
         free = s.solution().free_unknowns()
@@ -399,20 +507,80 @@ def configuration_points(solutions, chart=None, families=None):
                 if families is not None:
                     families.append(s)
                 break
-            key = tuple(algebraic_value(v, f"{e}") for v, e in zip(image, chart.embedding()))
+            key = tuple(algebraic_value(v, f"{e}") for v, e in zip(image, chart.embedding())) \
+                if exact else tuple(SR(v) for v in image)
             if not SR(evaluate(singular)).is_zero():
                 regular.append((key, evaluate, s))
                 continue
-            if obstruction is None:
-                obstruction = chart.equilibrium_obstruction(solutions.stationary_problem().function)
-            if all(SR(evaluate(m)).is_zero() for m in obstruction.list()):
+            if not obstruction:
+                obstruction = chart.equilibrium_obstruction(function).list()
+            if all(normalize(evaluate(m)).is_zero() for m in obstruction):
                 # few, with simple values: compared exactly
                 on_singular.setdefault(key, (evaluate, []))[1].append(s)
+            elif artifacts is not None and s not in artifacts:
+                artifacts.append(s)
+    groups = _sheets(regular, chart.sheets()) if exact else _symbolic_groups(regular)
     points = [ConfigurationPoint(group[0][0], [s for _, _, s in group], group[0][1], False)
-              for group in _sheets(regular, chart.sheets())]
+              for group in groups]
     points += [ConfigurationPoint(key, sols, evaluate, True)
                for key, (evaluate, sols) in on_singular.items()]
+    if not exact:
+        return points
     return sorted(points, key=lambda p: [float(x) for x in p.embedding()])
+
+
+def _symbolic_groups(found):
+    r"""The items ``(embedding, evaluate, solution)`` grouped by equal
+    symbolic embeddings (their differences normalize to zero)."""
+    groups = []
+    for item in found:
+        for group in groups:
+            if all(normalize(x - y).is_zero() for x, y in zip(item[0], group[0][0])):
+                group.append(item)
+                break
+        else:
+            groups.append([item])
+    return groups
+
+
+def same_point(first, second, precisions=(53, 128, 256, 512, 1024)):
+    r"""
+    The index in the list of :class:`ConfigurationPoint` ``second`` of the
+    point equal to ``first`` (``None`` if there is none): by interval
+    arithmetic on real algebraic embeddings (the one partner whose intervals
+    overlap, at increasing precision; exact comparison as the fallback), by
+    symbolic simplification otherwise.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.charts import configuration_points, same_point
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: x, y = var('x y')
+        sage: P = configuration_points(stationary_solutions([cos(2*x)], [x]))
+        sage: Q = configuration_points(stationary_solutions([cos(2*y)], [y]))
+        sage: [same_point(p, Q) for p in P]
+        [0, 1, 2, 3]
+    """
+    key = first.embedding()
+    if not all(getattr(v, "parent", lambda: None)() is AA for v in key):
+        for j, other in enumerate(second):
+            if all(normalize(SR(x) - SR(y)).is_zero() for x, y in zip(key, other.embedding())):
+                return j
+        return None
+    for prec in precisions:
+        field = RealIntervalField(prec)
+        box = [x.interval(field) for x in key]
+        partners = [j for j, other in enumerate(second)
+                    if all(a.overlaps(AA(b).interval(field))
+                           for a, b in zip(box, other.embedding()))]
+        if not partners:
+            return None
+        if len(partners) == 1:
+            # one candidate left: equal only if exactly so
+            j = partners[0]
+            return j if all(AA(x) == AA(y) for x, y in zip(key, second[j].embedding())) else None
+    return next((j for j, other in enumerate(second)
+                 if all(AA(x) == AA(y) for x, y in zip(key, other.embedding()))), None)
 
 
 def _sheets(found, sheets, precisions=(53, 128, 256, 512, 1024)):

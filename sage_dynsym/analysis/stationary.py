@@ -95,7 +95,9 @@ REFERENCES:
   Mech. 30 (1966) 1090--1103.
 - D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997.
 """
+from sage.functions.trig import arctan2
 from sage.matrix.constructor import matrix
+from sage.rings.qqbar import AA
 from sage.misc.latex import latex
 from sage.misc.superseded import deprecation
 from sage.symbolic.ring import SR
@@ -104,7 +106,8 @@ from ..errors import AnalysisError, DynSymError, brief
 from ..arguments import expression_list, known_symbols, symbol_arguments
 from ..algebra.conditions import positive_conditions_all, conjunction, simplify_conjunction
 from .motion_solution import MotionSolution
-from .verdict import verdict_from_parts
+from .verdict import verdict_from_parts, StabilityVerdict
+from .point_stability import point_verdict
 from .linear import LinearSystem, equations_of_motion
 from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
@@ -659,16 +662,25 @@ class StationarySolution(MotionSolution):
         """
         positive = self._positive(positive)
         region = []
-        for sign in self._problem.signs:
-            for alt in self.stability_region(positive, sign):
-                if alt not in region:
-                    region.append(alt)
-        existence = simplify_conjunction(self.conditions(), positive) or []
+        first, why = [], "neither the second variation nor the first approximation decides"
+        try:
+            existence = simplify_conjunction(self.conditions(), positive) or []
+        except AnalysisError as err:
+            # where the solution is real is unknown: nothing is claimed
+            return StabilityVerdict('undecided', f"not decided: {err}")
+        try:
+            for sign in self._problem.signs:
+                for alt in self.stability_region(positive, sign):
+                    if alt not in region:
+                        region.append(alt)
+        except AnalysisError as err:
+            # the second variation is not decided (e.g. QEPCAD's budget):
+            # the first approximation may still decide
+            region, why = [], why + f" (second variation: {err})"
         lin = self.linear_system() if self.is_explicit() and \
             self.is_equilibrium() is not False else None
         # the first approximation is the one stability service's; the
         # Routh-Lyapunov theorem adds 'stable' (for the nonlinear system)
-        first, why = [], "neither the second variation nor the first approximation decides"
         try:
             first = lin.stability(positive=positive).cases() if lin is not None else []
         except AnalysisError as err:
@@ -734,14 +746,49 @@ class StationarySolutions(SolutionList):
         sage: TestSuite(sols).run(skip=['_test_pickling'])
     """
 
-    def __init__(self, problem, solutions):
+    def __init__(self, problem, solutions, chart=None, regular=None):
         if not isinstance(problem, StationaryProblem):
             raise AnalysisError(f"expected a stationary problem, got {brief(problem)}; the "
                                 "solutions come from stationary_solutions(integrals, variables)",
                                 entry="StationarySolutions")
         self._problem = problem
         self._set = solutions
-        self._solutions = [StationarySolution(problem, s) for s in solutions]
+        self._raw = [StationarySolution(problem, s) for s in solutions]
+        self._chart = chart
+        self._artifacts = []
+        SolutionList.__init__(self, self._raw if chart is None else
+                              self._points(chart, regular))
+
+    def _points(self, chart, regular):
+        r"""The listing in ``chart``: one :class:`ChartPointSolution` per point
+        of the configuration space, then the families of configurations."""
+        from .charts import points_of_chart, same_point
+        variables = self._problem.solved_variables()
+        if [str(q) for q in chart.coordinates()] != [str(x) for x in variables]:
+            raise AnalysisError(f"the chart's coordinates {chart.coordinates()} are not the "
+                                f"variables solved for, {variables}; give a chart of "
+                                f"{', '.join(map(str, variables))}", entry="chart")
+        names = {str(x) for x in variables}
+        exact = all(str(v) in names or str(v) == 't'
+                    for e in self._problem.equations for v in SR(e).variables())
+        families = []
+        points = points_of_chart(self._raw, variables, self._problem.function, chart, families,
+                                 self._artifacts, exact=exact)
+        others = [] if regular is None else \
+            [(s.configuration_point(), s) for s in regular if isinstance(s, ChartPointSolution)]
+        listed = []
+        for point in points:
+            partner = None
+            if point.is_singular() and regular is not None:
+                j = same_point(point, [p for p, _ in others])
+                if j is None or others[j][0].is_singular():
+                    raise AnalysisError(f"the equilibrium {point.embedding()} on the singular set "
+                                        "of the chart is not a regular point of the listing "
+                                        "given as regular=: give the same model in a chart "
+                                        "regular there", entry="regular")
+                partner = others[j][1]
+            listed.append(ChartPointSolution(self._problem, point, partner))
+        return listed + families
 
     def _repr_(self):
         what = self._problem.description
@@ -751,7 +798,95 @@ class StationarySolutions(SolutionList):
         n = len(self._solutions)
         note = "" if self._set.is_complete() else \
             " (transcendental equations: found by Maxima's solve, possibly not all)"
+        if self._chart is not None:
+            note += f" (points of the configuration space; {len(self._raw)} in the chart)"
         return f"{n} stationary solution{'s' if n != 1 else ''} of {what}{note}"
+
+    def chart(self):
+        r"""
+        The chart of the configuration space the listing is made in, or
+        ``None`` (then every solution of the equations is listed).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: stationary_solutions([x^2], [x]).chart() is None
+            True
+        """
+        return self._chart
+
+    def in_chart(self, chart, regular=None):
+        r"""
+        The same solutions listed as points of the configuration space of
+        which ``chart`` is a chart: the solutions of the chart over one point
+        (its covers) are one :class:`ChartPointSolution`, a family of
+        solutions of the chart over one point (on its singular set) is that
+        point, a solution on the singular set is kept only if it is an
+        equilibrium (:meth:`~sage_dynsym.analysis.charts.ConfigurationChart.equilibrium_obstruction`,
+        exact), the real points of implicit zero-dimensional components are
+        listed one by one; the families of configurations follow.
+
+        INPUT:
+
+        - ``chart`` -- a :class:`~sage_dynsym.analysis.charts.ConfigurationChart`
+          of the variables (e.g. :func:`~sage_dynsym.mechanics.charts.euler_angles`)
+        - ``regular`` -- (optional) the stationary solutions of the same
+          model in a chart regular on the singular set of ``chart``, listed
+          in that chart: the stability of a point on the singular set is
+          decided there (otherwise it is ``'undecided'``)
+
+        OUTPUT: a :class:`StationarySolutions`; its :meth:`chart_solutions`
+        are the solutions of the chart, :meth:`chart_artifacts` those left
+        out. With numerical parameter values the points are compared as
+        real algebraic numbers; with symbolic parameters the images are
+        compared symbolically, and a solution on the singular set is left
+        out when it is an equilibrium for no generic value of them.
+
+        EXAMPLES: the critical points of `W = \operatorname{tr}(M^T R)` on
+        `SO(3)` (module :mod:`~sage_dynsym.analysis.charts`): sixteen
+        solutions of the angles, four orientations::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: from sage_dynsym.mechanics.charts import euler_angles
+            sage: a, b, c = var('a b c')
+            sage: chart = euler_angles([(3, a), (1, b), (2, c)])
+            sage: R = chart.rotation_matrix()
+            sage: sols = stationary_solutions([R[0, 0] + 2*R[1, 1] + 3*R[2, 2] + R[2, 1]/3],
+            ....:                             [a, b, c]).in_chart(chart); sols
+            4 stationary solutions of K = ... (points of the configuration space; 16 in the chart)
+            sage: [len(s.chart_solutions()) for s in sols], len(sols.chart_artifacts())
+            ([2, 2, 2, 2], 8)
+        """
+        return StationarySolutions(self._problem, self._set, chart, regular)
+
+    def chart_solutions(self):
+        r"""
+        Every solution of the equations in the chart's coordinates, as
+        solved (covers and solutions on the chart's singular set included):
+        a :class:`StationarySolutions` without a chart.
+
+        EXAMPLES: see :meth:`in_chart`::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x = var('x')
+            sage: len(stationary_solutions([x^2], [x]).chart_solutions())
+            1
+        """
+        return self if self._chart is None else StationarySolutions(self._problem, self._set)
+
+    def chart_artifacts(self):
+        r"""
+        The solutions of the chart left out of the listing: on its singular
+        set, and not equilibria.
+
+        EXAMPLES: see :meth:`in_chart`::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: stationary_solutions([var('x')^2], [var('x')]).chart_artifacts()
+            []
+        """
+        return list(self._artifacts)
 
     def __eq__(self, other):
         return isinstance(other, StationarySolutions) and \
@@ -831,6 +966,11 @@ class StationarySolutions(SolutionList):
         if not self.is_complete():
             lines.append("  (transcendental equations: solutions found by Maxima's solve, "
                          "possibly not all)")
+        if self._chart is not None:
+            lines.append(f"  (points of the configuration space of the chart {self._chart}: "
+                         f"{len(self._raw)} solutions of the chart, covers merged, "
+                         f"{len(self._artifacts)} on its singular set that are not "
+                         "equilibria left out; chart_solutions() lists them all)")
         for k, s in enumerate(self, 1):
             values = ", ".join(f"{v} = {e}" for v, e in s.point().items() if str(v) != str(e))
             kind = s._kind()
@@ -984,11 +1124,191 @@ class StationarySolutions(SolutionList):
         return configuration_points(self, chart, families)
 
 
-def solve_stationary(problem):
+class ChartPointSolution(StationarySolution):
+    r"""
+    One stationary solution listed as a point of the configuration space
+    (see :meth:`StationarySolutions.in_chart`): the solutions of the chart
+    over it, its values taken at one of them (on a family over the point,
+    at a point of the family), and its stability decided there -- or, on
+    the chart's singular set, in the regular chart when one was given
+    (``'undecided'`` otherwise: the chart's Hessian is degenerate there).
+
+    INPUT:
+
+    - ``problem`` -- the :class:`StationaryProblem`
+    - ``point`` -- a :class:`~sage_dynsym.analysis.charts.ConfigurationPoint`
+    - ``regular`` -- (optional) the same point as a stationary solution in
+      a regular chart
+
+    EXAMPLES: the angles `a, b, c` about the axes `z, x, y` are singular at
+    `b = \pm\pi/2`; the four critical points of `W = R_{00} + 2R_{12} +
+    3R_{21}` on `SO(3)` are there, each a curve of angles::
+
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: from sage_dynsym.mechanics.charts import euler_angles
+        sage: a, b, c = var('a b c')
+        sage: def W(chart):
+        ....:     R = chart.rotation_matrix()
+        ....:     return R[0, 0] + 2*R[1, 2] + 3*R[2, 1]
+        sage: chart = euler_angles([(3, a), (1, b), (2, c)])
+        sage: sols = stationary_solutions([W(chart)], [a, b, c], chart=chart)
+        sage: [(s.dimension(), s.is_singular(), s.point()) for s in sols]
+        [(0, True, {a: 0, b: -1/2*pi, c: pi}),
+         (0, True, {a: 0, b: 1/2*pi, c: pi}),
+         (0, True, {a: 0, b: 1/2*pi, c: 0}),
+         (0, True, {a: 0, b: -1/2*pi, c: 0})]
+        sage: [s.dimension() for s in sols.chart_solutions()]
+        [1, 1, 1, 1]
+        sage: sols[0].stability()
+        undecided: the point is on the singular set of the chart, ...
+
+    In the angles about `z, y, x` (singular where `|R_{20}| = 1`) the four
+    points are regular: the minimum and the maximum of `W`, where `K = W`
+    is definite, and two saddles (no equations of motion were given, so
+    they stay undecided)::
+
+        sage: second = euler_angles([(3, a), (2, b), (1, c)])
+        sage: sols = stationary_solutions([W(chart)], [a, b, c], chart=chart,
+        ....:     regular=stationary_solutions([W(second)], [a, b, c], chart=second))
+        sage: [(s.regular_solution().point(), s.stability().verdict()) for s in sols]
+        [({a: 0, b: pi, c: 1/2*pi}, 'stable'),
+         ({a: 0, b: pi, c: -1/2*pi}, 'stable'),
+         ({a: 0, b: 0, c: 1/2*pi}, 'undecided'),
+         ({a: 0, b: 0, c: -1/2*pi}, 'undecided')]
+        sage: [s.regular_solution().hessian().eigenvalues() for s in sols]
+        [[3, 4, 5], [-5, -2, -1], [-4, -1, 1], [-3, 1, 2]]
+    """
+
+    def __init__(self, problem, point, regular=None):
+        StationarySolution.__init__(self, problem, point.solutions()[0].solution())
+        self._configuration_point = point
+        self._regular = regular
+
+    def _kind(self):
+        n = len(self._configuration_point.solutions())
+        where = ", on the chart's singular set" if self.is_singular() else ""
+        return f"isolated, a point of the configuration space: {n} in the chart{where}"
+
+    def _at(self, expr):
+        return self._configuration_point.value(expr)
+
+    def configuration_point(self):
+        r"""The :class:`~sage_dynsym.analysis.charts.ConfigurationPoint`.
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        return self._configuration_point
+
+    def chart_solutions(self):
+        r"""The solutions of the chart over the point.
+
+        EXAMPLES: see :meth:`StationarySolutions.in_chart`.
+        """
+        return self._configuration_point.solutions()
+
+    def embedding(self):
+        r"""The point's image in the chart's embedding (e.g. the rotation matrix).
+
+        EXAMPLES: see :meth:`StationarySolutions.in_chart`.
+        """
+        return self._configuration_point.embedding()
+
+    def is_singular(self):
+        r"""Whether the point is on the chart's singular set.
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        return self._configuration_point.is_singular()
+
+    def regular_solution(self):
+        r"""The point as a stationary solution of the regular chart, or ``None``.
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        return self._regular
+
+    def dimension(self):
+        r"""``0``: one point of the configuration space.
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        return 0
+
+    def is_explicit(self):
+        r"""``True``: the point's values are known (exact).
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        return True
+
+    def equations(self):
+        r"""``[]``: the point is given by its values.
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        return []
+
+    def point(self):
+        r"""
+        The values of the variables at one solution of the chart over the
+        point (on a family over it, the free variables set to a value where
+        the family is defined).
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        values = StationarySolution.point(self)
+        free = self._solution.free_unknowns()
+        angles = self._solution.translation().is_angle if \
+            self._solution.translation() is not None else (lambda u: False)
+        for x, v in values.items():
+            if str(v) == str(x) and all(str(x) != str(u) for u in free):
+                # a point of an implicit component: its exact values
+                values[x] = SR(self._at(x)) if not angles(x) else \
+                    SR(arctan2(self._at(x.sin()), self._at(x.cos())))
+        free = [u for u in free if any(SR(v).has(u) for v in values.values())]
+        for trial in (0, 1, 2, 3):
+            try:
+                at = {x: normalize(SR(v).subs({u: trial for u in free}))
+                      for x, v in values.items()}
+            except (ValueError, ZeroDivisionError, RuntimeError):
+                continue
+            if not any(SR(v).has(u) for v in at.values() for u in free):
+                return at
+        return values
+
+    def stability(self, positive=None):
+        r"""
+        The stability verdict of the point: as for any stationary solution
+        at a regular point of the chart; on its singular set, that of the
+        regular chart if one was given, ``'undecided'`` otherwise.
+
+        EXAMPLES: see :class:`ChartPointSolution`.
+        """
+        if self._regular is not None:
+            return self._regular.stability(positive)
+        if self.is_singular():
+            return StabilityVerdict(
+                'undecided', "the point is on the singular set of the chart, where its "
+                "Hessian is degenerate: list the solutions with in_chart(chart, regular=...), "
+                "the same model in a chart regular there")
+        if not self._problem.constraint_integrals() and \
+                all(getattr(x, 'parent', lambda: None)() is AA for x in self.embedding()):
+            # a point of real algebraic numbers: decided exactly there
+            verdict = point_verdict(self._configuration_point, self._problem)
+            return StabilityVerdict(verdict, "decided exactly at the point (real algebraic "
+                                    "numbers): the Hessian and the first approximation")
+        return StationarySolution.stability(self, positive)
+
+
+def solve_stationary(problem, chart=None, regular=None):
     r"""
     Deprecated: use ``stationary_solutions(problem)``
     (:func:`stationary_solutions`, the one way to ask for stationary
     solutions).
+
+    With a ``chart`` of the variables (and optionally the solutions of the
+    same model in a ``regular`` chart), the solutions are listed as points
+    of the configuration space (:meth:`StationarySolutions.in_chart`).
 
     EXAMPLES::
 
@@ -1003,10 +1323,10 @@ def solve_stationary(problem):
         [{x: sqrt(a)}, {x: -sqrt(a)}]
     """
     deprecation(31, "solve_stationary(problem) is deprecated; use stationary_solutions(problem)")
-    return stationary_solutions(problem)
+    return stationary_solutions(problem, chart=chart, regular=regular)
 
 
-def _solved(problem):
+def _solved(problem, chart=None, regular=None):
     # the equations of the problem solved exactly (Maxima's solve the
     # fallback for transcendental equations), the dimensions counted in the
     # unknowns that are not multipliers
@@ -1014,11 +1334,11 @@ def _solved(problem):
                           counted=problem.solved_variables(), positive=problem.positive,
                           extra=[problem.function] + list(problem.rhs or []),
                           transcendental=True)
-    return StationarySolutions(problem, found)
+    return StationarySolutions(problem, found, chart, regular)
 
 
 def stationary_solutions(integrals, variables=None, equations=None, multipliers=None,
-                         levels=None, positive=(), solve_for=None):
+                         levels=None, positive=(), solve_for=None, chart=None, regular=None):
     r"""
     Routh--Lyapunov: stationary solutions as conditional extrema of the
     first integrals, computed exactly (see the module documentation). The
@@ -1049,6 +1369,10 @@ def stationary_solutions(integrals, variables=None, equations=None, multipliers=
     - ``positive`` -- parameters declared positive (used in the conditions)
     - ``solve_for`` -- (optional) the unknowns (default: the variables and
       the multipliers)
+    - ``chart``, ``regular`` -- (optional) a chart of the configuration
+      space whose coordinates are the variables, and the same solutions in
+      a chart regular on its singular set: the solutions are then listed as
+      points of the configuration space (:meth:`StationarySolutions.in_chart`)
 
     OUTPUT: a :class:`StationarySolutions`; iterate over it for the
     :class:`StationarySolution` objects
@@ -1105,14 +1429,14 @@ def stationary_solutions(integrals, variables=None, equations=None, multipliers=
         AnalysisError: solve_exactly: the equations are not algebraic in x (x occurs both inside and outside trigonometric functions) and Maxima's solve could not solve them: [-x*sin(x) + cos(x)]
     """
     if isinstance(integrals, StationaryProblem):
-        return _solved(integrals)
+        return _solved(integrals, chart, regular)
     if isinstance(equations_of_motion(integrals), SecondOrderEquations):
         if (variables, equations, multipliers, levels) != (None,) * 4:
             raise AnalysisError("variables, equations, multipliers and levels are for "
                                 "integrals; the stationary motions of a Routh function or "
                                 "Lagrangian take solve_for= and positive= only",
                                 entry="stationary_solutions")
-        return _solved(_motions_problem(integrals, solve_for, positive))
+        return _solved(_motions_problem(integrals, solve_for, positive), chart, regular)
     if variables is None:
         raise AnalysisError("the phase variables are needed with integrals: "
                             "stationary_solutions(integrals, variables)",
@@ -1154,10 +1478,11 @@ def stationary_solutions(integrals, variables=None, equations=None, multipliers=
 
     return _solved(StationaryProblem(
         K, variables, unknowns, multipliers, system, integrals=integrals,
-        linear=None if rhs is None else linear, rhs=rhs, positive=positive))
+        linear=None if rhs is None else linear, rhs=rhs, positive=positive), chart, regular)
 
 
-def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
+def stationary_motions(routh_or_lagrangian, solve_for=None, positive=(), chart=None,
+                       regular=None):
     r"""
     Stationary motions of a system with cyclic coordinates: the positional
     velocities vanish and `\partial R/\partial q = 0` for the Routh
@@ -1172,6 +1497,12 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
       (then the coordinates are parameters: a family of motions
       parametrised by them); default: the positional coordinates
     - ``positive`` -- parameters declared positive
+    - ``chart``, ``regular`` -- (optional) a chart of the configuration
+      space whose coordinates are the positional coordinates (e.g.
+      :func:`~sage_dynsym.mechanics.charts.euler_angles`), and the
+      stationary motions of the same model in a chart regular on its
+      singular set: the solutions are then listed as points of the
+      configuration space (:meth:`StationarySolutions.in_chart`)
 
     OUTPUT: a :class:`StationarySolutions` (the same kind of object as
     :func:`stationary_solutions`); its ``equations()`` are the equations of
@@ -1216,7 +1547,8 @@ def stationary_motions(routh_or_lagrangian, solve_for=None, positive=()):
     if not isinstance(equations_of_motion(routh_or_lagrangian), SecondOrderEquations):
         raise AnalysisError(f"expected a Lagrangian or Routh function, got "
                             f"{type(routh_or_lagrangian).__name__}", entry="stationary_motions")
-    return stationary_solutions(routh_or_lagrangian, solve_for=solve_for, positive=positive)
+    return stationary_solutions(routh_or_lagrangian, solve_for=solve_for, positive=positive,
+                                chart=chart, regular=regular)
 
 
 def _motions_problem(system, solve_for, positive):

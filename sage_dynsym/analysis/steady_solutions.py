@@ -312,7 +312,8 @@ class SteadyMotions(SolutionList):
                        AnalysisError, hint="steady motions come from steady_motions(system, point)")
         if isinstance(motions, (str, bytes)) or not hasattr(motions, '__iter__'):
             raise AnalysisError(f"motions: expected the steady motions found, got {motions!r}")
-        self._point, self._set, self._solutions = point, solutions, list(motions)
+        SolutionList.__init__(self, motions)
+        self._point, self._set = point, solutions
 
     def _repr_(self):
         name = f" {self._point.name()!r}" if self._point.name() else ""

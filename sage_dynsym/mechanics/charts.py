@@ -31,7 +31,8 @@ from sage.matrix.constructor import matrix, vector
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError, brief
-from ..analysis.charts import ConfigurationChart
+from ..arguments import model_argument
+from ..analysis.charts import ConfigurationChart, default_chart, product_chart
 from .frames import rotation_matrix
 
 
@@ -117,3 +118,72 @@ def euler_angles(rotations):
                          f"SO(3)), got axes {', '.join(map(str, axes))}; e.g. [(3, a), (1, b), "
                          "(3, c)] or [(3, a), (1, b), (2, c)]", entry="rotations")
     return EulerAngles(rotations)
+
+
+def model_chart(system, coordinates=None):
+    r"""
+    The chart of the configuration space that a mechanical model's
+    coordinates are: each body turned by three elementary rotations through
+    three of the coordinates is a chart of `SO(3)` (:func:`euler_angles`);
+    every other coordinate that turns a body is an angle (a point of a
+    circle), the rest are real numbers.
+
+    INPUT:
+
+    - ``system`` -- a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`
+    - ``coordinates`` -- (optional) the coordinates of the chart, e.g. the
+      positional coordinates of a Routh function (default: all the model's)
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.charts.ConfigurationChart`, to
+    list stationary solutions as points of the configuration space
+    (``stationary_motions(R, chart=model_chart(S, R.coordinates()))``)
+
+    EXAMPLES: a heavy rigid body on a fixed point, in Euler angles, and the
+    angle of a rotor on it::
+
+        sage: from sage_dynsym import RigidBody, MechanicalSystem
+        sage: from sage_dynsym.mechanics.charts import model_chart
+        sage: a, b, c, r = var('a b c r')
+        sage: body = RigidBody('body', rotations=[(3, a), (1, b), (3, c)])
+        sage: rotor = RigidBody('rotor', parent=1, rotations=[(3, r)])
+        sage: S = MechanicalSystem([body, rotor], [a, b, c, r])
+        sage: C = model_chart(S); C.sheets(), C.singular_function()
+        (2, -sin(b))
+        sage: model_chart(S, [a, b, c])
+        Chart (a, b, c) of a configuration space embedded by [...]
+        sage: L = S.lagrangian()
+
+    TESTS::
+
+        sage: model_chart(L)
+        Traceback (most recent call last):
+        ...
+        ModelError: system: expected a mechanical model, got ...
+        sage: model_chart(S, [a, var('z')])
+        Traceback (most recent call last):
+        ...
+        ModelError: coordinates: z is not a coordinate of the model; its coordinates are a, b, c, r
+    """
+    model_argument(system, ['coordinates', 'bodies'], 'system', "a mechanical model",
+                   ModelError, hint="e.g. model_chart(MechanicalSystem([...], [...]))")
+    model = system.coordinates()
+    coordinates = model if coordinates is None else [SR(q) for q in coordinates]
+    names = [str(q) for q in coordinates]
+    for q in coordinates:
+        if str(q) not in {str(u) for u in model}:
+            raise ModelError(f"{q} is not a coordinate of the model; its coordinates are "
+                             f"{', '.join(map(str, model))}", entry="coordinates")
+    charts, used, angles = [], set(), set()
+    for body in system.bodies():
+        rotations = [(axis, SR(q)) for axis, q in body.rotations()]
+        turned = [str(q) for _, q in rotations if SR(q).is_symbol()]
+        angles.update(turned)
+        axes = [axis for axis, _ in rotations]
+        if len(rotations) == 3 and len(set(turned)) == 3 and set(turned) <= set(names) and \
+                not used & set(turned) and axes[0] != axes[1] and axes[1] != axes[2]:
+            charts.append(euler_angles(rotations))
+            used.update(turned)
+    rest = [q for q in coordinates if str(q) not in used]
+    if rest:
+        charts.append(default_chart(rest, [q for q in rest if str(q) in angles]))
+    return product_chart(charts, coordinates)
