@@ -165,7 +165,7 @@ def _two_degrees(nf, resonances, order, verdict, degenerate=()):
                            "not decided at this order", 'Markeev')
         if size == 4:
             k1, k2 = map(abs, k)
-            form = nf._form_values(4)
+            form = nf.form_values(4)
             h4 = abs(form.get((2, 0), 0) * k1 ** 2 + form.get((1, 1), 0) * k1 * k2
                      + form.get((0, 2), 0) * k2 ** 2)
             a = nf.resonant_amplitude(4) * QQ(k1 ** k1 * k2 ** k2).sqrt()

@@ -882,9 +882,20 @@ class BirkhoffNormalForm(SageObject):
         """
         return self._A
 
-    def _form_values(self, degree):
-        r"""The coefficients of the terms in the actions of degree
-        ``degree`` (in the phase variables) as values (intervals or numbers)."""
+    def form_values(self, degree):
+        r"""
+        The coefficients of the terms in the actions of degree ``degree``
+        (in the phase variables) as values: a dict exponents of the actions
+        -> number (an interval in exact mode).
+
+        EXAMPLES: the pendulum, `H = I - I^2/16`::
+
+            sage: from sage_dynsym.analysis.normal_forms import normal_form, FormalArithmetic
+            sage: R = PolynomialRing(QQ, 'q, p'); q, p = R.gens()
+            sage: nf = normal_form(FormalArithmetic.numeric(p^2/2 + q^2/2 - q^4/24, 1), 4)
+            sage: nf.form_values(4)
+            {(2,): -0.0625000000000000}
+        """
         A = self._A
         found = {}
         for m, h in self.action_terms()[0].items():
@@ -935,7 +946,7 @@ class BirkhoffNormalForm(SageObject):
             return self._on_ray(form, w)
         w = [s * (lam.imag() if self._A.is_numeric() else self._A.value(lam).imag())
              for s, lam in zip(self.signs(), self._A.lambdas)]
-        form = self._form_values(degree)
+        form = self.form_values(degree)
         if n == 2:
             return self._on_ray(form, w)
         ring = PolynomialRing(w[0].parent(), [f"I{k + 1}" for k in range(n)])
