@@ -191,7 +191,7 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
     return '\n'.join(lines)
 
 
-def jacobian_c_source(graph, columns, size, header, pivots=()):
+def jacobian_c_source(graph, columns, size, header, pivots=(), inputs=None):
     r"""
     The C source of ``int dynsym_jac(double t, const double *x, const double
     *p, double *out)`` writing the ``size`` by ``size`` Jacobian (by rows)
@@ -207,7 +207,8 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     column (the functions of each entry of ``columns`` are their own
     group, see :meth:`~sage_dynsym.numerics.graph.ExpressionGraph.c_functions`).
     Returns 1 when one of the ``pivots`` (margins) is not positive or an
-    entry is not finite.
+    entry is not finite. With ``inputs``, the nodes may read
+    ``x[2 size..inputs)`` too, which are zero.
 
     EXAMPLES: `f = (y, -x^3)`, Jacobian `((0, 1), (-3x^2, 0))`::
 
@@ -228,7 +229,7 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     """
     def direction(node):
         kind, args = graph.operation(node)
-        return kind == 'input' and args[0] == 'x' and args[1] >= size
+        return kind == 'input' and args[0] == 'x' and size <= args[1] < 2 * size
     group = {}
     for number, (nodes, _, _) in enumerate(columns, 1):
         for node in graph.operations(nodes):
@@ -253,7 +254,7 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     lines = [f'// {header}', '#include <math.h>', parts,
              'int dynsym_jac(double t, const double *x, const double *p, double *out)', '{',
              f'    static _Thread_local double w[{work}];',
-             f'    static _Thread_local double xe[{2 * size}];',
+             f'    static _Thread_local double xe[{inputs or 2 * size}];',
              f'    for (int i = 0; i < {size}; i++) {{ xe[i] = x[i]; xe[{size} + i] = 0.0; }}']
     lines += [f'    dynsym_part{i}(t, xe, p, w);' for i in range(counts[0])]
     lines += [f'    if (!({value(a, slot)} > 0.0)) return 1;'

@@ -77,6 +77,22 @@ def _derivative_of_function(G, name, args, node):
     raise AnalysisError(f"the function {name} has no derivative here", entry="jacobian")
 
 
+def _operations(G, outputs, seeds):
+    # the operation nodes between the seeds and the outputs, arguments first
+    # (creation order): the graph below a seeded node is not traversed
+    needed, stack = set(), list(outputs)
+    while stack:
+        node = stack.pop()
+        if node in needed or node in seeds:
+            continue
+        kind, args = G.operation(node)
+        if kind in ('input', 'constant'):
+            continue
+        needed.add(node)
+        stack.extend(a for a in args if not isinstance(a, str))
+    return sorted(needed)
+
+
 def tangent(G, outputs, seeds):
     r"""
     The directional derivatives of the nodes ``outputs`` of the graph
@@ -108,17 +124,15 @@ def tangent(G, outputs, seeds):
         sage: tangent(G, [G.call('sin', y)], {x: G.one}) == [G.zero]
         True
     """
-    d = {}
+    d = dict(seeds)
 
     def of(node):
+        if node in d:
+            return d[node]
         kind, args = G.operation(node)
-        if kind == 'input':
-            return seeds.get(node, G.zero)
-        if kind == 'constant':
-            return G.zero
-        return d[node]
+        return G.zero if kind in ('input', 'constant') else d[node]
 
-    for node in G.operations(outputs):
+    for node in _operations(G, outputs, seeds):
         kind, args = G.operation(node)
         da = [of(a) for a in args]
         if all(G.is_zero(x) for x in da):

@@ -1,0 +1,138 @@
+r"""
+Derivatives of the recursive accelerations through inverse dynamics
+
+The accelerations `\ddot q(q, \dot q)` of a tree solve `\tau(q, \dot q,
+\ddot q) = Q(q, \dot q)`, `\tau` the generalized forces of the bodies'
+motion (the recursive Newton--Euler algorithm with the accelerations) and
+`Q` the applied ones. Differentiating at a fixed `\ddot q` ([CM2018]_):
+
+.. MATH::
+
+    \frac{\partial\ddot q}{\partial x} = M^{-1}\,\frac{\partial(Q - \tau)}
+    {\partial x}\Big|_{\ddot q},
+
+so one direction of the state costs the forward-mode derivative of the
+Newton--Euler pass (cheaper than that of the articulated-body algorithm,
+whose articulated inertias depend on the coordinates) and one solve by `M`.
+The solve is the derivative of the articulated-body algorithm with respect
+to its generalized forces: the articulated inertias and their factors are
+computed once per call, only the sweeps of the forces and accelerations run
+per direction ([Fea2008]_, Table 7.1).
+
+:func:`jacobian_graph` writes all of it in one
+:class:`~sage_dynsym.numerics.graph.ExpressionGraph`, for
+:func:`~sage_dynsym.numerics.compiler.jacobian_c_source`.
+
+REFERENCES:
+
+.. [CM2018] J. Carpentier and N. Mansard, *Analytical derivatives of rigid
+   body dynamics algorithms*, Robotics: Science and Systems, 2018.
+"""
+from .derivatives import tangent
+from .recursive import _Assembly, _add, _cross, _rotate, _scale, _matvec
+
+
+def inverse_dynamics(assembly, ddq):
+    r"""
+    The generalized forces `\tau` of the bodies' motion with the
+    accelerations ``ddq`` (nodes), loads subtracted: the recursive
+    Newton--Euler pass of ``assembly`` (an assembly of
+    :mod:`~sage_dynsym.numerics.recursive` whose kinematics are built), the
+    accelerations that ``ddq`` adds to each frame propagated from the root.
+
+    EXAMPLES: a pendulum, `\tau = m l^2\ddot\varphi + m g l\sin\varphi`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.recursive import _Assembly
+        sage: from sage_dynsym.numerics.rnea_derivatives import inverse_dynamics
+        sage: phi, m, l, g = var('phi m l g')
+        sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
+        ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
+        sage: A = _Assembly(BodyTree([rod], [phi], gravity=[0, 0, -g]), {g: 9.81, l: 2, m: 1})
+        sage: A.build_steps()
+        sage: [tau] = inverse_dynamics(A, [A.G.input('x', 2)])
+        sage: from sage_dynsym.numerics.compiler import run_python
+        sage: run_python(A.G.python_source([tau]), '_graph')(0, [0.5, 0.0, 3.0], [])
+        [21.405935...]
+        sage: 4 * 3.0 + 9.81 * 2 * sin(0.5)
+        21.4059...
+    """
+    G = assembly.G
+    zero3 = (G.zero, G.zero, G.zero)
+    forces = assembly.body_forces()
+    extra = {0: (zero3, zero3)}
+    for k, body in enumerate(assembly.tree.bodies(), 1):
+        alpha, a = extra[assembly.parent[k]]
+        for step in assembly.body_steps[k]:
+            if step.rotation:
+                alpha = list(_rotate(G, step.axis, step.c, step.s, alpha, inverse=True))
+                a = _rotate(G, step.axis, step.c, step.s, a, inverse=True)
+                alpha[step.axis - 1] = G.add(alpha[step.axis - 1], G.sum(
+                    [G.mul(column, ddq[i]) for i, column in step.columns.items()]))
+                alpha = tuple(alpha)
+            else:
+                a = _add(G, a, _cross(G, alpha, step.r),
+                         *[_scale(G, ddq[i], column) for i, column in step.columns.items()])
+        extra[k] = (alpha, a)
+        m, h, Theta = assembly.inertia(body)
+        f, n = forces[k]
+        forces[k] = (_add(G, f, _scale(G, m, a), _cross(G, alpha, h)),
+                     _add(G, n, _matvec(G, Theta, alpha), _cross(G, h, a)))
+    return assembly.newton_euler(forces)
+
+
+def jacobian_graph(tree, values=None):
+    r"""
+    ``(graph, columns, pivots, inputs)`` of the Jacobian of the recursive
+    right-hand side of ``tree`` by the state (see the module
+    documentation), for
+    :func:`~sage_dynsym.numerics.compiler.jacobian_c_source`, or ``None``
+    when the articulated-body algorithm does not apply (constraints, a
+    coordinate that moves two bodies).
+
+    The graph reads the state from ``x[0..2n)``, the direction from
+    ``x[2n..4n)``; ``x[4n..6n)`` (``inputs`` is `6n`) are zero: the
+    generalized forces by which the solve is differentiated and the
+    offsets that make the accelerations fixed in the Newton--Euler pass
+    nodes of their own.
+
+    EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.rnea_derivatives import jacobian_graph
+        sage: phi, m, l, g = var('phi m l g')
+        sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
+        ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
+        sage: G, columns, pivots, inputs = jacobian_graph(
+        ....:     BodyTree([rod], [phi], gravity=[0, 0, -g]), {g: 9.81, l: 2, m: 1})
+        sage: from sage_dynsym.numerics.compiler import run_python
+        sage: f = run_python(G.python_source(columns[0][0]), '_graph')
+        sage: f(0, [0.5, 0.0, 1.0, 0.0, 0.0, 0.0], [])
+        [0.0, -4.30...]
+        sage: -9.81 / 2 * cos(0.5)
+        -4.30...
+    """
+    if tree.constraints() or tree.velocity_constraints():
+        return None
+    assembly = _Assembly(tree, values)
+    G = assembly.G
+    assembly.build_steps()
+    n = assembly.n
+    applied = assembly.applied_forces()
+    forcing = [G.input('x', 4 * n + i) for i in range(n)]
+    result = assembly.articulated([G.add(a, b) for a, b in zip(applied, forcing)])
+    if result is None:
+        return None
+    ddq, pivots = result
+    fixed = [G.add(a, G.input('x', 5 * n + i)) for i, a in enumerate(ddq)]
+    residual = [G.sub(a, b) for a, b in zip(applied, inverse_dynamics(assembly, fixed))]
+    seeds = {G.input('x', i): G.input('x', 2 * n + i) for i in range(n)}
+    seeds.update((a, G.zero) for a in fixed)
+    solve = dict(zip(forcing, tangent(G, residual, seeds)))
+    columns = [([G.zero] * n + tangent(G, ddq, solve), 0, n)]
+    # by the velocities the articulated inertias are constant: the
+    # derivative of the articulated-body algorithm itself is the cheaper
+    seeds = {G.input('x', n + i): G.input('x', 3 * n + i) for i in range(n)}
+    columns.append(([seeds[G.input('x', n + i)] for i in range(n)] + tangent(G, ddq, seeds),
+                    n, n))
+    return G, columns, pivots, 6 * n
