@@ -240,6 +240,8 @@ def jacobian_c_source(graph, columns, size, header, pivots=(), inputs=None):
     parts, counts, slots = graph.c_functions(outputs + list(pivots),
                                              groups=lambda node: group.get(node, 0))
     counts += [0] * (len(columns) + 1 - len(counts))     # groups without operations
+    vectors = {node for node, number in group.items() if number}
+    parts = _vectorized(parts, vectors, size)
 
     def value(node, slot):
         # inputs and constants are read where they are, not from w: they are
@@ -247,31 +249,73 @@ def jacobian_c_source(graph, columns, size, header, pivots=(), inputs=None):
         kind, args = graph.operation(node)
         if kind == 'constant':
             return repr(args)
+        if direction(node):
+            return f'_dir[{args[1] - size}][l]'
         if kind == 'input':
             return 't' if args[0] == 't' else f"{'xe' if args[0] == 'x' else 'p'}[{args[1]}]"
-        return f'w[{slot}]'
-    work = max([int(i) for i in re.findall(r'\bw\[(\d+)\]', parts)], default=0) + 1
-    lines = [f'// {header}', '#include <math.h>', parts,
+        return f'_wv[{slot}][l]' if node in vectors else f'w[{slot}]'
+    work = max([int(i) for i in re.findall(r'\bw\[(\d+)\]', parts)]
+               + [int(i) for i in re.findall(r'\b_wv\[(\d+)\]', parts)], default=0) + 1
+    lines = [f'// {header}', '#include <math.h>',
+             f'typedef double dynsym_vec __attribute__((vector_size({8 * LANES})));',
+             f'static _Thread_local dynsym_vec _wv[{work}], _dir[{size}];', parts,
              'int dynsym_jac(double t, const double *x, const double *p, double *out)', '{',
              f'    static _Thread_local double w[{work}];',
              f'    static _Thread_local double xe[{inputs or 2 * size}];',
-             f'    for (int i = 0; i < {size}; i++) {{ xe[i] = x[i]; xe[{size} + i] = 0.0; }}']
+             f'    for (int i = 0; i < {size}; i++) xe[i] = x[i];']
     lines += [f'    dynsym_part{i}(t, xe, p, w);' for i in range(counts[0])]
     lines += [f'    if (!({value(a, slot)} > 0.0)) return 1;'
               for a, slot in zip(pivots, slots[len(outputs):])]
     done, position = counts[0], 0
     for number, (nodes, first, count) in enumerate(columns, 1):
-        lines += [f'    for (int j = {first}; j < {first + count}; j++) {{',
-                  f'        xe[{size} + j] = 1.0;']
+        # LANES columns at once: the direction of lane l is column j + l
+        end = first + count
+        lines += [f'    for (int j = {first}; j < {end}; j += {LANES}) {{',
+                  f'        const int lanes = {end} - j < {LANES} ? {end} - j : {LANES};',
+                  '        for (int l = 0; l < lanes; l++) _dir[j + l][l] = 1.0;']
         lines += [f'        dynsym_part{done + i}(t, xe, p, w);' for i in range(counts[number])]
         done += counts[number]
-        lines += [f'        out[{i * size} + j] = {value(node, slots[position + i])};'
-                  for i, node in enumerate(nodes)]
+        lines += [f'        for (int l = 0; l < lanes; l++) out[{i * size} + j + l] = '
+                  f'{value(node, slots[position + i])};' for i, node in enumerate(nodes)]
         position += len(nodes)
-        lines += [f'        xe[{size} + j] = 0.0;', '    }']
+        lines += ['        for (int l = 0; l < lanes; l++) _dir[j + l][l] = 0.0;', '    }']
     lines += [f'    for (int i = 0; i < {size * size}; i++) if (!isfinite(out[i])) return 1;',
               '    return 0;', '}', '']
     return '\n'.join(lines)
+
+
+#: The Jacobian's columns computed together, in the lanes of C vectors
+#: (GCC's vector extension; the derivatives are linear in the direction).
+LANES = 8
+
+_DEFINITION = re.compile(r'^    const double v(\d+) = (.*);$')
+_STORE = re.compile(r'^    w\[(\d+)\] = (.*);$')
+_INPUT = re.compile(r'\bx\[(\d+)\]')
+
+
+def _vectorized(parts, vectors, size):
+    # the C functions of graph.c_functions with the nodes ``vectors`` (those
+    # that depend on the direction) as vectors: their values passed in _wv
+    # instead of w, the direction inputs x[size..2 size) read from _dir
+    def inputs(text):
+        return _INPUT.sub(lambda m: f'_dir[{int(m[1]) - size}]'
+                          if size <= int(m[1]) < 2 * size else m[0], text)
+    out = []
+    for line in parts.split('\n'):
+        match = _DEFINITION.match(line)
+        if match and int(match[1]) in vectors:
+            text = match[2].replace('w[', '_wv[') if match[2].startswith('w[') else match[2]
+            if '(' in text.split('[')[0] or 'pow(' in text:
+                raise AnalysisError("a function of a derivative in the Jacobian",
+                                    entry="jacobian")
+            line = f'    const dynsym_vec v{match[1]} = {inputs(text)};'
+        else:
+            match = _STORE.match(line)
+            if match and (match[2].startswith('v') and int(match[2][1:]) in vectors
+                          or _INPUT.fullmatch(match[2]) and inputs(match[2]) != match[2]):
+                line = f'    _wv[{match[1]}] = {inputs(match[2])};'
+        out.append(line)
+    return '\n'.join(out)
 
 
 def jacobian_function(function, size):
@@ -499,6 +543,52 @@ def compile_c(source, flags=('-O2',)):
     library = ctypes.CDLL(target)
     _LIBRARIES[digest] = library
     return library
+
+
+_NATIVE = None
+
+
+def jacobian_flags():
+    r"""
+    The compiler flags of the compiled Jacobians: ``-O2``, and
+    ``-march=native`` when the compiler accepts it (checked once), so that
+    the columns computed together in :data:`LANES` use the machine's
+    widest vectors. The library is then for this processor only: a
+    definition naming the processor (a hash of its identification) makes
+    it a library of its own in the cache.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.compiler import jacobian_flags
+        sage: jacobian_flags()[0]
+        '-O2'
+    """
+    global _NATIVE
+    if _NATIVE is None:
+        _NATIVE = ()
+        cc = compiler()
+        if cc is not None:
+            with tempfile.TemporaryDirectory() as work:
+                c_file = os.path.join(work, 'probe.c')
+                with open(c_file, 'w') as out:
+                    out.write('int dynsym_probe(void) { return 0; }\n')
+                done = subprocess.run([cc, '-O2', '-march=native', '-c', c_file, '-o',
+                                       os.path.join(work, 'probe.o')], capture_output=True)
+            if not done.returncode:
+                _NATIVE = ('-march=native', f'-DDYNSYM_MACHINE={_machine()}')
+    return ('-O2',) + _NATIVE
+
+
+def _machine():
+    # a hash of the processor's identification (its model and features)
+    import platform
+    text = platform.machine() + platform.processor()
+    try:
+        with open('/proc/cpuinfo') as info:
+            text += ''.join(line for line in info if line.startswith(('model name', 'flags')))
+    except OSError:
+        pass
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 class Kernel:

@@ -847,13 +847,14 @@ def check_backend(backend, what):
                             entry=what)
 
 
-def compiled_library(graph, source, backend, what):
+def compiled_library(graph, source, backend, what, flags=None):
     r"""
     The C library of the code of ``graph`` for ``backend``, or ``None``
     where Python evaluates it: with ``backend='python'``, or with
     ``'auto'`` when no C compiler works (said at verbose level 1); with
     ``'c'`` a failure is an error. ``source`` is a function giving the C
-    source (only called when C is tried), ``what`` names the code in errors.
+    source (only called when C is tried), ``what`` names the code in errors,
+    ``flags`` are the compiler's (default: :func:`optimization`).
 
     EXAMPLES::
 
@@ -872,7 +873,7 @@ def compiled_library(graph, source, backend, what):
     if backend == 'python':
         return None
     try:
-        return compile_c(source(), flags=optimization(graph))
+        return compile_c(source(), flags=flags or optimization(graph))
     except (AnalysisError, OSError) as error:
         if backend == 'c':
             raise
@@ -1257,14 +1258,16 @@ class RecursiveForm:
 
     def jacobian_graph(self):
         r"""
-        ``(graph, columns, pivots)``: :meth:`graph` with the derivatives of
-        `\dot x` by the state added (forward-mode differentiation of the
-        recursive algorithms, see :mod:`~sage_dynsym.numerics.derivatives`),
-        for :func:`~sage_dynsym.numerics.compiler.jacobian_c_source`: the
-        direction is read from ``x[2n..4n)``; ``columns`` gives the
-        derivatives in the directions of the coordinates, then in those of
-        the velocities (fewer nodes: the mass matrix and the articulated
-        inertias do not depend on the velocities).
+        ``(graph, columns, pivots, inputs)``: the derivatives of `\dot x`
+        by the state, for
+        :func:`~sage_dynsym.numerics.compiler.jacobian_c_source` (the
+        direction is read from ``x[2n..4n)``, ``x[4n..inputs)`` are zero):
+        ``columns`` gives the derivatives in the directions of the
+        coordinates, then in those of the velocities. Through inverse
+        dynamics (see :mod:`~sage_dynsym.numerics.rnea_derivatives`) where
+        the articulated-body algorithm applies, else by forward-mode
+        differentiation of the graph of :meth:`graph` (see
+        :mod:`~sage_dynsym.numerics.derivatives`).
 
         EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`::
 
@@ -1275,9 +1278,11 @@ class RecursiveForm:
             ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
             sage: F = RecursiveForm(BodyTree([rod], [phi], gravity=[0, 0, -g]),
             ....:                   values={g: 9.81, l: 2, m: 1})
-            sage: G, columns, pivots = F.jacobian_graph()
-            sage: [[G.show(a) for a in nodes] for nodes, first, count in columns]
-            [['0.0', '-(0.25*(2.0*(9.81*(cos(x[0])*x[2]))))'], ['x[3]', '0.0']]
+            sage: G, columns, pivots, inputs = F.jacobian_graph()
+            sage: from sage_dynsym.numerics.compiler import run_python
+            sage: [run_python(G.python_source(nodes), '_graph')(0, [0.5, 0, 1, 1, 0, 0], [])
+            ....:  for nodes, first, count in columns]
+            [[0.0, -4.30...], [1.0, 0.0]]
         """
         from .derivatives import tangent
         from .rnea_derivatives import jacobian_graph
@@ -1321,7 +1326,7 @@ class RecursiveForm:
              [-30.   0.]]
         """
         import numpy as np
-        from .compiler import jacobian_c_source, run_python, jacobian_function
+        from .compiler import jacobian_c_source, run_python, jacobian_function, jacobian_flags
         check_backend(backend, "numerical_rhs")
         key = ('jacobian', backend)
         if key in self._kernels:
@@ -1332,7 +1337,7 @@ class RecursiveForm:
                   f"of a tree of {len(self._tree.bodies())} bodies")
         library = compiled_library(
             G, lambda: jacobian_c_source(G, columns, size, header, pivots, inputs),
-            backend, "numerical_rhs")
+            backend, "numerical_rhs", flags=jacobian_flags())
         function = None if library is None else jacobian_function(library.dynsym_jac, size)
         if function is None:
             outputs = [a for nodes, _, _ in columns for a in nodes]

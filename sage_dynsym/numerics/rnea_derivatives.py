@@ -53,9 +53,9 @@ def inverse_dynamics(assembly, ddq):
         sage: [tau] = inverse_dynamics(A, [A.G.input('x', 2)])
         sage: from sage_dynsym.numerics.compiler import run_python
         sage: run_python(A.G.python_source([tau]), '_graph')(0, [0.5, 0.0, 3.0], [])
-        [21.405935...]
+        [21.406329...]
         sage: 4 * 3.0 + 9.81 * 2 * sin(0.5)
-        21.4059...
+        21.406329...
     """
     G = assembly.G
     zero3 = (G.zero, G.zero, G.zero)
