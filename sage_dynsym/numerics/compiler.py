@@ -548,20 +548,20 @@ def compile_c(source, flags=('-O2',)):
 _NATIVE = None
 
 
-def jacobian_flags():
+def native_flags():
     r"""
-    The compiler flags of the compiled Jacobians: ``-O2``, and
-    ``-march=native`` when the compiler accepts it (checked once), so that
-    the columns computed together in :data:`LANES` use the machine's
-    widest vectors. The library is then for this processor only: a
-    definition naming the processor (a hash of its identification) makes
-    it a library of its own in the cache.
+    ``('-march=native', '-DDYNSYM_MACHINE=<hash>')`` when the C compiler
+    accepts ``-march=native`` (checked once), else ``()``: code for this
+    processor's instructions (its widest vectors, fused multiply-adds). The
+    library is then for this processor only: the definition naming the
+    processor (a hash of its identification) makes it a library of its own
+    in the cache.
 
     EXAMPLES::
 
-        sage: from sage_dynsym.numerics.compiler import jacobian_flags
-        sage: jacobian_flags()[0]
-        '-O2'
+        sage: from sage_dynsym.numerics.compiler import native_flags
+        sage: native_flags() in ((), ) or native_flags()[0] == '-march=native'
+        True
     """
     global _NATIVE
     if _NATIVE is None:
@@ -576,7 +576,30 @@ def jacobian_flags():
                                        os.path.join(work, 'probe.o')], capture_output=True)
             if not done.returncode:
                 _NATIVE = ('-march=native', f'-DDYNSYM_MACHINE={_machine()}')
-    return ('-O2',) + _NATIVE
+    return _NATIVE
+
+
+#: Jacobians of more nodes are compiled at ``-O1`` (at 100 links, 170,000
+#: nodes, ``-O2`` takes minutes; their calls are then far below
+#: Pinocchio's anyway, which grow as the cube of the size).
+LARGE_JACOBIAN = 120_000
+
+
+def jacobian_flags(graph):
+    r"""
+    The compiler flags of the compiled Jacobian of ``graph``: ``-O2`` (its
+    calls about twice as fast as at ``-O1``), ``-O1`` above
+    :data:`LARGE_JACOBIAN` nodes, and :func:`native_flags` (the columns
+    computed together in :data:`LANES` use the machine's widest vectors).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.graph import ExpressionGraph
+        sage: from sage_dynsym.numerics.compiler import jacobian_flags
+        sage: jacobian_flags(ExpressionGraph())[0]
+        '-O2'
+    """
+    return ('-O1' if graph.size() > LARGE_JACOBIAN else '-O2',) + native_flags()
 
 
 def _machine():

