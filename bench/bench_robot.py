@@ -34,12 +34,16 @@ Accuracy: the largest relative difference of the accelerations to
 Pinocchio's ``aba`` at 3 random states (target 1e-10), of the Jacobian to
 Pinocchio's derivatives and to central differences of the compiled
 right-hand side (targets 1e-7). The growth exponents are least-squares slopes
-of log(time) against log(N). ``--large`` adds the build time of the
-right-hand side of a 500-link chain (1,000 coordinates; no Jacobian).
+of log(time) against log(N). The full run adds the build time of the
+right-hand side of a 500-link chain (1,000 coordinates; no Jacobian;
+``--no-large`` leaves it out, ``--large`` adds it to ``--quick``).
 
 Usage: ``python bench/bench_robot.py [--quick] [--n N ...] [--no-humanoid]
-[--large] [--pin-python PATH] [--pin-site DIR] [--timeout S]`` (``--quick``: N = 4, 8, no
-humanoid).
+[--large | --no-large] [--pin-python PATH] [--pin-site DIR] [--timeout S]`` (``--quick``: N =
+4, 8, no humanoid, no 500 links). Pinocchio's interpreter needs ``pin``, ``numpy`` and
+``sympy`` (e.g. ``python3.11 -m venv /tmp/pin && /tmp/pin/bin/pip install pin numpy sympy``,
+then ``--pin-python /tmp/pin/bin/python --pin-site
+/tmp/pin/lib/python3.11/site-packages``).
 """
 import argparse
 import json
@@ -328,7 +332,9 @@ def main():
     parser.add_argument('--n', type=int, nargs='*', default=None)
     parser.add_argument('--no-humanoid', action='store_true')
     parser.add_argument('--large', action='store_true',
-                        help='also the build time of a 500-link chain')
+                        help='the build time of a 500-link chain also with --quick')
+    parser.add_argument('--no-large', action='store_true',
+                        help='without the build time of a 500-link chain')
     parser.add_argument('--pin-python', default=os.environ.get('PIN_PYTHON'),
                         help="the interpreter with Pinocchio (default: this one)")
     parser.add_argument('--pin-site', default=os.environ.get('PIN_SITE'),
@@ -364,7 +370,8 @@ def main():
         pin = run('pin', name, n, timeout, python=args.pin_python)
         rows.append((label, n, sage, pin))
     table(rows)
-    large = run('sage', 'offset', 500, max(timeout, 900), jacobian=False) if args.large \
+    with_large = (args.large or not args.quick) and not args.no_large
+    large = run('sage', 'offset', 500, max(timeout, 900), jacobian=False) if with_large \
         else None
     if large is not None:
         print(f"500 links (1,000 coordinates): description -> compiled RHS "
