@@ -40,22 +40,7 @@ def inverse_dynamics(assembly, ddq):
     :mod:`~sage_dynsym.numerics.recursive` whose kinematics are built), the
     accelerations that ``ddq`` adds to each frame propagated from the root.
 
-    EXAMPLES: a pendulum, `\tau = m l^2\ddot\varphi + m g l\sin\varphi`::
-
-        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
-        sage: from sage_dynsym.numerics.recursive import _Assembly
-        sage: from sage_dynsym.numerics.rnea_derivatives import inverse_dynamics
-        sage: phi, m, l, g = var('phi m l g')
-        sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
-        ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
-        sage: A = _Assembly(BodyTree([rod], [phi], gravity=[0, 0, -g]), {g: 9.81, l: 2, m: 1})
-        sage: A.build_steps()
-        sage: [tau] = inverse_dynamics(A, [A.G.input('x', 2)])
-        sage: from sage_dynsym.numerics.compiler import run_python
-        sage: run_python(A.G.python_source([tau]), '_graph')(0, [0.5, 0.0, 3.0], [])
-        [21.406329...]
-        sage: 4 * 3.0 + 9.81 * 2 * sin(0.5)
-        21.406329...
+    EXAMPLES: see :func:`inverse_dynamics_graph`.
     """
     G = assembly.G
     zero3 = (G.zero, G.zero, G.zero)
@@ -79,6 +64,37 @@ def inverse_dynamics(assembly, ddq):
         forces[k] = (_add(G, f, _scale(G, m, a), _cross(G, alpha, h)),
                      _add(G, n, _matvec(G, Theta, alpha), _cross(G, h, a)))
     return assembly.newton_euler(forces)
+
+
+def inverse_dynamics_graph(tree, values=None):
+    r"""
+    ``(graph, tau)``: the generalized forces `\tau(q, \dot q, \ddot q)`
+    of :func:`inverse_dynamics` for ``tree`` (``values``: parameters
+    folded into the graph), reading `(q, \dot q)` from ``x[0..2n)`` and
+    `\ddot q` from ``x[2n..3n)``: Lagrange's equations of the tree are
+    `\tau = Q`, `Q` the applied generalized forces.
+
+    EXAMPLES: a mass on a wheel turning freely about `z` (the mass at
+    distance `r` on a radial slider): `\tau_\varphi = (J + m r^2)
+    \ddot\varphi + 2 m r \dot r\dot\varphi`, `\tau_r = m(\ddot r - r
+    \dot\varphi^2)`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.rnea_derivatives import inverse_dynamics_graph
+        sage: from sage_dynsym.numerics.compiler import run_python
+        sage: phi, r = var('phi r')
+        sage: wheel = TreeBody(0, rotations=[(3, phi)], inertia=diagonal_matrix([0, 0, 2]))
+        sage: slider = TreeBody(1, joint=[r, 0, 0], mass=3)
+        sage: G, tau = inverse_dynamics_graph(BodyTree([wheel, slider], [phi, r]))
+        sage: run_python(G.python_source(tau), '_graph')(0, [0.0, 0.5, 2.0, 1.0, 4.0, 0.5], [])
+        [17.0000000000000, -4.50000000000000]
+        sage: (2 + 3*0.5^2)*4 + 2*3*0.5*1*2, 3*(0.5 - 0.5*2^2)
+        (17.0000000000000, -4.50000000000000)
+    """
+    assembly = _Assembly(tree, values)
+    assembly.build_steps()
+    ddq = [assembly.G.input('x', 2 * assembly.n + i) for i in range(assembly.n)]
+    return assembly.G, inverse_dynamics(assembly, ddq)
 
 
 def jacobian_graph(tree, values=None):
