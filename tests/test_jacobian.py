@@ -111,6 +111,7 @@ def test_inverse_dynamics_equals_lagrange_of_a_double_pendulum():
     # Newton-Euler pass with the accelerations that the Jacobian differentiates
     from sage_dynsym.mechanics.recursive_numerics import numerical_form
     from sage_dynsym.numerics.compiler import run_python
+    from sage_dynsym.numerics.recursive import RecursiveForm
     from sage_dynsym.numerics.rnea_derivatives import inverse_dynamics_graph
     S, _, state, values = double_pendulum()
     a, b, da, db = state
@@ -121,7 +122,8 @@ def test_inverse_dynamics_equals_lagrange_of_a_double_pendulum():
     F = vector([diff(L, q[i]) - sum(diff(L, dq[i], q[j]) * dq[j] for j in range(2))
                 for i in range(2)])
     tau = (M * vector([dda, ddb]) - F).subs(values)
-    G, nodes = inverse_dynamics_graph(numerical_form(S, 'recursive').tree(), values)
+    form = RecursiveForm(numerical_form(S, 'recursive').tree(), values=values)
+    G, nodes = inverse_dynamics_graph(form)
     evaluate = run_python(G.python_source(nodes), '_graph')
     rng = np.random.default_rng(5)
     for x in random_states(2, 3, seed=5):

@@ -311,22 +311,9 @@ class _Assembly:
             forces[k] = (f, nk)
         return forces
 
-    def newton_euler(self, forces=None):
-        r"""The generalized forces of :meth:`body_forces` (summed from the
-        leaves), or of the body forces ``forces`` (a dict: body -> (f, n))."""
-        G, n = self.G, self.n
-        forces = self.body_forces() if forces is None else dict(forces)
-        forces[0] = (self._zero3, self._zero3)
-        tau = [[] for _ in range(n)]
-        for k in range(len(self.tree.bodies()), 0, -1):
-            f, nk = forces[k]
-            for step in reversed(self.body_steps[k]):
-                for i in step.columns:
-                    tau[i].append(step.pair(G, i, f, nk))
-                f, nk = step.up(G, f, nk)
-            j = self.parent[k]
-            forces[j] = (_add(G, forces[j][0], f), _add(G, forces[j][1], nk))
-        return [G.sum(parts) for parts in tau]
+    def newton_euler(self):
+        r"""The generalized forces of :meth:`body_forces` (see :func:`generalized_forces`)."""
+        return generalized_forces(self, self.body_forces())
 
     # the composite rigid-body algorithm --------------------------------
 
@@ -753,6 +740,77 @@ class _Assembly:
         return ddq, pivots, 'ltdl'
 
 
+def generalized_forces(assembly, forces):
+    r"""
+    The generalized forces of the body forces ``forces`` (a dict: body ->
+    `(f, n)`, about its joint point, in its axes) of an assembly whose
+    kinematics are built: summed from the leaves and projected on the
+    joints' axes (the backward pass of the recursive Newton--Euler
+    algorithm, [Fea2008]_ Table 5.1).
+
+    EXAMPLES: see :func:`inverse_dynamics`.
+    """
+    G, n = assembly.G, assembly.n
+    forces = dict(forces)
+    zero3 = (G.zero, G.zero, G.zero)
+    forces[0] = (zero3, zero3)
+    tau = [[] for _ in range(n)]
+    for k in range(len(assembly.tree.bodies()), 0, -1):
+        f, nk = forces[k]
+        for step in reversed(assembly.body_steps[k]):
+            for i in step.columns:
+                tau[i].append(step.pair(G, i, f, nk))
+            f, nk = step.up(G, f, nk)
+        j = assembly.parent[k]
+        forces[j] = (_add(G, forces[j][0], f), _add(G, forces[j][1], nk))
+    return [G.sum(parts) for parts in tau]
+
+
+def inverse_dynamics(assembly, ddq):
+    r"""
+    The generalized forces `\tau(q, \dot q, \ddot q)` of the motion of the
+    bodies of an assembly whose kinematics are built (see
+    :meth:`RecursiveForm.assembly`) with the accelerations ``ddq`` (nodes),
+    loads subtracted: the accelerations that ``ddq`` adds to each frame
+    propagated from the root, then :func:`generalized_forces` (the
+    recursive Newton--Euler algorithm). Lagrange's equations of the tree are
+    `\tau = Q`, `Q` the applied generalized forces.
+
+    EXAMPLES: a slider of mass 2 on `x`, `\tau = 2\ddot x`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.recursive import RecursiveForm, inverse_dynamics
+        sage: x = var('x')
+        sage: A = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=2)], [x])).assembly()
+        sage: A.build_steps(); A.G.show(inverse_dynamics(A, [A.G.input('x', 2)])[0])
+        'x[2]*2.0'
+
+    See also :func:`~sage_dynsym.numerics.rnea_derivatives.inverse_dynamics_graph`.
+    """
+    G = assembly.G
+    zero3 = (G.zero, G.zero, G.zero)
+    forces = assembly.body_forces()
+    extra = {0: (zero3, zero3)}
+    for k, body in enumerate(assembly.tree.bodies(), 1):
+        alpha, a = extra[assembly.parent[k]]
+        for step in assembly.body_steps[k]:
+            if step.rotation:
+                alpha = list(_rotate(G, step.axis, step.c, step.s, alpha, inverse=True))
+                a = _rotate(G, step.axis, step.c, step.s, a, inverse=True)
+                alpha[step.axis - 1] = G.add(alpha[step.axis - 1], G.sum(
+                    [G.mul(column, ddq[i]) for i, column in step.columns.items()]))
+                alpha = tuple(alpha)
+            else:
+                a = _add(G, a, _cross(G, alpha, step.r),
+                         *[_scale(G, ddq[i], column) for i, column in step.columns.items()])
+        extra[k] = (alpha, a)
+        m, h, Theta = assembly.inertia(body)
+        f, nk = forces[k]
+        forces[k] = (_add(G, f, _scale(G, m, a), _cross(G, alpha, h)),
+                     _add(G, nk, _matvec(G, Theta, alpha), _cross(G, h, a)))
+    return generalized_forces(assembly, forces)
+
+
 #: a pivot at most this fraction of its scale is taken as zero: the system
 #: is singular or as close to it as rounding can tell (a rotation chart
 #: within about 1e-6 of its singular set)
@@ -1003,13 +1061,33 @@ class RecursiveForm:
         self._state = tree.coordinates() + tree.velocities()
         self._kernels = {}
         self._graph = None
-        self._jacobian = None
+        self._jacobian = {}
 
     def __repr__(self):
         n = len(self._tree.bodies())
         return (f"Recursive form of a tree of {n} bod{'y' if n == 1 else 'ies'} in "
                 f"({', '.join(map(str, self._tree.coordinates()))}), parameters "
                 f"({', '.join(map(str, self.parameters()))})")
+
+    def assembly(self):
+        r"""
+        A new assembly of the recursive algorithms for the tree (the
+        parameter values of the form folded in; its graph empty until its
+        ``build_steps`` is called): for code built from the same algorithms,
+        as :func:`~sage_dynsym.numerics.rnea_derivatives.jacobian_graph`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: from sage_dynsym.numerics.recursive import RecursiveForm
+            sage: x = var('x')
+            sage: A = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=2)], [x])).assembly()
+            sage: A.n
+            1
+
+        See also :func:`inverse_dynamics`.
+        """
+        return _Assembly(self._tree, self._values)
 
     def tree(self):
         r"""The :class:`~sage_dynsym.numerics.body_tree.BodyTree`.
@@ -1260,17 +1338,21 @@ class RecursiveForm:
         self._kernels[backend] = kernel
         return kernel
 
-    def jacobian_graph(self):
+    def jacobian_graph(self, derivatives=None):
         r"""
         ``(graph, columns, pivots, inputs)``: the derivatives of `\dot x`
         by the state, for
         :func:`~sage_dynsym.numerics.compiler.jacobian_c_source` (the
         direction is read from ``x[2n..4n)``, ``x[4n..inputs)`` are zero):
         ``columns`` gives the derivatives in the directions of the
-        coordinates, then in those of the velocities. Through inverse
-        dynamics (see :mod:`~sage_dynsym.numerics.rnea_derivatives`) where
-        the articulated-body algorithm applies, else by forward-mode
-        differentiation of the graph of :meth:`graph` (see
+        coordinates, then in those of the velocities; built once per
+        ``derivatives``.
+
+        By ``derivatives(self)`` when given and not ``None`` for the form
+        (the inverse dynamics of
+        :func:`~sage_dynsym.numerics.rnea_derivatives.jacobian_graph`, which
+        :class:`~sage_dynsym.numerics.rhs.StateJacobian` uses), else by
+        forward-mode differentiation of the graph of :meth:`graph` (see
         :mod:`~sage_dynsym.numerics.derivatives`).
 
         EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`::
@@ -1282,33 +1364,39 @@ class RecursiveForm:
             ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
             sage: F = RecursiveForm(BodyTree([rod], [phi], gravity=[0, 0, -g]),
             ....:                   values={g: 9.81, l: 2, m: 1})
-            sage: G, columns, pivots, inputs = F.jacobian_graph()
             sage: from sage_dynsym.numerics.compiler import run_python
-            sage: [run_python(G.python_source(nodes), '_graph')(0, [0.5, 0, 1, 1, 0, 0], [])
-            ....:  for nodes, first, count in columns]
+            sage: from sage_dynsym.numerics.rnea_derivatives import jacobian_graph
+            sage: for method in (None, jacobian_graph):
+            ....:     G, columns, pivots, inputs = F.jacobian_graph(method)
+            ....:     x = [float(v) for v in [0.5, 0, 1, 1] + [0] * (inputs - 4)]
+            ....:     print([run_python(G.python_source(nodes), '_graph')(0, x, [])
+            ....:            for nodes, first, count in columns])
+            [[0.0, -4.30...], [1.0, 0.0]]
             [[0.0, -4.30...], [1.0, 0.0]]
         """
         from .derivatives import tangent
-        from .rnea_derivatives import jacobian_graph
-        if self._jacobian is None:
-            self._jacobian = jacobian_graph(self._tree, self._values)
-        if self._jacobian is None:
-            G, outputs, pivots = self.graph()
-            m = len(outputs)
-            n = m // 2
-            columns = []
-            for first in (0, n):
-                seeds = {G.input('x', first + i): G.input('x', m + first + i) for i in range(n)}
-                columns.append((tangent(G, outputs, seeds), first, n))
-            self._jacobian = (G, columns, pivots, 2 * m)
-        return self._jacobian
+        if derivatives not in self._jacobian:
+            found = None if derivatives is None else derivatives(self)
+            if found is None:
+                G, outputs, pivots = self.graph()
+                m = len(outputs)
+                n = m // 2
+                columns = []
+                for first in (0, n):
+                    seeds = {G.input('x', first + i): G.input('x', m + first + i)
+                             for i in range(n)}
+                    columns.append((tangent(G, outputs, seeds), first, n))
+                found = (G, columns, pivots, 2 * m)
+            self._jacobian[derivatives] = found
+        return self._jacobian[derivatives]
 
-    def jacobian_kernel(self, backend='auto'):
+    def jacobian_kernel(self, backend='auto', derivatives=None):
         r"""
         The compiled Jacobian of `\dot x` by the state: a function
         ``jac(t, x, p)`` returning a square NumPy array (raises
         :class:`ZeroDivisionError` where the system is singular), built
-        once per backend as :meth:`kernel` (``'c'``: see
+        once per backend and ``derivatives`` (see :meth:`jacobian_graph`) as
+        :meth:`kernel` (``'c'``: see
         :func:`~sage_dynsym.numerics.compiler.jacobian_c_source`;
         ``'python'``: the derivatives in one direction after the other).
 
@@ -1328,14 +1416,18 @@ class RecursiveForm:
              [-30.   0.]]
             [[  0.   1.]
              [-30.   0.]]
+            sage: from sage_dynsym.numerics.rnea_derivatives import jacobian_graph
+            sage: print(F.jacobian_kernel(derivatives=jacobian_graph)(0.0, [2.0, 1.0], [3.0, 0.5]))
+            [[  0.   1.]
+             [-30.   0.]]
         """
         import numpy as np
         from .compiler import jacobian_c_source, run_python, jacobian_function, jacobian_flags
         check_backend(backend, "numerical_rhs")
-        key = ('jacobian', backend)
+        key = ('jacobian', backend, derivatives)
         if key in self._kernels:
             return self._kernels[key]
-        G, columns, pivots, inputs = self.jacobian_graph()
+        G, columns, pivots, inputs = self.jacobian_graph(derivatives)
         size = 2 * len(self._tree.coordinates())
         header = (f"generated by sage_dynsym: Jacobian of the recursive right-hand side "
                   f"of a tree of {len(self._tree.bodies())} bodies")

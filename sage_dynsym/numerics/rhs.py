@@ -30,6 +30,7 @@ from sage.structure.sage_object import SageObject
 from ..errors import AnalysisError, ModelError, brief
 from ..arguments import finite_real
 from .form import as_form
+from .rnea_derivatives import jacobian_graph
 
 
 def parameter_values(form, values):
@@ -297,7 +298,7 @@ class StateJacobian(SageObject):
         form = form.with_functions(values)
         self._form = form
         self._p = parameter_values(form, values)
-        self._function = form.jacobian_kernel(backend)
+        self._function = form.jacobian_kernel(backend, derivatives=jacobian_graph)
         self._size = len(form.state())
 
     def _repr_(self):

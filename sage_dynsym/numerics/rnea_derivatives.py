@@ -29,50 +29,18 @@ REFERENCES:
    body dynamics algorithms*, Robotics: Science and Systems, 2018.
 """
 from .derivatives import tangent
-from .recursive import _Assembly, _add, _cross, _rotate, _scale, _matvec
+from .recursive import inverse_dynamics
 
 
-def inverse_dynamics(assembly, ddq):
-    r"""
-    The generalized forces `\tau` of the bodies' motion with the
-    accelerations ``ddq`` (nodes), loads subtracted: the recursive
-    Newton--Euler pass of ``assembly`` (an assembly of
-    :mod:`~sage_dynsym.numerics.recursive` whose kinematics are built), the
-    accelerations that ``ddq`` adds to each frame propagated from the root.
-
-    EXAMPLES: see :func:`inverse_dynamics_graph`.
-    """
-    G = assembly.G
-    zero3 = (G.zero, G.zero, G.zero)
-    forces = assembly.body_forces()
-    extra = {0: (zero3, zero3)}
-    for k, body in enumerate(assembly.tree.bodies(), 1):
-        alpha, a = extra[assembly.parent[k]]
-        for step in assembly.body_steps[k]:
-            if step.rotation:
-                alpha = list(_rotate(G, step.axis, step.c, step.s, alpha, inverse=True))
-                a = _rotate(G, step.axis, step.c, step.s, a, inverse=True)
-                alpha[step.axis - 1] = G.add(alpha[step.axis - 1], G.sum(
-                    [G.mul(column, ddq[i]) for i, column in step.columns.items()]))
-                alpha = tuple(alpha)
-            else:
-                a = _add(G, a, _cross(G, alpha, step.r),
-                         *[_scale(G, ddq[i], column) for i, column in step.columns.items()])
-        extra[k] = (alpha, a)
-        m, h, Theta = assembly.inertia(body)
-        f, n = forces[k]
-        forces[k] = (_add(G, f, _scale(G, m, a), _cross(G, alpha, h)),
-                     _add(G, n, _matvec(G, Theta, alpha), _cross(G, h, a)))
-    return assembly.newton_euler(forces)
-
-
-def inverse_dynamics_graph(tree, values=None):
+def inverse_dynamics_graph(form):
     r"""
     ``(graph, tau)``: the generalized forces `\tau(q, \dot q, \ddot q)`
-    of :func:`inverse_dynamics` for ``tree`` (``values``: parameters
-    folded into the graph), reading `(q, \dot q)` from ``x[0..2n)`` and
-    `\ddot q` from ``x[2n..3n)``: Lagrange's equations of the tree are
-    `\tau = Q`, `Q` the applied generalized forces.
+    of the motion of the tree of the
+    :class:`~sage_dynsym.numerics.recursive.RecursiveForm` ``form`` (the
+    recursive Newton--Euler algorithm with the accelerations, loads
+    subtracted), reading `(q, \dot q)` from ``x[0..2n)`` and `\ddot q` from
+    ``x[2n..3n)``: Lagrange's equations of the tree are `\tau = Q`, `Q` the
+    applied generalized forces.
 
     EXAMPLES: a mass on a wheel turning freely about `z` (the mass at
     distance `r` on a radial slider): `\tau_\varphi = (J + m r^2)
@@ -80,28 +48,30 @@ def inverse_dynamics_graph(tree, values=None):
     \dot\varphi^2)`::
 
         sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.recursive import RecursiveForm
         sage: from sage_dynsym.numerics.rnea_derivatives import inverse_dynamics_graph
         sage: from sage_dynsym.numerics.compiler import run_python
         sage: phi, r = var('phi r')
         sage: wheel = TreeBody(0, rotations=[(3, phi)], inertia=diagonal_matrix([0, 0, 2]))
         sage: slider = TreeBody(1, joint=[r, 0, 0], mass=3)
-        sage: G, tau = inverse_dynamics_graph(BodyTree([wheel, slider], [phi, r]))
+        sage: G, tau = inverse_dynamics_graph(RecursiveForm(BodyTree([wheel, slider], [phi, r])))
         sage: run_python(G.python_source(tau), '_graph')(0, [0.0, 0.5, 2.0, 1.0, 4.0, 0.5], [])
         [17.0000000000000, -4.50000000000000]
         sage: (2 + 3*0.5^2)*4 + 2*3*0.5*1*2, 3*(0.5 - 0.5*2^2)
         (17.0000000000000, -4.50000000000000)
     """
-    assembly = _Assembly(tree, values)
+    assembly = form.assembly()
     assembly.build_steps()
     ddq = [assembly.G.input('x', 2 * assembly.n + i) for i in range(assembly.n)]
     return assembly.G, inverse_dynamics(assembly, ddq)
 
 
-def jacobian_graph(tree, values=None):
+def jacobian_graph(form):
     r"""
     ``(graph, columns, pivots, inputs)`` of the Jacobian of the recursive
-    right-hand side of ``tree`` by the state (see the module
-    documentation), for
+    right-hand side of the
+    :class:`~sage_dynsym.numerics.recursive.RecursiveForm` ``form`` by the
+    state (see the module documentation), for
     :func:`~sage_dynsym.numerics.compiler.jacobian_c_source`, or ``None``
     when the articulated-body algorithm does not apply (constraints, a
     coordinate that moves two bodies).
@@ -115,12 +85,13 @@ def jacobian_graph(tree, values=None):
     EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`::
 
         sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+        sage: from sage_dynsym.numerics.recursive import RecursiveForm
         sage: from sage_dynsym.numerics.rnea_derivatives import jacobian_graph
         sage: phi, m, l, g = var('phi m l g')
         sage: rod = TreeBody(0, rotations=[(1, phi)], mass=m, mass_center=[0, 0, -l],
         ....:                inertia=diagonal_matrix([m*l^2, m*l^2, 0]))
-        sage: G, columns, pivots, inputs = jacobian_graph(
-        ....:     BodyTree([rod], [phi], gravity=[0, 0, -g]), {g: 9.81, l: 2, m: 1})
+        sage: G, columns, pivots, inputs = jacobian_graph(RecursiveForm(
+        ....:     BodyTree([rod], [phi], gravity=[0, 0, -g]), values={g: 9.81, l: 2, m: 1}))
         sage: from sage_dynsym.numerics.compiler import run_python
         sage: f = run_python(G.python_source(columns[0][0]), '_graph')
         sage: f(0, [0.5, 0.0, 1.0, 0.0, 0.0, 0.0], [])
@@ -128,9 +99,10 @@ def jacobian_graph(tree, values=None):
         sage: -9.81 / 2 * cos(0.5)
         -4.30...
     """
+    tree = form.tree()
     if tree.constraints() or tree.velocity_constraints():
         return None
-    assembly = _Assembly(tree, values)
+    assembly = form.assembly()
     G = assembly.G
     assembly.build_steps()
     n = assembly.n
