@@ -171,6 +171,8 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
     lines = [f'// {header}', '#include <math.h>']
     if solve is not None:
         lines.append(_SOLVE_C.strip('\n'))
+    if solve is None:
+        parts = _units(parts, count)
     lines += [parts, 'int dynsym_rhs(double t, const double *x, const double *p, double *out)',
               '{', f'    static _Thread_local double w[{max(size, 1)}];']
     lines += [f'    dynsym_part{i}(t, x, p, w);' for i in range(count)]
@@ -189,6 +191,34 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
         lines += [f'    out[{lead + i}] = _b[{i}];' for i in range(size - lead)]
     lines += ['    return 0;', '}', '']
     return '\n'.join(lines)
+
+
+#: The line between the translation units of a source (see :func:`compile_c`).
+UNIT = '\n//@dynsym-unit\n'
+
+#: Code of more functions than this is compiled as translation units of
+#: this many functions, in parallel (the 500-link chain: 1,400 functions).
+PARALLEL_PARTS = 400
+
+_PROTOTYPE_C = 'void {}(double t, const double *x, const double *p, double *w);'
+
+
+def _units(parts, count):
+    # the functions ``parts`` of graph.c_functions, as they are or, when
+    # there are many and several processors, the leading ones in units of
+    # their own (no longer static; declared in the last unit)
+    jobs = min(os.cpu_count() or 1, count // PARALLEL_PARTS)
+    if jobs < 2:
+        return parts
+    functions = re.split(r'(?m)^(?=static void )', parts)
+    functions = [f.replace('static void ', 'void ', 1) for f in functions if f.strip()]
+    step = -(-len(functions) // jobs)
+    groups = [functions[i:i + step] for i in range(0, len(functions), step)]
+    names = [re.match(r'void (\w+)', f)[1] for f in functions]
+    head = '#include <math.h>\n'
+    return (UNIT.join(head + ''.join(g) for g in groups[:-1]) + UNIT + head
+            + '\n'.join(_PROTOTYPE_C.format(name) for name in names) + '\n'
+            + ''.join(groups[-1]))
 
 
 def jacobian_c_source(graph, columns, size, header, pivots=(), inputs=None):
@@ -509,7 +539,8 @@ def compile_c(source, flags=('-O2',)):
     The shared library (a :class:`ctypes.CDLL`) compiled from the C
     ``source``, from the cache when it was compiled before. Raises
     :class:`~sage_dynsym.errors.AnalysisError` when there is no compiler
-    or the compilation fails.
+    or the compilation fails. A source of several translation units
+    (separated by lines :data:`UNIT`) has them compiled in parallel.
 
     EXAMPLES::
 
@@ -517,6 +548,14 @@ def compile_c(source, flags=('-O2',)):
         sage: if compiler():
         ....:     lib = compile_c('int twice(int a) { return 2 * a; }')
         ....:     assert lib.twice(int(21)) == 42
+
+    Two translation units::
+
+        sage: from sage_dynsym.numerics.compiler import UNIT
+        sage: if compiler():
+        ....:     lib = compile_c('int twice(int a) { return 2 * a; }' + UNIT
+        ....:                     + 'int twice(int a);\nint four(int a) { return twice(twice(a)); }')
+        ....:     assert lib.four(int(3)) == 12
     """
     cc = compiler()
     if cc is None:
@@ -529,12 +568,24 @@ def compile_c(source, flags=('-O2',)):
     target = os.path.join(directory, f'rhs_{digest}.so')
     if not os.path.exists(target):
         with tempfile.TemporaryDirectory(dir=directory) as work:
-            c_file = os.path.join(work, 'rhs.c')
-            with open(c_file, 'w') as out:
-                out.write(source)
+            units = source.split(UNIT)
+            c_files = [os.path.join(work, f'rhs{i}.c') for i in range(len(units))]
+            for c_file, text in zip(c_files, units):
+                with open(c_file, 'w') as out:
+                    out.write(text)
             built = os.path.join(work, 'rhs.so')
             verbose(f"compiling {len(source)} characters of C", level=1)
-            done = subprocess.run(command + ['-o', built, c_file, '-lm'],
+            if len(units) > 1:
+                # the units compiled at once, by processes of their own
+                jobs = [subprocess.Popen([cc, *flags, '-fPIC', '-c', c_file, '-o',
+                                          c_file[:-2] + '.o'], stderr=subprocess.PIPE,
+                                         text=True) for c_file in c_files]
+                failed = [job.communicate()[1] for job in jobs if job.wait()]
+                if failed:
+                    raise AnalysisError("the C compiler failed: " + failed[0].strip()[-500:],
+                                        entry="numerical_rhs")
+                c_files = [c_file[:-2] + '.o' for c_file in c_files]
+            done = subprocess.run(command + ['-o', built, *c_files, '-lm'],
                                   capture_output=True, text=True)
             if done.returncode:
                 raise AnalysisError("the C compiler failed: " + done.stderr.strip()[-500:],
