@@ -197,8 +197,9 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
 UNIT = '\n//@dynsym-unit\n'
 
 #: Code of more functions than this is compiled as translation units of
-#: this many functions, in parallel (the 500-link chain: 1,400 functions).
-PARALLEL_PARTS = 400
+#: this many functions, in parallel (the 50-link chain: 145 functions, the
+#: 500-link chain 1,400; on a loaded machine two processes get more time).
+PARALLEL_PARTS = 100
 
 _PROTOTYPE_C = 'void {}(double t, const double *x, const double *p, double *w);'
 
