@@ -196,10 +196,11 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
 #: The line between the translation units of a source (see :func:`compile_c`).
 UNIT = '\n//@dynsym-unit\n'
 
-#: Code of more functions than this is compiled as translation units of
-#: this many functions, in parallel (the 50-link chain: 145 functions, the
-#: 500-link chain 1,400; on a loaded machine two processes get more time).
-PARALLEL_PARTS = 100
+#: Code of at least twice this many functions is compiled as one
+#: translation unit per processor (of at least this many functions each),
+#: in parallel: from the 50-link chain on (145 functions; the 500-link chain
+#: 1,400); on a loaded machine two processes also get more time than one.
+PARALLEL_PARTS = 60
 
 _PROTOTYPE_C = 'void {}(double t, const double *x, const double *p, double *w);'
 
