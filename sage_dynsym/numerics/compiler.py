@@ -556,7 +556,8 @@ def compile_c(source, flags=('-O2',)):
         sage: from sage_dynsym.numerics.compiler import UNIT
         sage: if compiler():
         ....:     lib = compile_c('int twice(int a) { return 2 * a; }' + UNIT
-        ....:                     + 'int twice(int a);\nint four(int a) { return twice(twice(a)); }')
+        ....:                     + 'int twice(int a);\n'
+        ....:                     + 'int four(int a) { return twice(twice(a)); }')
         ....:     assert lib.four(int(3)) == 12
     """
     cc = compiler()

@@ -1081,8 +1081,8 @@ class RecursiveForm:
             sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
             sage: from sage_dynsym.numerics.recursive import RecursiveForm
             sage: x = var('x')
-            sage: A = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=2)], [x])).assembly()
-            sage: A.n
+            sage: F = RecursiveForm(BodyTree([TreeBody(0, joint=[x, 0, 0], mass=2)], [x]))
+            sage: A = F.assembly(); A.n
             1
 
         See also :func:`inverse_dynamics`.
