@@ -323,6 +323,7 @@ LANES = 8
 _DEFINITION = re.compile(r'^    const double v(\d+) = (.*);$')
 _STORE = re.compile(r'^    w\[(\d+)\] = (.*);$')
 _INPUT = re.compile(r'\bx\[(\d+)\]')
+_CALL = re.compile(r'[A-Za-z_]\w*\(')
 
 
 def _vectorized(parts, vectors, size):
@@ -337,7 +338,7 @@ def _vectorized(parts, vectors, size):
         match = _DEFINITION.match(line)
         if match and int(match[1]) in vectors:
             text = match[2].replace('w[', '_wv[') if match[2].startswith('w[') else match[2]
-            if '(' in text.split('[')[0] or 'pow(' in text:
+            if _CALL.search(text):
                 raise AnalysisError("a function of a derivative in the Jacobian",
                                     entry="jacobian")
             line = f'    const dynsym_vec v{match[1]} = {inputs(text)};'
