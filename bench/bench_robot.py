@@ -114,9 +114,12 @@ def worker_sage(name, n, jacobian=True):
         else:
             # Pinocchio in this process, timed in turn with sage_dynsym: on a
             # loaded machine both see the same conditions
-            result['call'], result['pin_rhs'], result['jac_call'], result['pin_jac'] = \
-                in_turn([(f, (0.0, points[0])), (pin_rhs, (0.0, pin['x'])),
-                         (jac, (0.0, points[0])), (pin_jacobian, (0.0, pin['x']))])
+            # each pair alone: the large code of the Jacobians would evict the
+            # right-hand sides' from the caches between their measurements
+            result['call'], result['pin_rhs'] = in_turn([(f, (0.0, points[0])),
+                                                         (pin_rhs, (0.0, pin['x']))])
+            result['jac_call'], result['pin_jac'] = in_turn([(jac, (0.0, points[0])),
+                                                             (pin_jacobian, (0.0, pin['x']))])
         reference = central_differences(f, points[0])
         result['jac_vs_cd'] = float(np.max(np.abs(J - reference))
                                     / max(1.0, np.max(np.abs(reference))))
@@ -129,7 +132,7 @@ def worker_sage(name, n, jacobian=True):
 def in_turn(calls, seconds=3.0):
     """
     Seconds per call of each ``(function, args)`` of ``calls``: short
-    measurements (about 0.2 ms) taken in turn for about ``seconds`` in all,
+    measurements (about 0.5 ms) taken in turn for about ``seconds`` in all,
     the best of each. On a machine shared by many processes a short
     measurement is often not interrupted, so the best is the uncontended
     time (longer ones are always interrupted), and taken in turn the
@@ -140,7 +143,7 @@ def in_turn(calls, seconds=3.0):
     for function, args in calls:
         function(*args)
         elapsed = timeit.timeit(lambda: function(*args), number=10) / 10
-        numbers.append(max(1, int(2e-4 / max(elapsed, 1e-9))))
+        numbers.append(max(1, int(5e-4 / max(elapsed, 1e-9))))
     best_times = [math.inf] * len(calls)
     end = time.perf_counter() + seconds
     while time.perf_counter() < end:
