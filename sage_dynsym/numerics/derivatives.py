@@ -102,8 +102,11 @@ def tangent(G, outputs, seeds):
 
     - ``G`` -- an :class:`~sage_dynsym.numerics.graph.ExpressionGraph`
     - ``outputs`` -- a list of its nodes
-    - ``seeds`` -- dict: input node -> the node of its derivative (inputs
-      not in it have derivative zero)
+    - ``seeds`` -- dict: node -> the node of its derivative (inputs not in
+      it have derivative zero); a seeded node that is no input cuts the
+      graph: its derivative is the seed, what it is computed from is not
+      differentiated (as the accelerations held fixed in
+      :mod:`~sage_dynsym.numerics.rnea_derivatives`)
 
     OUTPUT: the list of the nodes of the derivatives of ``outputs``
 
@@ -118,6 +121,12 @@ def tangent(G, outputs, seeds):
         sage: d = tangent(G, f, {x: G.one})          # d/dx
         sage: run_python(G.python_source(d), '_graph')(0, [float(2), float(3)], [])
         [0.3333333333333333, 12.0, -0.23076923076923078, 0.35355339059327373]
+
+    A cut: `u = x^2` held fixed, `d(u y)/dy = u`::
+
+        sage: u = G.mul(x, x)
+        sage: [G.show(d) for d in tangent(G, [G.mul(u, y)], {y: G.one, u: G.zero})]
+        ['x[0]*x[0]']
 
     TESTS::
 
