@@ -235,7 +235,7 @@ def test_jacobian_of_a_long_chain_against_central_differences(links):
     assert relative_error(jac(0.0, x), central_differences(f, x)) < TOLERANCE
 
 
-def test_right_hand_side_compiled_in_parallel_units(monkeypatch, tmp_path):
+def test_compiled_in_parallel_units(monkeypatch, tmp_path):
     # large models are compiled as several translation units at once: the
     # split code computes what the Python evaluation of the graph does
     from sage_dynsym.numerics import compiler
@@ -243,12 +243,13 @@ def test_right_hand_side_compiled_in_parallel_units(monkeypatch, tmp_path):
     monkeypatch.setattr(compiler.os, 'cpu_count', lambda: 2)
     monkeypatch.setenv('SAGE_DYNSYM_CACHE', str(tmp_path))
     S = sage_chain(offset_chain(6))
-    f = S.numerical_rhs({'g': 9.81}, backend='c')
+    f, jac = S.numerical_rhs({'g': 9.81}, backend='c', jacobian=True)
     source = compiler.graph_c_source(*f.form().graph()[:2], 'test', pivots=f.form().graph()[2])
     assert source.count(compiler.UNIT) == 1
-    python = S.numerical_rhs({'g': 9.81}, backend='python')
+    python, jac_python = S.numerical_rhs({'g': 9.81}, backend='python', jacobian=True)
     for x in random_states(12, 2, seed=6):
         assert relative_error(f(0.0, x), python(0.0, x)) < 1e-13
+        assert relative_error(jac(0.0, x), jac_python(0.0, x)) < 1e-13
 
 
 def test_radau_takes_the_compiled_jacobian(monkeypatch):

@@ -205,10 +205,11 @@ PARALLEL_PARTS = 60
 _PROTOTYPE_C = 'void {}(double t, const double *x, const double *p, double *w);'
 
 
-def _units(parts, count):
+def _units(parts, count, head='#include <math.h>\n'):
     # the functions ``parts`` of graph.c_functions, as they are or, when
     # there are many and several processors, the leading ones in units of
-    # their own (no longer static; declared in the last unit)
+    # their own (no longer static; declared in the last unit), each opened by
+    # ``head``
     jobs = min(os.cpu_count() or 1, count // PARALLEL_PARTS)
     if jobs < 2:
         return parts
@@ -217,7 +218,6 @@ def _units(parts, count):
     step = -(-len(functions) // jobs)
     groups = [functions[i:i + step] for i in range(0, len(functions), step)]
     names = [re.match(r'void (\w+)', f)[1] for f in functions]
-    head = '#include <math.h>\n'
     return (UNIT.join(head + ''.join(g) for g in groups[:-1]) + UNIT + head
             + '\n'.join(_PROTOTYPE_C.format(name) for name in names) + '\n'
             + ''.join(groups[-1]))
@@ -288,9 +288,11 @@ def jacobian_c_source(graph, columns, size, header, pivots=(), inputs=None):
         return f'_wv[{slot}][l]' if node in vectors else f'w[{slot}]'
     work = max([int(i) for i in re.findall(r'\bw\[(\d+)\]', parts)]
                + [int(i) for i in re.findall(r'\b_wv\[(\d+)\]', parts)], default=0) + 1
-    lines = [f'// {header}', '#include <math.h>',
-             f'typedef double dynsym_vec __attribute__((vector_size({8 * LANES})));',
-             f'static _Thread_local dynsym_vec _wv[{work}], _dir[{size}];', parts,
+    # the vectors that the functions share, with those in other units
+    vector_type = f'typedef double dynsym_vec __attribute__((vector_size({8 * LANES})));'
+    shared = f'_Thread_local dynsym_vec _wv[{work}], _dir[{size}];'
+    parts = _units(parts, sum(counts), f'#include <math.h>\n{vector_type}\nextern {shared}\n')
+    lines = [f'// {header}', '#include <math.h>', vector_type, shared, parts,
              'int dynsym_jac(double t, const double *x, const double *p, double *out)', '{',
              f'    static _Thread_local double w[{work}];',
              f'    static _Thread_local double xe[{inputs or 2 * size}];',
