@@ -9,10 +9,13 @@ The compiled Jacobian of the recursive right-hand side
 - central differences of the compiled right-hand side, on random trees of
   ``reference/chains.py`` (branching, offsets, full inertia tensors), on an
   N-link chain, on a floating-base tree (a free base by three translations and
-  three rotations, two branches), and with constraints (the LTDL solver);
+  three rotations, two branches), with applied forces (spring, dampers,
+  forces of the state), and with constraints (the LTDL solver);
 
-all to 1e-7 relative. Implicit integration (Radau) takes the Jacobian and
-agrees with an explicit one.
+all to 1e-7 relative. The inverse dynamics through which the Jacobian is
+differentiated equals the Lagrange equations of the hand-written double
+pendulum. Implicit integration (Radau) takes the Jacobian and agrees with an
+explicit one.
 """
 import sys
 from pathlib import Path
@@ -103,6 +106,52 @@ def test_jacobian_equals_the_symbolic_one_of_a_double_pendulum():
         assert relative_error(jac(0.0, x), reference) < 1e-12
 
 
+def test_inverse_dynamics_equals_lagrange_of_a_double_pendulum():
+    # tau(q, dq, ddq) = M ddq - F of the Lagrangian written by hand: the
+    # Newton-Euler pass with the accelerations that the Jacobian differentiates
+    from sage_dynsym.mechanics.recursive_numerics import numerical_form
+    from sage_dynsym.numerics.compiler import run_python
+    from sage_dynsym.numerics.recursive import RecursiveForm
+    from sage_dynsym.numerics.rnea_derivatives import inverse_dynamics_graph
+    S, _, state, values = double_pendulum()
+    a, b, da, db = state
+    dda, ddb = SR.var('dda ddb')
+    L = S.lagrangian().expr()
+    q, dq = [a, b], [da, db]
+    M = matrix([[diff(L, u, w) for w in dq] for u in dq])
+    F = vector([diff(L, q[i]) - sum(diff(L, dq[i], q[j]) * dq[j] for j in range(2))
+                for i in range(2)])
+    tau = (M * vector([dda, ddb]) - F).subs(values)
+    form = RecursiveForm(numerical_form(S, 'recursive').tree(), values=values)
+    G, nodes = inverse_dynamics_graph(form)
+    evaluate = run_python(G.python_source(nodes), '_graph')
+    rng = np.random.default_rng(5)
+    for x in random_states(2, 3, seed=5):
+        ddq = rng.uniform(-2, 2, 2)
+        reference = np.array([float(e.subs(dict(zip(state + [dda, ddb], list(x) + list(ddq)))))
+                              for e in tau])
+        assert relative_error(np.array(evaluate(0.0, list(x) + list(ddq), [])), reference) < 1e-12
+
+
+def test_jacobian_with_applied_forces_against_central_differences():
+    # a slider on a turning arm with a spring, dampers and a force that
+    # depends on the state: the applied forces enter the inverse dynamics
+    phi, r, k, c = SR.var('phi r k c')
+    dphi, dr = SR.var('dphi dr')
+    S = MechanicalSystem([RigidBody('arm', rotations=[(3, phi)], mass=1,
+                                    mass_center=[SR(1) / 2, 0, 0],
+                                    inertia=matrix.diagonal([0, 1, 1])),
+                          RigidBody('slider', parent='arm', joint=[r, 0, 0], mass=2,
+                                    inertia=matrix.diagonal([1, 1, 1]) / 10)],
+                         [phi, r], force_function=-k * (r - 1) ** 2 / 2,
+                         dissipation=c * (dr ** 2 + dphi ** 2 / 4) / 2,
+                         forces=[-r * dphi * sin(phi), cos(phi) * dr])
+    f, jac = S.numerical_rhs({k: 40.0, c: 0.7}, jacobian=True)
+    assert f.form().solver() == 'articulated'
+    for x in random_states(2, 3, seed=11):
+        assert relative_error(jac(0.0, x), central_differences(f, x)) < TOLERANCE
+
+
 @pytest.mark.parametrize('seed', [1, 10, 13, 18])
 def test_jacobian_of_random_trees_against_central_differences(seed):
     desc = random_chain(seed, n_bodies=4, symbolic=True)
@@ -184,6 +233,23 @@ def test_jacobian_of_a_long_chain_against_central_differences(links):
     f, jac = S.numerical_rhs({'g': 9.81}, jacobian=True)
     x = random_states(2 * links, 1, links)[0]
     assert relative_error(jac(0.0, x), central_differences(f, x)) < TOLERANCE
+
+
+def test_compiled_in_parallel_units(monkeypatch, tmp_path):
+    # large models are compiled as several translation units at once: the
+    # split code computes what the Python evaluation of the graph does
+    from sage_dynsym.numerics import compiler
+    monkeypatch.setattr(compiler, 'PARALLEL_PARTS', 2)
+    monkeypatch.setattr(compiler.os, 'cpu_count', lambda: 2)
+    monkeypatch.setenv('SAGE_DYNSYM_CACHE', str(tmp_path))
+    S = sage_chain(offset_chain(6))
+    f, jac = S.numerical_rhs({'g': 9.81}, backend='c', jacobian=True)
+    source = compiler.graph_c_source(*f.form().graph()[:2], 'test', pivots=f.form().graph()[2])
+    assert source.count(compiler.UNIT) == 1
+    python, jac_python = S.numerical_rhs({'g': 9.81}, backend='python', jacobian=True)
+    for x in random_states(12, 2, seed=6):
+        assert relative_error(f(0.0, x), python(0.0, x)) < 1e-13
+        assert relative_error(jac(0.0, x), jac_python(0.0, x)) < 1e-13
 
 
 def test_radau_takes_the_compiled_jacobian(monkeypatch):

@@ -171,6 +171,8 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
     lines = [f'// {header}', '#include <math.h>']
     if solve is not None:
         lines.append(_SOLVE_C.strip('\n'))
+    if solve is None:
+        parts = _units(parts, count)
     lines += [parts, 'int dynsym_rhs(double t, const double *x, const double *p, double *out)',
               '{', f'    static _Thread_local double w[{max(size, 1)}];']
     lines += [f'    dynsym_part{i}(t, x, p, w);' for i in range(count)]
@@ -191,7 +193,37 @@ def graph_c_source(graph, outputs, header, solve=None, pivots=()):
     return '\n'.join(lines)
 
 
-def jacobian_c_source(graph, columns, size, header, pivots=()):
+#: The line between the translation units of a source (see :func:`compile_c`).
+UNIT = '\n//@dynsym-unit\n'
+
+#: Code of at least twice this many functions is compiled as one
+#: translation unit per processor (of at least this many functions each),
+#: in parallel: from the 50-link chain on (145 functions; the 500-link chain
+#: 1,400); on a loaded machine two processes also get more time than one.
+PARALLEL_PARTS = 60
+
+_PROTOTYPE_C = 'void {}(double t, const double *x, const double *p, double *w);'
+
+
+def _units(parts, count, head='#include <math.h>\n'):
+    # the functions ``parts`` of graph.c_functions, as they are or, when
+    # there are many and several processors, the leading ones in units of
+    # their own (no longer static; declared in the last unit), each opened by
+    # ``head``
+    jobs = min(os.cpu_count() or 1, count // PARALLEL_PARTS)
+    if jobs < 2:
+        return parts
+    functions = re.split(r'(?m)^(?=static void )', parts)
+    functions = [f.replace('static void ', 'void ', 1) for f in functions if f.strip()]
+    step = -(-len(functions) // jobs)
+    groups = [functions[i:i + step] for i in range(0, len(functions), step)]
+    names = [re.match(r'void (\w+)', f)[1] for f in functions]
+    return (UNIT.join(head + ''.join(g) for g in groups[:-1]) + UNIT + head
+            + '\n'.join(_PROTOTYPE_C.format(name) for name in names) + '\n'
+            + ''.join(groups[-1]))
+
+
+def jacobian_c_source(graph, columns, size, header, pivots=(), inputs=None):
     r"""
     The C source of ``int dynsym_jac(double t, const double *x, const double
     *p, double *out)`` writing the ``size`` by ``size`` Jacobian (by rows)
@@ -207,7 +239,8 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     column (the functions of each entry of ``columns`` are their own
     group, see :meth:`~sage_dynsym.numerics.graph.ExpressionGraph.c_functions`).
     Returns 1 when one of the ``pivots`` (margins) is not positive or an
-    entry is not finite.
+    entry is not finite. With ``inputs``, the nodes may read
+    ``x[2 size..inputs)`` too, which are zero.
 
     EXAMPLES: `f = (y, -x^3)`, Jacobian `((0, 1), (-3x^2, 0))`::
 
@@ -228,7 +261,7 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     """
     def direction(node):
         kind, args = graph.operation(node)
-        return kind == 'input' and args[0] == 'x' and args[1] >= size
+        return kind == 'input' and args[0] == 'x' and size <= args[1] < 2 * size
     group = {}
     for number, (nodes, _, _) in enumerate(columns, 1):
         for node in graph.operations(nodes):
@@ -239,6 +272,8 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
     parts, counts, slots = graph.c_functions(outputs + list(pivots),
                                              groups=lambda node: group.get(node, 0))
     counts += [0] * (len(columns) + 1 - len(counts))     # groups without operations
+    vectors = {node for node, number in group.items() if number}
+    parts = _vectorized(parts, vectors, size)
 
     def value(node, slot):
         # inputs and constants are read where they are, not from w: they are
@@ -246,31 +281,76 @@ def jacobian_c_source(graph, columns, size, header, pivots=()):
         kind, args = graph.operation(node)
         if kind == 'constant':
             return repr(args)
+        if direction(node):
+            return f'_dir[{args[1] - size}][l]'
         if kind == 'input':
             return 't' if args[0] == 't' else f"{'xe' if args[0] == 'x' else 'p'}[{args[1]}]"
-        return f'w[{slot}]'
-    work = max([int(i) for i in re.findall(r'\bw\[(\d+)\]', parts)], default=0) + 1
-    lines = [f'// {header}', '#include <math.h>', parts,
+        return f'_wv[{slot}][l]' if node in vectors else f'w[{slot}]'
+    work = max([int(i) for i in re.findall(r'\bw\[(\d+)\]', parts)]
+               + [int(i) for i in re.findall(r'\b_wv\[(\d+)\]', parts)], default=0) + 1
+    # the vectors that the functions share, with those in other units
+    vector_type = f'typedef double dynsym_vec __attribute__((vector_size({8 * LANES})));'
+    shared = f'_Thread_local dynsym_vec _wv[{work}], _dir[{size}];'
+    parts = _units(parts, sum(counts), f'#include <math.h>\n{vector_type}\nextern {shared}\n')
+    lines = [f'// {header}', '#include <math.h>', vector_type, shared, parts,
              'int dynsym_jac(double t, const double *x, const double *p, double *out)', '{',
              f'    static _Thread_local double w[{work}];',
-             f'    static _Thread_local double xe[{2 * size}];',
-             f'    for (int i = 0; i < {size}; i++) {{ xe[i] = x[i]; xe[{size} + i] = 0.0; }}']
+             f'    static _Thread_local double xe[{inputs or 2 * size}];',
+             f'    for (int i = 0; i < {size}; i++) xe[i] = x[i];']
     lines += [f'    dynsym_part{i}(t, xe, p, w);' for i in range(counts[0])]
     lines += [f'    if (!({value(a, slot)} > 0.0)) return 1;'
               for a, slot in zip(pivots, slots[len(outputs):])]
     done, position = counts[0], 0
     for number, (nodes, first, count) in enumerate(columns, 1):
-        lines += [f'    for (int j = {first}; j < {first + count}; j++) {{',
-                  f'        xe[{size} + j] = 1.0;']
+        # LANES columns at once: the direction of lane l is column j + l
+        end = first + count
+        lines += [f'    for (int j = {first}; j < {end}; j += {LANES}) {{',
+                  f'        const int lanes = {end} - j < {LANES} ? {end} - j : {LANES};',
+                  '        for (int l = 0; l < lanes; l++) _dir[j + l][l] = 1.0;']
         lines += [f'        dynsym_part{done + i}(t, xe, p, w);' for i in range(counts[number])]
         done += counts[number]
-        lines += [f'        out[{i * size} + j] = {value(node, slots[position + i])};'
-                  for i, node in enumerate(nodes)]
+        lines += [f'        for (int l = 0; l < lanes; l++) out[{i * size} + j + l] = '
+                  f'{value(node, slots[position + i])};' for i, node in enumerate(nodes)]
         position += len(nodes)
-        lines += [f'        xe[{size} + j] = 0.0;', '    }']
+        lines += ['        for (int l = 0; l < lanes; l++) _dir[j + l][l] = 0.0;', '    }']
     lines += [f'    for (int i = 0; i < {size * size}; i++) if (!isfinite(out[i])) return 1;',
               '    return 0;', '}', '']
     return '\n'.join(lines)
+
+
+#: The Jacobian's columns computed together, in the lanes of C vectors
+#: (GCC's vector extension; the derivatives are linear in the direction).
+LANES = 8
+
+_DEFINITION = re.compile(r'^    const double v(\d+) = (.*);$')
+_STORE = re.compile(r'^    w\[(\d+)\] = (.*);$')
+_INPUT = re.compile(r'\bx\[(\d+)\]')
+_CALL = re.compile(r'[A-Za-z_]\w*\(')
+
+
+def _vectorized(parts, vectors, size):
+    # the C functions of graph.c_functions with the nodes ``vectors`` (those
+    # that depend on the direction) as vectors: their values passed in _wv
+    # instead of w, the direction inputs x[size..2 size) read from _dir
+    def inputs(text):
+        return _INPUT.sub(lambda m: f'_dir[{int(m[1]) - size}]'
+                          if size <= int(m[1]) < 2 * size else m[0], text)
+    out = []
+    for line in parts.split('\n'):
+        match = _DEFINITION.match(line)
+        if match and int(match[1]) in vectors:
+            text = match[2].replace('w[', '_wv[') if match[2].startswith('w[') else match[2]
+            if _CALL.search(text):
+                raise AnalysisError("a function of a derivative in the Jacobian",
+                                    entry="jacobian")
+            line = f'    const dynsym_vec v{match[1]} = {inputs(text)};'
+        else:
+            match = _STORE.match(line)
+            if match and (match[2].startswith('v') and int(match[2][1:]) in vectors
+                          or _INPUT.fullmatch(match[2]) and inputs(match[2]) != match[2]):
+                line = f'    _wv[{match[1]}] = {inputs(match[2])};'
+        out.append(line)
+    return '\n'.join(out)
 
 
 def jacobian_function(function, size):
@@ -464,7 +544,8 @@ def compile_c(source, flags=('-O2',)):
     The shared library (a :class:`ctypes.CDLL`) compiled from the C
     ``source``, from the cache when it was compiled before. Raises
     :class:`~sage_dynsym.errors.AnalysisError` when there is no compiler
-    or the compilation fails.
+    or the compilation fails. A source of several translation units
+    (separated by lines :data:`UNIT`) has them compiled in parallel.
 
     EXAMPLES::
 
@@ -472,6 +553,15 @@ def compile_c(source, flags=('-O2',)):
         sage: if compiler():
         ....:     lib = compile_c('int twice(int a) { return 2 * a; }')
         ....:     assert lib.twice(int(21)) == 42
+
+    Two translation units::
+
+        sage: from sage_dynsym.numerics.compiler import UNIT
+        sage: if compiler():
+        ....:     lib = compile_c('int twice(int a) { return 2 * a; }' + UNIT
+        ....:                     + 'int twice(int a);\n'
+        ....:                     + 'int four(int a) { return twice(twice(a)); }')
+        ....:     assert lib.four(int(3)) == 12
     """
     cc = compiler()
     if cc is None:
@@ -484,12 +574,24 @@ def compile_c(source, flags=('-O2',)):
     target = os.path.join(directory, f'rhs_{digest}.so')
     if not os.path.exists(target):
         with tempfile.TemporaryDirectory(dir=directory) as work:
-            c_file = os.path.join(work, 'rhs.c')
-            with open(c_file, 'w') as out:
-                out.write(source)
+            units = source.split(UNIT)
+            c_files = [os.path.join(work, f'rhs{i}.c') for i in range(len(units))]
+            for c_file, text in zip(c_files, units):
+                with open(c_file, 'w') as out:
+                    out.write(text)
             built = os.path.join(work, 'rhs.so')
             verbose(f"compiling {len(source)} characters of C", level=1)
-            done = subprocess.run(command + ['-o', built, c_file, '-lm'],
+            if len(units) > 1:
+                # the units compiled at once, by processes of their own
+                jobs = [subprocess.Popen([cc, *flags, '-fPIC', '-c', c_file, '-o',
+                                          c_file[:-2] + '.o'], stderr=subprocess.PIPE,
+                                         text=True) for c_file in c_files]
+                failed = [job.communicate()[1] for job in jobs if job.wait()]
+                if failed:
+                    raise AnalysisError("the C compiler failed: " + failed[0].strip()[-500:],
+                                        entry="numerical_rhs")
+                c_files = [c_file[:-2] + '.o' for c_file in c_files]
+            done = subprocess.run(command + ['-o', built, *c_files, '-lm'],
                                   capture_output=True, text=True)
             if done.returncode:
                 raise AnalysisError("the C compiler failed: " + done.stderr.strip()[-500:],
@@ -498,6 +600,75 @@ def compile_c(source, flags=('-O2',)):
     library = ctypes.CDLL(target)
     _LIBRARIES[digest] = library
     return library
+
+
+_NATIVE = None
+
+
+def native_flags():
+    r"""
+    ``('-march=native', '-DDYNSYM_MACHINE=<hash>')`` when the C compiler
+    accepts ``-march=native`` (checked once), else ``()``: code for this
+    processor's instructions (its widest vectors, fused multiply-adds). The
+    library is then for this processor only: the definition naming the
+    processor (a hash of its identification) makes it a library of its own
+    in the cache.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.compiler import native_flags
+        sage: native_flags() in ((), ) or native_flags()[0] == '-march=native'
+        True
+    """
+    global _NATIVE
+    if _NATIVE is None:
+        _NATIVE = ()
+        cc = compiler()
+        if cc is not None:
+            with tempfile.TemporaryDirectory() as work:
+                c_file = os.path.join(work, 'probe.c')
+                with open(c_file, 'w') as out:
+                    out.write('int dynsym_probe(void) { return 0; }\n')
+                done = subprocess.run([cc, '-O2', '-march=native', '-c', c_file, '-o',
+                                       os.path.join(work, 'probe.o')], capture_output=True)
+            if not done.returncode:
+                _NATIVE = ('-march=native', f'-DDYNSYM_MACHINE={_machine()}')
+    return _NATIVE
+
+
+#: Jacobians of more nodes are compiled at ``-O1`` (at 100 links, 170,000
+#: nodes, ``-O2`` takes minutes; their calls are then far below
+#: Pinocchio's anyway, which grow as the cube of the size).
+LARGE_JACOBIAN = 120_000
+
+
+def jacobian_flags(graph):
+    r"""
+    The compiler flags of the compiled Jacobian of ``graph``: ``-O2`` (its
+    calls about twice as fast as at ``-O1``), ``-O1`` above
+    :data:`LARGE_JACOBIAN` nodes, and :func:`native_flags` (the columns
+    computed together in :data:`LANES` use the machine's widest vectors).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.graph import ExpressionGraph
+        sage: from sage_dynsym.numerics.compiler import jacobian_flags
+        sage: jacobian_flags(ExpressionGraph())[0]
+        '-O2'
+    """
+    return ('-O1' if graph.size() > LARGE_JACOBIAN else '-O2',) + native_flags()
+
+
+def _machine():
+    # a hash of the processor's identification (its model and features)
+    import platform
+    text = platform.machine() + platform.processor()
+    try:
+        with open('/proc/cpuinfo') as info:
+            text += ''.join(line for line in info if line.startswith(('model name', 'flags')))
+    except OSError:
+        pass
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 class Kernel:

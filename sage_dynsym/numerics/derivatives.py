@@ -77,6 +77,22 @@ def _derivative_of_function(G, name, args, node):
     raise AnalysisError(f"the function {name} has no derivative here", entry="jacobian")
 
 
+def _operations(G, outputs, seeds):
+    # the operation nodes between the seeds and the outputs, arguments first
+    # (creation order): the graph below a seeded node is not traversed
+    needed, stack = set(), list(outputs)
+    while stack:
+        node = stack.pop()
+        if node in needed or node in seeds:
+            continue
+        kind, args = G.operation(node)
+        if kind in ('input', 'constant'):
+            continue
+        needed.add(node)
+        stack.extend(a for a in args if not isinstance(a, str))
+    return sorted(needed)
+
+
 def tangent(G, outputs, seeds):
     r"""
     The directional derivatives of the nodes ``outputs`` of the graph
@@ -86,8 +102,11 @@ def tangent(G, outputs, seeds):
 
     - ``G`` -- an :class:`~sage_dynsym.numerics.graph.ExpressionGraph`
     - ``outputs`` -- a list of its nodes
-    - ``seeds`` -- dict: input node -> the node of its derivative (inputs
-      not in it have derivative zero)
+    - ``seeds`` -- dict: node -> the node of its derivative (inputs not in
+      it have derivative zero); a seeded node that is no input cuts the
+      graph: its derivative is the seed, what it is computed from is not
+      differentiated (as the accelerations held fixed in
+      :mod:`~sage_dynsym.numerics.rnea_derivatives`)
 
     OUTPUT: the list of the nodes of the derivatives of ``outputs``
 
@@ -103,22 +122,26 @@ def tangent(G, outputs, seeds):
         sage: run_python(G.python_source(d), '_graph')(0, [float(2), float(3)], [])
         [0.3333333333333333, 12.0, -0.23076923076923078, 0.35355339059327373]
 
+    A cut: `u = x^2` held fixed, `d(u y)/dy = u`::
+
+        sage: u = G.mul(x, x)
+        sage: [G.show(d) for d in tangent(G, [G.mul(u, y)], {y: G.one, u: G.zero})]
+        ['x[0]*x[0]']
+
     TESTS::
 
         sage: tangent(G, [G.call('sin', y)], {x: G.one}) == [G.zero]
         True
     """
-    d = {}
+    d = dict(seeds)
 
     def of(node):
+        if node in d:
+            return d[node]
         kind, args = G.operation(node)
-        if kind == 'input':
-            return seeds.get(node, G.zero)
-        if kind == 'constant':
-            return G.zero
-        return d[node]
+        return G.zero if kind in ('input', 'constant') else d[node]
 
-    for node in G.operations(outputs):
+    for node in _operations(G, outputs, seeds):
         kind, args = G.operation(node)
         da = [of(a) for a in args]
         if all(G.is_zero(x) for x in da):

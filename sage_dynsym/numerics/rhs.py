@@ -30,6 +30,7 @@ from sage.structure.sage_object import SageObject
 from ..errors import AnalysisError, ModelError, brief
 from ..arguments import finite_real
 from .form import as_form
+from .rnea_derivatives import jacobian_graph
 
 
 def parameter_values(form, values):
@@ -239,9 +240,11 @@ class StateJacobian(SageObject):
     The compiled Jacobian ``jac(t, x)`` of a right-hand side ``f(t, x)``
     with respect to the state: the dense square matrix
     `\partial f_i/\partial x_j`, generated from the recursive algorithms
-    differentiated (forward mode, see
+    differentiated (by the coordinates through inverse dynamics, see
+    :mod:`~sage_dynsym.numerics.rnea_derivatives`; forward mode, see
     :mod:`~sage_dynsym.numerics.derivatives`) and compiled like ``f`` --
-    not finite differences. For second-order systems, `x = (q, \dot q)`
+    not finite differences; the columns are computed several at a time in
+    the lanes of C vectors. For second-order systems, `x = (q, \dot q)`
     and the Jacobian is `\begin{pmatrix} 0 & E \\ \partial\ddot q/\partial q
     & \partial\ddot q/\partial\dot q\end{pmatrix}`.
 
@@ -295,7 +298,7 @@ class StateJacobian(SageObject):
         form = form.with_functions(values)
         self._form = form
         self._p = parameter_values(form, values)
-        self._function = form.jacobian_kernel(backend)
+        self._function = form.jacobian_kernel(backend, derivatives=jacobian_graph)
         self._size = len(form.state())
 
     def _repr_(self):
