@@ -145,6 +145,37 @@ def normalize(expr, angles=(), factor=False):
         return expr
 
 
+def vanishes(expr):
+    r"""
+    Whether ``expr`` is identically zero: its canonical form
+    (:func:`normalize`) is zero, or Maxima's full simplification is (for
+    what the rational normal form treats as atoms, e.g. `\sqrt{a}^2 - a`).
+
+    INPUT:
+
+    - ``expr`` -- a symbolic expression
+
+    OUTPUT: ``True`` if ``expr`` is shown to be zero, ``False`` otherwise
+    (also when the simplification cannot decide)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.solving import vanishes
+        sage: a, b = var('a b')
+        sage: vanishes((a^2 - b^2)/(a + b) - a + b), vanishes(a - b)
+        (True, False)
+        sage: vanishes(sin(a)^2 + cos(a)^2 - 1)
+        True
+    """
+    expr = SR(expr)
+    if expr.is_zero() or normalize(expr).is_zero():
+        return True
+    try:
+        return bool(expr.simplify_full().is_zero())
+    except (TypeError, ValueError):     # Maxima gives up: not shown to be zero
+        return False
+
+
 def _shortest_trigonometric(expr, angles, factor):
     r"""``expr`` reduced modulo `\cos^2 + \sin^2 = 1` of the ``angles``:
     the shortest of the forms without reduction, with the powers of sines

@@ -57,7 +57,7 @@ from ..arguments import expression_argument, expression_list, matrix_argument, s
 from ..errors import AnalysisError, brief
 from ..algebra.determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
-from ..algebra.solving import normalize
+from ..algebra.solving import normalize, vanishes
 
 
 def _at(expr, point):
@@ -93,16 +93,6 @@ def _singularity(expr, point, what="a denominator of the equations vanishes"):
         "other angles for the axis)", entry="linearize")
 
 
-def _is_zero(expr):
-    expr = SR(expr)
-    if expr.is_zero() or normalize(expr).is_zero():
-        return True
-    try:
-        return bool(expr.simplify_full().is_zero())
-    except (TypeError, ValueError):
-        return False
-
-
 def _tidy(expr):
     expr = SR(expr)
     if expr.is_numeric() or expr.is_symbol():
@@ -115,7 +105,7 @@ def _tidy(expr):
 
 def _check_equilibrium(values, point):
     for i, v in enumerate(values):
-        if not _is_zero(v):
+        if not vanishes(v):
             raise AnalysisError(f"the point {_shown(point)} is not an equilibrium: "
                                 f"equation {i} gives {_tidy(v)} != 0; for the "
                                 f"linearization at any state numerically, give the parameters' "
@@ -962,10 +952,10 @@ def _linearize_second_order(L, at):
     _check_equilibrium([_at(e, point) for e in E], point)
     mat = lambda xs: matrix(SR, [[_tidy(_at(e.diff(x), point)) for x in xs] for e in E])
     M = mat(ddq)
-    if _is_zero(_fraction_free_det(M)):
+    if vanishes(_fraction_free_det(M)):
         # singular at this point only: a chart singularity (a kinetic matrix
         # singular everywhere -- loops without inductance -- is structural)
         kinetic = matrix(SR, [[e.diff(x) for x in ddq] for e in E])
-        if not _is_zero(_fraction_free_det(kinetic)):
+        if not vanishes(_fraction_free_det(kinetic)):
             raise _singularity(kinetic.det(), point, what="the kinetic matrix is singular")
     return LinearSystem(q, M=M, S=mat(dq), W=mat(q))

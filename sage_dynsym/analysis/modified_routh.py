@@ -87,7 +87,7 @@ from ..errors import AnalysisError, brief
 from ..symbols import velocity
 from .linear import equations_of_motion
 from ..algebra.radicals import roots_in_radicals
-from ..algebra.solving import solve_exactly, solve_transcendental, normalize
+from ..algebra.solving import solve_exactly, solve_transcendental, normalize, vanishes
 
 #: Random complex points at which an equation of motion that Sage does not
 #: simplify to zero is evaluated on a family.
@@ -104,16 +104,6 @@ def _solve_linear(expr, v, what):
         raise AnalysisError(f"cannot solve {expr} == 0 for {v}: it is not linear in it",
                             entry=what)
     return normalize(-expr.subs({v: 0}) / a)
-
-
-def _is_zero(expr):
-    expr = SR(expr)
-    if expr.is_zero() or normalize(expr).is_zero():
-        return True
-    try:
-        return bool(expr.simplify_full().is_zero())
-    except (TypeError, ValueError):
-        return False
 
 
 def _vanishes_numerically(expr, seed=0):
@@ -543,7 +533,7 @@ class ModifiedRouthLyapunov(SageObject):
             at[acc] = sum(p.diff(q) * v for q, v in zip(self._qs, phi))
         for k, E in enumerate(data.equations()):
             value = SR(E).subs(at)
-            if not (_is_zero(value) or _vanishes_numerically(value)):
+            if not (vanishes(value) or _vanishes_numerically(value)):
                 raise AnalysisError(f"the family {phi} is not invariant: equation {k} of "
                                     f"motion gives {value}", entry=_WHAT)
 

@@ -47,6 +47,8 @@ EXAMPLES::
 """
 from sage.structure.sage_object import SageObject
 
+from ..numerics.methods import NumericalMethods
+
 
 class Model(SageObject):
     r"""
@@ -160,20 +162,8 @@ class Model(SageObject):
         """
         raise NotImplementedError("<abstract method equations_record>")
 
-    def to_linearizer(self):
-        r"""
-        The same as :meth:`equations_record` (the name of earlier
-        versions, after SymPy's mechanics).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: S = load(example_path('spherical_pendulum.yaml'))
-            sage: S.to_linearizer().coordinates() == S.equations_record().coordinates()
-            True
-        """
-        return self.equations_record()
+    #: the name of earlier versions, written once for all models
+    to_linearizer = NumericalMethods.to_linearizer
 
     def characteristic_functions(self):
         r"""
