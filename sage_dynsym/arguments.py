@@ -317,9 +317,9 @@ def known_symbols(keys, valid, name, error=ModelError, what="symbol", entry=None
         keys = [keys]
     try:
         keys = list(keys)
-    except TypeError:
+    except TypeError as err:
         raise error(f"expected a list of symbols or names, got {brief(keys)}",
-                    entry=entry) from None
+                    entry=entry) from err
     by_name = {str(v): v for v in valid}
     found = []
     for key in keys:

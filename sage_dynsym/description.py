@@ -113,16 +113,18 @@ def load(path, results=False):
     try:
         return _load(path, results, source)
     except DynSymError as err:
-        raise err if err.source else err.with_context(source=source) from None
-    except RecursionError:
+        if err.source:
+            raise
+        raise err.with_context(source=source) from err
+    except RecursionError as cause:
         raise DescriptionError("the description is nested too deeply to be read",
-                               source=source) from None
-    except MemoryError:
+                               source=source) from cause
+    except MemoryError as cause:
         raise DescriptionError("not enough memory to read the description",
-                               source=source) from None
+                               source=source) from cause
     except Exception as err:    # a failure inside Sage: still the package's error
         raise DescriptionError(f"could not build the model ({type(err).__name__}: "
-                               f"{brief(str(err))})", source=source) from None
+                               f"{brief(str(err))})", source=source) from err
 
 
 #: The entry-point group under which other packages register kinds of
@@ -162,7 +164,7 @@ def kinds():
         except Exception as err:        # a broken plugin must not break load()
             raise DescriptionError(f"the kind {point.name!r} of another package cannot be "
                                    f"loaded from {point.value} ({type(err).__name__}: "
-                                   f"{brief(str(err))})", entry=ENTRY_POINTS) from None
+                                   f"{brief(str(err))})", entry=ENTRY_POINTS) from err
         found[_checked_kind(cls, point.name)] = cls
     found.update(_registered)
     return found

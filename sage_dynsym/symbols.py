@@ -348,7 +348,7 @@ def check_name(name, entry=None, error=DescriptionError, source=None):
         SR.var(name)
     except ValueError as err:
         raise error(f"Sage cannot make {name!r} into a variable ({err}); choose another name",
-                    entry=entry, source=source) from None
+                    entry=entry, source=source) from err
     return name
 
 
@@ -478,8 +478,8 @@ def exact_decimals(value):
             (getattr(value, 'literal', None) or str(value))
         try:
             return QQ(Fraction(text))
-        except (ValueError, OverflowError):
-            raise ModelError(f"not a finite number: {value}", entry="values") from None
+        except (ValueError, OverflowError) as err:
+            raise ModelError(f"not a finite number: {value}", entry="values") from err
     if not hasattr(value, 'operator'):
         return value
     if value.is_numeric():

@@ -104,8 +104,8 @@ class PolynomialContext:
                 f"(coefficients rational in the parameters), got {expr}", entry=entry)
         try:
             f = self.ring.fraction_field()(SR(expr))
-        except (TypeError, ValueError, ArithmeticError):
-            raise refuse() from None
+        except (TypeError, ValueError, ArithmeticError) as err:
+            raise refuse() from err
         num, den = f.numerator(), f.denominator()
         if any(den.degree(v) > 0 for v in self.variable_gens):
             raise refuse()

@@ -1311,8 +1311,8 @@ def solve_transcendental(equations, unknowns, reason=None, positive=()):
             found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
     except AnalysisError:
         raise       # Maxima asked for a sign (an AnalysisError is also a ValueError)
-    except (TypeError, ValueError, NotImplementedError, RuntimeError):
-        raise failure from None
+    except (TypeError, ValueError, NotImplementedError, RuntimeError) as err:
+        raise failure from err
     solutions = []
     for sol in found:
         values = [SR(sol.get(u, u)) for u in unknowns]

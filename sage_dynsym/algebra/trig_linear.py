@@ -121,9 +121,9 @@ class TrigFractionField:
     def __call__(self, expr):
         try:
             numerator, denominator = self._ring.fraction(exact_numbers(expr))
-        except NotPolynomial:
+        except NotPolynomial as err:
             raise AnalysisError(f"{expr} is not a rational function of the symbols and sines "
-                                "and cosines of the equations", entry="linearize") from None
+                                "and cosines of the equations", entry="linearize") from err
         return self.normal(self._field(numerator) / self._field(denominator))
 
     def is_zero(self, x):

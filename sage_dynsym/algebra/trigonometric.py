@@ -458,9 +458,9 @@ class TrigPolynomialRing:
         expr = SR(expr)
         try:
             return self.ring(expr.subs(self._forward) if self._forward else expr)
-        except (TypeError, ValueError, NotImplementedError):
+        except (TypeError, ValueError, NotImplementedError) as err:
             raise NotPolynomial(f"{expr} is not polynomial in the rotation variables "
-                                "and parameters") from None
+                                "and parameters") from err
 
     def trig(self, angle):
         r"""The pair `(\cos, \sin)` of ``angle`` as ring elements: the

@@ -169,10 +169,10 @@ def polynomial_coefficients(poly, var):
             num, den = (expr.numerator_denominator(normalize=True)
                         if expr.variables() else (expr, SR(1)))
             num, den = num.polynomial(ring=ring), den.polynomial(ring=ring)
-        except (TypeError, ValueError, NotImplementedError, AttributeError):
+        except (TypeError, ValueError, NotImplementedError, AttributeError) as err:
             raise AnalysisError(
                 f"expected a polynomial in {name} with coefficients rational "
-                f"in the parameters, got {expr}", entry=what) from None
+                f"in the parameters, got {expr}", entry=what) from err
         if den.degree(ring.gen(ring.ngens() - 1)) > 0:
             raise AnalysisError(
                 f"expected a polynomial in {name} (no {name} in a denominator), "

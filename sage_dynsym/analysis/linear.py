@@ -66,7 +66,7 @@ def _at(expr, point):
     except (ValueError, ZeroDivisionError, RuntimeError) as err:
         if not isinstance(err, ZeroDivisionError) and 'division by zero' not in str(err):
             raise
-        raise _singularity(expr, point) from None
+        raise _singularity(expr, point) from err
 
 
 def _shown(point):

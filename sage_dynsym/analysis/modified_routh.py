@@ -279,9 +279,9 @@ class ModifiedRouthLyapunov(SageObject):
         b = matrix(SR, [[e.subs({v: 0 for v in self._dqs})] for e in eqs])
         try:
             solution = -A.solve_right(b)
-        except (ValueError, ZeroDivisionError):
+        except (ValueError, ZeroDivisionError) as err:
             raise AnalysisError(f"the kinetic matrix {A} of the Routh function is singular",
-                                entry=_WHAT) from None
+                                entry=_WHAT) from err
         return [normalize(solution[i, 0]) for i in range(self._n)]
 
     def _velocities(self):
@@ -480,14 +480,15 @@ class ModifiedRouthLyapunov(SageObject):
         solutions only)."""
         if equation.has(ui) and equation.is_polynomial(ui) and equation.degree(ui) <= 2:
             return roots_in_radicals(equation, ui, entry=_WHAT)
+        found, why = [], None
         try:
             found = solve_transcendental([equation], [ui], reason="a separated equation")
-        except AnalysisError:
-            found = []
+        except AnalysisError as err:    # reported below, as the cause
+            why = err
         roots = [s.values()[ui] for s in found]
         if not roots:
             raise AnalysisError(f"cannot solve the separated equation {equation} == 0 for the "
-                                "unknown function explicitly", entry=_WHAT)
+                                "unknown function explicitly", entry=_WHAT) from why
         return roots
 
     def invariant_manifolds(self):

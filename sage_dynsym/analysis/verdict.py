@@ -253,7 +253,7 @@ class StabilityVerdict(SageObject):
             except (TypeError, ValueError) as err:
                 raise AnalysisError(f"cannot evaluate the region {region} at {values} "
                                     f"({err}): give a value to every parameter",
-                                    entry="StabilityVerdict.at") from None
+                                    entry="StabilityVerdict.at") from err
             if inside:
                 return case.verdict()
         return None

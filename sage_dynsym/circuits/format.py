@@ -102,7 +102,7 @@ def read_circuit(cls, data, source=None):
     try:
         return cls(branches, name=name, parameters=parameters, positive=positive)
     except DynSymError as err:
-        raise err.with_context(source=source) from None
+        raise err.with_context(source=source) from err
 
 
 

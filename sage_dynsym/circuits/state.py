@@ -54,7 +54,7 @@ def state_form(circuit):
             return circuit.nodal_analysis()
         except NotExplicitError as err:
             raise CircuitError(f"{split.message}; {err.message}",
-                               entry=split.entry or err.entry) from None
+                               entry=split.entry or err.entry) from err
 
 
 def equation_labels(lhs, states, latex=False):

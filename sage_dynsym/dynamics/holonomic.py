@@ -115,9 +115,9 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
             if isinstance(f, (str, bytes)):
                 raise TypeError
             f = SR(f)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError) as err:
             raise ModelError(f"expected an expression f(q, t) or an equation, got {f!r}",
-                             entry=sub) from None
+                             entry=sub) from err
         if f.is_relational():
             if f.operator() is not operator.eq:
                 raise ModelError("expected an expression f meaning f = 0 or an equation, "

@@ -484,7 +484,7 @@ class SystemBuilder:
                                           self.dissipation.value, self.potential.value,
                                           self.constraints.value, loads)
         except DynSymError as err:
-            raise self._as_seen(err) from None
+            raise self._as_seen(err) from err
 
     def model(self):
         r"""
@@ -516,7 +516,7 @@ class SystemBuilder:
         try:
             return model_from_description(self.description())
         except DynSymError as err:
-            raise self._as_seen(err) from None
+            raise self._as_seen(err) from err
 
     def _as_seen(self, err):
         # the loader names list positions (bodies[1].mass); the page shows

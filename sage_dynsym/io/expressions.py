@@ -501,7 +501,7 @@ class ExpressionParser:
             try:
                 self._symbols[str(s)] = SR.var(str(s))
             except ValueError as err:
-                raise ExpressionError(f"{str(s)!r} cannot be a symbol name ({err})") from None
+                raise ExpressionError(f"{str(s)!r} cannot be a symbol name ({err})") from err
         self._symbols.setdefault('t', t)
         self._functions = dict(ALLOWED_FUNCTIONS)
         for name in functions:
@@ -590,9 +590,9 @@ class ExpressionParser:
             _check_finite(result, text)
             return result
         except ExpressionError as err:
-            raise err.with_context(entry=entry) from None
+            raise err.with_context(entry=entry) from err
         except Exception as err:  # the parser raises SyntaxError/TypeError/ValueError/...
             raise ExpressionError(f"malformed expression {_quote(text)}: {err}",
-                                  entry=entry) from None
+                                  entry=entry) from err
         finally:
             self._current = None

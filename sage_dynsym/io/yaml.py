@@ -214,9 +214,9 @@ def read_yaml(path):
             raw = stream.read(MAX_FILE_BYTES + 1)
     except OSError as err:
         raise DescriptionError(f"cannot read the file: {err.strerror or err}",
-                               source=source) from None
+                               source=source) from err
     except (TypeError, ValueError) as err:
-        raise DescriptionError(f"cannot read the file: {err}", source=source) from None
+        raise DescriptionError(f"cannot read the file: {err}", source=source) from err
     if len(raw) > MAX_FILE_BYTES:
         raise DescriptionError(f"the file is larger than {MAX_FILE_BYTES} bytes "
                                "(MAX_FILE_BYTES)", source=source)
@@ -225,7 +225,7 @@ def read_yaml(path):
     except UnicodeDecodeError as err:
         raise DescriptionError(f"the file is not UTF-8 text (invalid byte "
                                f"0x{raw[err.start]:02x} at byte {err.start})",
-                               source=source) from None
+                               source=source) from err
     loader = None
     try:
         loader = _Loader(text)
@@ -234,10 +234,10 @@ def read_yaml(path):
         if err.problem and 'python/' in err.problem:
             raise DescriptionError("the file contains a YAML tag that would construct a Python "
                                    f"object ({err.problem}); description files may only hold "
-                                   "plain data", source=source) from None
-        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from None
+                                   "plain data", source=source) from err
+        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from err
     except yaml.YAMLError as err:
-        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from None
+        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from err
     finally:
         if loader is not None:
             loader.dispose()

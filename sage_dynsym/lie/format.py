@@ -151,7 +151,9 @@ def read_lie_poisson_system(cls, data, source=None):
     try:
         return _from_dict(cls, data, source)
     except DynSymError as err:
-        raise err if err.source else err.with_context(source=source) from None
+        if err.source:
+            raise
+        raise err.with_context(source=source) from err
 
 
 def _from_dict(cls, data, source):

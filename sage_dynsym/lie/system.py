@@ -168,7 +168,7 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             self._H = SR(hamiltonian)
         except (TypeError, ValueError) as err:
             raise ModelError(f"expected an expression, got {brief(hamiltonian)} ({err})",
-                             entry="hamiltonian") from None
+                             entry="hamiltonian") from err
         self._name = name
         names = {str(v) for v in x}
         where = (f"{self._structure.name()} ({', '.join(_names_of(x))})"

@@ -385,9 +385,9 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
     try:
         parts = force_term_data(force_function)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError) as err:
         raise ModelError("expected a force field or an expression U(q, t), got "
-                         f"{force_function!r}", entry=entry) from None
+                         f"{force_function!r}", entry=entry) from err
     for part in parts:
         for v in SR(part).variables():
             if v in forbidden:

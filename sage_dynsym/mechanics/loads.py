@@ -169,7 +169,7 @@ class Load(SageObject):
         try:
             return cls(**value)
         except ModelError as err:
-            raise type(err)(err.message, entry=f"{entry}.{err.entry}") from None
+            raise type(err)(err.message, entry=f"{entry}.{err.entry}") from err
 
     def _repr_(self):
         parts = []

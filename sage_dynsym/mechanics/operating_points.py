@@ -120,9 +120,9 @@ def checked_operating_points(points, coordinates, velocities, parameters=None):
                 sub = f"{entry}.{key}.{symbol}"
                 try:
                     value = SR(value)
-                except (TypeError, ValueError):
+                except (TypeError, ValueError) as err:
                     raise ModelError(f"expected an expression, got {value!r}",
-                                     entry=sub) from None
+                                     entry=sub) from err
                 if any(v in dynamic for v in value.variables()):
                     raise ModelError(f"the value {value} depends on the coordinates or "
                                      "velocities; give it in the parameters", entry=sub)

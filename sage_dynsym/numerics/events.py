@@ -71,9 +71,9 @@ class Event(SageObject):
     def __init__(self, expression, direction=0, terminal=False):
         try:
             self._expression = SR(expression)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError) as err:
             raise ModelError(f"an event is an expression, got {expression!r}",
-                             entry="events") from None
+                             entry="events") from err
         if direction not in (-1, 0, 1):
             raise ModelError(f"direction must be 1, -1 or 0, got {direction!r}", entry="events")
         if terminal is not True and terminal is not False:

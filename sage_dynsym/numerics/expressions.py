@@ -172,8 +172,8 @@ def real_constant(e, entry, hint=""):
     """
     try:
         z = complex(e)
-    except (TypeError, ValueError):
-        raise AnalysisError(f"{e} has no numerical value{hint}", entry=entry) from None
+    except (TypeError, ValueError) as err:
+        raise AnalysisError(f"{e} has no numerical value{hint}", entry=entry) from err
     if z.imag != 0:
         raise AnalysisError(f"the constant {e} is not real", entry=entry)
     return float(z.real)

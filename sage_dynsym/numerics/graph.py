@@ -277,9 +277,9 @@ class ExpressionGraph:
         if all(v is not None for v in values):
             try:
                 return self.constant(_PYTHON[name](*values))
-            except (ValueError, OverflowError):
+            except (ValueError, OverflowError) as err:
                 raise AnalysisError(f"{name}{tuple(values)} has no real value",
-                                    entry="numerical_rhs") from None
+                                    entry="numerical_rhs") from err
         return self._node(_CALL, (name,) + tuple(args))
 
     def power(self, a, exponent):

@@ -1213,7 +1213,7 @@ class RecursiveForm:
                 ddq, pivots, self._solver = assembly.accelerations(self._solver)
             except _Unsupported as error:
                 raise AnalysisError(f"the recursive form does not apply: {error}",
-                                    entry="numerical_rhs") from None
+                                    entry="numerical_rhs") from error
             n = len(ddq)
             G = assembly.G
             outputs = [G.input('x', n + i) for i in range(n)] + ddq

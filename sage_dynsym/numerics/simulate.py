@@ -459,7 +459,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
             # singular iteration matrix): no result, said so
             raise AnalysisError(f"the integrator {scipy_method} failed between t = "
                                 f"{times[i]:g} and t = {times[j]:g}: {err}",
-                                entry="simulate") from None
+                                entry="simulate") from err
         if not solution.success:
             reached = solution.t[-1] if len(solution.t) else times[i]
             raise AnalysisError(f"the integration stopped at t = {reached}: "

@@ -65,10 +65,10 @@ class State(dict):
     def __getitem__(self, key):
         try:
             return dict.__getitem__(self, self._key(key))
-        except KeyError:
+        except KeyError as err:
             # the mapping protocol's error, with what would have been found
             raise KeyError(f"{key!r} is not a state variable (they are "
-                           f"{', '.join(map(str, self))})") from None
+                           f"{', '.join(map(str, self))})") from err
 
     def __contains__(self, key):
         return dict.__contains__(self, self._key(key))

@@ -120,8 +120,8 @@ def _assignment(text, what):
 def _number(text):
     try:
         value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    except ValueError as err:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from err
     return value
 
 
@@ -135,9 +135,9 @@ def _param(text):
         return name, (low, high)
     try:
         n = int(parts[2])
-    except ValueError:
+    except ValueError as err:
         raise argparse.ArgumentTypeError(f"expected an integer number of points in {text!r}") \
-            from None
+            from err
     return name, (low, high, n)
 
 
@@ -314,7 +314,7 @@ def _numbers(pairs, option):
         try:
             value = reader.parse(text)
         except ExpressionError as err:
-            raise DescriptionError(f"{expected}; {err.message}", entry=option) from None
+            raise DescriptionError(f"{expected}; {err.message}", entry=option) from err
         try:
             z = None if value.variables() else complex(value)
         except (TypeError, ValueError, OverflowError):
@@ -385,4 +385,4 @@ def _write(S, outputs):
             write_atomically(outputs[0], lambda stream: stream.write(data), binary=True)
     except OSError as err:
         raise DescriptionError(f"cannot write {err.filename or outputs[0]}: "
-                               f"{err.strerror or err}", entry="-o") from None
+                               f"{err.strerror or err}", entry="-o") from err

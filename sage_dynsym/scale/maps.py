@@ -426,7 +426,7 @@ def model_linear_system(model, at=None):
         better = point_diagnosis(model, point)
         if better is None:
             raise
-        raise better from None
+        raise better from err
 
 
 def linear_symbols(linear):

@@ -120,12 +120,12 @@ def _value(raw, parser, entry):
         try:
             return parser.parse(raw, entry=f"{entry}.value")
         except ExpressionError as err:
-            raise CircuitError(err.message, entry=err.entry) from None
+            raise CircuitError(err.message, entry=err.entry) from err
     try:
         return SR(raw)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError) as cause:
         raise CircuitError(f"expected an expression, got {raw!r}",
-                           entry=f"{entry}.value") from None
+                           entry=f"{entry}.value") from cause
 
 
 def _long(data, index, entry, parser):
