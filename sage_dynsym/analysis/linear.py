@@ -145,6 +145,11 @@ class LinearSystem(SageObject):
         )
         sage: Ls.characteristic_polynomial(var('lam'))
         g^2*lam^2 + lam^4 + 2*k*lam^2 + k^2
+
+    TESTS::
+
+        sage: TestSuite(Ls).run()
+        sage: TestSuite(LinearSystem([x], J=[[g - k]], B=[[2]])).run()
     """
 
     def __init__(self, variables, M=None, S=None, W=None, J=None, B=None, steady_motion=None):
@@ -169,6 +174,52 @@ class LinearSystem(SageObject):
             self._order = 2
             self._M, self._S, self._W = (square(X, name) for X, name in
                                          ((M, "M"), (S, "S"), (W, "W")))
+
+    def _matrices(self):
+        return (self._J, self._B) if self._order == 1 else (self._M, self._S, self._W)
+
+    def __eq__(self, other):
+        r"""
+        Linear systems are values: equal when they have the same unknowns
+        and the same matrices.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, a = var('x a')
+            sage: LinearSystem([x], J=[[a]]) == LinearSystem([x], J=[[a]])
+            True
+            sage: LinearSystem([x], J=[[a]]) == LinearSystem([x], J=[[-a]])
+            False
+        """
+        return (isinstance(other, LinearSystem) and self._order == other._order
+                and self._variables == other._variables
+                and all(A == B for A, B in zip(self._matrices(), other._matrices())))
+
+    def __ne__(self, other):
+        return not self == other
+
+    def __hash__(self):
+        return hash((self._order, tuple(map(str, self._variables))))
+
+    def _test_sizes(self, **options):
+        r"""The matrices are square, one row per unknown; a second-order
+        system splits into symmetric `D, K` and antisymmetric `G, P` that
+        add up to its matrices `S = D + 2G`, `W = K + P`.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        n = len(self._variables)
+        for X in self._matrices():
+            tester.assertEqual((X.nrows(), X.ncols()), (n, n))
+        if self._order == 2:
+            D, G, K, P = self.D(), self.G(), self.K(), self.P()
+            tester.assertTrue(D.is_symmetric() and K.is_symmetric())
+            tester.assertEqual(G, -G.transpose())
+            tester.assertEqual(P, -P.transpose())
+            tester.assertEqual(D + 2*G, self._S)
+            tester.assertEqual(K + P, self._W)
 
     def _repr_(self):
         vs = ', '.join(map(str, self._variables))

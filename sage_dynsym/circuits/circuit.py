@@ -94,6 +94,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
 
     TESTS::
 
+        sage: TestSuite(C).run()
         sage: Circuit([[1, 2, 'R1'], [2, 1, 'R1']])
         Traceback (most recent call last):
         ...

@@ -218,6 +218,29 @@ class Model(SageObject):
         """
         raise NotImplementedError("<abstract method report_sections>")
 
+    # -- invariants, run by ``TestSuite`` -----------------------------------
+
+    def _test_description(self, **options):
+        r"""The description mapping reads back to the same description, and
+        the signs declared are of parameters of the model.
+
+        EXAMPLES: run by ``TestSuite(model).run()`` (see the subclasses).
+        """
+        tester = self._tester(**options)
+        data = self.to_dict()
+        tester.assertEqual(type(self).from_dict(data).to_dict(), data)
+        tester.assertLessEqual(set(self.positive_parameters()), set(self.parameters()))
+
+    def _test_pickling(self, **options):
+        r"""Models compare by identity (two loads of a file are two
+        models), so the pickled copy is compared by its description.
+
+        EXAMPLES: run by ``TestSuite(model).run()`` (see the subclasses).
+        """
+        from sage.misc.persist import dumps, loads
+        tester = self._tester(**options)
+        tester.assertEqual(loads(dumps(self)).to_dict(), self.to_dict())
+
 
 def linearization_point(at, variables, what="state variable"):
     r"""

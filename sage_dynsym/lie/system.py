@@ -131,7 +131,7 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
         [ 0 -y]
         [ y  0], [-x*y, y^2]
         )
-        sage: TestSuite(S).run(skip=['_test_pickling'])
+        sage: TestSuite(S).run()
 
     TESTS::
 

@@ -123,6 +123,7 @@ class MechanicalSystem(SystemChecks, SystemKinematics, SystemLagrangian, SystemC
 
     TESTS::
 
+        sage: TestSuite(S).run()
         sage: MechanicalSystem([RigidBody('arm', parent='nothing')], [])
         Traceback (most recent call last):
         ...
