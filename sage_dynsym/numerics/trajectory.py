@@ -115,6 +115,15 @@ class Trajectory(SageObject):
       :meth:`constraint_residuals`
 
     EXAMPLES: see the module documentation.
+
+    TESTS::
+
+        sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+        sage: from sage_dynsym.numerics.simulate import simulate
+        sage: x, dx, ddx = var('x dx ddx')
+        sage: T = simulate(SecondOrderEquations([ddx + x], [x], [dx], [ddx]), {},
+        ....:              {x: 1, dx: 0}, 4, events=[x, dx])
+        sage: TestSuite(T).run()
     """
 
     def __init__(self, times, states, variables, parameters, energy=None, method=None,
@@ -133,6 +142,26 @@ class Trajectory(SageObject):
         self._events = None if events is None else sorted(
             ((float(t), int(k), np.array(y, dtype=float)) for t, k, y in events),
             key=lambda e: e[0])
+
+    def _test_samples(self, **options):
+        r"""One row of states per sample time, one column per variable; the
+        times run one way; the events lie within them, each with a state
+        over the variables; one piece of the continuous solution per
+        interval between its breaks.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        times = self._times
+        tester.assertEqual(self._states.shape, (len(times), len(self._variables)))
+        steps = np.diff(times)
+        tester.assertTrue((steps >= 0).all() or (steps <= 0).all())
+        low, high = (times.min(), times.max()) if times.size else (0, 0)
+        for t, _, state in self._events or []:
+            tester.assertTrue(low <= t <= high)
+            tester.assertEqual(len(state), len(self._variables))
+        if self._dense is not None:
+            tester.assertEqual(len(self._dense), len(self._breaks) - 1)
 
     def __eq__(self, other):
         r"""
