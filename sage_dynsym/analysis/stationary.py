@@ -730,7 +730,10 @@ class StationarySolutions(SolutionList):
         sage: x, y, a = var('x y a')
         sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]); sols
         3 stationary solutions of K = 1/2*a*y^2 + (x^2 + y^2)*lambda1 + 1/2*x^2
-        sage: TestSuite(sols).run(skip=['_test_pickling'])
+
+    TESTS::
+
+        sage: TestSuite(sols).run()
     """
 
     def __init__(self, problem, solutions):
@@ -751,6 +754,16 @@ class StationarySolutions(SolutionList):
         note = "" if self._set.is_complete() else \
             " (transcendental equations: found by Maxima's solve, possibly not all)"
         return f"{n} stationary solution{'s' if n != 1 else ''} of {what}{note}"
+
+    def _test_solutions(self, **options):
+        r"""Each solution annuls the equations of the problem (an unsolved
+        equation is never a solution).
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        for solution in self._solutions:
+            tester.assertTrue(solution.check(self._problem.equations))
 
     def __eq__(self, other):
         return isinstance(other, StationarySolutions) and \
