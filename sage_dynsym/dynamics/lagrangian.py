@@ -189,6 +189,8 @@ class Lagrangian(LagrangeEquations, HolonomicConstraints, LegendreTransform, Cyc
 
     TESTS::
 
+        sage: th, ph, dth, dph = var('theta phi dtheta dphi')
+        sage: TestSuite(Lagrangian((dth^2 + sin(th)^2*dph^2)/2 + cos(th), [th, ph])).run()
         sage: Lagrangian(dx^2, [x, x])
         Traceback (most recent call last):
         ...
