@@ -187,30 +187,20 @@ class LinearSystem(SageObject):
 
             sage: from sage_dynsym.analysis.linear import LinearSystem
             sage: x, a = var('x a')
-            sage: LinearSystem([x], J=[[a]]) == LinearSystem([x], J=[[a]])
-            True
-            sage: LinearSystem([x], J=[[a]]) == LinearSystem([x], J=[[-a]])
-            False
+            sage: LinearSystem([x], J=[[a]]) == LinearSystem([x], J=[[a]]), LinearSystem([x], J=[[a]]) != LinearSystem([x], J=[[-a]])
+            (True, True)
         """
         return (isinstance(other, LinearSystem) and self._order == other._order
                 and self._variables == other._variables
                 and all(A == B for A, B in zip(self._matrices(), other._matrices())))
 
-    def __ne__(self, other):
-        return not self == other
-
     def __hash__(self):
         return hash((self._order, tuple(map(str, self._variables))))
 
     def _test_sizes(self, **options):
-        r"""The matrices are square, one row per unknown; a second-order
-        system splits into symmetric `D, K` and antisymmetric `G, P` that
-        add up to its matrices `S = D + 2G`, `W = K + P`.
-
-        EXAMPLES: run by ``TestSuite`` (see the class).
-        """
-        tester = self._tester(**options)
-        n = len(self._variables)
+        r"""Run by ``TestSuite``: square matrices, a row per unknown; `D, K`
+        symmetric and `G, P` antisymmetric, `S = D + 2G`, `W = K + P`."""
+        tester, n = self._tester(**options), len(self._variables)
         for X in self._matrices():
             tester.assertEqual((X.nrows(), X.ncols()), (n, n))
         if self._order == 2:

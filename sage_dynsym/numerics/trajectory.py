@@ -115,15 +115,6 @@ class Trajectory(SageObject):
       :meth:`constraint_residuals`
 
     EXAMPLES: see the module documentation.
-
-    TESTS::
-
-        sage: from sage_dynsym.analysis.motion import SecondOrderEquations
-        sage: from sage_dynsym.numerics.simulate import simulate
-        sage: x, dx, ddx = var('x dx ddx')
-        sage: T = simulate(SecondOrderEquations([ddx + x], [x], [dx], [ddx]), {},
-        ....:              {x: 1, dx: 0}, 4, events=[x, dx])
-        sage: TestSuite(T).run()
     """
 
     def __init__(self, times, states, variables, parameters, energy=None, method=None,
@@ -144,20 +135,15 @@ class Trajectory(SageObject):
             key=lambda e: e[0])
 
     def _test_samples(self, **options):
-        r"""One row of states per sample time, one column per variable; the
-        times run one way; the events lie within them, each with a state
-        over the variables; one piece of the continuous solution per
-        interval between its breaks.
-
-        EXAMPLES: run by ``TestSuite`` (see the class).
-        """
-        tester = self._tester(**options)
-        times = self._times
+        r"""Run by ``TestSuite``: a row of states per time, a column per
+        variable; the times run one way, the events lie within them; a
+        piece of the continuous solution between each two breaks."""
+        tester, times = self._tester(**options), self._times
         tester.assertEqual(self._states.shape, (len(times), len(self._variables)))
         steps = np.diff(times)
         tester.assertTrue((steps >= 0).all() or (steps <= 0).all())
-        low, high = (times.min(), times.max()) if times.size else (0, 0)
         for t, _, state in self._events or []:
+            low, high = times.min(), times.max()
             tester.assertTrue(low <= t <= high)
             tester.assertEqual(len(state), len(self._variables))
         if self._dense is not None:
@@ -592,6 +578,7 @@ class Trajectory(SageObject):
             ....:              {x: 1, dx: 0}, 4, events=[x, dx])
             sage: [(round(t, 9), k) for t, k, _ in T.events()]
             [(1.570796327, 0), (3.141592654, 1)]
+            sage: TestSuite(T).run()
             sage: t, k, state = T.events(0)[0]; round(state[dx], 9), round(state['dx'], 9)
             (-1.0, -1.0)
 
