@@ -90,18 +90,18 @@ class StabilityVerdict(SageObject):
 
     TESTS:
 
-    Verdicts have no value equality (their regions are symbolic
-    relations, and ``==`` of two relations is a relation), so the pickling
-    test is skipped; the cases of a verdict partition its space::
+    The cases of a verdict partition its space::
 
         sage: up = StabilityVerdict('unstable', 'a real positive root', region=[[a < 0]])
         sage: v = StabilityVerdict('depends on the parameters', 'see cases()',
         ....:                      cases=[StabilityVerdict('stable', 'K > 0', region=[[a > 0]]), up])
-        sage: TestSuite(v).run(skip='_test_pickling')
+        sage: TestSuite(v).run()
         sage: k, p = var('k p')
         sage: w = kelvin_chetaev(identity_matrix(2), zero_matrix(2), zero_matrix(2),
         ....:                    diagonal_matrix([1, k]), matrix([[0, p], [-p, 0]]))
-        sage: TestSuite(w).run(skip='_test_pickling')
+        sage: TestSuite(w).run()
+        sage: v == w, v == loads(dumps(v)), v.cases()[1] == up
+        (False, True, True)
         sage: overlap = StabilityVerdict('depends on the parameters', 'wrong',
         ....:                            cases=[StabilityVerdict('stable', '', region=[[a > -1]]), up])
         sage: overlap._test_cases()
@@ -120,6 +120,21 @@ class StabilityVerdict(SageObject):
         self._region = region
         self._boundaries = dict(boundaries) if boundaries else {}
         self._positive = list(positive)
+
+    def _data(self):
+        # the symbolic parts by their printed form: ``==`` of two relations
+        # is a relation, not a truth value
+        return (self._verdict, self._reason, self._method, str(self._conditions),
+                str(self._region), str(sorted(self._boundaries.items())), str(self._positive))
+
+    def __eq__(self, other):
+        r"""Verdicts are values: equal when their verdicts, reasons, methods,
+        conditions, regions, boundaries, signs and cases are (see the class)."""
+        return (isinstance(other, StabilityVerdict) and self._data() == other._data()
+                and self._cases == other._cases)
+
+    def __hash__(self):
+        return hash((self._verdict, self._reason))
 
     def method(self):
         r"""The method that decided the verdict (``None`` if not recorded).
