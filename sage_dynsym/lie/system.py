@@ -403,6 +403,15 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
         degree = check_degree(degree, "casimirs", len(self.variables()), max_degree, max_basis)
         return list(self._casimirs(degree))
 
+    def _test_casimirs(self, **options):
+        r"""Run by ``TestSuite``: the Casimirs of degree at most 2 commute
+        with every variable, hence are integrals of any Hamiltonian."""
+        tester = self._tester(**options)
+        for C in self.casimirs(degree=2):
+            tester.assertTrue(all(SR(self.poisson_bracket(C, x)).is_zero()
+                                  for x in self.variables()))
+            tester.assertTrue(self.is_integral(C))
+
     @cached_method
     def _casimirs(self, degree):
         return _casimirs(self._structure, degree, parameters=self._parameters, max_degree=degree,
