@@ -38,6 +38,10 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['MAX_MINORS', 'PolynomialContext', 'monomial_expression', 'degree', 'primitive',
+           'Reducer', 'blocks', 'LinearProblem', 'minors', 'schur_after_constant_pivots',
+           'rank_modulo', 'products', 'generic_point']
+
 #: Most minors of one block the rank-drop conditions may enumerate.
 MAX_MINORS = 200_000
 

@@ -27,6 +27,10 @@ from contextlib import contextmanager, nullcontext
 
 from ..errors import AnalysisError
 
+__all__ = ['FACTOR_LIMIT', 'parameter_ring', 'to_ring', 'to_sr', 'polynomial_to_sr',
+           'is_polynomial_ring', 'is_constant', 'constant_value', 'positive_polynomial',
+           'maxima_without_questions']
+
 #: Polynomials with more terms than this are not factored.
 FACTOR_LIMIT = 3000
 

@@ -55,6 +55,8 @@ from ..errors import AnalysisError
 from .conditions import simplify_conjunction
 from .translation import Translation
 
+__all__ = ['QEPCAD_TIMEOUT', 'QEPCAD_MEMCELLS', 'exists', 'exists_real_solution']
+
 #: Time limit (seconds) of one QEPCAD run.
 QEPCAD_TIMEOUT = 60
 

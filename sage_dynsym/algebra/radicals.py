@@ -26,6 +26,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['roots_in_radicals', 'real_algebraic_roots']
+
 
 def roots_in_radicals(f, x, entry="roots_in_radicals"):
     r"""

@@ -91,6 +91,11 @@ from .conditions import (positive_conditions, nonzero_conditions, conjunction,
 from .decomposition import minimal_primes, shape, ShapePrime, triangular_sets
 from .translation import Translation, NotAlgebraic, translate_expressions
 
+__all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
+           'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
+           'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
+           'solve_transcendental']
+
 
 #: Zero-dimensional components with parameters of a larger degree are not
 #: solved by radicals (they are returned implicitly).

@@ -86,6 +86,9 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
 
+__all__ = ['MAX_ANGLE_MULTIPLE', 'NotAlgebraic', 'exact_rational', 'Translation',
+           'translate_expressions', 'expand_angles']
+
 #: The largest integer multiple `k q` of an unknown angle that is expanded
 #: by the multiple-angle formulas (higher multiples are refused as not
 #: algebraic rather than producing huge polynomials).

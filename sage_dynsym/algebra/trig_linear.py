@@ -35,6 +35,8 @@ from ..errors import AnalysisError
 from .trigonometric import TrigPolynomialRing, NotPolynomial, circle_reduce
 from .translation import exact_rational
 
+__all__ = ['exact_numbers', 'TrigFractionField']
+
 
 def exact_numbers(expr):
     r"""

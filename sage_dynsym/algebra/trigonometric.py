@@ -49,6 +49,9 @@ from sage.symbolic.ring import SR
 from ..arguments import expression_argument
 from ..errors import AnalysisError
 
+__all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
+           'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
+
 _ZERO, _ONE = SR(0), SR(1)
 
 
