@@ -78,6 +78,9 @@ from ..algebra.translation import Translation
 from .charts import configuration_points, algebraic_value
 from .verdict import STABLE_VERDICTS
 
+__all__ = ['discriminant_polynomials', 'equilibria_at', 'CensusCell', 'Census',
+           'equilibrium_census']
+
 
 def _log(message, level=1):
     verbose(f"equilibrium_census: {message}", level=level)

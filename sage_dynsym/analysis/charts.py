@@ -71,6 +71,8 @@ from ..errors import AnalysisError
 from ..arguments import expression_list, model_argument
 from ..algebra.translation import expand_angles
 
+__all__ = ['ConfigurationChart', 'ConfigurationPoint', 'algebraic_value', 'configuration_points']
+
 
 class ConfigurationChart(SageObject):
     r"""

@@ -88,6 +88,8 @@ from sage.symbolic.ring import SR
 from ..arguments import expression_list
 from ..errors import AnalysisError
 
+__all__ = ['EquilibriumFamily', 'equilibrium_family']
+
 
 def _polynomial_system(equations, symbols):
     names = sorted({str(v) for v in symbols})

@@ -87,10 +87,15 @@ from ..arguments import expression_argument
 from ..errors import AnalysisError, brief
 from ..algebra.conditions import Unexpanded, reduce_conditions, conditions_as_expressions
 # simplify_conditions and FACTOR_LIMIT moved to the algebra; their old place still serves them
-from ..algebra.conditions import simplify_conditions  # noqa: F401
-from ..algebra.polynomials import FACTOR_LIMIT  # noqa: F401
+from ..algebra.conditions import simplify_conditions
+from ..algebra.polynomials import FACTOR_LIMIT
 from ..algebra.polynomials import (parameter_ring, to_sr, is_constant, constant_value,
                                    is_polynomial_ring)
+
+__all__ = ['DEFAULT_BUDGET', 'polynomial_coefficients', 'polynomial_arguments', 'hurwitz_matrix',
+           'hurwitz_determinants', 'routh_scheme_fits', 'hurwitz_conditions',
+           'lienard_chipart_conditions', 'real_negative_roots_conditions',
+           'conservative_stability_conditions', 'simplify_conditions', 'FACTOR_LIMIT']
 
 #: Default limit on the term multiplications of one product in the
 #: fraction-free Routh scheme before determinants are left unexpanded.

@@ -59,6 +59,8 @@ from ..algebra.determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
 from ..algebra.solving import normalize, vanishes
 
+__all__ = ['LinearSystem', 'linearize', 'equations_of_motion']
+
 
 def _at(expr, point):
     try:

@@ -89,6 +89,8 @@ from .linear import equations_of_motion
 from ..algebra.radicals import roots_in_radicals
 from ..algebra.solving import solve_exactly, solve_transcendental, normalize, vanishes
 
+__all__ = ['CHECK_POINTS', 'ModifiedRouthLyapunov']
+
 #: Random complex points at which an equation of motion that Sage does not
 #: simplify to zero is evaluated on a family.
 CHECK_POINTS = 5

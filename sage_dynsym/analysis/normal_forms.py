@@ -80,6 +80,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['DECISION_BITS', 'symplectic_unit', 'FormalArithmetic', 'normal_form',
+           'BirkhoffNormalForm']
+
 #: Bits of the interval arithmetic that decides signs and zeros.
 DECISION_BITS = 256
 

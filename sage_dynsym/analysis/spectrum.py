@@ -98,6 +98,8 @@ from .hurwitz import (lienard_chipart_conditions, real_negative_roots_conditions
 from ..algebra.regions import simplify_region
 from ..algebra.translation import Translation
 
+__all__ = ['SpectrumRegions', 'spectrum_regions']
+
 
 class _Atoms:
     r"""The non-symbol parameters of an expression (``cos(alpha)``,

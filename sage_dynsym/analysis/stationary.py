@@ -110,7 +110,11 @@ from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_m
                               signed_leading_minors)
 from ..algebra.solving import solve_exactly, normalize, SolutionList
 # the modified method has a module of its own; this import keeps its old path
-from .modified_routh import ModifiedRouthLyapunov  # noqa: F401
+from .modified_routh import ModifiedRouthLyapunov
+
+__all__ = ['check_integral', 'StationaryProblem', 'StationarySolution', 'StationarySolutions',
+           'solve_stationary', 'stationary_solutions', 'stationary_motions',
+           'ModifiedRouthLyapunov']
 
 
 def check_integral(V, variables, equations, index=0):

@@ -48,6 +48,8 @@ from ..symbols import exact_decimals
 from ..algebra.conditions import region_holds
 from ..algebra.regions import partition, prune_empty, drop_redundant
 
+__all__ = ['STABLE_VERDICTS', 'VERDICTS', 'StabilityVerdict', 'verdict_from_parts']
+
 #: The verdicts that count as stable (the stable set of a verdict that
 #: depends on the parameters is the union of their regions).
 STABLE_VERDICTS = ('asymptotically stable', 'stable', 'stable in first approximation')
