@@ -58,6 +58,8 @@ from .netlist import Netlist
 from .report import report_title, report_sections
 from .state import StateEquations
 
+__all__ = ['Circuit']
+
 
 class Circuit(StateEquations, NumericalMethods, Model):
     r"""

@@ -34,6 +34,9 @@ from ..errors import CircuitError, DescriptionError, DynSymError, brief
 from ..io.fields import declared_names, title, MAX_PARAMETERS
 from ..symbols import check_name, velocity, acceleration, momentum
 
+__all__ = ['KEYS', 'MAX_BRANCHES', 'read_circuit', 'circuit_mapping', 'circuit_results',
+           'result_symbols']
+
 #: The keys of a circuit description.
 KEYS = {'kind', 'name', 'branches', 'parameters', 'positive', 'results'}
 

@@ -25,6 +25,8 @@ from sage.graphs.graph import Graph
 from ..errors import CircuitError
 from .elements.kinds import Capacitor
 
+__all__ = ['UnionFind', 'node_key', 'capacitor_order', 'CircuitGraph', 'RootedTree']
+
 
 class UnionFind:
     r"""

@@ -52,6 +52,8 @@ from .elements.kinds import ELEMENTS, CurrentSource, Inductor
 from .elements.windings import winding_groups, winding_matrix
 from .graph import node_key
 
+__all__ = ['source_integral', 'LoopAnalysis', 'NodeAnalysis']
+
 #: The loop method's spanning tree prefers voltage sources, then
 #: capacitors, resistors, nonlinear resistors and inductors (the order of
 #: the normal tree, :attr:`~.elements.kinds.Branch.tree_rank`); it never

@@ -138,6 +138,8 @@ from .elements.kinds import Capacitor, Inductor, state_symbols
 from .elements.windings import winding_matrix
 from .graph import capacitor_order
 
+__all__ = ['MixedPotential']
+
 
 class MixedPotential:
     r"""

@@ -25,6 +25,8 @@ from ..errors import CircuitError
 from ..numerics.energy import quadratic_energy
 from .nodal import NotExplicitError
 
+__all__ = ['state_form', 'equation_labels', 'StateEquations']
+
 
 def state_form(circuit):
     r"""

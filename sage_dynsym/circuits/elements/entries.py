@@ -33,6 +33,8 @@ from ...symbols import CIRCUIT_VARIABLES, MAX_NAME_LENGTH, check_name, check_nam
 from .kinds import CURRENT, VOLTAGE, ELEMENTS, Branch
 from .windings import Coupling
 
+__all__ = ['MAX_NODE', 'LONG_KEYS', 'MUTUAL_KEYS', 'is_coupling_entry', 'parse_entries']
+
 #: Largest node number.
 MAX_NODE = 10**9
 
