@@ -31,6 +31,8 @@ from ..errors import ModelError, brief
 from ..symbols import velocity, acceleration, time_derivative, t, constraint_multipliers, momentum
 from .natural_form import symbol_list, is_singular, has_full_row_rank
 
+__all__ = ['check_constraints', 'HolonomicConstraints']
+
 
 def check_constraints(constraints, coordinates, parameters=None, entry="constraints",
                       velocities=None):

@@ -28,6 +28,8 @@ from .natural_equations import natural_equations, SymbolicCalculus
 from .compact import equations_cse
 from .natural_form import is_singular
 
+__all__ = ['LagrangeEquations']
+
 
 class LagrangeEquations:
     r"""

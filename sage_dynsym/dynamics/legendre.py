@@ -25,6 +25,8 @@ from ..numerics.expressions import symbols_and_functions
 from .hamiltonian import Hamiltonian
 from .natural_form import natural_form, is_singular
 
+__all__ = ['LegendreTransform']
+
 
 class LegendreTransform:
     r"""

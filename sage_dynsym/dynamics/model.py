@@ -49,6 +49,8 @@ from sage.structure.sage_object import SageObject
 
 from ..numerics.methods import NumericalMethods
 
+__all__ = ['Model', 'linearization_point']
+
 
 class Model(SageObject):
     r"""

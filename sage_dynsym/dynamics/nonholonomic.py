@@ -73,6 +73,8 @@ from ..algebra.trig_linear import TrigFractionField
 from .lagrangian import Lagrangian, substitution
 from .natural_form import has_full_row_rank
 
+__all__ = ['check_velocity_constraints', 'NonholonomicLagrangian']
+
 
 def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(),
                                parameters=None, entry="nonholonomic"):

@@ -61,7 +61,7 @@ from ..analysis.normal_form_stability import normal_form_stability
 from .hamiltonian import Hamiltonian
 
 __all__ = ['birkhoff_normal_form', 'nonlinear_stability', 'BirkhoffNormalForm',
-           'polynomial_hamiltonian', 'exceptional_values']
+           'polynomial_hamiltonian', 'exceptional_values', 'taylor_polynomial']
 
 
 def _hamiltonian(model):

@@ -28,6 +28,8 @@ from ..errors import ModelError
 from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial
 from .natural_form import natural_form, linear_collected, is_singular, Elimination
 
+__all__ = ['CyclicCoordinates', 'check_cyclic', 'routh_reduction']
+
 
 class CyclicCoordinates:
     r"""
