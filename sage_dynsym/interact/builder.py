@@ -41,6 +41,9 @@ import ipywidgets as widgets
 
 from ..errors import DescriptionError, DynSymError
 
+__all__ = ['split_list', 'mechanical_description', 'circuit_description', 'model_from_description',
+           'SystemBuilder']
+
 
 def split_list(text, separators=","):
     r"""
