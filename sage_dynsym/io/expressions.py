@@ -33,6 +33,10 @@ from sage.rings.rational_field import QQ
 from ..errors import ExpressionError, brief
 from ..symbols import t, ALLOWED_FUNCTIONS, CONSTANTS
 
+__all__ = ['MAX_EXPRESSION_LENGTH', 'MAX_NESTING_DEPTH', 'MAX_INTEGER_DIGITS',
+           'MAX_DECIMAL_EXPONENT', 'MAX_EXPONENT', 'MAX_POWER_TOWER', 'MAX_NUMBER_DIGITS',
+           'MAX_DEGREE', 'check_expression_text', 'ExpressionParser']
+
 def _exact_decimal(text):
     return QQ(Fraction(text))
 

@@ -20,6 +20,8 @@ import tempfile
 
 from ..errors import DescriptionError, brief
 
+__all__ = ['write_atomically']
+
 
 def write_atomically(path, write, binary=False):
     r"""

@@ -25,6 +25,8 @@ import yaml
 from ..errors import DescriptionError, brief
 from .expressions import MAX_INTEGER_DIGITS
 
+__all__ = ['MAX_FILE_BYTES', 'MAX_YAML_DEPTH', 'MAX_YAML_ALIASES', 'MAX_YAML_VALUES', 'read_yaml']
+
 #: Largest description file read (bytes).
 MAX_FILE_BYTES = 32 * 2**20
 #: Deepest nesting of YAML lists and mappings.
