@@ -99,6 +99,9 @@ from ..arguments import expression_argument
 from ..errors import AnalysisError, ModelError, brief
 from ..algebra.polynomial_spaces import PolynomialContext, monomial_expression
 
+__all__ = ['NAMED', 'algebra_name', 'default_names', 'PoissonStructure', 'collect', 'lie_algebra',
+           'structure_constants_matrix', 'poisson_structure']
+
 #: The named algebras: name -> (description, block names, block sizes).
 NAMED = {
     'so3': ("so(3)", ('M',), (3,)),

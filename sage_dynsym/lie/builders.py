@@ -53,6 +53,8 @@ from ..errors import ModelError, brief
 from .algebras import collect
 from .system import LiePoissonSystem
 
+__all__ = ['euler_poisson', 'kirchhoff']
+
 
 def _inverse(A, entry):
     r"""

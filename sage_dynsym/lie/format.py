@@ -60,6 +60,9 @@ from ..io.expressions import ExpressionParser
 from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
 
+__all__ = ['LIE_POISSON_KEYS', 'MAX_VARIABLES', 'MAX_PARAMETERS', 'read_lie_poisson_system',
+           'LiePoissonFormat']
+
 #: The keys of a ``kind: lie_poisson`` description.
 LIE_POISSON_KEYS = {'kind', 'name', 'algebra', 'variables', 'parameters', 'positive',
                     'hamiltonian', 'results'}

@@ -86,6 +86,8 @@ from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
                         MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
 
+__all__ = ['LiePoissonSystem']
+
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
 _COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
