@@ -34,6 +34,8 @@ from ..errors import ModelError, brief
 from ..analysis.charts import ConfigurationChart
 from .frames import rotation_matrix
 
+__all__ = ['EulerAngles', 'euler_angles']
+
 
 class EulerAngles(ConfigurationChart):
     r"""

@@ -28,6 +28,8 @@ from ..errors import ModelError
 from ..dynamics.nonholonomic import check_velocity_constraints
 from .rolling import RollingDisk, rolling_contact
 
+__all__ = ['ConstraintSet']
+
 
 class ConstraintSet:
     r"""

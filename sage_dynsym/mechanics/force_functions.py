@@ -26,6 +26,9 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from .rigid_body import as_vector3, as_scalar
 
+__all__ = ['UniformGravity', 'NewtonianField', 'split_force_terms', 'UNIT_TOLERANCE',
+           'check_force_function', 'force_term_data', 'force_term_to_dict']
+
 
 class UniformGravity(SageObject):
     r"""

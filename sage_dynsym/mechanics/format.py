@@ -77,6 +77,10 @@ from ..symbols import velocity, acceleration, momentum, check_mechanical_names
 from .force_functions import force_term_to_dict
 from .operating_points import operating_point_to_dict
 
+__all__ = ['MECHANICAL_KEYS', 'ROLLING_KEYS', 'OPERATING_POINT_KEYS', 'REQUIRED_MECHANICAL',
+           'BODY_KEYS', 'FIELD_KEYS', 'NEWTONIAN_KEYS', 'LOAD_KEYS', 'MAX_COORDINATES',
+           'MAX_BODIES', 'MAX_TERMS', 'read_mechanical_system', 'MechanicalFormat']
+
 MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'positive', 'coordinates', 'force_function',
                    'dissipation', 'forces', 'loads', 'constraints', 'nonholonomic', 'rolling',
                    'operating_points', 'bodies', 'results'}

@@ -32,6 +32,8 @@ from sage.symbolic.ring import SR
 from ..symbols import time_derivative, t
 from .frames import FrameTree, FrameVector, cross, held_product
 
+__all__ = ['Kinematics']
+
 
 class Kinematics:
     r"""

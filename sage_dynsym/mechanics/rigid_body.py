@@ -43,6 +43,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 
+__all__ = ['as_vector3', 'as_scalar', 'RigidBody']
+
 
 def as_vector3(value, entry):
     r"""

@@ -63,6 +63,8 @@ from ..symbols import acceleration, t
 from .loads import Load, body_index
 from .rigid_body import RigidBody
 
+__all__ = ['SystemChecks']
+
 
 class SystemChecks:
     r"""

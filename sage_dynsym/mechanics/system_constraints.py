@@ -18,6 +18,8 @@ EXAMPLES::
     ([-l^2 + x^2 + y^2], [mu1])
 """
 
+__all__ = ['SystemConstraints']
+
 
 class SystemConstraints:
     r"""

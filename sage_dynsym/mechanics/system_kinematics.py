@@ -19,6 +19,8 @@ EXAMPLES::
     [             0         sin(b)         cos(b)]
 """
 
+__all__ = ['SystemKinematics']
+
 
 class SystemKinematics:
     r"""
