@@ -33,6 +33,8 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import t as _t
 
+__all__ = ['Event', 'event_functions']
+
 
 class Event(SageObject):
     r"""

@@ -31,6 +31,10 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['FUNCTIONS', 'C_KEYWORDS', 'MATH_H_NAMES', 'is_reserved', 'identifier', 'StructuralKey',
+           'real_constant', 'function_name', 'write_code', 'symbols_and_functions',
+           'linear_coefficients']
+
 #: Sage's function names -> (Python ``math`` name, C ``math.h`` name).
 FUNCTIONS = {
     'sin': ('math.sin', 'sin'), 'cos': ('math.cos', 'cos'), 'tan': ('math.tan', 'tan'),

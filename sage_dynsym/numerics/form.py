@@ -50,6 +50,8 @@ from ..errors import AnalysisError, ModelError, brief
 from ..symbols import t as _t
 from .expressions import linear_coefficients, symbols_and_functions
 
+__all__ = ['deferred', 'constraint_terms', 'velocity_constraint_terms', 'as_form', 'NumericalForm']
+
 
 def deferred(value):
     r"""

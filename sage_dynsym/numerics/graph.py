@@ -40,6 +40,8 @@ import math
 from ..errors import AnalysisError
 from .expressions import FUNCTIONS
 
+__all__ = ['ExpressionGraph', 'SymbolicConverter']
+
 #: Node kinds. An input's argument is (array, index); a constant's its value.
 _INPUT, _CONST, _ADD, _SUB, _MUL, _DIV, _NEG, _CALL, _POW = range(9)
 _SYMBOL = {_ADD: '+', _SUB: '-', _MUL: '*', _DIV: '/'}

@@ -47,6 +47,8 @@ from .rhs import RightHandSide
 from .simulate import simulate as _simulate
 from .values import check_model_values
 
+__all__ = ['object_cache', 'energy_rate', 'NumericalMethods']
+
 _CACHES = {}
 
 

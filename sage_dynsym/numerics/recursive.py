@@ -63,6 +63,9 @@ from ..symbols import t as _t, time_derivative
 from .form import deferred
 from .graph import ExpressionGraph, SymbolicConverter
 
+__all__ = ['PIVOT_TOLERANCE', 'LARGE_GRAPH', 'optimization', 'check_backend', 'compiled_library',
+           'unsupported', 'RecursiveForm']
+
 
 def _cross(G, u, w):
     return (G.sub(G.mul(u[1], w[2]), G.mul(u[2], w[1])),

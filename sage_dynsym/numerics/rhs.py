@@ -31,6 +31,9 @@ from ..errors import AnalysisError, ModelError, brief
 from ..arguments import finite_real
 from .form import as_form
 
+__all__ = ['parameter_values', 'real_number', 'state_vector', 'RightHandSide', 'StateJacobian',
+           'numerical_rhs']
+
 
 def parameter_values(form, values):
     r"""

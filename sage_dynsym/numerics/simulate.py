@@ -64,6 +64,8 @@ from .form import as_form
 from .rhs import RightHandSide, StateJacobian, real_number
 from .trajectory import Trajectory
 
+__all__ = ['MAX_POINTS', 'MAX_EVALUATIONS', 'CONSTRAINT_TOLERANCE', 'initial_state', 'simulate']
+
 _LOG = logging.getLogger('sage_dynsym.numerics')
 _METHODS = {'auto': 'DOP853', 'nonstiff': 'DOP853', 'stiff': 'Radau'}
 _SCIPY = ('RK45', 'RK23', 'DOP853', 'Radau', 'BDF', 'LSODA')

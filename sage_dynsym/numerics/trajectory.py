@@ -31,6 +31,8 @@ from ..errors import ModelError
 from ..symbols import t as _t
 from .form import deferred
 
+__all__ = ['State', 'Trajectory', 'CURVES_PER_PANEL', 'DENSE_POINTS']
+
 
 class State(dict):
     r"""
