@@ -33,7 +33,8 @@ _SOURCE = {
     'characteristic_estimate': '..dynamics.lagrangian_report',
 }
 
-__all__ = ['DEFAULT_BUDGET', 'SECTIONS', 'ANALYSIS_SECTIONS'] + list(_SOURCE)
+__all__ = ['DEFAULT_BUDGET', 'SECTIONS', 'ANALYSIS_SECTIONS']
+__all__ += list(_SOURCE)
 
 __getattr__, __dir__ = lazy_face(__name__, _SOURCE)
 del lazy_face
