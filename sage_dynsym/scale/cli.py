@@ -108,6 +108,8 @@ import sys
 from ..arguments import count_option
 from .cluster import CLUSTER_THRESHOLD
 
+__all__ = ['parser', 'EXAMPLE', 'main']
+
 
 def _assignment(text, what):
     name, sep, value = text.partition('=')

@@ -56,6 +56,10 @@ import uuid
 from ..errors import AnalysisError
 from ..arguments import count, finite_real, is_integer
 
+__all__ = ['DEFAULT_TIMEOUT', 'MAX_WORKERS', 'CLUSTER_THRESHOLD', 'LOCAL_START_TIMEOUT', 'chunks',
+           'machine_cores', 'connected', 'SHUTDOWN_LOGGERS', 'closed_quietly', 'local_cluster',
+           'run_chunks']
+
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
 #: Most worker processes of a local cluster (``workers=``): each is a
 #: Python process; far more than the cores only costs memory.

@@ -96,7 +96,8 @@ the computation) is identical::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 
 import numpy as np
 
@@ -119,6 +120,10 @@ from .kernel import map_chunk, chunk_points, run_program
 from .equilibria import point_diagnosis
 from .points import (parse_points, check_positive_ranges, number_text, result_arrays,
                      MAX_POINTS)
+
+__all__ = ['CHUNK', 'MAX_POLYNOMIAL_DEGREE', 'stability_map', 'model_linear_system',
+           'linear_symbols', 'CLASS_COLOURS', 'CLASS_NAMES', 'StabilityMap', 'class_plot',
+           'BOUNDARY_POINTS']
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
