@@ -52,6 +52,10 @@ import numbers
 
 from .errors import DynSymError, ModelError, brief
 
+__all__ = ['is_integer', 'count', 'finite_real', 'flag', 'choice', 'known_symbols',
+           'symbol_arguments', 'expression_argument', 'expression_list', 'matrix_argument',
+           'model_argument', 'check_declared_signs', 'count_option']
+
 
 def _shown(value):
     r"""``value`` for a message: a Python builtin with its type (``'7' (str)``,

@@ -36,7 +36,8 @@ EXAMPLES::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 import os
 import sys
 
@@ -45,11 +46,15 @@ import yaml
 from .arguments import flag, model_argument
 from .errors import DescriptionError, DynSymError, brief
 from .io.expressions import ExpressionParser
-from .io.fields import MAX_RESULT_LENGTH, title  # noqa: F401
+from .io.fields import MAX_RESULT_LENGTH, title
 from .io.files import write_atomically
 from .io.yaml import read_yaml
 # earlier public names of this module
-from .mechanics.description import mechanical_system_from_dict, mechanical_system_to_dict  # noqa: F401
+from .mechanics.description import mechanical_system_from_dict, mechanical_system_to_dict
+
+__all__ = ['example_path', 'load', 'ENTRY_POINTS', 'kinds', 'register_kind', 'model_from_dict',
+           'model_results', 'save', 'title', 'mechanical_system_from_dict',
+           'mechanical_system_to_dict']
 
 
 def example_path(name):

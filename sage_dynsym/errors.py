@@ -18,6 +18,9 @@ EXAMPLES::
 """
 import reprlib
 
+__all__ = ['brief', 'DynSymError', 'ModelError', 'DescriptionError', 'ExpressionError',
+           'CircuitError', 'AnalysisError', 'BudgetError', 'moved_module', 'lazy_face']
+
 _BRIEF = reprlib.Repr()
 _BRIEF.maxlevel, _BRIEF.maxstring, _BRIEF.maxother = 3, 60, 60
 _BRIEF.maxlist = _BRIEF.maxdict = _BRIEF.maxtuple = _BRIEF.maxset = 6
