@@ -26,7 +26,7 @@ The modules of earlier versions (``sage_dynsym.lagrangian``,
 remain importable under their old names, as deprecated aliases: each
 warns (``DeprecationWarning``) and gives the module at its new place.
 """
-import importlib
+from .errors import lazy_face
 
 #: The public names and the module each comes from. They are imported on
 #: first use (PEP 562), so that ``import sage_dynsym`` and the command
@@ -74,17 +74,5 @@ _SOURCE = {name: module for module, names in _PUBLIC.items() for name in names}
 #: The public names of the package (its subpackages are public too).
 __all__ = [name for names in _PUBLIC.values() for name in names]
 
-def __getattr__(name):
-    if name not in _SOURCE:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    # symbolic functions, Maxima and the coercion model need the whole Sage
-    # library initialised, also when the package is used from plain Python
-    import sage.all  # noqa: F401
-    value = getattr(importlib.import_module(_SOURCE[name], __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__():
-    return sorted(set(globals()) | set(__all__))
-
+__getattr__, __dir__ = lazy_face(__name__, _SOURCE, load_sage=True)
+del lazy_face

@@ -237,8 +237,8 @@ def _with_time_limit(seconds, compute):
     alarm(seconds)
     try:
         return compute()
-    except AlarmInterrupt:
-        raise _TimeLimit() from None
+    except AlarmInterrupt as err:
+        raise _TimeLimit() from err
     finally:
         cancel_alarm()
 

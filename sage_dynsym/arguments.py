@@ -52,6 +52,10 @@ import numbers
 
 from .errors import DynSymError, ModelError, brief
 
+__all__ = ['is_integer', 'count', 'finite_real', 'flag', 'choice', 'known_symbols',
+           'symbol_arguments', 'expression_argument', 'expression_list', 'matrix_argument',
+           'model_argument', 'check_declared_signs', 'count_option']
+
 
 def _shown(value):
     r"""``value`` for a message: a Python builtin with its type (``'7' (str)``,
@@ -317,9 +321,9 @@ def known_symbols(keys, valid, name, error=ModelError, what="symbol", entry=None
         keys = [keys]
     try:
         keys = list(keys)
-    except TypeError:
+    except TypeError as err:
         raise error(f"expected a list of symbols or names, got {brief(keys)}",
-                    entry=entry) from None
+                    entry=entry) from err
     by_name = {str(v): v for v in valid}
     found = []
     for key in keys:

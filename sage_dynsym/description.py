@@ -36,7 +36,8 @@ EXAMPLES::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 import os
 import sys
 
@@ -45,11 +46,15 @@ import yaml
 from .arguments import flag, model_argument
 from .errors import DescriptionError, DynSymError, brief
 from .io.expressions import ExpressionParser
-from .io.fields import MAX_RESULT_LENGTH, title  # noqa: F401
+from .io.fields import MAX_RESULT_LENGTH, title
 from .io.files import write_atomically
 from .io.yaml import read_yaml
 # earlier public names of this module
-from .mechanics.description import mechanical_system_from_dict, mechanical_system_to_dict  # noqa: F401
+from .mechanics.description import mechanical_system_from_dict, mechanical_system_to_dict
+
+__all__ = ['example_path', 'load', 'ENTRY_POINTS', 'kinds', 'register_kind', 'model_from_dict',
+           'model_results', 'save', 'title', 'mechanical_system_from_dict',
+           'mechanical_system_to_dict']
 
 
 def example_path(name):
@@ -113,16 +118,18 @@ def load(path, results=False):
     try:
         return _load(path, results, source)
     except DynSymError as err:
-        raise err if err.source else err.with_context(source=source) from None
-    except RecursionError:
+        if err.source:
+            raise
+        raise err.with_context(source=source) from err
+    except RecursionError as cause:
         raise DescriptionError("the description is nested too deeply to be read",
-                               source=source) from None
-    except MemoryError:
+                               source=source) from cause
+    except MemoryError as cause:
         raise DescriptionError("not enough memory to read the description",
-                               source=source) from None
+                               source=source) from cause
     except Exception as err:    # a failure inside Sage: still the package's error
         raise DescriptionError(f"could not build the model ({type(err).__name__}: "
-                               f"{brief(str(err))})", source=source) from None
+                               f"{brief(str(err))})", source=source) from err
 
 
 #: The entry-point group under which other packages register kinds of
@@ -162,7 +169,7 @@ def kinds():
         except Exception as err:        # a broken plugin must not break load()
             raise DescriptionError(f"the kind {point.name!r} of another package cannot be "
                                    f"loaded from {point.value} ({type(err).__name__}: "
-                                   f"{brief(str(err))})", entry=ENTRY_POINTS) from None
+                                   f"{brief(str(err))})", entry=ENTRY_POINTS) from err
         found[_checked_kind(cls, point.name)] = cls
     found.update(_registered)
     return found

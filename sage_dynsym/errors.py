@@ -18,6 +18,9 @@ EXAMPLES::
 """
 import reprlib
 
+__all__ = ['brief', 'DynSymError', 'ModelError', 'DescriptionError', 'ExpressionError',
+           'CircuitError', 'AnalysisError', 'BudgetError', 'moved_module', 'lazy_face']
+
 _BRIEF = reprlib.Repr()
 _BRIEF.maxlevel, _BRIEF.maxstring, _BRIEF.maxother = 3, 60, 60
 _BRIEF.maxlist = _BRIEF.maxdict = _BRIEF.maxtuple = _BRIEF.maxset = 6
@@ -225,3 +228,63 @@ def moved_module(old, new):
     # the caller's frame is the alias module's body; the importer is above it
     warnings.warn(f"{old} is deprecated: import {new} instead", DeprecationWarning, stacklevel=3)
     sys.modules[old] = importlib.import_module(new)
+
+
+def lazy_face(module, sources, load_sage=False):
+    r"""
+    The ``__getattr__`` and ``__dir__`` (PEP 562) of a package face that
+    imports its public names on first use, so that importing the package
+    (and the command line's ``--help``) does not load Sage.
+
+    INPUT:
+
+    - ``module`` -- the ``__name__`` of the package
+    - ``sources`` -- a dict from each lazy name to the module, relative to
+      ``module``, that defines it
+    - ``load_sage`` -- (default: ``False``) whether to initialise the whole
+      Sage library before the first name is imported (symbolic functions,
+      Maxima and the coercion model need it when the package is used from
+      plain Python)
+
+    OUTPUT: the pair ``(__getattr__, __dir__)``; a name, once imported, is
+    bound in the package, and ``dir()`` of the package lists its ``__all__``,
+    its imported subpackages and the dunder names, not its helpers.
+
+    EXAMPLES::
+
+        sage: import sage_dynsym.report as face
+        sage: from sage_dynsym.errors import lazy_face
+        sage: getattr_, dir_ = lazy_face(face.__name__, {'report': '.writer'})
+        sage: getattr_('report') is face.report
+        True
+        sage: 'report' in dir_() and '_SOURCE' not in dir_()
+        True
+
+    TESTS::
+
+        sage: getattr_('nothing')
+        Traceback (most recent call last):
+        ...
+        AttributeError: module 'sage_dynsym.report' has no attribute 'nothing'
+    """
+    import importlib
+    import sys
+    from types import ModuleType
+
+    def __getattr__(name):
+        if name not in sources:
+            raise AttributeError(f"module {module!r} has no attribute {name!r}")
+        if load_sage:
+            importlib.import_module('sage.all')
+        value = getattr(importlib.import_module(sources[name], module), name)
+        setattr(sys.modules[module], name, value)
+        return value
+
+    def __dir__():
+        names = vars(sys.modules[module])
+        return sorted(set(names.get('__all__', ())) | {
+            key for key, value in names.items()
+            if (key.startswith('__') and key.endswith('__'))
+            or (isinstance(value, ModuleType) and value.__name__ == f"{module}.{key}")})
+
+    return __getattr__, __dir__

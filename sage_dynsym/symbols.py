@@ -60,7 +60,8 @@ EXAMPLES::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 import keyword
 import re
 
@@ -87,6 +88,12 @@ ALLOWED_FUNCTIONS.update(asin=ALLOWED_FUNCTIONS['arcsin'],
                          atan2=ALLOWED_FUNCTIONS['arctan2'],
                          abs=ALLOWED_FUNCTIONS['abs_symbolic'])
 del ALLOWED_FUNCTIONS['abs_symbolic']
+
+__all__ = ['t', 'ALLOWED_FUNCTIONS', 'CONSTANTS', 'velocity', 'acceleration', 'momentum',
+           'time_derivative', 'MAX_NAME_LENGTH', 'TIME', 'CONSTANT_MEANINGS', 'COORDINATE_DERIVED',
+           'COMMON_PATTERNS', 'MECHANICAL_PATTERNS', 'CIRCUIT_PATTERNS', 'CIRCUIT_VARIABLES',
+           'parser_functions', 'reserved_meaning', 'constraint_multipliers', 'check_name',
+           'check_names', 'check_mechanical_names', 'exact_decimals', 'is_exact']
 
 CONSTANTS = {'pi': pi, 'e': euler_e, 'I': imaginary_unit}
 
@@ -348,7 +355,7 @@ def check_name(name, entry=None, error=DescriptionError, source=None):
         SR.var(name)
     except ValueError as err:
         raise error(f"Sage cannot make {name!r} into a variable ({err}); choose another name",
-                    entry=entry, source=source) from None
+                    entry=entry, source=source) from err
     return name
 
 
@@ -478,8 +485,8 @@ def exact_decimals(value):
             (getattr(value, 'literal', None) or str(value))
         try:
             return QQ(Fraction(text))
-        except (ValueError, OverflowError):
-            raise ModelError(f"not a finite number: {value}", entry="values") from None
+        except (ValueError, OverflowError) as err:
+            raise ModelError(f"not a finite number: {value}", entry="values") from err
     if not hasattr(value, 'operator'):
         return value
     if value.is_numeric():

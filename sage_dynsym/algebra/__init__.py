@@ -29,7 +29,8 @@ and :mod:`~sage_dynsym.algebra.polynomial_spaces`.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 from .conditions import (positive_conditions, positive_conditions_all, nonzero_conditions,
                          simplify_conditions, simplify_conjunction, conjunction, as_relational)
 from .determinants import fraction_free_det

@@ -45,6 +45,10 @@ from .polynomials import (positive_polynomial, parameter_ring, to_ring, to_sr, i
                           constant_value, is_polynomial_ring, FACTOR_LIMIT)
 from .translation import translate_expressions
 
+__all__ = ['Unexpanded', 'simplify_conditions', 'reduce_conditions', 'conditions_as_expressions',
+           'positive_conditions', 'positive_conditions_all', 'nonzero_conditions',
+           'simplify_conjunction', 'conjunction', 'holds', 'region_holds', 'as_relational']
+
 
 def _relational(T, factors, op):
     r"""``prod(factors) op 0``, factored, with a positive leading

@@ -51,6 +51,9 @@ from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 
+__all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'minimal_primes', 'separating_form',
+           'ShapePrime', 'triangular_sets', 'shape']
+
 #: Attempts at a separating linear form before giving up on the shortcut.
 SEPARATING_ATTEMPTS = 8
 

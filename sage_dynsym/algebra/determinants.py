@@ -22,6 +22,8 @@ from ..errors import AnalysisError
 from .polynomials import parameter_ring, to_ring, positive_polynomial
 from .translation import Translation
 
+__all__ = ['fraction_free_det']
+
 
 def fraction_free_det(A, as_polynomial=False, positive=()):
     r"""

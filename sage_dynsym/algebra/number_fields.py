@@ -34,6 +34,8 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+__all__ = ['AlgebraicConstants']
+
 
 def _is_atom(expr):
     if expr.variables() or expr.is_numeric() or expr.operator() in (add_vararg, mul_vararg):

@@ -38,6 +38,10 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['MAX_MINORS', 'PolynomialContext', 'monomial_expression', 'degree', 'primitive',
+           'Reducer', 'blocks', 'LinearProblem', 'minors', 'schur_after_constant_pivots',
+           'rank_modulo', 'products', 'generic_point']
+
 #: Most minors of one block the rank-drop conditions may enumerate.
 MAX_MINORS = 200_000
 
@@ -104,8 +108,8 @@ class PolynomialContext:
                 f"(coefficients rational in the parameters), got {expr}", entry=entry)
         try:
             f = self.ring.fraction_field()(SR(expr))
-        except (TypeError, ValueError, ArithmeticError):
-            raise refuse() from None
+        except (TypeError, ValueError, ArithmeticError) as err:
+            raise refuse() from err
         num, den = f.numerator(), f.denominator()
         if any(den.degree(v) > 0 for v in self.variable_gens):
             raise refuse()

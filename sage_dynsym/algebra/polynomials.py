@@ -27,6 +27,10 @@ from contextlib import contextmanager, nullcontext
 
 from ..errors import AnalysisError
 
+__all__ = ['FACTOR_LIMIT', 'parameter_ring', 'to_ring', 'to_sr', 'polynomial_to_sr',
+           'is_polynomial_ring', 'is_constant', 'constant_value', 'positive_polynomial',
+           'maxima_without_questions']
+
 #: Polynomials with more terms than this are not factored.
 FACTOR_LIMIT = 3000
 
@@ -68,10 +72,10 @@ def to_ring(expr, ring, what="expression"):
         return expr
     try:
         return ring(SR(expr).expand()) if ring is QQ else SR(expr).polynomial(ring=ring)
-    except (TypeError, ValueError, NotImplementedError, AttributeError):
+    except (TypeError, ValueError, NotImplementedError, AttributeError) as err:
         gens = ', '.join(map(str, ring.gens())) if ring is not QQ else 'constants'
         raise AnalysisError(f"expected a polynomial in {gens} with rational "
-                            f"coefficients, got {expr}", entry=what) from None
+                            f"coefficients, got {expr}", entry=what) from err
 
 
 def to_sr(poly):
@@ -236,4 +240,4 @@ def maxima_without_questions(entry, positive=()):
         hint = (f"declare it with positive=[{what}]" if symbol else
                 "its sign does not follow from the declarations (substitute values, "
                 "or declare the symbols it is made of)")
-        raise AnalysisError(f"Maxima needs the sign of {what}: {hint}", entry=entry) from None
+        raise AnalysisError(f"Maxima needs the sign of {what}: {hint}", entry=entry) from err

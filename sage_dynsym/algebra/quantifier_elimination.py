@@ -55,6 +55,8 @@ from ..errors import AnalysisError
 from .conditions import simplify_conjunction
 from .translation import Translation
 
+__all__ = ['QEPCAD_TIMEOUT', 'QEPCAD_MEMCELLS', 'exists', 'exists_real_solution']
+
 #: Time limit (seconds) of one QEPCAD run.
 QEPCAD_TIMEOUT = 60
 
@@ -166,7 +168,7 @@ def _qepcad_command():
         return _qepcad_cmd(QEPCAD_MEMCELLS)
     except Exception as err:      # the feature check raises various errors
         raise AnalysisError("quantifier elimination needs QEPCAD (install "
-                            f"passagemath-qepcad): {err}", entry="exists") from None
+                            f"passagemath-qepcad): {err}", entry="exists") from err
 
 
 def _qepcad_polynomial(poly):
@@ -218,9 +220,9 @@ def _qepcad(quantified, parts, positive, timeout):
     try:
         run = subprocess.run(command, input=script, capture_output=True, text=True,
                              timeout=timeout)
-    except subprocess.TimeoutExpired:
+    except subprocess.TimeoutExpired as err:
         raise AnalysisError(f"QEPCAD did not finish within {timeout} s (raise "
-                            "timeout=, or simplify the problem)", entry="exists") from None
+                            "timeout=, or simplify the problem)", entry="exists") from err
     match = re.search(r"An equivalent quantifier-free formula:\s*(.*?)\s*=+\s+The End",
                       run.stdout, re.S)
     if match is None:

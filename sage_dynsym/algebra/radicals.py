@@ -26,6 +26,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['roots_in_radicals', 'real_algebraic_roots']
+
 
 def roots_in_radicals(f, x, entry="roots_in_radicals"):
     r"""
@@ -280,7 +282,7 @@ def real_algebraic_roots(f, x, entry="real_algebraic_roots"):
         c = f.coefficient(x, k)
         try:
             coefficients.append(AA(c))
-        except (TypeError, ValueError, NotImplementedError):
+        except (TypeError, ValueError, NotImplementedError) as err:
             raise AnalysisError(f"the coefficient {c} of {f} is not a number: give values "
-                                "to its parameters", entry=entry) from None
+                                "to its parameters", entry=entry) from err
     return sorted(PolynomialRing(AA, 'x')(coefficients).roots(multiplicities=False))

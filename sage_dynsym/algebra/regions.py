@@ -34,6 +34,10 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from .conditions import simplify_conjunction, holds
 
+__all__ = ['WITNESS_SAMPLES', 'EMPTINESS_TIMEOUT', 'MAX_ALTERNATIVES', 'simplify_region',
+           'intersection', 'negation', 'prune_empty', 'partition', 'MAX_REDUNDANCY_RELATIONS',
+           'drop_redundant']
+
 #: Random points tried for a witness of an alternative before quantifier
 #: elimination is asked whether it is empty.
 WITNESS_SAMPLES = 400

@@ -18,6 +18,9 @@ import operator
 from sage.symbolic.operators import add_vararg, mul_vararg
 from sage.symbolic.ring import SR
 
+__all__ = ['TERMS_CAP', 'PERMANENT_STATES', 'polynomial_terms', 'determinant_terms',
+           'matrix_terms']
+
 #: Term counts beyond this are reported as this (they are over any budget).
 TERMS_CAP = 10**30
 

@@ -91,6 +91,11 @@ from .conditions import (positive_conditions, nonzero_conditions, conjunction,
 from .decomposition import minimal_primes, shape, ShapePrime, triangular_sets
 from .translation import Translation, NotAlgebraic, translate_expressions
 
+__all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
+           'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
+           'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
+           'solve_transcendental']
+
 
 #: Zero-dimensional components with parameters of a larger degree are not
 #: solved by radicals (they are returned implicitly).
@@ -143,6 +148,37 @@ def normalize(expr, angles=(), factor=False):
         return T.factored(flat(f.numerator())) / T.factored(flat(f.denominator()))
     except AnalysisError:
         return expr
+
+
+def vanishes(expr):
+    r"""
+    Whether ``expr`` is identically zero: its canonical form
+    (:func:`normalize`) is zero, or Maxima's full simplification is (for
+    what the rational normal form treats as atoms, e.g. `\sqrt{a}^2 - a`).
+
+    INPUT:
+
+    - ``expr`` -- a symbolic expression
+
+    OUTPUT: ``True`` if ``expr`` is shown to be zero, ``False`` otherwise
+    (also when the simplification cannot decide)
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.solving import vanishes
+        sage: a, b = var('a b')
+        sage: vanishes((a^2 - b^2)/(a + b) - a + b), vanishes(a - b)
+        (True, False)
+        sage: vanishes(sin(a)^2 + cos(a)^2 - 1)
+        True
+    """
+    expr = SR(expr)
+    if expr.is_zero() or normalize(expr).is_zero():
+        return True
+    try:
+        return bool(expr.simplify_full().is_zero())
+    except (TypeError, ValueError):     # Maxima gives up: not shown to be zero
+        return False
 
 
 def _shortest_trigonometric(expr, angles, factor):
@@ -1341,8 +1377,8 @@ def solve_transcendental(equations, unknowns, reason=None, positive=()):
             found = solve([e == 0 for e in equations], *unknowns, solution_dict=True)
     except AnalysisError:
         raise       # Maxima asked for a sign (an AnalysisError is also a ValueError)
-    except (TypeError, ValueError, NotImplementedError, RuntimeError):
-        raise failure from None
+    except (TypeError, ValueError, NotImplementedError, RuntimeError) as err:
+        raise failure from err
     solutions = []
     for sol in found:
         values = [SR(sol.get(u, u)) for u in unknowns]

@@ -558,7 +558,7 @@ class Translation:
             return self._evaluation.walk(e)
         except KeyError as err:
             raise AnalysisError(f"{expr} contains {err.args[0]}, which is not "
-                                f"among the registered symbols", entry="translation") from None
+                                f"among the registered symbols", entry="translation") from err
 
     def numerator(self, expr):
         r"""The numerator of ``expr`` in :meth:`ring` and the list of the

@@ -13,7 +13,8 @@ and families of equilibria by elimination.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 from .elimination import equilibrium_family, EquilibriumFamily
 from .hurwitz import (hurwitz_matrix, hurwitz_determinants, hurwitz_conditions,
                       lienard_chipart_conditions, real_negative_roots_conditions,
@@ -38,3 +39,16 @@ from .census import equilibrium_census, Census, CensusCell
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, StationaryProblem,
                          solve_stationary, ModifiedRouthLyapunov)
+
+__all__ = ['equilibrium_family', 'EquilibriumFamily', 'hurwitz_matrix', 'hurwitz_determinants',
+           'hurwitz_conditions', 'lienard_chipart_conditions', 'real_negative_roots_conditions',
+           'conservative_stability_conditions', 'LinearSystem', 'linearize', 'OperatingPoint',
+           'steady_linearization', 'steady_motion_conditions', 'SteadyMotion', 'steady_motions',
+           'SteadyMotionSolution', 'SteadyMotions', 'MotionSolution', 'sylvester_conditions',
+           'definiteness_conditions', 'form_matrix', 'restrict_to_subspace',
+           'simultaneous_reduction', 'simplify_conditions', 'solve_exactly', 'normalize', 'exists',
+           'kelvin_chetaev', 'StabilityVerdict', 'small_damping_limit', 'DampingLimit',
+           'spectrum_regions', 'linear_stability', 'energy_stability', 'ConfigurationChart',
+           'configuration_points', 'equilibrium_census', 'Census', 'CensusCell',
+           'stationary_solutions', 'stationary_motions', 'check_integral', 'StationarySolution',
+           'StationarySolutions', 'StationaryProblem', 'solve_stationary', 'ModifiedRouthLyapunov']

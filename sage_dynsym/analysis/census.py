@@ -78,6 +78,9 @@ from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
 
+__all__ = ['discriminant_polynomials', 'equilibria_at', 'CensusCell', 'Census',
+           'equilibrium_census']
+
 
 def _log(message, level=1):
     verbose(f"equilibrium_census: {message}", level=level)
@@ -396,6 +399,18 @@ class Census(SageObject):
         sage: census = equilibrium_census(L, [w], positive=[w])
         sage: census.parameters(), census.bifurcation_set(), census.bifurcation_values()
         ([w], [w - 1], [1])
+
+    TESTS:
+
+    A census keeps the function that counts at a point (a closure over the
+    system), which cannot be pickled, so the pickling test is skipped; the
+    cells are consistent with the bifurcation set and with a recount at
+    their samples::
+
+        sage: TestSuite(census).run(skip='_test_pickling')
+        sage: x, dx, a, b = var('x dx a b')
+        sage: cusp = equilibrium_census(Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x]), [a, b])
+        sage: TestSuite(cusp).run(skip='_test_pickling')
     """
 
     def __init__(self, parameters, polynomials, cells, task, positive, region=None):
@@ -413,6 +428,28 @@ class Census(SageObject):
                  f"{self._polynomials}"]
         lines += [f"  {c}" for c in self._cells]
         return "\n".join(lines)
+
+    def _test_cells(self, **options):
+        r"""Each cell's sample lies off the bifurcation set and inside the
+        declared signs, its counts are ordered (stable, then stable in first
+        approximation, at most all) and a recount at the sample gives them;
+        over one parameter the intervals of the cells follow each other,
+        one more than the bifurcation values.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        for cell in self._cells:
+            sample = cell.sample()
+            tester.assertTrue(all(not SR(f).subs(sample).is_zero() for f in self._polynomials))
+            tester.assertTrue(all(v > 0 for k, v in sample.items() if self._is_positive(k)))
+            tester.assertTrue(cell.stable_count() <= cell.stable_count(True) <= cell.count())
+            tester.assertLessEqual(cell.undecided_count(), cell.count())
+            tester.assertEqual(self.count_at(sample), (cell.count(), cell.stable_count()))
+        if len(self._parameters) == 1 and all(c.bounds() is not None for c in self._cells):
+            tester.assertEqual(len(self._cells), len(self.bifurcation_values()) + 1)
+            for left, right in zip(self._cells, self._cells[1:]):
+                tester.assertEqual(left.bounds()[1], right.bounds()[0])
 
     def _is_positive(self, p):
         return any(str(p) == str(q) for q in self._positive)

@@ -27,6 +27,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['POINTS', 'census_plot']
+
 POINTS = 60
 
 

@@ -72,6 +72,8 @@ from ..arguments import expression_list, model_argument
 from ..algebra.translation import expand_angles
 from ..algebra.solving import normalize
 
+__all__ = ['ConfigurationChart', 'ConfigurationPoint', 'algebraic_value', 'configuration_points']
+
 
 class ConfigurationChart(SageObject):
     r"""

@@ -39,6 +39,8 @@ from ..errors import AnalysisError, brief
 from ..algebra.conditions import region_holds
 from ..algebra.radicals import roots_in_radicals, real_algebraic_roots
 
+__all__ = ['critical_values']
+
 
 def _candidates(boundaries, parameter, values, complete):
     r"""The roots in ``parameter`` of the boundary factors: in radicals up to

@@ -55,6 +55,8 @@ from .kelvin_chetaev import kelvin_chetaev, force_matrices
 from ..algebra.regions import simplify_region, prune_empty
 from .spectrum import spectrum_regions
 
+__all__ = ['DampingLimit', 'small_damping_limit']
+
 _OPS = {'gt': lambda e: e > 0, 'lt': lambda e: e < 0, 'ne': lambda e: e != 0}
 
 

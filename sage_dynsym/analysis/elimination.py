@@ -88,6 +88,8 @@ from sage.symbolic.ring import SR
 from ..arguments import expression_list
 from ..errors import AnalysisError
 
+__all__ = ['EquilibriumFamily', 'equilibrium_family']
+
 
 def _polynomial_system(equations, symbols):
     names = sorted({str(v) for v in symbols})
@@ -97,11 +99,11 @@ def _polynomial_system(equations, symbols):
         try:
             num, den = e.numerator_denominator(normalize=True) if e.variables() else (e, SR(1))
             polys.append(num.polynomial(ring=R))
-        except (TypeError, ValueError, NotImplementedError, AttributeError):
+        except (TypeError, ValueError, NotImplementedError, AttributeError) as err:
             raise AnalysisError(
                 f"elimination needs polynomial equations; got {e} (substitute "
                 f"the unknown functions and non-polynomial terms first)",
-                entry=f"right-hand side {k}") from None
+                entry=f"right-hand side {k}") from err
     return R, polys
 
 

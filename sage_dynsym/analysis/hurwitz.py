@@ -87,10 +87,15 @@ from ..arguments import expression_argument
 from ..errors import AnalysisError, brief
 from ..algebra.conditions import Unexpanded, reduce_conditions, conditions_as_expressions
 # simplify_conditions and FACTOR_LIMIT moved to the algebra; their old place still serves them
-from ..algebra.conditions import simplify_conditions  # noqa: F401
-from ..algebra.polynomials import FACTOR_LIMIT  # noqa: F401
+from ..algebra.conditions import simplify_conditions
+from ..algebra.polynomials import FACTOR_LIMIT
 from ..algebra.polynomials import (parameter_ring, to_sr, is_constant, constant_value,
                                    is_polynomial_ring)
+
+__all__ = ['DEFAULT_BUDGET', 'polynomial_coefficients', 'polynomial_arguments', 'hurwitz_matrix',
+           'hurwitz_determinants', 'routh_scheme_fits', 'hurwitz_conditions',
+           'lienard_chipart_conditions', 'real_negative_roots_conditions',
+           'conservative_stability_conditions', 'simplify_conditions', 'FACTOR_LIMIT']
 
 #: Default limit on the term multiplications of one product in the
 #: fraction-free Routh scheme before determinants are left unexpanded.
@@ -169,10 +174,10 @@ def polynomial_coefficients(poly, var):
             num, den = (expr.numerator_denominator(normalize=True)
                         if expr.variables() else (expr, SR(1)))
             num, den = num.polynomial(ring=ring), den.polynomial(ring=ring)
-        except (TypeError, ValueError, NotImplementedError, AttributeError):
+        except (TypeError, ValueError, NotImplementedError, AttributeError) as err:
             raise AnalysisError(
                 f"expected a polynomial in {name} with coefficients rational "
-                f"in the parameters, got {expr}", entry=what) from None
+                f"in the parameters, got {expr}", entry=what) from err
         if den.degree(ring.gen(ring.ngens() - 1)) > 0:
             raise AnalysisError(
                 f"expected a polynomial in {name} (no {name} in a denominator), "

@@ -119,7 +119,7 @@ from ..algebra.solving import normalize
 from .spectrum import spectrum_regions
 from .verdict import StabilityVerdict, verdict_from_parts
 
-__all__ = ['kelvin_chetaev', 'StabilityVerdict']
+__all__ = ['force_matrices', 'state_matrix', 'kelvin_chetaev', 'StabilityVerdict']
 
 
 def force_matrices(M, D, G, K, P=None):

@@ -57,7 +57,9 @@ from ..arguments import expression_argument, expression_list, matrix_argument, s
 from ..errors import AnalysisError, brief
 from ..algebra.determinants import fraction_free_det as _fraction_free_det
 from .motion import SecondOrderEquations, FirstOrderEquations
-from ..algebra.solving import normalize
+from ..algebra.solving import normalize, vanishes
+
+__all__ = ['LinearSystem', 'linearize', 'equations_of_motion']
 
 
 def _at(expr, point):
@@ -66,7 +68,7 @@ def _at(expr, point):
     except (ValueError, ZeroDivisionError, RuntimeError) as err:
         if not isinstance(err, ZeroDivisionError) and 'division by zero' not in str(err):
             raise
-        raise _singularity(expr, point) from None
+        raise _singularity(expr, point) from err
 
 
 def _shown(point):
@@ -93,16 +95,6 @@ def _singularity(expr, point, what="a denominator of the equations vanishes"):
         "other angles for the axis)", entry="linearize")
 
 
-def _is_zero(expr):
-    expr = SR(expr)
-    if expr.is_zero() or normalize(expr).is_zero():
-        return True
-    try:
-        return bool(expr.simplify_full().is_zero())
-    except (TypeError, ValueError):
-        return False
-
-
 def _tidy(expr):
     expr = SR(expr)
     if expr.is_numeric() or expr.is_symbol():
@@ -115,7 +107,7 @@ def _tidy(expr):
 
 def _check_equilibrium(values, point):
     for i, v in enumerate(values):
-        if not _is_zero(v):
+        if not vanishes(v):
             raise AnalysisError(f"the point {_shown(point)} is not an equilibrium: "
                                 f"equation {i} gives {_tidy(v)} != 0; for the "
                                 f"linearization at any state numerically, give the parameters' "
@@ -155,6 +147,11 @@ class LinearSystem(SageObject):
         )
         sage: Ls.characteristic_polynomial(var('lam'))
         g^2*lam^2 + lam^4 + 2*k*lam^2 + k^2
+
+    TESTS::
+
+        sage: TestSuite(Ls).run()
+        sage: TestSuite(LinearSystem([x], J=[[g - k]], B=[[2]])).run()
     """
 
     def __init__(self, variables, M=None, S=None, W=None, J=None, B=None, steady_motion=None):
@@ -179,6 +176,42 @@ class LinearSystem(SageObject):
             self._order = 2
             self._M, self._S, self._W = (square(X, name) for X, name in
                                          ((M, "M"), (S, "S"), (W, "W")))
+
+    def _matrices(self):
+        return (self._J, self._B) if self._order == 1 else (self._M, self._S, self._W)
+
+    def __eq__(self, other):
+        r"""
+        Linear systems are values: equal when they have the same unknowns
+        and the same matrices.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.linear import LinearSystem
+            sage: x, a = var('x a')
+            sage: LinearSystem([x], J=[[a]]) == LinearSystem([x], J=[[a]]), LinearSystem([x], J=[[a]]) != LinearSystem([x], J=[[-a]])
+            (True, True)
+        """
+        return (isinstance(other, LinearSystem) and self._order == other._order
+                and self._variables == other._variables
+                and all(A == B for A, B in zip(self._matrices(), other._matrices())))
+
+    def __hash__(self):
+        return hash((self._order, tuple(map(str, self._variables))))
+
+    def _test_sizes(self, **options):
+        r"""Run by ``TestSuite``: square matrices, a row per unknown; `D, K`
+        symmetric and `G, P` antisymmetric, `S = D + 2G`, `W = K + P`."""
+        tester, n = self._tester(**options), len(self._variables)
+        for X in self._matrices():
+            tester.assertEqual((X.nrows(), X.ncols()), (n, n))
+        if self._order == 2:
+            D, G, K, P = self.D(), self.G(), self.K(), self.P()
+            tester.assertTrue(D.is_symmetric() and K.is_symmetric())
+            tester.assertEqual(G, -G.transpose())
+            tester.assertEqual(P, -P.transpose())
+            tester.assertEqual(D + 2*G, self._S)
+            tester.assertEqual(K + P, self._W)
 
     def _repr_(self):
         vs = ', '.join(map(str, self._variables))
@@ -988,10 +1021,10 @@ def _linearize_second_order(L, at):
     _check_equilibrium([_at(e, point) for e in E], point)
     mat = lambda xs: matrix(SR, [[_tidy(_at(e.diff(x), point)) for x in xs] for e in E])
     M = mat(ddq)
-    if _is_zero(_fraction_free_det(M)):
+    if vanishes(_fraction_free_det(M)):
         # singular at this point only: a chart singularity (a kinetic matrix
         # singular everywhere -- loops without inductance -- is structural)
         kinetic = matrix(SR, [[e.diff(x) for x in ddq] for e in E])
-        if not _is_zero(_fraction_free_det(kinetic)):
+        if not vanishes(_fraction_free_det(kinetic)):
             raise _singularity(kinetic.det(), point, what="the kinetic matrix is singular")
     return LinearSystem(q, M=M, S=mat(dq), W=mat(q))

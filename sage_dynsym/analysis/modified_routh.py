@@ -87,7 +87,9 @@ from ..errors import AnalysisError, brief
 from ..symbols import velocity
 from .linear import equations_of_motion
 from ..algebra.radicals import roots_in_radicals
-from ..algebra.solving import solve_exactly, solve_transcendental, normalize
+from ..algebra.solving import solve_exactly, solve_transcendental, normalize, vanishes
+
+__all__ = ['CHECK_POINTS', 'ModifiedRouthLyapunov']
 
 #: Random complex points at which an equation of motion that Sage does not
 #: simplify to zero is evaluated on a family.
@@ -104,16 +106,6 @@ def _solve_linear(expr, v, what):
         raise AnalysisError(f"cannot solve {expr} == 0 for {v}: it is not linear in it",
                             entry=what)
     return normalize(-expr.subs({v: 0}) / a)
-
-
-def _is_zero(expr):
-    expr = SR(expr)
-    if expr.is_zero() or normalize(expr).is_zero():
-        return True
-    try:
-        return bool(expr.simplify_full().is_zero())
-    except (TypeError, ValueError):
-        return False
 
 
 def _vanishes_numerically(expr, seed=0):
@@ -289,9 +281,9 @@ class ModifiedRouthLyapunov(SageObject):
         b = matrix(SR, [[e.subs({v: 0 for v in self._dqs})] for e in eqs])
         try:
             solution = -A.solve_right(b)
-        except (ValueError, ZeroDivisionError):
+        except (ValueError, ZeroDivisionError) as err:
             raise AnalysisError(f"the kinetic matrix {A} of the Routh function is singular",
-                                entry=_WHAT) from None
+                                entry=_WHAT) from err
         return [normalize(solution[i, 0]) for i in range(self._n)]
 
     def _velocities(self):
@@ -490,14 +482,15 @@ class ModifiedRouthLyapunov(SageObject):
         solutions only)."""
         if equation.has(ui) and equation.is_polynomial(ui) and equation.degree(ui) <= 2:
             return roots_in_radicals(equation, ui, entry=_WHAT)
+        found, why = [], None
         try:
             found = solve_transcendental([equation], [ui], reason="a separated equation")
-        except AnalysisError:
-            found = []
+        except AnalysisError as err:    # reported below, as the cause
+            why = err
         roots = [s.values()[ui] for s in found]
         if not roots:
             raise AnalysisError(f"cannot solve the separated equation {equation} == 0 for the "
-                                "unknown function explicitly", entry=_WHAT)
+                                "unknown function explicitly", entry=_WHAT) from why
         return roots
 
     def invariant_manifolds(self):
@@ -543,7 +536,7 @@ class ModifiedRouthLyapunov(SageObject):
             at[acc] = sum(p.diff(q) * v for q, v in zip(self._qs, phi))
         for k, E in enumerate(data.equations()):
             value = SR(E).subs(at)
-            if not (_is_zero(value) or _vanishes_numerically(value)):
+            if not (vanishes(value) or _vanishes_numerically(value)):
                 raise AnalysisError(f"the family {phi} is not invariant: equation {k} of "
                                     f"motion gives {value}", entry=_WHAT)
 

@@ -31,6 +31,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['SecondOrderEquations', 'FirstOrderEquations']
+
 
 class SecondOrderEquations(SageObject):
     r"""

@@ -46,6 +46,8 @@ rolling of a disk, through the same four calls::
 """
 from sage.structure.sage_object import SageObject
 
+__all__ = ['MotionSolution']
+
 
 class MotionSolution(SageObject):
     r"""

@@ -80,6 +80,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['DECISION_BITS', 'symplectic_unit', 'FormalArithmetic', 'normal_form',
+           'BirkhoffNormalForm']
+
 #: Bits of the interval arithmetic that decides signs and zeros.
 DECISION_BITS = 256
 
@@ -614,6 +617,20 @@ class BirkhoffNormalForm(SageObject):
         sage: nf = normal_form(FormalArithmetic.numeric(p^2/2 + q^2/2 - q^4/24, 1))
         sage: nf
         Birkhoff normal form of order 4 in 1 degree(s) of freedom: -0.0625000000000000*I1^2 + I1
+
+    TESTS:
+
+    Normal forms have no value equality (their arithmetic holds rings of
+    coefficients and floating-point numbers), so the pickling test is
+    skipped; the degrees, signs and frequencies are consistent::
+
+        sage: TestSuite(nf).run(skip='_test_pickling')
+        sage: R = PolynomialRing(QQ, 'q1, q2, p1, p2'); q1, q2, p1, p2 = R.gens()
+        sage: H = (q1^2 + p1^2)/2 - 2*(q2^2 + p2^2) + q1^2*q2^2
+        sage: TestSuite(normal_form(FormalArithmetic.numeric(H, 2))).run(skip='_test_pickling')
+        sage: B = PolynomialRing(QQ, 'k'); R = PolynomialRing(B, 'q, p'); q, p = R.gens()
+        sage: nf = normal_form(FormalArithmetic(p^2/2 + q^2/2 + B.0*q^4, 1, {'k': None}, sample={'k': 1}))
+        sage: TestSuite(nf).run(skip='_test_pickling')
     """
 
     def __init__(self, arithmetic, order, phase, H, T, generators, modes):
@@ -629,6 +646,31 @@ class BirkhoffNormalForm(SageObject):
         n = self._A.n
         return (f"Birkhoff normal form of order {self._order} in {n} degree(s) of freedom: "
                 f"{self.polynomial()}")
+
+    def _test_degrees(self, **options):
+        r"""One sign and one frequency per degree of freedom, by decreasing
+        `\omega_k`; the terms are of degrees 1 to ``order/2`` in the
+        actions, and with numerical data the terms of degree 1 are the
+        signed frequencies (`H_2 = \sum \sigma_k\omega_k I_k`).
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        n, frequencies = self._A.n, self.frequencies()
+        tester.assertEqual(len(frequencies), n)
+        tester.assertTrue(set(self.signs()) <= {1, -1})
+        coefficients = self.coefficients()
+        for m in coefficients:
+            tester.assertEqual(len(m), n)
+            tester.assertTrue(1 <= sum(m) <= self._order // 2)
+        if self._A.free:
+            return
+        omegas = [abs(f) for f in frequencies]
+        tester.assertEqual(omegas, sorted(omegas, reverse=True))
+        if self._A.is_numeric():
+            for k, f in enumerate(frequencies):
+                unit = tuple(int(j == k) for j in range(n))
+                tester.assertAlmostEqual(float(coefficients[unit]), float(f))
 
     def order(self):
         r"""The degree up to which the Hamiltonian is normalized.

@@ -28,6 +28,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['OperatingPoint']
+
 
 class OperatingPoint(SageObject):
     r"""

@@ -33,6 +33,10 @@ from ..algebra.conditions import positive_conditions_all, nonzero_conditions, co
 from ..algebra.solving import normalize
 from ..algebra.translation import Translation
 
+__all__ = ['form_matrix', 'definiteness_conditions', 'signed_leading_minors',
+           'sylvester_conditions', 'semidefiniteness_conditions', 'restrict_to_subspace',
+           'simultaneous_reduction']
+
 
 def form_matrix(form, variables):
     r"""

@@ -64,6 +64,9 @@ from ..algebra.solving import normalize
 from .spectrum import spectrum_regions
 from .verdict import StabilityVerdict, verdict_from_parts
 
+__all__ = ['REASONS', 'coefficient_conditions', 'ignorable', 'first_approximation',
+           'energy_stability', 'linear_stability']
+
 REASONS = {
     'asymptotically stable': "every root of the characteristic polynomial has a negative "
                              "real part (Liénard-Chipart conditions; Lyapunov's theorem on "

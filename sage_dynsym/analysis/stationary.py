@@ -114,7 +114,11 @@ from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_m
                               signed_leading_minors)
 from ..algebra.solving import solve_exactly, normalize, SolutionList
 # the modified method has a module of its own; this import keeps its old path
-from .modified_routh import ModifiedRouthLyapunov  # noqa: F401
+from .modified_routh import ModifiedRouthLyapunov
+
+__all__ = ['check_integral', 'StationaryProblem', 'StationarySolution', 'StationarySolutions',
+           'solve_stationary', 'stationary_solutions', 'stationary_motions',
+           'ModifiedRouthLyapunov']
 
 
 def check_integral(V, variables, equations, index=0):
@@ -743,7 +747,10 @@ class StationarySolutions(SolutionList):
         sage: x, y, a = var('x y a')
         sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y]); sols
         3 stationary solutions of K = 1/2*a*y^2 + (x^2 + y^2)*lambda1 + 1/2*x^2
-        sage: TestSuite(sols).run(skip=['_test_pickling'])
+
+    TESTS::
+
+        sage: TestSuite(sols).run()
     """
 
     def __init__(self, problem, solutions, chart=None, regular=None):
@@ -887,6 +894,15 @@ class StationarySolutions(SolutionList):
             []
         """
         return list(self._artifacts)
+    def _test_solutions(self, **options):
+        r"""Each solution annuls the equations of the problem (an unsolved
+        equation is never a solution).
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        for solution in self._solutions:
+            tester.assertTrue(solution.check(self._problem.equations))
 
     def __eq__(self, other):
         return isinstance(other, StationarySolutions) and \

@@ -74,6 +74,8 @@ from ..symbols import t as _t, time_derivative
 from .operating_point import OperatingPoint
 from ..algebra.trig_linear import TrigFractionField
 
+__all__ = ['SteadyMotion', 'split_point', 'steady_motion_conditions', 'steady_linearization']
+
 
 def _names(symbols):
     return ", ".join(map(str, symbols))

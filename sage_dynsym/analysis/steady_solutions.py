@@ -34,6 +34,8 @@ from .verdict import verdict_from_parts
 from .operating_point import OperatingPoint
 from .steady import steady_motion_conditions, steady_linearization, split_point
 
+__all__ = ['steady_motions', 'SteadyMotionSolution', 'SteadyMotions']
+
 
 def steady_motions(system, point, solve_for, positive=(), speeds=None, coordinates=None):
     r"""

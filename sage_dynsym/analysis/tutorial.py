@@ -249,3 +249,5 @@ the stabilization is destroyed::
 **Hurwitz test on polynomials with known roots**: see
 :mod:`sage_dynsym.analysis.hurwitz`.
 """
+
+__all__ = []

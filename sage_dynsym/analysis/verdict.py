@@ -48,6 +48,8 @@ from ..symbols import exact_decimals
 from ..algebra.conditions import region_holds
 from ..algebra.regions import partition, prune_empty, drop_redundant
 
+__all__ = ['STABLE_VERDICTS', 'VERDICTS', 'StabilityVerdict', 'verdict_from_parts']
+
 #: The verdicts that count as stable (the stable set of a verdict that
 #: depends on the parameters is the union of their regions).
 STABLE_VERDICTS = ('asymptotically stable', 'stable', 'stable in first approximation')
@@ -87,6 +89,27 @@ class StabilityVerdict(SageObject):
         stable if [a]: the potential energy has a minimum
         sage: kelvin_chetaev(matrix([[1]]), matrix([[0]]), matrix([[0]]), matrix([[-1]]))
         unstable: the potential energy has an odd degree of instability (1): ...
+
+    TESTS:
+
+    The cases of a verdict partition its space::
+
+        sage: up = StabilityVerdict('unstable', 'a real positive root', region=[[a < 0]])
+        sage: v = StabilityVerdict('depends on the parameters', 'see cases()',
+        ....:                      cases=[StabilityVerdict('stable', 'K > 0', region=[[a > 0]]), up])
+        sage: TestSuite(v).run()
+        sage: k, p = var('k p')
+        sage: w = kelvin_chetaev(identity_matrix(2), zero_matrix(2), zero_matrix(2),
+        ....:                    diagonal_matrix([1, k]), matrix([[0, p], [-p, 0]]))
+        sage: TestSuite(w).run()
+        sage: v == w, v == loads(dumps(v)), v.cases()[1] == up
+        (False, True, True)
+        sage: overlap = StabilityVerdict('depends on the parameters', 'wrong',
+        ....:                            cases=[StabilityVerdict('stable', '', region=[[a > -1]]), up])
+        sage: overlap._test_cases()
+        Traceback (most recent call last):
+        ...
+        AssertionError: at {a: -64/71} the cases ['stable', 'unstable'] hold
     """
 
     def __init__(self, verdict, reason, conditions=(), cases=(), method=None,
@@ -99,6 +122,21 @@ class StabilityVerdict(SageObject):
         self._region = region
         self._boundaries = dict(boundaries) if boundaries else {}
         self._positive = list(positive)
+
+    def _data(self):
+        # the symbolic parts by their printed form: ``==`` of two relations
+        # is a relation, not a truth value
+        return (self._verdict, self._reason, self._method, str(self._conditions),
+                str(self._region), str(sorted(self._boundaries.items())), str(self._positive))
+
+    def __eq__(self, other):
+        r"""Verdicts are values: equal when their verdicts, reasons, methods,
+        conditions, regions, boundaries, signs and cases are (see the class)."""
+        return (isinstance(other, StabilityVerdict) and self._data() == other._data()
+                and self._cases == other._cases)
+
+    def __hash__(self):
+        return hash((self._verdict, self._reason))
 
     def method(self):
         r"""The method that decided the verdict (``None`` if not recorded).
@@ -253,7 +291,7 @@ class StabilityVerdict(SageObject):
             except (TypeError, ValueError) as err:
                 raise AnalysisError(f"cannot evaluate the region {region} at {values} "
                                     f"({err}): give a value to every parameter",
-                                    entry="StabilityVerdict.at") from None
+                                    entry="StabilityVerdict.at") from err
             if inside:
                 return case.verdict()
         return None
@@ -339,6 +377,35 @@ class StabilityVerdict(SageObject):
         return [f"{indent}stability depends on the parameters:"] + \
             [f"{indent}  {case.verdict()}{method(case)}{where(case)}: {case.reason()}"
              for case in self.cases()]
+
+    def _test_cases(self, **options):
+        r"""The cases partition the parameter space: each is one verdict,
+        and at sample points (random rationals, off the boundaries almost
+        surely; the symbols declared positive sampled positive) exactly one
+        region holds.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        import random
+        from sage.rings.rational_field import QQ
+        from sage.symbolic.ring import SR
+        tester = self._tester(**options)
+        cases = self.cases()
+        for case in cases:
+            tester.assertEqual(case.cases(), [case])
+        regions = [case.region() for case in cases]
+        if len(cases) < 2 or None in regions:
+            return
+        symbols = {v for region in regions for alt in region for rel in alt
+                   for v in SR(rel).variables()}
+        positive = set(map(SR, self._positive))
+        rng = random.Random(0)
+        for _ in range(20):
+            point = {v: QQ((rng.choice([1] if v in positive else [1, -1]) * rng.randint(1, 999),
+                            rng.randint(1, 97))) for v in symbols}
+            holding = [case.verdict() for case, region in zip(cases, regions)
+                       if region_holds(region, point)]
+            tester.assertEqual(len(holding), 1, f"at {point} the cases {holding} hold")
 
     def _repr_(self):
         cond = f" if {self._conditions}" if self._conditions else ""

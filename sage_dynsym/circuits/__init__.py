@@ -5,7 +5,8 @@ analysis), description files.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 from .circuit import Circuit
 from .elements import Branch, Coupling
 from .graph import CircuitGraph

@@ -58,6 +58,8 @@ from .netlist import Netlist
 from .report import report_title, report_sections
 from .state import StateEquations
 
+__all__ = ['Circuit']
+
 
 class Circuit(StateEquations, NumericalMethods, Model):
     r"""
@@ -94,6 +96,7 @@ class Circuit(StateEquations, NumericalMethods, Model):
 
     TESTS::
 
+        sage: TestSuite(C).run()
         sage: Circuit([[1, 2, 'R1'], [2, 1, 'R1']])
         Traceback (most recent call last):
         ...

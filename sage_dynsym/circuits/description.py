@@ -40,7 +40,9 @@ EXAMPLES::
     CircuitError: bad.yaml: branches[1]: unknown element prefix 'X' in 'X1'; ...
 """
 from .circuit import Circuit
-from .format import KEYS, MAX_BRANCHES  # noqa: F401
+from .format import KEYS, MAX_BRANCHES
+
+__all__ = ['circuit_from_dict', 'circuit_to_dict', 'KEYS', 'MAX_BRANCHES']
 
 
 def circuit_from_dict(data, source=None):

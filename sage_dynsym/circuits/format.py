@@ -34,6 +34,9 @@ from ..errors import CircuitError, DescriptionError, DynSymError, brief
 from ..io.fields import declared_names, title, MAX_PARAMETERS
 from ..symbols import check_name, velocity, acceleration, momentum
 
+__all__ = ['KEYS', 'MAX_BRANCHES', 'read_circuit', 'circuit_mapping', 'circuit_results',
+           'result_symbols']
+
 #: The keys of a circuit description.
 KEYS = {'kind', 'name', 'branches', 'parameters', 'positive', 'results'}
 
@@ -102,7 +105,7 @@ def read_circuit(cls, data, source=None):
     try:
         return cls(branches, name=name, parameters=parameters, positive=positive)
     except DynSymError as err:
-        raise err.with_context(source=source) from None
+        raise err.with_context(source=source) from err
 
 
 

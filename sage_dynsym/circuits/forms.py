@@ -18,6 +18,8 @@ EXAMPLES::
 """
 from ..dynamics.derivations import Derivation, lagrangian_forms, lagrange_derivation
 
+__all__ = ['circuit_forms', 'brayton_moser_derivation']
+
 
 def circuit_forms(circuit):
     r"""

@@ -29,6 +29,8 @@ from sage.symbolic.ring import SR
 from ..dynamics.model import linearization_point
 from ..errors import CircuitError
 
+__all__ = ['free_linear_system']
+
 
 def free_linear_system(circuit, at=None):
     r"""

@@ -24,6 +24,8 @@ from sage.graphs.graph import Graph
 
 from ..errors import CircuitError
 
+__all__ = ['UnionFind', 'node_key', 'capacitor_order', 'CircuitGraph', 'RootedTree']
+
 
 class UnionFind:
     r"""
@@ -296,7 +298,7 @@ class CircuitGraph:
             loop = self.cycle_through(sources[:sources.index(err.args[0])], err.args[0])
             raise CircuitError(f"the voltage sources {', '.join(loop)} form a loop: "
                                "Kirchhoff's voltage law cannot hold for arbitrary "
-                               "source values") from None
+                               "source values") from err
 
     def cycle_through(self, positions, pos):
         r"""

@@ -51,6 +51,8 @@ from ..symbols import velocity, t
 from .elements.windings import winding_groups, winding_matrix
 from .graph import node_key
 
+__all__ = ['source_integral', 'LoopAnalysis', 'NodeAnalysis']
+
 
 def _tree_rank(branch):
     # the loop method's spanning tree prefers voltage sources, then
@@ -62,6 +64,7 @@ def _tree_rank(branch):
 def _not_current_source(branch):
     # a current source is never a tree branch of the loop method
     return branch.fixed_current() is None
+
 
 
 def source_integral(value):

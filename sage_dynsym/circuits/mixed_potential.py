@@ -138,6 +138,8 @@ from .elements.kinds import state_symbols
 from .elements.windings import winding_matrix
 from .graph import capacitor_order
 
+__all__ = ['MixedPotential']
+
 
 class MixedPotential:
     r"""
@@ -191,7 +193,7 @@ class MixedPotential:
             loop = cg.cycle_through(tc[:tc.index(err.args[0])], err.args[0])
             raise CircuitError("the circuit is not complete: the capacitors and "
                                f"voltage sources {', '.join(loop)} form a loop; "
-                               "the capacitor voltages are not independent") from None
+                               "the capacitor voltages are not independent") from err
         self._tc = frozenset(tc)
         omega_u, omega_i, tree = [], [], list(tc)
         for p, b in enumerate(br):
@@ -219,7 +221,7 @@ class MixedPotential:
                 f"{', '.join(loop)} of resistors, capacitors and voltage sources; their "
                 "voltages are not fixed by the capacitors and their currents are not "
                 "fixed by the inductors",
-                entry=f"branches[{br[err.args[0]].index}]") from None
+                entry=f"branches[{br[err.args[0]].index}]") from err
         parts = cg.graph.connected_components(sort=False)
         if len(tree) != len(cg.nodes) - len(parts):
             # a part of the graph that K does not span: its piece around its

@@ -24,6 +24,8 @@ from ..symbols import CIRCUIT_VARIABLES, exact_decimals
 from .elements import parse_entries, is_coupling_entry
 from .elements.windings import check_couplings
 
+__all__ = ['Netlist']
+
 
 class Netlist:
     r"""

@@ -132,6 +132,8 @@ from .elements.kinds import ELEMENTS, state_symbols
 from .elements.windings import winding_matrix
 from .graph import UnionFind, capacitor_order
 
+__all__ = ['TREE_ORDER', 'NOT_EXPLICIT', 'NotExplicitError', 'coefficient_ring', 'NodalAnalysis']
+
 #: the order in which the normal tree takes the branches (by kind; see
 #: :attr:`~sage_dynsym.circuits.elements.kinds.Branch.tree_rank`)
 TREE_ORDER = tuple(sorted(ELEMENTS, key=lambda kind: ELEMENTS[kind].tree_rank))

@@ -28,6 +28,8 @@ from ..dynamics.lagrangian_report import (equations_lines, characteristic_estima
 from ..dynamics.reporting import ReportSection, formula_lines, conditions_lines
 from ..errors import CircuitError
 
+__all__ = ['circuit_estimate', 'report_title', 'report_sections', 'free_stability_lines']
+
 
 def circuit_estimate(circuit):
     r"""

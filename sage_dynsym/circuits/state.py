@@ -25,6 +25,8 @@ from ..errors import CircuitError
 from ..numerics.energy import quadratic_energy
 from .nodal import NotExplicitError
 
+__all__ = ['state_form', 'equation_labels', 'StateEquations']
+
 
 def state_form(circuit):
     r"""
@@ -54,7 +56,7 @@ def state_form(circuit):
             return circuit.nodal_analysis()
         except NotExplicitError as err:
             raise CircuitError(f"{split.message}; {err.message}",
-                               entry=split.entry or err.entry) from None
+                               entry=split.entry or err.entry) from err
 
 
 def equation_labels(lhs, states, latex=False):

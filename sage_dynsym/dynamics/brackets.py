@@ -15,6 +15,8 @@ EXAMPLES::
 
 from ..arguments import expression_argument
 
+__all__ = ['poisson_bracket']
+
 
 def poisson_bracket(f, g, coordinates, momenta):
     r"""

@@ -32,6 +32,8 @@ from sage.symbolic.ring import SR
 from ..arguments import expression_argument, expression_list
 from ..errors import ModelError, brief
 
+__all__ = ['CompactEquations', 'equations_cse']
+
 # above this many characters the representation is a summary
 _SHOWN_CHARACTERS = 10000
 

@@ -33,6 +33,9 @@ from sage.misc.latex import latex
 
 from ..errors import ModelError
 
+__all__ = ['Derivation', 'lagrangian_forms', 'lagrange_derivation', 'routh_derivation',
+           'hamilton_derivation']
+
 #: ``function`` is a pair (name, expression); ``equations`` a list of pairs
 #: ``(lhs, rhs)`` meaning ``lhs = rhs`` (``lhs`` a LaTeX string).
 Derivation = namedtuple("Derivation", ["form", "function", "equations", "note"])

@@ -72,6 +72,8 @@ from ..errors import ModelError
 from .natural_form import LAGRANGIAN_METHODS, LAGRANGIAN_HINT
 from .brackets import poisson_bracket
 
+__all__ = ['DiracConstraints']
+
 
 class DiracConstraints(SageObject):
     r"""

@@ -41,6 +41,8 @@ from ..numerics.methods import NumericalMethods
 from .brackets import poisson_bracket
 from .natural_form import Elimination, LAGRANGIAN_METHODS, LAGRANGIAN_HINT
 
+__all__ = ['Hamiltonian']
+
 
 class Hamiltonian(SageObject, NumericalMethods):
     r"""

@@ -36,6 +36,8 @@ from .natural_form import symbol_list, has_full_row_rank
 
 __all__ = ['check_constraints', 'HolonomicConstraints', 'independent_coordinates']
 
+__all__ = ['check_constraints', 'HolonomicConstraints']
+
 
 def check_constraints(constraints, coordinates, parameters=None, entry="constraints",
                       velocities=None):
@@ -120,9 +122,9 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
             if isinstance(f, (str, bytes)):
                 raise TypeError
             f = SR(f)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError) as err:
             raise ModelError(f"expected an expression f(q, t) or an equation, got {f!r}",
-                             entry=sub) from None
+                             entry=sub) from err
         if f.is_relational():
             if f.operator() is not operator.eq:
                 raise ModelError("expected an expression f meaning f = 0 or an equation, "

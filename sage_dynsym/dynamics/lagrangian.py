@@ -224,7 +224,7 @@ from .natural_form import linear_collected, is_singular, has_full_row_rank, Elim
 
 __all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations',
            'SymbolicCalculus', 'symbol_list', 'is_at_most_quadratic', 'natural_form',
-           'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
+           'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination', 'substitution']
 
 
 class Lagrangian(NumericalMethods, SageObject):

@@ -26,6 +26,11 @@ from ..algebra.size import polynomial_terms, determinant_terms, matrix_terms
 from ..errors import BudgetError, DynSymError
 from .reporting import formula_lines
 
+__all__ = ['equations_estimate', 'characteristic_estimate', 'equations_lines',
+           'constraint_forces_lines', 'routh_function', 'routh_lines', 'hamiltonian_lines',
+           'stationary_estimate', 'stationary_lines', 'check_routh_scheme',
+           'coefficient_conditions_lines']
+
 
 def equations_estimate(L):
     r"""

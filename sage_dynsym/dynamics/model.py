@@ -47,6 +47,10 @@ EXAMPLES::
 """
 from sage.structure.sage_object import SageObject
 
+from ..numerics.methods import NumericalMethods
+
+__all__ = ['Model', 'linearization_point']
+
 
 class Model(SageObject):
     r"""
@@ -160,20 +164,8 @@ class Model(SageObject):
         """
         raise NotImplementedError("<abstract method equations_record>")
 
-    def to_linearizer(self):
-        r"""
-        The same as :meth:`equations_record` (the name of earlier
-        versions, after SymPy's mechanics).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: S = load(example_path('spherical_pendulum.yaml'))
-            sage: S.to_linearizer().coordinates() == S.equations_record().coordinates()
-            True
-        """
-        return self.equations_record()
+    #: the name of earlier versions, written once for all models
+    to_linearizer = NumericalMethods.to_linearizer
 
     def characteristic_functions(self):
         r"""
@@ -227,6 +219,29 @@ class Model(SageObject):
         EXAMPLES: see the subclasses.
         """
         raise NotImplementedError("<abstract method report_sections>")
+
+    # -- invariants, run by ``TestSuite`` -----------------------------------
+
+    def _test_description(self, **options):
+        r"""The description mapping reads back to the same description, and
+        the signs declared are of parameters of the model.
+
+        EXAMPLES: run by ``TestSuite(model).run()`` (see the subclasses).
+        """
+        tester = self._tester(**options)
+        data = self.to_dict()
+        tester.assertEqual(type(self).from_dict(data).to_dict(), data)
+        tester.assertLessEqual(set(self.positive_parameters()), set(self.parameters()))
+
+    def _test_pickling(self, **options):
+        r"""Models compare by identity (two loads of a file are two
+        models), so the pickled copy is compared by its description.
+
+        EXAMPLES: run by ``TestSuite(model).run()`` (see the subclasses).
+        """
+        from sage.misc.persist import dumps, loads
+        tester = self._tester(**options)
+        tester.assertEqual(loads(dumps(self)).to_dict(), self.to_dict())
 
 
 def linearization_point(at, variables, what="state variable"):

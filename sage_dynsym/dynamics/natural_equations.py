@@ -41,6 +41,8 @@ from sage.symbolic.ring import SR
 
 from ..symbols import t
 
+__all__ = ['SymbolicCalculus', 'natural_equations']
+
 
 class SymbolicCalculus:
     r"""

@@ -28,6 +28,9 @@ from ..arguments import expression_list
 from ..errors import ModelError
 from ..algebra.trigonometric import trig_rational_simplify
 
+__all__ = ['LAGRANGIAN_METHODS', 'LAGRANGIAN_HINT', 'symbol_list', 'is_at_most_quadratic',
+           'natural_form', 'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
+
 #: How the functions taking a Lagrangian recognise one (and the calls that
 #: give one, for their messages).
 LAGRANGIAN_METHODS = ('coordinates', 'velocities', 'lagrange_equations', 'is_natural')

@@ -62,7 +62,7 @@ from ..analysis.normal_form_stability import normal_form_stability, stability_ov
 from .hamiltonian import Hamiltonian
 
 __all__ = ['birkhoff_normal_form', 'nonlinear_stability', 'BirkhoffNormalForm',
-           'polynomial_hamiltonian', 'exceptional_values']
+           'polynomial_hamiltonian', 'exceptional_values', 'taylor_polynomial']
 
 
 def _hamiltonian(model):

@@ -57,6 +57,8 @@ from ..symbols import time_derivative
 from ..algebra.trig_linear import TrigFractionField
 from .natural_form import is_singular, LAGRANGIAN_METHODS, LAGRANGIAN_HINT
 
+__all__ = ['ReducedEquations']
+
 
 class ReducedEquations(SageObject):
     r"""

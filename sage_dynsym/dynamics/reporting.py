@@ -73,6 +73,10 @@ from sage.symbolic.ring import SR
 
 from ..errors import BudgetError, DynSymError
 
+__all__ = ['SUMMARY_LENGTH', 'LINE_LENGTH', 'FULL_FORM', 'LEADING_TERMS', 'TERM_LENGTH',
+           'ReportSection', 'ReportContext', 'Formula', 'summary', 'formula_lines', 'render',
+           'conditions_lines', 'clip', 'report_blocks', 'run_sections']
+
 #: A formula whose text is longer than this many characters (about five
 #: lines of a terminal) is summarised in a readable report.
 SUMMARY_LENGTH = 500

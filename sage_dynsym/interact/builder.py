@@ -43,6 +43,9 @@ import ipywidgets as widgets
 from ..description import kinds
 from ..errors import DescriptionError, DynSymError
 
+__all__ = ['split_list', 'mechanical_description', 'circuit_description', 'model_from_description',
+           'SystemBuilder']
+
 
 def split_list(text, separators=","):
     r"""
@@ -490,7 +493,7 @@ class SystemBuilder:
         try:
             return self._panels[self.kind.value].description()
         except DynSymError as err:
-            raise self._as_seen(err) from None
+            raise self._as_seen(err) from err
 
     def _mechanical_description(self):
         values = [{k: w.value for k, w in fields.items()} for fields in self._body_fields]
@@ -534,7 +537,7 @@ class SystemBuilder:
         try:
             return model_from_description(self.description())
         except DynSymError as err:
-            raise self._as_seen(err) from None
+            raise self._as_seen(err) from err
 
     def _as_seen(self, err):
         # the loader's entry as the page shows it, where the kind's fields

@@ -30,9 +30,11 @@ EXAMPLES::
 """
 from sage.misc.latex import latex
 
-from ..dynamics.derivations import Derivation, lagrangian_forms  # noqa: F401 (Derivation's earlier home)
+from ..dynamics.derivations import Derivation, lagrangian_forms  # Derivation: its earlier home
 from ..dynamics.model import Model
 from ..errors import ModelError
+
+__all__ = ['equation_forms', 'available_forms', 'derive', 'derivation_latex', 'Derivation']
 
 
 def equation_forms(model):

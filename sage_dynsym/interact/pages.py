@@ -35,6 +35,8 @@ EXAMPLES::
 from ..dynamics.model import Model
 from ..errors import DynSymError
 
+__all__ = ['equations_explorer', 'system_builder']
+
 
 def equations_explorer(model):
     r"""

@@ -69,6 +69,8 @@ from ..algebra.solving import AlgebraicSolution
 from ..analysis.stationary import StationarySolution
 from ..errors import AnalysisError
 
+__all__ = ['StabilityStudy']
+
 
 class StabilityStudy(SageObject):
     r"""

@@ -33,6 +33,10 @@ from sage.rings.rational_field import QQ
 from ..errors import ExpressionError, brief
 from ..symbols import t, ALLOWED_FUNCTIONS, CONSTANTS
 
+__all__ = ['MAX_EXPRESSION_LENGTH', 'MAX_NESTING_DEPTH', 'MAX_INTEGER_DIGITS',
+           'MAX_DECIMAL_EXPONENT', 'MAX_EXPONENT', 'MAX_POWER_TOWER', 'MAX_NUMBER_DIGITS',
+           'MAX_DEGREE', 'check_expression_text', 'ExpressionParser']
+
 def _exact_decimal(text):
     return QQ(Fraction(text))
 
@@ -501,7 +505,7 @@ class ExpressionParser:
             try:
                 self._symbols[str(s)] = SR.var(str(s))
             except ValueError as err:
-                raise ExpressionError(f"{str(s)!r} cannot be a symbol name ({err})") from None
+                raise ExpressionError(f"{str(s)!r} cannot be a symbol name ({err})") from err
         self._symbols.setdefault('t', t)
         self._functions = dict(ALLOWED_FUNCTIONS)
         for name in functions:
@@ -590,9 +594,9 @@ class ExpressionParser:
             _check_finite(result, text)
             return result
         except ExpressionError as err:
-            raise err.with_context(entry=entry) from None
+            raise err.with_context(entry=entry) from err
         except Exception as err:  # the parser raises SyntaxError/TypeError/ValueError/...
             raise ExpressionError(f"malformed expression {_quote(text)}: {err}",
-                                  entry=entry) from None
+                                  entry=entry) from err
         finally:
             self._current = None

@@ -18,6 +18,9 @@ EXAMPLES::
 from ..errors import DescriptionError, brief
 from ..symbols import check_name
 
+__all__ = ['MAX_PARAMETERS', 'MAX_RESULT_LENGTH', 'MAX_TITLE_LENGTH', 'check_keys',
+           'declared_names', 'declared_positive', 'title', 'text']
+
 #: Most parameters of a description (a 1,000-body model with a mass, a
 #: mass centre, six moments of inertia and a length per body needs 10,000).
 MAX_PARAMETERS = 10_000

@@ -20,6 +20,8 @@ import tempfile
 
 from ..errors import DescriptionError, brief
 
+__all__ = ['write_atomically']
+
 
 def write_atomically(path, write, binary=False):
     r"""
@@ -82,7 +84,7 @@ def write_atomically(path, write, binary=False):
         reason = err.strerror if isinstance(err, OSError) and err.strerror else err
         name = str(path)
         raise DescriptionError(f"cannot write the file: {reason}",
-                               source=name if name.isprintable() else brief(name)) from None
+                               source=name if name.isprintable() else brief(name)) from err
     try:
         with (os.fdopen(fd, 'wb') if binary else os.fdopen(fd, 'w', encoding='utf-8')) as stream:
             write(stream)
@@ -103,7 +105,7 @@ def write_atomically(path, write, binary=False):
             pass
         if isinstance(err, OSError):
             raise DescriptionError(f"cannot write the file: {err.strerror or err}",
-                                   source=str(path)) from None
+                                   source=str(path)) from err
         raise
     try:                        # make the new directory entry durable
         directory = os.open(folder, os.O_RDONLY)

@@ -25,6 +25,8 @@ import yaml
 from ..errors import DescriptionError, brief
 from .expressions import MAX_INTEGER_DIGITS
 
+__all__ = ['MAX_FILE_BYTES', 'MAX_YAML_DEPTH', 'MAX_YAML_ALIASES', 'MAX_YAML_VALUES', 'read_yaml']
+
 #: Largest description file read (bytes).
 MAX_FILE_BYTES = 32 * 2**20
 #: Deepest nesting of YAML lists and mappings.
@@ -214,9 +216,9 @@ def read_yaml(path):
             raw = stream.read(MAX_FILE_BYTES + 1)
     except OSError as err:
         raise DescriptionError(f"cannot read the file: {err.strerror or err}",
-                               source=source) from None
+                               source=source) from err
     except (TypeError, ValueError) as err:
-        raise DescriptionError(f"cannot read the file: {err}", source=source) from None
+        raise DescriptionError(f"cannot read the file: {err}", source=source) from err
     if len(raw) > MAX_FILE_BYTES:
         raise DescriptionError(f"the file is larger than {MAX_FILE_BYTES} bytes "
                                "(MAX_FILE_BYTES)", source=source)
@@ -225,7 +227,7 @@ def read_yaml(path):
     except UnicodeDecodeError as err:
         raise DescriptionError(f"the file is not UTF-8 text (invalid byte "
                                f"0x{raw[err.start]:02x} at byte {err.start})",
-                               source=source) from None
+                               source=source) from err
     loader = None
     try:
         loader = _Loader(text)
@@ -234,10 +236,10 @@ def read_yaml(path):
         if err.problem and 'python/' in err.problem:
             raise DescriptionError("the file contains a YAML tag that would construct a Python "
                                    f"object ({err.problem}); description files may only hold "
-                                   "plain data", source=source) from None
-        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from None
+                                   "plain data", source=source) from err
+        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from err
     except yaml.YAMLError as err:
-        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from None
+        raise DescriptionError(f"not valid YAML: {_yaml_problem(err)}", source=source) from err
     finally:
         if loader is not None:
             loader.dispose()

@@ -11,9 +11,14 @@ rigid bodies.
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 from .algebras import PoissonStructure, lie_algebra, poisson_structure
 from .integrals import IntegralJump, casimirs, polynomial_integrals
 from .system import LiePoissonSystem
 from .builders import euler_poisson, kirchhoff
 from .description import lie_poisson_from_dict, lie_poisson_to_dict, lie_report, LIE_SECTIONS
+
+__all__ = ['PoissonStructure', 'lie_algebra', 'poisson_structure', 'IntegralJump', 'casimirs',
+           'polynomial_integrals', 'LiePoissonSystem', 'euler_poisson', 'kirchhoff',
+           'lie_poisson_from_dict', 'lie_poisson_to_dict', 'lie_report', 'LIE_SECTIONS']

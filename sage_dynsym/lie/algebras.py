@@ -99,6 +99,9 @@ from ..arguments import expression_argument
 from ..errors import AnalysisError, ModelError, brief
 from ..algebra.polynomial_spaces import PolynomialContext, monomial_expression
 
+__all__ = ['NAMED', 'algebra_name', 'default_names', 'PoissonStructure', 'collect', 'lie_algebra',
+           'structure_constants_matrix', 'poisson_structure']
+
 #: The named algebras: name -> (description, block names, block sizes).
 NAMED = {
     'so3': ("so(3)", ('M',), (3,)),
@@ -194,7 +197,7 @@ def _symbols(names):
             s = SR(v) if not isinstance(v, str) else SR.var(v)
         except (TypeError, ValueError) as err:
             raise ModelError(f"expected a symbol name, got {brief(v)} ({err})",
-                             entry=f"variables[{i}]") from None
+                             entry=f"variables[{i}]") from err
         if not s.is_symbol():
             raise ModelError(f"expected a symbolic variable, got {s}", entry=f"variables[{i}]")
         out.append(s)
@@ -290,9 +293,9 @@ class PoissonStructure(SageObject):
         n = len(self._variables)
         try:
             rows = [list(r) for r in poisson_matrix]
-        except TypeError:
+        except TypeError as cause:
             raise ModelError(f"expected a Poisson matrix (a list of rows), got "
-                             f"{brief(poisson_matrix)}", entry="algebra") from None
+                             f"{brief(poisson_matrix)}", entry="algebra") from cause
         if len(rows) != n or any(len(r) != n for r in rows):
             raise ModelError(f"expected a square {n}x{n} matrix (one row and column per "
                              f"variable {', '.join(map(str, self._variables))}), got "
@@ -302,7 +305,7 @@ class PoissonStructure(SageObject):
             self._J = matrix(SR, n, n, [SR(c) for r in rows for c in r])
         except (TypeError, ValueError) as err:
             raise ModelError(f"the entries must be expressions: {err}", entry="algebra") \
-                from None
+                from err
         self._J.set_immutable()
         self._name = name
         names = set(map(str, self._variables))
@@ -649,9 +652,9 @@ def structure_constants_matrix(constants, variables):
     else:
         try:
             c = [[list(row) for row in layer] for layer in constants]
-        except TypeError:
+        except TypeError as err:
             raise ModelError(f"expected structure constants c[i][j][k] or a dict, got "
-                             f"{brief(constants)}", entry="algebra") from None
+                             f"{brief(constants)}", entry="algebra") from err
         if len(c) != n or any(len(r) != n or any(len(v) != n for v in r) for r in c):
             raise ModelError(f"expected {n}x{n}x{n} structure constants c[i][j][k], one "
                              "index per variable", entry="algebra")

@@ -53,6 +53,8 @@ from ..errors import ModelError, brief
 from .algebras import collect
 from .system import LiePoissonSystem
 
+__all__ = ['euler_poisson', 'kirchhoff']
+
 
 def _inverse(A, entry):
     r"""
@@ -268,9 +270,9 @@ def kirchhoff(body=None, added_masses=None, inertia=None, mass=None, mass_center
         I = matrix(SR, inertia)
         if I.dimensions() != (3, 3):
             raise ValueError
-    except (TypeError, ValueError):
+    except (TypeError, ValueError) as err:
         raise ModelError(f"expected a 3x3 matrix, got {brief(inertia)}", entry="inertia") \
-            from None
+            from err
     m = SR(mass)
     rc = vector(SR, mass_center if mass_center is not None else (0, 0, 0))
     cross = m * _cross_matrix(rc)

@@ -16,9 +16,12 @@ EXAMPLES::
     sage: lie_poisson_to_dict(S)['hamiltonian']
     'M1^2 + M3^2'
 """
-from .format import LIE_POISSON_KEYS, MAX_VARIABLES, MAX_PARAMETERS  # noqa: F401
-from .report import LIE_SECTIONS, lie_report, lie_estimates  # noqa: F401
+from .format import LIE_POISSON_KEYS, MAX_VARIABLES, MAX_PARAMETERS
+from .report import LIE_SECTIONS, lie_report, lie_estimates
 from .system import LiePoissonSystem
+
+__all__ = ['lie_poisson_from_dict', 'lie_poisson_to_dict', 'LIE_POISSON_KEYS', 'MAX_VARIABLES',
+           'MAX_PARAMETERS', 'LIE_SECTIONS', 'lie_report', 'lie_estimates']
 
 
 def lie_poisson_from_dict(data, source=None):

@@ -60,6 +60,9 @@ from ..io.expressions import ExpressionParser
 from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
 
+__all__ = ['LIE_POISSON_KEYS', 'MAX_VARIABLES', 'MAX_PARAMETERS', 'read_lie_poisson_system',
+           'LiePoissonFormat']
+
 #: The keys of a ``kind: lie_poisson`` description.
 LIE_POISSON_KEYS = {'kind', 'name', 'algebra', 'variables', 'parameters', 'positive',
                     'hamiltonian', 'results'}
@@ -151,7 +154,9 @@ def read_lie_poisson_system(cls, data, source=None):
     try:
         return _from_dict(cls, data, source)
     except DynSymError as err:
-        raise err if err.source else err.with_context(source=source) from None
+        if err.source:
+            raise
+        raise err.with_context(source=source) from err
 
 
 def _from_dict(cls, data, source):

@@ -67,6 +67,9 @@ from ..algebra.polynomial_spaces import (LinearProblem, MAX_MINORS, Reducer, deg
                                          products, rank_modulo, generic_point, minors,
                                          schur_after_constant_pivots)
 
+__all__ = ['MAX_LEVELS', 'MAX_DEGREE', 'MAX_BASIS', 'basis_size', 'check_degree', 'casimirs',
+           'IntegralJump', 'polynomial_integrals']
+
 #: How deep the search for families inside families goes.
 MAX_LEVELS = 3
 #: Largest degree searched (``max_degree=`` raises it).

@@ -49,6 +49,8 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..algebra.polynomial_spaces import LinearProblem
 
+__all__ = ['InvariantLevel']
+
 
 class InvariantLevel:
     r"""

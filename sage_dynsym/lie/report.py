@@ -36,6 +36,8 @@ The budget bounds every section::
 from ..algebra.size import polynomial_terms
 from ..dynamics.reporting import ReportSection, formula_lines, run_sections
 
+__all__ = ['LIE_SECTIONS', 'report_title', 'report_sections', 'lie_report', 'lie_estimates']
+
 #: What each estimate of :func:`lie_estimates` counts, by section.
 _WHAT = {
     'equations': "the Lie-Poisson equations (terms of J_ij times those of dH/dx_j)",

@@ -86,6 +86,8 @@ from .report import report_title, report_sections
 from .integrals import (casimirs as _casimirs, polynomial_integrals as _polynomial_integrals,
                         MAX_DEGREE, MAX_BASIS, basis_size, check_degree)
 
+__all__ = ['LiePoissonSystem']
+
 #: Names that look like coordinates: a Hamiltonian using one that is not a
 #: variable of the system is refused unless it is declared a parameter.
 _COORDINATE_LIKE = re.compile(r'(M|gamma|p|P|L)\d+')
@@ -131,7 +133,7 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
         [ 0 -y]
         [ y  0], [-x*y, y^2]
         )
-        sage: TestSuite(S).run(skip=['_test_pickling'])
+        sage: TestSuite(S).run()
 
     TESTS::
 
@@ -168,7 +170,7 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             self._H = SR(hamiltonian)
         except (TypeError, ValueError) as err:
             raise ModelError(f"expected an expression, got {brief(hamiltonian)} ({err})",
-                             entry="hamiltonian") from None
+                             entry="hamiltonian") from err
         self._name = name
         names = {str(v) for v in x}
         where = (f"{self._structure.name()} ({', '.join(_names_of(x))})"
@@ -402,6 +404,13 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
         """
         degree = check_degree(degree, "casimirs", len(self.variables()), max_degree, max_basis)
         return list(self._casimirs(degree))
+
+    def _test_casimirs(self, **options):
+        r"""Run by ``TestSuite``: Casimirs (degree <= 2) commute with all, are integrals."""
+        tester = self._tester(**options)
+        for C in self.casimirs(degree=2):
+            brackets = [SR(self.poisson_bracket(C, x)) for x in self.variables()]
+            tester.assertTrue(all(b.is_zero() for b in brackets) and self.is_integral(C))
 
     @cached_method
     def _casimirs(self, degree):

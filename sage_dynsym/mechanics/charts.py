@@ -35,6 +35,8 @@ from ..arguments import model_argument
 from ..analysis.charts import ConfigurationChart, default_chart, product_chart
 from .frames import rotation_matrix
 
+__all__ = ['EulerAngles', 'euler_angles']
+
 
 class EulerAngles(ConfigurationChart):
     r"""

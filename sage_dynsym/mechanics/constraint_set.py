@@ -33,6 +33,8 @@ from ..dynamics.nonholonomic import check_velocity_constraints
 from .loads import body_index
 from .rolling import RollingDisk, rolling_contact
 
+__all__ = ['ConstraintSet']
+
 
 class ConstraintSet(SageObject):
     r"""

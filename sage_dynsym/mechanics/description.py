@@ -17,10 +17,15 @@ EXAMPLES::
     sage: mechanical_system_to_dict(S)['coordinates'], MAX_BODIES
     (['x'], 1000)
 """
-from .format import (MECHANICAL_KEYS, ROLLING_KEYS, OPERATING_POINT_KEYS,  # noqa: F401
+from .format import (MECHANICAL_KEYS, ROLLING_KEYS, OPERATING_POINT_KEYS,
                      REQUIRED_MECHANICAL, BODY_KEYS, FIELD_KEYS, NEWTONIAN_KEYS, LOAD_KEYS,
                      MAX_COORDINATES, MAX_BODIES, MAX_TERMS)
 from .system import MechanicalSystem
+
+__all__ = ['mechanical_system_from_dict', 'mechanical_system_to_dict', 'MECHANICAL_KEYS',
+           'ROLLING_KEYS', 'OPERATING_POINT_KEYS', 'REQUIRED_MECHANICAL', 'BODY_KEYS',
+           'FIELD_KEYS', 'NEWTONIAN_KEYS', 'LOAD_KEYS', 'MAX_COORDINATES', 'MAX_BODIES',
+           'MAX_TERMS']
 
 
 def mechanical_system_from_dict(data, source=None):

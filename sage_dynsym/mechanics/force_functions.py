@@ -27,6 +27,9 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from .rigid_body import as_vector3, as_scalar
 
+__all__ = ['UniformGravity', 'NewtonianField', 'split_force_terms', 'UNIT_TOLERANCE',
+           'check_force_function', 'force_term_data', 'force_term_to_dict']
+
 
 class UniformGravity(SageObject):
     r"""
@@ -410,9 +413,9 @@ def check_force_function(force_function, coordinates, entry="force_function"):
         forbidden[acceleration(q)] = f"the acceleration {acceleration(q)}"
     try:
         parts = force_term_data(force_function)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError) as err:
         raise ModelError("expected a force field or an expression U(q, t), got "
-                         f"{force_function!r}", entry=entry) from None
+                         f"{force_function!r}", entry=entry) from err
     for part in parts:
         for v in SR(part).variables():
             if v in forbidden:

@@ -77,6 +77,10 @@ from ..symbols import velocity, acceleration, momentum, check_mechanical_names
 from .force_functions import force_term_to_dict
 from .operating_points import operating_point_to_dict
 
+__all__ = ['MECHANICAL_KEYS', 'ROLLING_KEYS', 'OPERATING_POINT_KEYS', 'REQUIRED_MECHANICAL',
+           'BODY_KEYS', 'FIELD_KEYS', 'NEWTONIAN_KEYS', 'LOAD_KEYS', 'MAX_COORDINATES',
+           'MAX_BODIES', 'MAX_TERMS', 'read_mechanical_system', 'MechanicalFormat']
+
 MECHANICAL_KEYS = {'kind', 'name', 'parameters', 'positive', 'coordinates', 'force_function',
                    'dissipation', 'forces', 'loads', 'constraints', 'nonholonomic', 'rolling',
                    'operating_points', 'bodies', 'results'}
@@ -294,7 +298,7 @@ def read_mechanical_system(cls, data, source=None):
                    nonholonomic=nonholonomic, rolling=rolling,
                    operating_points=points)
     except DynSymError as err:
-        raise err.with_context(source=source) from None
+        raise err.with_context(source=source) from err
 
 
 def _body(data, index, parsers, source):
@@ -352,7 +356,7 @@ def _body(data, index, parsers, source):
     except ModelError as err:
         # the body reports "<name>.<field>"; the file reader speaks of bodies[i]
         field = err.entry.split('.', 1)[1] if err.entry and '.' in err.entry else None
-        raise type(err)(err.message, entry=f"{entry}.{field}" if field else entry) from None
+        raise type(err)(err.message, entry=f"{entry}.{field}" if field else entry) from err
 
 
 def _entries(data, key):
@@ -501,7 +505,7 @@ def _force_term(data, parser, where):
     try:
         return NewtonianField(nu, r, e)
     except ModelError as err:       # its entry is newtonian.<key>
-        raise err.with_context(entry=where) from None
+        raise err.with_context(entry=where) from err
 
 
 class MechanicalFormat:

@@ -40,6 +40,8 @@ from sage.symbolic.ring import SR
 from ..algebra.trigonometric import symbolic_trig
 from ..numerics.spatial import held_product  # noqa: F401 (the product of its users here)
 
+__all__ = ['rotation_matrix', 'cross', 'held_product', 'FrameTree', 'FrameVector']
+
 
 def rotation_matrix(axis, angle):
     r"""

@@ -35,6 +35,8 @@ from ..numerics import spatial
 from ..symbols import time_derivative, t
 from .frames import FrameTree, FrameVector, cross
 
+__all__ = ['Kinematics']
+
 
 class Kinematics:
     r"""

@@ -64,6 +64,8 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from .rigid_body import RigidBody, as_vector3
 
+__all__ = ['LOAD_KEYS', 'Load', 'load_list', 'body_index']
+
 #: The keys of a load (in a description file or a dictionary).
 LOAD_KEYS = ('body', 'point', 'force', 'torque', 'axes')
 
@@ -169,7 +171,7 @@ class Load(SageObject):
         try:
             return cls(**value)
         except ModelError as err:
-            raise type(err)(err.message, entry=f"{entry}.{err.entry}") from None
+            raise type(err)(err.message, entry=f"{entry}.{err.entry}") from err
 
     def _repr_(self):
         parts = []

@@ -31,6 +31,9 @@ from ..errors import ModelError
 from ..analysis.operating_point import OperatingPoint
 from ..symbols import t
 
+__all__ = ['POINT_KEYS', 'checked_operating_points', 'operating_point_to_dict',
+           'SystemOperatingPoints']
+
 #: The keys of one operating point.
 POINT_KEYS = ('at', 'coordinates', 'velocities')
 
@@ -120,9 +123,9 @@ def checked_operating_points(points, coordinates, velocities, parameters=None):
                 sub = f"{entry}.{key}.{symbol}"
                 try:
                     value = SR(value)
-                except (TypeError, ValueError):
+                except (TypeError, ValueError) as err:
                     raise ModelError(f"expected an expression, got {value!r}",
-                                     entry=sub) from None
+                                     entry=sub) from err
                 if any(v in dynamic for v in value.variables()):
                     raise ModelError(f"the value {value} depends on the coordinates or "
                                      "velocities; give it in the parameters", entry=sub)

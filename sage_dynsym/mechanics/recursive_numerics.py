@@ -42,6 +42,8 @@ from ..numerics.recursive import RecursiveForm, unsupported
 from .force_functions import split_force_terms
 from .loads import body_index
 
+__all__ = ['ALGORITHMS', 'body_tree', 'numerical_form']
+
 _LOG = logging.getLogger('sage_dynsym.numerics')
 ALGORITHMS = ('auto', 'recursive', 'equations')
 

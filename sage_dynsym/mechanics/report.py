@@ -32,6 +32,9 @@ from ..dynamics.reporting import ReportSection, formula_lines, conditions_lines
 from ..errors import BudgetError
 from .force_functions import force_term_data
 
+__all__ = ['lagrangian_estimate', 'report_title', 'report_sections', 'operating_point_lines',
+           'stability_condition_lines']
+
 
 def lagrangian_estimate(system):
     r"""

@@ -43,6 +43,8 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 
+__all__ = ['as_vector3', 'as_scalar', 'RigidBody']
+
 
 def as_vector3(value, entry):
     r"""
@@ -63,8 +65,8 @@ def as_vector3(value, entry):
         return None
     try:
         components = list(value)
-    except TypeError:
-        raise ModelError(f"expected a list of 3 components, got {value!r}", entry=entry) from None
+    except TypeError as err:
+        raise ModelError(f"expected a list of 3 components, got {value!r}", entry=entry) from err
     if len(components) != 3:
         raise ModelError(f"expected a list of 3 components, got {len(components)}", entry=entry)
     return tuple(as_scalar(c, f"{entry}[{i}]") for i, c in enumerate(components))
@@ -83,8 +85,8 @@ def as_scalar(value, entry):
     """
     try:
         return SR(value)
-    except (TypeError, ValueError):
-        raise ModelError(f"expected a symbolic expression, got {value!r}", entry=entry) from None
+    except (TypeError, ValueError) as err:
+        raise ModelError(f"expected a symbolic expression, got {value!r}", entry=entry) from err
 
 
 _RIF = RealIntervalField(128)
@@ -278,8 +280,8 @@ class RigidBody(SageObject):
             return matrix(SR, 3, 3)
         try:
             tensor = matrix(SR, inertia)
-        except (TypeError, ValueError):
-            raise ModelError("expected a symmetric 3x3 matrix", entry=entry) from None
+        except (TypeError, ValueError) as err:
+            raise ModelError("expected a symmetric 3x3 matrix", entry=entry) from err
         if tensor.dimensions() != (3, 3):
             raise ModelError("expected a symmetric 3x3 matrix", entry=entry)
         for i in range(3):

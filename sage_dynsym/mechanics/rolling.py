@@ -65,6 +65,8 @@ from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial, TrigP
 from .frames import cross
 from .rigid_body import RigidBody, as_scalar
 
+__all__ = ['RollingDisk', 'RollingContact', 'rolling_contact']
+
 
 class RollingDisk(SageObject):
     r"""

@@ -48,6 +48,7 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
     sage: bool(2*L.expr() == m*l^2*(sin(theta)^2*var('dpsi')^2 + var('dtheta')^2)
     ....:                    - 2*m*g*l*cos(theta))
     True
+    sage: TestSuite(S).run()
 
 TESTS:
 

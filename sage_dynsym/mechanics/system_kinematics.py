@@ -40,6 +40,8 @@ from .rigid_body import RigidBody
 
 __all__ = ['SystemKinematics', 'sorted_by_parents']
 
+__all__ = ['SystemKinematics']
+
 
 def sorted_by_parents(bodies):
     r"""

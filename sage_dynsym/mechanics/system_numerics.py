@@ -24,6 +24,8 @@ from ..numerics.simulate import simulate as _simulate
 from ..numerics.values import check_model_values
 from .recursive_numerics import numerical_form
 
+__all__ = ['MechanicalNumerics']
+
 
 class MechanicalNumerics:
     r"""

@@ -9,7 +9,8 @@ EXAMPLES::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 from .codegen import generate_code, GeneratedCode
 from .energy import quadratic_energy
 from .events import Event

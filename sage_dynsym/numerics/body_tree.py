@@ -35,6 +35,8 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..symbols import velocity, t as _t
 
+__all__ = ['TreeBody', 'TreeLoad', 'BodyTree']
+
 
 def _vector(value, entry):
     try:

@@ -58,6 +58,8 @@ from .compiler import symbol_names
 from .expressions import write_code
 from .form import NumericalForm
 
+__all__ = ['GeneratedCode', 'generate_code']
+
 
 class GeneratedCode(str):
     r"""

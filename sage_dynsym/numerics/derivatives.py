@@ -33,6 +33,8 @@ REFERENCES:
 """
 from ..errors import AnalysisError
 
+__all__ = ['tangent']
+
 
 def _derivative_of_function(G, name, args, node):
     """The partial derivatives of the function ``name`` at ``args`` (one

@@ -21,6 +21,8 @@ from sage.matrix.constructor import matrix
 from sage.modules.free_module_element import vector
 from sage.symbolic.ring import SR
 
+__all__ = ['quadratic_energy']
+
 
 def quadratic_energy(equations):
     r"""

@@ -33,6 +33,8 @@ from sage.symbolic.ring import SR
 from ..errors import ModelError
 from ..symbols import t as _t
 
+__all__ = ['Event', 'event_functions']
+
 
 class Event(SageObject):
     r"""
@@ -71,9 +73,9 @@ class Event(SageObject):
     def __init__(self, expression, direction=0, terminal=False):
         try:
             self._expression = SR(expression)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError) as err:
             raise ModelError(f"an event is an expression, got {expression!r}",
-                             entry="events") from None
+                             entry="events") from err
         if direction not in (-1, 0, 1):
             raise ModelError(f"direction must be 1, -1 or 0, got {direction!r}", entry="events")
         if terminal is not True and terminal is not False:

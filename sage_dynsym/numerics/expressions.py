@@ -31,6 +31,10 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 
+__all__ = ['FUNCTIONS', 'C_KEYWORDS', 'MATH_H_NAMES', 'is_reserved', 'identifier', 'StructuralKey',
+           'real_constant', 'function_name', 'write_code', 'symbols_and_functions',
+           'linear_coefficients']
+
 #: Sage's function names -> (Python ``math`` name, C ``math.h`` name).
 FUNCTIONS = {
     'sin': ('math.sin', 'sin'), 'cos': ('math.cos', 'cos'), 'tan': ('math.tan', 'tan'),
@@ -172,8 +176,8 @@ def real_constant(e, entry, hint=""):
     """
     try:
         z = complex(e)
-    except (TypeError, ValueError):
-        raise AnalysisError(f"{e} has no numerical value{hint}", entry=entry) from None
+    except (TypeError, ValueError) as err:
+        raise AnalysisError(f"{e} has no numerical value{hint}", entry=entry) from err
     if z.imag != 0:
         raise AnalysisError(f"the constant {e} is not real", entry=entry)
     return float(z.real)

@@ -50,6 +50,8 @@ from ..errors import AnalysisError, ModelError, brief
 from ..symbols import t as _t
 from .expressions import linear_coefficients, symbols_and_functions
 
+__all__ = ['deferred', 'constraint_terms', 'velocity_constraint_terms', 'as_form', 'NumericalForm']
+
 
 def deferred(value):
     r"""
@@ -458,9 +460,9 @@ class NumericalForm:
             given = by_name[f.name()]
             try:
                 body = SR(given(*arguments))
-            except (TypeError, ValueError, ArithmeticError):
+            except (TypeError, ValueError, ArithmeticError) as err:
                 raise ModelError(f"the definition of {f.name()} must be a function of {arity} "
-                                 f"arguments, got {given}", entry="values") from None
+                                 f"arguments, got {given}", entry="values") from err
             definitions[f] = body.function(*arguments)
         key = tuple(str(definitions[f]) for f in functions)
         variants = self.__dict__.setdefault('_variants', {})

@@ -40,6 +40,8 @@ import math
 from ..errors import AnalysisError
 from .expressions import FUNCTIONS
 
+__all__ = ['ExpressionGraph', 'SymbolicConverter']
+
 #: Node kinds. An input's argument is (array, index); a constant's its value.
 _INPUT, _CONST, _ADD, _SUB, _MUL, _DIV, _NEG, _CALL, _POW = range(9)
 _SYMBOL = {_ADD: '+', _SUB: '-', _MUL: '*', _DIV: '/'}
@@ -277,9 +279,9 @@ class ExpressionGraph:
         if all(v is not None for v in values):
             try:
                 return self.constant(_PYTHON[name](*values))
-            except (ValueError, OverflowError):
+            except (ValueError, OverflowError) as err:
                 raise AnalysisError(f"{name}{tuple(values)} has no real value",
-                                    entry="numerical_rhs") from None
+                                    entry="numerical_rhs") from err
         return self._node(_CALL, (name,) + tuple(args))
 
     def power(self, a, exponent):

@@ -34,11 +34,20 @@ EXAMPLES::
 """
 import weakref
 
+from sage.matrix.constructor import matrix
+from sage.modules.free_module_element import vector
+from sage.symbolic.ring import SR
+
+from ..algebra.solving import vanishes
+from ..analysis.motion import FirstOrderEquations
+from ..symbols import time_derivative
 from .codegen import generate_code
 from .form import NumericalForm
 from .rhs import RightHandSide
 from .simulate import simulate as _simulate
 from .values import check_model_values
+
+__all__ = ['object_cache', 'energy_rate', 'NumericalMethods']
 
 _CACHES = {}
 
@@ -71,6 +80,38 @@ def object_cache(obj):
     return cache
 
 
+def energy_rate(record, energy):
+    r"""
+    The rate of change of ``energy`` along the equations of ``record`` (a
+    record of :mod:`~sage_dynsym.analysis.motion`), the accelerations or
+    derivatives solved from them; ``None`` for equations with constraints
+    (their multipliers are not solved here).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.methods import energy_rate
+        sage: from sage_dynsym.analysis.motion import FirstOrderEquations, SecondOrderEquations
+        sage: x, dx, ddx, y, c = var('x dx ddx y c')
+        sage: energy_rate(SecondOrderEquations([ddx + c*dx + x], [x], [dx], [ddx]), (dx^2 + x^2)/2)
+        -c*dx^2
+        sage: energy_rate(FirstOrderEquations([y, -x], [x, y], [2, 1]), (x^2 + y^2)/2)
+        -1/2*x*y
+    """
+    energy = SR(energy)
+    if isinstance(record, FirstOrderEquations):
+        x = record.variables()
+        derivatives = record.lhs_matrix().solve_right(vector(SR, record.rhs()))
+        return sum(energy.diff(v) * d for v, d in zip(x, derivatives)).expand()
+    if record.constraints() or record.velocity_constraints():
+        return None
+    equations, ddq = record.equations(), record.accelerations()
+    M = matrix(SR, [[e.diff(a) for a in ddq] for e in equations])
+    rest = vector(SR, [e.subs({a: 0 for a in ddq}) for e in equations])
+    accelerations = M.solve_right(-rest)
+    rate = time_derivative(energy, record.coordinates(), record.velocities(), ddq)
+    return rate.subs(dict(zip(ddq, accelerations))).expand()
+
+
 class NumericalMethods:
     r"""
     Mixin of the models: numerical right-hand side, simulation and code
@@ -82,6 +123,35 @@ class NumericalMethods:
     def _conserved_energy(self):
         r"""The conserved energy of the model, or ``None`` (the default)."""
         return None
+
+    def _test_energy(self, **options):
+        r"""The conserved energy, when the model has one, is an integral of
+        its equations: its rate along them vanishes identically.
+
+        EXAMPLES: run by ``TestSuite`` (see the models)::
+
+            sage: from sage_dynsym.numerics.methods import NumericalMethods
+            sage: from sage_dynsym.analysis.motion import SecondOrderEquations
+            sage: x, dx, ddx, k = var('x dx ddx k')
+            sage: class Oscillator(NumericalMethods):
+            ....:     def equations_record(self):
+            ....:         return SecondOrderEquations([ddx + k*x], [x], [dx], [ddx])
+            ....:     def _conserved_energy(self):
+            ....:         return (dx^2 + k*x^2)/2 + self.error
+            sage: Oscillator.error = 0; Oscillator()._test_energy()
+            sage: Oscillator.error = x*dx; Oscillator()._test_energy()
+            Traceback (most recent call last):
+            ...
+            AssertionError: the energy 1/2*k*x^2 + 1/2*dx^2 + dx*x changes at the rate -k*x^2 + dx^2
+        """
+        from sage.misc.sage_unittest import instance_tester
+        tester = instance_tester(self, **options)
+        energy = self._conserved_energy()
+        if energy is None:
+            return
+        rate = energy_rate(self.equations_record(), energy)
+        if rate is not None:
+            tester.assertTrue(vanishes(rate), f"the energy {energy} changes at the rate {rate}")
 
     def to_linearizer(self):
         r"""

@@ -73,6 +73,9 @@ __all__ = ['RecursiveForm', 'unsupported', 'tree_accelerations', 'graph_kinemati
            'check_backend', 'compiled_library', 'optimization', 'LARGE_GRAPH',
            'PIVOT_TOLERANCE']
 
+__all__ = ['PIVOT_TOLERANCE', 'LARGE_GRAPH', 'optimization', 'check_backend', 'compiled_library',
+           'unsupported', 'RecursiveForm']
+
 
 def graph_kinematics(tree, values=None):
     r"""

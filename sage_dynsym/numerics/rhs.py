@@ -32,6 +32,9 @@ from ..arguments import finite_real
 from .form import as_form
 from .rnea_derivatives import jacobian_graph
 
+__all__ = ['parameter_values', 'real_number', 'state_vector', 'RightHandSide', 'StateJacobian',
+           'numerical_rhs']
+
 
 def parameter_values(form, values):
     r"""
@@ -312,12 +315,12 @@ class StateJacobian(SageObject):
             x = state_vector(x, self._size)
         try:
             return self._function(t, x, self._p)
-        except ZeroDivisionError:
+        except ZeroDivisionError as err:
             chart = getattr(self._form, 'singular_chart', lambda x: None)(x)
             if chart is not None:
-                raise AnalysisError(chart, entry="jacobian") from None
+                raise AnalysisError(chart, entry="jacobian") from err
             raise AnalysisError(f"the system is singular at t = {float(t)}, state "
-                                f"{list(map(float, x))}", entry="jacobian") from None
+                                f"{list(map(float, x))}", entry="jacobian") from err
 
     def variables(self):
         r"""The state variables, in the order of the rows and columns.

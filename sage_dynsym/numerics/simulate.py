@@ -64,6 +64,8 @@ from .form import as_form
 from .rhs import RightHandSide, StateJacobian, real_number
 from .trajectory import Trajectory
 
+__all__ = ['MAX_POINTS', 'MAX_EVALUATIONS', 'CONSTRAINT_TOLERANCE', 'initial_state', 'simulate']
+
 _LOG = logging.getLogger('sage_dynsym.numerics')
 _METHODS = {'auto': 'DOP853', 'nonstiff': 'DOP853', 'stiff': 'Radau'}
 _SCIPY = ('RK45', 'RK23', 'DOP853', 'Radau', 'BDF', 'LSODA')
@@ -459,7 +461,7 @@ def simulate(equations, values, initial, t_end, points=101, t0=0, method='auto',
             # singular iteration matrix): no result, said so
             raise AnalysisError(f"the integrator {scipy_method} failed between t = "
                                 f"{times[i]:g} and t = {times[j]:g}: {err}",
-                                entry="simulate") from None
+                                entry="simulate") from err
         if not solution.success:
             reached = solution.t[-1] if len(solution.t) else times[i]
             raise AnalysisError(f"the integration stopped at t = {reached}: "

@@ -31,6 +31,8 @@ from ..errors import ModelError
 from ..symbols import t as _t
 from .form import deferred
 
+__all__ = ['State', 'Trajectory', 'CURVES_PER_PANEL', 'DENSE_POINTS']
+
 
 class State(dict):
     r"""
@@ -65,10 +67,10 @@ class State(dict):
     def __getitem__(self, key):
         try:
             return dict.__getitem__(self, self._key(key))
-        except KeyError:
+        except KeyError as err:
             # the mapping protocol's error, with what would have been found
             raise KeyError(f"{key!r} is not a state variable (they are "
-                           f"{', '.join(map(str, self))})") from None
+                           f"{', '.join(map(str, self))})") from err
 
     def __contains__(self, key):
         return dict.__contains__(self, self._key(key))
@@ -133,6 +135,21 @@ class Trajectory(SageObject):
         self._events = None if events is None else sorted(
             ((float(t), int(k), np.array(y, dtype=float)) for t, k, y in events),
             key=lambda e: e[0])
+
+    def _test_samples(self, **options):
+        r"""Run by ``TestSuite``: a row of states per time, a column per
+        variable; the times run one way, the events lie within them; a
+        piece of the continuous solution between each two breaks."""
+        tester, times = self._tester(**options), self._times
+        tester.assertEqual(self._states.shape, (len(times), len(self._variables)))
+        steps = np.diff(times)
+        tester.assertTrue((steps >= 0).all() or (steps <= 0).all())
+        for t, _, state in self._events or []:
+            low, high = times.min(), times.max()
+            tester.assertTrue(low <= t <= high)
+            tester.assertEqual(len(state), len(self._variables))
+        if self._dense is not None:
+            tester.assertEqual(len(self._dense), len(self._breaks) - 1)
 
     def __eq__(self, other):
         r"""
@@ -563,6 +580,7 @@ class Trajectory(SageObject):
             ....:              {x: 1, dx: 0}, 4, events=[x, dx])
             sage: [(round(t, 9), k) for t, k, _ in T.events()]
             [(1.570796327, 0), (3.141592654, 1)]
+            sage: TestSuite(T).run()
             sage: t, k, state = T.events(0)[0]; round(state[dx], 9), round(state['dx'], 9)
             (-1.0, -1.0)
 

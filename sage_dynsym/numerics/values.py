@@ -53,6 +53,8 @@ from ..algebra.size import polynomial_terms
 from ..errors import ModelError
 from ..arguments import check_declared_signs, finite_real
 
+__all__ = ['ROUNDING', 'ROUNDING_TERMS', 'holds_to_rounding', 'check_model_values']
+
 #: Relative size of the rounding errors tolerated when a condition is
 #: checked at floating-point values (relative to the sum of the absolute
 #: values of the terms).

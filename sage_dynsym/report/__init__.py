@@ -19,7 +19,7 @@ EXAMPLES::
     sage: 'stationary' in SECTIONS
     True
 """
-import importlib
+from ..errors import lazy_face
 
 from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS
 
@@ -33,16 +33,8 @@ _SOURCE = {
     'characteristic_estimate': '..dynamics.lagrangian_report',
 }
 
-__all__ = ['DEFAULT_BUDGET', 'SECTIONS', 'ANALYSIS_SECTIONS'] + list(_SOURCE)
+__all__ = ['DEFAULT_BUDGET', 'SECTIONS', 'ANALYSIS_SECTIONS']
+__all__ += list(_SOURCE)
 
-
-def __getattr__(name):
-    if name not in _SOURCE:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_SOURCE[name], __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__():
-    return sorted(set(globals()) | set(__all__))
+__getattr__, __dir__ = lazy_face(__name__, _SOURCE)
+del lazy_face

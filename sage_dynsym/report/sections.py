@@ -13,6 +13,8 @@ EXAMPLES::
     (['lagrangian', 'equations', 'routh'], 100000)
 """
 
+__all__ = ['DEFAULT_BUDGET', 'SECTIONS', 'TITLES', 'ANALYSIS_SECTIONS']
+
 #: Default size budget of one report section: the largest number of
 #: polynomial terms a section may create (estimated before it does).
 DEFAULT_BUDGET = 100_000

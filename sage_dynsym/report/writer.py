@@ -39,14 +39,17 @@ EXAMPLES::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (the package's face loads it lazily, only when a name is used)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 
 from ..arguments import count
 from ..dynamics.model import Model
 from ..dynamics.reporting import report_blocks as section_blocks, render
 from ..errors import DynSymError
 
-from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS, TITLES  # noqa: F401
+from .sections import DEFAULT_BUDGET, SECTIONS, ANALYSIS_SECTIONS, TITLES
+
+__all__ = ['report', 'report_blocks', 'ANALYSIS_SECTIONS']
 
 
 def report(model, sections=None, budget=DEFAULT_BUDGET, analysis=True, failed=None,

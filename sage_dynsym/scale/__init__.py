@@ -21,21 +21,12 @@ The names are imported on first use: the command line
 (:mod:`sage_dynsym.scale.cli`) parses its arguments, and answers
 ``--help``, without loading Sage.
 """
-import importlib
+from ..errors import lazy_face
 
 _SOURCE = {'stability_map': '.maps', 'StabilityMap': '.maps', 'model_linear_system': '.maps',
            'sweep': '.sweeps', 'Sweep': '.sweeps', 'stability_class': '.kernel'}
 
 __all__ = list(_SOURCE)
 
-
-def __getattr__(name):
-    if name not in _SOURCE:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    value = getattr(importlib.import_module(_SOURCE[name], __name__), name)
-    globals()[name] = value
-    return value
-
-
-def __dir__():
-    return sorted(set(globals()) | set(__all__))
+__getattr__, __dir__ = lazy_face(__name__, _SOURCE)
+del lazy_face

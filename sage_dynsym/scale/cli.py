@@ -109,6 +109,8 @@ import sys
 from ..arguments import count_option
 from .cluster import CLUSTER_THRESHOLD
 
+__all__ = ['parser', 'EXAMPLE', 'main']
+
 
 def _assignment(text, what):
     name, sep, value = text.partition('=')
@@ -121,8 +123,8 @@ def _assignment(text, what):
 def _number(text):
     try:
         value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    except ValueError as err:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from err
     return value
 
 
@@ -136,9 +138,9 @@ def _param(text):
         return name, (low, high)
     try:
         n = int(parts[2])
-    except ValueError:
+    except ValueError as err:
         raise argparse.ArgumentTypeError(f"expected an integer number of points in {text!r}") \
-            from None
+            from err
     return name, (low, high, n)
 
 
@@ -315,7 +317,7 @@ def _numbers(pairs, option):
         try:
             value = reader.parse(text)
         except ExpressionError as err:
-            raise DescriptionError(f"{expected}; {err.message}", entry=option) from None
+            raise DescriptionError(f"{expected}; {err.message}", entry=option) from err
         try:
             z = None if value.variables() else complex(value)
         except (TypeError, ValueError, OverflowError):
@@ -383,4 +385,4 @@ def _write(S, outputs):
             write_atomically(outputs[0], lambda stream: stream.write(data), binary=True)
     except OSError as err:
         raise DescriptionError(f"cannot write {err.filename or outputs[0]}: "
-                               f"{err.strerror or err}", entry="-o") from None
+                               f"{err.strerror or err}", entry="-o") from err

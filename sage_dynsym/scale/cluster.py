@@ -56,6 +56,10 @@ import uuid
 from ..errors import AnalysisError
 from ..arguments import count, finite_real, is_integer
 
+__all__ = ['DEFAULT_TIMEOUT', 'MAX_WORKERS', 'CLUSTER_THRESHOLD', 'LOCAL_START_TIMEOUT', 'chunks',
+           'machine_cores', 'connected', 'SHUTDOWN_LOGGERS', 'closed_quietly', 'local_cluster',
+           'run_chunks']
+
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
 #: Most worker processes of a local cluster (``workers=``): each is a
 #: Python process; far more than the cores only costs memory.
@@ -140,10 +144,10 @@ class _Shipped:
 def _dask():
     try:
         import distributed
-    except ImportError:
+    except ImportError as err:
         raise AnalysisError("Dask is not installed: install it with "
                             "pip install 'dask[distributed]', or pass client=False "
-                            "to compute in this process", entry="scale") from None
+                            "to compute in this process", entry="scale") from err
     return distributed
 
 
@@ -187,7 +191,7 @@ def connected(client='local', workers=None, timeout=DEFAULT_TIMEOUT):
             c = distributed.Client(client, timeout=timeout, set_as_default=False)
         except (OSError, TimeoutError, ValueError) as err:
             raise AnalysisError(f"no Dask scheduler answers at {client} within {timeout} s "
-                                f"({type(err).__name__}: {err})", entry="scale") from None
+                                f"({type(err).__name__}: {err})", entry="scale") from err
         with closed_quietly(c):
             _wait_for_workers(c, timeout, f"the scheduler at {client}")
             yield c
@@ -290,7 +294,7 @@ def _wait_for_workers(client, timeout, what, n=1):
         client.wait_for_workers(n, timeout=timeout)
     except (TimeoutError, OSError) as err:
         raise AnalysisError(f"{what} has no worker after {timeout} s ({err})",
-                            entry="scale") from None
+                            entry="scale") from err
 
 
 def run_chunks(function, task, ranges, collect, client=None, workers=None,
@@ -381,7 +385,7 @@ def run_chunks(function, task, ranges, collect, client=None, workers=None,
                     result = future.result()
                 except distributed.KilledWorker as err:
                     raise AnalysisError(f"the workers computing {future.key} kept dying "
-                                        f"({err})", entry="scale") from None
+                                        f"({err})", entry="scale") from err
                 collect(index[future.key], result)
                 future.release()
         except BaseException:

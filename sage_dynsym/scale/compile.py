@@ -22,7 +22,8 @@ EXAMPLES::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 import operator
 
 from sage.symbolic.operators import add_vararg, mul_vararg
@@ -31,6 +32,8 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..numerics.expressions import real_constant, function_name
 from .kernel import FUNCTIONS
+
+__all__ = ['compile_expressions']
 
 #: what a user can do about a symbol or function without a value
 _HINT = "; give it a value in fixed= (--value NAME=VALUE on the command line)"

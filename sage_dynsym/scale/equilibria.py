@@ -47,6 +47,8 @@ from ..dynamics.model import linearization_point
 from ..errors import AnalysisError, DynSymError
 from .points import number_text
 
+__all__ = ['ANGLES', 'MAX_SEARCHED', 'MAX_COORDINATES', 'NEAR', 'point_diagnosis']
+
 #: The values `k\pi/n` tried for an angle, as ``(k, n)`` (after the exact
 #: value a decimal stands for, a multiple of `\pi/12`).
 ANGLES = [(0, 1), (1, 1), (1, 2), (-1, 2), (1, 4), (-1, 4), (3, 4), (-3, 4)]

@@ -34,6 +34,10 @@ import operator
 
 import numpy as np
 
+__all__ = ['BLOCK', 'BATCH', 'FUNCTIONS', 'COMPARISONS', 'run_program', 'chunk_points',
+           'polynomial_abscissa', 'pencil_abscissa', 'classify', 'stability_class', 'map_chunk',
+           'sweep_chunk', 'identity']
+
 BLOCK = 4096            # random points are drawn in blocks of this size
 BATCH = 4096            # points evaluated at once inside a chunk
 _EPS = np.finfo(float).eps

@@ -96,7 +96,8 @@ the computation) is identical::
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 
 import numpy as np
 
@@ -120,6 +121,10 @@ from .kernel import map_chunk, chunk_points, run_program
 from .equilibria import point_diagnosis
 from .points import (Points, parse_points, check_positive_ranges, number_text, result_arrays,
                      MAX_POINTS)
+
+__all__ = ['CHUNK', 'MAX_POLYNOMIAL_DEGREE', 'stability_map', 'model_linear_system',
+           'linear_symbols', 'CLASS_COLOURS', 'CLASS_NAMES', 'StabilityMap', 'class_plot',
+           'BOUNDARY_POINTS']
 
 CHUNK = 2 ** 15              # points per Dask task (fixed: results do not depend on it)
 MAX_POLYNOMIAL_DEGREE = 16   # above: the 'eigvals' method
@@ -651,6 +656,20 @@ class StabilityMap(SageObject):
     are 1-D, and :meth:`axes` gives the coordinates of the samples.
 
     EXAMPLES: see :func:`stability_map`.
+
+    TESTS:
+
+    Maps have no value equality (they hold NumPy arrays), so the pickling
+    test is skipped; the counts of the classes add up::
+
+        sage: from sage_dynsym.analysis.linear import LinearSystem
+        sage: from sage_dynsym.scale import stability_map
+        sage: x, y, c = var('x y c')
+        sage: S = stability_map(LinearSystem([x, y], J=[[0, 1], [-1, -c]]), {c: (-1, 1, 5)},
+        ....:                   client=False)
+        sage: TestSuite(S).run(skip='_test_pickling')
+        sage: R = stability_map(LinearSystem([x], J=[[1/c]]), {c: (-1, 1)}, samples=7, client=False)
+        sage: TestSuite(R).run(skip='_test_pickling')
     """
 
     def __init__(self, points, alpha, stable, fixed, method, tol, conditions=None, note=None,
@@ -673,6 +692,27 @@ class StabilityMap(SageObject):
         if marginal:
             text += f", {100 * marginal:.1f}% stable in first approximation"
         return text
+
+    def _test_counts(self, **options):
+        r"""The arrays have the shape of the points, every point has one
+        class (the counts add up to the number of points), the stable
+        points are those of class 2, with a negative largest real part, and
+        the points where the system is not defined are those of class -1.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        classes, alpha = self.classes(), self._alpha
+        for array in (alpha, self._stable, classes):
+            tester.assertEqual(array.shape, self._stable.shape)
+        tester.assertEqual(self._stable.size, self._points.size)
+        counts = {k: int((classes == k).sum()) for k in (-1, 0, 1, 2)}
+        tester.assertEqual(sum(counts.values()), self._points.size)
+        tester.assertTrue((self._stable == (classes == 2)).all())
+        tester.assertTrue((alpha[classes == 2] < 0).all())
+        tester.assertTrue((~np.isfinite(alpha) == (classes == -1)).all())
+        for axis in self.axes().values():
+            tester.assertIn(len(axis), self._points.shape if self.is_grid() else [self._points.size])
 
     def parameters(self):
         r"""The parameters (symbols), in the order of the array indices.

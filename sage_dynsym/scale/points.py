@@ -36,6 +36,9 @@ import numpy as np
 from ..errors import AnalysisError, brief
 from ..arguments import count, is_integer
 
+__all__ = ['MAX_POINTS', 'result_arrays', 'Points', 'parse_points', 'number_text',
+           'check_positive_ranges']
+
 #: Most points of a map or a sweep (``max_points=`` raises it).
 MAX_POINTS = 10**7
 

@@ -61,7 +61,8 @@ of anything whose roots or matrix the function computes, and
 """
 # Sage's symbolic functions, Maxima and coercions need the whole library initialised
 # first (this subpackage's face stays Sage-free for the command line)
-import sage.all  # noqa: F401
+import sage.all
+del sage  # imported for its effect alone: no name of this module
 import math
 
 import numpy as np
@@ -74,6 +75,8 @@ from .cluster import run_chunks, chunks, DEFAULT_TIMEOUT
 from .kernel import sweep_chunk, chunk_points
 from .maps import CHUNK
 from .points import parse_points, check_positive_ranges, result_arrays, MAX_POINTS
+
+__all__ = ['sweep', 'ModelRun', 'Sweep']
 
 
 def sweep(function, parameters, client=None, *, fixed=None, samples=None, seed=0,

@@ -33,6 +33,8 @@ from ...symbols import CIRCUIT_VARIABLES, MAX_NAME_LENGTH, check_name, check_nam
 from .kinds import CURRENT, VOLTAGE, ELEMENTS, Branch
 from .windings import Coupling
 
+__all__ = ['MAX_NODE', 'LONG_KEYS', 'MUTUAL_KEYS', 'is_coupling_entry', 'parse_entries']
+
 #: Largest node number.
 MAX_NODE = 10**9
 
@@ -120,12 +122,12 @@ def _value(raw, parser, entry):
         try:
             return parser.parse(raw, entry=f"{entry}.value")
         except ExpressionError as err:
-            raise CircuitError(err.message, entry=err.entry) from None
+            raise CircuitError(err.message, entry=err.entry) from err
     try:
         return SR(raw)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError) as cause:
         raise CircuitError(f"expected an expression, got {raw!r}",
-                           entry=f"{entry}.value") from None
+                           entry=f"{entry}.value") from cause
 
 
 def _long(data, index, entry, parser):

@@ -54,6 +54,9 @@ from sage.symbolic.ring import SR
 
 from ...errors import CircuitError, brief
 
+__all__ = ['CURRENT', 'VOLTAGE', 'check_real', 'Branch', 'Resistor', 'Inductor', 'Capacitor',
+           'VoltageSource', 'CurrentSource', 'NonlinearResistor', 'state_symbols', 'ELEMENTS']
+
 #: The letter of a current: an inductor's state variable ``i<k>``, the own
 #: current ``i`` in an inductance.
 CURRENT = 'i'

@@ -73,6 +73,9 @@ from ...symbols import is_exact
 from ..graph import UnionFind
 from .kinds import CURRENT, VOLTAGE, check_real
 
+__all__ = ['MAX_COUPLED_WINDINGS', 'Coupling', 'check_couplings', 'winding_matrix',
+           'winding_groups', 'coupled_groups', 'inductance_matrix', 'inductance_conditions']
+
 #: Most windings in one group of coupled windings whose symbolic inductance
 #: matrix is examined (all its `2^n - 1` principal minors); a larger group
 #: with symbolic values is refused.
