@@ -60,9 +60,6 @@ from .expression_walk import ExpressionWalker, ExpressionScan, split_angle, angl
 __all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
            'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
 
-__all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
-           'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
-
 _ZERO, _ONE = SR(0), SR(1)
 
 

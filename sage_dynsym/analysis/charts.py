@@ -72,7 +72,8 @@ from ..arguments import expression_list, model_argument
 from ..algebra.translation import expand_angles
 from ..algebra.solving import normalize
 
-__all__ = ['ConfigurationChart', 'ConfigurationPoint', 'algebraic_value', 'configuration_points']
+__all__ = ['ConfigurationChart', 'ConfigurationPoint', 'algebraic_value', 'configuration_points',
+           'default_chart', 'points_of_chart', 'product_chart', 'same_point']
 
 
 class ConfigurationChart(SageObject):

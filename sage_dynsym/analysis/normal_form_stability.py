@@ -40,7 +40,7 @@ from ..errors import AnalysisError
 from .normal_forms import symplectic_unit
 from .verdict import StabilityVerdict
 
-__all__ = ['normal_form_stability']
+__all__ = ['normal_form_stability', 'stability_over_parameter']
 
 
 def normal_form_stability(H, compute_normal_form, order=4, positive=(), prec=256,

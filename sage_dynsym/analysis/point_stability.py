@@ -32,6 +32,8 @@ from sage.symbolic.ring import SR
 
 from .charts import algebraic_value
 
+__all__ = ['point_verdict', 'is_gyroscopic']
+
 
 def _is_positive_definite(K):
     return all(K.matrix_from_rows_and_columns(range(k), range(k)).det() > 0

@@ -118,7 +118,7 @@ from .modified_routh import ModifiedRouthLyapunov
 
 __all__ = ['check_integral', 'StationaryProblem', 'StationarySolution', 'StationarySolutions',
            'solve_stationary', 'stationary_solutions', 'stationary_motions',
-           'ModifiedRouthLyapunov']
+           'ModifiedRouthLyapunov', 'ChartPointSolution']
 
 
 def check_integral(V, variables, equations, index=0):

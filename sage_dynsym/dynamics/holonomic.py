@@ -36,8 +36,6 @@ from .natural_form import symbol_list, has_full_row_rank
 
 __all__ = ['check_constraints', 'HolonomicConstraints', 'independent_coordinates']
 
-__all__ = ['check_constraints', 'HolonomicConstraints']
-
 
 def check_constraints(constraints, coordinates, parameters=None, entry="constraints",
                       velocities=None):

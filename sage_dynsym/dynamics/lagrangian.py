@@ -184,7 +184,6 @@ equations, where one was attached, is recomputed after unpickling)::
     sage: L = Lagrangian(m*dx^2/2 - k*x^2/2, [x], dissipation=var('c')*dx^2/2)
     sage: loads(dumps(L)) == L
     True
-    sage: TestSuite(L).run()
     sage: C = Lagrangian(m*dx^2/2, [x], constraints=[x - k]); loads(dumps(C)) == C
     True
     sage: C == Lagrangian(m*dx^2/2, [x]), C
@@ -222,9 +221,9 @@ from .compact import equations_cse
 from .natural_equations import natural_equations, SymbolicCalculus
 from .natural_form import linear_collected, is_singular, has_full_row_rank, Elimination
 
-__all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations',
-           'SymbolicCalculus', 'symbol_list', 'is_at_most_quadratic', 'natural_form',
-           'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination', 'substitution']
+__all__ = ['Lagrangian', 'RouthFunction', 'equations_cse', 'natural_equations', 'SymbolicCalculus',
+           'symbol_list', 'is_at_most_quadratic', 'natural_form', 'linear_collected',
+           'is_singular', 'has_full_row_rank', 'Elimination', 'substitution', 'substituted']
 
 
 class Lagrangian(NumericalMethods, SageObject):
@@ -274,6 +273,11 @@ class Lagrangian(NumericalMethods, SageObject):
         sage: D = Lagrangian(dx^2/2, [x], dissipation=c*dx^2/2, forces=[sin(t)])
         sage: D.dissipation(), D.generalized_forces()
         (1/2*c*dx^2, [sin(t)])
+
+    TESTS: a Lagrangian is a value (pickled by content) whose conserved
+    energy is an integral of its equations (``_test_energy``)::
+
+        sage: TestSuite(L).run()
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, dissipation=0,

@@ -23,8 +23,6 @@ from .hamiltonian import Hamiltonian
 
 __all__ = ['generalized_momenta', 'energy', 'legendre']
 
-__all__ = ['LegendreTransform']
-
 
 def generalized_momenta(lagrangian):
     r"""

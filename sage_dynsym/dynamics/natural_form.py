@@ -29,7 +29,8 @@ from ..errors import ModelError
 from ..algebra.trigonometric import trig_rational_simplify
 
 __all__ = ['LAGRANGIAN_METHODS', 'LAGRANGIAN_HINT', 'symbol_list', 'is_at_most_quadratic',
-           'natural_form', 'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination']
+           'natural_form', 'linear_collected', 'is_singular', 'has_full_row_rank', 'Elimination',
+           'natural_decomposition']
 
 #: How the functions taking a Lagrangian recognise one (and the calls that
 #: give one, for their messages).

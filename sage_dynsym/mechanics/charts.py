@@ -35,7 +35,7 @@ from ..arguments import model_argument
 from ..analysis.charts import ConfigurationChart, default_chart, product_chart
 from .frames import rotation_matrix
 
-__all__ = ['EulerAngles', 'euler_angles']
+__all__ = ['EulerAngles', 'euler_angles', 'model_chart']
 
 
 class EulerAngles(ConfigurationChart):

@@ -28,7 +28,7 @@ from ..errors import ModelError
 from .rigid_body import as_vector3, as_scalar
 
 __all__ = ['UniformGravity', 'NewtonianField', 'split_force_terms', 'UNIT_TOLERANCE',
-           'check_force_function', 'force_term_data', 'force_term_to_dict']
+           'check_force_function', 'force_term_data', 'force_term_to_dict', 'force_terms']
 
 
 class UniformGravity(SageObject):

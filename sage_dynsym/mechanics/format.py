@@ -66,6 +66,8 @@ EXAMPLES::
     sage: results['lagrange_equations'] == S.lagrangian().lagrange_equations()
     True
 """
+import re
+
 from sage.misc.latex import latex
 from sage.symbolic.ring import SR
 
@@ -73,7 +75,8 @@ from ..errors import DescriptionError, DynSymError, ModelError, brief
 from ..io.expressions import ExpressionParser
 from ..io.fields import (check_keys, declared_names, declared_positive, title, MAX_PARAMETERS,
                          text as _text)
-from ..symbols import velocity, acceleration, momentum, check_mechanical_names
+from ..symbols import (velocity, acceleration, momentum, check_mechanical_names,
+                       ALLOWED_FUNCTIONS, CONSTANTS)
 from .force_functions import force_term_to_dict
 from .operating_points import operating_point_to_dict
 
@@ -588,6 +591,11 @@ class MechanicalFormat:
                 entry['velocity'] = [_text(c) for c in body.velocity()]
             bodies.append(entry)
         out['bodies'] = bodies
+        if self.parameters() is None:
+            # a description declares its symbols: those its expressions use
+            out = {**{k: v for k, v in out.items() if k in ('kind', 'name')},
+                   'parameters': self._undeclared_symbols(out),
+                   **{k: v for k, v in out.items() if k not in ('kind', 'name')}}
         return out
 
     def results(self):
@@ -607,6 +615,30 @@ class MechanicalFormat:
         return {'lagrangian': _text(L.expr()), 'lagrangian_latex': str(latex(L.expr())),
                 'lagrange_equations': [_text(e) for e in equations],
                 'lagrange_equations_latex': [str(latex(e)) for e in equations]}
+
+    @staticmethod
+    def _undeclared_symbols(out):
+        # the names the description's expressions use besides the
+        # coordinates, their velocities, t, the functions and constants
+        own = {q for q in out['coordinates']} | {f"d{q}" for q in out['coordinates']} | {'t'}
+        found = set()
+
+        def walk(value):
+            if isinstance(value, str):
+                found.update(re.findall(r"[A-Za-z_][A-Za-z_0-9]*", value))
+            elif isinstance(value, dict):
+                walk_entries(value)
+            elif isinstance(value, (list, tuple)):
+                for v in value:
+                    walk(v)
+        names = ('kind', 'name', 'coordinates', 'parent', 'body', 'axes')
+
+        def walk_entries(mapping):
+            for key, value in mapping.items():
+                if key not in names:
+                    walk(value)
+        walk_entries(out)
+        return sorted(found - own - set(ALLOWED_FUNCTIONS) - set(CONSTANTS))
 
     def result_symbols(self, results):
         r"""

@@ -31,8 +31,7 @@ from ..errors import ModelError
 from ..analysis.operating_point import OperatingPoint
 from ..symbols import t
 
-__all__ = ['POINT_KEYS', 'checked_operating_points', 'operating_point_to_dict',
-           'SystemOperatingPoints']
+__all__ = ['POINT_KEYS', 'checked_operating_points', 'operating_point_to_dict']
 
 #: The keys of one operating point.
 POINT_KEYS = ('at', 'coordinates', 'velocities')

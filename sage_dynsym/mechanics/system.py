@@ -48,7 +48,6 @@ Example 1 of :doc:`the method </method>`, the spherical pendulum::
     sage: bool(2*L.expr() == m*l^2*(sin(theta)^2*var('dpsi')^2 + var('dtheta')^2)
     ....:                    - 2*m*g*l*cos(theta))
     True
-    sage: TestSuite(S).run()
 
 TESTS:
 
@@ -136,7 +135,7 @@ from .system_kinematics import SystemKinematics
 from .system_lagrangian import LagrangianBuilder
 from .system_numerics import MechanicalNumerics
 
-__all__ = ['MechanicalSystem', 'check_constraints']
+__all__ = ['MechanicalSystem', 'check_constraints', 'DelegatedMethod']
 
 
 class DelegatedMethod:
@@ -237,6 +236,11 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
         sage: S = MechanicalSystem([arm, base], [a, b]); S.bodies()
         [Rigid body 'base' (parent 0, rotations [(3, a)], mass 0),
          Rigid body 'arm' (parent base, rotations [(1, b)], mass m)]
+
+    TESTS: its description reads back, its positive parameters are its
+    parameters, and its conserved energy is an integral of its equations::
+
+        sage: TestSuite(S).run()
     """
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,

@@ -60,8 +60,6 @@ from .loads import Load, body_index
 
 __all__ = ['check_declared_symbols', 'checked_load', 'PhysicalConditions']
 
-__all__ = ['SystemChecks']
-
 
 def _undeclared_check(kinematics, parameters):
     # check(expr, entry): refuses a symbol that is no coordinate, velocity,

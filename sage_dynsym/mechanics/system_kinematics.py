@@ -40,8 +40,6 @@ from .rigid_body import RigidBody
 
 __all__ = ['SystemKinematics', 'sorted_by_parents']
 
-__all__ = ['SystemKinematics']
-
 
 def sorted_by_parents(bodies):
     r"""

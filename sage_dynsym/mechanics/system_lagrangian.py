@@ -40,8 +40,6 @@ from .force_functions import force_terms, split_force_terms, UniformGravity
 from .frames import held_product
 from .kinematics import Kinematics
 
-__all__ = ['SystemLagrangian']
-
 # Above this many terms in the mass matrix, converting the polynomial
 # Christoffel coefficients back to symbolic expressions dominates the
 # derivation (see bench/bench_chain.py); see lagrangian().

@@ -35,7 +35,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..symbols import velocity, t as _t
 
-__all__ = ['TreeBody', 'TreeLoad', 'BodyTree']
+__all__ = ['TreeBody', 'TreeLoad', 'BodyTree', 'body_expressions']
 
 
 def _vector(value, entry):

@@ -52,7 +52,7 @@ from .expressions import identifier, write_code
 
 __all__ = ['symbol_names', 'graph_c_source', 'jacobian_c_source', 'jacobian_function', 'c_source',
            'python_source', 'run_python', 'python_function', 'compiler', 'cache_directory',
-           'compile_c', 'Kernel', 'compile_kernel']
+           'compile_c', 'Kernel', 'compile_kernel', 'jacobian_flags', 'native_flags']
 
 _LIBRARIES = {}
 _PROTOTYPE = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p,

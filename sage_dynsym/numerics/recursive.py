@@ -69,12 +69,8 @@ from .tree_kinematics import TreeKinematics, not_applicable, tree_order
 from .tree_solve import PIVOT_TOLERANCE, dense_solve, ltdl
 
 __all__ = ['RecursiveForm', 'unsupported', 'tree_accelerations', 'graph_kinematics',
-           'generalized_forces', 'inverse_dynamics',
-           'check_backend', 'compiled_library', 'optimization', 'LARGE_GRAPH',
-           'PIVOT_TOLERANCE']
-
-__all__ = ['PIVOT_TOLERANCE', 'LARGE_GRAPH', 'optimization', 'check_backend', 'compiled_library',
-           'unsupported', 'RecursiveForm']
+           'generalized_forces', 'inverse_dynamics', 'check_backend', 'compiled_library',
+           'optimization', 'LARGE_GRAPH', 'PIVOT_TOLERANCE']
 
 
 def graph_kinematics(tree, values=None):

@@ -32,6 +32,8 @@ from .derivatives import tangent
 from .articulated_body import articulated_accelerations
 from .newton_euler import applied_forces, inverse_dynamics
 
+__all__ = ['inverse_dynamics_graph', 'jacobian_graph']
+
 
 def inverse_dynamics_graph(form):
     r"""

@@ -418,7 +418,7 @@ def _free_linear_system(model, at):
         better = point_diagnosis(model, point)
         if better is None:
             raise
-        raise better from None
+        raise better from err
 
 
 def model_linear_system(model, at=None):
