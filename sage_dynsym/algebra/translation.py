@@ -343,10 +343,14 @@ class Translation:
         FF = self._FF
         self._evaluation = _Evaluation(
             self._index, {p: FF(self._flat.gen(k)) for k, p in enumerate(params)},
-            lambda i, kind: FF(self._ring_gen(i, kind)), FF)
+            self._field_gen, FF)
 
     def _ring_gen(self, i, kind):
         return self._flat.gen(self._nparams + self._generator_of[(i, kind)])
+
+    def _field_gen(self, i, kind):
+        # a method, not a closure: the translation is pickled with its solutions
+        return self._FF(self._ring_gen(i, kind))
 
     # -- accessors ---------------------------------------------------------
 

@@ -41,9 +41,10 @@ from sage.symbolic.ring import SR
 from ..algebra.solving import vanishes
 from ..analysis.motion import FirstOrderEquations
 from ..symbols import time_derivative
+from ..errors import ModelError
 from .codegen import generate_code
 from .form import NumericalForm
-from .rhs import RightHandSide
+from .rhs import RightHandSide, StateJacobian
 from .simulate import simulate as _simulate
 from .values import check_model_values
 
@@ -168,12 +169,18 @@ class NumericalMethods:
         """
         return self.equations_record()
 
-    def numerical_form(self):
+    #: the ways :meth:`numerical_form` computes the right-hand side (a kind
+    #: of model with several overrides :meth:`numerical_form`)
+    ALGORITHMS = ('auto', 'equations')
+
+    def numerical_form(self, algorithm='auto'):
         r"""
         The numerical form of ``equations_record()`` (built once per
         object, see :class:`~sage_dynsym.numerics.form.NumericalForm`), with
         the model's conserved energy, computed only if a trajectory's drift
-        asks for it.
+        asks for it. ``algorithm``: one of :attr:`ALGORITHMS` (here the
+        equations themselves; a mechanical system also has the recursive
+        algorithms of rigid-body dynamics).
 
         EXAMPLES::
 
@@ -182,21 +189,38 @@ class NumericalMethods:
             sage: L = Lagrangian(dx^2/2 - k*x^2/2, [x])
             sage: L.numerical_form(), L.numerical_form() is L.numerical_form()
             (Numerical form M x'' = F in (x), parameters (k), True)
+
+        TESTS::
+
+            sage: L.numerical_form('recursive')
+            Traceback (most recent call last):
+            ...
+            ModelError: algorithm: expected one of ('auto', 'equations'), got 'recursive'
         """
+        if algorithm not in self.ALGORITHMS:
+            raise ModelError(f"expected one of {self.ALGORITHMS}, got {algorithm!r}",
+                             entry="algorithm")
         cache = object_cache(self)
         if 'form' not in cache:
             # the energy is computed only if a trajectory's drift asks for it
             cache['form'] = NumericalForm(self.equations_record(), energy=self._conserved_energy)
         return cache['form']
 
-    def numerical_rhs(self, values, backend='auto'):
+    def numerical_rhs(self, values, backend='auto', algorithm='auto', jacobian=False):
         r"""
         A callable ``f(t, x)`` returning `\dot x` as a NumPy array, ``x``
         over the state variables (coordinates then velocities for
         second-order equations), with the parameter values ``values`` (a
         dict, symbols or names as keys); compiled, solving the linear
         system of the equations at each call (see
-        :func:`~sage_dynsym.numerics.rhs.numerical_rhs`).
+        :func:`~sage_dynsym.numerics.rhs.numerical_rhs`), from the numerical
+        form of ``algorithm`` (:meth:`numerical_form`).
+
+        With ``jacobian=True``: the pair ``(f, jac)``, ``jac(t, x)`` the
+        dense Jacobian of ``f`` with respect to the state, generated and
+        compiled like ``f`` (a :class:`~sage_dynsym.numerics.rhs.StateJacobian`;
+        for ``solve_ivp(..., jac=jac)`` and linearizations at any state,
+        :meth:`numerical_linearization`).
 
         EXAMPLES::
 
@@ -212,10 +236,57 @@ class NumericalMethods:
             [x, y]
         """
         check_model_values(self, values)
-        return RightHandSide(self.numerical_form(), values, backend)
+        form = self.numerical_form(algorithm)
+        f = RightHandSide(form, values, backend)
+        return (f, StateJacobian(form, values, backend)) if jacobian else f
+
+    def numerical_linearization(self, values, state, t=0, backend='auto', algorithm='auto'):
+        r"""
+        The linearization of `\dot x = f(t, x)` at any state ``state`` (not
+        only at equilibria): the Jacobian `\partial f/\partial x` there, as
+        a matrix over ``RDF``, from the compiled Jacobian of
+        :meth:`numerical_rhs` (``jacobian=True``). ``state`` is a dict over
+        the state variables or a sequence in their order. For the exact
+        linearization about equilibria and steady motions, see
+        :func:`~sage_dynsym.analysis.linear.linearize`.
+
+        EXAMPLES: a pendulum, `\ddot\varphi = -(g/l)\sin\varphi`, at
+        `\varphi = \pi/3`: `\partial\ddot\varphi/\partial\varphi =
+        -(g/l)\cos\varphi`::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+            sage: phi, m, l, g = var('phi m l g')
+            sage: P = MechanicalSystem([RigidBody('rod', rotations=[(1, phi)], mass=m,
+            ....:                      mass_center=[0, 0, -l], inertia=diagonal_matrix([m*l^2, m*l^2, 0]))],
+            ....:                      [phi], force_function=UniformGravity([0, 0, -g]))
+            sage: A = P.numerical_linearization({m: 1, l: 2, g: 9.81}, {phi: pi/3, 'dphi': 0})
+            sage: A.parent(), bool(abs(A[1, 0] + 9.81*cos(pi/3)/2) < 1e-14)
+            (Full MatrixSpace of 2 by 2 dense matrices over Real Double Field, True)
+            sage: w = A.eigenvalues()[0]    # a centre there: +-i sqrt(g cos(phi)/l)
+            sage: bool(abs(abs(w) - sqrt(9.81*cos(pi/3)/2)) < 1e-14), w.real()
+            (True, 0.0)
+
+        TESTS::
+
+            sage: P.numerical_linearization({m: 1, l: 2, g: 9.81}, {phi: 0})
+            Traceback (most recent call last):
+            ...
+            ModelError: state: no value for dphi (the state is the coordinates and the velocities)
+        """
+        from sage.matrix.constructor import matrix
+        from sage.rings.real_double import RDF
+        _, jac = self.numerical_rhs(values, backend=backend, algorithm=algorithm, jacobian=True)
+        if isinstance(state, dict):
+            by_name = {str(k): v for k, v in state.items()}
+            missing = [str(v) for v in jac.variables() if str(v) not in by_name]
+            if missing:
+                raise ModelError(f"no value for {', '.join(missing)} (the state is the "
+                                 "coordinates and the velocities)", entry="state")
+            state = [by_name[str(v)] for v in jac.variables()]
+        return matrix(RDF, jac(t, state))
 
     def simulate(self, values, initial, t_end, points=101, t0=0, method='auto', rtol=1e-10,
-                 atol=1e-12, backend='auto', **options):
+                 atol=1e-12, backend='auto', *, algorithm='auto', **options):
         r"""
         The motion from ``initial`` (a dict over the state variables) at
         ``t0`` to ``t_end``, sampled at ``points`` times (both ends
@@ -226,7 +297,8 @@ class NumericalMethods:
         ``solve_ivp``), the tolerances, ``events=[expr, ...]`` (zero
         crossings, :meth:`~sage_dynsym.numerics.trajectory.Trajectory.events`),
         the limits (``max_points=``, ``max_evaluations=``) and the
-        constraints (``project=``).
+        constraints (``project=``); the right-hand side from the numerical
+        form of ``algorithm`` (:meth:`numerical_form`).
 
         EXAMPLES::
 
@@ -244,10 +316,11 @@ class NumericalMethods:
             ...
             ModelError: energy_drift: the model has no energy integral (explicit time, dissipation or non-potential forces)
         """
-        rhs = self.numerical_rhs(values, backend)
-        name = self.name() if callable(getattr(self, 'name', None)) else None
-        return _simulate(rhs, values, initial, t_end, points=points, t0=t0, method=method,
-                         rtol=rtol, atol=atol, name=name, **options)
+        check_model_values(self, values)
+        if callable(getattr(self, 'name', None)):
+            options.setdefault('name', self.name())
+        return _simulate(self.numerical_form(algorithm), values, initial, t_end, points=points,
+                         t0=t0, method=method, rtol=rtol, atol=atol, backend=backend, **options)
 
     def code(self, language='python', cse=True):
         r"""
@@ -279,4 +352,4 @@ class NumericalMethods:
                 F[0] = -a*x;
             }
         """
-        return generate_code(self.numerical_form(), language=language, cse=cse)
+        return generate_code(self.numerical_form('equations'), language=language, cse=cse)
