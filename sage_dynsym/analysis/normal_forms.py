@@ -803,16 +803,23 @@ class BirkhoffNormalForm(SageObject):
         result = {}
         for m, h in terms.items():
             sign, phase = self._real_factor(m)
-            if A.is_numeric():
-                result[m] = sign * (h * [1, A.K.gen(), -1, -A.K.gen()][phase]).real()
-            elif A.free:
+            if A.free and not A.is_numeric():
                 result[m] = sign * self._symbolic_real(h, phase)
-            elif exact:
+            elif exact and not A.is_numeric():
                 result[m] = AA(sign * (A.exact_value(h) * [1, QQbar.gen(), -1, -QQbar.gen()][phase]).real())
             else:
-                i = A.value(A.K(0)).parent().gen()
-                result[m] = sign * (A.value(h) * [1, i, -1, -i][phase]).real()
+                result[m] = self._real_value(m, h)
         return result
+
+    def _real_value(self, m, h):
+        r"""The coefficient of `I^m` from the term ``h`` of
+        `\prod(\xi_k\eta_k)^{m_k}`: a number (an interval in exact mode)."""
+        A = self._A
+        sign, phase = self._real_factor(m)
+        if A.is_numeric():
+            return sign * (h * [1, A.K.gen(), -1, -A.K.gen()][phase]).real()
+        i = A.value(A.K(0)).parent().gen()
+        return sign * (A.value(h) * [1, i, -1, -i][phase]).real()
 
     def _symbolic_real(self, h, phase):
         r"""The real value of `i^{phase} h` as a symbolic expression: each
@@ -938,17 +945,8 @@ class BirkhoffNormalForm(SageObject):
             sage: nf.form_values(4)
             {(2,): -0.0625000000000000}
         """
-        A = self._A
-        found = {}
-        for m, h in self.action_terms()[0].items():
-            if 2 * sum(m) == degree:
-                sign, phase = self._real_factor(m)
-                if A.is_numeric():
-                    found[m] = sign * (h * [1, A.K.gen(), -1, -A.K.gen()][phase]).real()
-                else:
-                    i = A.value(A.K(0)).parent().gen()
-                    found[m] = sign * (A.value(h) * [1, i, -1, -i][phase]).real()
-        return found
+        return {m: self._real_value(m, h) for m, h in self.action_terms()[0].items()
+                if 2 * sum(m) == degree}
 
     def arnold_determinant(self, degree=4):
         r"""
