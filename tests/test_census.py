@@ -242,3 +242,81 @@ def test_census_samples_in_worker_processes():
     assert [(c.sample(), c.count(), c.stable_count()) for c in there.cells()] == \
         [(c.sample(), c.count(), c.stable_count()) for c in here.cells()] == \
         [({w: 1}, 2, 1), ({w: 2}, 4, 2)]
+
+
+# -- the census on Dask ---------------------------------------------------------------
+
+@pytest.mark.slow
+def test_gyrostat_census_identical_in_dask_process_pool(models):
+    from sage_dynsym.scale import equilibrium_census as census_on_dask
+    (R1, chart1), (R2, chart2) = models
+    h = R1.momenta()[0]
+    options = dict(positive=[h], values=VALUES, chart=chart1, regular=(R2, chart2))
+    here = equilibrium_census(R1, [h], **options)
+    there = census_on_dask(R1, [h], client='local', workers=2, **options)
+    table = [(c.sample(), c.count(), c.stable_count(), c.undecided_count()) for c in here.cells()]
+    assert [(c.sample(), c.count(), c.stable_count(), c.undecided_count())
+            for c in there.cells()] == table
+    assert there.bifurcation_set() == here.bifurcation_set()
+    # Gutnik and Sarychev: 24 equilibria, 4 stable, at small h; 8 and 2 at large h
+    assert table[0][1:3] == (24, 4) and table[-1][1:3] == (8, 2)
+
+
+#: A plain Python script (distributed logs to its stderr, which pytest's
+#: capture would hide): the hoop's census in this process, in Dask's
+#: process pool, and on a dask.distributed client (refused: threads). The
+#: pool's processes are spawned and import the script again: the guard.
+ROUTES = """
+import os, threading
+from sage.all import var, sin, cos
+from distributed import Client
+from sage_dynsym import Lagrangian
+from sage_dynsym.errors import AnalysisError
+from sage_dynsym.scale import equilibrium_census
+from sage_dynsym.scale.cluster import local_cluster, closed_quietly, run_in_processes
+
+def where_it_runs():        # defined in __main__: shipped by value (cloudpickle)
+    return os.getpid(), threading.current_thread() is threading.main_thread()
+
+def table(census):
+    return [(c.sample(), c.count(), c.stable_count()) for c in census.cells()]
+
+if __name__ == '__main__':
+    th, dth, w, g = var('theta dtheta w g')
+    L = Lagrangian(dth**2 / 2 + w**2 * sin(th)**2 / 2 + g * cos(th), [th])
+    print('here', table(equilibrium_census(L, [w], positive=[w], values={g: 2})))
+    print('pool', table(equilibrium_census(L, [w], positive=[w], values={g: 2},
+                                           client='local', workers=2)))
+    print('pool runs in main threads of other processes',
+          all(pid != os.getpid() and main for pid, main in
+              run_in_processes(where_it_runs, [()] * 3, client='local', workers=2)))
+    with closed_quietly(local_cluster(1)) as cluster, \\
+            closed_quietly(Client(cluster, set_as_default=False)) as client:
+        print('one-thread worker runs in main thread', client.submit(where_it_runs).result()[1])
+        try:
+            equilibrium_census(L, [w], positive=[w], values={g: 2}, client=client)
+        except AnalysisError as error:
+            print('client refused', 'PARI cannot run' in str(error))
+"""
+
+
+@pytest.mark.slow       # two process pools and a cluster, each importing Sage
+def test_census_routes_agree_and_close_quietly(tmp_path):
+    import subprocess
+    import sys
+    script = tmp_path / 'routes.py'
+    script.write_text(ROUTES)
+    run = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                         timeout=600)
+    # a bead on a hoop of radius 1: tilted equilibria for w^2 > g
+    hoop = "[({w: 1}, 2, 1), ({w: 2}, 4, 2)]"
+    assert run.stdout.splitlines() == [
+        f"here {hoop}", f"pool {hoop}", "pool runs in main threads of other processes True",
+        # a dask.distributed worker of one thread still runs its tasks in a thread
+        "one-thread worker runs in main thread False", "client refused True"], \
+        run.stdout + run.stderr
+    assert run.returncode == 0, run.stderr
+    # the worker's report of the refused tasks ("Compute Failed") and nothing else: no
+    # traceback of this process, no fault, no message of a cut connection at the close
+    assert 'Traceback (most recent call last)' not in run.stderr, run.stderr
+    assert 'Segmentation' not in run.stderr and 'CommClosedError' not in run.stderr, run.stderr

@@ -61,6 +61,8 @@ REFERENCES:
 - V. V. Sarychev, S. A. Gutnik, *Relative equilibria of a gyrostat
   satellite*, Cosmic Research 22 (1984) 257--260.
 """
+import threading
+
 from sage.arith.misc import gcd
 from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
@@ -246,6 +248,15 @@ def _counts(verdicts):
 
 def _count_task(system, values, chart, regular, positive):
     r"""One sample point's counts (a task: module level, picklable arguments)."""
+    if threading.current_thread() is not threading.main_thread():
+        # PARI's stack belongs to the main thread: in another one it faults
+        raise AnalysisError(f"the sample point {values} was sent to a thread "
+                            f"({threading.current_thread().name}), where Sage's PARI cannot "
+                            "run (a dask.distributed worker runs its tasks in threads); solve "
+                            "the samples in the main thread of processes: "
+                            "sage_dynsym.scale.equilibrium_census(..., client='local') (Dask's "
+                            "process pool) or executor=concurrent.futures.ProcessPoolExecutor()",
+                            entry="executor")
     _log(f"solving at {values}")
     return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
 
@@ -613,13 +624,15 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     - ``regular`` -- (optional) a pair ``(system2, chart2)``, the same
       model in a chart regular on the singular set of ``chart``; the
       equilibria there, and their stability, are decided in it
-    - ``executor`` -- (optional) an object with ``submit(f, *args)``
-      returning futures with ``result()`` whose tasks run in the main
-      thread of their process, e.g. a
-      ``concurrent.futures.ProcessPoolExecutor``: the sample points are
-      solved as its tasks; default: in this process. (Sage's PARI is not
-      thread-safe: a ``dask.distributed`` worker, which runs its tasks in a
-      thread, crashes in it.)
+    - ``executor`` -- (optional) where the sample points are solved: an
+      object with ``submit(f, *args)`` returning futures with ``result()``
+      (e.g. a ``concurrent.futures.ProcessPoolExecutor``), or a function
+      ``executor(f, arguments)`` returning ``[f(*a) for a in arguments]``
+      (e.g. Dask's, through :func:`sage_dynsym.scale.equilibrium_census`);
+      default: in this process. Each task must run in the main thread of
+      its process: Sage's PARI cannot run in another thread (a
+      ``dask.distributed`` worker runs its tasks in threads), and a task
+      sent to one is an :class:`~sage_dynsym.errors.AnalysisError`
 
     OUTPUT: a :class:`Census`
 
@@ -654,6 +667,20 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         Traceback (most recent call last):
         ...
         AnalysisError: parameters: x is a coordinate of the system, not a parameter; the parameters are a, b
+
+    An executor given as a function; one whose tasks run in threads is
+    refused before PARI runs there::
+
+        sage: census = equilibrium_census(L, [a], values={b: 0},
+        ....:                             executor=lambda f, args: [f(*x) for x in args])
+        sage: [(c.count(), c.stable_count()) for c in census.cells()]
+        [(1, 1), (3, 2)]
+        sage: from concurrent.futures import ThreadPoolExecutor
+        sage: with ThreadPoolExecutor(1) as threads:
+        ....:     equilibrium_census(L, [a], values={b: 0}, executor=threads)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: executor: the sample point {a: -1} was sent to a thread (ThreadPoolExecutor-...), where Sage's PARI cannot run ...
     """
     parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
     positive = symbol_arguments(positive, 'positive', error=AnalysisError)
@@ -697,8 +724,10 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         _log(f"solving at {len(samples)} sample points")
         if executor is None:
             return [task(s) for s in samples]
-        futures = [executor.submit(_count_task, fixed, s, chart, fixed2, positive)
-                   for s in samples]
+        arguments = [(fixed, s, chart, fixed2, positive) for s in samples]
+        if not hasattr(executor, 'submit'):
+            return list(executor(_count_task, arguments))
+        futures = [executor.submit(_count_task, *a) for a in arguments]
         return [f.result() for f in futures]
 
     if len(parameters) == 1:

@@ -13,7 +13,10 @@ scheduler when there is one, or plain NumPy in this process:
   :class:`~sage_dynsym.scale.maps.StabilityMap`;
 - :func:`~sage_dynsym.scale.sweeps.sweep` -- any function of the parameters
   (or a model's simulation) over the same kind of points, a
-  :class:`~sage_dynsym.scale.sweeps.Sweep`.
+  :class:`~sage_dynsym.scale.sweeps.Sweep`;
+- :func:`~sage_dynsym.scale.equilibria.equilibrium_census` -- the census
+  of the equilibria over the parameters, its sample points solved in
+  Dask's process pool when the work is large.
 
 See :mod:`sage_dynsym.scale.cluster` for where the chunks run.
 
@@ -24,7 +27,8 @@ The names are imported on first use: the command line
 from ..errors import lazy_face
 
 _SOURCE = {'stability_map': '.maps', 'StabilityMap': '.maps', 'model_linear_system': '.maps',
-           'sweep': '.sweeps', 'Sweep': '.sweeps', 'stability_class': '.kernel'}
+           'sweep': '.sweeps', 'Sweep': '.sweeps', 'stability_class': '.kernel',
+           'equilibrium_census': '.equilibria'}
 
 __all__ = list(_SOURCE)
 

@@ -58,7 +58,7 @@ from ..arguments import count, finite_real, is_integer
 
 __all__ = ['DEFAULT_TIMEOUT', 'MAX_WORKERS', 'CLUSTER_THRESHOLD', 'LOCAL_START_TIMEOUT', 'chunks',
            'machine_cores', 'connected', 'SHUTDOWN_LOGGERS', 'closed_quietly', 'local_cluster',
-           'run_chunks']
+           'run_chunks', 'run_in_processes']
 
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
 #: Most worker processes of a local cluster (``workers=``): each is a
@@ -406,3 +406,74 @@ def _show_progress(client, futures):
         display(bar)
     else:                       # a text bar on the terminal, until all are done
         progress(futures, notebook=False, multi=False, scheduler=scheduler)
+
+
+def run_in_processes(function, arguments, client=None, workers=None, timeout=DEFAULT_TIMEOUT,
+                     threshold=CLUSTER_THRESHOLD):
+    r"""
+    ``[function(*a) for a in arguments]``, each call in the main thread of
+    a process: for work that uses Sage's PARI, which cannot run in another
+    thread.
+
+    A ``dask.distributed`` worker runs its tasks in threads of its
+    process, even with one thread (its event loop holds the main thread):
+    a local cluster here is Dask's process pool instead
+    (``dask.compute(..., scheduler='processes')``, whose tasks run in the
+    main thread of its worker processes). Where the calls run, by
+    ``client``:
+
+    - ``None`` (the default) -- chosen by the cost, as in
+      :func:`run_chunks`: the first call runs in this process and is
+      timed; the others go to Dask's process pool when their estimated
+      time exceeds ``threshold`` seconds on a machine of several cores,
+      otherwise they run here too;
+    - ``'local'`` -- Dask's process pool, ``workers`` processes (default:
+      one per core), started for this computation and closed after it.
+      Its workers are spawned and import the main module again: a script
+      needs the ``if __name__ == '__main__':`` guard;
+    - a :class:`dask.distributed.Client` or a scheduler address -- its
+      workers, as given (their tasks run in threads: ``function`` must
+      raise a clear error there rather than fault);
+    - ``False`` -- in this process, one after the other.
+
+    OUTPUT: the list of the results, in the order of ``arguments``
+
+    EXAMPLES::
+
+        sage: from operator import add
+        sage: from sage_dynsym.scale.cluster import run_in_processes
+        sage: run_in_processes(add, [(1, 2), (3, 4)])
+        [3, 7]
+        sage: run_in_processes(add, [(1, 2), (3, 4)], client='local', workers=1)  # long time
+        [3, 7]
+    """
+    finite_real(timeout, 'timeout', error=AnalysisError, minimum=0, strict=True)
+    if workers is not None:
+        count(workers, 'workers', maximum=MAX_WORKERS, error=AnalysisError)
+    arguments = list(arguments)
+    done = []
+    if client is None and workers is None and arguments:
+        begin = time.perf_counter()
+        done.append(function(*arguments[0]))
+        estimate = (time.perf_counter() - begin) * (len(arguments) - 1)
+        if estimate <= threshold or machine_cores() < 2:
+            client = False
+        else:
+            _log.info("about %.0f s of work left at the pace of the first task: "
+                      "starting Dask's process pool of %d workers", estimate, machine_cores())
+    rest = arguments[len(done):]
+    if client is False or not rest:
+        return done + [function(*a) for a in rest]
+    if client is None or client == 'local':
+        import dask
+        tasks = [dask.delayed(function, pure=False)(*a) for a in rest]
+        # one task at a time per process: each is a whole solve
+        return done + list(dask.compute(*tasks, scheduler='processes', chunksize=1,
+                                        num_workers=workers or machine_cores()))
+    with connected(client, workers, timeout) as c:
+        futures = [c.submit(function, *a, pure=False) for a in rest]
+        try:
+            return done + c.gather(futures)
+        except BaseException:
+            c.cancel(futures, force=True)
+            raise

@@ -45,9 +45,12 @@ from ..analysis.linear import equations_of_motion, linearize
 from ..analysis.motion import SecondOrderEquations
 from ..dynamics.model import linearization_point
 from ..errors import AnalysisError, DynSymError
+from ..analysis import census
+from .cluster import CLUSTER_THRESHOLD, DEFAULT_TIMEOUT, run_in_processes
 from .points import number_text
 
-__all__ = ['ANGLES', 'MAX_SEARCHED', 'MAX_COORDINATES', 'NEAR', 'point_diagnosis']
+__all__ = ['ANGLES', 'MAX_SEARCHED', 'MAX_COORDINATES', 'NEAR', 'point_diagnosis',
+           'equilibrium_census']
 
 #: The values `k\pi/n` tried for an angle, as ``(k, n)`` (after the exact
 #: value a decimal stands for, a multiple of `\pi/12`).
@@ -282,3 +285,61 @@ def _shown(point):
 def _names(variables):
     names = [str(v) for v in variables]
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+def equilibrium_census(system, parameters, positive=(), values=None, chart=None, regular=None,
+                       client=None, workers=None, timeout=DEFAULT_TIMEOUT,
+                       threshold=CLUSTER_THRESHOLD):
+    r"""
+    The census of the equilibria of :func:`sage_dynsym.analysis.census.equilibrium_census`,
+    its sample points solved on Dask when the work is large.
+
+    INPUT:
+
+    - ``system``, ``parameters``, ``positive``, ``values``, ``chart``,
+      ``regular`` -- as for :func:`sage_dynsym.analysis.census.equilibrium_census`
+    - ``client``, ``workers``, ``timeout``, ``threshold`` -- where the
+      sample points are solved, as for
+      :func:`~sage_dynsym.scale.cluster.run_in_processes`: by default in
+      this process, or in Dask's process pool when the first sample says
+      the others take more than ``threshold`` seconds; ``'local'`` for
+      that pool; a Dask ``Client`` for its workers, which run their tasks
+      in threads, where Sage's PARI cannot run: that is an
+      :class:`~sage_dynsym.errors.AnalysisError`
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.census.Census`, the same
+    wherever the samples were solved
+
+    EXAMPLES: a bead on a hoop turning at the rate `w` (`g = R = 1`)::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.scale import equilibrium_census
+        sage: th, dth, w = var('theta dtheta w')
+        sage: L = Lagrangian(dth^2/2 + w^2*sin(th)^2/2 + cos(th), [th])
+        sage: equilibrium_census(L, [w], positive=[w])
+        Census of the equilibria over w > 0: bifurcation set [w - 1]
+          0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
+          1 < w (sample w = 2): 4 equilibria, 2 stable
+        sage: equilibrium_census(L, [w], positive=[w], client='local', workers=2)  # long time
+        Census of the equilibria over w > 0: bifurcation set [w - 1]
+          0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
+          1 < w (sample w = 2): 4 equilibria, 2 stable
+
+    TESTS::
+
+        sage: equilibrium_census(L, [w], client=42)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: scale: client must be None (chosen by the cost), 'local' (a local cluster), False (no Dask), a Dask Client or a scheduler address, got 42
+
+    REFERENCES:
+
+    - G. E. Collins, *Quantifier elimination for real closed fields by
+      cylindrical algebraic decomposition*, LNCS 33 (1975) 134--183.
+    """
+    def executor(function, arguments):
+        return run_in_processes(function, arguments, client=client, workers=workers,
+                                timeout=timeout, threshold=threshold)
+
+    return census.equilibrium_census(system, parameters, positive=positive, values=values,
+                                     chart=chart, regular=regular, executor=executor)
