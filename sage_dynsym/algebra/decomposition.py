@@ -127,7 +127,10 @@ def minimal_primes(I, shapes=False, split_points=True):
             continue
         found = _zero_dimensional_primes(J) if zero else None
         if found is None:
-            for Q in positive_dimensional_primes(J):
+            # a single part has the zero set of I, whose own generators
+            # (few, of low degree) suit the characteristic sets far better
+            # than the Groebner basis facstd returns
+            for Q in positive_dimensional_primes(I if len(parts) == 1 else J):
                 Q = P.ideal(Q.groebner_basis())
                 target = points if Q.dimension() == 0 else varieties
                 if all(not _same(Q, R) for R, _ in target):
