@@ -35,6 +35,14 @@ The values where only a chart artifact degenerates (solutions on the
 chart's singular set that are not equilibria) are in the bifurcation set
 too; the counts on both sides of them are equal.
 
+The stable count in first approximation changes also where an equilibrium
+stays nondegenerate but its linearization changes (gyroscopic
+stabilization: a pair of roots leaves the imaginary axis). Those boundaries
+are the relations of the stability regions of the equilibria solved with
+the parameters symbolic (:func:`first_approximation_polynomials`); they are
+in ``bifurcation_set(first_approximation=True)``, and
+``cells(first_approximation=True)`` are the cells adapted to it.
+
 EXAMPLES: a bead on a hoop turning at the rate `w` (`g = R = 1`): two
 equilibria below `w^2 = 1`, four above, the bottom stable below and the two
 tilted ones above (Goldstein, *Classical Mechanics*, §2.6)::
@@ -78,7 +86,7 @@ from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
 
-__all__ = ['discriminant_polynomials', 'equilibria_at', 'CensusCell', 'Census',
+__all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at', 'CensusCell', 'Census',
            'equilibrium_census']
 
 
@@ -134,11 +142,21 @@ def discriminant_polynomials(W, coordinates, parameters):
     """
     q = [SR(x) for x in coordinates]
     H = matrix(SR, [[SR(W).diff(x).diff(y) for y in q] for x in q])
-    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[H.det()])
+    return _projection(W, q, parameters, H.det(),
+                       f"the stationary equations are degenerate for all values of "
+                       f"{', '.join(map(str, parameters))} (a family of equilibria); "
+                       "the census counts isolated equilibria only")
+
+
+def _projection(W, q, parameters, extra, degenerate):
+    r"""The irreducible factors of the projection on the parameters of
+    `\{\nabla W = 0,\ extra = 0\}`; ``degenerate`` is the message when a
+    component of the stationary set lies in `extra = 0` over every value."""
+    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[extra])
     P = T.ring()
     keep = {str(g) for p in parameters for g in T.generators_of(p)}
     state = [g for g in P.gens() if str(g) not in keep]
-    determinant = T.numerator(H.det())[0]
+    other = T.numerator(extra)[0]
     ideal = P.ideal(T.equations())
     for d in T.denominators():
         ideal = ideal.saturation(P.ideal(d))[0]
@@ -148,13 +166,10 @@ def discriminant_polynomials(W, coordinates, parameters):
     _log(f"eliminating {len(state)} variables from {len(parts)} parts")
     factors = []
     for part in parts:
-        gens = [g for g in (part + P.ideal([determinant])).elimination_ideal(state).gens()
+        gens = [g for g in (part + P.ideal([other])).elimination_ideal(state).gens()
                 if g != 0]
         if not gens:
-            raise AnalysisError(f"the stationary equations are degenerate for all values of "
-                                f"{', '.join(map(str, parameters))} (a family of equilibria); "
-                                "the census counts isolated equilibria only",
-                                entry="equilibrium_census")
+            raise AnalysisError(degenerate, entry="equilibrium_census")
         # the zero set of the ideal: the factors of the gcd for one parameter;
         # for two, a curve through it (a finite set of points lies on it)
         g = gcd(gens) if len(gens) > 1 else gens[0]
@@ -163,6 +178,95 @@ def discriminant_polynomials(W, coordinates, parameters):
         factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
                     and -f not in factors]
     return [T.symbolic(f) for f in factors]
+
+
+def first_approximation_polynomials(system, parameters, positive=()):
+    r"""
+    The boundaries, in the parameters, of the regions where the stationary
+    solutions of a Lagrangian or Routh function are stable (in the sense of
+    Lyapunov or in first approximation): the polynomials of the relations
+    of the regions of their stability verdicts (Routh's condition, the
+    Routh--Hurwitz or spectrum conditions of the first approximation, with
+    their :meth:`~sage_dynsym.analysis.verdict.StabilityVerdict.boundaries`),
+    solved with the parameters symbolic. A relation in the coordinates of
+    an implicit family is projected on the parameters (elimination with
+    the stationary equations).
+
+    INPUT:
+
+    - ``system`` -- a Lagrangian or Routh function whose only symbols
+      other than its coordinates and velocities are ``parameters``
+    - ``parameters`` -- a list of symbols
+    - ``positive`` -- symbols declared positive
+
+    OUTPUT: a list of irreducible symbolic polynomials in the parameters
+
+    EXAMPLES: a particle in a saddle potential `(x^2 - 2y^2)/2` turning at
+    the rate `w`, seen in the turning frame: the saddle is stable in first
+    approximation for `1 < w^2 < 9/8` (gyroscopic stabilization); only
+    `w = 1` is a degenerate equilibrium::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import (first_approximation_polynomials,
+        ....:                                          discriminant_polynomials)
+        sage: x, y, dx, dy, w = var('x y dx dy w')
+        sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+        ....:                + (w^2 + 2)*y^2/2, [x, y])
+        sage: first_approximation_polynomials(L, [w], positive=[w])
+        [w - 1, 8*w^2 - 9]
+        sage: discriminant_polynomials(-(w^2 - 1)*x^2/2 - (w^2 + 2)*y^2/2, [x, y], [w])
+        [w - 1, w + 1, w^2 + 2]
+
+    The cusp: the minima of an implicit family end where `3x^2 = a`, on
+    the discriminant::
+
+        sage: x, dx, a, b = var('x dx a b')
+        sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
+        sage: first_approximation_polynomials(L, [a, b])
+        [4*a^3 - 27*b^2]
+
+    TESTS::
+
+        sage: first_approximation_polynomials(L, [a])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: first_approximation: the system depends on b besides the parameters a: substitute values first, e.g. system.subs({b: 1})
+    """
+    from .stationary import stationary_motions
+    q, W = _amended_potential(system)
+    names = {str(v) for v in parameters}
+    coordinates = {str(v) for v in q}
+    others = sorted(str(v) for v in SR(W).variables() if str(v) not in names | coordinates)
+    if others:
+        raise AnalysisError(f"the system depends on {', '.join(others)} besides the parameters "
+                            f"{', '.join(map(str, parameters))}: substitute values first, "
+                            f"e.g. system.subs({{{', '.join(f'{v}: 1' for v in others)}}})",
+                            entry="first_approximation")
+    found = []
+    for sol in stationary_motions(system, positive=positive):
+        verdict = sol.stability()
+        relations = [r for case in verdict.cases() for alt in (case.region() or [])
+                     for r in alt]
+        relations += [r for rs in verdict.boundaries().values() for r in rs]
+        for r in relations:
+            f = (SR(r.lhs()) - SR(r.rhs())).numerator()
+            used = {str(v) for v in f.variables()}
+            # the angles enter through their cosines and sines (Translation)
+            if not used <= names | coordinates or \
+                    any(not f.is_polynomial(v) for v in f.variables() if str(v) in names):
+                raise AnalysisError(
+                    f"the stability region {verdict.region()} of {sol} is not polynomial "
+                    f"in {', '.join(map(str, parameters))}: give values to the other "
+                    f"symbols ({', '.join(sorted(used - names - coordinates)) or 'none'})",
+                    entry="first_approximation")
+            if used & coordinates:
+                polys = _projection(W, q, parameters, f, f"the stability boundary {f} == 0 "
+                                    f"contains a component of the equilibria of {sol}")
+            else:
+                polys = [g for g, _ in f.factor_list() if SR(g).variables()]
+            found += [g for g in polys if all(not bool(g - h == 0) and not bool(g + h == 0)
+                                              for h in found)]
+    return found
 
 
 # -- the equilibria at one point of the parameter space ----------------------------------
@@ -371,7 +475,8 @@ class CensusCell(SageObject):
         r"""
         The number of equilibria stable in the sense of Lyapunov (Routh's
         theorem); with ``first_approximation=True`` those stable in first
-        approximation are added.
+        approximation are added (that number is constant on the cells of
+        ``Census.cells(first_approximation=True)``, not always on the others).
 
         EXAMPLES: see :class:`CensusCell`.
         """
@@ -413,13 +518,26 @@ class Census(SageObject):
         sage: TestSuite(cusp).run(skip='_test_pickling')
     """
 
-    def __init__(self, parameters, polynomials, cells, task, positive, region=None):
+    def __init__(self, parameters, polynomials, cells, task, positive, region=None,
+                 refine=None):
         self._parameters = parameters
         self._polynomials = polynomials
         self._cells = cells
         self._task = task
         self._positive = positive
         self._region = region
+        self._refine = refine
+        self._refined = None
+
+    def _first_approximation(self):
+        r"""The bifurcation set with the first-approximation boundaries and
+        its cells, computed once (see :meth:`cells`)."""
+        if self._refined is None:
+            if self._refine is None:
+                raise AnalysisError("this census was built without its system: use "
+                                    "equilibrium_census(...)", entry="first_approximation")
+            self._refined = self._refine()
+        return self._refined
 
     def _repr_(self):
         where = " and ".join(f"{p} > 0" for p in self._parameters if self._is_positive(p))
@@ -461,21 +579,44 @@ class Census(SageObject):
         """
         return list(self._parameters)
 
-    def bifurcation_set(self):
+    def bifurcation_set(self, first_approximation=False):
         r"""
         The polynomials in the parameters whose zero sets bound the cells
         (irreducible over `\QQ`): where an equilibrium is degenerate, in the
-        chart or in the regular chart.
+        chart or in the regular chart. The count and the Lyapunov stable
+        count are constant off this set.
 
-        EXAMPLES: see :class:`Census`.
+        INPUT:
+
+        - ``first_approximation`` -- (default: ``False``) if ``True``, the
+          boundaries of the stability regions of the equilibria (Routh's
+          condition and the first approximation: see
+          :func:`first_approximation_polynomials`) are appended, those not
+          in the set already: the cells of ``cells(first_approximation=True)``,
+          where ``stable_count(first_approximation=True)`` is constant too
+
+        EXAMPLES: see :class:`Census`, and a saddle stabilized by turning
+        (`1 < w^2 < 9/8`, see :func:`first_approximation_polynomials`)::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: x, y, dx, dy, w = var('x y dx dy w')
+            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+            ....:                + (w^2 + 2)*y^2/2, [x, y])
+            sage: census = equilibrium_census(L, [w], positive=[w])
+            sage: census.bifurcation_set(), census.bifurcation_set(first_approximation=True)
+            ([w - 1], [w - 1, 8*w^2 - 9])
         """
+        if first_approximation:
+            return list(self._first_approximation()[0])
         return list(self._polynomials)
 
-    def bifurcation_values(self):
+    def bifurcation_values(self, first_approximation=False):
         r"""
         For a census over one parameter: the bifurcation values inside the
         declared signs, exact (real algebraic numbers; ``radical_expression()``
-        gives radicals), sorted.
+        gives radicals), sorted; with ``first_approximation=True``, those of
+        ``bifurcation_set(first_approximation=True)``.
 
         EXAMPLES: see :class:`Census`.
 
@@ -496,14 +637,39 @@ class Census(SageObject):
                                 "set is a set of curves, bifurcation_set() gives their "
                                 "equations", entry="bifurcation_values")
         p = self._parameters[0]
-        return [r for r in _real_roots(self._polynomials, p, self._is_positive(p))
-                if r != 0 or any(SR(f).subs({p: 0}).is_zero() for f in self._polynomials)]
+        polys = self.bifurcation_set(first_approximation)
+        return [r for r in _real_roots(polys, p, self._is_positive(p))
+                if r != 0 or any(SR(f).subs({p: 0}).is_zero() for f in polys)]
 
-    def cells(self):
-        r"""The cells (:class:`CensusCell`), each with a sample point and its counts.
+    def cells(self, first_approximation=False):
+        r"""
+        The cells (:class:`CensusCell`), each with a sample point and its
+        counts.
 
-        EXAMPLES: see :class:`Census`.
+        INPUT:
+
+        - ``first_approximation`` -- (default: ``False``) if ``True``, the
+          cells of ``bifurcation_set(first_approximation=True)``: finer,
+          each with a constant ``stable_count(first_approximation=True)``
+          (the stability regions are computed with the parameters symbolic
+          on the first call)
+
+        EXAMPLES: see :class:`Census`; the turning saddle is stable in first
+        approximation in the middle cell only::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: x, y, dx, dy, w = var('x y dx dy w')
+            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+            ....:                + (w^2 + 2)*y^2/2, [x, y])
+            sage: census = equilibrium_census(L, [w], positive=[w])
+            sage: for cell in census.cells(first_approximation=True): print(cell)
+            0 < w < 1 (sample w = 1/2): 1 equilibrium, 0 stable
+            1 < w < 3/2*sqrt(1/2) (sample w = 18/17): 1 equilibrium, 0 stable, 1 more stable in first approximation
+            3/2*sqrt(1/2) < w (sample w = 2): 1 equilibrium, 0 stable
         """
+        if first_approximation:
+            return list(self._first_approximation()[1])
         return list(self._cells)
 
     def count_at(self, values):
@@ -682,10 +848,7 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         q2, W2 = _amended_potential(regular[0])
         polys += [f for f in discriminant_polynomials(SR(W2).subs(values), q2, parameters)
                   if all(not bool(SR(f) - g == 0) for g in polys)]
-    if len(parameters) == 1:
-        # only the factors with a zero inside the declared signs bound cells
-        polys = [f for f in polys if any(r > 0 or not signs[0] for r in
-                                         _real_roots([f], parameters[0], False))]
+    polys = _inside(polys, parameters, signs)
     _log(f"bifurcation set {polys}")
     fixed2 = None if regular is None else \
         ((regular[0].subs(values) if values else regular[0]), regular[1])
@@ -701,13 +864,39 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
                    for s in samples]
         return [f.result() for f in futures]
 
+    def refine():
+        # the first-approximation boundaries are solved with the parameters
+        # symbolic, only when asked: that can take much longer than the census
+        more = []
+        for model in [fixed] + ([] if fixed2 is None else [fixed2[0]]):
+            more += [f for f in first_approximation_polynomials(model, parameters, positive)
+                     if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0)
+                            for g in polys + more)]
+        more = _inside(more, parameters, signs)
+        _log(f"first-approximation boundaries {more}")
+        return polys + more, _decomposition(polys + more, parameters, signs, counts_of)
+
+    return Census(parameters, polys, _decomposition(polys, parameters, signs, counts_of),
+                  task, positive, region=signs if len(parameters) == 2 else None,
+                  refine=refine)
+
+
+def _inside(polys, parameters, signs):
+    r"""For one parameter, the factors with a zero inside the declared
+    signs (only those bound cells); for two, all."""
+    if len(parameters) != 1:
+        return polys
+    return [f for f in polys if any(r > 0 or not signs[0] for r in
+                                    _real_roots([f], parameters[0], False))]
+
+
+def _decomposition(polys, parameters, signs, counts_of):
+    r"""The cells adapted to ``polys``, with the counts at their samples
+    (``counts_of`` a list of samples)."""
     if len(parameters) == 1:
-        shape = _cells_one(polys, parameters[0], signs[0], lambda s: None)
-        found = counts_of([c.sample() for c in shape])
-        cells = [CensusCell(c.description(), c.sample(), n, c.bounds())
-                 for c, n in zip(shape, found)]
-        return Census(parameters, polys, cells, task, positive)
-    shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
-    found = counts_of([s for _, s, _ in shape])
-    cells = [CensusCell(text, sample, n, bounds) for (text, sample, bounds), n in zip(shape, found)]
-    return Census(parameters, polys, cells, task, positive, region=signs)
+        shape = [(c.description(), c.sample(), c.bounds())
+                 for c in _cells_one(polys, parameters[0], signs[0], lambda s: None)]
+    else:
+        shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
+    found = counts_of([sample for _, sample, _ in shape])
+    return [CensusCell(text, sample, n, bounds) for (text, sample, bounds), n in zip(shape, found)]
