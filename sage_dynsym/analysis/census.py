@@ -513,6 +513,10 @@ class Census(SageObject):
     their samples::
 
         sage: TestSuite(census).run(skip='_test_pickling')
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: turning = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+        ....:                      + (w^2 + 2)*y^2/2, [x, y])
+        sage: TestSuite(equilibrium_census(turning, [w], positive=[w])).run(skip='_test_pickling')
         sage: x, dx, a, b = var('x dx a b')
         sage: cusp = equilibrium_census(Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x]), [a, b])
         sage: TestSuite(cusp).run(skip='_test_pickling')
@@ -568,6 +572,27 @@ class Census(SageObject):
             tester.assertEqual(len(self._cells), len(self.bifurcation_values()) + 1)
             for left, right in zip(self._cells, self._cells[1:]):
                 tester.assertEqual(left.bounds()[1], right.bounds()[0])
+
+    def _test_first_approximation(self, **options):
+        r"""The cells adapted to the first-approximation boundaries refine
+        the cells: their samples lie off the larger set, and (over one
+        parameter) each lies in a cell with the same count and stable count.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        polys = self.bifurcation_set(first_approximation=True)
+        tester.assertEqual(polys[:len(self._polynomials)], self._polynomials)
+        for cell in self.cells(first_approximation=True):
+            tester.assertTrue(all(not SR(f).subs(cell.sample()).is_zero() for f in polys))
+            if len(self._parameters) == 1 and cell.bounds() is not None:
+                lo, hi = cell.bounds()
+                coarse = [c for c in self._cells
+                          if (c.bounds()[0] is None or lo is not None and c.bounds()[0] <= lo)
+                          and (c.bounds()[1] is None or hi is not None and hi <= c.bounds()[1])]
+                tester.assertEqual(len(coarse), 1)
+                tester.assertEqual((coarse[0].count(), coarse[0].stable_count()),
+                                   (cell.count(), cell.stable_count()))
 
     def _is_positive(self, p):
         return any(str(p) == str(q) for q in self._positive)
