@@ -731,6 +731,20 @@ class Census(SageObject):
             sage: census = equilibrium_census(L, [a, b])
             sage: census.plot()
             Graphics object consisting of ... graphics primitives
+
+        With ``first_approximation=True``, the cells of
+        ``cells(first_approximation=True)`` coloured by
+        ``stable_count(first_approximation=True)``: the turning saddle (see
+        :meth:`cells`) is stable in first approximation on the middle step::
+
+            sage: x, y, dx, dy, w = var('x y dx dy w')
+            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+            ....:                + (w^2 + 2)*y^2/2, [x, y])
+            sage: G = equilibrium_census(L, [w], positive=[w]).plot(first_approximation=True)
+            sage: [p.options()['legend_label'] for p in G]
+            ['1 equilibrium, 0 stable (with first approximation)',
+             '1 equilibrium, 1 stable (with first approximation)',
+             '1 equilibrium, 0 stable (with first approximation)']
         """
         from .census_plot import census_plot
         return census_plot(self, self._region, **options)
