@@ -69,6 +69,8 @@ REFERENCES:
 - V. V. Sarychev, S. A. Gutnik, *Relative equilibria of a gyrostat
   satellite*, Cosmic Research 22 (1984) 257--260.
 """
+import warnings
+
 from sage.arith.misc import gcd
 from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
@@ -218,11 +220,15 @@ def first_approximation_polynomials(system, parameters, positive=()):
         [w - 1, w + 1, w^2 + 2]
 
     The cusp: the minima of an implicit family end where `3x^2 = a`, on
-    the discriminant::
+    the discriminant. Where `3x^2 < a` (the maxima) the verdict is not
+    decided with the parameters symbolic: a warning says so (the census
+    decides them at its samples)::
 
         sage: x, dx, a, b = var('x dx a b')
         sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
         sage: first_approximation_polynomials(L, [a, b])
+        doctest:warning...
+        UserWarning: first_approximation: with the parameters symbolic the stability of Stationary solution {x: x} (isolated, implicit: see equations()) where [[3*x^2 - a < 0]] is undecided: the boundaries of its first approximation inside that region are not known
         [4*a^3 - 27*b^2]
 
     TESTS::
@@ -242,9 +248,11 @@ def first_approximation_polynomials(system, parameters, positive=()):
                             f"{', '.join(map(str, parameters))}: substitute values first, "
                             f"e.g. system.subs({{{', '.join(f'{v}: 1' for v in others)}}})",
                             entry="first_approximation")
-    found = []
+    found, undecided = [], []
     for sol in stationary_motions(system, positive=positive):
         verdict = sol.stability()
+        undecided += [f"{sol} where {case.region()}" for case in verdict.cases()
+                      if case.verdict() == 'undecided']
         relations = [r for case in verdict.cases() for alt in (case.region() or [])
                      for r in alt]
         relations += [r for rs in verdict.boundaries().values() for r in rs]
@@ -266,6 +274,12 @@ def first_approximation_polynomials(system, parameters, positive=()):
                 polys = [g for g, _ in f.factor_list() if SR(g).variables()]
             found += [g for g in polys if all(not bool(g - h == 0) and not bool(g + h == 0)
                                               for h in found)]
+    if undecided:
+        # the sample points decide these exactly, but a change of their
+        # verdict inside the region would not be on a boundary found here
+        warnings.warn("first_approximation: with the parameters symbolic the stability of "
+                      f"{'; '.join(undecided)} is undecided: the boundaries of its first "
+                      "approximation inside that region are not known", stacklevel=2)
     return found
 
 
@@ -520,6 +534,8 @@ class Census(SageObject):
         sage: x, dx, a, b = var('x dx a b')
         sage: cusp = equilibrium_census(Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x]), [a, b])
         sage: TestSuite(cusp).run(skip='_test_pickling')
+        doctest:warning...
+        UserWarning: first_approximation: ... where [[3*x^2 - a < 0]] is undecided: ...
     """
 
     def __init__(self, parameters, polynomials, cells, task, positive, region=None,
