@@ -273,13 +273,15 @@ def check_first_approximation_cells(census, p, stiffness, critical):
     for cell in cells:
         s = float(cell.sample()[p])
         assert cell.count() == 1
-        assert cell.stable_count(first_approximation=True) == first_approximation_stable(*stiffness(s))
+        expected = first_approximation_stable(*stiffness(s))
+        assert cell.stable_count(first_approximation=True) == expected
     values = census.bifurcation_values(first_approximation=True)
     assert min(abs(float(v) - critical) for v in values) < 1e-12
     for s in (critical - 1e-3, critical + 1e-3):
         cell, = [c for c in cells if (c.bounds()[0] is None or c.bounds()[0] < s)
                  and (c.bounds()[1] is None or s < c.bounds()[1])]
-        assert cell.stable_count(first_approximation=True) == first_approximation_stable(*stiffness(s))
+        expected = first_approximation_stable(*stiffness(s))
+        assert cell.stable_count(first_approximation=True) == expected
     return cells
 
 

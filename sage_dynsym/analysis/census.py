@@ -88,7 +88,8 @@ from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
 
-__all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at', 'CensusCell', 'Census',
+__all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at',
+           'CensusCell', 'Census',
            'equilibrium_census']
 
 
@@ -251,22 +252,24 @@ def first_approximation_polynomials(system, parameters, positive=()):
     found, undecided = [], []
     for sol in stationary_motions(system, positive=positive):
         verdict = sol.stability()
-        undecided += [f"{sol} where {case.region()}" for case in verdict.cases()
-                      if case.verdict() == 'undecided']
+        undecided += [f"{sol} where {case.region() or 'the parameters are'}"
+                      for case in verdict.cases() if case.verdict() == 'undecided']
         relations = [r for case in verdict.cases() for alt in (case.region() or [])
                      for r in alt]
         relations += [r for rs in verdict.boundaries().values() for r in rs]
         for r in relations:
             f = (SR(r.lhs()) - SR(r.rhs())).numerator()
             used = {str(v) for v in f.variables()}
+            if not used <= names | coordinates:
+                raise AnalysisError(f"the stability region of {sol} depends on "
+                                    f"{', '.join(sorted(used - names - coordinates))}, not a "
+                                    "parameter of the census", entry="first_approximation")
             # the angles enter through their cosines and sines (Translation)
-            if not used <= names | coordinates or \
-                    any(not f.is_polynomial(v) for v in f.variables() if str(v) in names):
-                raise AnalysisError(
-                    f"the stability region {verdict.region()} of {sol} is not polynomial "
-                    f"in {', '.join(map(str, parameters))}: give values to the other "
-                    f"symbols ({', '.join(sorted(used - names - coordinates)) or 'none'})",
-                    entry="first_approximation")
+            if any(not f.is_polynomial(v) for v in f.variables() if str(v) in names):
+                raise AnalysisError(f"the stability boundary {r} of {sol} is not polynomial "
+                                    f"in {', '.join(map(str, parameters))}: take as parameter "
+                                    "the expression it depends on (e.g. s = w^2 for sqrt(s))",
+                                    entry="first_approximation")
             if used & coordinates:
                 polys = _projection(W, q, parameters, f, f"the stability boundary {f} == 0 "
                                     f"contains a component of the equilibria of {sol}")
