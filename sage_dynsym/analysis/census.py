@@ -250,7 +250,9 @@ def first_approximation_polynomials(system, parameters, positive=()):
                             f"e.g. system.subs({{{', '.join(f'{v}: 1' for v in others)}}})",
                             entry="first_approximation")
     found, undecided = [], []
-    for sol in stationary_motions(system, positive=positive):
+    solutions = stationary_motions(system, positive=positive)
+    _log(f"the stability of {len(solutions)} stationary solutions, the parameters symbolic")
+    for sol in solutions:
         verdict = sol.stability()
         undecided += [f"{sol} where {case.region() or 'the parameters are'}"
                       for case in verdict.cases() if case.verdict() == 'undecided']
