@@ -69,6 +69,7 @@ REFERENCES:
 - V. V. Sarychev, S. A. Gutnik, *Relative equilibria of a gyrostat
   satellite*, Cosmic Research 22 (1984) 257--260.
 """
+import operator
 import warnings
 
 from sage.arith.misc import gcd
@@ -268,10 +269,7 @@ def first_approximation_polynomials(system, parameters, positive=()):
                                     "parameter of the census", entry="first_approximation")
             # the angles enter through their cosines and sines (Translation)
             if any(not f.is_polynomial(v) for v in f.variables() if str(v) in names):
-                raise AnalysisError(f"the stability boundary {r} of {sol} is not polynomial "
-                                    f"in {', '.join(map(str, parameters))}: take as parameter "
-                                    "the expression it depends on (e.g. s = w^2 for sqrt(s))",
-                                    entry="first_approximation")
+                f = _rationalized(f, r, sol)
             if used & coordinates:
                 polys = _projection(W, q, parameters, f, f"the stability boundary {f} == 0 "
                                     f"contains a component of the equilibria of {sol}")
@@ -286,6 +284,50 @@ def first_approximation_polynomials(system, parameters, positive=()):
                       f"{'; '.join(undecided)} is undecided: the boundaries of its first "
                       "approximation inside that region are not known", stacklevel=2)
     return found
+
+
+def _rationalized(f, relation, sol):
+    r"""
+    A polynomial vanishing where ``f`` does: each radical `b^{n/d}` of
+    ``f`` (the coordinates of an equilibrium in radicals of the
+    parameters) made a variable `t^n` with `t^d = b`, then eliminated by
+    resultants (the norm of ``f``: its zero set contains that of ``f``).
+
+    TESTS::
+
+        sage: from sage_dynsym.analysis.census import _rationalized
+        sage: p = var('p')
+        sage: _rationalized(p*sqrt(1 - 4*p^2) - 1/3, None, None).factor()
+        36*p^4 - 9*p^2 + 1
+        sage: _rationalized(sin(p) - 1/2, 'sin(p) > 1/2', 'this solution')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: first_approximation: the stability boundary sin(p) > 1/2 of this solution is not algebraic in the parameters (sin(p) - 1/2): take an algebraic function of them as the parameter
+    """
+    radicals = []
+
+    def rebuild(e):
+        op = e.operator()
+        if op is None:
+            return e
+        args = [rebuild(a) for a in e.operands()]
+        if op is operator.pow and args[1] in QQ and not QQ(args[1]).is_integer():
+            n, d = QQ(args[1]).numerator(), QQ(args[1]).denominator()
+            key = (args[0], d)
+            if key not in [k for k, _ in radicals]:
+                radicals.append((key, SR.var(f"radical{len(radicals)}")))
+            t = next(v for k, v in radicals if k == key)
+            return t ** n
+        return op(*args)
+    g = rebuild(SR(f)).numerator()
+    for (base, d), t in reversed(radicals):
+        num, den = SR(base).numerator_denominator()
+        g = SR(g.resultant(t ** d * den - num, t)) if g.has(t) else g
+    if any(not g.is_polynomial(v) for v in g.variables()):
+        raise AnalysisError(f"the stability boundary {relation} of {sol} is not algebraic in the "
+                            f"parameters ({f}): take an algebraic function of them as the "
+                            "parameter", entry="first_approximation")
+    return g
 
 
 # -- the equilibria at one point of the parameter space ----------------------------------
