@@ -20,9 +20,11 @@ independent computations.
   for h along a principal axis: between 8 and 24 equilibria, the stable
   ones from 4 to 2 (Gutnik and Sarychev).
 """
+import warnings
+
 import numpy as np
 import pytest
-from scipy.optimize import root
+from scipy.optimize import brentq, root
 from scipy.spatial.transform import Rotation
 
 from sage.all import SR, QQ, var, diagonal_matrix, zero_matrix, cos, sin
@@ -320,3 +322,80 @@ def test_census_routes_agree_and_close_quietly(tmp_path):
     # traceback of this process, no fault, no message of a cut connection at the close
     assert 'Traceback (most recent call last)' not in run.stderr, run.stderr
     assert 'Segmentation' not in run.stderr and 'CommClosedError' not in run.stderr, run.stderr
+
+
+# -- first approximation: gyroscopic stabilization -----------------------------------
+#
+# M x'' + G x' + K x = 0 with M = 1, G = g [[0, -1], [1, 0]], K = diag(k1, k2):
+# for k1, k2 < 0 the linearization is stable (all roots simple, on the
+# imaginary axis) iff g^2 + k1 + k2 > 2 sqrt(k1 k2), i.e. |g| > sqrt(-k1) +
+# sqrt(-k2) (Thomson and Tait; Merkin, Introduction to the Theory of
+# Stability, ch. 6). Neither boundary below is a degenerate equilibrium.
+
+def first_approximation_stable(k1, k2, g, tol=1e-9):
+    """NumPy: the eigenvalues of the first-order form, all simple and on the imaginary axis."""
+    A = np.array([[0, 0, 1, 0], [0, 0, 0, 1], [-k1, 0, 0, g], [0, -k2, -g, 0]], dtype=float)
+    ev = np.linalg.eigvals(A)
+    distinct = min(abs(a - b) for i, a in enumerate(ev) for b in ev[i + 1:]) > 1e-7
+    return bool(np.all(np.abs(ev.real) < tol) and distinct)
+
+
+def check_first_approximation_cells(census, p, stiffness, critical):
+    """Each cell of census.cells(first_approximation=True): its count in first
+    approximation against NumPy at its sample; and on both sides of the
+    critical value, the cells containing them against NumPy there."""
+    with warnings.catch_warnings():
+        # every stability region decided with the parameters symbolic: the set is complete
+        warnings.simplefilter('error')
+        cells = census.cells(first_approximation=True)
+    for cell in cells:
+        s = float(cell.sample()[p])
+        assert cell.count() == 1
+        expected = first_approximation_stable(*stiffness(s))
+        assert cell.stable_count(first_approximation=True) == expected
+    values = census.bifurcation_values(first_approximation=True)
+    assert min(abs(float(v) - critical) for v in values) < 1e-12
+    for s in (critical - 1e-3, critical + 1e-3):
+        cell, = [c for c in cells if (c.bounds()[0] is None or c.bounds()[0] < s)
+                 and (c.bounds()[1] is None or s < c.bounds()[1])]
+        expected = first_approximation_stable(*stiffness(s))
+        assert cell.stable_count(first_approximation=True) == expected
+    return cells
+
+
+def test_first_approximation_census_of_a_gyroscopically_stabilized_maximum():
+    # a potential maximum -(x^2 + 2 y^2)/2 coupled to a rotor (cyclic angle
+    # phi, momentum p) through x dy - y dx: the Routh function has the
+    # gyroscopic term p (x dy - y dx), g = 2 p, K = diag(-1, -2)
+    x, y, phi, dx, dy, dphi = var('x y phi dx dy dphi')
+    L = Lagrangian((dx**2 + dy**2) / 2 + (dphi + x * dy - y * dx)**2 / 2 + (x**2 + 2 * y**2) / 2,
+                   [x, y, phi])
+    R = L.routh([phi])
+    p = R.momenta()[0]
+    census = equilibrium_census(R, [p], positive=[p])
+    # the equilibrium x = y = 0 is never degenerate: no discriminant
+    assert census.bifurcation_set() == [] and len(census.cells()) == 1
+    critical = (1 + np.sqrt(2)) / 2            # 2 p = sqrt(1) + sqrt(2)
+    cells = check_first_approximation_cells(census, p, lambda s: (-1.0, -2.0, 2 * s), critical)
+    assert [c.stable_count(first_approximation=True) for c in cells][-1] == 1
+    assert all(c.stable_count() == 0 for c in cells)        # W has a maximum: never Routh-stable
+
+
+def test_first_approximation_census_of_a_turning_saddle():
+    # a particle on the saddle (x^2 - 2 y^2)/2 turning at the rate w, in the
+    # turning frame: K = diag(1 - w^2, -2 - w^2), g = 2 w; stable in first
+    # approximation in a window above w = 1 (where K is degenerate)
+    x, y, dx, dy, w = var('x y dx dy w')
+    L = Lagrangian((dx**2 + dy**2) / 2 + w * (x * dy - y * dx) + w**2 * (x**2 + y**2) / 2
+                   - (x**2 - 2 * y**2) / 2, [x, y])
+    census = equilibrium_census(L, [w], positive=[w])
+    assert [float(v) for v in census.bifurcation_values()] == [1.0]
+
+    def stiffness(s):
+        return 1 - s**2, -2 - s**2, 2 * s
+    # the upper end of the window: 2 w = sqrt(w^2 - 1) + sqrt(w^2 + 2)
+    critical = brentq(lambda s: 2 * s - np.sqrt(s**2 - 1) - np.sqrt(s**2 + 2), 1 + 1e-9, 2)
+    cells = check_first_approximation_cells(census, w, stiffness, critical)
+    assert [c.stable_count(first_approximation=True) for c in cells] == [0, 1, 0]
+    # the coarse cell 1 < w mixes both: the refined census is needed
+    assert [c.stable_count(first_approximation=True) for c in census.cells()] == [0, 0]

@@ -35,6 +35,14 @@ The values where only a chart artifact degenerates (solutions on the
 chart's singular set that are not equilibria) are in the bifurcation set
 too; the counts on both sides of them are equal.
 
+The stable count in first approximation changes also where an equilibrium
+stays nondegenerate but its linearization changes (gyroscopic
+stabilization: a pair of roots leaves the imaginary axis). Those boundaries
+are the relations of the stability regions of the equilibria solved with
+the parameters symbolic (:func:`first_approximation_polynomials`); they are
+in ``bifurcation_set(first_approximation=True)``, and
+``cells(first_approximation=True)`` are the cells adapted to it.
+
 EXAMPLES: a bead on a hoop turning at the rate `w` (`g = R = 1`): two
 equilibria below `w^2 = 1`, four above, the bottom stable below and the two
 tilted ones above (Goldstein, *Classical Mechanics*, §2.6)::
@@ -61,7 +69,9 @@ REFERENCES:
 - V. V. Sarychev, S. A. Gutnik, *Relative equilibria of a gyrostat
   satellite*, Cosmic Research 22 (1984) 257--260.
 """
+import operator
 import threading
+import warnings
 
 from sage.arith.misc import gcd
 from sage.libs.singular.function_factory import ff
@@ -80,7 +90,8 @@ from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
 
-__all__ = ['discriminant_polynomials', 'equilibria_at', 'CensusCell', 'Census',
+__all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at',
+           'CensusCell', 'Census',
            'equilibrium_census']
 
 
@@ -136,11 +147,21 @@ def discriminant_polynomials(W, coordinates, parameters):
     """
     q = [SR(x) for x in coordinates]
     H = matrix(SR, [[SR(W).diff(x).diff(y) for y in q] for x in q])
-    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[H.det()])
+    return _projection(W, q, parameters, H.det(),
+                       f"the stationary equations are degenerate for all values of "
+                       f"{', '.join(map(str, parameters))} (a family of equilibria); "
+                       "the census counts isolated equilibria only")
+
+
+def _projection(W, q, parameters, extra, degenerate):
+    r"""The irreducible factors of the projection on the parameters of
+    `\{\nabla W = 0,\ extra = 0\}`; ``degenerate`` is the message when a
+    component of the stationary set lies in `extra = 0` over every value."""
+    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[extra])
     P = T.ring()
     keep = {str(g) for p in parameters for g in T.generators_of(p)}
     state = [g for g in P.gens() if str(g) not in keep]
-    determinant = T.numerator(H.det())[0]
+    other = T.numerator(extra)[0]
     ideal = P.ideal(T.equations())
     for d in T.denominators():
         ideal = ideal.saturation(P.ideal(d))[0]
@@ -150,13 +171,10 @@ def discriminant_polynomials(W, coordinates, parameters):
     _log(f"eliminating {len(state)} variables from {len(parts)} parts")
     factors = []
     for part in parts:
-        gens = [g for g in (part + P.ideal([determinant])).elimination_ideal(state).gens()
+        gens = [g for g in (part + P.ideal([other])).elimination_ideal(state).gens()
                 if g != 0]
         if not gens:
-            raise AnalysisError(f"the stationary equations are degenerate for all values of "
-                                f"{', '.join(map(str, parameters))} (a family of equilibria); "
-                                "the census counts isolated equilibria only",
-                                entry="equilibrium_census")
+            raise AnalysisError(degenerate, entry="equilibrium_census")
         # the zero set of the ideal: the factors of the gcd for one parameter;
         # for two, a curve through it (a finite set of points lies on it)
         g = gcd(gens) if len(gens) > 1 else gens[0]
@@ -165,6 +183,152 @@ def discriminant_polynomials(W, coordinates, parameters):
         factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
                     and -f not in factors]
     return [T.symbolic(f) for f in factors]
+
+
+def first_approximation_polynomials(system, parameters, positive=()):
+    r"""
+    The boundaries, in the parameters, of the regions where the stationary
+    solutions of a Lagrangian or Routh function are stable (in the sense of
+    Lyapunov or in first approximation): the polynomials of the relations
+    of the regions of their stability verdicts (Routh's condition, the
+    Routh--Hurwitz or spectrum conditions of the first approximation, with
+    their :meth:`~sage_dynsym.analysis.verdict.StabilityVerdict.boundaries`),
+    solved with the parameters symbolic. A relation in the coordinates of
+    an implicit family is projected on the parameters (elimination with
+    the stationary equations).
+
+    INPUT:
+
+    - ``system`` -- a Lagrangian or Routh function whose only symbols
+      other than its coordinates and velocities are ``parameters``
+    - ``parameters`` -- a list of symbols
+    - ``positive`` -- symbols declared positive
+
+    OUTPUT: a list of irreducible symbolic polynomials in the parameters
+
+    EXAMPLES: a particle in a saddle potential `(x^2 - 2y^2)/2` turning at
+    the rate `w`, seen in the turning frame: the saddle is stable in first
+    approximation for `1 < w^2 < 9/8` (gyroscopic stabilization); only
+    `w = 1` is a degenerate equilibrium::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import (first_approximation_polynomials,
+        ....:                                          discriminant_polynomials)
+        sage: x, y, dx, dy, w = var('x y dx dy w')
+        sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+        ....:                + (w^2 + 2)*y^2/2, [x, y])
+        sage: first_approximation_polynomials(L, [w], positive=[w])
+        [w - 1, 8*w^2 - 9]
+        sage: discriminant_polynomials(-(w^2 - 1)*x^2/2 - (w^2 + 2)*y^2/2, [x, y], [w])
+        [w - 1, w + 1, w^2 + 2]
+
+    The cusp: the minima of an implicit family end where `3x^2 = a`, on
+    the discriminant. Where `3x^2 < a` (the maxima) the verdict is not
+    decided with the parameters symbolic: a warning says so (the census
+    decides them at its samples)::
+
+        sage: x, dx, a, b = var('x dx a b')
+        sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
+        sage: first_approximation_polynomials(L, [a, b])
+        doctest:warning...
+        UserWarning: first_approximation: with the parameters symbolic the stability of Stationary solution {x: x} (isolated, implicit: see equations()) where [[3*x^2 - a < 0]] is undecided: the boundaries of its first approximation inside that region are not known
+        [4*a^3 - 27*b^2]
+
+    TESTS::
+
+        sage: first_approximation_polynomials(L, [a])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: first_approximation: the system depends on b besides the parameters a: substitute values first, e.g. system.subs({b: 1})
+    """
+    from .stationary import stationary_motions
+    q, W = _amended_potential(system)
+    names = {str(v) for v in parameters}
+    coordinates = {str(v) for v in q}
+    others = sorted(str(v) for v in SR(W).variables() if str(v) not in names | coordinates)
+    if others:
+        raise AnalysisError(f"the system depends on {', '.join(others)} besides the parameters "
+                            f"{', '.join(map(str, parameters))}: substitute values first, "
+                            f"e.g. system.subs({{{', '.join(f'{v}: 1' for v in others)}}})",
+                            entry="first_approximation")
+    found, undecided = [], []
+    solutions = stationary_motions(system, positive=positive)
+    _log(f"the stability of {len(solutions)} stationary solutions, the parameters symbolic")
+    for sol in solutions:
+        verdict = sol.stability()
+        undecided += [f"{sol} where {case.region() or 'the parameters are'}"
+                      for case in verdict.cases() if case.verdict() == 'undecided']
+        relations = [r for case in verdict.cases() for alt in (case.region() or [])
+                     for r in alt]
+        relations += [r for rs in verdict.boundaries().values() for r in rs]
+        for r in relations:
+            f = (SR(r.lhs()) - SR(r.rhs())).numerator()
+            used = {str(v) for v in f.variables()}
+            if not used <= names | coordinates:
+                raise AnalysisError(f"the stability region of {sol} depends on "
+                                    f"{', '.join(sorted(used - names - coordinates))}, not a "
+                                    "parameter of the census", entry="first_approximation")
+            # the angles enter through their cosines and sines (Translation)
+            if any(not f.is_polynomial(v) for v in f.variables() if str(v) in names):
+                f = _rationalized(f, r, sol)
+            if used & coordinates:
+                polys = _projection(W, q, parameters, f, f"the stability boundary {f} == 0 "
+                                    f"contains a component of the equilibria of {sol}")
+            else:
+                polys = [g for g, _ in f.factor_list() if SR(g).variables()]
+            found += [g for g in polys if all(not bool(g - h == 0) and not bool(g + h == 0)
+                                              for h in found)]
+    if undecided:
+        # the sample points decide these exactly, but a change of their
+        # verdict inside the region would not be on a boundary found here
+        warnings.warn("first_approximation: with the parameters symbolic the stability of "
+                      f"{'; '.join(undecided)} is undecided: the boundaries of its first "
+                      "approximation inside that region are not known", stacklevel=2)
+    return found
+
+
+def _rationalized(f, relation, sol):
+    r"""
+    A polynomial vanishing where ``f`` does: each radical `b^{n/d}` of
+    ``f`` (the coordinates of an equilibrium in radicals of the
+    parameters) made a variable `t^n` with `t^d = b`, then eliminated by
+    resultants (the norm of ``f``: its zero set contains that of ``f``).
+
+    TESTS::
+
+        sage: from sage_dynsym.analysis.census import _rationalized
+        sage: p = var('p')
+        sage: _rationalized(p*sqrt(1 - 4*p^2) - 1/3, None, None).factor()
+        36*p^4 - 9*p^2 + 1
+        sage: _rationalized(sin(p) - 1/2, 'sin(p) > 1/2', 'this solution')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: first_approximation: the stability boundary sin(p) > 1/2 of this solution is not algebraic in the parameters (sin(p) - 1/2): take an algebraic function of them as the parameter
+    """
+    radicals = []
+
+    def rebuild(e):
+        op = e.operator()
+        if op is None:
+            return e
+        args = [rebuild(a) for a in e.operands()]
+        if op is operator.pow and args[1] in QQ and not QQ(args[1]).is_integer():
+            n, d = QQ(args[1]).numerator(), QQ(args[1]).denominator()
+            key = (args[0], d)
+            if key not in [k for k, _ in radicals]:
+                radicals.append((key, SR.var(f"radical{len(radicals)}")))
+            t = next(v for k, v in radicals if k == key)
+            return t ** n
+        return op(*args)
+    g = rebuild(SR(f)).numerator()
+    for (base, d), t in reversed(radicals):
+        num, den = SR(base).numerator_denominator()
+        g = SR(g.resultant(t ** d * den - num, t)) if g.has(t) else g
+    if any(not g.is_polynomial(v) for v in g.variables()):
+        raise AnalysisError(f"the stability boundary {relation} of {sol} is not algebraic in the "
+                            f"parameters ({f}): take an algebraic function of them as the "
+                            "parameter", entry="first_approximation")
+    return g
 
 
 # -- the equilibria at one point of the parameter space ----------------------------------
@@ -382,7 +546,8 @@ class CensusCell(SageObject):
         r"""
         The number of equilibria stable in the sense of Lyapunov (Routh's
         theorem); with ``first_approximation=True`` those stable in first
-        approximation are added.
+        approximation are added (that number is constant on the cells of
+        ``Census.cells(first_approximation=True)``, not always on the others).
 
         EXAMPLES: see :class:`CensusCell`.
         """
@@ -419,18 +584,37 @@ class Census(SageObject):
     their samples::
 
         sage: TestSuite(census).run(skip='_test_pickling')
+        sage: x, y, dx, dy = var('x y dx dy')
+        sage: turning = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+        ....:                      + (w^2 + 2)*y^2/2, [x, y])
+        sage: TestSuite(equilibrium_census(turning, [w], positive=[w])).run(skip='_test_pickling')
         sage: x, dx, a, b = var('x dx a b')
         sage: cusp = equilibrium_census(Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x]), [a, b])
         sage: TestSuite(cusp).run(skip='_test_pickling')
+        doctest:warning...
+        UserWarning: first_approximation: ... where [[3*x^2 - a < 0]] is undecided: ...
     """
 
-    def __init__(self, parameters, polynomials, cells, task, positive, region=None):
+    def __init__(self, parameters, polynomials, cells, task, positive, region=None,
+                 refine=None):
         self._parameters = parameters
         self._polynomials = polynomials
         self._cells = cells
         self._task = task
         self._positive = positive
         self._region = region
+        self._refine = refine
+        self._refined = None
+
+    def _first_approximation(self):
+        r"""The bifurcation set with the first-approximation boundaries and
+        its cells, computed once (see :meth:`cells`)."""
+        if self._refined is None:
+            if self._refine is None:
+                raise AnalysisError("this census was built without its system: use "
+                                    "equilibrium_census(...)", entry="first_approximation")
+            self._refined = self._refine()
+        return self._refined
 
     def _repr_(self):
         where = " and ".join(f"{p} > 0" for p in self._parameters if self._is_positive(p))
@@ -462,6 +646,27 @@ class Census(SageObject):
             for left, right in zip(self._cells, self._cells[1:]):
                 tester.assertEqual(left.bounds()[1], right.bounds()[0])
 
+    def _test_first_approximation(self, **options):
+        r"""The cells adapted to the first-approximation boundaries refine
+        the cells: their samples lie off the larger set, and (over one
+        parameter) each lies in a cell with the same count and stable count.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        polys = self.bifurcation_set(first_approximation=True)
+        tester.assertEqual(polys[:len(self._polynomials)], self._polynomials)
+        for cell in self.cells(first_approximation=True):
+            tester.assertTrue(all(not SR(f).subs(cell.sample()).is_zero() for f in polys))
+            if len(self._parameters) == 1 and cell.bounds() is not None:
+                lo, hi = cell.bounds()
+                coarse = [c for c in self._cells
+                          if (c.bounds()[0] is None or lo is not None and c.bounds()[0] <= lo)
+                          and (c.bounds()[1] is None or hi is not None and hi <= c.bounds()[1])]
+                tester.assertEqual(len(coarse), 1)
+                tester.assertEqual((coarse[0].count(), coarse[0].stable_count()),
+                                   (cell.count(), cell.stable_count()))
+
     def _is_positive(self, p):
         return any(str(p) == str(q) for q in self._positive)
 
@@ -472,21 +677,44 @@ class Census(SageObject):
         """
         return list(self._parameters)
 
-    def bifurcation_set(self):
+    def bifurcation_set(self, first_approximation=False):
         r"""
         The polynomials in the parameters whose zero sets bound the cells
         (irreducible over `\QQ`): where an equilibrium is degenerate, in the
-        chart or in the regular chart.
+        chart or in the regular chart. The count and the Lyapunov stable
+        count are constant off this set.
 
-        EXAMPLES: see :class:`Census`.
+        INPUT:
+
+        - ``first_approximation`` -- (default: ``False``) if ``True``, the
+          boundaries of the stability regions of the equilibria (Routh's
+          condition and the first approximation: see
+          :func:`first_approximation_polynomials`) are appended, those not
+          in the set already: the cells of ``cells(first_approximation=True)``,
+          where ``stable_count(first_approximation=True)`` is constant too
+
+        EXAMPLES: see :class:`Census`, and a saddle stabilized by turning
+        (`1 < w^2 < 9/8`, see :func:`first_approximation_polynomials`)::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: x, y, dx, dy, w = var('x y dx dy w')
+            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+            ....:                + (w^2 + 2)*y^2/2, [x, y])
+            sage: census = equilibrium_census(L, [w], positive=[w])
+            sage: census.bifurcation_set(), census.bifurcation_set(first_approximation=True)
+            ([w - 1], [w - 1, 8*w^2 - 9])
         """
+        if first_approximation:
+            return list(self._first_approximation()[0])
         return list(self._polynomials)
 
-    def bifurcation_values(self):
+    def bifurcation_values(self, first_approximation=False):
         r"""
         For a census over one parameter: the bifurcation values inside the
         declared signs, exact (real algebraic numbers; ``radical_expression()``
-        gives radicals), sorted.
+        gives radicals), sorted; with ``first_approximation=True``, those of
+        ``bifurcation_set(first_approximation=True)``.
 
         EXAMPLES: see :class:`Census`.
 
@@ -507,14 +735,39 @@ class Census(SageObject):
                                 "set is a set of curves, bifurcation_set() gives their "
                                 "equations", entry="bifurcation_values")
         p = self._parameters[0]
-        return [r for r in _real_roots(self._polynomials, p, self._is_positive(p))
-                if r != 0 or any(SR(f).subs({p: 0}).is_zero() for f in self._polynomials)]
+        polys = self.bifurcation_set(first_approximation)
+        return [r for r in _real_roots(polys, p, self._is_positive(p))
+                if r != 0 or any(SR(f).subs({p: 0}).is_zero() for f in polys)]
 
-    def cells(self):
-        r"""The cells (:class:`CensusCell`), each with a sample point and its counts.
+    def cells(self, first_approximation=False):
+        r"""
+        The cells (:class:`CensusCell`), each with a sample point and its
+        counts.
 
-        EXAMPLES: see :class:`Census`.
+        INPUT:
+
+        - ``first_approximation`` -- (default: ``False``) if ``True``, the
+          cells of ``bifurcation_set(first_approximation=True)``: finer,
+          each with a constant ``stable_count(first_approximation=True)``
+          (the stability regions are computed with the parameters symbolic
+          on the first call)
+
+        EXAMPLES: see :class:`Census`; the turning saddle is stable in first
+        approximation in the middle cell only::
+
+            sage: from sage_dynsym import Lagrangian
+            sage: from sage_dynsym.analysis.census import equilibrium_census
+            sage: x, y, dx, dy, w = var('x y dx dy w')
+            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+            ....:                + (w^2 + 2)*y^2/2, [x, y])
+            sage: census = equilibrium_census(L, [w], positive=[w])
+            sage: for cell in census.cells(first_approximation=True): print(cell)
+            0 < w < 1 (sample w = 1/2): 1 equilibrium, 0 stable
+            1 < w < 3/2*sqrt(1/2) (sample w = 18/17): 1 equilibrium, 0 stable, 1 more stable in first approximation
+            3/2*sqrt(1/2) < w (sample w = 2): 1 equilibrium, 0 stable
         """
+        if first_approximation:
+            return list(self._first_approximation()[1])
         return list(self._cells)
 
     def count_at(self, values):
@@ -551,6 +804,20 @@ class Census(SageObject):
             sage: census = equilibrium_census(L, [a, b])
             sage: census.plot()
             Graphics object consisting of ... graphics primitives
+
+        With ``first_approximation=True``, the cells of
+        ``cells(first_approximation=True)`` coloured by
+        ``stable_count(first_approximation=True)``: the turning saddle (see
+        :meth:`cells`) is stable in first approximation on the middle step::
+
+            sage: x, y, dx, dy, w = var('x y dx dy w')
+            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+            ....:                + (w^2 + 2)*y^2/2, [x, y])
+            sage: G = equilibrium_census(L, [w], positive=[w]).plot(first_approximation=True)
+            sage: [p.options()['legend_label'] for p in G]
+            ['1 equilibrium, 0 stable (with first approximation)',
+             '1 equilibrium, 1 stable (with first approximation)',
+             '1 equilibrium, 0 stable (with first approximation)']
         """
         from .census_plot import census_plot
         return census_plot(self, self._region, **options)
@@ -709,10 +976,7 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         q2, W2 = _amended_potential(regular[0])
         polys += [f for f in discriminant_polynomials(SR(W2).subs(values), q2, parameters)
                   if all(not bool(SR(f) - g == 0) for g in polys)]
-    if len(parameters) == 1:
-        # only the factors with a zero inside the declared signs bound cells
-        polys = [f for f in polys if any(r > 0 or not signs[0] for r in
-                                         _real_roots([f], parameters[0], False))]
+    polys = _inside(polys, parameters, signs)
     _log(f"bifurcation set {polys}")
     fixed2 = None if regular is None else \
         ((regular[0].subs(values) if values else regular[0]), regular[1])
@@ -730,13 +994,39 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         futures = [executor.submit(_count_task, *a) for a in arguments]
         return [f.result() for f in futures]
 
+    def refine():
+        # the first-approximation boundaries are solved with the parameters
+        # symbolic, only when asked: that can take much longer than the census
+        more = []
+        for model in [fixed] + ([] if fixed2 is None else [fixed2[0]]):
+            more += [f for f in first_approximation_polynomials(model, parameters, positive)
+                     if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0)
+                            for g in polys + more)]
+        more = _inside(more, parameters, signs)
+        _log(f"first-approximation boundaries {more}")
+        return polys + more, _decomposition(polys + more, parameters, signs, counts_of)
+
+    return Census(parameters, polys, _decomposition(polys, parameters, signs, counts_of),
+                  task, positive, region=signs if len(parameters) == 2 else None,
+                  refine=refine)
+
+
+def _inside(polys, parameters, signs):
+    r"""For one parameter, the factors with a zero inside the declared
+    signs (only those bound cells); for two, all."""
+    if len(parameters) != 1:
+        return polys
+    return [f for f in polys if any(r > 0 or not signs[0] for r in
+                                    _real_roots([f], parameters[0], False))]
+
+
+def _decomposition(polys, parameters, signs, counts_of):
+    r"""The cells adapted to ``polys``, with the counts at their samples
+    (``counts_of`` a list of samples)."""
     if len(parameters) == 1:
-        shape = _cells_one(polys, parameters[0], signs[0], lambda s: None)
-        found = counts_of([c.sample() for c in shape])
-        cells = [CensusCell(c.description(), c.sample(), n, c.bounds())
-                 for c, n in zip(shape, found)]
-        return Census(parameters, polys, cells, task, positive)
-    shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
-    found = counts_of([s for _, s, _ in shape])
-    cells = [CensusCell(text, sample, n, bounds) for (text, sample, bounds), n in zip(shape, found)]
-    return Census(parameters, polys, cells, task, positive, region=signs)
+        shape = [(c.description(), c.sample(), c.bounds())
+                 for c in _cells_one(polys, parameters[0], signs[0], lambda s: None)]
+    else:
+        shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
+    found = counts_of([sample for _, sample, _ in shape])
+    return [CensusCell(text, sample, n, bounds) for (text, sample, bounds), n in zip(shape, found)]

@@ -32,8 +32,9 @@ __all__ = ['POINTS', 'census_plot']
 POINTS = 60
 
 
-def _label(n, stable):
-    return f"{n} equilibri{'um' if n == 1 else 'a'}, {stable} stable"
+def _label(n, stable, first_approximation=False):
+    return f"{n} equilibri{'um' if n == 1 else 'a'}, {stable} stable" + \
+        (" (with first approximation)" if first_approximation else "")
 
 
 def _sections(polys, p1, p2, t):
@@ -46,7 +47,8 @@ def _sections(polys, p1, p2, t):
     return sorted(roots)
 
 
-def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **options):
+def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None,
+                first_approximation=False, **options):
     r"""
     The picture of a census: see :meth:`~sage_dynsym.analysis.census.Census.plot`.
 
@@ -55,13 +57,19 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **opt
     - ``census`` -- a :class:`~sage_dynsym.analysis.census.Census`
     - ``signs`` -- for each parameter whether it is declared positive
     - ``xmin``, ``xmax``, ``ymin``, ``ymax`` -- (optional) the window
+    - ``first_approximation`` -- (default: ``False``) if ``True``, the cells
+      and curves of ``bifurcation_set(first_approximation=True)``, coloured
+      by the count and ``stable_count(first_approximation=True)``
     - further options are passed to ``Graphics.show`` defaults
 
     EXAMPLES: see the module documentation.
     """
-    cells = census.cells()
+    cells = census.cells(first_approximation)
     params = census.parameters()
-    counts = sorted({(c.count(), c.stable_count()) for c in cells})
+
+    def key_of(c):
+        return c.count(), c.stable_count(first_approximation)
+    counts = sorted({key_of(c) for c in cells})
     colours = dict(zip(counts, rainbow(max(len(counts), 2))))
     G = Graphics()
     if len(params) == 1:
@@ -69,9 +77,9 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **opt
             lo, hi = c.bounds()
             a = float(lo) if lo is not None else float(c.sample()[params[0]]) - 1
             b = float(hi) if hi is not None else float(c.sample()[params[0]]) + 1
-            key = (c.count(), c.stable_count())
+            key = key_of(c)
             G += line([(a, c.count()), (b, c.count())], color=colours[key], thickness=3,
-                      legend_label=_label(*key))
+                      legend_label=_label(*key, first_approximation))
         G.axes_labels([str(params[0]), 'equilibria'])
         return G
     p1, p2 = params
@@ -89,7 +97,7 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **opt
     if not xmin < xmax or not ymin < ymax:
         raise AnalysisError(f"the window {xmin} < {p1} < {xmax}, {ymin} < {p2} < {ymax} is "
                             "empty", entry="plot")
-    polys = census.bifurcation_set()
+    polys = census.bifurcation_set(first_approximation)
     labelled = set()
     for c in cells:
         lo, hi, k, n = c.bounds()
@@ -109,8 +117,8 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None, **opt
             upper.append((t, min(max(bounds[k + 1], ymin), ymax)))
         if not lower:
             continue
-        key = (c.count(), c.stable_count())
-        label = _label(*key) if key not in labelled else None
+        key = key_of(c)
+        label = _label(*key, first_approximation) if key not in labelled else None
         labelled.add(key)
         G += polygon(lower + upper[::-1], color=colours[key], alpha=0.7, thickness=0,
                      **({'legend_label': label} if label else {}))
