@@ -150,7 +150,7 @@ def normalize(expr, angles=(), factor=False):
         return expr
 
 
-def vanishes(expr):
+def vanishes(expr, maxima=True):
     r"""
     Whether ``expr`` is identically zero: its canonical form
     (:func:`normalize`) is zero, or Maxima's full simplification is (for
@@ -159,9 +159,13 @@ def vanishes(expr):
     INPUT:
 
     - ``expr`` -- a symbolic expression
+    - ``maxima`` -- (default: ``True``) whether to ask Maxima when the
+      canonical form is not zero; ``False`` is the fast test: Sage's own
+      zero test and the canonical form only
 
     OUTPUT: ``True`` if ``expr`` is shown to be zero, ``False`` otherwise
-    (also when the simplification cannot decide)
+    (also when the simplification cannot decide, or cannot be computed, as
+    for a square root of a negative decimal)
 
     EXAMPLES::
 
@@ -171,13 +175,21 @@ def vanishes(expr):
         (True, False)
         sage: vanishes(sin(a)^2 + cos(a)^2 - 1)
         True
+        sage: vanishes(log(exp(a)) - a), vanishes(log(exp(a)) - a, maxima=False)
+        (True, False)
+
+    TESTS::
+
+        sage: vanishes(sqrt(-1.5)*a, maxima=False), vanishes(sqrt(-1.5)*a - sqrt(-1.5)*a)
+        (False, True)
     """
     expr = SR(expr)
-    if expr.is_zero() or normalize(expr).is_zero():
-        return True
     try:
-        return bool(expr.simplify_full().is_zero())
-    except (TypeError, ValueError):     # Maxima gives up: not shown to be zero
+        if expr.is_zero() or normalize(expr).is_zero():
+            return True
+        return maxima and bool(expr.simplify_full().is_zero())
+    except (TypeError, ValueError, ArithmeticError, RuntimeError):
+        # the normal form, or Maxima, gives up: not shown to be zero
         return False
 
 

@@ -94,7 +94,7 @@ from sage.misc.latex import latex
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
-from ..algebra.solving import normalize
+from ..algebra.solving import normalize, vanishes
 from ..arguments import expression_argument
 from ..errors import AnalysisError, ModelError, brief
 from ..algebra.polynomial_spaces import PolynomialContext, monomial_expression
@@ -320,7 +320,7 @@ class PoissonStructure(SageObject):
         J, x, n = self._J, self._variables, len(self._variables)
         for i in range(n):
             for j in range(i, n):
-                if not _is_zero(J[i, j] + J[j, i]):
+                if not vanishes(J[i, j] + J[j, i], maxima=False):
                     raise ModelError(f"the matrix is not skew-symmetric: entry ({i}, {j}) is "
                                      f"{J[i, j]}, entry ({j}, {i}) is {J[j, i]}", entry="algebra")
         for i in range(n):
@@ -328,7 +328,7 @@ class PoissonStructure(SageObject):
                 for k in range(j + 1, n):
                     jac = sum(J[i, l] * J[j, k].diff(x[l]) + J[j, l] * J[k, i].diff(x[l]) +
                               J[k, l] * J[i, j].diff(x[l]) for l in range(n))
-                    if not _is_zero(jac):
+                    if not vanishes(jac, maxima=False):
                         a, b, c = x[i], x[j], x[k]
                         raise ModelError(
                             f"the matrix breaks the Jacobi identity: {{{a}, {{{b}, {c}}}}} + "
@@ -423,7 +423,7 @@ class PoissonStructure(SageObject):
             coefficients = [c.diff(v) for v in x]
             if any(set(d.variables()) & set(x) for d in coefficients):
                 return False
-            if not _is_zero(c - sum(d * v for d, v in zip(coefficients, x))):
+            if not vanishes(c - sum(d * v for d, v in zip(coefficients, x)), maxima=False):
                 return False
         return True
 
@@ -508,13 +508,6 @@ def collect(e, variables):
         return _normal(e)
     return sum((SR(c / d).factor() * monomial_expression(P.variables, m)
                 for m, c in P.split(f).items()), SR(0))
-
-
-def _is_zero(e):
-    e = SR(e)
-    if e.is_zero():
-        return True
-    return bool(_normal(e).is_zero())
 
 
 def lie_algebra(name, variables=None):
@@ -642,7 +635,7 @@ def structure_constants_matrix(constants, variables):
                 raise ModelError(f"the bracket [{x[i]}, {x[j]}] is given twice: {once}",
                                  entry="algebra")
             if (j, i) in brackets:
-                if not _is_zero(b + brackets[j, i]):
+                if not vanishes(b + brackets[j, i], maxima=False):
                     raise ModelError(f"the structure constants are not skew-symmetric: "
                                      f"[{x[j]}, {x[i]}] = {brackets[j, i]} but [{x[i]}, {x[j]}] "
                                      f"= {b}; {once}", entry="algebra")
@@ -663,7 +656,7 @@ def structure_constants_matrix(constants, variables):
                 brackets[i, j] = sum(SR(c[i][j][k]) * x[k] for k in range(n))
     for (i, j), b in list(brackets.items()):
         if (j, i) in brackets:
-            if not _is_zero(b + brackets[j, i]):
+            if not vanishes(b + brackets[j, i], maxima=False):
                 raise ModelError(f"the structure constants are not skew-symmetric: "
                                  f"[{x[i]}, {x[j]}] = {b} but [{x[j]}, {x[i]}] = "
                                  f"{brackets[j, i]}", entry="algebra")

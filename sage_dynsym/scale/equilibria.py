@@ -40,7 +40,7 @@ from sage.symbolic.constants import pi
 from sage.symbolic.ring import SR
 
 from ..algebra.determinants import fraction_free_det
-from ..algebra.solving import normalize
+from ..algebra.solving import vanishes
 from ..analysis.linear import equations_of_motion, linearize
 from ..analysis.motion import SecondOrderEquations
 from ..dynamics.model import linearization_point
@@ -137,14 +137,14 @@ class _Problem:
 
     def vanishes(self, i, point):
         value = self.residual(i, point)
-        return value is not None and _is_zero(value)
+        return value is not None and vanishes(value, maxima=False)
 
     def regular(self, point):
         r"""Whether the kinetic matrix is regular at ``point``."""
         if self.kinetic is None:
             return True
         try:
-            return not _is_zero(fraction_free_det(self.kinetic.subs(point)))
+            return not vanishes(fraction_free_det(self.kinetic.subs(point)), maxima=False)
         except (ValueError, ZeroDivisionError, RuntimeError, ArithmeticError):
             return False
 
@@ -243,14 +243,6 @@ class _Problem:
                 seen.add(value)
                 unique.append((value, text, is_near))
         return unique
-
-
-def _is_zero(expr):
-    expr = SR(expr)
-    try:
-        return bool(expr.is_zero() or normalize(expr).is_zero())
-    except (TypeError, ValueError, ArithmeticError, RuntimeError):
-        return False
 
 
 def _near_multiple_of_pi(value):
