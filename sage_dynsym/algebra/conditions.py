@@ -41,8 +41,8 @@ from sage.rings.rational_field import QQ
 from sage.structure.element import Element
 from sage.symbolic.ring import SR
 
-from .polynomials import (positive_polynomial, parameter_ring, to_ring, to_sr, is_constant,
-                          constant_value, is_polynomial_ring, FACTOR_LIMIT)
+from .polynomials import (positive_polynomial, odd_factors, parameter_ring, to_ring, to_sr,
+                          is_constant, constant_value, is_polynomial_ring, FACTOR_LIMIT)
 from .translation import translate_expressions
 
 __all__ = ['Unexpanded', 'simplify_conditions', 'reduce_conditions', 'conditions_as_expressions',
@@ -108,19 +108,7 @@ def _simplify_one(f, positive):
         return f.parent()(-1), None
     if len(f.dict()) > FACTOR_LIMIT:
         return f, frozenset([f])
-    F = f.factor()
-    sign = QQ(F.unit()).sign()
-    kept = []
-    for g, e in F:
-        if positive_polynomial(g, positive):
-            continue
-        if positive_polynomial(-g, positive):
-            sign = sign * (-1) ** e
-            continue
-        if e % 2:
-            if g.lc() < 0:      # canonical sign, so that equal factors match
-                g, sign = -g, -sign
-            kept.append(g)
+    sign, kept = odd_factors(f.factor(), positive)
     if not kept:
         return (None, None) if sign > 0 else (f.parent()(-1), None)
     product = sign

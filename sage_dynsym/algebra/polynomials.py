@@ -29,7 +29,7 @@ from ..errors import AnalysisError
 
 __all__ = ['FACTOR_LIMIT', 'parameter_ring', 'to_ring', 'to_sr', 'polynomial_to_sr',
            'is_polynomial_ring', 'is_constant', 'constant_value', 'positive_polynomial',
-           'maxima_without_questions']
+           'odd_factors', 'maxima_without_questions']
 
 #: Polynomials with more terms than this are not factored.
 FACTOR_LIMIT = 3000
@@ -203,6 +203,48 @@ def positive_polynomial(f, positive):
             strict = True
     return strict
 
+
+
+def odd_factors(factorization, positive):
+    r"""
+    What decides the sign of a factored polynomial: its factors of odd
+    multiplicity that are not positive (:func:`positive_polynomial`), and
+    a sign.
+
+    INPUT:
+
+    - ``factorization`` -- the factorization of a polynomial `f`
+      (``f.factor()``)
+    - ``positive`` -- the names of the variables declared positive
+
+    OUTPUT: a pair ``(sign, odd)``, ``sign`` `\pm 1` and ``odd`` a list of
+    factors, each with a positive leading coefficient (so that equal factors
+    of different polynomials compare equal): wherever `f` is not zero, it
+    has the sign of ``sign * prod(odd)``; ``odd`` is empty when the sign of
+    `f` is ``sign`` everywhere
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.polynomials import odd_factors
+        sage: R.<a, b, m> = QQ[]
+        sage: odd_factors((-3*m*(b - a)*(a - 2)^2).factor(), {'m'})
+        (1, [a - b])
+        sage: odd_factors((-m^2 - 1).factor(), set())
+        (-1, [])
+    """
+    sign = QQ(factorization.unit()).sign()
+    odd = []
+    for g, e in factorization:
+        if positive_polynomial(g, positive):
+            continue
+        if positive_polynomial(-g, positive):
+            sign *= (-1) ** e
+            continue
+        if e % 2:
+            if g.lc() < 0:
+                g, sign = -g, -sign
+            odd.append(g)
+    return sign, odd
 
 @contextmanager
 def maxima_without_questions(entry, positive=()):

@@ -28,7 +28,7 @@ from sage.symbolic.ring import SR
 
 from ..arguments import expression_argument, expression_list, matrix_argument
 from ..errors import AnalysisError
-from ..algebra.polynomials import positive_polynomial
+from ..algebra.polynomials import positive_polynomial, odd_factors
 from ..algebra.conditions import positive_conditions_all, nonzero_conditions, conjunction
 from ..algebra.solving import normalize
 from ..algebra.translation import Translation
@@ -268,19 +268,7 @@ def semidefiniteness_conditions(A, positive=()):
                 if QQ(p if flat is None else p.constant_coefficient()) < 0:
                     return None
                 continue
-            factors = flat(p).factor()
-            sign = QQ(factors.unit()).sign()
-            odd = []
-            for f, e in factors:
-                if positive_polynomial(f, names):
-                    continue
-                if positive_polynomial(-f, names):
-                    sign *= (-1) ** e
-                    continue
-                if e % 2:
-                    if f.lc() < 0:
-                        f, sign = -f, -sign
-                    odd.append(f)
+            sign, odd = odd_factors(flat(p).factor(), names)
             if not odd:
                 if sign < 0:
                     return None
