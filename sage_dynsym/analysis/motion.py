@@ -34,6 +34,17 @@ from ..errors import AnalysisError
 __all__ = ['SecondOrderEquations', 'FirstOrderEquations']
 
 
+def _with_multipliers(constraints, multipliers, what):
+    r"""``constraints`` and their ``multipliers`` as lists of symbolic
+    expressions, checked to be as many."""
+    constraints = [SR(f) for f in constraints]
+    multipliers = [SR(v) for v in multipliers]
+    if len(constraints) != len(multipliers):
+        raise AnalysisError(f"{len(constraints)} {what} for {len(multipliers)} multipliers",
+                            entry="equations of motion")
+    return constraints, multipliers
+
+
 class SecondOrderEquations(SageObject):
     r"""
     Equations `E_i(q, \dot q, \ddot q) = 0`.
@@ -113,18 +124,10 @@ class SecondOrderEquations(SageObject):
                                 "coordinates", entry="equations of motion")
         self._function = None if function is None else SR(function)
         self._kinetic = None if kinetic is None else matrix(SR, kinetic)
-        self._constraints = [SR(f) for f in constraints]
-        self._multipliers = [SR(v) for v in multipliers]
-        if len(self._constraints) != len(self._multipliers):
-            raise AnalysisError(f"{len(self._constraints)} constraints for "
-                                f"{len(self._multipliers)} multipliers",
-                                entry="equations of motion")
-        self._velocity_constraints = [SR(g) for g in velocity_constraints]
-        self._velocity_multipliers = [SR(v) for v in velocity_multipliers]
-        if len(self._velocity_constraints) != len(self._velocity_multipliers):
-            raise AnalysisError(f"{len(self._velocity_constraints)} velocity constraints for "
-                                f"{len(self._velocity_multipliers)} multipliers",
-                                entry="equations of motion")
+        self._constraints, self._multipliers = _with_multipliers(
+            constraints, multipliers, "constraints")
+        self._velocity_constraints, self._velocity_multipliers = _with_multipliers(
+            velocity_constraints, velocity_multipliers, "velocity constraints")
 
     def _repr_(self):
         text = (f"Second-order equations in ({', '.join(map(str, self._q))}): "

@@ -163,32 +163,36 @@ class _Search:
             self.X = [sum(self.J[i][j] * dh[j] for j in range(n)) for i in range(n)]
 
     def casimir_problem(self, d):
-        if d not in self._casimir_problems:
-            P, n = self.context, self.context.nv
-            cols = P.monomials(d)
-            images = []
-            for m in cols:
-                grad = [m[j] * P.monomial(_shift(m, j)) if m[j] else 0 for j in range(n)]
-                image = {}
-                for i in range(n):
-                    f = sum(self.J[i][j] * grad[j] for j in range(n) if m[j])
-                    if f:
-                        for k, c in P.split(P.ring(f)).items():
-                            image[i, k] = c
-                images.append(image)
-            self._casimir_problems[d] = LinearProblem(P, cols, images)
-        return self._casimir_problems[d]
+        return self._problem(self._casimir_problems, d, self._casimir_image)
 
     def integral_problem(self, d):
-        if d not in self._integral_problems:
-            P, n = self.context, self.context.nv
-            cols = P.monomials(d)
-            images = []
-            for m in cols:
-                f = sum(m[i] * P.monomial(_shift(m, i)) * self.X[i] for i in range(n) if m[i])
-                images.append(P.split(P.ring(f)) if f else {})
-            self._integral_problems[d] = LinearProblem(P, cols, images)
-        return self._integral_problems[d]
+        return self._problem(self._integral_problems, d, self._integral_image)
+
+    def _problem(self, cache, d, image):
+        # the linear problem on the monomials of degree <= d, column m the
+        # coefficients of image(m); cached in ``cache`` by degree
+        if d not in cache:
+            cols = self.context.monomials(d)
+            cache[d] = LinearProblem(self.context, cols, [image(m) for m in cols])
+        return cache[d]
+
+    def _casimir_image(self, m):
+        # J grad m, by (row, monomial)
+        P, n = self.context, self.context.nv
+        grad = [m[j] * P.monomial(_shift(m, j)) if m[j] else 0 for j in range(n)]
+        image = {}
+        for i in range(n):
+            f = sum(self.J[i][j] * grad[j] for j in range(n) if m[j])
+            if f:
+                for k, c in P.split(P.ring(f)).items():
+                    image[i, k] = c
+        return image
+
+    def _integral_image(self, m):
+        # the bracket of m with H, grad m . X, by monomial
+        P, n = self.context, self.context.nv
+        f = sum(m[i] * P.monomial(_shift(m, i)) * self.X[i] for i in range(n) if m[i])
+        return P.split(P.ring(f)) if f else {}
 
     # -- graded generators ---------------------------------------------------
 
