@@ -17,9 +17,11 @@ EXAMPLES::
     (True, True)
 """
 import reprlib
+from contextlib import contextmanager
 
 __all__ = ['brief', 'DynSymError', 'ModelError', 'DescriptionError', 'ExpressionError',
-           'CircuitError', 'AnalysisError', 'BudgetError', 'moved_module', 'lazy_face']
+           'CircuitError', 'AnalysisError', 'BudgetError', 'in_source', 'moved_module',
+           'lazy_face']
 
 _BRIEF = reprlib.Repr()
 _BRIEF.maxlevel, _BRIEF.maxstring, _BRIEF.maxother = 3, 60, 60
@@ -88,8 +90,11 @@ class DynSymError(Exception):
         """
         if entry and self.entry:
             entry = f"{entry}.{self.entry}"
-        return type(self)(self.message, entry=entry or self.entry,
-                          source=source or self.source)
+        return self._copy(entry or self.entry, source or self.source)
+
+    def _copy(self, entry, source):
+        # this error at another place: a subclass with more state keeps it
+        return type(self)(self.message, entry=entry, source=source)
 
 
 class ModelError(DynSymError, ValueError):
@@ -179,6 +184,13 @@ class BudgetError(DynSymError):
         the characteristic polynomial: about 1e+09 polynomial terms, over the budget of 100000
         sage: err.estimate, err.budget
         (1000000000, 100000)
+
+    TESTS: :meth:`~DynSymError.with_context` keeps the estimate::
+
+        sage: e = BudgetError("expansion", estimate=5, budget=2).with_context(source='f.yaml')
+        sage: print(e); e.estimate
+        f.yaml: expansion: about 5 polynomial terms, over the budget of 2
+        5
     """
 
     def __init__(self, message, entry=None, source=None, estimate=None, budget=None):
@@ -188,22 +200,38 @@ class BudgetError(DynSymError):
                        f"budget of {budget}")
         super().__init__(message, entry=entry, source=source)
 
-    def with_context(self, entry=None, source=None):
-        r"""
-        As :meth:`DynSymError.with_context`, keeping the estimate.
+    def _copy(self, entry, source):
+        return type(self)(self.message, entry=entry, source=source, estimate=self.estimate,
+                          budget=self.budget)
 
-        EXAMPLES::
 
-            sage: from sage_dynsym.errors import BudgetError
-            sage: e = BudgetError("expansion", estimate=5, budget=2).with_context(source='f.yaml')
-            sage: print(e); e.estimate
-            f.yaml: expansion: about 5 polynomial terms, over the budget of 2
-            5
-        """
-        if entry and self.entry:
-            entry = f"{entry}.{self.entry}"
-        return type(self)(self.message, entry=entry or self.entry, source=source or self.source,
-                          estimate=self.estimate, budget=self.budget)
+@contextmanager
+def in_source(source):
+    r"""
+    A context in which an error of the package that names no file is
+    raised again naming ``source`` (an error that names one is left as it
+    is: the innermost file is the one to fix).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.errors import ModelError, in_source
+        sage: with in_source('top.yaml'):
+        ....:     raise ModelError("must be symmetric", entry="inertia")
+        Traceback (most recent call last):
+        ...
+        ModelError: top.yaml: inertia: must be symmetric
+        sage: with in_source('top.yaml'):
+        ....:     raise ModelError("must be symmetric", source='body.yaml')
+        Traceback (most recent call last):
+        ...
+        ModelError: body.yaml: must be symmetric
+    """
+    try:
+        yield
+    except DynSymError as err:
+        if err.source:
+            raise
+        raise err.with_context(source=source) from err
 
 
 def moved_module(old, new):

@@ -55,7 +55,7 @@ EXAMPLES::
           unstable (first approximation) where [A1 - A3 > 0, A1 - A2 < 0] or [A1 - A2 > 0, A1 - A3 < 0]
       ...
 """
-from ..errors import DescriptionError, DynSymError, brief
+from ..errors import DescriptionError, brief, in_source
 from ..io.expressions import ExpressionParser
 from ..symbols import check_names
 from .algebras import NAMED, lie_algebra
@@ -151,12 +151,8 @@ def read_lie_poisson_system(cls, data, source=None):
         ...
         DescriptionError: top.yaml: hamiltonian: missing key 'hamiltonian' (an expression in the variables and parameters)
     """
-    try:
+    with in_source(source):
         return _from_dict(cls, data, source)
-    except DynSymError as err:
-        if err.source:
-            raise
-        raise err.with_context(source=source) from err
 
 
 def _from_dict(cls, data, source):
