@@ -381,14 +381,10 @@ class FormalArithmetic(SageObject):
         """
         if self.is_numeric() or self.free:
             return None
-        try:
-            point = [QQbar(self.values[g]) for g in _names(self.H.base_ring())]
-        except (TypeError, ValueError):
-            return None
         lambdas = self.exact_lambdas()
         if lambdas is None:
             return None
-        point += lambdas
+        point = self._exact_parameters() + lambdas
         inverses = []
         for x in self._inverted():
             inverses.append(1 / x(*(point + [QQbar(0)] * (self.K.ngens() - len(point)))))
@@ -398,17 +394,23 @@ class FormalArithmetic(SageObject):
     def exact_lambdas(self):
         r"""
         The `\lambda_k` as algebraic numbers (the root nearest to each
-        numeric one).
+        numeric one); ``None`` if a value of the parameters is not exact.
         """
-        try:
-            point = [QQbar(self.values[g]) for g in _names(self.H.base_ring())]
-        except (TypeError, ValueError):
+        point = self._exact_parameters()
+        if point is None:
             return None
         S = self.hessian.apply_map(lambda e: e(*point) if point else QQbar(e))
         A = symplectic_unit(self.n).change_ring(QQbar) * S
         roots = A.charpoly('x').roots(QQbar, multiplicities=False)
         return [min(roots, key=lambda r: abs(ComplexField(DECISION_BITS)(r) - lam))
                 for lam in self.lambda_values]
+
+    def _exact_parameters(self):
+        # the values of the parameters in QQbar, None if one is not exact
+        try:
+            return [QQbar(self.values[g]) for g in _names(self.H.base_ring())]
+        except (TypeError, ValueError):
+            return None
 
     def inverse(self, x, which=None):
         r"""The inverse of ``x``: a number, or the generator that stands for
