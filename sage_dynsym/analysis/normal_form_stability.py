@@ -38,7 +38,7 @@ from sage.rings.real_mpfi import RealIntervalField
 
 from ..errors import AnalysisError
 from .normal_forms import symplectic_unit
-from .verdict import StabilityVerdict
+from .verdict import StabilityVerdict, depends_on_parameters
 
 __all__ = ['normal_form_stability', 'stability_over_parameter']
 
@@ -274,6 +274,4 @@ def stability_over_parameter(parameter, interval, exceptional, verdict_at, posit
     for value in cuts:
         for kind in points[value]:
             boundaries.setdefault(kind, []).append(SR(parameter) == expression(value))
-    return StabilityVerdict('depends on the parameters', "see cases(): " +
-                            ", ".join(c.verdict() for c in cases), cases=cases,
-                            boundaries=boundaries, positive=positive)
+    return depends_on_parameters(cases, boundaries, positive)

@@ -62,7 +62,7 @@ from ..errors import AnalysisError
 from ..algebra.determinants import fraction_free_det
 from ..algebra.solving import normalize
 from .spectrum import spectrum_regions
-from .verdict import StabilityVerdict, verdict_from_parts
+from .verdict import StabilityVerdict, depends_on_parameters, verdict_from_parts
 
 __all__ = ['REASONS', 'coefficient_conditions', 'ignorable', 'first_approximation',
            'energy_stability', 'linear_stability']
@@ -419,9 +419,7 @@ def _outside_kinetic(verdict, system, positive):
                 positive=positive))
     if len(cases) == 1:
         return cases[0]
-    return StabilityVerdict('depends on the parameters', "see cases(): " +
-                            ", ".join(c.verdict() for c in cases), cases=cases,
-                            boundaries=verdict.boundaries(), positive=positive)
+    return depends_on_parameters(cases, verdict.boundaries(), positive)
 
 
 def _rebuilt(verdict, positive, reason=None, expression=None):

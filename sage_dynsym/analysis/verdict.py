@@ -48,7 +48,8 @@ from ..symbols import exact_decimals
 from ..algebra.conditions import region_holds
 from ..algebra.regions import partition, prune_empty, drop_redundant
 
-__all__ = ['STABLE_VERDICTS', 'VERDICTS', 'StabilityVerdict', 'verdict_from_parts']
+__all__ = ['STABLE_VERDICTS', 'VERDICTS', 'StabilityVerdict', 'verdict_from_parts',
+           'depends_on_parameters']
 
 #: The verdicts that count as stable (the stable set of a verdict that
 #: depends on the parameters is the union of their regions).
@@ -473,6 +474,34 @@ def verdict_from_parts(parts, reasons, boundaries, positive=(), domain=((),),
                                       positive=positive))
     if len(cases) == 1:
         return cases[0]
+    return depends_on_parameters(cases, boundaries, positive)
+
+
+def depends_on_parameters(cases, boundaries=None, positive=()):
+    r"""
+    The verdict ``'depends on the parameters'`` made of ``cases``.
+
+    INPUT:
+
+    - ``cases`` -- a list of :class:`StabilityVerdict`, each with its region
+    - ``boundaries`` -- (optional) dict of the boundaries (see
+      :meth:`StabilityVerdict.boundaries`)
+    - ``positive`` -- symbols declared positive
+
+    OUTPUT: a :class:`StabilityVerdict` whose reason names the verdicts of
+    the cases
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.verdict import StabilityVerdict, depends_on_parameters
+        sage: a = var('a')
+        sage: v = depends_on_parameters([StabilityVerdict('stable', 'a minimum', region=[[a > 0]]),
+        ....:                            StabilityVerdict('unstable', 'a maximum', region=[[a < 0]])],
+        ....:                           {'a = 0': [a == 0]}); v
+        depends on the parameters: see cases(): stable, unstable
+        sage: v.at({a: 1}), v.boundaries()
+        ('stable', {'a = 0': [a == 0]})
+    """
     return StabilityVerdict('depends on the parameters', "see cases(): " +
                             ", ".join(c.verdict() for c in cases), cases=cases,
                             boundaries=boundaries, positive=positive)
