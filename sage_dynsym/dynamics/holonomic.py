@@ -34,7 +34,38 @@ from ..symbols import velocity, acceleration, time_derivative, t, constraint_mul
 from ..numerics.form import constraint_terms
 from .natural_form import symbol_list, has_full_row_rank
 
-__all__ = ['check_constraints', 'HolonomicConstraints', 'independent_coordinates']
+__all__ = ['zero_expression', 'check_constraints', 'HolonomicConstraints',
+           'independent_coordinates']
+
+
+def zero_expression(f, name, entry):
+    r"""
+    The symbolic expression ``f`` read as ``f = 0``; an equation
+    ``a == b`` as ``a - b``.
+
+    INPUT:
+
+    - ``f`` -- a symbolic expression or equation
+    - ``name`` -- the letter the error message gives the expression
+    - ``entry`` -- the entry named by the error
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.dynamics.holonomic import zero_expression
+        sage: x, y = var('x y')
+        sage: zero_expression(x^2 + y^2 == 1, 'f', 'constraints[0]')
+        x^2 + y^2 - 1
+        sage: zero_expression(x < y, 'g', 'nonholonomic[0]')
+        Traceback (most recent call last):
+        ...
+        ModelError: nonholonomic[0]: expected an expression g meaning g = 0 or an equation, got the relation x < y
+    """
+    if f.is_relational():
+        if f.operator() is not operator.eq:
+            raise ModelError(f"expected an expression {name} meaning {name} = 0 or an "
+                             f"equation, got the relation {f}", entry=entry)
+        f = f.lhs() - f.rhs()
+    return f
 
 
 def check_constraints(constraints, coordinates, parameters=None, entry="constraints",
@@ -123,11 +154,7 @@ def check_constraints(constraints, coordinates, parameters=None, entry="constrai
         except (TypeError, ValueError) as err:
             raise ModelError(f"expected an expression f(q, t) or an equation, got {f!r}",
                              entry=sub) from err
-        if f.is_relational():
-            if f.operator() is not operator.eq:
-                raise ModelError("expected an expression f meaning f = 0 or an equation, "
-                                 f"got the relation {f}", entry=sub)
-            f = f.lhs() - f.rhs()
+        f = zero_expression(f, "f", sub)
         for v in f.variables():
             if v in forbidden:
                 raise ModelError("a holonomic constraint f(q, t) cannot depend on "

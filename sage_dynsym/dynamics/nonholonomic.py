@@ -60,7 +60,6 @@ REFERENCES:
 .. [Blo2003] A. M. Bloch, *Nonholonomic Mechanics and Control*, Springer
    2003, sections 1.6--1.7 (the knife edge, the Chaplygin sleigh).
 """
-import operator
 
 from sage.matrix.constructor import matrix
 from sage.misc.cachefunc import cached_method
@@ -73,6 +72,7 @@ from ..algebra.trig_linear import TrigFractionField
 from ..numerics.form import velocity_constraint_terms
 from .lagrangian import Lagrangian, substitution
 from .lagrange_equations import LagrangeEquations
+from .holonomic import zero_expression
 from .natural_form import has_full_row_rank
 
 __all__ = ['check_velocity_constraints', 'VelocityConstraints', 'NonholonomicEquations',
@@ -136,12 +136,7 @@ def check_velocity_constraints(constraints, coordinates, velocities, holonomic=(
         sub = f"{entry}[{i}]"
         if isinstance(g, str):
             raise ModelError(f"expected an expression or a relation, got {g!r}", entry=sub)
-        g = SR(g)
-        if g.is_relational():
-            if g.operator() is not operator.eq:
-                raise ModelError("expected an expression g meaning g = 0 or an equation, got "
-                                 f"the relation {g}", entry=sub)
-            g = g.lhs() - g.rhs()
+        g = zero_expression(SR(g), "g", sub)
         for a in accelerations:
             if g.has(a):
                 raise ModelError(f"a velocity constraint cannot depend on the acceleration {a}",
