@@ -44,7 +44,7 @@ import sys
 import yaml
 
 from .arguments import flag, model_argument
-from .errors import DescriptionError, DynSymError, brief
+from .errors import DescriptionError, DynSymError, brief, in_source
 from .io.expressions import ExpressionParser
 from .io.fields import MAX_RESULT_LENGTH, title
 from .io.files import write_atomically
@@ -115,21 +115,20 @@ def load(path, results=False):
         DescriptionError: ...: a description file holds a mapping of keys, got list
     """
     source = str(path)
-    try:
-        return _load(path, results, source)
-    except DynSymError as err:
-        if err.source:
+    with in_source(source):
+        try:
+            return _load(path, results, source)
+        except DynSymError:
             raise
-        raise err.with_context(source=source) from err
-    except RecursionError as cause:
-        raise DescriptionError("the description is nested too deeply to be read",
-                               source=source) from cause
-    except MemoryError as cause:
-        raise DescriptionError("not enough memory to read the description",
-                               source=source) from cause
-    except Exception as err:    # a failure inside Sage: still the package's error
-        raise DescriptionError(f"could not build the model ({type(err).__name__}: "
-                               f"{brief(str(err))})", source=source) from err
+        except RecursionError as cause:
+            raise DescriptionError("the description is nested too deeply to be read",
+                                   source=source) from cause
+        except MemoryError as cause:
+            raise DescriptionError("not enough memory to read the description",
+                                   source=source) from cause
+        except Exception as err:    # a failure inside Sage: still the package's error
+            raise DescriptionError(f"could not build the model ({type(err).__name__}: "
+                                   f"{brief(str(err))})", source=source) from err
 
 
 #: The entry-point group under which other packages register kinds of
