@@ -113,3 +113,114 @@ def test_inverse_dynamics_is_the_textbook_left_hand_side():
     tau = inverse_dynamics(_tree().kinematics('symbolic'), [ddq1, ddq2])
     reference = M_REF * vector(SR, [ddq1, ddq2]) + H_REF
     assert all(_zero(a - b) for a, b in zip(tau, reference))
+
+
+# ----------------------------------------------------------------------
+# Prescribed joint velocities: a relative velocity v_{0k} that is not the
+# derivative of the joint point. The recursive equations (symbolic) and the
+# compiled right-hand side take Lagrange's equations of the kinetic energy,
+# not Kane's form; the reference is SymPy's LagrangesMethod on the same
+# plain data (reference.sympy_chain) and, for the pendulum, the textbook
+# equation.
+
+PSD = [['2.5', '0.1', '0'], ['0.1', '3', '0.2'], ['0', '0.2', '2']]
+PRESCRIBED = {
+    # a nut on a screw of pitch p (v = p dphi along the axis, the joint point
+    # fixed) on a turntable turning at the prescribed rate w, with a slider
+    # on the nut; gravity along the screw
+    'screw on a turntable': dict(
+        coordinates=['phi', 'x'], parameters=['w', 'p', 'm', 'g'], gravity=['0', '0', '-g'],
+        values={'w': 0.7, 'p': 0.4, 'm': 1.5, 'g': 9.81},
+        bodies=[dict(parent=0, rotations=[(3, 'w*t')], joint=['0', '0', '0'],
+                     mass_center=['0.2', '0', '0'], mass='2', inertia=PSD),
+                dict(parent=1, rotations=[(3, 'phi')], joint=['0', '0', '0'],
+                     velocity=['0', '0', 'p*dphi'], mass='m', mass_center=['0.3', '0', '0.1'],
+                     inertia=PSD),
+                dict(parent=2, rotations=[], joint=['x', '0', '0.5'], mass='0.5',
+                     mass_center=['0', '0', '0.2'],
+                     inertia=[['0.1', '0', '0'], ['0', '0.1', '0'], ['0', '0', '0.05']])]),
+    # a pendulum whose support moves with the given velocity V sin(W t)
+    # (its position is not needed: the field is uniform)
+    'pendulum on a moving support': dict(
+        coordinates=['phi'], parameters=['V', 'W', 'm', 'l', 'g'], gravity=['0', '0', '-g'],
+        values={'V': 0.8, 'W': 2.0, 'm': 1.3, 'l': 0.7, 'g': 9.81},
+        bodies=[dict(parent=0, rotations=[], joint=['0', '0', '0'],
+                     velocity=['0', 'V*sin(W*t)', '0'], mass='0', mass_center=['0', '0', '0'],
+                     inertia=[['0'] * 3] * 3),
+                dict(parent=1, rotations=[(1, 'phi')], joint=['0', '0', '0'], mass='m',
+                     mass_center=['0', '0', '-l'],
+                     inertia=[['m*l**2', '0', '0'], ['0', 'm*l**2', '0'], ['0', '0', '0']])]),
+    # a velocity field on a skate that is not integrable, on the nut
+    'skate on a screw': dict(
+        coordinates=['phi', 'x', 'y'], parameters=['p', 'g'], gravity=['0', '-1', '-g'],
+        values={'p': 0.4, 'g': 9.8},
+        bodies=[dict(parent=0, rotations=[(3, 'phi')], joint=['0', '0', '0'],
+                     velocity=['0', '0', 'p*dphi'], mass='1.5',
+                     mass_center=['0.3', '0', '0.1'], inertia=PSD),
+                dict(parent=1, rotations=[(1, 'x')], joint=['x', 'y', '0'],
+                     velocity=['dx', 'dy + x*dx*cos(phi)', '0'], mass='2',
+                     mass_center=['0', '0.5', '0.2'],
+                     inertia=[['1', '0', '0.1'], ['0', '2', '0'], ['0.1', '0', '1.5']])]),
+}
+
+
+def _prescribed_system(desc):
+    # test-authored text, parsed by Sage's symbolic ring
+    bodies = []
+    for k, b in enumerate(desc['bodies'], 1):
+        fields = dict(parent=b['parent'], rotations=[(a, SR(e)) for a, e in b['rotations']],
+                      joint=[SR(e) for e in b['joint']], mass=SR(b['mass']),
+                      mass_center=[SR(e) for e in b['mass_center']],
+                      inertia=matrix(SR, [[SR(e) for e in row] for row in b['inertia']]))
+        if 'velocity' in b:
+            fields['velocity'] = [SR(e) for e in b['velocity']]
+        bodies.append(RigidBody(f'b{k}', **fields))
+    return MechanicalSystem(bodies, [SR.var(c) for c in desc['coordinates']],
+                            force_function=UniformGravity([SR(e) for e in desc['gravity']]))
+
+
+@pytest.mark.parametrize('name', sorted(PRESCRIBED))
+def test_prescribed_velocities_recursive_equations_are_lagrange_equations(name):
+    S = _prescribed_system(PRESCRIBED[name])
+    assert S.kinematics().symbolic().recursive_applies()
+    recursive = S.lagrangian('recursive').lagrange_equations()
+    symbolic = S.lagrangian('symbolic').lagrange_equations()
+    assert all(_zero(a - b) for a, b in zip(recursive, symbolic))
+
+
+@pytest.mark.parametrize('name', sorted(PRESCRIBED))
+def test_prescribed_velocities_compiled_rhs_against_sympy(name):
+    import sympy
+    from reference.sympy_chain import SympyChain
+    from sage_dynsym.mechanics.recursive_numerics import body_tree
+    from sage_dynsym.numerics.compiler import compiler
+    from sage_dynsym.numerics.rhs import RightHandSide
+    desc = PRESCRIBED[name]
+    chain = SympyChain(desc['bodies'], desc['coordinates'], desc['gravity'], desc['parameters'])
+    E = chain.lagrange_equations()
+    names = desc['coordinates']
+    q, dq, ddq = (sympy.symbols([prefix + c for c in names]) for prefix in ('', 'd', 'dd'))
+    t = sympy.Symbol('t')
+    values = {sympy.Symbol(k): v for k, v in desc['values'].items()}
+    at_rest = {a: 0 for a in ddq}
+    M = sympy.lambdify([t] + q + dq, sympy.Matrix([[e.diff(a) for a in ddq] for e in E])
+                       .subs(values))
+    F = sympy.lambdify([t] + q + dq, sympy.Matrix([-e.subs(at_rest) for e in E]).subs(values))
+    S = _prescribed_system(desc)
+    backend = 'c' if compiler() else 'python'
+    rng = random.Random(7)
+    n = len(names)
+    for solver in ('articulated', 'ltdl'):
+        f = RightHandSide(RecursiveForm(body_tree(S), solver=solver), desc['values'], backend)
+        for _ in range(3):
+            x = [rng.uniform(-1.5, 1.5) for _ in range(2 * n)]
+            time = rng.uniform(0, 2)
+            reference = np.linalg.solve(np.array(M(time, *x), dtype=float),
+                                        np.array(F(time, *x), dtype=float).ravel())
+            assert np.allclose(f(time, np.array(x))[n:], reference, rtol=1e-10, atol=1e-12)
+            if name == 'pendulum on a moving support':
+                # m l^2 phi'' + m l cos(phi) v'(t) + m g l sin(phi) = 0
+                V, W, l, grav = (desc['values'][k] for k in 'V W l g'.split())
+                phi = x[0]
+                textbook = -(grav * np.sin(phi) + V * W * np.cos(W * time) * np.cos(phi)) / l
+                assert reference[0] == pytest.approx(textbook, rel=1e-12, abs=1e-12)

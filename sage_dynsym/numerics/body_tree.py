@@ -9,9 +9,9 @@ equations of :mod:`~sage_dynsym.mechanics.kinematics` alike. It does not
 know the classes that describe mechanical systems: it holds bodies with the
 fields of a body in :doc:`the method </method>` (elementary rotations,
 joint point, relative velocity, mass centre, mass, inertia tensor about the
-joint point) -- a system's own
-:class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, or
-:class:`TreeBody` records -- with their parents' indices and the forces
+joint point): :class:`TreeBody` objects -- such as a system's own
+:class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, a subclass --
+with their parents' indices and the forces
 acting on them:
 uniform gravity, loads (:class:`TreeLoad`), a force function given only as
 an expression, a Rayleigh dissipation function, generalized forces,
@@ -242,8 +242,8 @@ class TreeBody(SageObject):
 
 def body_expressions(body):
     r"""
-    Every expression of ``body`` (a :class:`TreeBody`, or any body with its
-    methods, such as a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`):
+    Every expression of ``body`` (a :class:`TreeBody`, such as a
+    :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`):
     angles, joint, velocity, mass, mass centre, inertia, for finding its
     symbols.
 
@@ -305,10 +305,10 @@ class BodyTree(SageObject):
 
     INPUT:
 
-    - ``bodies`` -- list of :class:`TreeBody`, parents before children, or
-      of other bodies with their methods (the
-      :class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects of a
-      mechanical system: the tree holds them, it does not copy them)
+    - ``bodies`` -- list of :class:`TreeBody`, parents before children
+      (also the :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`
+      objects of a mechanical system: the tree holds them, it does not
+      copy them)
     - ``coordinates`` -- the generalized coordinates (symbols); the
       velocities are their ``d<q>`` symbols
     - ``gravity`` -- (optional) the acceleration of a uniform gravity field
@@ -486,6 +486,30 @@ class BodyTree(SageObject):
         for k, body in enumerate(self._bodies, 1):
             data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
             if any(dynamic.intersection(SR(e).variables()) for e in data):
+                return k
+        return None
+
+    def nonlinear_velocity(self):
+        r"""
+        The index of the first body whose prescribed relative velocity is
+        not linear in the velocities (``None`` if every one is: the
+        recursive algorithms need linear ones, see
+        :meth:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics.columns`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: x, dx = var('x dx')
+            sage: screw = TreeBody(0, joint=[x, 0, 0], velocity=[2*dx, 0, x*dx])
+            sage: BodyTree([screw], [x]).nonlinear_velocity() is None
+            True
+            sage: BodyTree([screw, TreeBody(1, velocity=[dx^2, 0, 0])], [x]).nonlinear_velocity()
+            2
+        """
+        for k, body in enumerate(self._bodies, 1):
+            if body.velocity() is not None and any(
+                    not SR(u).diff(a, b).is_zero() for u in body.velocity()
+                    for a in self._dq for b in self._dq):
                 return k
         return None
 
