@@ -100,6 +100,27 @@ class Kinematics:
         """
         return self._body_tree
 
+    @cached_method
+    def tree_kinematics(self):
+        r"""
+        The kinematic pass of the recursive algorithms over
+        :meth:`body_tree`, in the symbolic arithmetic (a
+        :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`,
+        built once): what the loads' generalized forces are projected with
+        (:meth:`~sage_dynsym.mechanics.loads.Load.generalized_forces`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import load
+            sage: from sage_dynsym.description import example_path
+            sage: from sage_dynsym.mechanics.kinematics import Kinematics
+            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
+            sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
+            sage: K.tree_kinematics().state[1][0]       # the angular velocity, body axes
+            (dtheta, dpsi*sin(theta), dpsi*cos(theta))
+        """
+        return self._body_tree.kinematics('symbolic')
+
     def backend(self):
         r"""The arithmetic backend (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`
         or :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`).

@@ -308,6 +308,24 @@ class SystemKinematics(SageObject):
         """
         return Kinematics(self, SymbolicBackend())
 
+    def tree_kinematics(self):
+        r"""
+        The kinematic pass of the recursive algorithms over the tree of the
+        bodies, in the symbolic arithmetic (see
+        :meth:`~sage_dynsym.mechanics.kinematics.Kinematics.tree_kinematics`):
+        what loads are projected with.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: from sage_dynsym.mechanics.system_kinematics import SystemKinematics
+            sage: a = var('a')
+            sage: K = SystemKinematics([RigidBody('b', rotations=[(3, a)])], [a])
+            sage: K.tree_kinematics().partial_angular_velocities(1)
+            {0: (0, 0, 1)}
+        """
+        return self.symbolic().tree_kinematics()
+
     def frame_tree(self):
         r"""
         The :class:`~sage_dynsym.mechanics.frames.FrameTree` of all elementary
