@@ -109,15 +109,14 @@ class Kinematics:
         built once): what the loads' generalized forces are projected with
         (:meth:`~sage_dynsym.mechanics.loads.Load.generalized_forces`).
 
-        EXAMPLES::
+        EXAMPLES: the angular velocity of a body turned by `a` and `b`, in
+        its axes::
 
-            sage: from sage_dynsym import load
-            sage: from sage_dynsym.description import example_path
-            sage: from sage_dynsym.mechanics.kinematics import Kinematics
-            sage: from sage_dynsym.algebra.trigonometric import SymbolicBackend
-            sage: K = Kinematics(load(example_path('spherical_pendulum.yaml')), SymbolicBackend())
-            sage: K.tree_kinematics().state[1][0]       # the angular velocity, body axes
-            (dtheta, dpsi*sin(theta), dpsi*cos(theta))
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, b = var('a b')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a), (1, b)])], [a, b])
+            sage: S.kinematics().symbolic().tree_kinematics().state[1][0]
+            (db, da*sin(b), da*cos(b))
         """
         return self._body_tree.kinematics('symbolic')
 
