@@ -7,6 +7,9 @@ graph, and the symbolic equations of the mechanics use them.
 The reference is the textbook planar double pendulum (point masses m1, m2
 on massless rods l1, l2, relative angles q1, q2, gravity g along -y): its
 mass matrix, velocity terms and gravity terms written out here by hand.
+Prescribed joint velocities are checked against SymPy's LagrangesMethod
+(reference.sympy_chain) and a textbook equation, the projection of loads
+against the virtual work by central differences (sections below).
 """
 import math
 import random

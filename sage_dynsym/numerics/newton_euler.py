@@ -8,7 +8,11 @@ arithmetic of :mod:`~sage_dynsym.numerics.spatial`):
 motion at `\ddot q = 0` requires, loads subtracted, and
 :func:`generalized_bias_forces` sums them from the leaves and projects them
 on the joints' axes ([Fea2008]_, Table 5.1): the inertial, gravity and load
-terms of the equations at `\ddot q = 0`. :func:`applied_forces` adds what
+terms of the equations at `\ddot q = 0`. The loads enter through
+:func:`load_forces`, whose projection (:func:`generalized_forces`) is also
+the generalized force of a load in the symbolic equations
+(:meth:`~sage_dynsym.mechanics.loads.Load.generalized_forces`), and
+:func:`power` their power. :func:`applied_forces` adds what
 is differentiated symbolically (dissipation, generalized forces, a force
 function given as an expression, and the corrections of
 :func:`velocity_corrections` for prescribed joint velocities);
