@@ -326,18 +326,6 @@ class RigidBody(TreeBody):
         return (f"Rigid body {self._name!r} (parent {self.parent_name()}, rotations "
                 f"{self._rotations}, mass {self._mass})")
 
-    def name(self):
-        r"""
-        The body's name.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('arm').name()
-            'arm'
-        """
-        return self._name
-
     def parent_name(self):
         r"""
         The parent as a printable name (``0`` for the inertial frame).
@@ -348,8 +336,8 @@ class RigidBody(TreeBody):
             sage: base = RigidBody('base')
             sage: RigidBody('arm', parent=base).parent_name(), base.parent_name()
             ('base', 0)
-            sage: RigidBody('arm', parent='base').parent()
-            'base'
+            sage: RigidBody('arm', parent='base').parent(), RigidBody('arm').name()
+            ('base', 'arm')
         """
         return self._parent.name() if isinstance(self._parent, RigidBody) else self._parent
 

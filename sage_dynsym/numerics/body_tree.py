@@ -120,11 +120,11 @@ class TreeBody(SageObject):
         return int(parent)
 
     def _rotation_of(self, i, rotation):
-        axis, angle = rotation
+        axis, angle = int(rotation[0]), SR(rotation[1])
         if axis not in (1, 2, 3):
             raise AnalysisError(f"rotation axis must be 1, 2 or 3, got {axis}",
                                 entry="body tree")
-        return int(axis), SR(angle)
+        return axis, angle
 
     def _vector_of(self, value, field):
         return _vector(value, field)
