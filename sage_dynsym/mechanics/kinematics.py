@@ -30,7 +30,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..numerics.body_tree import BodyTree
-from ..numerics.newton_euler import body_forces
+from ..numerics.newton_euler import body_forces, velocity_corrections
 from ..numerics import spatial
 from ..symbols import time_derivative, t
 from .frames import FrameTree, FrameVector, cross
@@ -99,6 +99,26 @@ class Kinematics:
             (dtheta*cos(psi), dtheta*sin(psi), dpsi)
         """
         return self._body_tree
+
+    @cached_method
+    def tree_kinematics(self):
+        r"""
+        The kinematic pass of the recursive algorithms over
+        :meth:`body_tree`, in the symbolic arithmetic (a
+        :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`,
+        built once): what the loads' generalized forces are projected with
+        (:meth:`~sage_dynsym.mechanics.loads.Load.generalized_forces`).
+
+        EXAMPLES: the angular velocity of a body turned by `a` and `b`, in
+        its axes::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a, b = var('a b')
+            sage: S = MechanicalSystem([RigidBody('b', rotations=[(3, a), (1, b)])], [a, b])
+            sage: S.kinematics().symbolic().tree_kinematics().state[1][0]
+            (db, da*sin(b), da*cos(b))
+        """
+        return self._body_tree.kinematics('symbolic')
 
     def backend(self):
         r"""The arithmetic backend (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`
@@ -253,7 +273,8 @@ class Kinematics:
         r"""
         Whether :meth:`recursive_equations` applies: every body has a constant
         mass, mass centre and inertia tensor (no coordinate, velocity or time
-        in them) and no prescribed relative velocity.
+        in them) and its prescribed relative velocity, if any, is linear in
+        the velocities (as a kinetic energy of the form (4) needs).
 
         EXAMPLES::
 
@@ -267,9 +288,12 @@ class Kinematics:
             sage: S = MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m*x)], [x])
             sage: Kinematics(S, SymbolicBackend()).recursive_applies()
             False
+            sage: b = RigidBody('b', joint=[x, 0, 0], velocity=[x*var('dx'), 0, 0], mass=m)
+            sage: Kinematics(MechanicalSystem([b], [x]), SymbolicBackend()).recursive_applies()
+            True
         """
         return (self._body_tree.varying_inertia() is None
-                and all(body.velocity() is None for body in self._bodies))
+                and self._body_tree.nonlinear_velocity() is None)
 
     @cached_method
     def recursive_equations(self, gravity=None):
@@ -313,6 +337,12 @@ class Kinematics:
         code does, whose graph shares the sums): a symbolic expression is a
         tree, and nested sums of forces would grow with the depth.
 
+        A prescribed relative velocity `v^j_{0k}` that is not the time
+        derivative of the joint point makes Lagrange's equations of the
+        kinetic energy (1) differ from Kane's form; the difference, the
+        terms of :func:`~sage_dynsym.numerics.newton_euler.velocity_corrections`
+        (the same as the compiled right-hand side adds), is added to `h_i`.
+
         OUTPUT: a tuple ``(A, A1, T0, h)``: the decomposition (4) of the
         kinetic energy (nested lists and an expression) and the list of `h_i`,
         so that `\sum_r A_{ir}\ddot q_r + h_i` is the kinetic part of `E_i`
@@ -351,6 +381,30 @@ class Kinematics:
             sage: A, A1, T0, h
             ([[m]], [0], 1/2*m*w^2*x^2, [-m*w^2*x])
 
+        A body whose joint point moves with twice the rate of its
+        coordinate, in gravity `g` along `x`: the kinetic energy
+        `2 m\dot x^2` and the force function `m g x` of the joint point
+        give `4 m\ddot x - m g` (Kane's form would give `-2 m g`); and a
+        pendulum whose support moves with the given velocity `v(t)` along
+        `y`, whose equation is `m l^2\ddot\varphi + m l\cos\varphi\,
+        \dot v + m g l\sin\varphi = 0`::
+
+            sage: g, dx, l = var('g dx l')
+            sage: b = RigidBody('b', joint=[x, 0, 0], velocity=[2*dx, 0, 0], mass=m)
+            sage: K = Kinematics(MechanicalSystem([b], [x]), SymbolicBackend())
+            sage: A, A1, T0, h = K.recursive_equations((g, 0, 0)); A, h
+            ([[4*m]], [-g*m])
+            sage: phi, v = var('phi'), function('v')
+            sage: S = MechanicalSystem([RigidBody('support', velocity=[0, v(t), 0]),
+            ....:                       RigidBody('rod', parent='support', rotations=[(1, phi)],
+            ....:                                 mass=m, mass_center=[0, 0, -l],
+            ....:                                 inertia=diagonal_matrix([m*l^2, 0, 0]))], [phi])
+            sage: A, A1, T0, h = Kinematics(S, SymbolicBackend()).recursive_equations((0, 0, -g))
+            sage: A, (h[0] - m*l*cos(phi)*diff(v(t), t) - g*l*m*sin(phi)).simplify_full()
+            ([[l^2*m]], 0)
+            sage: (A1[0] - m*l*cos(phi)*v(t)).simplify_full(), (T0 - m*v(t)^2/2).simplify_full()
+            (0, 0)
+
         REFERENCES:
 
         .. [KL1985] T. R. Kane, D. A. Levinson, *Dynamics: Theory and
@@ -364,7 +418,8 @@ class Kinematics:
         moving = [False]
         for k, body in enumerate(self._bodies, 1):
             own = [angle for _, angle in body.rotations()] + list(body.joint())
-            moving.append(moving[self._parents[k]] or any(SR(e).has(t) for e in own))
+            moving.append(moving[self._parents[k]] or any(SR(e).has(t) for e in own)
+                          or any(not SR(u).subs(rest).is_zero() for u in body.velocity() or ()))
         A = [[[] for _ in range(n)] for _ in range(n)]
         A1, T0, h = [[] for _ in range(n)], [], [[] for _ in range(n)]
         for k, body in enumerate(self._bodies, 1):
@@ -395,4 +450,5 @@ class Kinematics:
                     if s >= i:
                         A[i][s].append(pair(J[s], column))
         A = [[G.sum(A[min(i, s)][max(i, s)]) for s in range(n)] for i in range(n)]
-        return A, [G.sum(x) for x in A1], G.sum(T0), [G.sum(x) for x in h]
+        h = [G.add(G.sum(x), e) for x, e in zip(h, velocity_corrections(kin))]
+        return A, [G.sum(x) for x in A1], G.sum(T0), h

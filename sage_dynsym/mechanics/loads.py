@@ -292,26 +292,41 @@ class Load(SageObject):
         out['axes'] = self._axes
         return out
 
-    def _vectors(self, kinematics, entry):
-        # (force, velocity of the point, torque, angular velocity) as
-        # FrameVector, the force and torque None when absent
-        from .frames import FrameVector
-        k = body_index(kinematics, self._body, f"{entry}.body")
-        j = 0 if self._axes == 0 else body_index(kinematics, self._axes, f"{entry}.axes")
-        tree, frame = kinematics.frame_tree(), kinematics.body_frame(k)
-        axes = kinematics.body_frame(j) if j else 0
-        W = kinematics.angular_velocity_vector(k)
-        r = FrameVector(tree, {frame: self._point})
-        v = kinematics.joint_velocity_vector(k) + FrameVector(tree, {frame: W.cross(r, frame)})
-        F = None if self._force is None else FrameVector(tree, {axes: self._force})
-        M = None if self._torque is None else FrameVector(tree, {axes: self._torque})
-        return F, v, M, W
+    def tree_load(self, system, entry="load"):
+        r"""
+        The load as a :class:`~sage_dynsym.numerics.body_tree.TreeLoad` of
+        the tree of the bodies of ``system`` (a
+        :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`
+        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`): its
+        body and axes as indices there.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: from sage_dynsym.mechanics.loads import Load
+            sage: S = MechanicalSystem([RigidBody('a'), RigidBody('b', parent='a')], [])
+            sage: Load('b', torque=[0, 0, 1], axes='a').tree_load(S)
+            Tree load on body 2 at (0, 0, 0): force None, torque (0, 0, 1), axes 1
+        """
+        from ..numerics.body_tree import TreeLoad
+        k = body_index(system, self._body, f"{entry}.body")
+        axes = 0 if self._axes == 0 else body_index(system, self._axes, f"{entry}.axes")
+        return TreeLoad(k, point=self._point, force=self._force, torque=self._torque,
+                        axes=axes)
+
+    def _forces(self, kinematics, entry):
+        # the force about the joint point of the loaded body, in the
+        # kinematic pass of the recursions over the symbolic ring
+        from ..numerics.newton_euler import load_forces
+        kin = kinematics.tree_kinematics()
+        return kin, load_forces(kin, [self.tree_load(kinematics, entry)])
 
     def power(self, kinematics, entry="load"):
         r"""
         The power `F \cdot v_P + M \cdot W_k` of the load on the bodies of
         ``kinematics`` (a :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`,
-        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`).
+        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`), by
+        :func:`~sage_dynsym.numerics.newton_euler.power`.
 
         EXAMPLES: a torque `M` about the axis of a rotor turned by `a`::
 
@@ -321,9 +336,11 @@ class Load(SageObject):
             sage: S = MechanicalSystem([RigidBody('rotor', rotations=[(3, a)])], [a])
             sage: Load('rotor', torque=[0, 0, M]).power(S.kinematics())
             M*da
+            sage: Load('rotor', point=[1, 0, 0], force=[0, 1, 0]).power(S)
+            da*cos(a)
         """
-        F, v, M, W = self._vectors(kinematics, entry)
-        return (SR(0) if F is None else F.dot(v)) + (SR(0) if M is None else M.dot(W))
+        from ..numerics.newton_euler import power
+        return power(*self._forces(kinematics, entry))
 
     def generalized_forces(self, kinematics, entry="load"):
         r"""
@@ -332,6 +349,13 @@ class Load(SageObject):
         ``kinematics`` (as in :meth:`power`; see the module documentation for
         the sign convention). The force and torque may depend on the
         velocities (a drag force).
+
+        They are those the compiled right-hand side uses: the load moved to
+        the joint point (:func:`~sage_dynsym.numerics.newton_euler.load_forces`)
+        and projected on the joints by the backward pass of the recursive
+        Newton--Euler algorithm
+        (:func:`~sage_dynsym.numerics.newton_euler.generalized_forces`),
+        here over the symbolic ring.
 
         EXAMPLES: a force along the inertial `x` axis at the point `(l, 0, 0)`
         of a body turned by `a` about the `z` axis::
@@ -352,16 +376,9 @@ class Load(SageObject):
             [-c*da*l^2]
         """
         from ..algebra.trigonometric import trig_rational_simplify
-        F, v, M, W = self._vectors(kinematics, entry)
-        forces = []
-        for dq in kinematics.velocities():
-            Q = SR(0)
-            if F is not None:
-                Q += F.dot(v.map_components(lambda c: SR(c).diff(dq)))
-            if M is not None:
-                Q += M.dot(W.map_components(lambda c: SR(c).diff(dq)))
-            forces.append(trig_rational_simplify(Q))
-        return forces
+        from ..numerics.newton_euler import generalized_forces
+        return [trig_rational_simplify(Q)
+                for Q in generalized_forces(*self._forces(kinematics, entry))]
 
 
 def load_list(loads):

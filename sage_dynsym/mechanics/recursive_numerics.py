@@ -36,11 +36,10 @@ EXAMPLES::
 import logging
 
 from ..errors import ModelError
-from ..numerics.body_tree import BodyTree, TreeLoad
+from ..numerics.body_tree import BodyTree
 from ..numerics.methods import object_cache
 from ..numerics.recursive import RecursiveForm, unsupported
 from .force_functions import split_force_terms
-from .loads import body_index
 
 __all__ = ['ALGORITHMS', 'body_tree', 'numerical_form']
 
@@ -71,12 +70,7 @@ def body_tree(system):
     """
     bodies = system.bodies()
     gravity, potential = split_force_terms(system.force_terms(), system.kinematics())
-    loads = []
-    for i, load in enumerate(system.loads()):
-        k = body_index(system, load.body(), f"loads[{i}].body")
-        axes = 0 if load.axes() == 0 else body_index(system, load.axes(), f"loads[{i}].axes")
-        loads.append(TreeLoad(k, point=load.point(), force=load.force(), torque=load.torque(),
-                              axes=axes))
+    loads = [load.tree_load(system, f"loads[{i}]") for i, load in enumerate(system.loads())]
     # the generalized forces given as such (those of the loads come from the tree)
     return BodyTree(bodies, system.coordinates(), gravity=gravity, loads=loads,
                     parents=[system.parent_index(k) for k in range(1, len(bodies) + 1)],

@@ -8,6 +8,10 @@ the parent's axes), its relative velocity `v^j_{0k}`, the mass centre
 `r^k_{ck}` (in the body's axes), the mass and the inertia tensor about the
 joint point `O_k` (in the body's axes). It is a description only;
 kinematics and energies are computed by :class:`~sage_dynsym.mechanics.system.MechanicalSystem`.
+The fields and their accessors are those of a
+:class:`~sage_dynsym.numerics.body_tree.TreeBody`, the body the recursive
+algorithms read: a rigid body adds its name, a parent given by name and the
+checks of a description, whose entries its errors name.
 
 EXAMPLES::
 
@@ -38,10 +42,10 @@ from itertools import combinations
 from sage.matrix.constructor import matrix
 from sage.matrix.special import identity_matrix
 from sage.rings.real_mpfi import RealIntervalField
-from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
+from ..numerics.body_tree import TreeBody
 
 __all__ = ['as_vector3', 'as_scalar', 'RigidBody']
 
@@ -157,9 +161,12 @@ def _check_positive_semidefinite(tensor, entry):
                                  f" is {block.det()} < 0", entry=entry)
 
 
-class RigidBody(SageObject):
+class RigidBody(TreeBody):
     r"""
-    One rigid body of a mechanical system.
+    One rigid body of a mechanical system: a
+    :class:`~sage_dynsym.numerics.body_tree.TreeBody` (the fields that the
+    recursions read, with their accessors) with a name, its parent given by
+    name, index or object, and the checks of a description.
 
     INPUT:
 
@@ -189,6 +196,18 @@ class RigidBody(SageObject):
         sage: slider = RigidBody('slider', joint=[0, 0, z], mass=1)
         sage: slider.velocity() is None, slider.joint()
         (True, (0, 0, z))
+
+    The fields and their accessors are those of a tree body, which the
+    recursive algorithms read::
+
+        sage: from sage_dynsym.numerics.body_tree import TreeBody
+        sage: a, l, m = var('a l m')
+        sage: b = RigidBody('b', rotations=[(2, a)], joint=[0, 0, 1], velocity=[0, 0, dz],
+        ....:               mass_center=[0, 0, l], mass=m)
+        sage: isinstance(b, TreeBody), b.rotations(), b.velocity(), b.mass_center(), b.mass()
+        (True, [(2, a)], (0, 0, dz), (0, 0, l), m)
+        sage: b.inertia().is_zero(), b.inertia().is_immutable()
+        (True, True)
 
     TESTS::
 
@@ -255,29 +274,39 @@ class RigidBody(SageObject):
                  mass_center=(0, 0, 0), mass=0, inertia=None):
         if not isinstance(name, str) or not name:
             raise ModelError("a body needs a non-empty name", entry="name")
-        self._name = name
-        self._parent = parent
-        self._rotations = []
-        for i, rotation in enumerate(rotations):
-            entry = f"{name}.rotations[{i}]"
-            if not isinstance(rotation, (tuple, list)) or len(rotation) != 2:
-                raise ModelError(f"expected a pair (axis, angle), got {rotation!r}", entry=entry)
-            axis, angle = rotation
-            if axis not in (1, 2, 3) or isinstance(axis, bool):
-                raise ModelError(f"rotation axis must be 1, 2 or 3 (x, y, z), got {axis!r}",
-                                 entry=entry)
-            self._rotations.append((int(axis), as_scalar(angle, entry)))
-        self._joint = as_vector3(joint, f"{name}.joint")
-        self._velocity = as_vector3(velocity, f"{name}.velocity")
-        self._mass_center = as_vector3(mass_center, f"{name}.mass_center")
-        self._mass = as_scalar(mass, f"{name}.mass")
-        _check_nonnegative(self._mass, f"{name}.mass", "the mass")
-        self._inertia = self._make_inertia(inertia, f"{name}.inertia")
+        super().__init__(parent, rotations=rotations, joint=joint, velocity=velocity, mass=mass,
+                         mass_center=mass_center, inertia=inertia, name=name)
 
-    @staticmethod
-    def _make_inertia(inertia, entry):
+    # the conversions of TreeBody, with the checks of a description and the
+    # entries named as there
+
+    def _parent_of(self, parent):
+        # resolved by the system (by name, index or object), see sorted_by_parents
+        return parent
+
+    def _rotation_of(self, i, rotation):
+        entry = f"{self._name}.rotations[{i}]"
+        if not isinstance(rotation, (tuple, list)) or len(rotation) != 2:
+            raise ModelError(f"expected a pair (axis, angle), got {rotation!r}", entry=entry)
+        axis, angle = rotation
+        if axis not in (1, 2, 3) or isinstance(axis, bool):
+            raise ModelError(f"rotation axis must be 1, 2 or 3 (x, y, z), got {axis!r}",
+                             entry=entry)
+        return int(axis), as_scalar(angle, entry)
+
+    def _vector_of(self, value, field):
+        return as_vector3(value, f"{self._name}.{field}")
+
+    def _mass_of(self, mass):
+        entry = f"{self._name}.mass"
+        mass = as_scalar(mass, entry)
+        _check_nonnegative(mass, entry, "the mass")
+        return mass
+
+    def _inertia_of(self, inertia):
+        entry = f"{self._name}.inertia"
         if inertia is None:
-            return matrix(SR, 3, 3)
+            return super()._inertia_of(None)
         try:
             tensor = matrix(SR, inertia)
         except (TypeError, ValueError) as err:
@@ -291,36 +320,11 @@ class RigidBody(SageObject):
                         f"the inertia tensor must be symmetric; entry ({i}, {j}) is "
                         f"{tensor[i, j]} but entry ({j}, {i}) is {tensor[j, i]}", entry=entry)
         _check_positive_semidefinite(tensor, entry)
-        tensor.set_immutable()
-        return tensor
+        return super()._inertia_of(tensor)
 
     def _repr_(self):
         return (f"Rigid body {self._name!r} (parent {self.parent_name()}, rotations "
                 f"{self._rotations}, mass {self._mass})")
-
-    def name(self):
-        r"""
-        The body's name.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('arm').name()
-            'arm'
-        """
-        return self._name
-
-    def parent(self):
-        r"""
-        The parent as given (``0``, a name, an index or a body).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('arm', parent='base').parent()
-            'base'
-        """
-        return self._parent
 
     def parent_name(self):
         r"""
@@ -332,93 +336,10 @@ class RigidBody(SageObject):
             sage: base = RigidBody('base')
             sage: RigidBody('arm', parent=base).parent_name(), base.parent_name()
             ('base', 0)
+            sage: RigidBody('arm', parent='base').parent(), RigidBody('arm').name()
+            ('base', 'arm')
         """
         return self._parent.name() if isinstance(self._parent, RigidBody) else self._parent
-
-    def rotations(self):
-        r"""
-        The elementary rotations ``[(axis, angle), ...]``.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('b', rotations=[(2, var('a'))]).rotations()
-            [(2, a)]
-        """
-        return list(self._rotations)
-
-    def joint(self):
-        r"""
-        `r^j_{0k}`: the joint point in the parent's axes.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('b', joint=[0, 0, 1]).joint()
-            (0, 0, 1)
-        """
-        return self._joint
-
-    def velocity(self):
-        r"""
-        `v^j_{0k}` as given, or ``None`` (then the time derivative of the
-        joint vector is used).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('b', velocity=[0, 0, var('dz')]).velocity()
-            (0, 0, dz)
-        """
-        return self._velocity
-
-    def mass_center(self):
-        r"""
-        `r^k_{ck}`: the mass centre in the body's axes.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('b', mass_center=[0, 0, var('l')]).mass_center()
-            (0, 0, l)
-        """
-        return self._mass_center
-
-    def mass(self):
-        r"""
-        The mass.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('b', mass=var('m')).mass()
-            m
-        """
-        return self._mass
-
-    def inertia(self):
-        r"""
-        The inertia tensor about the joint point, in the body's axes.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('b').inertia().is_zero()
-            True
-        """
-        return self._inertia
-
-    def is_massless(self):
-        r"""
-        Whether mass and inertia are both zero (a frame-only carrier).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import RigidBody
-            sage: RigidBody('carrier').is_massless(), RigidBody('b', mass=1).is_massless()
-            (True, False)
-        """
-        return self._mass.is_zero() and self._inertia.is_zero()
 
     def subs(self, values, parent=None):
         r"""
@@ -444,7 +365,7 @@ class RigidBody(SageObject):
         def sub(v):
             return None if v is None else [SR(c).subs(values) for c in v]
         if parent is None:
-            parent = self._parent.name() if isinstance(self._parent, RigidBody) else self._parent
+            parent = self.parent_name()
         return RigidBody(self._name, parent=parent,
                          rotations=[(axis, SR(angle).subs(values))
                                     for axis, angle in self._rotations],

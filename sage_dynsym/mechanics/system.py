@@ -674,6 +674,7 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
     coordinates = DelegatedMethod('kinematics', SystemKinematics)
     velocities = DelegatedMethod('kinematics', SystemKinematics)
     frame_tree = DelegatedMethod('kinematics', SystemKinematics)
+    tree_kinematics = DelegatedMethod('kinematics', SystemKinematics)
     body_frame = DelegatedMethod('kinematics', SystemKinematics)
     direction_cosines = DelegatedMethod('kinematics', SystemKinematics)
     angular_velocity_vector = DelegatedMethod('kinematics', SystemKinematics)

@@ -156,6 +156,10 @@ class SystemKinematics(SageObject):
         Traceback (most recent call last):
         ...
         ModelError: bodies: expected a list of RigidBody, got Rigid body 'b' (parent 0, rotations [], mass 0); e.g. MechanicalSystem([RigidBody('b', joint=[x, 0, 0], mass=m)], [x])
+        sage: SystemKinematics([RigidBody('b', velocity=[var('da')^2, 0, 0])], [a])
+        Traceback (most recent call last):
+        ...
+        ModelError: b.velocity: the relative velocity must be linear in the velocities (da), got da^2
     """
 
     def __init__(self, bodies, coordinates):
@@ -176,6 +180,14 @@ class SystemKinematics(SageObject):
                 raise ModelError(f"coordinates must be symbolic variables, got {q}",
                                  entry="coordinates")
         self._velocities = [velocity(q) for q in self._coordinates]
+        for body in self._bodies:
+            # the kinetic energy must have the form (4), quadratic in the velocities
+            for u in body.velocity() or ():
+                if any(not u.diff(a, b).is_zero() for a in self._velocities
+                       for b in self._velocities):
+                    raise ModelError(f"the relative velocity must be linear in the velocities "
+                                     f"({', '.join(map(str, self._velocities))}), got {u}",
+                                     entry=f"{body.name()}.velocity")
 
     def _repr_(self):
         n = len(self._bodies)
@@ -295,6 +307,24 @@ class SystemKinematics(SageObject):
             True
         """
         return Kinematics(self, SymbolicBackend())
+
+    def tree_kinematics(self):
+        r"""
+        The kinematic pass of the recursive algorithms over the tree of the
+        bodies, in the symbolic arithmetic (see
+        :meth:`~sage_dynsym.mechanics.kinematics.Kinematics.tree_kinematics`):
+        what loads are projected with.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: from sage_dynsym.mechanics.system_kinematics import SystemKinematics
+            sage: a = var('a')
+            sage: K = SystemKinematics([RigidBody('b', rotations=[(3, a)])], [a])
+            sage: K.tree_kinematics().partial_angular_velocities(1)
+            {0: (0, 0, 1)}
+        """
+        return self.symbolic().tree_kinematics()
 
     def frame_tree(self):
         r"""

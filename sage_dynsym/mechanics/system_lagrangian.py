@@ -338,8 +338,9 @@ class LagrangianBuilder(SageObject):
             bodies, the shortest form (for the spatial chain of 6 links of
             ``bench/bench_chain.py``: a quarter of the ``'symbolic'`` one, in
             a fraction of a second); needs bodies of constant mass, mass
-            centre and inertia and no prescribed relative velocity, else
-            ``'symbolic'`` is used;
+            centre and inertia (prescribed relative velocities linear in the
+            velocities, as the kinetic energy (4) needs, are taken into
+            account), else ``'symbolic'`` is used;
           - ``'auto'`` (default) -- ``'polynomial'`` unless some body lies
             more than 8 elementary rotations away from the inertial frame or
             the mass matrix has more than 10,000 polynomial terms (for the
@@ -384,8 +385,9 @@ class LagrangianBuilder(SageObject):
             ModelError: christoffel must be 'auto', 'polynomial', 'recursive' or 'symbolic', got 'fast'
 
         A chain of 9 planar links takes the recursive form (compared with
-        the other forms in ``tests/test_compact_equations.py``); a body with a
-        prescribed relative velocity cannot, and gets the symbolic form::
+        the other forms in ``tests/test_compact_equations.py``), and so does a
+        body with a prescribed relative velocity (here the kinetic energy
+        `2 m\dot x^2`; more in ``tests/test_one_recursion.py``)::
 
             sage: a = [var(f'a{k}') for k in range(1, 10)]
             sage: links = [RigidBody(f'b{k}', parent=k - 1, rotations=[(3, a[k - 1])],

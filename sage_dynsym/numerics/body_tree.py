@@ -9,9 +9,9 @@ equations of :mod:`~sage_dynsym.mechanics.kinematics` alike. It does not
 know the classes that describe mechanical systems: it holds bodies with the
 fields of a body in :doc:`the method </method>` (elementary rotations,
 joint point, relative velocity, mass centre, mass, inertia tensor about the
-joint point) -- a system's own
-:class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, or
-:class:`TreeBody` records -- with their parents' indices and the forces
+joint point): :class:`TreeBody` objects -- such as a system's own
+:class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, a subclass --
+with their parents' indices and the forces
 acting on them:
 uniform gravity, loads (:class:`TreeLoad`), a force function given only as
 an expression, a Rayleigh dissipation function, generalized forces,
@@ -50,7 +50,8 @@ def _vector(value, entry):
 
 class TreeBody(SageObject):
     r"""
-    One body of a :class:`BodyTree`.
+    One rigid body of a tree: the fields that the recursive algorithms read
+    (the fields of a body in :doc:`the method </method>`).
 
     INPUT:
 
@@ -67,6 +68,14 @@ class TreeBody(SageObject):
       joint point, in the body's axes)
     - ``name`` -- (optional) a name for messages
 
+    The bodies of a mechanical system,
+    :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`, are tree bodies
+    with a name, a parent given by name and checks of their data: the
+    fields are converted by the methods ``_parent_of``, ``_rotation_of``,
+    ``_vector_of``, ``_mass_of`` and ``_inertia_of``, which a subclass
+    overrides to check more and to name the entry of the description in
+    its errors.
+
     EXAMPLES::
 
         sage: from sage_dynsym.numerics.body_tree import TreeBody
@@ -79,22 +88,54 @@ class TreeBody(SageObject):
                                 [0 0 0]
         (x, 0, 0), None, [0 0 0]
         )
+
+    TESTS::
+
+        sage: TreeBody(0, rotations=[(4, x)])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: body tree: rotation axis must be 1, 2 or 3, got 4
+        sage: TreeBody(0, joint=[x, 0])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: joint: expected 3 components, got [x, 0]
+        sage: TreeBody(0).inertia().is_immutable()
+        True
     """
 
     def __init__(self, parent, rotations=(), joint=(0, 0, 0), velocity=None, mass=0,
                  mass_center=(0, 0, 0), inertia=None, name=None):
-        self._parent = int(parent)
-        self._rotations = [(int(axis), SR(angle)) for axis, angle in rotations]
-        for axis, _ in self._rotations:
-            if axis not in (1, 2, 3):
-                raise AnalysisError(f"rotation axis must be 1, 2 or 3, got {axis}",
-                                    entry="body tree")
-        self._joint = _vector(joint, "joint")
-        self._velocity = None if velocity is None else _vector(velocity, "velocity")
-        self._mass = SR(mass)
-        self._mass_center = _vector(mass_center, "mass_center")
-        self._inertia = matrix(SR, 3, 3) if inertia is None else matrix(SR, inertia)
         self._name = name
+        self._parent = self._parent_of(parent)
+        self._rotations = [self._rotation_of(i, rotation) for i, rotation in enumerate(rotations)]
+        self._joint = self._vector_of(joint, "joint")
+        self._velocity = None if velocity is None else self._vector_of(velocity, "velocity")
+        self._mass_center = self._vector_of(mass_center, "mass_center")
+        self._mass = self._mass_of(mass)
+        self._inertia = self._inertia_of(inertia)
+
+    # the conversions of the fields (a subclass checks more) ------------------
+
+    def _parent_of(self, parent):
+        return int(parent)
+
+    def _rotation_of(self, i, rotation):
+        axis, angle = int(rotation[0]), SR(rotation[1])
+        if axis not in (1, 2, 3):
+            raise AnalysisError(f"rotation axis must be 1, 2 or 3, got {axis}",
+                                entry="body tree")
+        return axis, angle
+
+    def _vector_of(self, value, field):
+        return _vector(value, field)
+
+    def _mass_of(self, mass):
+        return SR(mass)
+
+    def _inertia_of(self, inertia):
+        tensor = matrix(SR, 3, 3) if inertia is None else matrix(SR, inertia)
+        tensor.set_immutable()
+        return tensor
 
     def _repr_(self):
         name = f" {self._name!r}" if self._name else ""
@@ -102,13 +143,17 @@ class TreeBody(SageObject):
                 f"{[(a, e) for a, e in self._rotations]})")
 
     def parent(self):
-        r"""The 1-based index of the parent, 0 for the inertial frame.
+        r"""The parent: the 1-based index of the parent body, 0 for the
+        inertial frame (a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`
+        keeps it as given: also a name or the parent body, which its system
+        turns into the index, see
+        :meth:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics.parent_index`).
 
         EXAMPLES::
 
             sage: from sage_dynsym.numerics.body_tree import TreeBody
-            sage: TreeBody(0).parent()
-            0
+            sage: TreeBody(0).parent(), TreeBody(2).parent()
+            (0, 2)
         """
         return self._parent
 
@@ -197,8 +242,8 @@ class TreeBody(SageObject):
 
 def body_expressions(body):
     r"""
-    Every expression of ``body`` (a :class:`TreeBody`, or any body with its
-    methods, such as a :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`):
+    Every expression of ``body`` (a :class:`TreeBody`, such as a
+    :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`):
     angles, joint, velocity, mass, mass centre, inertia, for finding its
     symbols.
 
@@ -260,10 +305,10 @@ class BodyTree(SageObject):
 
     INPUT:
 
-    - ``bodies`` -- list of :class:`TreeBody`, parents before children, or
-      of other bodies with their methods (the
-      :class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects of a
-      mechanical system: the tree holds them, it does not copy them)
+    - ``bodies`` -- list of :class:`TreeBody`, parents before children
+      (also the :class:`~sage_dynsym.mechanics.rigid_body.RigidBody`
+      objects of a mechanical system: the tree holds them, it does not
+      copy them)
     - ``coordinates`` -- the generalized coordinates (symbols); the
       velocities are their ``d<q>`` symbols
     - ``gravity`` -- (optional) the acceleration of a uniform gravity field
@@ -441,6 +486,30 @@ class BodyTree(SageObject):
         for k, body in enumerate(self._bodies, 1):
             data = [body.mass()] + list(body.mass_center()) + body.inertia().list()
             if any(dynamic.intersection(SR(e).variables()) for e in data):
+                return k
+        return None
+
+    def nonlinear_velocity(self):
+        r"""
+        The index of the first body whose prescribed relative velocity is
+        not linear in the velocities (``None`` if every one is: the
+        recursive algorithms need linear ones, see
+        :meth:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics.columns`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody
+            sage: x, dx = var('x dx')
+            sage: screw = TreeBody(0, joint=[x, 0, 0], velocity=[2*dx, 0, x*dx])
+            sage: BodyTree([screw], [x]).nonlinear_velocity() is None
+            True
+            sage: BodyTree([screw, TreeBody(1, velocity=[dx^2, 0, 0])], [x]).nonlinear_velocity()
+            2
+        """
+        for k, body in enumerate(self._bodies, 1):
+            if body.velocity() is not None and any(
+                    not SR(u).diff(a, b).is_zero() for u in body.velocity()
+                    for a in self._dq for b in self._dq):
                 return k
         return None
 

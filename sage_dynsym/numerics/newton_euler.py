@@ -8,7 +8,11 @@ arithmetic of :mod:`~sage_dynsym.numerics.spatial`):
 motion at `\ddot q = 0` requires, loads subtracted, and
 :func:`generalized_bias_forces` sums them from the leaves and projects them
 on the joints' axes ([Fea2008]_, Table 5.1): the inertial, gravity and load
-terms of the equations at `\ddot q = 0`. :func:`applied_forces` adds what
+terms of the equations at `\ddot q = 0`. The loads enter through
+:func:`load_forces`, whose projection (:func:`generalized_forces`) is also
+the generalized force of a load in the symbolic equations
+(:meth:`~sage_dynsym.mechanics.loads.Load.generalized_forces`), and
+:func:`power` their power. :func:`applied_forces` adds what
 is differentiated symbolically (dissipation, generalized forces, a force
 function given as an expression, and the corrections of
 :func:`velocity_corrections` for prescribed joint velocities);
@@ -36,15 +40,16 @@ from sage.symbolic.ring import SR
 
 from .spatial import add, cross, matvec, rotate, scale
 
-__all__ = ['body_forces', 'generalized_bias_forces', 'generalized_forces', 'inverse_dynamics',
-           'velocity_corrections',
+__all__ = ['body_forces', 'load_forces', 'power', 'generalized_bias_forces',
+           'generalized_forces', 'inverse_dynamics', 'velocity_corrections',
            'applied_forces', 'forcing']
 
 
 def body_forces(kin):
     r"""
     Per body ``k``, the force ``(f, n)`` (about its joint point, in its
-    axes) that its motion at `\ddot q = 0` requires, loads subtracted.
+    axes) that its motion at `\ddot q = 0` requires, loads subtracted
+    (those of :func:`load_forces`).
 
     INPUT: ``kin`` -- a :class:`~sage_dynsym.numerics.tree_kinematics.TreeKinematics`
 
@@ -69,19 +74,72 @@ def body_forces(kin):
         nk = add(G, matvec(G, Theta, alpha), cross(G, w, matvec(G, Theta, w)),
                  cross(G, h, a))
         forces[k] = (f, nk)
-    for load in kin.tree.loads():
-        k = load.body
+    for k, (F, N) in load_forces(kin).items():
         f, nk = forces[k]
-        point = kin.vector(load.point)
+        forces[k] = (tuple(G.sub(x, y) for x, y in zip(f, F)),
+                     tuple(G.sub(x, y) for x, y in zip(nk, N)))
+    return forces
+
+
+def load_forces(kin, loads=None):
+    r"""
+    Per loaded body ``k``, the force ``(f, n)`` (about its joint point, in
+    its axes) of the loads ``loads``
+    (:class:`~sage_dynsym.numerics.body_tree.TreeLoad`; default: the
+    tree's): forces moved to the joint point, with their moments, and
+    torques. :func:`generalized_forces` of them are the loads' generalized
+    forces `Q_i = F\cdot\partial v_P/\partial\dot q_i +
+    M\cdot\partial W_k/\partial\dot q_i`, the ones that both the
+    compiled right-hand side (through :func:`body_forces`) and the symbolic
+    equations (:meth:`~sage_dynsym.mechanics.loads.Load.generalized_forces`)
+    use.
+
+    EXAMPLES: a force `F` along the inertial `x` axis at the point
+    `(l, 0, 0)` of a body turned by `a` about the `z` axis::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody, TreeLoad
+        sage: from sage_dynsym.numerics.newton_euler import load_forces, generalized_forces
+        sage: a, l, F = var('a l F')
+        sage: K = BodyTree([TreeBody(0, rotations=[(3, a)])], [a]).kinematics()
+        sage: forces = load_forces(K, [TreeLoad(1, point=[l, 0, 0], force=[F, 0, 0])]); forces
+        {1: ((F*cos(a), -F*sin(a), 0), (0, 0, -F*l*sin(a)))}
+        sage: generalized_forces(K, forces)
+        [-F*l*sin(a)]
+    """
+    G = kin.G
+    forces = {}
+    for load in kin.tree.loads() if loads is None else loads:
+        k = load.body
+        f, nk = forces.get(k, (kin.zero3, kin.zero3))
         if load.force is not None:
             F = kin.to_body(k, load.axes, kin.vector(load.force))
-            f = tuple(G.sub(x, y) for x, y in zip(f, F))
-            nk = tuple(G.sub(x, y) for x, y in zip(nk, cross(G, point, F)))
+            f = add(G, f, F)
+            nk = add(G, nk, cross(G, kin.vector(load.point), F))
         if load.torque is not None:
-            T = kin.to_body(k, load.axes, kin.vector(load.torque))
-            nk = tuple(G.sub(x, y) for x, y in zip(nk, T))
+            nk = add(G, nk, kin.to_body(k, load.axes, kin.vector(load.torque)))
         forces[k] = (f, nk)
     return forces
+
+
+def power(kin, forces):
+    r"""
+    The power `\sum_k f_k\cdot V_{0k} + n_k\cdot W_k` of the forces
+    ``forces`` (a dict: body `k` -> `(f_k, n_k)` about its joint point, in
+    its axes, such as those of :func:`load_forces`) in the motion of the
+    bodies.
+
+    EXAMPLES: a torque `M` about the axis of a rotor turned by `a`::
+
+        sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody, TreeLoad
+        sage: from sage_dynsym.numerics.newton_euler import load_forces, power
+        sage: a, M = var('a M')
+        sage: K = BodyTree([TreeBody(0, rotations=[(3, a)])], [a]).kinematics()
+        sage: power(K, load_forces(K, [TreeLoad(1, torque=[0, 0, M])]))
+        M*da
+    """
+    G = kin.G
+    return G.sum([G.add(G.dot(f, kin.state[k][1]), G.dot(nk, kin.state[k][0]))
+                  for k, (f, nk) in sorted(forces.items())])
 
 
 def generalized_bias_forces(kin):
@@ -99,7 +157,8 @@ def generalized_forces(kin, forces):
     r"""
     The generalized forces `\sum_k \partial V_{0k}/\partial\dot q_i\cdot f_k
     + \partial W_k/\partial\dot q_i\cdot n_k` of the forces ``forces`` (a dict:
-    body `k` -> `(f_k, n_k)` about its joint point, in its axes), summed from
+    body `k` -> `(f_k, n_k)` about its joint point, in its axes; absent
+    bodies carry none), summed from
     the leaves and projected on the joints: the backward pass of the
     recursive Newton--Euler algorithm ([Fea2008]_, Table 5.1).
 
@@ -122,16 +181,17 @@ def generalized_forces(kin, forces):
     """
     G, n = kin.G, kin.n
     forces = dict(forces)
-    forces[0] = (kin.zero3, kin.zero3)
     tau = [[] for _ in range(n)]
     for k in range(len(kin.tree.bodies()), 0, -1):
-        f, nk = forces[k]
+        f, nk = forces.get(k, (kin.zero3, kin.zero3))
         for step in reversed(kin.body_steps[k]):
             for i in step.columns:
                 tau[i].append(step.pair(G, i, f, nk))
             f, nk = step.up(G, f, nk)
         j = kin.parent[k]
-        forces[j] = (add(G, forces[j][0], f), add(G, forces[j][1], nk))
+        if j:
+            fj, nj = forces.get(j, (kin.zero3, kin.zero3))
+            forces[j] = (add(G, fj, f), add(G, nj, nk))
     return [G.sum(parts) for parts in tau]
 
 

@@ -266,11 +266,9 @@ def unsupported(tree):
     if k is not None:
         return (f"the mass, mass centre or inertia of body {k} depends on the "
                 "coordinates, velocities or t")
-    for k, body in enumerate(tree.bodies(), 1):
-        if body.velocity() is not None and any(
-                not SR(u).diff(a, b).is_zero() for u in body.velocity()
-                for a in tree.velocities() for b in tree.velocities()):
-            return f"the relative velocity of body {k} is not linear in the velocities"
+    k = tree.nonlinear_velocity()
+    if k is not None:
+        return f"the relative velocity of body {k} is not linear in the velocities"
     functions = symbols_and_functions(tree.expressions())[1]
     if functions:
         return (f"{', '.join(functions)} {'is' if len(functions) == 1 else 'are'} not a known "

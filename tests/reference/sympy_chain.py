@@ -12,6 +12,9 @@ data, the same fields as the rigid-body description of doc/method.rst:
 - ``joint``        -- r^j_{0k}: position of O_k in the parent's axes (3 entries);
   may depend on coordinates (sliding joint), its time derivative is then the
   relative velocity
+- ``velocity``     -- (optional) v^j_{0k}: the relative velocity of O_k in the
+  parent's axes, prescribed instead of the derivative of ``joint``; may also
+  be written with the velocities ``d<q>``
 - ``mass_center``  -- r^k_{ck}: position of C_k in the body's axes
 - ``mass``         -- m_k
 - ``inertia``      -- inertia tensor about O_k in the body's axes (3x3, symmetric)
@@ -40,6 +43,7 @@ class _Parser:
     def __init__(self, coordinates, parameters):
         self.coords = [me.dynamicsymbols(str(c)) for c in coordinates]
         self.names = {str(c): q for c, q in zip(coordinates, self.coords)}
+        self.names.update({'d' + str(c): q.diff(T) for c, q in zip(coordinates, self.coords)})
         for p in parameters:
             self.names.setdefault(str(p), sympy.Symbol(str(p)))
         self.names['t'] = T
@@ -92,15 +96,26 @@ class SympyChain:
             # Joint point O_k, given in the parent's axes.
             r0 = [parse(c) for c in body['joint']]
             Ok = joints[parent].locatenew(f'O{k}', _vector(frames[parent], r0))
-            if any(_depends_on_time(c) for c in r0):
-                Ok.set_vel(N, Ok.pos_from(O).dt(N))
+            if body.get('velocity') is not None:
+                # the prescribed relative velocity, carried by the parent's motion
+                Ok.set_vel(N, joints[parent].vel(N)
+                           + frames[parent].ang_vel_in(N).cross(_vector(frames[parent], r0))
+                           + _vector(frames[parent], [parse(c) for c in body['velocity']]))
+            elif any(_depends_on_time(c) for c in r0):
+                # the rate of r0 in the parent's axes, carried by the parent's
+                # motion (not pos_from(O).dt(N): a prescribed velocity above
+                # is not the rate of a position)
+                r = _vector(frames[parent], r0)
+                Ok.set_vel(N, joints[parent].vel(N) + r.dt(frames[parent])
+                           + frames[parent].ang_vel_in(N).cross(r))
             else:
                 Ok.v2pt_theory(joints[parent], N, frames[parent])
             # Mass centre C_k, given in the body's own axes.
             c = sympy.Matrix([parse(x) for x in body['mass_center']])
             Ck = Ok.locatenew(f'C{k}', _vector(frame, c))
             if any(_depends_on_time(x) for x in c):
-                Ck.set_vel(N, Ck.pos_from(O).dt(N))
+                r = _vector(frame, c)
+                Ck.set_vel(N, Ok.vel(N) + r.dt(frame) + frame.ang_vel_in(N).cross(r))
             else:
                 Ck.v2pt_theory(Ok, N, frame)
             # Velocities expressed in the body's own axes: SymPy then dots
