@@ -278,16 +278,23 @@ def _incidence(br, n):
 LINEAR = {'R': 3, 'L': 2, 'C': 2, 'E': 1, 'I': 1}
 
 
-@pytest.mark.parametrize("seed", range(12))
-def test_loop_lagrangian_matches_kirchhoff(seed):
-    rng = np.random.default_rng(1000 + seed)
+def _lagrangian_case(seed, method):
+    """A random linear circuit with a mutual inductance: the random
+    generator, its branches and number of nodes, its entries and values, the
+    circuit, its Lagrangian by ``method``, the reference solver and a time
+    ``t0``."""
+    rng = np.random.default_rng(seed)
     br, cp, n, entries, values = random_circuit(rng, LINEAR, mutual=True)
     C = Circuit(entries, parameters=['M12'])
-    L = C.lagrangian(method="loop")
+    return (rng, br, n, entries, values, C, C.lagrangian(method=method), MNA(br, cp, n),
+            float(rng.uniform(0.1, 2)))
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_loop_lagrangian_matches_kirchhoff(seed):
+    rng, br, n, entries, values, C, L, solver, t0 = _lagrangian_case(1000 + seed, "loop")
     chords = [loop[0][2] for loop in C.loop_analysis().loops()]
     index = {b['name']: k for k, b in enumerate(br)}
-    solver = MNA(br, cp, n)
-    t0 = float(rng.uniform(0.1, 2))
     # branch charges: any KCL-consistent vector with the current sources' charges I*t0
     Z = null_space(_incidence(br, n))
     isrc = [k for k, b in enumerate(br) if b['kind'] == 'I']
@@ -313,14 +320,9 @@ def test_loop_lagrangian_matches_kirchhoff(seed):
 
 @pytest.mark.parametrize("seed", range(12))
 def test_node_lagrangian_matches_kirchhoff(seed):
-    rng = np.random.default_rng(2000 + seed)
-    br, cp, n, entries, values = random_circuit(rng, LINEAR, mutual=True)
-    C = Circuit(entries, parameters=['M12'])
-    L = C.lagrangian(method="node")
+    rng, br, n, entries, values, C, L, solver, t0 = _lagrangian_case(2000 + seed, "node")
     A = C.node_analysis()
     assert A.ground() == 0
-    solver = MNA(br, cp, n)
-    t0 = float(rng.uniform(0.1, 2))
     # node fluxes: ground 0 and phi(head) - phi(tail) = E*t0 on voltage sources
     rows, rhs = [np.eye(n)[0]], [0.0]
     for b in br:
