@@ -62,7 +62,7 @@ from ..errors import AnalysisError
 from ..symbols import t as _t
 from .articulated_body import articulated_accelerations
 from .composite_body import mass_matrix
-from .form import constraint_terms, deferred, velocity_constraint_terms
+from .form import constraint_terms, resolved, velocity_constraint_terms
 from .graph import ExpressionGraph, SymbolicConverter
 from .newton_euler import applied_forces, forcing, generalized_forces, inverse_dynamics
 from .tree_kinematics import TreeKinematics, not_applicable, tree_order
@@ -526,9 +526,7 @@ class RecursiveForm:
             sage: RecursiveForm(BodyTree([], [x]), energy=lambda: dx^2/2).energy()
             1/2*dx^2
         """
-        if deferred(self._energy):
-            value = self._energy()
-            self._energy = None if value is None else SR(value)
+        self._energy = resolved(self._energy)
         return self._energy
 
     def with_functions(self, values):
