@@ -15,53 +15,21 @@ Target: the whole census within minutes on 2 cores.
 Usage: python bench/bench_census.py [--quick] [--executor process]
 """
 import argparse
+import os
+import sys
 import time
 
-import numpy as np
-from scipy.optimize import root
-from scipy.spatial.transform import Rotation
-
-from sage.all import SR, QQ, var, cos, sin, diagonal_matrix, zero_matrix
-from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField, Lagrangian, euler_angles
+from sage.all import SR, QQ
 from sage_dynsym.analysis.census import equilibrium_census, discriminant_polynomials, \
     equilibria_at, _amended_potential
 
-w0, A, B, C, J, r, t, chi = var('w0 A B C J r t chi')
-VALUES = {A: 1, B: 2, C: QQ(5) / 2, w0: 1, J: 1, r: 1}
-
-
-def gyrostat(sequence):
-    angles = [SR.var(n) for _, n in sequence]
-    orbit = RigidBody('orbital frame', rotations=[(3, w0 * t)], mass=0, inertia=zero_matrix(3))
-    sat = RigidBody('satellite', parent=1, rotations=[(a, q) for (a, _), q in zip(sequence, angles)],
-                    mass=1, inertia=diagonal_matrix([A, B, C]))
-    rotor = RigidBody('rotor', parent=2, rotations=[(3, chi)], mass=0,
-                      inertia=diagonal_matrix([0, 0, J]))
-    S = MechanicalSystem([orbit, sat, rotor], angles + [chi],
-                         force_function=NewtonianField(w0**2 * r**3, r, [cos(w0 * t), sin(w0 * t), 0]))
-    L = Lagrangian(S.lagrangian().expr().simplify_trig().expand(), angles + [chi])
-    return L.routh([chi]), euler_angles(list(zip([a for a, _ in sequence], angles)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, 'tests'))
+from gyrostat import VALUES, INERTIA, critical_orientations, gyrostat, gyrostat_torque  # noqa: E402
 
 
 def direct(h, starts=300):
     """Critical points and minima of W on SO(3), numerically (the reference)."""
-    Is, It = np.diag([1.0, 2.0, 2.5]), np.diag([1.0, 2.0, 3.5])
-
-    def torque(R):
-        g, n = R[0, :], R[2, :]
-        return 3 * np.cross(It @ g, g) - np.cross(Is @ n, n) - h * np.cross([0, 0, 1.0], n)
-    found = []
-    for R0 in Rotation.random(starts, random_state=np.random.default_rng(5)).as_matrix():
-        sol = root(lambda w: torque(R0 @ Rotation.from_rotvec(w).as_matrix()), np.zeros(3), tol=1e-13)
-        R = R0 @ Rotation.from_rotvec(sol.x).as_matrix()
-        if np.linalg.norm(torque(R)) < 1e-9 and all(np.linalg.norm(R - S) > 1e-6 for S in found):
-            found.append(R)
-    minima = 0
-    for R in found:
-        H = np.array([(torque(R @ Rotation.from_rotvec(1e-6 * e).as_matrix())
-                       - torque(R @ Rotation.from_rotvec(-1e-6 * e).as_matrix())) / 2e-6
-                      for e in np.eye(3)])
-        minima += bool(np.all(np.linalg.eigvalsh((H + H.T) / 2) > 1e-7))
+    found, minima = critical_orientations(gyrostat_torque(*INERTIA, h), starts=starts, seed=5)
     return len(found), minima
 
 

@@ -49,20 +49,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 
-from reference.chains import spatial_chain  # noqa: E402
-
-
-def _point(desc, seed=1):
-    """A random numerical point for every symbol of the equations."""
-    rng = random.Random(seed)
-    point = {}
-    for q in desc['coordinates']:
-        point[q] = rng.uniform(-3, 3)
-        point['d' + q] = rng.uniform(-2, 2)
-        point['dd' + q] = rng.uniform(-2, 2)
-    for p in desc['parameters']:
-        point[p] = rng.uniform(0.5, 2)
-    return point
+from reference.chains import random_point, spatial_chain  # noqa: E402
 
 
 def _size(exprs):
@@ -92,7 +79,7 @@ def worker_sage(n, christoffel='auto'):
     C = equations_cse(E)
     result = _report(result, cse_size=_size([f'{s}={e}' for s, e in C.subexpressions()]
                                             + C.equations()))
-    point = _point(desc)
+    point = random_point(desc, random.Random(1))
     order = sorted(point)
     values = [float(fast_callable(SR(e), vars=[SR.var(s) for s in order], domain=RDF)(
         *[point[s] for s in order])) for e in E]
@@ -112,7 +99,7 @@ def worker_sympy(n, method):
     result = _report(time=time.perf_counter() - start)
     E = [chain.to_plain(e) for e in eom]
     result = _report(result, size=_size(E))
-    point = _point(desc)
+    point = random_point(desc, random.Random(1))
     order = sorted(point)
     f = sympy.lambdify([sympy.Symbol(s) for s in order], E, modules='math', cse=True)
     sign = -1 if method == 'kane' else 1    # fr + frstar = -E

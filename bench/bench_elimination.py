@@ -11,8 +11,9 @@ seconds: sympy.groebner (lex, eliminated unknowns first) and, with
 Usage: python bench/bench_elimination.py [--quick] [--timeout S] [--plain]
 """
 import argparse
-import multiprocessing as mp
 import time
+
+from isolated import in_subprocess
 
 NAMES = "i1 i2 u3 u4 u5 u6 I0 I01 I02 g1 g2 g3 g4 s1 s2 s3 s4"
 
@@ -48,18 +49,6 @@ def plain_job(queue):
     queue.put((time.time() - t0, len(J.gens())))
 
 
-def in_subprocess(job, timeout):
-    queue = mp.Queue()
-    proc = mp.Process(target=job, args=(queue,))
-    proc.start()
-    proc.join(timeout)
-    if proc.is_alive():
-        proc.kill()
-        proc.join()
-        return None
-    return queue.get() if not queue.empty() else None
-
-
 def run_sage():
     from sage.all import SR
     from sage_dynsym.io.expressions import ExpressionParser
@@ -92,7 +81,7 @@ def main():
           f"({n_terms} terms); parameters_for(I01, I02): {tp:.4f} s")
     for name, job in [("sympy.groebner (lex)", sympy_job)] + \
             ([("Sage plain elimination_ideal", plain_job)] if args.plain else []):
-        res = in_subprocess(job, timeout)
+        res = in_subprocess(job, (), timeout)
         if res is None:
             print(f"{name}: timeout after {timeout:.0f} s; ratio > {timeout / te:.0f}x")
         else:

@@ -19,13 +19,14 @@ Systems (all with symbolic parameters):
 Usage: python bench/bench_integrals.py [--quick] [--timeout SECONDS]
 """
 import argparse
-import multiprocessing
 import time
 
 from sage.all import var
 
 from sage_dynsym.io.expressions import ExpressionParser
 from sage_dynsym.lie import LiePoissonSystem
+
+from isolated import in_subprocess
 
 NAMES = ['M1', 'M2', 'M3', 'g1', 'g2', 'g3']
 PARAMETERS = ['A1', 'A2', 'A3', 'mu', 'x0', 'y0', 'z0', 'C', 'a1', 'a2', 'a3', 'b1', 'b2', 'b3']
@@ -76,18 +77,6 @@ def sympy_dimension(text, degree, queue):
     queue.put((time.time() - start, dimension, len(cs)))
 
 
-def run_sympy(text, degree, timeout):
-    queue = multiprocessing.Queue()
-    child = multiprocessing.Process(target=sympy_dimension, args=(text, degree, queue))
-    child.start()
-    child.join(timeout)
-    if child.is_alive():
-        child.terminate()
-        child.join()
-        return None
-    return queue.get() if not queue.empty() else None
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--quick', action='store_true', help='degrees 1 and 2 only')
@@ -101,7 +90,7 @@ def main():
     for name, text in SYSTEMS.items():
         for d in degrees:
             t_ours, dim = ours(text, d)
-            ref = run_sympy(text, d, timeout)
+            ref = in_subprocess(sympy_dimension, (text, d), timeout)
             if ref is None:
                 print(f"{name:22} {d:>2} {'':>8} {dim:>4} {t_ours:>11.3f}s "
                       f"{'> ' + format(timeout, 'g') + 's':>10} {'':>4} {'> ' + format(timeout / t_ours, '.0f'):>8}")

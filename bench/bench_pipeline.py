@@ -54,7 +54,7 @@ import timeit
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 
-from reference.chains import spatial_chain, offset_chain  # noqa: E402
+from reference.chains import spatial_chain, offset_chain, physical_values  # noqa: E402
 
 CHAINS = {'spatial': spatial_chain, 'offset': offset_chain}
 SIZES = (2, 4, 6, 8, 12, 20)
@@ -64,14 +64,7 @@ def chain_values(name, desc):
     """The parameter values of a run (fixed seeds): physically possible."""
     if name == 'offset':
         return {'g': 9.81}
-    rng = random.Random(1)
-    values = {'g': 9.81}
-    for k in range(1, len(desc['bodies']) + 1):
-        m, c = rng.uniform(0.5, 2), rng.uniform(0.3, 1)
-        values.update({f'm{k}': m, f'c{k}': c, f'l{k}': rng.uniform(0.5, 2),
-                       f'A{k}': m * c * c + m * rng.uniform(0.2, 0.5),
-                       f'C{k}': m * rng.uniform(0.05, 0.2)})
-    return {p: values[p] for p in desc['parameters']}
+    return physical_values(desc, random.Random(1))
 
 
 def states(desc, count=3):

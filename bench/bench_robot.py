@@ -61,6 +61,7 @@ sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 from bench_pipeline import (description, states, best, exponent,  # noqa: E402
                             relative_difference)
 from reference.chains import offset_chain, humanoid_tree  # noqa: E402
+from reference.numerics import central_differences  # noqa: E402
 
 SIZES = (20, 50, 100)
 
@@ -68,17 +69,6 @@ SIZES = (20, 50, 100)
 def model(name, n):
     """The plain-data description and the parameter values of a model."""
     return (humanoid_tree() if name == 'humanoid' else offset_chain(n)), {'g': 9.81}
-
-
-def central_differences(f, x, h=1e-6):
-    import numpy as np
-    columns = []
-    for j in range(len(x)):
-        step = h * max(1.0, abs(x[j]))
-        e = np.zeros_like(x)
-        e[j] = step
-        columns.append((f(0.0, x + e) - f(0.0, x - e)) / (2 * step))
-    return np.array(columns).T
 
 
 def worker_sage(name, n, jacobian=True):

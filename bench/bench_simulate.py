@@ -29,8 +29,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 
-from reference.chains import spatial_chain  # noqa: E402
-from rhs_speed import sage_chain, kane_chain, sympy_rhs, physical_values  # noqa: E402
+from reference.chains import physical_values, spatial_chain  # noqa: E402
+from rhs_speed import sage_chain, kane_chain, sympy_rhs  # noqa: E402
 
 TOLERANCES = dict(method='DOP853', rtol=1e-10, atol=1e-12)
 

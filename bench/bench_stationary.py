@@ -14,12 +14,13 @@ Target: 9-unknown problems in under 1 s.
 Usage: python bench/bench_stationary.py [--quick] [--timeout SECONDS]
 """
 import argparse
-import multiprocessing
 import time
 
 from sage.all import SR, QQ, var, cos, sin, solve
 
 from sage_dynsym.analysis import stationary_solutions
+
+from isolated import in_subprocess
 
 
 def pendulums(n, numeric):
@@ -86,18 +87,6 @@ def _maxima(integrals, variables, queue):
     queue.put(("ok", elapsed, (len(found), bogus)))
 
 
-def maxima_solve(integrals, variables, timeout):
-    queue = multiprocessing.Queue()
-    child = multiprocessing.Process(target=_maxima, args=(integrals, variables, queue))
-    child.start()
-    child.join(timeout)
-    if child.is_alive():
-        child.kill()
-        child.join()
-        return None
-    return queue.get() if not queue.empty() else ("error", None, "no answer")
-
-
 def run(problem, timeout):
     name, integrals, variables = problem
     n_unknowns = len(variables) + len(integrals) - 1
@@ -105,7 +94,8 @@ def run(problem, timeout):
     sols = stationary_solutions(integrals, variables)
     ours = time.time() - start
     dims = sorted(s.dimension() for s in sols)
-    m = maxima_solve(integrals, variables, timeout)
+    m = in_subprocess(_maxima, (integrals, variables), timeout,
+                      default=("error", None, "no answer"))
     if m is None:
         maxima, note = f"> {timeout} s", "timed out"
         ratio = f"> {timeout / ours:.0f}x"

@@ -28,7 +28,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, os.pardir, 'tests'))
 
-from reference.chains import spatial_chain  # noqa: E402
+from reference.chains import physical_values, spatial_chain  # noqa: E402
 from sage_chains import sage_chain  # noqa: E402
 
 
@@ -81,21 +81,6 @@ def sympy_rhs(kane, values):
         a = (*x, *p)
         return np.linalg.solve(M_full(*a), F_full(*a)).ravel()
     return small, full
-
-
-def physical_values(desc, rng):
-    """
-    Random parameter values of the spatial chain that a real chain can
-    have: the central inertia diag(A - m c^2, A - m c^2, C) is positive and
-    obeys the triangle inequalities (else the mass matrix may be singular).
-    """
-    values = {'g': 9.81}
-    for k in range(1, len(desc['bodies']) + 1):
-        m, c = rng.uniform(0.5, 2), rng.uniform(0.3, 1)
-        values.update({f'm{k}': m, f'c{k}': c, f'l{k}': rng.uniform(0.5, 2),
-                       f'A{k}': m * c * c + m * rng.uniform(0.2, 0.5),
-                       f'C{k}': m * rng.uniform(0.05, 0.2)})
-    return {p: values[p] for p in desc['parameters']}
 
 
 def per_call(f, x, calls):

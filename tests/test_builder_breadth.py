@@ -28,19 +28,25 @@ from sage.all import QQ, SR, cos, matrix, sin, var
 from sage_dynsym.interact.builder import SystemBuilder
 
 
-def test_cart_pendulum_with_spring_damper_and_push():
+def builder(bodies, **fields):
+    """A builder whose text fields hold ``fields`` (by the field's name) and
+    whose bodies are ``bodies`` (the fields of each, as typed)."""
     B = SystemBuilder()
-    B.name.value = 'cart'
-    B.parameters.value = 'M, m, l, g, k, c, F'
-    B.coordinates.value = 'y, theta'
-    B.gravity.value = '0, 0, -g'
-    B.potential.value = '-k*y^2/2'
-    B.dissipation.value = 'c*dy^2/2'
-    B.remove_body()
-    B.add_body(dict(name='cart', parent='0', joint='0, y, 0', mass='M'))
+    for key, value in fields.items():
+        getattr(B, key).value = value
+    B.remove_body()             # the spherical pendulum's body a new builder shows
+    for body in bodies:
+        B.add_body(body)
+    return B
+
+
+def test_cart_pendulum_with_spring_damper_and_push():
     # inertia about the pivot O_k (the package's convention): a point mass
-    B.add_body(dict(name='bob', parent='cart', rotations='1 theta', mass_center='0, 0, -l',
-                    mass='m', inertia='m*l^2, m*l^2, 0'))
+    B = builder([dict(name='cart', parent='0', joint='0, y, 0', mass='M'),
+                 dict(name='bob', parent='cart', rotations='1 theta', mass_center='0, 0, -l',
+                      mass='m', inertia='m*l^2, m*l^2, 0')],
+                name='cart', parameters='M, m, l, g, k, c, F', coordinates='y, theta',
+                gravity='0, 0, -g', potential='-k*y^2/2', dissipation='c*dy^2/2')
     B.add_load(dict(body='bob', point='0, 0, -l', force='0, F, 0', axes='0'))
     E = B.model().lagrangian().lagrange_equations()
     M, m, l, g, k, c, F, y, th, dy, dth, ddy, ddth = var(
@@ -54,14 +60,9 @@ def test_cart_pendulum_with_spring_damper_and_push():
 
 
 def test_cartesian_pendulum_constraint_force():
-    B = SystemBuilder()
-    B.name.value = 'rod'
-    B.parameters.value = 'm, l, g'
-    B.coordinates.value = 'x, y'
-    B.gravity.value = '0, -g, 0'
-    B.constraints.value = 'x^2 + y^2 - l^2'
-    B.remove_body()
-    B.add_body(dict(name='bob', parent='0', joint='x, y, 0', mass='m'))
+    B = builder([dict(name='bob', parent='0', joint='x, y, 0', mass='m')], name='rod',
+                parameters='m, l, g', coordinates='x, y', gravity='0, -g, 0',
+                constraints='x^2 + y^2 - l^2')
     L = B.model().lagrangian()
     assert len(L.multipliers()) == 1
     mu = L.multipliers()[0]
@@ -77,10 +78,8 @@ def test_cartesian_pendulum_constraint_force():
 
 
 def test_isolated_windings_coupled_by_mutual_inductance():
-    B = SystemBuilder()
-    B.kind.value = 'circuit'
-    B.circuit_parameters.value = 'Mu'
-    B.branches.value = "1 2 L1\n2 1 R1\n3 4 L2\n4 3 R2\nmutual L1 L2 = Mu"
+    B = builder([], kind='circuit', circuit_parameters='Mu',
+                branches="1 2 L1\n2 1 R1\n3 4 L2\n4 3 R2\nmutual L1 L2 = Mu")
     C = B.model()
     values = {SR.var(n): v for n, v in
               dict(L1=QQ(2), L2=QQ(3), R1=QQ(5), R2=QQ(7), Mu=QQ(1)).items()}

@@ -20,72 +20,23 @@ independent computations.
   for h along a principal axis: between 8 and 24 equilibria, the stable
   ones from 4 to 2 (Gutnik and Sarychev).
 """
+import sys
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq, root
-from scipy.spatial.transform import Rotation
+from scipy.optimize import brentq
 
-from sage.all import SR, QQ, var, diagonal_matrix, zero_matrix, cos, sin
-from sage_dynsym import RigidBody, MechanicalSystem, NewtonianField, Lagrangian
+from sage.all import SR, QQ, var, cos, sin
+from sage_dynsym import Lagrangian
 from sage_dynsym.analysis.charts import configuration_points
 from sage_dynsym.analysis.census import equilibria_at, equilibrium_census, _counts
 from sage_dynsym.analysis.stationary import stationary_solutions, stationary_motions
-from sage_dynsym.mechanics.charts import euler_angles, model_chart
+from sage_dynsym.mechanics.charts import euler_angles
 
-
-# -- the independent route: critical points on SO(3) by numerical search ----------
-
-def critical_orientations(torque, starts=300, seed=7):
-    """Distinct rotation matrices where ``torque(R)`` vanishes, and how
-    many are minima (the Hessian d tau / d eps positive definite)."""
-    rng = np.random.default_rng(seed)
-    found = []
-    for R0 in Rotation.random(starts, random_state=rng).as_matrix():
-        sol = root(lambda w: torque(R0 @ Rotation.from_rotvec(w).as_matrix()), np.zeros(3),
-                   tol=1e-13)
-        R = R0 @ Rotation.from_rotvec(sol.x).as_matrix()
-        if np.linalg.norm(torque(R)) < 1e-9 and all(np.linalg.norm(R - S) > 1e-6 for S in found):
-            found.append(R)
-    minima = 0
-    for R in found:
-        eps = 1e-6
-        H = np.array([(torque(R @ Rotation.from_rotvec(eps * e).as_matrix())
-                       - torque(R @ Rotation.from_rotvec(-eps * e).as_matrix())) / (2 * eps)
-                      for e in np.eye(3)])
-        minima += bool(np.all(np.linalg.eigvalsh((H + H.T) / 2) > 1e-7))
-    return found, minima
-
-
-def gyrostat_torque(Is, It, h, w0=1.0):
-    def torque(R):
-        gamma, n = R[0, :], R[2, :]
-        return (3 * w0**2 * np.cross(It @ gamma, gamma) - w0**2 * np.cross(Is @ n, n)
-                - h * w0 * np.cross([0, 0, 1.0], n))
-    return torque
-
-
-# -- the model, as in worksheets/05_gyrostat_satellite.ipynb, with three angles ------
-
-w0, A, B, C, J, r, t, chi = var('w0 A B C J r t chi')
-VALUES = {A: 1, B: 2, C: QQ(5) / 2, w0: 1, J: 1, r: 1}
-INERTIA = (np.diag([1.0, 2.0, 2.5]), np.diag([1.0, 2.0, 3.5]))
-
-
-def gyrostat(sequence):
-    angles = [SR.var(n) for _, n in sequence]
-    orbit = RigidBody('orbital frame', rotations=[(3, w0 * t)], mass=0, inertia=zero_matrix(3))
-    sat = RigidBody('satellite', parent=1, rotations=[(a, q) for (a, _), q in zip(sequence, angles)],
-                    mass=1, inertia=diagonal_matrix([A, B, C]))
-    rotor = RigidBody('rotor', parent=2, rotations=[(3, chi)], mass=0,
-                      inertia=diagonal_matrix([0, 0, J]))
-    S = MechanicalSystem([orbit, sat, rotor], angles + [chi],
-                         force_function=NewtonianField(w0**2 * r**3, r, [cos(w0 * t), sin(w0 * t), 0]))
-    L = Lagrangian(S.lagrangian().expr().simplify_trig().expand(), angles + [chi])
-    R = L.routh([chi])
-    # the model knows its chart: the satellite turned by three angles
-    return R, model_chart(S, angles)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from gyrostat import VALUES, INERTIA, critical_orientations, gyrostat, gyrostat_torque  # noqa: E402
 
 
 @pytest.fixture(scope='module')
@@ -97,6 +48,15 @@ def models():
 
 # -- charts ---------------------------------------------------------------------------
 
+def linear_torque(M):
+    """The torque of W(R) = tr(M^T R) on the body turned to ``R``: dW along
+    R exp(eps^) is tr(M^T R eps^), so the torque is vee(R^T M - M^T R)."""
+    def torque(R):
+        S = R.T @ M - M.T @ R
+        return np.array([S[2, 1], S[0, 2], S[1, 0]])
+    return torque
+
+
 def test_linear_function_on_so3_has_four_critical_orientations():
     a, b, c = var('a b c')
     chart = euler_angles([(3, a), (1, b), (2, c)])
@@ -105,11 +65,7 @@ def test_linear_function_on_so3_has_four_critical_orientations():
     R = chart.rotation_matrix()
     W = sum(exact[i][j] * R[i, j] for i in range(3) for j in range(3))
     points = configuration_points(stationary_solutions([W], [a, b, c]), chart)
-    # dW along R exp(eps^) is tr(M^T R eps^): the torque is vee(R^T M - M^T R)
-    def torque(Rn):
-        S = Rn.T @ M - M.T @ Rn
-        return np.array([S[2, 1], S[0, 2], S[1, 0]])
-    found, _ = critical_orientations(torque, starts=100)
+    found, _ = critical_orientations(linear_torque(M), starts=100)
     assert len(points) == len(found) == 4
     numeric = sorted(tuple(np.round(np.array([float(x) for x in p.embedding()]), 8)) for p in points)
     direct = sorted(tuple(np.round(Rn.flatten(), 8)) for Rn in found)
@@ -147,10 +103,7 @@ def test_listing_in_a_chart_with_a_symbolic_parameter():
     W = R[0, 0] + 2 * R[1, 1] + 3 * R[2, 2] + k * R[2, 1]
     sols = stationary_solutions([W], [a, b, c], chart=chart)
     M = np.array([[1, 0, 0], [0, 2, 0], [0, 1 / 3, 3]])
-
-    def torque(Rn):
-        S = Rn.T @ M - M.T @ Rn
-        return np.array([S[2, 1], S[0, 2], S[1, 0]])
+    torque = linear_torque(M)
     found, _ = critical_orientations(torque, starts=100)
     listed = [rotation(chart, s.point(), {k: QQ(1) / 3}) for s in sols]
     assert len(sols.chart_solutions()) == 16 and len(listed) == len(found) == 4

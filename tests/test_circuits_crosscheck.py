@@ -15,6 +15,8 @@ L: u = -L di/dt (with mutual terms), C: i = -C du/dt, E: u = E, I: i = I,
 f: i = f(u).
 """
 import itertools
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -25,6 +27,9 @@ from sage.all import SR, Graph
 from sage_dynsym.circuits import Circuit
 from sage_dynsym.errors import CircuitError
 from sage_dynsym.symbols import velocity, acceleration, t
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from reference.numerics import same_multiset  # noqa: E402
 
 
 # ----------------------------------------------------------------------------
@@ -121,31 +126,21 @@ class MNA:
 # random complete circuits
 # ----------------------------------------------------------------------------
 
-def _connected(nnodes, edges):
+def _union_find(nnodes, edges):
+    """The number of connected components of the graph, and whether its
+    edges close a loop."""
     parent = list(range(nnodes))
 
     def find(x):
         while parent[x] != x:
             x = parent[x]
         return x
-    for a, b in edges:
-        parent[find(a)] = find(b)
-    return len({find(x) for x in range(nnodes)}) == 1
-
-
-def _is_forest(nnodes, edges):
-    parent = list(range(nnodes))
-
-    def find(x):
-        while parent[x] != x:
-            x = parent[x]
-        return x
+    loop = False
     for a, b in edges:
         ra, rb = find(a), find(b)
-        if ra == rb:
-            return False
+        loop = loop or ra == rb
         parent[ra] = rb
-    return True
+    return len({find(x) for x in range(nnodes)}), loop
 
 
 def random_circuit(rng, weights, mutual=False, nonlinear=False):
@@ -164,7 +159,7 @@ def random_circuit(rng, weights, mutual=False, nonlinear=False):
         ks = list(rng.choice(kinds, len(pairs), p=p))
         ce = [e for e, k in zip(pairs, ks) if k in 'CE']
         rest = [e for e, k in zip(pairs, ks) if k not in 'LI']
-        if not (_is_forest(n, ce) and _connected(n, rest)):
+        if _union_find(n, ce)[1] or _union_find(n, rest)[0] != 1:
             continue            # not complete: C/E loop or L/I cut-set
         if not any(k in 'LC' for k in ks):
             continue
@@ -283,16 +278,23 @@ def _incidence(br, n):
 LINEAR = {'R': 3, 'L': 2, 'C': 2, 'E': 1, 'I': 1}
 
 
-@pytest.mark.parametrize("seed", range(12))
-def test_loop_lagrangian_matches_kirchhoff(seed):
-    rng = np.random.default_rng(1000 + seed)
+def _lagrangian_case(seed, method):
+    """A random linear circuit with a mutual inductance: the random
+    generator, its branches and number of nodes, its entries and values, the
+    circuit, its Lagrangian by ``method``, the reference solver and a time
+    ``t0``."""
+    rng = np.random.default_rng(seed)
     br, cp, n, entries, values = random_circuit(rng, LINEAR, mutual=True)
     C = Circuit(entries, parameters=['M12'])
-    L = C.lagrangian(method="loop")
+    return (rng, br, n, entries, values, C, C.lagrangian(method=method), MNA(br, cp, n),
+            float(rng.uniform(0.1, 2)))
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_loop_lagrangian_matches_kirchhoff(seed):
+    rng, br, n, entries, values, C, L, solver, t0 = _lagrangian_case(1000 + seed, "loop")
     chords = [loop[0][2] for loop in C.loop_analysis().loops()]
     index = {b['name']: k for k, b in enumerate(br)}
-    solver = MNA(br, cp, n)
-    t0 = float(rng.uniform(0.1, 2))
     # branch charges: any KCL-consistent vector with the current sources' charges I*t0
     Z = null_space(_incidence(br, n))
     isrc = [k for k, b in enumerate(br) if b['kind'] == 'I']
@@ -318,14 +320,9 @@ def test_loop_lagrangian_matches_kirchhoff(seed):
 
 @pytest.mark.parametrize("seed", range(12))
 def test_node_lagrangian_matches_kirchhoff(seed):
-    rng = np.random.default_rng(2000 + seed)
-    br, cp, n, entries, values = random_circuit(rng, LINEAR, mutual=True)
-    C = Circuit(entries, parameters=['M12'])
-    L = C.lagrangian(method="node")
+    rng, br, n, entries, values, C, L, solver, t0 = _lagrangian_case(2000 + seed, "node")
     A = C.node_analysis()
     assert A.ground() == 0
-    solver = MNA(br, cp, n)
-    t0 = float(rng.uniform(0.1, 2))
     # node fluxes: ground 0 and phi(head) - phi(tail) = E*t0 on voltage sources
     rows, rhs = [np.eye(n)[0]], [0.0]
     for b in br:
@@ -365,18 +362,6 @@ def _pencil_eigenvalues(L, values):
     return [x for x in lam if np.isfinite(x) and 1e-7 < abs(x) < 1e7]
 
 
-def _same_spectrum(a, b, tol=1e-6):
-    a, b = list(a), list(b)
-    if len(a) != len(b):
-        return False
-    for x in a:
-        k = min(range(len(b)), key=lambda j: abs(b[j] - x))
-        if abs(b[k] - x) > tol * max(1, abs(x)):
-            return False
-        b.pop(k)
-    return True
-
-
 @pytest.mark.parametrize("seed", range(10))
 def test_loop_and_node_methods_same_eigenvalues(seed):
     rng = np.random.default_rng(3000 + seed)
@@ -386,8 +371,8 @@ def test_loop_and_node_methods_same_eigenvalues(seed):
     loop = _pencil_eigenvalues(C.lagrangian(method="loop"), values)
     node = _pencil_eigenvalues(C.lagrangian(method="node"), values)
     physical = [x for x in np.linalg.eigvals(MNA(br, cp, n).state_matrix()) if abs(x) > 1e-7]
-    assert _same_spectrum(loop, node), (entries, loop, node)
-    assert _same_spectrum(loop, physical), (entries, loop, physical)
+    assert same_multiset(loop, node, rel=1e-6), (entries, loop, node)
+    assert same_multiset(loop, physical, rel=1e-6), (entries, loop, physical)
 
 
 # ----------------------------------------------------------------------------
@@ -413,7 +398,7 @@ def test_non_planar_circuit():
     node = _pencil_eigenvalues(C.lagrangian(method="node"), values)
     solver = MNA(br, [], 6)
     physical = [x for x in np.linalg.eigvals(solver.state_matrix()) if abs(x) > 1e-7]
-    assert _same_spectrum(loop, node) and _same_spectrum(loop, physical)
+    assert same_multiset(loop, node, rel=1e-6) and same_multiset(loop, physical, rel=1e-6)
     # the Brayton-Moser route, when the split exists, agrees with Kirchhoff too
     try:
         BM = C.brayton_moser()

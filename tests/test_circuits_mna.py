@@ -16,6 +16,9 @@ Conventions (sage_dynsym.circuits.elements): branch [a, b, X] has current
 i along a->b and voltage u = v(b) - v(a); R: u = -R i, L: u = -L di/dt
 (with mutual terms), C: i = -C du/dt, E: u = E, I: i = I.
 """
+import sys
+from pathlib import Path
+
 import numpy as np
 import pytest
 from scipy.linalg import eig
@@ -23,6 +26,9 @@ from scipy.linalg import eig
 from sage.all import SR, QQ, matrix, function
 from sage_dynsym.circuits import Circuit
 from sage_dynsym.errors import CircuitError
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from reference.numerics import same_multiset  # noqa: E402
 
 
 # ----------------------------------------------------------------------------
@@ -105,18 +111,6 @@ def natural_frequencies(E, A):
     alpha, beta = eig(-A, E, homogeneous_eigvals=True)[0]
     finite = np.abs(beta) > 1e-9 * np.abs(alpha)
     return alpha[finite] / beta[finite]
-
-
-def same_multiset(a, b, rel=1e-8):
-    a, b = list(a), list(b)
-    if len(a) != len(b):
-        return False
-    for x in a:
-        k = min(range(len(b)), key=lambda j: abs(b[j] - x))
-        if abs(b[k] - x) > rel * max(1.0, abs(x)):
-            return False
-        b.pop(k)
-    return True
 
 
 # ----------------------------------------------------------------------------

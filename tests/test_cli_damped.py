@@ -6,6 +6,7 @@ to stop because ``cyclic_coordinates()`` offered ``x`` and ``routh([x])``
 refused it)."""
 import pytest
 from conftest import run_cli as run
+from descriptions import cartesian_pendulum
 
 CART = """\
 kind: mechanical
@@ -62,23 +63,6 @@ def test_undamped_cart_still_reduced(tmp_path):
     assert "Not cyclic" not in text
 
 
-PENDULUM = """\
-kind: mechanical
-name: Cartesian pendulum
-parameters: [m, l, g]
-positive: [m, l, g]
-coordinates: [x, z]
-force_function:
-  uniform_gravity: [0, 0, -g]
-constraints: ["x^2 + z^2 - l^2"]
-bodies:
-  - name: bob
-    parent: 0
-    joint: [x, 0, z]
-    mass: m
-"""
-
-
 @pytest.mark.slow       # one more whole report; `make test-slow` (CI)
 def test_constrained_pendulum_is_reported(tmp_path):
     """The multiplier's equations and the solved multiplier are printed; the
@@ -86,7 +70,7 @@ def test_constrained_pendulum_is_reported(tmp_path):
     (Tension T = -2 mu1 l = m (v^2 - g z)/l on the circle, Goldstein et al.,
     Classical Mechanics, 3rd ed., section 2.4.)"""
     path = tmp_path / "pendulum.yaml"
-    path.write_text(PENDULUM)
+    path.write_text(cartesian_pendulum())
     result = run(str(path))
     assert result.returncode == 0, result.stderr
     text = result.stdout

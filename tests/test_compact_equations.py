@@ -19,7 +19,7 @@ import pytest
 import sympy
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from reference.chains import random_chain, spatial_chain  # noqa: E402
+from reference.chains import random_chain, random_point, spatial_chain  # noqa: E402
 from reference.sympy_chain import SympyChain  # noqa: E402
 from sage_chains import sage_chain as _sage_system  # noqa: E402
 
@@ -61,13 +61,7 @@ CASES = _cases()
 
 def _point(desc, seed):
     rng = random.Random(seed)
-    point = {}
-    for q in desc['coordinates']:
-        point[q] = rng.uniform(-3, 3)
-        point['d' + q] = rng.uniform(-2, 2)
-        point['dd' + q] = rng.uniform(-2, 2)
-    for p in desc['parameters']:
-        point[p] = desc['values'].get(p, rng.uniform(0.5, 2))
+    point = random_point(desc, rng, desc['values'])
     point['t'] = rng.uniform(0, 2)
     return point
 

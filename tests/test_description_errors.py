@@ -1,28 +1,18 @@
 """Bad description files get a clear error from the package's own classes,
 naming the entry; never a traceback from inside Sage, never code execution."""
 import os
+import sys
 import textwrap
+from pathlib import Path
 
 import pytest
 
 from sage_dynsym import load, DescriptionError, ModelError, ExpressionError
 
-GOOD = """
-kind: mechanical
-name: probe
-parameters: [m, l, g]
-coordinates: [psi, theta]
-force_function:
-  uniform_gravity: [0, 0, -g]
-bodies:
-  - name: pendulum
-    parent: 0
-    rotations: [[3, psi], [1, theta]]
-    joint: [0, 0, 0]
-    mass_center: [0, 0, l]
-    mass: m
-    inertia: [[m*l^2, 0, 0], [0, m*l^2, 0], [0, 0, 0]]
-"""
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from hostile.corpus import pendulum  # noqa: E402
+
+GOOD = pendulum("probe")
 
 
 def write(tmp_path, text, name="model.yaml"):

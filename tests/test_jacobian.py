@@ -28,22 +28,12 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
 from reference.chains import random_chain, offset_chain  # noqa: E402
+from reference.numerics import central_differences  # noqa: E402
 from sage_chains import sage_chain  # noqa: E402
 from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity  # noqa: E402
 from sage_dynsym.numerics import rhs as rhs_module  # noqa: E402
 
 TOLERANCE = 1e-7
-
-
-def central_differences(f, x, h=1e-6):
-    x = np.asarray(x, dtype=float)
-    columns = []
-    for j in range(len(x)):
-        step = h * max(1.0, abs(x[j]))
-        e = np.zeros_like(x)
-        e[j] = step
-        columns.append((f(0.0, x + e) - f(0.0, x - e)) / (2 * step))
-    return np.array(columns).T
 
 
 def relative_error(J, reference):

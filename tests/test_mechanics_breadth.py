@@ -35,6 +35,7 @@ from sympy.physics import mechanics as me
 
 from sage.all import SR, QQ, RDF, matrix, vector, diagonal_matrix
 from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity, load, save
+from sage_dynsym.description import example_path
 from sage_dynsym.mechanics.loads import Load
 from sage_dynsym.symbols import velocity, acceleration
 
@@ -69,31 +70,8 @@ def close(a, b, scale=1.0):
 
 # ---------------------------------------------------------------------------
 # (a) pendulum on a cart with a spring and a damper: gravity + spring in one
-# file
+# file (the bundled example cart_pendulum_spring_damper.yaml)
 # ---------------------------------------------------------------------------
-
-CART_YAML = """
-kind: mechanical
-name: cart pendulum with spring and damper
-parameters: [M, m, l, g, k, c]
-positive: [M, m, l, g, k, c]
-coordinates: [y, theta]
-force_function:
-  - uniform_gravity: [0, 0, -g]
-  - expression: "-k*y^2/2"
-dissipation: "c*dy^2/2"
-bodies:
-  - name: cart
-    joint: [0, y, 0]
-    mass: M
-  - name: bob
-    parent: cart
-    rotations: [[1, theta]]
-    mass_center: [0, 0, -l]
-    mass: m
-    inertia: [[m*l^2, 0, 0], [0, m*l^2, 0], [0, 0, 0]]
-"""
-
 
 def sympy_cart(values):
     y, th = me.dynamicsymbols('y theta')
@@ -116,9 +94,7 @@ def sympy_cart(values):
 
 
 def test_cart_pendulum_spring_damper(tmp_path):
-    path = tmp_path / "cart.yaml"
-    path.write_text(CART_YAML)
-    S = load(str(path))
+    S = load(example_path('cart_pendulum_spring_damper.yaml'))
     # the two force-function terms add up
     y, th, M, m, l, g, k, c = [SR.var(n) for n in 'y theta M m l g k c'.split()]
     assert bool(S.force_function() == m * g * l * SR(th).cos() - k * y ** 2 / 2)
@@ -489,10 +465,8 @@ def test_constraints_round_trip(tmp_path):
 # parameter values
 # ---------------------------------------------------------------------------
 
-def test_subs_exact_and_float(tmp_path):
-    path = tmp_path / "cart.yaml"
-    path.write_text(CART_YAML)
-    S = load(str(path))
+def test_subs_exact_and_float():
+    S = load(example_path('cart_pendulum_spring_damper.yaml'))
     M, m, l, g, k, c = [SR.var(n) for n in 'M m l g k c'.split()]
     S1 = S.subs({M: 2, 'm': QQ(1) / 2, l: 1, g: 9.81, k: 3.0, c: 0.5})
     assert S1.parameters() == [] and S1.positive_parameters() == []

@@ -31,19 +31,24 @@ def reference(f, y0, t_end, points):
     return sol.y.T
 
 
+def spherical_pendulum(g_over_l):
+    """The textbook equations of the spherical pendulum in (psi, theta,
+    dpsi, dtheta), theta from the upward vertical (the mass centre at
+    (0, 0, l) in the body axes)."""
+    def f(t, y):
+        p, th, dp, dth = y
+        return [dp, dth, -2 * dp * dth * math.cos(th) / math.sin(th),
+                dp ** 2 * math.sin(th) * math.cos(th) + g_over_l * math.sin(th)]
+    return f
+
+
 def test_spherical_pendulum():
     L = load(example_path('spherical_pendulum.yaml')).lagrangian()
     m, l, g = 1.5, 0.8, 9.81
     psi, theta, dpsi, dtheta = var('psi theta dpsi dtheta')
     initial = {psi: 0.3, theta: 2.5, dpsi: 1.2, dtheta: -0.4}
     T = L.simulate({'m': m, 'l': l, 'g': g}, initial, 5, points=51)
-
-    # theta from the upward vertical (mass centre at (0, 0, l) in the body axes)
-    def textbook(t, y):
-        p, th, dp, dth = y
-        return [dp, dth, -2 * dp * dth * math.cos(th) / math.sin(th),
-                dp ** 2 * math.sin(th) * math.cos(th) + g / l * math.sin(th)]
-    expected = reference(textbook, [0.3, 2.5, 1.2, -0.4], 5, 51)
+    expected = reference(spherical_pendulum(g / l), [0.3, 2.5, 1.2, -0.4], 5, 51)
     for k, v in enumerate([psi, theta, dpsi, dtheta]):
         assert np.allclose(T.values(v), expected[:, k], rtol=0, atol=1e-8)
     if T.energy() is None:
@@ -60,12 +65,7 @@ def test_spherical_pendulum_hamiltonian():
     initial = {'psi': 0.3, 'theta': theta, 'p_psi': m * l ** 2 * math.sin(theta) ** 2 * 1.2,
                'p_theta': m * l ** 2 * -0.4}
     T = H.simulate({'m': m, 'l': l, 'g': g}, initial, 5, points=11)
-
-    def textbook(t, y):
-        p, th, dp, dth = y
-        return [dp, dth, -2 * dp * dth * math.cos(th) / math.sin(th),
-                dp ** 2 * math.sin(th) * math.cos(th) + g / l * math.sin(th)]
-    expected = reference(textbook, [0.3, 2.5, 1.2, -0.4], 5, 11)
+    expected = reference(spherical_pendulum(g / l), [0.3, 2.5, 1.2, -0.4], 5, 11)
     assert np.allclose(T.values('theta'), expected[:, 1], rtol=0, atol=1e-8)
     assert np.allclose(T.values('psi'), expected[:, 0], rtol=0, atol=1e-8)
     assert T.energy_drift() < 1e-8

@@ -13,6 +13,8 @@ under test: the projection of a point onto a circle is the point scaled to
 the radius, the residual of a constraint is computed by hand.
 """
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -24,23 +26,10 @@ from sage_dynsym.circuits import Circuit
 from sage_dynsym.description import example_path
 from sage_dynsym.errors import AnalysisError, DescriptionError, ModelError
 
-SECONDS = 60
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from descriptions import cartesian_pendulum  # noqa: E402
 
-PENDULUM = """\
-kind: mechanical
-name: Cartesian pendulum
-parameters: [m, l, g]
-positive: [m, l, g]
-coordinates: [x, z]
-force_function:
-  uniform_gravity: [0, 0, -g]
-constraints: ["{constraint}"]
-bodies:
-  - name: bob
-    parent: 0
-    joint: [x, 0, z]
-    mass: m
-"""
+SECONDS = 60
 
 
 def bounded(function):
@@ -66,7 +55,7 @@ def top():
 def cartesian(tmp_path_factory):
     def model(constraint="x^2 + z^2 - l^2"):
         path = tmp_path_factory.mktemp("pendulum") / "pendulum.yaml"
-        path.write_text(PENDULUM.format(constraint=constraint))
+        path.write_text(cartesian_pendulum(constraint))
         return load(str(path))
     return model
 

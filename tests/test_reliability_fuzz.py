@@ -18,8 +18,9 @@ import tempfile
 
 import pytest
 import yaml
-from hypothesis import event, given, strategies as st
+from hypothesis import given, strategies as st
 from conftest import fuzz_settings
+from fuzzing import within
 
 from sage.all import SR
 from sage_dynsym import load, DynSymError
@@ -33,21 +34,7 @@ pytestmark = pytest.mark.slow
 SECONDS = 20        # per example: a hang fails the test
 
 
-def bounded(function, *args):
-    """Run ``function``; return its value or the DynSymError raised, fail on anything else."""
-    from cysignals.alarm import alarm, cancel_alarm, AlarmInterrupt
-    alarm(SECONDS)
-    try:
-        result = function(*args)
-    except DynSymError as err:
-        event(f"refused: {type(err).__name__}")
-        return err
-    except AlarmInterrupt:
-        pytest.fail(f"no answer within {SECONDS} s for {args!r:.300}")
-    finally:
-        cancel_alarm()
-    event(f"accepted: {type(result).__name__}")
-    return result
+bounded = within(SECONDS)
 
 
 # -- expressions -----------------------------------------------------------
@@ -257,20 +244,23 @@ def _dump(data):
     return yaml.safe_dump(data, allow_unicode=True)
 
 
+def _from_dict(function, data):
+    # a refusal names the file it was given
+    result = bounded(function, data, "fuzz.yaml")
+    if isinstance(result, DynSymError):
+        assert str(result).startswith("fuzz.yaml")
+
+
 @fuzz_settings(700)
 @given(mechanical)
 def test_mechanical_descriptions(data):
-    result = bounded(mechanical_system_from_dict, data, "fuzz.yaml")
-    if isinstance(result, DynSymError):
-        assert str(result).startswith("fuzz.yaml")
+    _from_dict(mechanical_system_from_dict, data)
 
 
 @fuzz_settings(500)
 @given(circuits)
 def test_circuit_descriptions(data):
-    result = bounded(circuit_from_dict, data, "fuzz.yaml")
-    if isinstance(result, DynSymError):
-        assert str(result).startswith("fuzz.yaml")
+    _from_dict(circuit_from_dict, data)
 
 
 @fuzz_settings(300)

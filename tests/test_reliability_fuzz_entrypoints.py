@@ -20,8 +20,9 @@ import string
 
 import numpy as np
 import pytest
-from hypothesis import event, given, strategies as st
+from hypothesis import given, strategies as st
 from conftest import fuzz_settings
+from fuzzing import within
 
 from sage.all import SR, var, QQ
 from sage_dynsym import (DynSymError, Lagrangian, LiePoissonSystem, MechanicalSystem, RigidBody,
@@ -36,21 +37,7 @@ pytestmark = pytest.mark.fuzz
 SECONDS = 30
 
 
-def bounded(function):
-    """``function()``, or the DynSymError it raised; any other exception fails."""
-    from cysignals.alarm import alarm, cancel_alarm, AlarmInterrupt
-    alarm(SECONDS)
-    try:
-        result = function()
-    except DynSymError as err:
-        event(f"refused: {type(err).__name__}")
-        return err
-    except AlarmInterrupt:
-        pytest.fail(f"no answer within {SECONDS} s")
-    finally:
-        cancel_alarm()
-    event(f"accepted: {type(result).__name__}")
-    return result
+bounded = within(SECONDS)
 
 
 x, dx, k, c = var('x dx k c')

@@ -15,10 +15,10 @@ EXAMPLES::
     sage: declared_names({'parameters': ['m', 'dx']}, 'parameters', 'p.yaml')
     ['m', 'dx']
 """
-from ..errors import DescriptionError, brief
+from ..errors import DescriptionError, ModelError, brief
 from ..symbols import check_name
 
-__all__ = ['MAX_PARAMETERS', 'MAX_RESULT_LENGTH', 'MAX_TITLE_LENGTH', 'check_keys',
+__all__ = ['MAX_PARAMETERS', 'MAX_RESULT_LENGTH', 'MAX_TITLE_LENGTH', 'check_keys', 'check_mapping',
            'declared_names', 'declared_positive', 'title', 'text']
 
 #: Most parameters of a description (a 1,000-body model with a mass, a
@@ -52,6 +52,35 @@ def check_keys(data, allowed, entry, source, what):
         if key not in allowed:
             raise DescriptionError(f"unknown key {brief(key)}; {what} has the keys "
                                    f"{', '.join(sorted(allowed))}", entry=entry, source=source)
+
+
+def check_mapping(value, keys, what, entry, expected="a mapping"):
+    r"""
+    Check that ``value`` given to a class of models is a dict whose keys
+    are among ``keys`` (in the order the message lists them): else a
+    :class:`~sage_dynsym.errors.ModelError` naming ``entry``; ``what`` names
+    such a mapping (``"a load"``), ``expected`` what else is accepted.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.io.fields import check_mapping
+        sage: check_mapping({'body': 'b'}, ('body', 'radius'), "a disk", 'rolling[0]')
+        sage: check_mapping({'bdy': 'b'}, ('body', 'radius'), "a disk", 'rolling[0]')
+        Traceback (most recent call last):
+        ...
+        ModelError: rolling[0]: unknown key 'bdy'; a disk has the keys body, radius
+        sage: check_mapping(1, ('body', 'radius'), "a disk", 'rolling[0]', "a Disk or a dict")
+        Traceback (most recent call last):
+        ...
+        ModelError: rolling[0]: expected a Disk or a dict with the keys body, radius, got 1
+    """
+    if not isinstance(value, dict):
+        raise ModelError(f"expected {expected} with the keys {', '.join(keys)}, got {value!r}",
+                         entry=entry)
+    for key in value:
+        if key not in keys:
+            raise ModelError(f"unknown key {key!r}; {what} has the keys {', '.join(keys)}",
+                             entry=entry)
 
 
 def declared_names(data, key, source, required=True, limit=None):

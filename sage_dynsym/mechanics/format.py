@@ -1,15 +1,10 @@
 r"""
 The description format of mechanical systems (read and written)
 
-A description file is human-editable YAML (format:
-:doc:`/description_files`), read with PyYAML's
-*safe* loader: tags that would construct Python objects are refused, and
-every expression is a string parsed by
-:class:`~sage_dynsym.io.expressions.ExpressionParser` restricted to the
-declared symbols (never ``eval``). Errors name the file, the entry and what
-was expected.
-
-A mechanical system::
+The keys of a mechanical description file (format:
+:doc:`/description_files`; how the files are read safely:
+:mod:`sage_dynsym.description`), their checks, and the mapping written
+back. A mechanical system::
 
     kind: mechanical
     name: spherical pendulum
@@ -46,25 +41,22 @@ A circuit (``kind: circuit``) is handled by
 :func:`read_mechanical_system`; the functions of
 :mod:`sage_dynsym.mechanics.description` keep their earlier names.
 
-:func:`save` writes the description back with a ``results:`` section (the
-Lagrangian and the equations, as text and LaTeX); :func:`load` with
-``results=True`` parses that section again so that a later session can
-reuse it.
+:meth:`MechanicalFormat.to_dict` gives the mapping back, the one that
+:func:`~sage_dynsym.description.save` writes (with a ``results:``
+section).
 
-EXAMPLES::
+EXAMPLES: a slider on a spring, read from its mapping and written back::
 
-    sage: import os, tempfile
-    sage: from sage_dynsym import load, save
-    sage: from sage_dynsym.description import example_path
-    sage: S = load(example_path('spherical_pendulum.yaml')); S
-    Mechanical system 'spherical pendulum': 1 body, coordinates (psi, theta)
-    sage: path = os.path.join(tempfile.mkdtemp(), 'pendulum.yaml')
-    sage: save(S, path)
-    sage: S2, results = load(path, results=True)
-    sage: bool(results['lagrangian'] == S.lagrangian().expr())
-    True
-    sage: results['lagrange_equations'] == S.lagrangian().lagrange_equations()
-    True
+    sage: from sage_dynsym import MechanicalSystem
+    sage: d = {'kind': 'mechanical', 'name': 'slider', 'parameters': ['m', 'k'],
+    ....:      'coordinates': ['x'], 'force_function': {'expression': '-k*x^2/2'},
+    ....:      'bodies': [{'name': 'b', 'joint': ['x', 0, 0], 'mass': 'm'}]}
+    sage: S = MechanicalSystem.from_dict(d); S
+    Mechanical system 'slider': 1 body, coordinates (x)
+    sage: S.to_dict()['force_function'], S.to_dict()['bodies'][0]['joint']
+    ({'expression': '-1/2*k*x^2'}, ['x', '0', '0'])
+    sage: MechanicalSystem.from_dict(S.to_dict()).lagrangian().expr()
+    1/2*dx^2*m - 1/2*k*x^2
 """
 import re
 

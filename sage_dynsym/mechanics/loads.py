@@ -62,6 +62,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
+from ..io.fields import check_mapping
 from .rigid_body import RigidBody, as_vector3
 
 __all__ = ['LOAD_KEYS', 'Load', 'load_list', 'body_index']
@@ -159,13 +160,7 @@ class Load(SageObject):
         """
         if isinstance(value, Load):
             return value
-        if not isinstance(value, dict):
-            raise ModelError(f"expected a Load or a dictionary with the keys "
-                             f"{', '.join(LOAD_KEYS)}, got {value!r}", entry=entry)
-        for key in value:
-            if key not in LOAD_KEYS:
-                raise ModelError(f"unknown key {key!r}; a load has the keys "
-                                 f"{', '.join(LOAD_KEYS)}", entry=entry)
+        check_mapping(value, LOAD_KEYS, "a load", entry, "a Load or a dictionary")
         if 'body' not in value:
             raise ModelError("missing key 'body'", entry=entry)
         try:

@@ -28,6 +28,7 @@ EXAMPLES::
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
+from ..io.fields import check_mapping
 from ..analysis.operating_point import OperatingPoint
 from ..symbols import t
 
@@ -102,13 +103,7 @@ def checked_operating_points(points, coordinates, velocities, parameters=None):
         if isinstance(point, OperatingPoint):
             point = {'at': point.at(), 'velocities': point.velocities(),
                      'coordinates': point.coordinates()}
-        if not isinstance(point, dict):
-            raise ModelError(f"expected a mapping with the keys {', '.join(POINT_KEYS)}, got "
-                             f"{point!r}", entry=entry)
-        for key in point:
-            if key not in POINT_KEYS:
-                raise ModelError(f"unknown key {key!r}; an operating point has the keys "
-                                 f"{', '.join(POINT_KEYS)}", entry=entry)
+        check_mapping(point, POINT_KEYS, "an operating point", entry)
         values = {}
         for key, known, what in (('at', coordinates, 'a coordinate'),
                                  ('velocities', velocities, 'a velocity')):

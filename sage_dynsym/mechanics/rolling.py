@@ -61,6 +61,7 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import ModelError
+from ..io.fields import check_mapping
 from ..algebra.trigonometric import trig_rational_simplify, NotPolynomial, TrigPolynomialRing
 from .frames import cross
 from .rigid_body import RigidBody, as_scalar
@@ -133,13 +134,7 @@ class RollingDisk(SageObject):
         """
         if isinstance(value, RollingDisk):
             return value
-        if not isinstance(value, dict):
-            raise ModelError(f"expected a dict with the keys {', '.join(cls.KEYS)}, got "
-                             f"{value!r}", entry=entry)
-        for key in value:
-            if key not in cls.KEYS:
-                raise ModelError(f"unknown key {key!r}; a rolling disk has the keys "
-                                 f"{', '.join(cls.KEYS)}", entry=entry)
+        check_mapping(value, cls.KEYS, "a rolling disk", entry, "a dict")
         for key in cls.KEYS:
             if key not in value:
                 raise ModelError(f"missing key {key!r} (a rolling disk has the keys "

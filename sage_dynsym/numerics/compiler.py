@@ -52,7 +52,8 @@ from .expressions import identifier, write_code
 
 __all__ = ['symbol_names', 'graph_c_source', 'jacobian_c_source', 'jacobian_function', 'c_source',
            'python_source', 'run_python', 'python_function', 'compiler', 'cache_directory',
-           'compile_c', 'Kernel', 'compile_kernel', 'jacobian_flags', 'native_flags']
+           'compile_c', 'Kernel', 'compile_kernel', 'optimization_flags', 'native_flags',
+           'LARGE_JACOBIAN']
 
 _LIBRARIES = {}
 _PROTOTYPE = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_void_p, ctypes.c_void_p,
@@ -646,21 +647,26 @@ def native_flags():
 LARGE_JACOBIAN = 120_000
 
 
-def jacobian_flags(graph):
+def optimization_flags(graph, large):
     r"""
-    The compiler flags of the compiled Jacobian of ``graph``: ``-O2`` (its
-    calls about twice as fast as at ``-O1``), ``-O1`` above
-    :data:`LARGE_JACOBIAN` nodes, and :func:`native_flags` (the columns
-    computed together in :data:`LANES` use the machine's widest vectors).
+    The compiler flags for the code of ``graph``: ``-O2``, or ``-O1``
+    above ``large`` nodes, and the processor's own instructions where the
+    compiler takes them (:func:`native_flags`).
+
+    The limits: :data:`~sage_dynsym.numerics.recursive.LARGE_GRAPH` for a
+    right-hand side (a call of a 50-link chain is 15% faster with the
+    native instructions), :data:`LARGE_JACOBIAN` for a Jacobian (its calls
+    at ``-O2`` about twice as fast as at ``-O1``; the columns computed
+    together in :data:`LANES` use the machine's widest vectors).
 
     EXAMPLES::
 
         sage: from sage_dynsym.numerics.graph import ExpressionGraph
-        sage: from sage_dynsym.numerics.compiler import jacobian_flags
-        sage: jacobian_flags(ExpressionGraph())[0]
+        sage: from sage_dynsym.numerics.compiler import optimization_flags, LARGE_JACOBIAN
+        sage: optimization_flags(ExpressionGraph(), LARGE_JACOBIAN)[0]
         '-O2'
     """
-    return ('-O1' if graph.size() > LARGE_JACOBIAN else '-O2',) + native_flags()
+    return ('-O1' if graph.size() > large else '-O2',) + native_flags()
 
 
 def _machine():

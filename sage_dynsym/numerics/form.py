@@ -50,7 +50,7 @@ from ..errors import AnalysisError, ModelError, brief
 from ..symbols import t as _t
 from .expressions import linear_coefficients, symbols_and_functions
 
-__all__ = ['deferred', 'constraint_terms', 'velocity_constraint_terms', 'as_form', 'NumericalForm']
+__all__ = ['deferred', 'resolved', 'constraint_terms', 'velocity_constraint_terms', 'as_form', 'NumericalForm']
 
 
 def deferred(value):
@@ -65,6 +65,26 @@ def deferred(value):
         (True, False, False)
     """
     return isinstance(value, (types.FunctionType, types.MethodType, functools.partial))
+
+
+def resolved(value):
+    r"""
+    ``value`` computed now if it is :func:`deferred` (a symbolic expression,
+    or ``None`` if the function gives none), else ``value`` itself: how a
+    model's energy given as a function is evaluated when first asked for.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.form import resolved
+        sage: x = var('x'); resolved(lambda: x^2), resolved(lambda: 1).parent(), resolved(x)
+        (x^2, Symbolic Ring, x)
+        sage: resolved(lambda: None) is None
+        True
+    """
+    if deferred(value):
+        value = value()
+        return None if value is None else SR(value)
+    return value
 
 
 def constraint_terms(constraints, coordinates, velocities):
@@ -379,9 +399,7 @@ class NumericalForm:
             sage: NumericalForm(E, energy=lambda: x^2).energy()
             x^2
         """
-        if deferred(self._energy):
-            value = self._energy()
-            self._energy = None if value is None else SR(value)
+        self._energy = resolved(self._energy)
         return self._energy
 
     def _expressions(self):

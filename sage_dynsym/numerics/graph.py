@@ -52,6 +52,14 @@ _PYTHON = {name: getattr(math, python.split('.')[-1]) if python.startswith('math
 _PYTHON['sqrt'] = math.sqrt
 
 
+def _arithmetic(kind, operands):
+    # an operation of _SYMBOL or a negation, with the texts of its operands
+    if kind == _NEG:
+        return f'-{operands[0]}'
+    spacing = ' ' if kind in (_ADD, _SUB) else ''
+    return f'{operands[0]}{spacing}{_SYMBOL[kind]}{spacing}{operands[1]}'
+
+
 class ExpressionGraph:
     r"""
     A graph of scalar operations with shared subexpressions and folded
@@ -370,15 +378,11 @@ class ExpressionGraph:
             return self._operand(node, names, language)
         operands = [self._operand(a, names, language) for a in args
                     if not isinstance(a, str)]
-        if kind in (_ADD, _SUB):
-            return f'{operands[0]} {_SYMBOL[kind]} {operands[1]}'
-        if kind in _SYMBOL:
-            return f'{operands[0]}{_SYMBOL[kind]}{operands[1]}'
-        if kind == _NEG:
-            return f'-{operands[0]}'
         if kind == _POW:
             return (f'{operands[0]}**{operands[1]}' if language == 'python' else
                     f'pow({operands[0]}, {operands[1]})')
+        if kind != _CALL:
+            return _arithmetic(kind, operands)
         name = args[0]
         if name == 'sqrt':
             function = 'math.sqrt' if language == 'python' else 'sqrt'
@@ -400,15 +404,11 @@ class ExpressionGraph:
         def inner(a):
             text = self.show(a)
             return text if self._kind[a] in (_CONST, _INPUT, _CALL, _POW) else f'({text})'
-        if kind in (_ADD, _SUB):
-            return f'{inner(args[0])} {_SYMBOL[kind]} {inner(args[1])}'
-        if kind in _SYMBOL:
-            return f'{inner(args[0])}{_SYMBOL[kind]}{inner(args[1])}'
-        if kind == _NEG:
-            return f'-{inner(args[0])}'
         if kind == _POW:
             return f'pow({self.show(args[0])}, {self.show(args[1])})'
-        return f"{args[0]}({', '.join(self.show(a) for a in args[1:])})"
+        if kind == _CALL:
+            return f"{args[0]}({', '.join(self.show(a) for a in args[1:])})"
+        return _arithmetic(kind, [inner(a) for a in args])
 
     def operations(self, outputs):
         r"""

@@ -62,7 +62,7 @@ from ..errors import AnalysisError
 from ..symbols import t as _t
 from .articulated_body import articulated_accelerations
 from .composite_body import mass_matrix
-from .form import constraint_terms, deferred, velocity_constraint_terms
+from .form import constraint_terms, resolved, velocity_constraint_terms
 from .graph import ExpressionGraph, SymbolicConverter
 from .newton_euler import applied_forces, forcing, generalized_forces, inverse_dynamics
 from .tree_kinematics import TreeKinematics, not_applicable, tree_order
@@ -70,7 +70,7 @@ from .tree_solve import PIVOT_TOLERANCE, dense_solve, ltdl
 
 __all__ = ['RecursiveForm', 'unsupported', 'tree_accelerations', 'graph_kinematics',
            'generalized_forces', 'inverse_dynamics', 'check_backend', 'compiled_library',
-           'optimization', 'LARGE_GRAPH', 'PIVOT_TOLERANCE']
+           'LARGE_GRAPH', 'PIVOT_TOLERANCE']
 
 
 def graph_kinematics(tree, values=None):
@@ -169,25 +169,6 @@ def tree_accelerations(kin, solver='auto'):
 LARGE_GRAPH = 20_000
 
 
-def optimization(graph):
-    r"""
-    The compiler flags for the code of ``graph``: ``-O2``, or ``-O1``
-    above :data:`LARGE_GRAPH` nodes, and the processor's own instructions
-    where the compiler takes them
-    (:func:`~sage_dynsym.numerics.compiler.native_flags`; a call of a
-    50-link chain 15% faster).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.numerics.graph import ExpressionGraph
-        sage: from sage_dynsym.numerics.recursive import optimization
-        sage: optimization(ExpressionGraph())[0]
-        '-O2'
-    """
-    from .compiler import native_flags
-    return ('-O1' if graph.size() > LARGE_GRAPH else '-O2',) + native_flags()
-
-
 def check_backend(backend, what):
     r"""
     Refuse a ``backend`` other than ``'auto'``, ``'c'`` and ``'python'``
@@ -214,7 +195,9 @@ def compiled_library(graph, source, backend, what, flags=None):
     ``'auto'`` when no C compiler works (said at verbose level 1); with
     ``'c'`` a failure is an error. ``source`` is a function giving the C
     source (only called when C is tried), ``what`` names the code in errors,
-    ``flags`` are the compiler's (default: :func:`optimization`).
+    ``flags`` are the compiler's (default:
+    :func:`~sage_dynsym.numerics.compiler.optimization_flags` with the
+    limit :data:`LARGE_GRAPH`).
 
     EXAMPLES::
 
@@ -227,13 +210,13 @@ def compiled_library(graph, source, backend, what, flags=None):
         ...
         AnalysisError: numerical_rhs: backend must be 'auto', 'c' or 'python', got 'fortran'
     """
-    from .compiler import compile_c
+    from .compiler import compile_c, optimization_flags
     from sage.misc.verbose import verbose
     check_backend(backend, what)
     if backend == 'python':
         return None
     try:
-        return compile_c(source(), flags=flags or optimization(graph))
+        return compile_c(source(), flags=flags or optimization_flags(graph, LARGE_GRAPH))
     except (AnalysisError, OSError) as error:
         if backend == 'c':
             raise
@@ -541,9 +524,7 @@ class RecursiveForm:
             sage: RecursiveForm(BodyTree([], [x]), energy=lambda: dx^2/2).energy()
             1/2*dx^2
         """
-        if deferred(self._energy):
-            value = self._energy()
-            self._energy = None if value is None else SR(value)
+        self._energy = resolved(self._energy)
         return self._energy
 
     def with_functions(self, values):
@@ -710,7 +691,8 @@ class RecursiveForm:
              [-30.   0.]]
         """
         import numpy as np
-        from .compiler import jacobian_c_source, run_python, jacobian_function, jacobian_flags
+        from .compiler import (jacobian_c_source, run_python, jacobian_function,
+                               optimization_flags, LARGE_JACOBIAN)
         check_backend(backend, "numerical_rhs")
         key = ('jacobian', backend, derivatives)
         if key in self._kernels:
@@ -721,7 +703,7 @@ class RecursiveForm:
                   f"of a tree of {len(self._tree.bodies())} bodies")
         library = compiled_library(
             G, lambda: jacobian_c_source(G, columns, size, header, pivots, inputs),
-            backend, "numerical_rhs", flags=jacobian_flags(G))
+            backend, "numerical_rhs", flags=optimization_flags(G, LARGE_JACOBIAN))
         function = None if library is None else jacobian_function(library.dynsym_jac, size)
         if function is None:
             outputs = [a for nodes, _, _ in columns for a in nodes]

@@ -29,7 +29,7 @@ from sage.symbolic.ring import SR
 
 from ..errors import ModelError
 from ..symbols import t as _t
-from .form import deferred
+from .form import deferred, resolved
 
 __all__ = ['State', 'Trajectory', 'CURVES_PER_PANEL', 'DENSE_POINTS']
 
@@ -343,9 +343,7 @@ class Trajectory(SageObject):
             sage: Trajectory([0, 1], [[1], [2]], [x], {}, energy=lambda: x^3).energy()
             x^3
         """
-        if deferred(self._energy):
-            energy = self._energy()
-            self._energy = None if energy is None else SR(energy)
+        self._energy = resolved(self._energy)
         return self._energy
 
     def __getstate__(self):

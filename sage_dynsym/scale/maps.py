@@ -280,12 +280,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
     if method not in ('auto', 'polynomial', 'eigvals'):
         raise AnalysisError(f"method must be 'auto', 'polynomial' or 'eigvals', got {method!r}",
                             entry=entry)
-    try:
-        tol = float(tol)
-    except (TypeError, ValueError):
-        tol = -1.0
-    if not tol >= 0:
-        raise AnalysisError("tol must be a non-negative number", entry=entry)
+    tol = _tolerance(tol, "tol", entry)
     points = (parameters if isinstance(parameters, Points) else
               parse_points(parameters, samples, seed, max_points=max_points))
     for name, value in (('fixed', fixed), ('at', at)):
@@ -327,12 +322,7 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
         lhs = B != identity_matrix(SR, B.nrows())
         task = dict(method='eigvals', size=J.nrows(), lhs=lhs,
                     program=compile_expressions(J.list() + (B.list() if lhs else []), keys, entry))
-    try:
-        marginal_tol = float(marginal_tol)
-    except (TypeError, ValueError):
-        marginal_tol = -1.0
-    if not marginal_tol >= 0:
-        raise AnalysisError("marginal_tol must be a non-negative number", entry=entry)
+    marginal_tol = _tolerance(marginal_tol, "marginal_tol", entry)
     task.update(points=points.layout, tol=tol, marginal_tol=marginal_tol)
     alpha = np.empty(points.size)
     stable = np.empty(points.size, dtype=bool)
@@ -363,6 +353,17 @@ def stability_map(system, parameters, fixed=None, client=None, samples=None, *, 
 # ---------------------------------------------------------------------------
 # the system
 # ---------------------------------------------------------------------------
+
+def _tolerance(value, name, entry):
+    # a tolerance given by the user, as a float (NaN and non-numbers refused)
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        value = -1.0
+    if not value >= 0:
+        raise AnalysisError(f"{name} must be a non-negative number", entry=entry)
+    return value
+
 
 def _linear_system(system, at, variables, lhs_matrix):
     from ..analysis import LinearSystem, linearize

@@ -105,6 +105,40 @@ def spatial_chain(n):
                 gravity=[0, 0, "-g"], values={})
 
 
+def physical_values(desc, rng):
+    """
+    Random parameter values of :func:`spatial_chain` that a real chain can
+    have: the central inertia diag(A - m c^2, A - m c^2, C) is positive and
+    obeys the triangle inequalities (else the mass matrix may be singular).
+    """
+    values = {'g': 9.81}
+    for k in range(1, len(desc['bodies']) + 1):
+        m, c = rng.uniform(0.5, 2), rng.uniform(0.3, 1)
+        values.update({f'm{k}': m, f'c{k}': c, f'l{k}': rng.uniform(0.5, 2),
+                       f'A{k}': m * c * c + m * rng.uniform(0.2, 0.5),
+                       f'C{k}': m * rng.uniform(0.05, 0.2)})
+    return {p: values[p] for p in desc['parameters']}
+
+
+def random_point(desc, rng, values=None):
+    """
+    A random numerical point for every symbol of the equations of ``desc``:
+    each coordinate ``q`` and its ``dq``, ``ddq``, then each parameter (taken
+    from ``values`` where it has one; a value is drawn for every parameter
+    all the same, so that the draws that follow do not depend on ``values``).
+    """
+    values = values or {}
+    point = {}
+    for q in desc['coordinates']:
+        point[q] = rng.uniform(-3, 3)
+        point['d' + q] = rng.uniform(-2, 2)
+        point['dd' + q] = rng.uniform(-2, 2)
+    for p in desc['parameters']:
+        drawn = rng.uniform(0.5, 2)
+        point[p] = values.get(p, drawn)
+    return point
+
+
 def offset_chain(n):
     """
     A second N-link chain, unlike :func:`spatial_chain`: link k turns about
