@@ -57,7 +57,7 @@ from ..arguments import expression_argument
 from ..errors import AnalysisError
 from .expression_walk import ExpressionWalker, ExpressionScan, split_angle, angle_sum, trig_value
 
-__all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
+__all__ = ['NotPolynomial', 'NotAlgebraic', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
            'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
 
 _ZERO, _ONE = SR(0), SR(1)
@@ -81,6 +81,22 @@ class NotPolynomial(AnalysisError):
         sage: from sage_dynsym.errors import AnalysisError
         sage: issubclass(NotPolynomial, AnalysisError), issubclass(NotPolynomial, ValueError)
         (True, True)
+    """
+
+
+class NotAlgebraic(AnalysisError):
+    r"""
+    An expression that is not polynomial (or rational) in the unknowns of a
+    polynomial system, after trigonometric functions of the unknowns are
+    replaced by their pairs `(c, s)` (see
+    :meth:`TrigPolynomialRing.for_unknowns`); the message names the
+    subexpression.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import NotAlgebraic
+        sage: print(NotAlgebraic("log(x)"))
+        log(x)
     """
 
 
@@ -162,13 +178,65 @@ class _Scan(ExpressionScan):
         return self.fractions or k > 0
 
 
+class _UnknownScan(_Scan):
+    r"""
+    The scan of :meth:`TrigPolynomialRing.for_unknowns`: a symbol named in
+    ``unknowns`` is an *angle* where it occurs in a trigonometric function
+    (of an integer combination of angles plus a rest free of them: the
+    cosine and sine of the rest are atoms) and a plain generator elsewhere
+    (``plain``, by name); every other symbol is a parameter; a part free of
+    the unknowns that is not polynomial is an atom. An unknown anywhere
+    else raises :class:`NotAlgebraic`; every number goes through
+    ``numbers`` (which refuses what it cannot make a rational).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import _UnknownScan
+        sage: x, q, a = var('x q a')
+        sage: S = _UnknownScan({'x', 'q'}, QQ); S.walk(a*x + cos(2*q + a))
+        sage: S.angles, S.plain, sorted(S.symbols, key=str), S.atoms
+        ({q: None}, {'x'}, [a, x], {cos(a): None, sin(a): None})
+    """
+
+    def __init__(self, unknowns, numbers):
+        super().__init__((), fractions=True)
+        self.unknowns, self.numbers, self.plain = unknowns, numbers, set()
+
+    def is_unknown(self, v):
+        return str(v) in self.unknowns
+
+    def symbol(self, e):
+        self.symbols.add(e)
+        if self.is_unknown(e):
+            self.plain.add(str(e))
+
+    def number(self, e):
+        self.numbers(e)
+
+    def atom(self, e):
+        if any(map(self.is_unknown, e.variables())):
+            raise NotAlgebraic(str(e))
+        self.atoms.setdefault(e)
+
+    def trig(self, op, e):
+        if not any(map(self.is_unknown, e.variables())):
+            return self.atom(e)
+        multiples, rest = split_angle(op, e.operands()[0], self.is_unknown, NotAlgebraic)
+        for v, _ in multiples:
+            self.angles.setdefault(v)
+        if not rest.is_zero():
+            self.atom(cos(rest))
+            self.atom(sin(rest))
+
+
 class _Fraction(ExpressionWalker):
     r"""
     An expression as a pair ``(numerator, denominator)`` of elements of the
     polynomial ring of ``generators`` (a dict: the symbolic value of each
     generator, and of the cosines and sines of the negative angles, to its
-    ring element). Numbers are rational (``exact``: only integers and
-    rationals, else the rational value of an inexact number); numerator
+    ring element). Numbers are rational (``exact``: ``True`` for only
+    integers and rationals, ``False`` for the rational value of an inexact
+    number, or a function giving the rational of a number); numerator
     and denominator of a part get at most ``limit`` terms. With ``pairs``
     (a dict: angles that are symbols to their pairs ``(c, s)``), a
     trigonometric function of integer multiples of them plus a generator
@@ -213,6 +281,8 @@ class _Fraction(ExpressionWalker):
         return None if element is None else (element, self.one)
 
     def number(self, e):
+        if callable(self.exact):
+            return self.ring(self.exact(e)), self.one
         if self.exact:
             if _is_rational(e):
                 return self.ring(e.pyobject()), self.one
@@ -527,6 +597,63 @@ class TrigPolynomialRing(UniqueRepresentation):
             found.symbols.update(SR(angle).variables())
         return cls(found.angles, found.symbols, found.atoms)
 
+    @classmethod
+    def for_unknowns(cls, expressions, unknowns, numbers=QQ):
+        r"""
+        The ring of a polynomial system in ``unknowns``: an unknown that
+        occurs in trigonometric functions is an angle (its pair `(c, s)`;
+        multiple angles and sums are expanded by :meth:`fraction` with
+        ``multiples=True``), any other unknown and every other symbol a
+        generator, and every part free of the unknowns that is not
+        polynomial an atom (`\cos\alpha` of a parameter, `\sqrt 2`,
+        `D[0](f)(u)`, and the cosine and sine of the part of an angle's
+        argument free of the unknowns), sorted by name.
+
+        INPUT:
+
+        - ``expressions`` -- symbolic expressions
+        - ``unknowns`` -- symbols
+        - ``numbers`` -- (default: `\QQ`) the function giving the rational
+          number of a numeric constant (it raises on what it refuses)
+
+        Raises :class:`NotAlgebraic` if an unknown occurs otherwise than in
+        a rational function of the generators, or both inside and outside
+        trigonometric functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
+            sage: q, x, g, a = var('q x g a')
+            sage: R = TrigPolynomialRing.for_unknowns([g*sin(2*q) - x*cos(q + a)], [q, x])
+            sage: R.angles(), R.symbols(), R.atoms()
+            ([q], ['g', 'x'], [cos(a), sin(a)])
+            sage: R is TrigPolynomialRing([q], [g, x], [cos(a), sin(a)])
+            True
+            sage: [R.to_symbolic(p) for p in R.fraction(sin(2*q)/x, multiples=True)]
+            [2*cos(q)*sin(q), x]
+
+        TESTS::
+
+            sage: TrigPolynomialRing.for_unknowns([exp(q)], [q])
+            Traceback (most recent call last):
+            ...
+            NotAlgebraic: e^q
+            sage: TrigPolynomialRing.for_unknowns([q*sin(q)], [q])
+            Traceback (most recent call last):
+            ...
+            NotAlgebraic: q occurs both inside and outside trigonometric functions
+        """
+        found = _UnknownScan({str(u) for u in unknowns}, numbers)
+        for expr in expressions:
+            found.walk(expr)
+        angles = [u for u in unknowns if u in found.angles]
+        for u in angles:
+            if str(u) in found.plain:
+                raise NotAlgebraic(f"{u} occurs both inside and outside trigonometric functions")
+        # an unknown that is not an angle is a generator even where absent
+        plain = [u for u in unknowns if u not in found.angles]
+        return cls(angles, found.symbols.union(plain), sorted(found.atoms, key=str))
+
     def angles(self):
         r"""
         The angles whose cosine and sine are generators of the ring.
@@ -567,6 +694,7 @@ class TrigPolynomialRing(UniqueRepresentation):
         return list(self._atoms)
 
     def _walk(self, exact, limit=None, multiples=False):
+        # exact: True, False, or the function giving the rational of a number
         # multiples: the angles that are symbols, for the addition formulas
         pairs = {a: p for a, p in self._pairs.items() if a.is_symbol()} if multiples else None
         return _Fraction(self.ring, self._elements, exact, limit, pairs)
@@ -740,7 +868,7 @@ class TrigPolynomialRing(UniqueRepresentation):
                  for e, group in groups.items()]
         return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
 
-    def fraction(self, expr, limit=None, multiples=False):
+    def fraction(self, expr, limit=None, multiples=False, numbers=None):
         r"""
         ``expr``, a rational function of the generators of the ring (see
         :meth:`for_expressions` with ``fractions=True``), as a pair
@@ -750,7 +878,8 @@ class TrigPolynomialRing(UniqueRepresentation):
         if numerator or denominator of a part get more than ``limit`` terms
         (common denominators of nested fractions grow fast, and their
         greatest common divisors take minutes). ``multiples``: as in
-        :meth:`convert`.
+        :meth:`convert`. ``numbers``: (default: integers and rationals only)
+        the function giving the rational number of a numeric constant.
 
         EXAMPLES::
 
@@ -763,7 +892,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: [R.to_symbolic(p) for p in R.fraction(tan(a - 2*a), multiples=True)]
             [-sin(a), cos(a)]
         """
-        return self._walk(True, limit, multiples).walk(SR(expr))
+        return self._walk(numbers or True, limit, multiples).walk(SR(expr))
 
     def simplest_fraction(self, numerator, denominator=1, printed=False):
         r"""
