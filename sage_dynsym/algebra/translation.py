@@ -85,6 +85,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from .expression_walk import TRIGONOMETRIC, MAX_ANGLE_MULTIPLE, split_angle, angle_sum, trig_value
 from .trigonometric import TrigPolynomialRing, NotAlgebraic, NotPolynomial
+from .trig_algebra import TrigAlgebra
 from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
 
 __all__ = ['Translation', 'NotAlgebraic', 'exact_rational', 'translate_expressions',
@@ -262,6 +263,27 @@ class Translation:
             [x]
         """
         return list(self._unknowns)
+
+    def algebra(self):
+        r"""The trigonometric algebra the expressions are read in (the one
+        of the package, :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`):
+        the pairs `(\cos, \sin)` of the unknowns that occur in
+        trigonometric functions, the other unknowns and the parameters, the
+        atoms. :meth:`fraction` is its conversion, the variables of
+        :meth:`flat_ring` renamed.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import Translation
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: q, m, l, g, a = var('q m l g a')
+            sage: T = Translation([m*l*cos(q) - g*sin(2*q + a)], [q])
+            sage: A = T.algebra(); A is TrigAlgebra([q], [g, l, m], [cos(a), sin(a)])
+            True
+            sage: bool(T.symbolic(T.equations()[0]) == SR(A(m*l*cos(q) - g*sin(2*q + a))))
+            True
+        """
+        return TrigAlgebra(self._trig)
 
     def ring(self):
         r"""The polynomial ring of the unknowns over the parameters' field
@@ -635,6 +657,21 @@ class ParameterAtoms:
                     self._positive.append(s)
             self._symbols.append(s)
         self._forward = {v: k for k, v in self._back.items()}
+        self._algebra = T.algebra()
+
+    def algebra(self):
+        r"""The trigonometric algebra the expressions are read in (see
+        :meth:`Translation.algebra`): the atoms are its generators that are
+        not symbols.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import ParameterAtoms
+            sage: lam, a, k = var('lam a k')
+            sage: ParameterAtoms([lam^2 + k*cos(a)], [lam]).algebra().gens()
+            (k, lam, cos(a))
+        """
+        return self._algebra
 
     def symbols(self):
         r"""The parameters, atoms replaced by their symbols.

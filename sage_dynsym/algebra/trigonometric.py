@@ -39,6 +39,7 @@ EXAMPLES::
     -(sin(a)^2 - 1)*cos(a)
 """
 from collections import Counter
+import re
 from itertools import chain
 from operator import itemgetter
 
@@ -61,6 +62,8 @@ __all__ = ['NotPolynomial', 'NotAlgebraic', 'circle_reduce', 'symbolic_trig', 'S
            'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
 
 _ZERO, _ONE = SR(0), SR(1)
+#: The names Singular takes for variables.
+_VARIABLE_NAME = re.compile(r'[A-Za-z][A-Za-z0-9_]*$')
 
 
 class NotPolynomial(AnalysisError):
@@ -534,8 +537,12 @@ class TrigPolynomialRing(UniqueRepresentation):
     def __init__(self, angles, symbols, atoms=()):
         self._angles, self._symbols, self._atoms = list(angles), list(symbols), list(atoms)
         k = len(self._angles)
+        # a symbol is a variable of its own name where Singular takes that
+        # name (``_C`` it does not)
         names = ([f'dynsymcos{i}' for i in range(k)] + [f'dynsymsin{i}' for i in range(k)]
-                 + self._symbols + [f'dynsymatom{i}' for i in range(len(self._atoms))])
+                 + [n if _VARIABLE_NAME.match(n) else f'dynsymsymbol{i}'
+                    for i, n in enumerate(self._symbols)]
+                 + [f'dynsymatom{i}' for i in range(len(self._atoms))])
         # always multivariate (one variable would give a univariate ring)
         self.ring = PolynomialRing(QQ, names, len(names), order='degrevlex')
         gens = self.ring.gens()
@@ -546,6 +553,7 @@ class TrigPolynomialRing(UniqueRepresentation):
                         + [SR.var(name) for name in self._symbols] + self._atoms)
         # the ring element of every symbol, atom, cosine and sine (the walk)
         self._elements = {value: gen for value, gen in zip(self._values, gens)}
+        self._symbol_gens = dict(zip(self._symbols, gens[2 * k:]))
         for angle, (c, s) in self._pairs.items():
             self._elements[(-angle).cos()], self._elements[(-angle).sin()] = c, -s
 
@@ -760,6 +768,24 @@ class TrigPolynomialRing(UniqueRepresentation):
             return c, -s
         return self.convert(angle.cos()), self.convert(angle.sin())
 
+    def generator(self, symbol, *default):
+        r"""The ring variable of ``symbol`` (one of :meth:`symbols`); the
+        ``default`` if given and ``symbol`` is not one of them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
+            sage: a, l, C = var('a l _C'); R = TrigPolynomialRing([a], [l, C])
+            sage: R.generator(l), R.generator(C), R.generator(a, None)
+            (l, dynsymsymbol0, None)
+            sage: R.to_symbolic(R.convert(C*l))
+            _C*l
+        """
+        gen = self._symbol_gens.get(str(symbol), *default)
+        if gen is None and not default:
+            raise KeyError(symbol)
+        return gen
+
     def diff(self, element, symbol):
         r"""The derivative of ``element`` with respect to ``symbol`` (a
         generator of the ring, such as a velocity).
@@ -772,7 +798,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: R.to_symbolic(R.diff(R.convert(l^2*da^2/2)*c, da))
             da*l^2*cos(a)
         """
-        return element.derivative(self.ring(str(symbol)))
+        return element.derivative(self.generator(symbol))
 
     def at_zero(self, element, symbols):
         r"""``element`` with every one of ``symbols`` (generators) set to zero.
@@ -785,7 +811,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: R.to_symbolic(R.at_zero(R.convert(l*da + l^2)*c, [da]))
             l^2*cos(a)
         """
-        return element.subs({self.ring(str(v)): 0 for v in symbols})
+        return element.subs({self.generator(v): 0 for v in symbols})
 
     def reduce(self, element):
         r"""
@@ -1031,9 +1057,8 @@ class RingCalculus:
         self.ring = ring
         self.zero = ring.zero
         P = ring.ring
-        names = set(P.variable_names())
-        self._direct = [P(str(q)) if str(q) in names else None for q in coordinates]
-        self._time = P(str(t)) if str(t) in names else None
+        self._direct = [ring.generator(q, None) for q in coordinates]
+        self._time = ring.generator(t, None)
         # per angle: its ring pair and the ring derivatives of the angle
         self._chains = []
         for angle in ring.angles():
