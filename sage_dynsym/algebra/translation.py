@@ -24,9 +24,16 @@ An expression in which an unknown occurs otherwise (`\exp q`, `q \sin q`,
 `\sin(q/2)`) is *not algebraic*: :class:`NotAlgebraic` names the
 subexpression.
 
-The ring variables and parameters get internal names (``x0, x1, ...``,
-``a0, a1, ...``), mapped back by position, so no user name can clash with
-them.
+The trigonometric part is the package's one algebra: the expressions are
+read in the :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra` of the
+unknowns' angles, the other unknowns, the parameters and the atoms
+(:meth:`Translation.algebra`, built by
+:meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.for_unknowns`,
+which also expands the multiple angles and sums and gives the pairs of the
+circle relations); the translation only splits its generators into the
+parameters (the coefficient field) and the unknowns (the ring variables).
+These get internal names (``x0, x1, ...``, ``a0, a1, ...``), mapped back by
+position, so no user name can clash with them.
 
 EXAMPLES::
 
