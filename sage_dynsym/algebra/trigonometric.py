@@ -520,8 +520,9 @@ class TrigPolynomialRing(UniqueRepresentation):
 
     @staticmethod
     def __classcall__(cls, angles, symbols, atoms=()):
-        # the normal form of the arguments: equal rings are one object
-        # (UniqueRepresentation), and the parent TrigAlgebra is keyed by it
+        # the normal form of the arguments (angles sorted, as the symbols):
+        # equal rings are one object (UniqueRepresentation), and the parent
+        # TrigAlgebra is keyed by it
         unique = []
         for angle in angles:
             angle = _unsigned_angle(angle)
@@ -530,7 +531,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             if angle not in unique and (angle.cos().operator() is cos
                                         or angle.sin().operator() is sin):
                 unique.append(angle)
-        return super().__classcall__(cls, tuple(unique),
+        return super().__classcall__(cls, tuple(sorted(unique, key=str)),
                                      tuple(sorted({str(v) for v in symbols}, key=str)),
                                      tuple(SR(a) for a in atoms))
 
@@ -670,7 +671,15 @@ class TrigPolynomialRing(UniqueRepresentation):
 
             sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: TrigPolynomialRing([var('a'), pi/2, var('a'), 1], []).angles()
-            [a, 1]
+            [1, a]
+
+        They are sorted by their printed form: the same angles give the same
+        ring (and :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`)
+        whatever the order they are met in::
+
+            sage: a, b = var('a b')
+            sage: TrigPolynomialRing([b, a], []) is TrigPolynomialRing([a, -b], [])
+            True
 
         (`\cos(\pi/2)` and `\sin(\pi/2)` are numbers, so `\pi/2` has no pair.)
         """
