@@ -1,13 +1,13 @@
 r"""
 The walk over symbolic expressions that every translation into polynomials shares
 
-Symbolic expressions become polynomials (or fractions) in several places of
-the exact algebra: the translation of equations into polynomial systems
-(:class:`~sage_dynsym.algebra.translation.Translation`), the polynomials in
-sines and cosines of the kinematics and of the simplification
-(:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`, the parent
-:class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`), the linear algebra
-over trigonometric fractions. They all read an expression the same way:
+Symbolic expressions become polynomials (or fractions) in sines and cosines
+in one algebra (:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`,
+the parent :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`), whoever
+asks: the kinematics, the simplification, the linear algebra over
+trigonometric fractions, the translation of equations into polynomial systems
+(:class:`~sage_dynsym.algebra.translation.Translation`). Its scans and its
+conversion read an expression this way:
 
 - a sum, a product, an integer power: the arithmetic of the target;
 - a symbol, a number: a generator or a coefficient of the target;

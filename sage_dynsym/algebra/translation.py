@@ -24,9 +24,16 @@ An expression in which an unknown occurs otherwise (`\exp q`, `q \sin q`,
 `\sin(q/2)`) is *not algebraic*: :class:`NotAlgebraic` names the
 subexpression.
 
-The ring variables and parameters get internal names (``x0, x1, ...``,
-``a0, a1, ...``), mapped back by position, so no user name can clash with
-them.
+The trigonometric part is the package's one algebra: the expressions are
+read in the :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra` of the
+unknowns' angles, the other unknowns, the parameters and the atoms
+(:meth:`Translation.algebra`, built by
+:meth:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing.for_unknowns`,
+which also expands the multiple angles and sums and gives the pairs of the
+circle relations); the translation only splits its generators into the
+parameters (the coefficient field) and the unknowns (the ring variables).
+These get internal names (``x0, x1, ...``, ``a0, a1, ...``), mapped back by
+position, so no user name can clash with them.
 
 EXAMPLES::
 
@@ -83,25 +90,13 @@ from sage.rings.real_mpfr import RR
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .expression_walk import (ExpressionWalker, ExpressionScan, TRIGONOMETRIC, MAX_ANGLE_MULTIPLE,
-                              split_angle, angle_sum, trig_value)
+from .expression_walk import TRIGONOMETRIC, MAX_ANGLE_MULTIPLE, split_angle, angle_sum, trig_value
+from .trigonometric import TrigPolynomialRing, NotAlgebraic, NotPolynomial
+from .trig_algebra import TrigAlgebra
 from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
 
 __all__ = ['Translation', 'NotAlgebraic', 'exact_rational', 'translate_expressions',
            'expand_angles', 'ParameterAtoms', 'MAX_ANGLE_MULTIPLE']
-
-
-class NotAlgebraic(AnalysisError):
-    r"""
-    An expression that is not polynomial (or rational) in the unknowns,
-    after trigonometric functions of the unknowns are replaced by `(c, s)`.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.algebra.translation import NotAlgebraic
-        sage: print(NotAlgebraic("log(x)"))
-        log(x)
-    """
 
 
 def exact_rational(number, what="equations"):
@@ -139,107 +134,6 @@ def exact_rational(number, what="equations"):
             value.is_infinity() or value.is_NaN():
         raise AnalysisError(f"not a finite real number: {number}", entry=what)
     return value.simplest_rational()
-
-
-class _TranslationWalk(ExpressionWalker):
-    r"""
-    The walk of :class:`Translation`: symbols are unknowns (by name, in
-    ``index``) or parameters; numbers exact rationals; a part free of the
-    unknowns that is not polynomial an atom; an unknown elsewhere than in a
-    polynomial or a trigonometric function of integer multiples of the
-    angles is :class:`NotAlgebraic`.
-    """
-
-    def __init__(self, index):
-        self.index = index
-
-    def is_unknown(self, v):
-        return str(v) in self.index
-
-    def has_unknown(self, e):
-        return any(map(self.is_unknown, e.variables()))
-
-    def atom(self, e):
-        if self.has_unknown(e):
-            raise NotAlgebraic(str(e))
-        return self.parameter(e)
-
-    def trig(self, op, e):
-        if not self.has_unknown(e):
-            return self.atom(e)
-        multiples, rest = split_angle(op, e.operands()[0], self.is_unknown, NotAlgebraic)
-        return self.angle(op, [(self.index[str(v)], k) for v, k in multiples], rest)
-
-
-class _Registration(_TranslationWalk, ExpressionScan):
-    r"""
-    The first pass of :class:`Translation`: which unknowns occur as angles
-    and which plainly, and the parameters and atoms (by name).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.algebra.translation import _Registration
-        sage: x, q, a = var('x q a')
-        sage: R = _Registration({'x': 0, 'q': 1}); R.walk(a*x + cos(2*q + a))
-        sage: R.angles, R.plain, R.parameters, R.atoms
-        ({1}, {0}, {'a': a}, {'cos(a)': cos(a), 'sin(a)': sin(a)})
-    """
-
-    def __init__(self, index):
-        super().__init__(index)
-        self.angles, self.plain = set(), set()
-        self.parameters, self.atoms = {}, {}
-
-    def symbol(self, e):
-        i = self.index.get(str(e))
-        if i is None:
-            self.parameters.setdefault(str(e), e)
-        else:
-            self.plain.add(i)
-
-    def number(self, e):
-        exact_rational(e)
-
-    def parameter(self, e):
-        self.atoms.setdefault(str(e), e)
-
-    def angle(self, op, multiples, rest):
-        self.angles.update(i for i, _ in multiples)
-        if not rest.is_zero():
-            self.parameter(cos(rest))
-            self.parameter(sin(rest))
-
-
-class _Evaluation(_TranslationWalk):
-    r"""
-    The second pass of :class:`Translation`: an expression as an element of
-    the fraction field ``field`` of the flat ring, from the elements of the
-    parameters and atoms (``parameters``, by name) and ``generator(i,
-    kind)``, the variable ``'x'``, ``'c'`` or ``'s'`` of the unknown ``i``.
-    An unregistered parameter raises ``KeyError``.
-    """
-
-    def __init__(self, index, parameters, generator, field):
-        super().__init__(index)
-        self.parameters, self.generator, self.field = parameters, generator, field
-
-    def symbol(self, e):
-        i = self.index.get(str(e))
-        return self.parameter(e) if i is None else self.generator(i, 'x')
-
-    def number(self, e):
-        return self.field(exact_rational(e))
-
-    def parameter(self, e):
-        return self.parameters[str(e)]
-
-    def angle(self, op, multiples, rest):
-        one, zero = self.field(1), self.field(0)
-        C, S = (one, zero) if rest.is_zero() else (self.parameter(cos(rest)),
-                                                   self.parameter(sin(rest)))
-        C, S = angle_sum(C, S, multiples, lambda i: (self.generator(i, 'c'),
-                                                     self.generator(i, 's')))
-        return trig_value(op, C, S)
 
 
 class Translation:
@@ -287,17 +181,14 @@ class Translation:
                                 entry="unknowns")
         expressions = [self._prepare(e) for e in expressions]
         extra = [self._prepare(e) for e in extra]
-        # first pass: which unknowns are angles, which parameters and atoms occur
-        found = _Registration(self._index)
-        for e in expressions + extra:
-            found.walk(e)
-        self._angles = found.angles
-        mixed = self._angles & found.plain
-        if mixed:
-            u = self._unknowns[min(mixed)]
-            raise NotAlgebraic(f"{u} occurs both inside and outside trigonometric "
-                               f"functions")
-        self._build_rings(found.parameters, found.atoms)
+        # the one trigonometric algebra: the pairs of the angles among the
+        # unknowns, the other symbols and the atoms as its generators
+        try:
+            self._trig = TrigPolynomialRing.for_unknowns(expressions + extra, symbols,
+                                                         numbers=exact_rational)
+        except NotAlgebraic as error:
+            raise NotAlgebraic(self._named(str(error))) from error
+        self._build_rings()
         self._equations, self._denominators = [], []
         for e in expressions:
             num, dens = self.numerator(e)
@@ -318,10 +209,18 @@ class Translation:
 
     # -- rings -----------------------------------------------------------
 
-    def _build_rings(self, parameters, atoms):
-        params = sorted(parameters) + sorted(atoms)
-        self._params = [parameters.get(p, atoms.get(p)) for p in params]
-        self._is_atom = [p not in parameters for p in params]
+    def _named(self, text):
+        # the unknowns f(q) by their names instead of their stand-ins
+        for u, stand_in in self._stand_ins.items():
+            text = text.replace(str(stand_in), str(u))
+        return text
+
+    def _build_rings(self):
+        trig = self._trig
+        self._angles = {self._index[str(a)] for a in trig.angles()}
+        names = [n for n in trig.symbols() if n not in self._index]
+        self._params = [SR.var(n) for n in names] + trig.atoms()
+        self._is_atom = [False] * len(names) + [True] * len(trig.atoms())
         # ring variables: the last unknown first, so that a lexicographic
         # order solves the first unknown first; an angle gives (s, c)
         gens, self._generator_of = [], {}
@@ -331,26 +230,26 @@ class Translation:
                 self._generator_of[(i, kind)] = len(gens)
                 gens.append((i, kind))
         self._gens = gens
-        pnames = [f"a{k}" for k in range(len(params))]
+        pnames = [f"a{k}" for k in range(len(self._params))]
         vnames = [f"x{k}" for k in range(len(gens))]
         self._field = QQ if not pnames else FractionField(PolynomialRing(QQ, pnames, len(pnames)))
         self._ring = (PolynomialRing(self._field, vnames, len(vnames), order="degrevlex")
                       if vnames else None)
-        names = pnames + vnames
-        self._flat = PolynomialRing(QQ, names, len(names)) if names else None
+        flat = pnames + vnames
+        self._flat = PolynomialRing(QQ, flat, len(flat)) if flat else None
         self._FF = self._flat.fraction_field() if self._flat is not None else QQ
-        self._nparams = len(params)
-        FF = self._FF
-        self._evaluation = _Evaluation(
-            self._index, {p: FF(self._flat.gen(k)) for k, p in enumerate(params)},
-            self._field_gen, FF)
+        self._nparams = len(self._params)
+        # the algebra's generators in the flat ring: cosines, sines, symbols
+        # (parameters or plain unknowns), atoms
+        images = [self._ring_gen(self._index[str(a)], 'c') for a in trig.angles()]
+        images += [self._ring_gen(self._index[str(a)], 's') for a in trig.angles()]
+        images += [self._ring_gen(self._index[n], 'x') if n in self._index
+                   else self._flat.gen(names.index(n)) for n in trig.symbols()]
+        images += [self._flat.gen(len(names) + k) for k in range(len(trig.atoms()))]
+        self._to_flat = trig.ring.hom(images, self._flat) if images else None
 
     def _ring_gen(self, i, kind):
         return self._flat.gen(self._nparams + self._generator_of[(i, kind)])
-
-    def _field_gen(self, i, kind):
-        # a method, not a closure: the translation is pickled with its solutions
-        return self._FF(self._ring_gen(i, kind))
 
     # -- accessors ---------------------------------------------------------
 
@@ -371,6 +270,27 @@ class Translation:
             [x]
         """
         return list(self._unknowns)
+
+    def algebra(self):
+        r"""The trigonometric algebra the expressions are read in (the one
+        of the package, :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`):
+        the pairs `(\cos, \sin)` of the unknowns that occur in
+        trigonometric functions, the other unknowns and the parameters, the
+        atoms. :meth:`fraction` is its conversion, the variables of
+        :meth:`flat_ring` renamed.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import Translation
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: q, m, l, g, a = var('q m l g a')
+            sage: T = Translation([m*l*cos(q) - g*sin(2*q + a)], [q])
+            sage: A = T.algebra(); A is TrigAlgebra([q], [g, l, m], [cos(a), sin(a)])
+            True
+            sage: bool(T.symbolic(T.equations()[0]) == SR(A(m*l*cos(q) - g*sin(2*q + a))))
+            True
+        """
+        return TrigAlgebra(self._trig)
 
     def ring(self):
         r"""The polynomial ring of the unknowns over the parameters' field
@@ -507,12 +427,8 @@ class Translation:
             sage: Translation([sin(2*q)], [q]).circle_relations()
             [x0^2 + x1^2 - 1]
         """
-        rels = []
-        for i in sorted(self._angles):
-            c = self._ring.gen(self._generator_of[(i, 'c')])
-            s = self._ring.gen(self._generator_of[(i, 's')])
-            rels.append(c ** 2 + s ** 2 - 1)
-        return rels
+        return [self.to_ring(self._to_flat(c) ** 2 + self._to_flat(s) ** 2 - 1)
+                for c, s in map(self._trig.trig, self._trig.angles())]
 
     def positive_names(self, positive=()):
         r"""The names (in :meth:`flat_ring`) of the parameters known to be
@@ -559,10 +475,15 @@ class Translation:
         """
         e = self._prepare(expr)
         try:
-            return self._evaluation.walk(e)
-        except KeyError as err:
-            raise AnalysisError(f"{expr} contains {err.args[0]}, which is not "
-                                f"among the registered symbols", entry="translation") from err
+            numerator, denominator = self._trig.fraction(e, multiples=True,
+                                                         numbers=exact_rational)
+        except NotPolynomial as err:
+            raise AnalysisError(f"{self._named(str(expr))}: {self._named(str(err))}, not "
+                                "among the registered symbols", entry="translation") from err
+        if self._to_flat is None:
+            return self._FF(QQ(numerator.constant_coefficient())
+                            / QQ(denominator.constant_coefficient()))
+        return self._FF(self._to_flat(numerator)) / self._FF(self._to_flat(denominator))
 
     def numerator(self, expr):
         r"""The numerator of ``expr`` in :meth:`ring` and the list of the
@@ -743,6 +664,21 @@ class ParameterAtoms:
                     self._positive.append(s)
             self._symbols.append(s)
         self._forward = {v: k for k, v in self._back.items()}
+        self._algebra = T.algebra()
+
+    def algebra(self):
+        r"""The trigonometric algebra the expressions are read in (see
+        :meth:`Translation.algebra`): the atoms are its generators that are
+        not symbols.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import ParameterAtoms
+            sage: lam, a, k = var('lam a k')
+            sage: ParameterAtoms([lam^2 + k*cos(a)], [lam]).algebra().gens()
+            (k, lam, cos(a))
+        """
+        return self._algebra
 
     def symbols(self):
         r"""The parameters, atoms replaced by their symbols.

@@ -39,6 +39,7 @@ EXAMPLES::
     -(sin(a)^2 - 1)*cos(a)
 """
 from collections import Counter
+import re
 from itertools import chain
 from operator import itemgetter
 
@@ -57,10 +58,12 @@ from ..arguments import expression_argument
 from ..errors import AnalysisError
 from .expression_walk import ExpressionWalker, ExpressionScan, split_angle, angle_sum, trig_value
 
-__all__ = ['NotPolynomial', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
+__all__ = ['NotPolynomial', 'NotAlgebraic', 'circle_reduce', 'symbolic_trig', 'SymbolicBackend',
            'TrigPolynomialRing', 'RingCalculus', 'trig_rational_simplify']
 
 _ZERO, _ONE = SR(0), SR(1)
+#: The names Singular takes for variables.
+_VARIABLE_NAME = re.compile(r'[A-Za-z][A-Za-z0-9_]*$')
 
 
 class NotPolynomial(AnalysisError):
@@ -81,6 +84,22 @@ class NotPolynomial(AnalysisError):
         sage: from sage_dynsym.errors import AnalysisError
         sage: issubclass(NotPolynomial, AnalysisError), issubclass(NotPolynomial, ValueError)
         (True, True)
+    """
+
+
+class NotAlgebraic(AnalysisError):
+    r"""
+    An expression that is not polynomial (or rational) in the unknowns of a
+    polynomial system, after trigonometric functions of the unknowns are
+    replaced by their pairs `(c, s)` (see
+    :meth:`TrigPolynomialRing.for_unknowns`); the message names the
+    subexpression.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import NotAlgebraic
+        sage: print(NotAlgebraic("log(x)"))
+        log(x)
     """
 
 
@@ -162,13 +181,65 @@ class _Scan(ExpressionScan):
         return self.fractions or k > 0
 
 
+class _UnknownScan(_Scan):
+    r"""
+    The scan of :meth:`TrigPolynomialRing.for_unknowns`: a symbol named in
+    ``unknowns`` is an *angle* where it occurs in a trigonometric function
+    (of an integer combination of angles plus a rest free of them: the
+    cosine and sine of the rest are atoms) and a plain generator elsewhere
+    (``plain``, by name); every other symbol is a parameter; a part free of
+    the unknowns that is not polynomial is an atom. An unknown anywhere
+    else raises :class:`NotAlgebraic`; every number goes through
+    ``numbers`` (which refuses what it cannot make a rational).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import _UnknownScan
+        sage: x, q, a = var('x q a')
+        sage: S = _UnknownScan({'x', 'q'}, QQ); S.walk(a*x + cos(2*q + a))
+        sage: S.angles, S.plain, sorted(S.symbols, key=str), S.atoms
+        ({q: None}, {'x'}, [a, x], {cos(a): None, sin(a): None})
+    """
+
+    def __init__(self, unknowns, numbers):
+        super().__init__((), fractions=True)
+        self.unknowns, self.numbers, self.plain = unknowns, numbers, set()
+
+    def is_unknown(self, v):
+        return str(v) in self.unknowns
+
+    def symbol(self, e):
+        self.symbols.add(e)
+        if self.is_unknown(e):
+            self.plain.add(str(e))
+
+    def number(self, e):
+        self.numbers(e)
+
+    def atom(self, e):
+        if any(map(self.is_unknown, e.variables())):
+            raise NotAlgebraic(str(e))
+        self.atoms.setdefault(e)
+
+    def trig(self, op, e):
+        if not any(map(self.is_unknown, e.variables())):
+            return self.atom(e)
+        multiples, rest = split_angle(op, e.operands()[0], self.is_unknown, NotAlgebraic)
+        for v, _ in multiples:
+            self.angles.setdefault(v)
+        if not rest.is_zero():
+            self.atom(cos(rest))
+            self.atom(sin(rest))
+
+
 class _Fraction(ExpressionWalker):
     r"""
     An expression as a pair ``(numerator, denominator)`` of elements of the
     polynomial ring of ``generators`` (a dict: the symbolic value of each
     generator, and of the cosines and sines of the negative angles, to its
-    ring element). Numbers are rational (``exact``: only integers and
-    rationals, else the rational value of an inexact number); numerator
+    ring element). Numbers are rational (``exact``: ``True`` for only
+    integers and rationals, ``False`` for the rational value of an inexact
+    number, or a function giving the rational of a number); numerator
     and denominator of a part get at most ``limit`` terms. With ``pairs``
     (a dict: angles that are symbols to their pairs ``(c, s)``), a
     trigonometric function of integer multiples of them plus a generator
@@ -213,6 +284,8 @@ class _Fraction(ExpressionWalker):
         return None if element is None else (element, self.one)
 
     def number(self, e):
+        if callable(self.exact):
+            return self.ring(self.exact(e)), self.one
         if self.exact:
             if _is_rational(e):
                 return self.ring(e.pyobject()), self.one
@@ -447,8 +520,9 @@ class TrigPolynomialRing(UniqueRepresentation):
 
     @staticmethod
     def __classcall__(cls, angles, symbols, atoms=()):
-        # the normal form of the arguments: equal rings are one object
-        # (UniqueRepresentation), and the parent TrigAlgebra is keyed by it
+        # the normal form of the arguments (angles sorted, as the symbols):
+        # equal rings are one object (UniqueRepresentation), and the parent
+        # TrigAlgebra is keyed by it
         unique = []
         for angle in angles:
             angle = _unsigned_angle(angle)
@@ -457,15 +531,19 @@ class TrigPolynomialRing(UniqueRepresentation):
             if angle not in unique and (angle.cos().operator() is cos
                                         or angle.sin().operator() is sin):
                 unique.append(angle)
-        return super().__classcall__(cls, tuple(unique),
+        return super().__classcall__(cls, tuple(sorted(unique, key=str)),
                                      tuple(sorted({str(v) for v in symbols}, key=str)),
                                      tuple(SR(a) for a in atoms))
 
     def __init__(self, angles, symbols, atoms=()):
         self._angles, self._symbols, self._atoms = list(angles), list(symbols), list(atoms)
         k = len(self._angles)
+        # a symbol is a variable of its own name where Singular takes that
+        # name (``_C`` it does not)
         names = ([f'dynsymcos{i}' for i in range(k)] + [f'dynsymsin{i}' for i in range(k)]
-                 + self._symbols + [f'dynsymatom{i}' for i in range(len(self._atoms))])
+                 + [n if _VARIABLE_NAME.match(n) else f'dynsymsymbol{i}'
+                    for i, n in enumerate(self._symbols)]
+                 + [f'dynsymatom{i}' for i in range(len(self._atoms))])
         # always multivariate (one variable would give a univariate ring)
         self.ring = PolynomialRing(QQ, names, len(names), order='degrevlex')
         gens = self.ring.gens()
@@ -476,6 +554,7 @@ class TrigPolynomialRing(UniqueRepresentation):
                         + [SR.var(name) for name in self._symbols] + self._atoms)
         # the ring element of every symbol, atom, cosine and sine (the walk)
         self._elements = {value: gen for value, gen in zip(self._values, gens)}
+        self._symbol_gens = dict(zip(self._symbols, gens[2 * k:]))
         for angle, (c, s) in self._pairs.items():
             self._elements[(-angle).cos()], self._elements[(-angle).sin()] = c, -s
 
@@ -527,6 +606,63 @@ class TrigPolynomialRing(UniqueRepresentation):
             found.symbols.update(SR(angle).variables())
         return cls(found.angles, found.symbols, found.atoms)
 
+    @classmethod
+    def for_unknowns(cls, expressions, unknowns, numbers=QQ):
+        r"""
+        The ring of a polynomial system in ``unknowns``: an unknown that
+        occurs in trigonometric functions is an angle (its pair `(c, s)`;
+        multiple angles and sums are expanded by :meth:`fraction` with
+        ``multiples=True``), any other unknown and every other symbol a
+        generator, and every part free of the unknowns that is not
+        polynomial an atom (`\cos\alpha` of a parameter, `\sqrt 2`,
+        `D[0](f)(u)`, and the cosine and sine of the part of an angle's
+        argument free of the unknowns), sorted by name.
+
+        INPUT:
+
+        - ``expressions`` -- symbolic expressions
+        - ``unknowns`` -- symbols
+        - ``numbers`` -- (default: `\QQ`) the function giving the rational
+          number of a numeric constant (it raises on what it refuses)
+
+        Raises :class:`NotAlgebraic` if an unknown occurs otherwise than in
+        a rational function of the generators, or both inside and outside
+        trigonometric functions.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
+            sage: q, x, g, a = var('q x g a')
+            sage: R = TrigPolynomialRing.for_unknowns([g*sin(2*q) - x*cos(q + a)], [q, x])
+            sage: R.angles(), R.symbols(), R.atoms()
+            ([q], ['g', 'x'], [cos(a), sin(a)])
+            sage: R is TrigPolynomialRing([q], [g, x], [cos(a), sin(a)])
+            True
+            sage: [R.to_symbolic(p) for p in R.fraction(sin(2*q)/x, multiples=True)]
+            [2*cos(q)*sin(q), x]
+
+        TESTS::
+
+            sage: TrigPolynomialRing.for_unknowns([exp(q)], [q])
+            Traceback (most recent call last):
+            ...
+            NotAlgebraic: e^q
+            sage: TrigPolynomialRing.for_unknowns([q*sin(q)], [q])
+            Traceback (most recent call last):
+            ...
+            NotAlgebraic: q occurs both inside and outside trigonometric functions
+        """
+        found = _UnknownScan({str(u) for u in unknowns}, numbers)
+        for expr in expressions:
+            found.walk(expr)
+        angles = [u for u in unknowns if u in found.angles]
+        for u in angles:
+            if str(u) in found.plain:
+                raise NotAlgebraic(f"{u} occurs both inside and outside trigonometric functions")
+        # an unknown that is not an angle is a generator even where absent
+        plain = [u for u in unknowns if u not in found.angles]
+        return cls(angles, found.symbols.union(plain), sorted(found.atoms, key=str))
+
     def angles(self):
         r"""
         The angles whose cosine and sine are generators of the ring.
@@ -535,7 +671,15 @@ class TrigPolynomialRing(UniqueRepresentation):
 
             sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
             sage: TrigPolynomialRing([var('a'), pi/2, var('a'), 1], []).angles()
-            [a, 1]
+            [1, a]
+
+        They are sorted by their printed form: the same angles give the same
+        ring (and :class:`~sage_dynsym.algebra.trig_algebra.TrigAlgebra`)
+        whatever the order they are met in::
+
+            sage: a, b = var('a b')
+            sage: TrigPolynomialRing([b, a], []) is TrigPolynomialRing([a, -b], [])
+            True
 
         (`\cos(\pi/2)` and `\sin(\pi/2)` are numbers, so `\pi/2` has no pair.)
         """
@@ -567,6 +711,7 @@ class TrigPolynomialRing(UniqueRepresentation):
         return list(self._atoms)
 
     def _walk(self, exact, limit=None, multiples=False):
+        # exact: True, False, or the function giving the rational of a number
         # multiples: the angles that are symbols, for the addition formulas
         pairs = {a: p for a, p in self._pairs.items() if a.is_symbol()} if multiples else None
         return _Fraction(self.ring, self._elements, exact, limit, pairs)
@@ -632,6 +777,24 @@ class TrigPolynomialRing(UniqueRepresentation):
             return c, -s
         return self.convert(angle.cos()), self.convert(angle.sin())
 
+    def generator(self, symbol, *default):
+        r"""The ring variable of ``symbol`` (one of :meth:`symbols`); the
+        ``default`` if given and ``symbol`` is not one of them.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.trigonometric import TrigPolynomialRing
+            sage: a, l, C = var('a l _C'); R = TrigPolynomialRing([a], [l, C])
+            sage: R.generator(l), R.generator(C), R.generator(a, None)
+            (l, dynsymsymbol0, None)
+            sage: R.to_symbolic(R.convert(C*l))
+            _C*l
+        """
+        gen = self._symbol_gens.get(str(symbol), *default)
+        if gen is None and not default:
+            raise KeyError(symbol)
+        return gen
+
     def diff(self, element, symbol):
         r"""The derivative of ``element`` with respect to ``symbol`` (a
         generator of the ring, such as a velocity).
@@ -644,7 +807,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: R.to_symbolic(R.diff(R.convert(l^2*da^2/2)*c, da))
             da*l^2*cos(a)
         """
-        return element.derivative(self.ring(str(symbol)))
+        return element.derivative(self.generator(symbol))
 
     def at_zero(self, element, symbols):
         r"""``element`` with every one of ``symbols`` (generators) set to zero.
@@ -657,7 +820,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: R.to_symbolic(R.at_zero(R.convert(l*da + l^2)*c, [da]))
             l^2*cos(a)
         """
-        return element.subs({self.ring(str(v)): 0 for v in symbols})
+        return element.subs({self.generator(v): 0 for v in symbols})
 
     def reduce(self, element):
         r"""
@@ -740,7 +903,7 @@ class TrigPolynomialRing(UniqueRepresentation):
                  for e, group in groups.items()]
         return parts[0] if len(parts) == 1 else _ZERO.add(*parts)
 
-    def fraction(self, expr, limit=None, multiples=False):
+    def fraction(self, expr, limit=None, multiples=False, numbers=None):
         r"""
         ``expr``, a rational function of the generators of the ring (see
         :meth:`for_expressions` with ``fractions=True``), as a pair
@@ -750,7 +913,8 @@ class TrigPolynomialRing(UniqueRepresentation):
         if numerator or denominator of a part get more than ``limit`` terms
         (common denominators of nested fractions grow fast, and their
         greatest common divisors take minutes). ``multiples``: as in
-        :meth:`convert`.
+        :meth:`convert`. ``numbers``: (default: integers and rationals only)
+        the function giving the rational number of a numeric constant.
 
         EXAMPLES::
 
@@ -763,7 +927,7 @@ class TrigPolynomialRing(UniqueRepresentation):
             sage: [R.to_symbolic(p) for p in R.fraction(tan(a - 2*a), multiples=True)]
             [-sin(a), cos(a)]
         """
-        return self._walk(True, limit, multiples).walk(SR(expr))
+        return self._walk(numbers or True, limit, multiples).walk(SR(expr))
 
     def simplest_fraction(self, numerator, denominator=1, printed=False):
         r"""
@@ -902,9 +1066,8 @@ class RingCalculus:
         self.ring = ring
         self.zero = ring.zero
         P = ring.ring
-        names = set(P.variable_names())
-        self._direct = [P(str(q)) if str(q) in names else None for q in coordinates]
-        self._time = P(str(t)) if str(t) in names else None
+        self._direct = [ring.generator(q, None) for q in coordinates]
+        self._time = ring.generator(t, None)
         # per angle: its ring pair and the ring derivatives of the angle
         self._chains = []
         for angle in ring.angles():

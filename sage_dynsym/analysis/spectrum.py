@@ -149,7 +149,7 @@ class SpectrumRegions(SageObject):
         poly, name = polynomial_arguments(poly, var)
         self._poly = SR(poly)
         self._var = SR.var(name)
-        atoms = ParameterAtoms([self._poly], [self._var], positive)
+        atoms = self._atoms = ParameterAtoms([self._poly], [self._var], positive)
         positive = atoms.positive()
         name = str(self._var)
         ring = parameter_ring(atoms.symbols(), extra=[name])
@@ -236,6 +236,22 @@ class SpectrumRegions(SageObject):
         if self._zero:
             what += f", {self._zero} zero roots"
         return f"Spectrum of {self._poly}: {what}"
+
+    def parameter_atoms(self):
+        r"""The :class:`~sage_dynsym.algebra.translation.ParameterAtoms` of
+        the polynomial: its non-polynomial parts (``cos(alpha)``) as
+        independent parameters, read in the package's trigonometric algebra.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.spectrum import spectrum_regions
+            sage: from sage_dynsym.algebra.trig_algebra import TrigAlgebra
+            sage: lam, k, a = var('lam k a')
+            sage: S = spectrum_regions(lam^2 + k*cos(a), lam)
+            sage: S.parameter_atoms().algebra() is TrigAlgebra([], [k, lam], [cos(a)])
+            True
+        """
+        return self._atoms
 
     def asymptotic(self):
         r"""The region where every root has a negative real part (``None``
