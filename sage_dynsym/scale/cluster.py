@@ -549,7 +549,8 @@ def _outcome(reply, name):
     remote = _RemoteTraceback(f"\n\"\"\"\n{text}\"\"\"")
     try:
         error = pickle.loads(dumped) if dumped is not None else None
-    except Exception:           # a class this process cannot rebuild: its text is enough
+    except (pickle.UnpicklingError, AttributeError, ImportError, TypeError, ValueError,
+            EOFError):          # a class this process cannot rebuild: its text is enough
         error = None
     if isinstance(error, DynSymError):
         raise error from remote
@@ -611,7 +612,7 @@ def _reply(call):
     except Exception as err:    # sent back, raised in the caller's process
         try:
             dumped = cloudpickle.dumps(err)
-        except Exception:       # an error that does not pickle: its text goes
+        except (pickle.PicklingError, TypeError, AttributeError):   # its text goes
             dumped = None
         return cloudpickle.dumps(('error', dumped, traceback.format_exc(),
                                   f"{type(err).__name__}: {err}"))
