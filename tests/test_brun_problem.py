@@ -5,7 +5,7 @@ independent computations:
 
 - Brun's integral F = (M, M) - eps det(I) (gamma, I^-1 gamma) commutes with
   H for symbolic inertia and eps, by the e(3) bracket written here in SymPy
-  (Brun 1893; Bogoyavlensky, Math. USSR Izv. 25 (1985), section 1); the
+  (Brun 1893; Bogoyavlensky, Math. USSR Izv. 25 (1985) 207-257); the
   package's new quadratic integral is a combination of F, H and (gamma, gamma).
 - The uniform rotations about the principal axes: the package's stability
   regions against the roots of the linearization (NumPy) at many values of
