@@ -25,6 +25,7 @@ BOUNDARIES = {
     "interact/builder.py: derive",          # a page: the status line, not a traceback
     "interact/builder.py: save",
     "scale/kernel.py: sweep_chunk",         # a sweep: the failure recorded with its point
+    "scale/cluster.py: _reply",             # a worker's child: the failure sent back, raised there
 }
 
 _WIDE = {"Exception", "BaseException"}

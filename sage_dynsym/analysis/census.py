@@ -416,10 +416,11 @@ def _count_task(system, values, chart, regular, positive):
         # PARI's stack belongs to the main thread: in another one it faults
         raise AnalysisError(f"the sample point {values} was sent to a thread "
                             f"({threading.current_thread().name}), where Sage's PARI cannot "
-                            "run (a dask.distributed worker runs its tasks in threads); solve "
-                            "the samples in the main thread of processes: "
-                            "sage_dynsym.scale.equilibrium_census(..., client='local') (Dask's "
-                            "process pool) or executor=concurrent.futures.ProcessPoolExecutor()",
+                            "run; solve the samples in the main thread of processes: "
+                            "sage_dynsym.scale.equilibrium_census(..., client=...) (Dask's "
+                            "process pool with client='local'; with a dask.distributed Client, "
+                            "in child processes of its workers) or "
+                            "executor=concurrent.futures.ProcessPoolExecutor()",
                             entry="executor")
     _log(f"solving at {values}")
     return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
@@ -897,9 +898,11 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
       ``executor(f, arguments)`` returning ``[f(*a) for a in arguments]``
       (e.g. Dask's, through :func:`sage_dynsym.scale.equilibrium_census`);
       default: in this process. Each task must run in the main thread of
-      its process: Sage's PARI cannot run in another thread (a
-      ``dask.distributed`` worker runs its tasks in threads), and a task
-      sent to one is an :class:`~sage_dynsym.errors.AnalysisError`
+      its process: Sage's PARI cannot run in another thread, and a task
+      sent to one is an :class:`~sage_dynsym.errors.AnalysisError`. A
+      ``dask.distributed`` worker runs its tasks in threads: with a Dask
+      ``Client``, use :func:`sage_dynsym.scale.equilibrium_census`, which
+      runs them in child processes of the workers
 
     OUTPUT: a :class:`Census`
 
@@ -947,7 +950,7 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         ....:     equilibrium_census(L, [a], values={b: 0}, executor=threads)
         Traceback (most recent call last):
         ...
-        AnalysisError: executor: the sample point {a: -1} was sent to a thread (ThreadPoolExecutor-...), where Sage's PARI cannot run ...
+        AnalysisError: executor: the sample point {a: -1} was sent to a thread (ThreadPoolExecutor-...), where Sage's PARI cannot run; ...client=...
     """
     parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
     positive = symbol_arguments(positive, 'positive', error=AnalysisError)

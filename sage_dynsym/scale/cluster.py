@@ -53,12 +53,12 @@ import os
 import time
 import uuid
 
-from ..errors import AnalysisError
+from ..errors import AnalysisError, DynSymError
 from ..arguments import count, finite_real, is_integer
 
 __all__ = ['DEFAULT_TIMEOUT', 'MAX_WORKERS', 'CLUSTER_THRESHOLD', 'LOCAL_START_TIMEOUT', 'chunks',
            'machine_cores', 'connected', 'SHUTDOWN_LOGGERS', 'closed_quietly', 'local_cluster',
-           'run_chunks', 'run_in_processes']
+           'run_chunks', 'run_in_processes', 'CHILD_CODE', 'serve_child']
 
 DEFAULT_TIMEOUT = 10        # seconds to reach a scheduler or to get a worker
 #: Most worker processes of a local cluster (``workers=``): each is a
@@ -415,26 +415,36 @@ def run_in_processes(function, arguments, client=None, workers=None, timeout=DEF
     a process: for work that uses Sage's PARI, which cannot run in another
     thread.
 
-    A ``dask.distributed`` worker runs its tasks in threads of its
-    process, even with one thread (its event loop holds the main thread):
-    a local cluster here is Dask's process pool instead
-    (``dask.compute(..., scheduler='processes')``, whose tasks run in the
-    main thread of its worker processes). Where the calls run, by
-    ``client``:
+    Where the calls run, by ``client``:
 
     - ``None`` (the default) -- chosen by the cost, as in
       :func:`run_chunks`: the first call runs in this process and is
       timed; the others go to Dask's process pool when their estimated
       time exceeds ``threshold`` seconds on a machine of several cores,
       otherwise they run here too;
-    - ``'local'`` -- Dask's process pool, ``workers`` processes (default:
+    - ``'local'`` -- Dask's process pool
+      (``dask.compute(..., scheduler='processes')``, whose tasks run in the
+      main thread of its worker processes), ``workers`` processes (default:
       one per core), started for this computation and closed after it.
       Its workers are spawned and import the main module again: a script
       needs the ``if __name__ == '__main__':`` guard;
     - a :class:`dask.distributed.Client` or a scheduler address -- its
-      workers, as given (their tasks run in threads: ``function`` must
-      raise a clear error there rather than fault);
+      workers, as given. A ``dask.distributed`` worker runs its tasks in
+      threads of its process, even with one thread (its event loop holds
+      the main thread): the task sent to a worker hands the call to a child
+      process of the worker (:func:`~sage_dynsym.scale.kernel.in_child_process`,
+      :func:`serve_child`), which runs it in its main thread. The children
+      are kept by the worker and reused, one per task running at the same
+      time (at most its number of threads), so Sage is imported once per
+      child; they end with their worker. The workers need Sage and this
+      package (the workers of maps and sweeps do not);
     - ``False`` -- in this process, one after the other.
+
+    ``function`` and ``arguments`` travel by cloudpickle (a function of the
+    main script too). An error of a call on a worker is raised here: an
+    error of this package as it is, another one as an
+    :class:`~sage_dynsym.errors.AnalysisError`; the cause of either holds
+    the traceback in the child.
 
     OUTPUT: the list of the results, in the order of ``arguments``
 
@@ -446,6 +456,27 @@ def run_in_processes(function, arguments, client=None, workers=None, timeout=DEF
         [3, 7]
         sage: run_in_processes(add, [(1, 2), (3, 4)], client='local', workers=1)  # long time
         [3, 7]
+
+    On the workers of a ``dask.distributed`` cluster, in the main thread of
+    their children; an error there is raised here with its cause::
+
+        sage: import os, operator
+        sage: from distributed import Client, LocalCluster
+        sage: def where(x):
+        ....:     import os, threading
+        ....:     return x, os.getpid(), threading.current_thread() is threading.main_thread()
+        sage: with LocalCluster(n_workers=1, threads_per_worker=1, processes=True,  # long time
+        ....:                   dashboard_address=None) as cluster, Client(cluster) as c:
+        ....:     out = run_in_processes(where, [(1,), (2,)], client=c)
+        ....:     workers = c.run(os.getpid)
+        ....:     run_in_processes(operator.truediv, [(int(1), int(0))], client=c)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: scale: truediv failed in a child process of a Dask worker: ZeroDivisionError: division by zero
+        sage: [x for x, _, _ in out], all(main for _, _, main in out)  # long time
+        ([1, 2], True)
+        sage: len({p for _, p, _ in out}), {p for _, p, _ in out} & set(workers.values())  # long time
+        (1, set())
     """
     finite_real(timeout, 'timeout', error=AnalysisError, minimum=0, strict=True)
     if workers is not None:
@@ -471,9 +502,117 @@ def run_in_processes(function, arguments, client=None, workers=None, timeout=DEF
         return done + list(dask.compute(*tasks, scheduler='processes', chunksize=1,
                                         num_workers=workers or machine_cores()))
     with connected(client, workers, timeout) as c:
-        futures = [c.submit(function, *a, pure=False) for a in rest]
+        return done + _in_worker_children(c, function, rest)
+
+
+#: The code run by a child process of a Dask worker (:func:`serve_child`).
+CHILD_CODE = "from sage_dynsym.scale.cluster import serve_child; serve_child()"
+
+
+def _in_worker_children(client, function, arguments):
+    r"""``[function(*a) for a in arguments]`` in the children of the workers of ``client``."""
+    import cloudpickle
+    from . import kernel
+    distributed = _dask()
+    run = _Shipped(kernel.in_child_process)
+    futures = [client.submit(run, cloudpickle.dumps((function, a)), CHILD_CODE, pure=False)
+               for a in arguments]
+    try:
+        replies = client.gather(futures)
+    except distributed.KilledWorker as err:
+        raise AnalysisError(f"the workers computing {function.__name__} kept dying ({err})",
+                            entry="scale") from err
+    except BaseException:
+        client.cancel(futures, force=True)
+        raise
+    return [_outcome(reply, getattr(function, '__name__', 'a task')) for reply in replies]
+
+
+class _RemoteTraceback(Exception):
+    r"""The traceback of an error in another process (the cause of its error here)."""
+
+    def __str__(self):
+        return self.args[0]
+
+
+def _outcome(reply, name):
+    r"""The result of the reply of :func:`~sage_dynsym.scale.kernel.in_child_process`,
+    or its error raised."""
+    import pickle
+    kind, data = reply
+    if kind == 'lost':
+        raise AnalysisError(f"{name}: {data}", entry="scale")
+    kind, *rest = pickle.loads(data)
+    if kind == 'done':
+        return rest[0]
+    dumped, text, summary = rest
+    remote = _RemoteTraceback(f"\n\"\"\"\n{text}\"\"\"")
+    try:
+        error = pickle.loads(dumped) if dumped is not None else None
+    except (pickle.UnpicklingError, AttributeError, ImportError, TypeError, ValueError,
+            EOFError):          # a class this process cannot rebuild: its text is enough
+        error = None
+    if isinstance(error, DynSymError):
+        raise error from remote
+    if error is not None:
+        error.__cause__ = remote
+    raise AnalysisError(f"{name} failed in a child process of a Dask worker: {summary}",
+                        entry="scale") from (remote if error is None else error)
+
+
+def serve_child(requests=None, replies=None):
+    r"""
+    The loop of a child process of a Dask worker: each message of
+    ``requests`` (see :func:`~sage_dynsym.scale.kernel.send_message`) is a
+    call ``(function, arguments)`` (cloudpickle), run in this thread, its
+    reply written to ``replies``: ``('done', result)``, or ``('error',
+    error, traceback, summary)`` (``error`` pickled, ``None`` if it cannot
+    be). Ends when ``requests`` ends.
+
+    INPUT:
+
+    - ``requests``, ``replies`` -- binary streams (default: the standard
+      input, and the standard output, which is then pointed to the
+      standard error so that what the work prints does not mix with the
+      replies)
+
+    EXAMPLES::
+
+        sage: import io, operator, pickle, cloudpickle
+        sage: from sage_dynsym.scale.cluster import serve_child
+        sage: from sage_dynsym.scale.kernel import send_message, receive_message
+        sage: requests, replies = io.BytesIO(), io.BytesIO()
+        sage: for call in [(operator.add, (1, 2)), (operator.truediv, (int(1), int(0)))]:
+        ....:     send_message(requests, cloudpickle.dumps(call))
+        sage: _ = requests.seek(0); serve_child(requests, replies); _ = replies.seek(0)
+        sage: pickle.loads(receive_message(replies))
+        ('done', 3)
+        sage: kind, error, text, summary = pickle.loads(receive_message(replies))
+        sage: kind, pickle.loads(error), summary, 'Traceback' in text
+        ('error', ZeroDivisionError('division by zero'), 'ZeroDivisionError: division by zero', True)
+    """
+    import sys
+    if requests is None:
+        requests = sys.stdin.buffer
+        replies = os.fdopen(os.dup(1), 'wb')
+        os.dup2(2, 1)
+    from .kernel import receive_message, send_message
+    for call in iter(lambda: receive_message(requests), None):
+        send_message(replies, _reply(call))
+
+
+def _reply(call):
+    r"""The reply to one call of :func:`serve_child` (bytes)."""
+    import pickle
+    import traceback
+    import cloudpickle
+    try:
+        function, arguments = pickle.loads(call)
+        return cloudpickle.dumps(('done', function(*arguments)))
+    except Exception as err:    # sent back, raised in the caller's process
         try:
-            return done + c.gather(futures)
-        except BaseException:
-            c.cancel(futures, force=True)
-            raise
+            dumped = cloudpickle.dumps(err)
+        except (pickle.PicklingError, TypeError, AttributeError):   # its text goes
+            dumped = None
+        return cloudpickle.dumps(('error', dumped, traceback.format_exc(),
+                                  f"{type(err).__name__}: {err}"))

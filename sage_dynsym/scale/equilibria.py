@@ -295,9 +295,10 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
       :func:`~sage_dynsym.scale.cluster.run_in_processes`: by default in
       this process, or in Dask's process pool when the first sample says
       the others take more than ``threshold`` seconds; ``'local'`` for
-      that pool; a Dask ``Client`` for its workers, which run their tasks
-      in threads, where Sage's PARI cannot run: that is an
-      :class:`~sage_dynsym.errors.AnalysisError`
+      that pool; a Dask ``Client`` (or a scheduler address) for its
+      workers, each sample solved in the main thread of a child process of
+      a worker (a worker runs its tasks in threads, where Sage's PARI
+      cannot run), the children kept across samples
 
     OUTPUT: a :class:`~sage_dynsym.analysis.census.Census`, the same
     wherever the samples were solved
@@ -313,6 +314,16 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
           0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
           1 < w (sample w = 2): 4 equilibria, 2 stable
         sage: equilibrium_census(L, [w], positive=[w], client='local', workers=2)  # long time
+        Census of the equilibria over w > 0: bifurcation set [w - 1]
+          0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
+          1 < w (sample w = 2): 4 equilibria, 2 stable
+
+    On a ``dask.distributed`` cluster of one worker of two threads::
+
+        sage: from distributed import Client, LocalCluster
+        sage: with LocalCluster(n_workers=1, threads_per_worker=2, processes=True,  # long time
+        ....:                   dashboard_address=None) as cluster, Client(cluster) as c:
+        ....:     equilibrium_census(L, [w], positive=[w], client=c)
         Census of the equilibria over w > 0: bifurcation set [w - 1]
           0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
           1 < w (sample w = 2): 4 equilibria, 2 stable

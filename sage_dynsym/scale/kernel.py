@@ -4,7 +4,8 @@ Numerical kernels of the scale-out computations (NumPy only)
 These functions run on the Dask workers. They import nothing from Sage nor
 from the rest of the package, and :mod:`sage_dynsym.scale.cluster` ships
 them *by value*: a worker needs NumPy (and SciPy for singular left-hand
-matrices), not Sage.
+matrices), not Sage. One of them, :func:`in_child_process`, runs a task
+that does need Sage in a child process of the worker.
 
 A *program* is the compiled form of a list of symbolic expressions (see
 :mod:`sage_dynsym.scale.compile`): plain tuples, evaluated here on NumPy
@@ -36,7 +37,8 @@ import numpy as np
 
 __all__ = ['BLOCK', 'BATCH', 'FUNCTIONS', 'COMPARISONS', 'run_program', 'chunk_points',
            'polynomial_abscissa', 'pencil_abscissa', 'classify', 'stability_class', 'map_chunk',
-           'sweep_chunk', 'identity']
+           'sweep_chunk', 'identity', 'CHILDREN', 'send_message', 'receive_message',
+           'in_child_process']
 
 BLOCK = 4096            # random points are drawn in blocks of this size
 BATCH = 4096            # points evaluated at once inside a chunk
@@ -554,3 +556,125 @@ def identity(value):
         {'a': 1}
     """
     return value
+
+
+# ---------------------------------------------------------------------------
+# Sage work on a dask.distributed worker: in a child process of the worker
+# ---------------------------------------------------------------------------
+
+#: The name in ``sys.modules`` of the record of a worker's child processes:
+#: the functions here arrive by value, with fresh globals at every task, so
+#: what a worker keeps across tasks is kept there.
+CHILDREN = '_sage_dynsym_children'
+
+
+def send_message(stream, data):
+    r"""
+    Write the bytes ``data`` to the binary ``stream``, preceded by their
+    length (8 bytes, big-endian), and flush it.
+
+    EXAMPLES::
+
+        sage: import io
+        sage: from sage_dynsym.scale.kernel import send_message, receive_message
+        sage: s = io.BytesIO(); send_message(s, b'abc'); send_message(s, b'')
+        sage: s.seek(0); receive_message(s), receive_message(s), receive_message(s)
+        0
+        (b'abc', b'', None)
+    """
+    stream.write(len(data).to_bytes(8, 'big') + data)
+    stream.flush()
+
+
+def receive_message(stream):
+    r"""
+    The bytes of the next message of :func:`send_message` on ``stream``;
+    ``None`` when the stream ends before a message starts.
+
+    A message cut in the middle is an ``EOFError`` (its writer died).
+
+    EXAMPLES: see :func:`send_message`. TESTS::
+
+        sage: import io
+        sage: from sage_dynsym.scale.kernel import receive_message
+        sage: receive_message(io.BytesIO(int(5).to_bytes(int(8), 'big') + b'ab'))
+        Traceback (most recent call last):
+        ...
+        EOFError: a message of 5 bytes ends after 2
+    """
+    head = stream.read(8)
+    if not head:
+        return None
+    if len(head) < 8:
+        raise EOFError(f"the length of a message ends after {len(head)} of its 8 bytes")
+    size = int.from_bytes(head, 'big')
+    data = stream.read(size)
+    if len(data) != size:
+        raise EOFError(f"a message of {size} bytes ends after {len(data)}")
+    return data
+
+
+def in_child_process(call, code):
+    r"""
+    The reply of a child process of this one to the message ``call``: a
+    task of a ``dask.distributed`` worker whose work must run in the main
+    thread of a process (Sage's PARI), which a worker's task thread is not.
+
+    The children are Python processes started by this function
+    (``python -c code``, with this process's ``sys.path``), kept in this
+    process across tasks -- one per task running at the same time, so each
+    imports Sage once -- and reused. A child reads its messages on its
+    standard input and writes its replies on its standard output; it ends
+    when its input closes, i.e. when this process ends. They are not made
+    by :mod:`multiprocessing`, whose children a worker (a daemonic process)
+    may not have, and which would import the worker's main module again.
+
+    INPUT:
+
+    - ``call`` -- bytes, sent to the child as they are
+    - ``code`` -- the Python code a child runs (its loop of messages)
+
+    OUTPUT: ``('reply', bytes)``, or ``('lost', text)`` when the child
+    died before replying (a fresh one serves the next task)
+
+    EXAMPLES: a child that echoes its messages reversed::
+
+        sage: from sage_dynsym.scale.kernel import in_child_process
+        sage: echo = ("import sys; from sage_dynsym.scale.kernel import send_message, receive_message\n"
+        ....:         "for m in iter(lambda: receive_message(sys.stdin.buffer), None):\n"
+        ....:         "    send_message(sys.stdout.buffer, m[::-1])")
+        sage: in_child_process(b'abc', echo), in_child_process(b'de', echo)
+        (('reply', b'cba'), ('reply', b'ed'))
+        sage: in_child_process(b'abc', 'import os; os._exit(3)')
+        ('lost', 'the child process ... of this worker ended (exit code 3) before replying')
+    """
+    import os
+    import subprocess
+    import sys
+    import threading
+    import types
+    kept = sys.modules.get(CHILDREN)
+    if kept is None:
+        kept = types.ModuleType(CHILDREN)
+        kept.lock, kept.idle = threading.Lock(), {}
+        kept = sys.modules.setdefault(CHILDREN, kept)
+    with kept.lock:
+        idle = kept.idle.setdefault(code, [])
+        child = idle.pop() if idle else None
+    if child is None:
+        path = os.pathsep.join(p for p in sys.path if p)
+        child = subprocess.Popen([sys.executable, '-c', code], stdin=subprocess.PIPE,
+                                 stdout=subprocess.PIPE, env=dict(os.environ, PYTHONPATH=path))
+    try:
+        send_message(child.stdin, call)
+        reply = receive_message(child.stdout)
+    except (OSError, EOFError):
+        reply = None
+    if reply is None:
+        child.kill()
+        child.wait()
+        return ('lost', f"the child process {child.pid} of this worker ended (exit code "
+                        f"{child.returncode}) before replying")
+    with kept.lock:
+        kept.idle[code].append(child)
+    return ('reply', reply)
