@@ -318,6 +318,8 @@ class StationarySolution(MotionSolution):
         conds = self._solution.known_conditions()
         if conds:
             kind += ", if " + " and ".join(map(str, conds))
+        if not self._solution.is_reality_decided():
+            kind += ", where it is real not decided"
         return f"Stationary solution {self.point()}" + (f", {mult}" if mult else "") + \
             f" ({kind})"
 
@@ -667,11 +669,7 @@ class StationarySolution(MotionSolution):
         positive = self._positive(positive)
         region = []
         first, why = [], "neither the second variation nor the first approximation decides"
-        try:
-            existence = simplify_conjunction(self.conditions(), positive) or []
-        except AnalysisError as err:
-            # where the solution is real is unknown: nothing is claimed
-            return StabilityVerdict('undecided', f"not decided: {err}")
+        existence = simplify_conjunction(self.conditions(), positive) or []
         try:
             for sign in self._problem.signs:
                 for alt in self.stability_region(positive, sign):
@@ -700,6 +698,11 @@ class StationarySolution(MotionSolution):
         reasons = {c.verdict(): c.reason() for c in first}
         reasons['stable'] = "the second variation of the Lyapunov function is definite"
         reasons.setdefault('undecided', why)
+        if not self._solution.is_reality_decided():
+            # each case holds at the family's real points in its region;
+            # where they exist there is not known
+            reasons = {k: f"{r}; where the family is real within this region is not "
+                       f"decided" for k, r in reasons.items()}
         return verdict_from_parts(parts, reasons, {}, positive, domain=[existence],
                                   methods={'stable': 'Routh-Lyapunov'}, rest='undecided')
 
