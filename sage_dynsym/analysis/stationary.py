@@ -95,6 +95,8 @@ REFERENCES:
   Mech. 30 (1966) 1090--1103.
 - D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997.
 """
+import operator
+
 from sage.functions.trig import arctan2
 from sage.matrix.constructor import matrix
 from sage.rings.qqbar import AA
@@ -264,6 +266,34 @@ class StationaryProblem:
             [-1  0]
         """
         return None if self._linear is None else self._linear(evaluate)
+
+
+def _square_roots_of_symbols(expr, found):
+    r"""Record in ``found`` (``{p: r}``) the symbols ``p`` whose square roots
+    (powers `p^{k/2}`) occur in ``expr``, with a new symbol ``r`` each."""
+    from sage.rings.rational_field import QQ
+    if expr.operator() is None:
+        return
+    base, *rest = expr.operands()
+    if expr.operator() is operator.pow and base.is_symbol() and rest[0] in QQ and \
+            QQ(rest[0]).denominator() == 2 and base not in found:
+        found[base] = SR.var(f"sqrt_{base}")
+    for e in expr.operands():
+        _square_roots_of_symbols(e, found)
+
+
+def _in_square_roots(expr, roots):
+    r"""``expr`` with each `p^{k/2}` written `r^k` and `p` written `r^2`
+    (``roots``: ``{p: r}``, `r = \sqrt p`)."""
+    if expr.is_symbol():
+        return roots[expr] ** 2 if expr in roots else expr
+    op = expr.operator()
+    if op is None:
+        return expr
+    args = expr.operands()
+    if op is operator.pow and args[0] in roots:
+        return roots[args[0]] ** (2 * args[1])
+    return op(*[_in_square_roots(a, roots) for a in args])
 
 
 class StationarySolution(MotionSolution):
@@ -679,12 +709,10 @@ class StationarySolution(MotionSolution):
             # the second variation is not decided (e.g. QEPCAD's budget):
             # the first approximation may still decide
             region, why = [], why + f" (second variation: {err})"
-        lin = self.linear_system() if self.is_explicit() and \
-            self.is_equilibrium() is not False else None
         # the first approximation is the one stability service's; the
         # Routh-Lyapunov theorem adds 'stable' (for the nonlinear system)
         try:
-            first = lin.stability(positive=positive).cases() if lin is not None else []
+            first = self._first_approximation_cases(positive)
         except AnalysisError as err:
             why += f" ({err})"
         order = ('asymptotically stable', 'stable', 'stable in first approximation',
@@ -705,6 +733,31 @@ class StationarySolution(MotionSolution):
                        f"decided" for k, r in reasons.items()}
         return verdict_from_parts(parts, reasons, {}, positive, domain=[existence],
                                   methods={'stable': 'Routh-Lyapunov'}, rest='undecided')
+
+    def _first_approximation_cases(self, positive):
+        r"""The cases of the first approximation's verdict (``[]`` when it
+        is not known). Square roots of parameters in the solution
+        (`\sqrt\varepsilon`) are written as new positive parameters first
+        (`\varepsilon = r^2`): the test needs rational coefficients; the
+        regions are written back in `\sqrt\varepsilon`."""
+        if not self.is_explicit() or self.is_equilibrium() is False:
+            return []
+        roots = {}
+        for v in list(self.point().values()) + list(self.multipliers().values()):
+            _square_roots_of_symbols(SR(v), roots)
+        if not roots:
+            lin = self.linear_system()
+            return [] if lin is None else lin.stability(positive=positive).cases()
+        lin = self._problem.linear_system(
+            lambda e: _in_square_roots(SR(self._at(e)), roots))
+        if lin is None:
+            return []
+        back = {r: p.sqrt() for p, r in roots.items()}
+        cases = lin.stability(positive=list(positive) + list(roots.values())).cases()
+        return [StabilityVerdict(c.verdict(), c.reason(), method=c.method(),
+                                 region=None if c.region() is None else
+                                 [[SR(rel).subs(back) for rel in alt] for alt in c.region()])
+                for c in cases]
 
     def check(self, equations):
         r"""
