@@ -71,6 +71,30 @@ def test_reality_of_a_family_by_a_rational_parametrization():
         assert abs(yv**3 - av * xv * yv + 1) < 1e-9 and abs(zv * yv - 1) < 1e-12
 
 
+def test_implicit_stationary_family_multipliers_and_reality():
+    # K = H + l z with H = (x^4 + y^4 - a)^2/4 + z^2/2 + x z: the family
+    # x^4 + y^4 = a, z = 0, l = -x (by hand), real where x^4 <= a
+    H = (x**4 + y**4 - a)**2 / 4 + z**2 / 2 + x * z
+    family, = [s for s in stationary_solutions([H, z], [x, y, z]) if not s.is_explicit()]
+    assert family.is_reality_decided() and family.dimension() == 1
+    lam, = family.multipliers()
+    rng = np.random.default_rng(5)
+    inside = outside = 0
+    for _ in range(30):
+        av, xv = rng.uniform(-1, 2), rng.uniform(-1.3, 1.3)
+        claimed = all(holds(c, {a: av, x: xv}) for c in family.conditions())
+        ys = [r.real for r in np.roots([1, 0, 0, 0, xv**4 - av]) if abs(r.imag) < 1e-9]
+        assert claimed == bool(ys)
+        inside, outside = inside + claimed, outside + (not claimed)
+        for yv in ys:
+            zv = float(SR(family.point()[z]).subs({a: av, x: xv}))
+            lv = float(SR(family.multipliers()[lam]).subs({a: av, x: xv, z: zv}))
+            w = xv**4 + yv**4 - av
+            grad = [w * xv**3 + zv, w * yv**3, zv + xv + lv]      # dK, by hand
+            assert np.allclose(grad, 0, atol=1e-9)
+    assert inside and outside
+
+
 def test_undecided_reality_is_no_exception(monkeypatch):
     monkeypatch.setattr(solving, 'FAMILY_QE_VARIABLES', 0)
     H = (y**4 + x**4 - a)**2 / 4
