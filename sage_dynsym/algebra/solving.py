@@ -30,6 +30,14 @@ equilibria, stationary motions -- is solved here, exactly:
      returned as equations;
    - a component that cannot be written explicitly (a step of degree 3 or
      more) is returned *implicitly*: its equations, and says so;
+   - a family with parameters whose relations remain is written by other
+     free unknowns where some choice makes it explicit (a rational
+     parametrization, or branches by radicals); otherwise the conditions
+     of its reality on the parameters and its free unknowns are decided
+     by quantifier elimination (QEPCAD, within a budget), and where that
+     does not decide, it says so
+     (:meth:`~AlgebraicSolution.is_reality_decided`) -- never an
+     exception;
 
 4. only real components are kept: branches whose radicand can never be
    positive, and components over `\QQ` with no real point, are dropped.

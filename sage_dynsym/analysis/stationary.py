@@ -695,6 +695,27 @@ class StationarySolution(MotionSolution):
             sage: [(case.verdict(), case.region()) for case in v.cases()]
             [('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]]),
              ('unstable', [[4*A*g*l*m - p_phi^2 > 0]])]
+
+        A family whose values hold square roots of parameters is tested in
+        first approximation too (`\varepsilon = r^2` there): Brun's problem,
+        `H = \tfrac12 (M, I^{-1} M) + \tfrac\varepsilon2 (\gamma, I\gamma)`
+        (Borisov and Mamaev, *Rigid Body Dynamics*, the Brun case), whose
+        uniform rotations `\gamma = \pm I^{-1} M/\sqrt\varepsilon` are
+        unstable where a polynomial of the moments of inertia and of `M` is
+        negative (only for moments of inertia of both signs)::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: M1, M2, M3, g1, g2, g3 = var('M1 M2 M3 g1 g2 g3')
+            sage: I1, I2, I3, eps = var('I1 I2 I3 epsilon')
+            sage: Mv, gv, I = vector([M1, M2, M3]), vector([g1, g2, g3]), [I1, I2, I3]
+            sage: H = sum(Mv[i]^2/I[i] + eps*I[i]*gv[i]^2 for i in range(3))/2
+            sage: w = vector([H.diff(v) for v in Mv]); u = vector([H.diff(v) for v in gv])
+            sage: X = list(Mv.cross_product(w) + gv.cross_product(u)) + list(gv.cross_product(w))
+            sage: sols = stationary_solutions([H, gv*gv, Mv*gv], list(Mv) + list(gv), equations=X)
+            sage: s = sols[4]; s.point()[g1], s.conditions()  # long time
+            (M1/(I1*sqrt(epsilon)), [g3 != 0, I3 != 0, epsilon > 0, I1 != 0, M1 != 0, I2 != 0])
+            sage: [c.verdict() for c in s.stability().cases()]  # long time
+            ['undecided', 'unstable']
         """
         positive = self._positive(positive)
         region = []
