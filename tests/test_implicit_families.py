@@ -102,6 +102,8 @@ def test_undecided_reality_is_no_exception(monkeypatch):
     assert not family.is_reality_decided()
     assert family.conditions() == []
     assert "where it is real not decided" in repr(family)
+    assert any("where it is real: not decided" in line
+               for line in stationary_solutions([H], [x, y]).report_lines())
     assert isinstance(family.stability_region(), list)
     v = family.stability()
     assert "not decided" in v.reason()

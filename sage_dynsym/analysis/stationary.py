@@ -1075,8 +1075,12 @@ class StationarySolutions(SolutionList):
                     equation(lines, e)
             try:
                 conditions = s.conditions()
+                decided = s.is_reality_decided()
                 if conditions:
-                    lines.append("    exists if: " + ", ".join(map(str, conditions)))
+                    lead = "exists if" if decided else "real at most where (not decided)"
+                    lines.append(f"    {lead}: " + ", ".join(map(str, conditions)))
+                elif not decided:
+                    lines.append("    where it is real: not decided")
                 verdict = s.stability()
             except DynSymError as err:
                 lines.append(f"    stability: not decided ({err})")
