@@ -220,3 +220,48 @@ def test_brun_families_stability_has_cases_checked_by_eigenvalues(brun_families)
             assert claimed == bool(roots.real.max() > 1e-4)
             seen.add(claimed)
         assert seen == {True, False}
+
+
+def brun_integral_points(iv, ev, m, g1v):
+    """The real (g2, g3) with grad K = 0 for K = H + l1 F + l2 gamma.gamma
+    + l3 M.gamma at the given M and gamma_1, exactly (Sage over AA, the
+    gradient written by hand)."""
+    R = PolynomialRing(QQ, 'g2, g3, l1, l2, l3')
+    g2, g3, l1, l2, l3 = R.gens()
+    g = [QQ(g1v), g2, g3]
+    iv, m, ev = [QQ(k) for k in iv], [QQ(k) for k in m], QQ(ev)
+    det = iv[0] * iv[1] * iv[2]
+    eqs = [m[i] / iv[i] + 2 * l1 * m[i] + l3 * g[i] for i in range(3)] + \
+        [ev * iv[i] * g[i] - 2 * l1 * ev * det * g[i] / iv[i] + 2 * l2 * g[i] + l3 * m[i]
+         for i in range(3)]
+    J = R.ideal(eqs)
+    assert J.dimension() == 0
+    return [[float(p[g2]), float(p[g3])] for p in J.variety(AA)]
+
+
+@pytest.mark.slow
+def test_brun_with_its_integral_4_parameter_family():
+    # with Brun's integral F the stationary set has 4-parameter families,
+    # given over (M, gamma_1) with a square root: real exactly where its
+    # radicand is positive, as the exact solution at rational values says
+    families = [s for s in brun(with_integral=True) if s.dimension() == 4]
+    assert len(families) == 2 and all(s.is_reality_decided() for s in families)
+    # (the radicand, a quadratic in epsilon g1^2, is negative somewhere only
+    # when I1 is the largest or the smallest moment of inertia)
+    rng = np.random.default_rng(17)
+    seen = set()
+    for _ in range(14):
+        iv = [int(k) for k in rng.choice(range(1, 7), size=3, replace=False)]
+        ev = int(rng.integers(1, 4) * rng.choice([-1, 1]))
+        m = [int(k) * int(rng.choice([-1, 1])) for k in rng.integers(1, 4, size=3)]
+        g1v = int(rng.integers(1, 3) * rng.choice([-1, 1]))
+        values = dict(zip(I + [epsilon] + M + [G[0]], iv + [ev] + m + [g1v]))
+        claimed = [all(bool(SR(c).subs(values)) for c in s.conditions()) for s in families]
+        assert claimed[0] == claimed[1]
+        found = brun_integral_points(iv, ev, m, g1v)
+        assert len(found) == (2 if claimed[0] else 0)
+        seen.add(claimed[0])
+        for s in families if claimed[0] else []:
+            point = [float(SR(s.point()[v]).subs(values)) for v in G[1:]]
+            assert sum(np.allclose(point, p) for p in found) == 1
+    assert seen == {True, False}
