@@ -102,7 +102,7 @@ from .translation import Translation, NotAlgebraic, translate_expressions
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
-           'PARAMETRIZATION_TRIES', 'FAMILY_QE_VARIABLES',
+           'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'FAMILY_QE_VARIABLES',
            'solve_transcendental']
 
 
@@ -881,8 +881,11 @@ def _branches(T, family, positive):
 
 
 #: At most this many other choices of the free unknowns are tried when
-#: looking for a rational parametrization of an implicit family.
+#: looking for a rational parametrization of an implicit family ...
 PARAMETRIZATION_TRIES = 24
+
+#: ... and no new one after this many seconds.
+PARAMETRIZATION_SECONDS = 20
 
 #: Implicit families with parameters are decided by quantifier elimination
 #: (over their bound unknowns) only up to this many variables.
@@ -910,11 +913,15 @@ def _parametrized(T, prime, family, counted, positive):
         ({x: (y^3 + 1)/(a*y), y: y, z: 1/y}, [y != 0, a != 0])
     """
     from itertools import combinations
+    from time import monotonic
     n, d = len(T.unknowns()), len(family._free)
     order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
-    tried = 0
+    tried, start = 0, monotonic()
+    _log(f"an implicit family of dimension {d}: trying other free unknowns")
     for choice in combinations(order, d):
-        if sorted(choice) == sorted(family._free) or tried >= PARAMETRIZATION_TRIES:
+        if tried >= PARAMETRIZATION_TRIES or monotonic() - start > PARAMETRIZATION_SECONDS:
+            break
+        if sorted(choice) == sorted(family._free):
             continue
         keep = [g for i in choice for g in _unit_generators(T, i)]
         if _projection_dimension(prime, keep) != d:
@@ -969,6 +976,7 @@ def _qe_family(T, family, positive):
     symbols = set().union(*(set(map(str, e.variables())) for e in relations))
     if not relations or len(symbols) > FAMILY_QE_VARIABLES:
         return family
+    _log(f"deciding where a family is real: quantifier elimination in {len(symbols)} variables")
     try:
         alternatives = exists(bound, [e == 0 for e in relations], positive,
                               timeout=REALITY_QE_TIMEOUT)
