@@ -268,32 +268,52 @@ class StationaryProblem:
         return None if self._linear is None else self._linear(evaluate)
 
 
-def _square_roots_of_symbols(expr, found):
-    r"""Record in ``found`` (``{p: r}``) the symbols ``p`` whose square roots
-    (powers `p^{k/2}`) occur in ``expr``, with a new symbol ``r`` each."""
+def _radicands(expr, found):
+    r"""Append to ``found`` the radicands `D` of the square roots (powers
+    `D^{k/2}`) in ``expr``, each once."""
     from sage.rings.rational_field import QQ
     if expr.operator() is None:
         return
     base, *rest = expr.operands()
-    if expr.operator() is operator.pow and base.is_symbol() and rest[0] in QQ and \
-            QQ(rest[0]).denominator() == 2 and base not in found:
-        found[base] = SR.var(f"sqrt_{base}")
+    if expr.operator() is operator.pow and rest[0] in QQ and QQ(rest[0]).denominator() == 2 \
+            and not any(bool((base - D).is_zero()) for D in found):
+        found.append(base)
     for e in expr.operands():
-        _square_roots_of_symbols(e, found)
+        _radicands(e, found)
 
 
-def _in_square_roots(expr, roots):
-    r"""``expr`` with each `p^{k/2}` written `r^k` and `p` written `r^2`
-    (``roots``: ``{p: r}``, `r = \sqrt p`)."""
-    if expr.is_symbol():
-        return roots[expr] ** 2 if expr in roots else expr
-    op = expr.operator()
-    if op is None:
-        return expr
-    args = expr.operands()
-    if op is operator.pow and args[0] in roots:
-        return roots[args[0]] ** (2 * args[1])
-    return op(*[_in_square_roots(a, roots) for a in args])
+def _root_substitution(D, values):
+    r"""
+    A symbol ``r`` for `\sqrt D` and a symbol `p` of `D` with `p` as a
+    rational function of `r` making `D = r^2` (`D` of degree at most 1 in
+    `p` in its numerator and denominator), ``p`` chosen among those that
+    occur least in ``values``; ``None`` if there is none.
+    """
+    r = SR.var("sqrt_radicand")
+    num, den = D.numerator(), D.denominator()
+    candidates = sorted((v for v in D.variables() if num.degree(v) <= 1 and den.degree(v) <= 1),
+                        key=lambda v: (sum(str(e).count(str(v)) for e in values), str(v)))
+    for v in candidates:
+        n1, n0 = num.coefficient(v, 1), num.coefficient(v, 0)
+        d1, d0 = den.coefficient(v, 1), den.coefficient(v, 0)
+        # (n1 p + n0) = r^2 (d1 p + d0)
+        if not (n1 - r**2 * d1).is_zero():
+            return r, v, ((r**2 * d0 - n0) / (n1 - r**2 * d1)).factor()
+    return None
+
+
+def _with_root(expr, D, r, p, value):
+    r"""``expr`` with `D^{k/2}` written `r^k`, then `p` replaced by its
+    value in `r`."""
+    def walk(e):
+        op = e.operator()
+        if op is None:
+            return e
+        args = e.operands()
+        if op is operator.pow and bool((args[0] - D).is_zero()):
+            return r ** (2 * args[1])
+        return op(*[walk(a) for a in args])
+    return walk(SR(expr)).subs({p: value})
 
 
 class StationarySolution(MotionSolution):
@@ -757,27 +777,30 @@ class StationarySolution(MotionSolution):
 
     def _first_approximation_cases(self, positive):
         r"""The cases of the first approximation's verdict (``[]`` when it
-        is not known). Square roots of parameters in the solution
-        (`\sqrt\varepsilon`) are written as new positive parameters first
-        (`\varepsilon = r^2`): the test needs rational coefficients; the
-        regions are written back in `\sqrt\varepsilon`."""
+        is not known). A square root `\sqrt D` in the solution (of
+        `\varepsilon`, of `\theta a_1 a_2 a_3`) is a new positive parameter
+        `r` first, a symbol of `D` written as a rational function of `r`
+        with `D = r^2`: the test needs rational coefficients; the regions
+        are written back with `r = \sqrt D`."""
         if not self.is_explicit() or self.is_equilibrium() is False:
             return []
-        roots = {}
-        for v in list(self.point().values()) + list(self.multipliers().values()):
-            _square_roots_of_symbols(SR(v), roots)
-        if not roots:
+        values = list(self.point().values()) + list(self.multipliers().values())
+        radicands = []
+        for v in values:
+            _radicands(SR(v), radicands)
+        found = _root_substitution(radicands[0], values) if len(radicands) == 1 else None
+        if found is None:
             lin = self.linear_system()
             return [] if lin is None else lin.stability(positive=positive).cases()
-        lin = self._problem.linear_system(
-            lambda e: _in_square_roots(SR(self._at(e)), roots))
+        (D,), (r, p, value) = radicands, found
+        lin = self._problem.linear_system(lambda e: _with_root(self._at(e), D, r, p, value))
         if lin is None:
             return []
-        back = {r: p.sqrt() for p, r in roots.items()}
-        cases = lin.stability(positive=list(positive) + list(roots.values())).cases()
+        cases = lin.stability(positive=list(positive) + [r]).cases()
         return [StabilityVerdict(c.verdict(), c.reason(), method=c.method(),
                                  region=None if c.region() is None else
-                                 [[SR(rel).subs(back) for rel in alt] for alt in c.region()])
+                                 [[SR(rel).subs({r: D.sqrt()}) for rel in alt]
+                                  for alt in c.region()])
                 for c in cases]
 
     def check(self, equations):
