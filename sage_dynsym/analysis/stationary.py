@@ -789,11 +789,17 @@ class StationarySolution(MotionSolution):
         for v in values:
             _radicands(SR(v), radicands)
         found = _root_substitution(radicands[0], values) if len(radicands) == 1 else None
+        lin = None
+        if found is not None:
+            (D,), (r, p, value) = radicands, found
+            try:
+                lin = self._problem.linear_system(
+                    lambda e: _with_root(self._at(e), D, r, p, value))
+            except (TypeError, ValueError, ArithmeticError):
+                found = None    # an expression the substitution cannot rebuild
         if found is None:
             lin = self.linear_system()
             return [] if lin is None else lin.stability(positive=positive).cases()
-        (D,), (r, p, value) = radicands, found
-        lin = self._problem.linear_system(lambda e: _with_root(self._at(e), D, r, p, value))
         if lin is None:
             return []
         cases = lin.stability(positive=list(positive) + [r]).cases()
