@@ -217,6 +217,7 @@ print(len(census.cells()))
 """
 
 
+@pytest.mark.slow
 def test_cusp_census_raises_no_abort():
     # a PARI error (a univariate discriminant over QQ[a] in the variable
     # order PARI refuses) is signalled by cysignals through SIGABRT, which

@@ -151,6 +151,7 @@ def brun_families():
     return [s for s in brun() if s.dimension() == 3]
 
 
+@pytest.mark.slow
 def test_brun_uniform_rotations_are_real_exactly_for_positive_epsilon(brun_families):
     assert len(brun_families) == 2
     assert all(s.is_reality_decided() for s in brun_families)
