@@ -158,6 +158,33 @@ def test_cusp_census_against_numpy():
             assert census.count_at({a: int(a0), b: int(b0)}) == cusp_counts(a0, b0)
 
 
+CUSP_WITH_FAULTHANDLER = """
+from sage.all import var
+import faulthandler
+faulthandler.enable()           # as pytest does: it reports every SIGABRT
+from sage_dynsym import Lagrangian
+from sage_dynsym.analysis.census import equilibrium_census
+x, dx, a, b = var('x dx a b')
+census = equilibrium_census(Lagrangian(dx**2 / 2 - x**4 / 4 + a * x**2 / 2 - b * x, [x]), [a, b])
+print(len(census.cells()))
+"""
+
+
+@pytest.mark.slow
+def test_cusp_census_raises_no_abort():
+    # a PARI error (a univariate discriminant over QQ[a] in the variable
+    # order PARI refuses) is signalled by cysignals through SIGABRT, which
+    # faulthandler printed as "Fatal Python error: Aborted"
+    import os
+    import subprocess
+    import sys
+    done = subprocess.run([sys.executable, "-c", CUSP_WITH_FAULTHANDLER], capture_output=True,
+                          text=True, timeout=600, env=dict(os.environ))
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert "Aborted" not in done.stderr and "Fatal Python error" not in done.stderr
+    assert int(done.stdout.split()[-1]) > 1
+
+
 def test_hoop_census_bifurcation_value():
     th, dth, w, g = var('theta dtheta w g')
     # bead on a hoop (R = 1) turning at w: tilted equilibria for w^2 > g

@@ -86,10 +86,53 @@ def test_clebsch_family_is_explicit_with_its_reality_condition(families):
 @pytest.mark.slow
 def test_clebsch_family_stability_is_a_verdict(families):
     # never an exception: a verdict with its region (here the first
-    # approximation does not decide on the family)
+    # approximation decides part of it: see the next test)
     for s in families:
         v = s.stability()
         assert v.verdict() in ('undecided', 'stable', 'unstable', 'depends on the parameters',
                                'stable in first approximation')
         for case in v.cases() or [v]:
             assert case.region() is None or isinstance(case.region(), list)
+
+
+def kirchhoff_jacobian(a, th, m, p):
+    """The Jacobian of Kirchhoff's equations dM/dt = M x w + p x u,
+    dp/dt = p x w (w = A M, u = B p, b_i = theta a_j a_k) by central
+    differences, exact for a quadratic right-hand side."""
+    b = th * np.array([a[1] * a[2], a[0] * a[2], a[0] * a[1]])
+
+    def rhs(z):
+        mm, pp = z[:3], z[3:]
+        return np.concatenate([np.cross(mm, a * mm) + np.cross(pp, b * pp),
+                               np.cross(pp, a * mm)])
+    z0 = np.concatenate([m, p])
+    return np.array([(rhs(z0 + e) - rhs(z0 - e)) / 2 for e in np.eye(6)]).T
+
+
+@pytest.mark.slow
+def test_clebsch_family_unstable_case_against_eigenvalues(families):
+    # the square root sqrt(a1/(a2 a3 theta)) does not stop the first
+    # approximation: its 'unstable' case is where the Jacobian (NumPy) has
+    # a root with positive real part, the rest is undecided (roots on the
+    # imaginary axis)
+    for s in families:
+        rng = np.random.default_rng(4)
+        v = s.stability()
+        unstable, = [c for c in v.cases() if c.verdict() == 'unstable']
+        assert {c.verdict() for c in v.cases()} == {'undecided', 'unstable'}
+        seen = set()
+        for _ in range(12):
+            a = [int(k) * int(rng.choice([-1, 1]))
+                 for k in rng.choice(range(1, 9), size=3, replace=False)]
+            th = int(rng.integers(1, 3) * np.sign(np.prod(a)))      # theta a1 a2 a3 > 0
+            m = [int(k) * int(rng.choice([-1, 1])) for k in rng.integers(1, 4, size=3)]
+            values = {x: SR(v0) for x, v0 in zip(A + [theta] + M, a + [th] + m)}
+            p = np.array([float(SR(s.point()[x]).subs(values)) for x in P])
+            at = {**values, **{x: SR(float(v0)) for x, v0 in zip(P, p)}}
+            claimed = any(all(bool(SR(c).subs(at)) for c in alt) for alt in unstable.region())
+            roots = np.linalg.eigvals(kirchhoff_jacobian(np.array(a, float), th,
+                                                         np.array(m, float), p))
+            # zero roots (Casimirs, the family) split by rounding only
+            assert claimed == bool(roots.real.max() > 1e-4)
+            seen.add(claimed)
+        assert seen == {True, False}

@@ -30,6 +30,14 @@ equilibria, stationary motions -- is solved here, exactly:
      returned as equations;
    - a component that cannot be written explicitly (a step of degree 3 or
      more) is returned *implicitly*: its equations, and says so;
+   - a family with parameters whose relations remain is written by other
+     free unknowns where some choice makes it explicit (a rational
+     parametrization, or branches by radicals); otherwise the conditions
+     of its reality on the parameters and its free unknowns are decided
+     by quantifier elimination (QEPCAD, within a budget), and where that
+     does not decide, it says so
+     (:meth:`~AlgebraicSolution.is_reality_decided`) -- never an
+     exception;
 
 4. only real components are kept: branches whose radicand can never be
    positive, and components over `\QQ` with no real point, are dropped.
@@ -94,6 +102,7 @@ from .translation import Translation, NotAlgebraic, translate_expressions
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
+           'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'FAMILY_QE_VARIABLES',
            'solve_transcendental']
 
 
@@ -383,6 +392,8 @@ class AlgebraicSolution(SageObject):
     def _repr_(self):
         kind = "" if self.is_explicit() else ", implicit: given by its equations"
         cond = f", if {' and '.join(map(str, self._conditions))}" if self._conditions else ""
+        if not self._reality_known:
+            cond += ", where it is real not decided"
         return f"Solution {self.values()} (dimension {self.dimension()}{kind}{cond})"
 
     def values(self):
@@ -464,26 +475,60 @@ class AlgebraicSolution(SageObject):
         solution to exist and be real, a list of relationals; ``[]`` when it
         exists for all admissible values.
 
+        For an implicit solution whose reality could not be decided (see
+        :meth:`is_reality_decided`), the conditions found (e.g. nonzero
+        denominators): it is real at most there, perhaps not everywhere
+        there.
+
         EXAMPLES::
 
             sage: from sage_dynsym.algebra.solving import solve_exactly
             sage: x, a, b = var('x a b')
             sage: solve_exactly([a*x - b], [x])[0].conditions()
             [a != 0]
+
+        An implicit family (a cubic in `y` over `x` and `z`) is real
+        where the quantifier elimination says::
+
+            sage: y, z = var('y z')
+            sage: s = solve_exactly([y^3 - 3*y - x, z^2 - a], [x, y, z])[0]
+            sage: s.is_explicit(), s.conditions()
+            (True, [a > 0])
         """
-        if not self._reality_known:
-            raise AnalysisError(
-                "the conditions under which this implicit solution is real could "
-                f"not be decided; its equations are {self.equations()}",
-                entry="conditions")
         return list(self._conditions)
+
+    def is_reality_decided(self):
+        r"""
+        Whether the conditions under which the solution is real are known
+        (``False`` for an implicit solution with parameters whose reality
+        neither a parametrization nor quantifier elimination within its
+        budget decided: then :meth:`conditions` is the region where it may
+        be real).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.solving import solve_exactly
+            sage: x, y, a = var('x y a')
+            sage: solve_exactly([y^4 + x^4 - a], [x, y])[0].is_reality_decided()
+            True
+
+        Without quantifier elimination its reality is not decided::
+
+            sage: import sage_dynsym.algebra.solving as solving
+            sage: solving.FAMILY_QE_VARIABLES = 0
+            sage: s = solve_exactly([y^4 + x^4 - a], [x, y])[0]; s
+            Solution {x: x, y: y} (dimension 1, implicit: given by its equations, where it is real not decided)
+            sage: s.is_reality_decided(), s.conditions()
+            (False, [])
+            sage: solving.FAMILY_QE_VARIABLES = 7
+        """
+        return self._reality_known
 
     def known_conditions(self):
         r"""
         The conditions found for this solution to exist: those of
-        :meth:`conditions`, without its refusal when whether an implicit
-        solution is real could not be decided (then only the conditions
-        found, e.g. nonzero denominators, for listing the solution).
+        :meth:`conditions` (kept under this name; also where whether an
+        implicit solution is real could not be decided).
 
         EXAMPLES::
 
@@ -780,9 +825,18 @@ def _solve_component(T, prime, sh, counted, positive):
     free = [] if sh is not None else _free_unknowns(T, prime, counted)
     if free:
         family = _family(T, prime, free, counted, positive)
+        if family is not None and not family._reality_known:
+            # where its reality is not known, its branches may say, or a
+            # rational parametrization, or quantifier elimination
+            found = _branches(T, family, positive)
+            if len(found) != 1 or found[0] is not family:
+                return found
+            found = _parametrized(T, prime, family, counted, positive)
+            if found is not None:
+                return found
+            family = _qe_family(T, family, positive)
         if family is not None:
-            # where its reality is not known, its branches may say
-            return [family] if family._reality_known else _branches(T, family, positive)
+            return [family]
         return _singular_locus_solutions(T, prime, len(free), counted, positive)
     if T.field() is QQ:
         return _rational_points(T, prime, sh, counted)
@@ -836,6 +890,120 @@ def _branches(T, family, positive):
         result.append(AlgebraicSolution(T, family._prime, family._free, family._counted,
                                         values, dict(family._ring_values), [], conditions))
     return result
+
+
+#: At most this many other choices of the free unknowns are tried when
+#: looking for a rational parametrization of an implicit family ...
+PARAMETRIZATION_TRIES = 24
+
+#: ... and no new one after this many seconds.
+PARAMETRIZATION_SECONDS = 20
+
+#: Implicit families with parameters are decided by quantifier elimination
+#: (over their bound unknowns) only up to this many variables.
+FAMILY_QE_VARIABLES = 7
+
+
+def _parametrized(T, prime, family, counted, positive):
+    r"""
+    The family written by other free unknowns, if some choice of them
+    gives every other unknown explicitly (rationally, or on branches by
+    radicals, see :func:`_branches`): then it is real wherever the
+    conditions of the values hold (denominators not zero, radicands
+    positive); ``None`` if no choice tried does.
+
+    EXAMPLES: `a x = y^3 + y` over `x` needs a cubic; over `y` it is
+    rational, real for `a \ne 0`; `y^3 = a x y - 1`, `y z = 1` likewise::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, z, a = var('x y z a')
+        sage: s = solve_exactly([y^3 + y - a*x], [x, y])[0]
+        sage: s.values(), s.conditions()
+        ({x: (y^3 + y)/a, y: y}, [a != 0])
+        sage: s = solve_exactly([y^3 - a*x*y + 1, z*y - 1], [x, y, z])[0]
+        sage: s.values(), s.conditions()
+        ({x: (y^3 + 1)/(a*y), y: y, z: 1/y}, [y != 0, a != 0])
+    """
+    from itertools import combinations
+    from time import monotonic
+    n, d = len(T.unknowns()), len(family._free)
+    order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
+    tried, start = 0, monotonic()
+    _log(f"an implicit family of dimension {d}: trying other free unknowns")
+    for choice in combinations(order, d):
+        if tried >= PARAMETRIZATION_TRIES or monotonic() - start > PARAMETRIZATION_SECONDS:
+            break
+        if sorted(choice) == sorted(family._free):
+            continue
+        keep = [g for i in choice for g in _unit_generators(T, i)]
+        if _projection_dimension(prime, keep) != d:
+            continue
+        tried += 1
+        other = _family(T, prime, list(choice), counted, positive)
+        if other is None:
+            continue
+        found = _branches(T, other, positive) if other._relations else [other]
+        if found and all(s.is_explicit() for s in found):
+            return [_with_denominators(s, positive) for s in found]
+    return None
+
+
+def _with_denominators(solution, positive):
+    r"""The solution with its values' denominators required nonzero (the
+    coefficients of a parametrization are over the field of parameters)."""
+    conditions = list(solution._conditions)
+    for v in solution._values.values():
+        conditions = conjunction(conditions, nonzero_conditions(SR(v).denominator(),
+                                                                positive)) or conditions
+    return AlgebraicSolution(solution._T, solution._prime, solution._free, solution._counted,
+                             dict(solution._values), dict(solution._ring_values), [],
+                             conditions)
+
+
+def _qe_family(T, family, positive):
+    r"""
+    The family with the conditions of its reality decided by quantifier
+    elimination: those on the parameters and its free unknowns for its
+    bound unknowns to have real values (``None`` if they never have: its
+    real points, if any, are singular). The family is returned unchanged
+    (its reality undecided) when the problem is too large, QEPCAD is not
+    available or over its budget, or the answer is not one conjunction.
+
+    EXAMPLES: `y^4 = a - x^4` over `x` is real where `a \ge x^4`::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, a = var('x y a')
+        sage: s = solve_exactly([y^4 + x^4 - a], [x, y])[0]
+        sage: s.is_explicit(), s.conditions(), s.is_reality_decided()
+        (False, [x^4 - a <= 0], True)
+    """
+    from .quantifier_elimination import exists
+    unknowns = T.unknowns()
+    free = set(family._free)
+    bound = [unknowns[i] for i in range(len(unknowns))
+             if i not in free and i not in family._values]
+    if any(T.is_angle(u) for u in unknowns):
+        return family
+    relations = [SR(e).numerator() for e in family.equations()]
+    symbols = set().union(*(set(map(str, e.variables())) for e in relations))
+    if not relations or len(symbols) > FAMILY_QE_VARIABLES:
+        return family
+    _log(f"deciding where a family is real: quantifier elimination in {len(symbols)} variables")
+    try:
+        alternatives = exists(bound, [e == 0 for e in relations], positive,
+                              timeout=REALITY_QE_TIMEOUT)
+    except AnalysisError:
+        return family
+    if not alternatives:
+        return None
+    if len(alternatives) > 1:
+        return family
+    conditions = conjunction(list(family._conditions), alternatives[0])
+    if conditions is None:
+        return None
+    return AlgebraicSolution(T, family._prime, family._free, family._counted,
+                             dict(family._values), dict(family._ring_values),
+                             family._relations, conditions)
 
 
 def _singular_locus_solutions(T, prime, dimension, counted, positive):

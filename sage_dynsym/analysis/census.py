@@ -847,7 +847,11 @@ def _cylinders(polys, p1, p2, positive1, positive2):
     y = ring.gen(1)
     critical = [F.polynomial(y).leading_coefficient()]
     if F.degree(y) > 0:
-        critical.append(F.polynomial(y).discriminant())
+        # in the bivariate ring (Singular's resultant): the univariate
+        # discriminant over QQ[p1] goes through PARI, which refuses the
+        # variable order ("incorrect priority in gtopoly") by an abort()
+        # that cysignals recovers from but faulthandler reports
+        critical.append(F.discriminant(y))
     if positive2:
         # a section crossing the boundary p2 = 0 changes the count of sections
         critical.append(F.subs({y: 0}))

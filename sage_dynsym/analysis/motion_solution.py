@@ -138,6 +138,25 @@ class MotionSolution(SageObject):
         """
         return self._solution.conditions()
 
+    def is_reality_decided(self):
+        r"""
+        Whether the conditions under which the solution is real are known
+        (``False`` only for an implicit family with parameters that neither
+        a parametrization nor quantifier elimination within its budget
+        decided: then :meth:`conditions` is the region where it may be
+        real, and the cases of its stability verdict hold at its real
+        points there).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: x, y, a = var('x y a')
+            sage: s = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])[1]
+            sage: s.is_reality_decided()
+            True
+        """
+        return self._solution.is_reality_decided()
+
     def equations(self):
         r"""
         The relations (expressions ``== 0``) that remain between the

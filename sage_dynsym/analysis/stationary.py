@@ -95,6 +95,8 @@ REFERENCES:
   Mech. 30 (1966) 1090--1103.
 - D. R. Merkin, *Introduction to the Theory of Stability*, Springer, 1997.
 """
+import operator
+
 from sage.functions.trig import arctan2
 from sage.matrix.constructor import matrix
 from sage.rings.qqbar import AA
@@ -266,6 +268,54 @@ class StationaryProblem:
         return None if self._linear is None else self._linear(evaluate)
 
 
+def _radicands(expr, found):
+    r"""Append to ``found`` the radicands `D` of the square roots (powers
+    `D^{k/2}`) in ``expr``, each once."""
+    from sage.rings.rational_field import QQ
+    if expr.operator() is None:
+        return
+    base, *rest = expr.operands()
+    if expr.operator() is operator.pow and rest[0] in QQ and QQ(rest[0]).denominator() == 2 \
+            and not any(bool((base - D).is_zero()) for D in found):
+        found.append(base)
+    for e in expr.operands():
+        _radicands(e, found)
+
+
+def _root_substitution(D, values):
+    r"""
+    A symbol ``r`` for `\sqrt D` and a symbol `p` of `D` with `p` as a
+    rational function of `r` making `D = r^2` (`D` of degree at most 1 in
+    `p` in its numerator and denominator), ``p`` chosen among those that
+    occur least in ``values``; ``None`` if there is none.
+    """
+    r = SR.var("sqrt_radicand")
+    num, den = D.numerator(), D.denominator()
+    candidates = sorted((v for v in D.variables() if num.degree(v) <= 1 and den.degree(v) <= 1),
+                        key=lambda v: (sum(str(e).count(str(v)) for e in values), str(v)))
+    for v in candidates:
+        n1, n0 = num.coefficient(v, 1), num.coefficient(v, 0)
+        d1, d0 = den.coefficient(v, 1), den.coefficient(v, 0)
+        # (n1 p + n0) = r^2 (d1 p + d0)
+        if not (n1 - r**2 * d1).is_zero():
+            return r, v, ((r**2 * d0 - n0) / (n1 - r**2 * d1)).factor()
+    return None
+
+
+def _with_root(expr, D, r, p, value):
+    r"""``expr`` with `D^{k/2}` written `r^k`, then `p` replaced by its
+    value in `r`."""
+    def walk(e):
+        op = e.operator()
+        if op is None:
+            return e
+        args = e.operands()
+        if op is operator.pow and bool((args[0] - D).is_zero()):
+            return r ** (2 * args[1])
+        return op(*[walk(a) for a in args])
+    return walk(SR(expr)).subs({p: value})
+
+
 class StationarySolution(MotionSolution):
     r"""
     One stationary solution: a real branch of an irreducible component of
@@ -318,6 +368,8 @@ class StationarySolution(MotionSolution):
         conds = self._solution.known_conditions()
         if conds:
             kind += ", if " + " and ".join(map(str, conds))
+        if not self._solution.is_reality_decided():
+            kind += ", where it is real not decided"
         return f"Stationary solution {self.point()}" + (f", {mult}" if mult else "") + \
             f" ({kind})"
 
@@ -663,15 +715,32 @@ class StationarySolution(MotionSolution):
             sage: [(case.verdict(), case.region()) for case in v.cases()]
             [('stable in first approximation', [[4*A*g*l*m - p_phi^2 < 0]]),
              ('unstable', [[4*A*g*l*m - p_phi^2 > 0]])]
+
+        A family whose values hold square roots of parameters is tested in
+        first approximation too (`\varepsilon = r^2` there): Brun's problem,
+        `H = \tfrac12 (M, I^{-1} M) + \tfrac\varepsilon2 (\gamma, I\gamma)`
+        (Borisov and Mamaev, *Rigid Body Dynamics*, the Brun case), whose
+        uniform rotations `\gamma = \pm I^{-1} M/\sqrt\varepsilon` are
+        unstable where a polynomial of the moments of inertia and of `M` is
+        negative (only for moments of inertia of both signs)::
+
+            sage: from sage_dynsym.analysis.stationary import stationary_solutions
+            sage: M1, M2, M3, g1, g2, g3 = var('M1 M2 M3 g1 g2 g3')
+            sage: I1, I2, I3, eps = var('I1 I2 I3 epsilon')
+            sage: Mv, gv, I = vector([M1, M2, M3]), vector([g1, g2, g3]), [I1, I2, I3]
+            sage: H = sum(Mv[i]^2/I[i] + eps*I[i]*gv[i]^2 for i in range(3))/2
+            sage: w = vector([H.diff(v) for v in Mv]); u = vector([H.diff(v) for v in gv])
+            sage: X = list(Mv.cross_product(w) + gv.cross_product(u)) + list(gv.cross_product(w))
+            sage: sols = stationary_solutions([H, gv*gv, Mv*gv], list(Mv) + list(gv), equations=X)
+            sage: s = sols[4]; s.point()[g1], s.conditions()  # long time
+            (M1/(I1*sqrt(epsilon)), [g3 != 0, I3 != 0, epsilon > 0, I1 != 0, M1 != 0, I2 != 0])
+            sage: [c.verdict() for c in s.stability().cases()]  # long time
+            ['undecided', 'unstable']
         """
         positive = self._positive(positive)
         region = []
         first, why = [], "neither the second variation nor the first approximation decides"
-        try:
-            existence = simplify_conjunction(self.conditions(), positive) or []
-        except AnalysisError as err:
-            # where the solution is real is unknown: nothing is claimed
-            return StabilityVerdict('undecided', f"not decided: {err}")
+        existence = simplify_conjunction(self.conditions(), positive) or []
         try:
             for sign in self._problem.signs:
                 for alt in self.stability_region(positive, sign):
@@ -681,12 +750,10 @@ class StationarySolution(MotionSolution):
             # the second variation is not decided (e.g. QEPCAD's budget):
             # the first approximation may still decide
             region, why = [], why + f" (second variation: {err})"
-        lin = self.linear_system() if self.is_explicit() and \
-            self.is_equilibrium() is not False else None
         # the first approximation is the one stability service's; the
         # Routh-Lyapunov theorem adds 'stable' (for the nonlinear system)
         try:
-            first = lin.stability(positive=positive).cases() if lin is not None else []
+            first = self._first_approximation_cases(positive)
         except AnalysisError as err:
             why += f" ({err})"
         order = ('asymptotically stable', 'stable', 'stable in first approximation',
@@ -700,8 +767,47 @@ class StationarySolution(MotionSolution):
         reasons = {c.verdict(): c.reason() for c in first}
         reasons['stable'] = "the second variation of the Lyapunov function is definite"
         reasons.setdefault('undecided', why)
+        if not self._solution.is_reality_decided():
+            # each case holds at the family's real points in its region;
+            # where they exist there is not known
+            reasons = {k: f"{r}; where the family is real within this region is not "
+                       f"decided" for k, r in reasons.items()}
         return verdict_from_parts(parts, reasons, {}, positive, domain=[existence],
                                   methods={'stable': 'Routh-Lyapunov'}, rest='undecided')
+
+    def _first_approximation_cases(self, positive):
+        r"""The cases of the first approximation's verdict (``[]`` when it
+        is not known). A square root `\sqrt D` in the solution (of
+        `\varepsilon`, of `\theta a_1 a_2 a_3`) is a new positive parameter
+        `r` first, a symbol of `D` written as a rational function of `r`
+        with `D = r^2`: the test needs rational coefficients; the regions
+        are written back with `r = \sqrt D`."""
+        if not self.is_explicit() or self.is_equilibrium() is False:
+            return []
+        values = list(self.point().values()) + list(self.multipliers().values())
+        radicands = []
+        for v in values:
+            _radicands(SR(v), radicands)
+        found = _root_substitution(radicands[0], values) if len(radicands) == 1 else None
+        lin = None
+        if found is not None:
+            (D,), (r, p, value) = radicands, found
+            try:
+                lin = self._problem.linear_system(
+                    lambda e: _with_root(self._at(e), D, r, p, value))
+            except (TypeError, ValueError, ArithmeticError):
+                found = None    # an expression the substitution cannot rebuild
+        if found is None:
+            lin = self.linear_system()
+            return [] if lin is None else lin.stability(positive=positive).cases()
+        if lin is None:
+            return []
+        cases = lin.stability(positive=list(positive) + [r]).cases()
+        return [StabilityVerdict(c.verdict(), c.reason(), method=c.method(),
+                                 region=None if c.region() is None else
+                                 [[SR(rel).subs({r: D.sqrt()}) for rel in alt]
+                                  for alt in c.region()])
+                for c in cases]
 
     def check(self, equations):
         r"""
@@ -998,8 +1104,12 @@ class StationarySolutions(SolutionList):
                     equation(lines, e)
             try:
                 conditions = s.conditions()
+                decided = s.is_reality_decided()
                 if conditions:
-                    lines.append("    exists if: " + ", ".join(map(str, conditions)))
+                    lead = "exists if" if decided else "real at most where (not decided)"
+                    lines.append(f"    {lead}: " + ", ".join(map(str, conditions)))
+                elif not decided:
+                    lines.append("    where it is real: not decided")
                 verdict = s.stability()
             except DynSymError as err:
                 lines.append(f"    stability: not decided ({err})")
