@@ -85,8 +85,9 @@ def load_forces(kin, loads=None):
     r"""
     Per loaded body ``k``, the force ``(f, n)`` (about its joint point, in
     its axes) of the loads ``loads``
-    (:class:`~sage_dynsym.numerics.body_tree.TreeLoad`; default: the
-    tree's): forces moved to the joint point, with their moments, and
+    (:class:`~sage_dynsym.numerics.body_tree.TreeLoad` objects, their
+    bodies found by :meth:`~sage_dynsym.numerics.body_tree.BodyTree.body_index`;
+    default: the tree's): forces moved to the joint point, with their moments, and
     torques. :func:`generalized_forces` of them are the loads' generalized
     forces `Q_i = F\cdot\partial v_P/\partial\dot q_i +
     M\cdot\partial W_k/\partial\dot q_i`, the ones that both the
@@ -109,14 +110,14 @@ def load_forces(kin, loads=None):
     G = kin.G
     forces = {}
     for load in kin.tree.loads() if loads is None else loads:
-        k = load.body
+        k, axes = kin.tree.body_index(load.body()), kin.tree.body_index(load.axes())
         f, nk = forces.get(k, (kin.zero3, kin.zero3))
-        if load.force is not None:
-            F = kin.to_body(k, load.axes, kin.vector(load.force))
+        if load.force() is not None:
+            F = kin.to_body(k, axes, kin.vector(load.force()))
             f = add(G, f, F)
-            nk = add(G, nk, cross(G, kin.vector(load.point), F))
-        if load.torque is not None:
-            nk = add(G, nk, kin.to_body(k, load.axes, kin.vector(load.torque)))
+            nk = add(G, nk, cross(G, kin.vector(load.point()), F))
+        if load.torque() is not None:
+            nk = add(G, nk, kin.to_body(k, axes, kin.vector(load.torque())))
         forces[k] = (f, nk)
     return forces
 
