@@ -294,9 +294,16 @@ def velocity_corrections(kin):
     prescribed = _prescribed(kin)
     if not prescribed:
         return [G.zero] * n
-    # momentum and mass of every subtree, in the parent's axes
+    # the correction of body k reads the momentum and mass of its subtree
+    # only (and, above it, the motion of its parent's frame): they are summed
+    # from the leaves over the bodies below a prescribed velocity, in the
+    # parent's axes (parents come before their children)
+    below = {k for k, _ in prescribed}
+    for k in range(1, len(kin.tree.bodies()) + 1):
+        if kin.parent[k] in below:
+            below.add(k)
     momentum, mass = {}, {}
-    for k in range(len(kin.tree.bodies()), 0, -1):
+    for k in sorted(below, reverse=True):
         m, h, _ = kin.inertia(kin.tree.bodies()[k - 1])
         w, v, _, _ = kin.state[k]
         p = add(G, scale(G, m, v), cross(G, w, h), *[
