@@ -274,6 +274,13 @@ def velocity_corrections(kin):
         - e_i\times\delta_k - \partial\delta_k/\partial q_i\bigr)
         + m_k\, g\cdot D_i .
 
+    Only the subtrees of the bodies with a prescribed velocity are summed;
+    the terms `-P_k\cdot(e_i\times\delta_k) = e_i\cdot(P_k\times\delta_k)`
+    of all `i` are the generalized force of the torque `P_k\times\delta_k`
+    on the parent `j`, projected by :func:`generalized_forces` (no partial
+    velocities built); the other terms only where `\delta_k` depends on
+    `q_i` or `\dot q_i`.
+
     EXAMPLES: a body of mass `m` whose joint moves with twice the rate of
     its coordinate: the kinetic energy `2 m\dot x^2` gives `4 m\ddot x`
     where Kane's form gives `2 m\ddot x`, and in gravity `g` along `x`
@@ -312,23 +319,29 @@ def velocity_corrections(kin):
         for step in reversed(kin.body_steps[k][1:]):
             p = rotate(G, step.axis, step.c, step.s, p)
         momentum[k], mass[k] = p, total
+    # -P_k.(e_i x delta_k) = e_i.(P_k x delta_k): over all i, the generalized
+    # force of the torque P_k x delta_k on the parent, projected by the
+    # backward pass; the other terms only where delta_k depends on q_i, dq_i
+    torques = {}
     for k, delta in prescribed:
         j = kin.parent[k]
-        partial = kin.partial_angular_velocities(j)
         g = kin.to_body(j, 0, kin.g0)
         w = kin.state[j][0]
-        deltan = kin.vector(delta)
+        if j:
+            torque = cross(G, momentum[k], kin.vector(delta))
+            torques[j] = (kin.zero3, add(G, torques.get(j, (None, kin.zero3))[1], torque))
+        names = {str(v) for d in delta for v in d.variables()}
         for i, (qi, dqi) in enumerate(zip(kin.q, kin.dq)):
+            if str(qi) not in names and str(dqi) not in names:
+                continue
             D = [d.diff(dqi) for d in delta]
-            beta = add(G, kin.vector([kin.rate(x) for x in D]),
-                       tuple(G.neg(x) for x in kin.vector([d.diff(qi) for d in delta])))
             Dn = kin.vector(D)
-            beta = add(G, beta, cross(G, w, Dn))
-            if i in partial:
-                beta = tuple(G.sub(x, y) for x, y in zip(beta, cross(G, partial[i], deltan)))
+            beta = add(G, kin.vector([kin.rate(x) for x in D]), cross(G, w, Dn),
+                       tuple(G.neg(x) for x in kin.vector([d.diff(qi) for d in delta])))
             corrections[i].append(G.add(G.dot(momentum[k], beta),
                                         G.mul(mass[k], G.dot(g, Dn))))
-    return [G.sum(parts) for parts in corrections]
+    return [G.add(G.sum(parts), Q)
+            for parts, Q in zip(corrections, generalized_forces(kin, torques))]
 
 
 def applied_forces(kin):
