@@ -58,11 +58,9 @@ opposite); the generalized forces are those of the potential
 """
 import numbers
 
-from sage.structure.sage_object import SageObject
-from sage.symbolic.ring import SR
-
-from ..errors import ModelError
+from ..errors import AnalysisError, ModelError
 from ..io.fields import check_mapping
+from ..numerics.body_tree import TreeLoad, body_reference_index
 from .rigid_body import RigidBody, as_vector3
 
 __all__ = ['LOAD_KEYS', 'Load', 'load_list', 'body_index']
@@ -85,9 +83,12 @@ def _check_reference(value, entry, inertial):
     raise ModelError(f"expected {expected}, got {value!r}", entry=entry)
 
 
-class Load(SageObject):
+class Load(TreeLoad):
     r"""
-    A force at a point of a body and/or a torque on it.
+    A force at a point of a body and/or a torque on it: a
+    :class:`~sage_dynsym.numerics.body_tree.TreeLoad` (the fields that the
+    recursions read, with their accessors) with its bodies given by name,
+    index or object and the checks of a description.
 
     INPUT:
 
@@ -112,6 +113,18 @@ class Load(SageObject):
         sage: Load('arm', torque=[0, 0, var('M')], axes='arm')
         Load on 'arm' at (0, 0, 0): torque (0, 0, M), in the axes of 'arm'
 
+    The fields and their accessors are those of a tree load, which the
+    recursive algorithms read::
+
+        sage: from sage_dynsym.numerics.body_tree import TreeLoad
+        sage: F, l = var('F l')
+        sage: P = Load('b', point=[0, 0, l], force=[F, 0, 0]); isinstance(P, TreeLoad)
+        True
+        sage: P.body(), P.point(), P.force(), P.torque(), P.axes(), P.expressions()
+        ('b', (0, 0, l), (F, 0, 0), None, 0, [0, 0, l, F, 0, 0])
+        sage: P.subs({F: 2})
+        Load on 'b' at (0, 0, l): force (2, 0, 0), in the inertial axes
+
     TESTS::
 
         sage: Load('arm', force=[1, 2])
@@ -129,13 +142,18 @@ class Load(SageObject):
     """
 
     def __init__(self, body, point=(0, 0, 0), force=None, torque=None, axes=0):
-        self._body = _check_reference(body, "body", inertial=False)
-        self._point = as_vector3((0, 0, 0) if point is None else point, "point")
-        self._force = as_vector3(force, "force")
-        self._torque = as_vector3(torque, "torque")
+        super().__init__(body, point=point, force=force, torque=torque, axes=axes)
         if self._force is None and self._torque is None:
             raise ModelError("a load needs a force, a torque or both", entry="force")
-        self._axes = _check_reference(axes, "axes", inertial=True)
+
+    # the conversions of TreeLoad, with the checks of a description and the
+    # entries named as there
+
+    def _reference_of(self, reference, field):
+        return _check_reference(reference, field, inertial=field == 'axes')
+
+    def _vector_of(self, value, field):
+        return as_vector3(value, field)
 
     @classmethod
     def from_value(cls, value, entry):
@@ -178,94 +196,6 @@ class Load(SageObject):
         return "Load on {!r} at ({}): {}, in {}".format(
             self._body, ", ".join(map(str, self._point)), ", ".join(parts), axes)
 
-    def body(self):
-        r"""
-        The loaded body (its name or 1-based index).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: Load('b', force=[1, 0, 0]).body()
-            'b'
-        """
-        return self._body
-
-    def point(self):
-        r"""
-        The point of application, in the body's axes.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: Load('b', point=[1, 0, 0], force=[1, 0, 0]).point()
-            (1, 0, 0)
-        """
-        return self._point
-
-    def force(self):
-        r"""
-        The force components in :meth:`axes` (``None`` if no force).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: Load('b', torque=[0, 0, 1]).force() is None
-            True
-        """
-        return self._force
-
-    def torque(self):
-        r"""
-        The torque components in :meth:`axes` (``None`` if no torque).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: Load('b', torque=[0, 0, 1]).torque()
-            (0, 0, 1)
-        """
-        return self._torque
-
-    def axes(self):
-        r"""
-        The axes of the components: ``0`` (inertial) or a body name or index.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: Load('b', torque=[0, 0, 1], axes='b').axes()
-            'b'
-        """
-        return self._axes
-
-    def expressions(self):
-        r"""
-        All the expressions of the load (point, force, torque components).
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: Load('b', force=[var('F'), 0, 0]).expressions()
-            [0, 0, 0, F, 0, 0]
-        """
-        return list(self._point) + list(self._force or ()) + list(self._torque or ())
-
-    def subs(self, values):
-        r"""
-        The load with ``values`` (a dictionary) substituted.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: F = var('F')
-            sage: Load('b', force=[F, 0, 0]).subs({F: 2})
-            Load on 'b' at (0, 0, 0): force (2, 0, 0), in the inertial axes
-        """
-        def sub(v):
-            return None if v is None else [SR(c).subs(values) for c in v]
-        return Load(self._body, point=sub(self._point), force=sub(self._force),
-                    torque=sub(self._torque), axes=self._axes)
-
     def to_dict(self):
         r"""
         The description mapping of the load (expressions as text).
@@ -287,34 +217,17 @@ class Load(SageObject):
         out['axes'] = self._axes
         return out
 
-    def tree_load(self, system, entry="load"):
-        r"""
-        The load as a :class:`~sage_dynsym.numerics.body_tree.TreeLoad` of
-        the tree of the bodies of ``system`` (a
-        :class:`~sage_dynsym.mechanics.system_kinematics.SystemKinematics`
-        or a :class:`~sage_dynsym.mechanics.system.MechanicalSystem`): its
-        body and axes as indices there.
-
-        EXAMPLES::
-
-            sage: from sage_dynsym import MechanicalSystem, RigidBody
-            sage: from sage_dynsym.mechanics.loads import Load
-            sage: S = MechanicalSystem([RigidBody('a'), RigidBody('b', parent='a')], [])
-            sage: Load('b', torque=[0, 0, 1], axes='a').tree_load(S)
-            Tree load on body 2 at (0, 0, 0): force None, torque (0, 0, 1), axes 1
-        """
-        from ..numerics.body_tree import TreeLoad
-        k = body_index(system, self._body, f"{entry}.body")
-        axes = 0 if self._axes == 0 else body_index(system, self._axes, f"{entry}.axes")
-        return TreeLoad(k, point=self._point, force=self._force, torque=self._torque,
-                        axes=axes)
-
     def _forces(self, kinematics, entry):
         # the force about the joint point of the loaded body, in the
-        # kinematic pass of the recursions over the symbolic ring
+        # kinematic pass of the recursions over the symbolic ring (whose tree
+        # holds the bodies of ``kinematics``); the bodies checked there first,
+        # so that errors name the entry of the description
         from ..numerics.newton_euler import load_forces
+        body_index(kinematics, self._body, f"{entry}.body")
+        if self._axes != 0:
+            body_index(kinematics, self._axes, f"{entry}.axes")
         kin = kinematics.tree_kinematics()
-        return kin, load_forces(kin, [self.tree_load(kinematics, entry)])
+        return kin, load_forces(kin, [self])
 
     def power(self, kinematics, entry="load"):
         r"""
@@ -423,15 +336,9 @@ def body_index(system, reference, entry):
         ...
         ModelError: loads[0].body: body index 3 out of range 1..2
     """
-    bodies = system.bodies()
     if isinstance(reference, RigidBody):
         reference = reference.name()
-    if isinstance(reference, str):
-        for k, body in enumerate(bodies, 1):
-            if body.name() == reference:
-                return k
-        raise ModelError(f"unknown body {reference!r}; known bodies are: "
-                         f"{', '.join(b.name() for b in bodies) or '(none)'}", entry=entry)
-    if not 1 <= reference <= len(bodies):
-        raise ModelError(f"body index {reference} out of range 1..{len(bodies)}", entry=entry)
-    return int(reference)
+    try:
+        return body_reference_index(system.bodies(), reference, entry, inertial=False)
+    except AnalysisError as err:
+        raise ModelError(err.message, entry=entry) from err

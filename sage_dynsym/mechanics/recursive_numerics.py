@@ -50,8 +50,8 @@ ALGORITHMS = ('auto', 'recursive', 'equations')
 def body_tree(system):
     r"""
     The :class:`~sage_dynsym.numerics.body_tree.BodyTree` of ``system``:
-    the tree holds the system's own bodies (no copy of them), with their
-    parents' indices.
+    the tree holds the system's own bodies and loads (no copy of them),
+    with the bodies' parents' indices.
 
     Uniform gravity becomes the tree's gravity; the other terms of the
     force function (Newtonian fields, expressions) are evaluated
@@ -66,13 +66,14 @@ def body_tree(system):
         ....:                      force_function=[UniformGravity([0, 0, -g]), -k*x^2/2],
         ....:                      loads=[{'body': 'b', 'force': [0, 0, F]}])
         sage: T = body_tree(S); T.gravity(), T.potential(), T.loads()
-        ((0, 0, -g), -1/2*k*x^2, [Tree load on body 1 at (0, 0, 0): force (0, 0, F), torque None, axes 0])
+        ((0, 0, -g), -1/2*k*x^2, [Load on 'b' at (0, 0, 0): force (0, 0, F), in the inertial axes])
+        sage: T.loads()[0] is S.loads()[0]
+        True
     """
     bodies = system.bodies()
     gravity, potential = split_force_terms(system.force_terms(), system.kinematics())
-    loads = [load.tree_load(system, f"loads[{i}]") for i, load in enumerate(system.loads())]
     # the generalized forces given as such (those of the loads come from the tree)
-    return BodyTree(bodies, system.coordinates(), gravity=gravity, loads=loads,
+    return BodyTree(bodies, system.coordinates(), gravity=gravity, loads=system.loads(),
                     parents=[system.parent_index(k) for k in range(1, len(bodies) + 1)],
                     potential=potential, dissipation=system.dissipation(),
                     forces=system.given_forces(),

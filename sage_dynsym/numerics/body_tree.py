@@ -13,7 +13,8 @@ joint point): :class:`TreeBody` objects -- such as a system's own
 :class:`~sage_dynsym.mechanics.rigid_body.RigidBody` objects, a subclass --
 with their parents' indices and the forces
 acting on them:
-uniform gravity, loads (:class:`TreeLoad`), a force function given only as
+uniform gravity, loads (:class:`TreeLoad` objects -- such as a system's
+own :class:`~sage_dynsym.mechanics.loads.Load` objects), a force function given only as
 an expression, a Rayleigh dissipation function, generalized forces,
 holonomic constraints and constraints on the velocities (rolling without
 slipping).
@@ -28,6 +29,8 @@ EXAMPLES: a pendulum of length `l` turning about the `x` axis::
     sage: T.bodies()[0].mass_center()
     (0, 0, -l)
 """
+import numbers
+
 from sage.matrix.constructor import matrix
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
@@ -35,7 +38,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..symbols import velocity, t as _t
 
-__all__ = ['TreeBody', 'TreeLoad', 'BodyTree', 'body_expressions']
+__all__ = ['TreeBody', 'TreeLoad', 'BodyTree', 'body_expressions', 'body_reference_index']
 
 
 def _vector(value, entry):
@@ -258,37 +261,158 @@ def body_expressions(body):
     return out + body.inertia().list()
 
 
+def body_reference_index(bodies, reference, entry, inertial=True):
+    r"""
+    The 1-based index among ``bodies`` (a list of :class:`TreeBody`) of the
+    body ``reference``: its index, or its name (:meth:`TreeBody.name`);
+    ``0`` is the inertial frame when ``inertial``.
+    :class:`~sage_dynsym.errors.AnalysisError` naming ``entry`` if there is
+    no such body.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.numerics.body_tree import TreeBody, body_reference_index
+        sage: bodies = [TreeBody(0, name='cart'), TreeBody(1, name='arm')]
+        sage: body_reference_index(bodies, 'arm', 'load'), body_reference_index(bodies, 0, 'axes')
+        (2, 0)
+        sage: body_reference_index(bodies, 'slider', 'load')
+        Traceback (most recent call last):
+        ...
+        AnalysisError: load: unknown body 'slider'; known bodies are: cart, arm
+        sage: body_reference_index(bodies, 0, 'load', inertial=False)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: load: body index 0 out of range 1..2
+    """
+    if isinstance(reference, str):
+        for k, body in enumerate(bodies, 1):
+            if body.name() == reference:
+                return k
+        names = ', '.join(str(body.name()) for body in bodies)
+        raise AnalysisError(f"unknown body {reference!r}; known bodies are: "
+                            f"{names or '(none)'}", entry=entry)
+    low = 0 if inertial else 1
+    if not low <= reference <= len(bodies):
+        raise AnalysisError(f"body index {reference} out of range {low}..{len(bodies)}",
+                            entry=entry)
+    return int(reference)
+
+
 class TreeLoad(SageObject):
     r"""
-    A force at a point of a body and/or a torque on it, as in
-    :class:`~sage_dynsym.mechanics.loads.Load`: ``body`` the 1-based body
-    index, ``point`` in the body's axes, ``force`` and ``torque`` (or
-    ``None``) with components in the axes of ``axes`` (0: inertial, else a
-    body index). The components may depend on the coordinates, the
-    velocities and `t`.
+    A force at a point of a body and/or a torque on it: the fields of a
+    load that the recursive algorithms read
+    (:func:`~sage_dynsym.numerics.newton_euler.load_forces`).
+
+    INPUT:
+
+    - ``body`` -- the loaded body: its 1-based index in the tree or its
+      name (:meth:`TreeBody.name`)
+    - ``point`` -- (default: the joint point) the point of application, in
+      the body's axes
+    - ``force``, ``torque`` -- (default: none) the components of the force
+      and of the torque, in ``axes``
+    - ``axes`` -- (default: 0) the axes of the components, fixed in them:
+      0 for the inertial frame, or a body (index or name)
+
+    The components may depend on the coordinates, the velocities, the
+    parameters and `t`. A :class:`BodyTree` finds the bodies named by its
+    loads (:meth:`BodyTree.body_index`).
+
+    The loads of a mechanical system,
+    :class:`~sage_dynsym.mechanics.loads.Load`, are tree loads with the
+    checks of a description: the fields are converted by the methods
+    ``_reference_of`` and ``_vector_of``, which a subclass overrides to
+    check more and to name the entry of the description in its errors.
 
     EXAMPLES::
 
         sage: from sage_dynsym.numerics.body_tree import TreeLoad
         sage: F = var('F')
-        sage: TreeLoad(1, point=[0, 0, 1], force=[F, 0, 0])
+        sage: P = TreeLoad(1, point=[0, 0, 1], force=[F, 0, 0]); P
         Tree load on body 1 at (0, 0, 1): force (F, 0, 0), torque None, axes 0
+        sage: P.body(), P.point(), P.force(), P.torque(), P.axes()
+        (1, (0, 0, 1), (F, 0, 0), None, 0)
+        sage: TreeLoad('arm', torque=[0, 0, F], axes='arm').subs({F: 2})
+        Tree load on body 'arm' at (0, 0, 0): force None, torque (0, 0, 2), axes 'arm'
+
+    TESTS::
+
+        sage: TreeLoad(0, force=[1, 0, 0])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: load body: expected a body index >= 1 or a body name, got 0
+        sage: TreeLoad(1, force=[1, 0])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: load force: expected 3 components, got [1, 0]
     """
 
     def __init__(self, body, point=(0, 0, 0), force=None, torque=None, axes=0):
-        self.body, self.axes = int(body), int(axes)
-        self.point = _vector(point, "load point")
-        self.force = None if force is None else _vector(force, "load force")
-        self.torque = None if torque is None else _vector(torque, "load torque")
+        self._body = self._reference_of(body, "body")
+        self._point = self._vector_of((0, 0, 0) if point is None else point, "point")
+        self._force = None if force is None else self._vector_of(force, "force")
+        self._torque = None if torque is None else self._vector_of(torque, "torque")
+        self._axes = self._reference_of(axes, "axes")
+
+    # the conversions of the fields (a subclass checks more) ------------------
+
+    def _reference_of(self, reference, field):
+        if isinstance(reference, str):
+            return reference
+        low = 0 if field == 'axes' else 1
+        if not isinstance(reference, numbers.Integral) or reference < low:
+            raise AnalysisError(f"expected a body index >= {low} or a body name, got "
+                                f"{reference!r}", entry=f"load {field}")
+        return int(reference)
+
+    def _vector_of(self, value, field):
+        return _vector(value, f"load {field}")
 
     def _repr_(self):
         def text(v):
             return 'None' if v is None else f"({', '.join(map(str, v))})"
-        return (f"Tree load on body {self.body} at {text(self.point)}: force "
-                f"{text(self.force)}, torque {text(self.torque)}, axes {self.axes}")
+        return (f"Tree load on body {self._body!r} at {text(self._point)}: force "
+                f"{text(self._force)}, torque {text(self._torque)}, axes {self._axes!r}")
+
+    def body(self):
+        r"""The loaded body, as given: its name or 1-based index.
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._body
+
+    def point(self):
+        r"""The point of application, in the body's axes.
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._point
+
+    def force(self):
+        r"""The force components in :meth:`axes` (``None`` if no force).
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._force
+
+    def torque(self):
+        r"""The torque components in :meth:`axes` (``None`` if no torque).
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._torque
+
+    def axes(self):
+        r"""The axes of the components: ``0`` (inertial), or a body's name or index.
+
+        EXAMPLES: see the class documentation.
+        """
+        return self._axes
 
     def expressions(self):
-        r"""The expressions of the load, for finding its symbols.
+        r"""The expressions of the load (point, force, torque components),
+        for finding its symbols.
 
         EXAMPLES::
 
@@ -296,7 +420,19 @@ class TreeLoad(SageObject):
             sage: TreeLoad(1, torque=[0, 0, var('M')]).expressions()
             [0, 0, 0, 0, 0, M]
         """
-        return list(self.point) + list(self.force or ()) + list(self.torque or ())
+        return list(self._point) + list(self._force or ()) + list(self._torque or ())
+
+    def subs(self, values):
+        r"""
+        The load (of the same class) with ``values`` (a dictionary
+        ``{symbol: value}``) substituted.
+
+        EXAMPLES: see the class documentation.
+        """
+        def sub(v):
+            return None if v is None else [SR(c).subs(values) for c in v]
+        return type(self)(self._body, point=sub(self._point), force=sub(self._force),
+                          torque=sub(self._torque), axes=self._axes)
 
 
 class BodyTree(SageObject):
@@ -313,7 +449,10 @@ class BodyTree(SageObject):
       velocities are their ``d<q>`` symbols
     - ``gravity`` -- (optional) the acceleration of a uniform gravity field
       in the inertial axes
-    - ``loads`` -- (optional) list of :class:`TreeLoad`
+    - ``loads`` -- (optional) list of :class:`TreeLoad` (also the
+      :class:`~sage_dynsym.mechanics.loads.Load` objects of a mechanical
+      system, which name their bodies: the tree holds them, it does not
+      copy them)
     - ``potential`` -- (default 0) a force function `U(q, t)` added to the
       one of gravity, given as an expression (its gradient is used)
     - ``dissipation`` -- (default 0) Rayleigh function `R(q, \dot q, t)`
@@ -361,6 +500,9 @@ class BodyTree(SageObject):
         self._dq = [velocity(q) for q in self._q]
         self._gravity = None if gravity is None else _vector(gravity, "gravity")
         self._loads = list(loads)
+        for i, load in enumerate(self._loads):
+            self.body_index(load.body(), f"loads[{i}].body")
+            self.body_index(load.axes(), f"loads[{i}].axes")
         self._potential = SR(potential)
         self._dissipation = SR(dissipation)
         n = len(self._q)
@@ -390,6 +532,30 @@ class BodyTree(SageObject):
         EXAMPLES: see the module documentation.
         """
         return list(self._bodies)
+
+    def body_index(self, reference, entry="load"):
+        r"""
+        The 1-based index of the body ``reference`` (its index or its name,
+        as a load gives it; 0: the inertial frame), see
+        :func:`body_reference_index`.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.numerics.body_tree import BodyTree, TreeBody, TreeLoad
+            sage: x = var('x')
+            sage: T = BodyTree([TreeBody(0, name='cart'), TreeBody(1, joint=[x, 0, 0], name='bob')],
+            ....:              [x], loads=[TreeLoad('bob', force=[1, 0, 0], axes='cart')])
+            sage: [(T.body_index(P.body()), T.body_index(P.axes())) for P in T.loads()]
+            [(2, 1)]
+
+        TESTS::
+
+            sage: BodyTree([TreeBody(0, name='cart')], [], loads=[TreeLoad('bob', force=[1, 0, 0])])
+            Traceback (most recent call last):
+            ...
+            AnalysisError: loads[0].body: unknown body 'bob'; known bodies are: cart
+        """
+        return body_reference_index(self._bodies, reference, entry)
 
     def with_forces(self, **forces):
         r"""
@@ -558,7 +724,7 @@ class BodyTree(SageObject):
         return self._gravity
 
     def loads(self):
-        r"""The :class:`TreeLoad` records.
+        r"""The loads (:class:`TreeLoad` objects), as given.
 
         EXAMPLES::
 

@@ -85,8 +85,9 @@ def load_forces(kin, loads=None):
     r"""
     Per loaded body ``k``, the force ``(f, n)`` (about its joint point, in
     its axes) of the loads ``loads``
-    (:class:`~sage_dynsym.numerics.body_tree.TreeLoad`; default: the
-    tree's): forces moved to the joint point, with their moments, and
+    (:class:`~sage_dynsym.numerics.body_tree.TreeLoad` objects, their
+    bodies found by :meth:`~sage_dynsym.numerics.body_tree.BodyTree.body_index`;
+    default: the tree's): forces moved to the joint point, with their moments, and
     torques. :func:`generalized_forces` of them are the loads' generalized
     forces `Q_i = F\cdot\partial v_P/\partial\dot q_i +
     M\cdot\partial W_k/\partial\dot q_i`, the ones that both the
@@ -109,14 +110,14 @@ def load_forces(kin, loads=None):
     G = kin.G
     forces = {}
     for load in kin.tree.loads() if loads is None else loads:
-        k = load.body
+        k, axes = kin.tree.body_index(load.body()), kin.tree.body_index(load.axes())
         f, nk = forces.get(k, (kin.zero3, kin.zero3))
-        if load.force is not None:
-            F = kin.to_body(k, load.axes, kin.vector(load.force))
+        if load.force() is not None:
+            F = kin.to_body(k, axes, kin.vector(load.force()))
             f = add(G, f, F)
-            nk = add(G, nk, cross(G, kin.vector(load.point), F))
-        if load.torque is not None:
-            nk = add(G, nk, kin.to_body(k, load.axes, kin.vector(load.torque)))
+            nk = add(G, nk, cross(G, kin.vector(load.point()), F))
+        if load.torque() is not None:
+            nk = add(G, nk, kin.to_body(k, axes, kin.vector(load.torque())))
         forces[k] = (f, nk)
     return forces
 
@@ -273,6 +274,13 @@ def velocity_corrections(kin):
         - e_i\times\delta_k - \partial\delta_k/\partial q_i\bigr)
         + m_k\, g\cdot D_i .
 
+    Only the subtrees of the bodies with a prescribed velocity are summed;
+    the terms `-P_k\cdot(e_i\times\delta_k) = e_i\cdot(P_k\times\delta_k)`
+    of all `i` are the generalized force of the torque `P_k\times\delta_k`
+    on the parent `j`, projected by :func:`generalized_forces` (no partial
+    velocities built); the other terms only where `\delta_k` depends on
+    `q_i` or `\dot q_i`.
+
     EXAMPLES: a body of mass `m` whose joint moves with twice the rate of
     its coordinate: the kinetic energy `2 m\dot x^2` gives `4 m\ddot x`
     where Kane's form gives `2 m\ddot x`, and in gravity `g` along `x`
@@ -293,9 +301,16 @@ def velocity_corrections(kin):
     prescribed = _prescribed(kin)
     if not prescribed:
         return [G.zero] * n
-    # momentum and mass of every subtree, in the parent's axes
+    # the correction of body k reads the momentum and mass of its subtree
+    # only (and, above it, the motion of its parent's frame): they are summed
+    # from the leaves over the bodies below a prescribed velocity, in the
+    # parent's axes (parents come before their children)
+    below = {k for k, _ in prescribed}
+    for k in range(1, len(kin.tree.bodies()) + 1):
+        if kin.parent[k] in below:
+            below.add(k)
     momentum, mass = {}, {}
-    for k in range(len(kin.tree.bodies()), 0, -1):
+    for k in sorted(below, reverse=True):
         m, h, _ = kin.inertia(kin.tree.bodies()[k - 1])
         w, v, _, _ = kin.state[k]
         p = add(G, scale(G, m, v), cross(G, w, h), *[
@@ -304,23 +319,29 @@ def velocity_corrections(kin):
         for step in reversed(kin.body_steps[k][1:]):
             p = rotate(G, step.axis, step.c, step.s, p)
         momentum[k], mass[k] = p, total
+    # -P_k.(e_i x delta_k) = e_i.(P_k x delta_k): over all i, the generalized
+    # force of the torque P_k x delta_k on the parent, projected by the
+    # backward pass; the other terms only where delta_k depends on q_i, dq_i
+    torques = {}
     for k, delta in prescribed:
         j = kin.parent[k]
-        partial = kin.partial_angular_velocities(j)
         g = kin.to_body(j, 0, kin.g0)
         w = kin.state[j][0]
-        deltan = kin.vector(delta)
+        if j:
+            torque = cross(G, momentum[k], kin.vector(delta))
+            torques[j] = (kin.zero3, add(G, torques.get(j, (None, kin.zero3))[1], torque))
+        names = {str(v) for d in delta for v in d.variables()}
         for i, (qi, dqi) in enumerate(zip(kin.q, kin.dq)):
+            if str(qi) not in names and str(dqi) not in names:
+                continue
             D = [d.diff(dqi) for d in delta]
-            beta = add(G, kin.vector([kin.rate(x) for x in D]),
-                       tuple(G.neg(x) for x in kin.vector([d.diff(qi) for d in delta])))
             Dn = kin.vector(D)
-            beta = add(G, beta, cross(G, w, Dn))
-            if i in partial:
-                beta = tuple(G.sub(x, y) for x, y in zip(beta, cross(G, partial[i], deltan)))
+            beta = add(G, kin.vector([kin.rate(x) for x in D]), cross(G, w, Dn),
+                       tuple(G.neg(x) for x in kin.vector([d.diff(qi) for d in delta])))
             corrections[i].append(G.add(G.dot(momentum[k], beta),
                                         G.mul(mass[k], G.dot(g, Dn))))
-    return [G.sum(parts) for parts in corrections]
+    return [G.add(G.sum(parts), Q)
+            for parts, Q in zip(corrections, generalized_forces(kin, torques))]
 
 
 def applied_forces(kin):
