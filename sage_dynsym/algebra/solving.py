@@ -75,6 +75,7 @@ TESTS::
 """
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
+from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.term_order import TermOrder
@@ -806,6 +807,9 @@ def _branches(T, family, positive):
     bound = [i for i in range(len(unknowns)) if i not in free and i not in family._values]
     if not bound or any(T.is_angle(unknowns[i]) for i in bound):
         return [family]
+    if not _radicals_at_random_values(T, family.equations(), [unknowns[i] for i in bound]):
+        _log("a branch needs a step of degree above 2 at random values: kept implicit")
+        return [family]
     try:
         found = solve_exactly([SR(e).numerator() for e in family.equations()],
                               [unknowns[i] for i in bound], positive=positive)
@@ -824,6 +828,47 @@ def _branches(T, family, positive):
         result.append(AlgebraicSolution(T, family._prime, family._free, family._counted,
                                         values, dict(family._ring_values), [], conditions))
     return result
+
+
+def _radicals_at_random_values(T, equations, bound):
+    r"""
+    Whether the ``equations``, solved for the unknowns ``bound`` at random
+    rational values of every other symbol, have finitely many solutions
+    along triangular sets with steps of degree at most 2 (what
+    :func:`_solve_triangular` writes with radicals). A specialization only
+    splits factors, and the dimension only grows at special values, so
+    infinitely many solutions or a step of larger degree there is the same
+    for the symbols too (with probability one): the symbolic solve (far
+    slower) would not give radicals either. ``True`` when it cannot be
+    tried (angles among the symbols) or no solution is found there.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.solving import _radicals_at_random_values
+        sage: x, y, a = var('x y a')
+        sage: _radicals_at_random_values(None, [x^2 - a*y, y^2 - a], [x, y])
+        True
+        sage: _radicals_at_random_values(None, [x^3 - a*y - 1], [x])
+        False
+    """
+    names = {str(b) for b in bound}
+    others = sorted({v for e in equations for v in SR(e).variables()
+                     if str(v) not in names}, key=str)
+    if T is not None and any(T.is_angle(u) for u in T.unknowns() if u in others):
+        return True
+    at = {v: QQ(randint(2, 97)) for v in others}
+    try:
+        S = Translation([SR(e).subs(at) for e in equations], bound)
+        I = S.ring().ideal(S.equations())
+        dimension = I.dimension()
+        if dimension < 0:       # the symbolic solve decides
+            return True
+        if dimension > 0:
+            return False
+        sets = triangular_sets(I)
+    except (AnalysisError, ArithmeticError, ValueError, TypeError):
+        return True
+    return all(t.degree(v) <= 2 for tri in sets for t in tri for v in t.variables())
 
 
 def _singular_locus_solutions(T, prime, dimension, counted, positive):
