@@ -239,9 +239,10 @@ def _gtz_or_characteristic_sets(J, budget):
     return [P.ideal(list(Q)) for Q in singular_function('minAssChar')(J)]
 
 
-def linear_substitutions(gens):
+def linear_substitutions(gens, variables=None):
     r"""
-    Eliminate the variables that a polynomial gives linearly: while some
+    Eliminate the variables (among ``variables``, default all) that a
+    polynomial gives linearly: while some
     generator is `c x + r` with `c` a nonzero constant (an element of the
     base field, so a unit) and `x` not in `r`, substitute `x = -r/c` into
     the other generators. The zero set of the generators is the graph of
@@ -249,7 +250,8 @@ def linear_substitutions(gens):
     the ideal are those of the rest with `x + r/c` added.
 
     OUTPUT: ``(rest, substitutions)``, the remaining nonzero generators and
-    the pairs ``(x, value)`` in the order of elimination
+    the pairs ``(x, value)`` in the order of elimination, each value in the
+    variables not eliminated
 
     EXAMPLES::
 
@@ -262,22 +264,30 @@ def linear_substitutions(gens):
 
         sage: linear_substitutions([y*x - 1])
         ([x*y - 1], [])
+        sage: linear_substitutions([x - y - z, y - z^2], variables=[x, y])
+        ([], [(y, z^2), (x, z^2 + z)])
     """
     gens, substitutions = list(gens), []
     while True:
-        found = _linear_generator(gens)
+        found = _linear_generator(gens, variables)
         if found is None:
-            return gens, substitutions
+            break
         g, x, value = found
         substitutions.append((x, value))
         gens = [h for h in (h.subs({x: value}) for h in gens if h is not g) if h != 0]
+    # a value may hold unknowns eliminated after it: substitute theirs
+    for k in reversed(range(len(substitutions))):
+        x, value = substitutions[k]
+        later = {y: v for y, v in substitutions[k + 1:]}
+        substitutions[k] = (x, value.subs(later) if later else value)
+    return gens, substitutions
 
 
-def _linear_generator(gens):
+def _linear_generator(gens, variables):
     # the fewest terms first: the substitution that swells least
     for g in sorted(gens, key=lambda g: len(g.monomials())):
         for x in g.variables():
-            if g.degree(x) == 1:
+            if (variables is None or x in variables) and g.degree(x) == 1:
                 c = g.coefficient({x: 1})
                 rest = g - c * x
                 if c.is_constant() and rest.degree(x) <= 0:

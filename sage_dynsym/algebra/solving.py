@@ -89,7 +89,8 @@ from ..arguments import expression_list
 from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
-from .decomposition import minimal_primes, shape, ShapePrime, triangular_sets
+from .decomposition import (minimal_primes, shape, ShapePrime, triangular_sets,
+                            linear_substitutions)
 from .translation import Translation, NotAlgebraic, translate_expressions
 
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
@@ -846,9 +847,9 @@ def _radicals_at_random_values(T, equations, bound):
 
         sage: from sage_dynsym.algebra.solving import _radicals_at_random_values
         sage: x, y, a = var('x y a')
-        sage: _radicals_at_random_values(None, [x^2 - a*y, y^2 - a], [x, y])
+        sage: _radicals_at_random_values(None, [x^2 - a*y, y - a], [x, y])
         True
-        sage: _radicals_at_random_values(None, [x^3 - a*y - 1], [x])
+        sage: _radicals_at_random_values(None, [x^3 + a*x + 1], [x])
         False
     """
     names = {str(b) for b in bound}
@@ -1154,7 +1155,7 @@ def _family(T, prime, free, counted, positive):
     blocks = [b for b, _ in blocks]
     names = [str(g) for b in blocks for g in b]
     Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
-    basis = Pb.ideal([Pb(g) for g in prime.gens()]).groebner_basis()
+    basis = _block_basis(Pb, [Pb(g) for g in prime.gens()], [Pb(str(g)) for g in upper])
     upper_b = [Pb(str(g)) for g in upper]
     middle_b = [Pb(str(g)) for g in middle]
     ring_values, relations, conditions = {}, [], []
@@ -1196,6 +1197,33 @@ def _family(T, prime, free, counted, positive):
                              relations, conditions,
                              reality_known=real is not None or not relations or
                              T.field() is QQ)
+
+
+def _block_basis(Pb, gens, upper):
+    r"""
+    A Gröbner basis of the ideal of ``gens`` in the block order of ``Pb``
+    whose first (lexicographic) block is ``upper``. Where generators give
+    every variable of ``upper`` linearly (the multipliers, usually), the
+    basis is the `x - v(\text{rest})` together with a basis of what
+    remains without them: their leading terms are the `x` alone, prime to
+    the others, so no S-polynomial is left -- and the (slow) basis over a
+    field of parameters is computed in the smaller ring only.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.solving import _block_basis
+        sage: P.<l, x, y> = PolynomialRing(QQ, order=TermOrder('lex', 1) + TermOrder('degrevlex', 2))
+        sage: _block_basis(P, [x*l - y + l, x^2 - y], [l])
+        [l*x + l - y, l*y - l - x*y + y, x^2 - y]
+        sage: _block_basis(P, [2*l - y + x, x^2 - y], [l])
+        [l + 1/2*x - 1/2*y, x^2 - y]
+    """
+    rest, substitutions = linear_substitutions(gens, variables=upper)
+    if len(substitutions) < len(upper):
+        return list(Pb.ideal(gens).groebner_basis())
+    basis = list(Pb.ideal(rest).groebner_basis()) if rest else []
+    reduced = [x - (Pb.ideal(basis).reduce(v) if basis else v) for x, v in substitutions]
+    return sorted(reduced, reverse=True) + basis
 
 
 def _multipliers_on_family(T, P, prime, elements, multipliers):
