@@ -1203,24 +1203,32 @@ def _block_basis(Pb, gens, upper):
     r"""
     A Gröbner basis of the ideal of ``gens`` in the block order of ``Pb``
     whose first (lexicographic) block is ``upper``. Where generators give
-    every variable of ``upper`` linearly (the multipliers, usually), the
-    basis is the `x - v(\text{rest})` together with a basis of what
-    remains without them: their leading terms are the `x` alone, prime to
-    the others, so no S-polynomial is left -- and the (slow) basis over a
-    field of parameters is computed in the smaller ring only.
+    the first variables of ``upper`` linearly (the multipliers, usually),
+    the basis is the `x - v` (`v` free of them) together with a basis of
+    what remains without them: the leading terms of the `x - v` are the
+    `x` alone, prime to the others, so no S-polynomial is left -- and the
+    (slow) basis over a field of parameters is computed without them.
 
     EXAMPLES::
 
         sage: from sage_dynsym.algebra.solving import _block_basis
-        sage: P.<l, x, y> = PolynomialRing(QQ, order=TermOrder('lex', 1) + TermOrder('degrevlex', 2))
-        sage: _block_basis(P, [x*l - y + l, x^2 - y], [l])
+        sage: P.<l, m, x, y> = PolynomialRing(QQ, order=TermOrder('lex', 2) + TermOrder('degrevlex', 2))
+        sage: _block_basis(P, [x*l - y + l, x^2 - y], [l, m])
         [l*x + l - y, l*y - l - x*y + y, x^2 - y]
-        sage: _block_basis(P, [2*l - y + x, x^2 - y], [l])
-        [l + 1/2*x - 1/2*y, x^2 - y]
+        sage: _block_basis(P, [2*l - y + x, x^2 - y, m*x - 1], [l, m])
+        [l + 1/2*x - 1/2*y, m*x - 1, m*y - x, x^2 - y]
+
+    A linear generator in a later multiplier only (``m``) is not used (its
+    value could hold ``l``)::
+
+        sage: _block_basis(P, [m - l*x, l^2 - y], [l, m])
+        [l^2 - y, l*m - x*y, l*x - m, m^2 - x^2*y]
     """
     rest, substitutions = linear_substitutions(gens, variables=upper)
-    if len(substitutions) < len(upper):
-        return list(Pb.ideal(gens).groebner_basis())
+    left = [v for v in upper if all(v != x for x, _ in substitutions)]
+    if substitutions and left and \
+            max(Pb.gens().index(x) for x, _ in substitutions) > Pb.gens().index(left[0]):
+        rest, substitutions = gens, []
     basis = list(Pb.ideal(rest).groebner_basis()) if rest else []
     reduced = [x - (Pb.ideal(basis).reduce(v) if basis else v) for x, v in substitutions]
     return sorted(reduced, reverse=True) + basis
