@@ -18,7 +18,7 @@ motion (by substitution).
 import numpy as np
 import pytest
 
-from sage.all import SR, var, vector, matrix
+from sage.all import SR, var, vector, matrix, identity_matrix
 
 from sage_dynsym.analysis.stationary import stationary_solutions
 
@@ -109,10 +109,15 @@ def brun():
     return [H, F, pv * pv, Mv * pv], X
 
 
-def stationarity(integrals, multipliers):
-    """dK/dx for K = H + sum lambda_j V_j, and the levels p.p = 1, M.p = 0."""
+def stationarity(integrals, multipliers, c=0):
+    """dK/dx for K = H + sum lambda_j V_j, and the levels p.p = 1, M.p = c."""
     K = integrals[0] + sum(l * V for l, V in zip(multipliers, integrals[1:]))
-    return [K.diff(x) for x in M + P] + [integrals[2] - 1, integrals[3]]
+    return [K.diff(x) for x in M + P] + [integrals[2] - 1, integrals[3] - c]
+
+
+def isolated_points(sols, subs):
+    return sorted(tuple(SR(s.point()[x]).subs(subs) for x in M + P)
+                  for s in sols if s.dimension() == 0)
 
 
 @pytest.mark.slow
@@ -124,11 +129,8 @@ def test_brun_stationary_set_symbolic_against_values():
                                   levels=[None, 1, 0])
     assert symbolic.is_complete() and direct.is_complete()
     # the same isolated points (the rest points p = +-e_i, M = 0)
-    def points(sols, subs):
-        return sorted(tuple(SR(s.point()[x]).subs(subs) for x in M + P)
-                      for s in sols if s.dimension() == 0)
-    assert points(symbolic, BRUN_VALUES) == points(direct, {})
-    assert len(points(direct, {})) == 6
+    assert isolated_points(symbolic, BRUN_VALUES) == isolated_points(direct, {})
+    assert len(isolated_points(direct, {})) == 6
     # every explicit family, at the values and random values of its free
     # unknowns, annuls the stationarity equations with its multipliers and
     # lies on a family of the direct solve (the same components: the
@@ -150,3 +152,33 @@ def test_brun_stationary_set_symbolic_against_values():
     # and the one implicit family of each
     assert sum(1 for s in symbolic if not s.is_explicit()) == 1
     assert sum(1 for s in direct if s.dimension() > 0) == 4
+
+
+@pytest.mark.slow
+def test_brun_stationary_set_on_a_nonzero_level():
+    """The level M.p = c with c symbolic: the same isolated points as the
+    direct solve at values (the permanent rotations M = c p, p = +-e_i),
+    each a solution of the stationarity equations with its multipliers, and
+    the same number of families."""
+    c = var('c')
+    values = dict(BRUN_VALUES, **{'c': SR(3) / 2})
+    values = {SR(k): v for k, v in values.items()}
+    integrals, X = brun()
+    symbolic = stationary_solutions(integrals, M + P, equations=X, levels=[None, 1, c])
+    at = [f.subs(values) for f in integrals]
+    direct = stationary_solutions(at, M + P, equations=[e.subs(values) for e in X],
+                                  levels=[None, 1, values[c]])
+    assert symbolic.is_complete() and direct.is_complete()
+    assert isolated_points(symbolic, values) == isolated_points(direct, {})
+    expected = sorted(tuple([values[c] * s * e for e in row] + [s * e for e in row])
+                      for row in identity_matrix(3).rows() for s in (1, -1))
+    assert isolated_points(direct, {}) == expected
+    for s in symbolic:
+        if s.dimension() == 0:
+            point = {x: SR(v).subs(values) for x, v in s.point().items()}
+            mult = {SR(k): SR(v).subs(values).subs(point) for k, v in s.multipliers().items()}
+            free = {k: SR(1) / 3 for k, v in mult.items() if v.is_symbol()}
+            for e in stationarity(at, list(mult), values[c]):
+                assert SR(e).subs(mult).subs(free).subs(point).simplify_full() == 0
+    assert sum(1 for s in symbolic if s.dimension() > 0) == \
+        sum(1 for s in direct if s.dimension() > 0)
