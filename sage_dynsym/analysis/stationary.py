@@ -1372,13 +1372,21 @@ def _within_budget(solve, budget):
         Traceback (most recent call last):
         ...
         AnalysisError: budget: the stationary set was not found within 1 s; give the parameters values, or a larger budget (budget=None waits)
+
+    An error of the solving is raised as it is::
+
+        sage: _within_budget(lambda: 1/0, 60)
+        Traceback (most recent call last):
+        ...
+        ZeroDivisionError: rational division by zero
     """
     from sage.parallel.decorate import fork
 
     def child():
+        # an error is passed back to be raised here, not taken for a timeout
         try:
             return ('found', solve())
-        except DynSymError as err:
+        except Exception as err:
             return ('error', err)
     result = fork(child, timeout=budget)()
     if not isinstance(result, tuple):       # 'NO DATA (timed out)' and the like
