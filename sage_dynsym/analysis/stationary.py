@@ -1386,7 +1386,7 @@ def _within_budget(solve, budget):
         # an error is passed back to be raised here, not taken for a timeout
         try:
             return ('found', solve())
-        except Exception as err:
+        except (DynSymError, ArithmeticError, RuntimeError, ValueError, TypeError) as err:
             return ('error', err)
     result = fork(child, timeout=budget)()
     if not isinstance(result, tuple):       # 'NO DATA (timed out)' and the like
