@@ -207,7 +207,9 @@ def positive_dimensional_primes(J, budget=None):
     back = [x - value for x, value in substitutions]
     if not used:
         return [P.ideal(back)] if all(g == 0 for g in gens) else []
-    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used), order=P.term_order())
+    # a block order does not fit fewer variables
+    order = 'degrevlex' if P.term_order().is_block_order() else P.term_order()
+    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used), order=order)
     Js = S.ideal([S(g) for g in gens])
     primes = None
     if P.base_ring() is not QQ and prime_by_specialization(Js):
