@@ -18,7 +18,7 @@ motion (by substitution).
 import numpy as np
 import pytest
 
-from sage.all import SR, var, vector, matrix
+from sage.all import SR, var, vector, matrix, identity_matrix
 
 from sage_dynsym.analysis.stationary import stationary_solutions
 
@@ -84,3 +84,101 @@ def test_generic_kirchhoff_stationary_set():
     zero = {x: 0 for x in M + P}
     assert any(s.is_explicit() and all(SR(v).subs(zero) == 0 for v in s.point().values())
                for s in sols)
+
+
+# Brun's problem: a rigid body with a fixed point in a quadratic potential on
+# e(3)* (p the unit vertical), H = (M.A M)/2 + epsilon/2 (p.A^{-1} p), with the
+# extra integral F = (M.M)/2 - epsilon/(2 a1 a2 a3) (p.A p) (the Clebsch case
+# of Kirchhoff's equations, c_i = epsilon/a_i; Borisov & Mamaev, Rigid Body
+# Dynamics, 2018). Its stationary set on the level M.p = 0, p.p = 1, with
+# symbolic a_i and epsilon, specialized at rational values, against the
+# direct solve at those values and against the stationarity equations.
+
+a = list(var('a1 a2 a3'))
+epsilon = var('epsilon')
+BRUN_VALUES = {a[0]: 2, a[1]: 3, a[2]: 7, epsilon: SR(5) / 3}
+
+
+def brun():
+    Mv, pv = vector(SR, M), vector(SR, P)
+    H = sum(a[i] * M[i]**2 + epsilon * P[i]**2 / a[i] for i in range(3)) / 2
+    F = (Mv * Mv - epsilon * sum(a[i] * P[i]**2 for i in range(3)) / (a[0] * a[1] * a[2])) / 2
+    w = vector(SR, [H.diff(x) for x in M])
+    u = vector(SR, [H.diff(x) for x in P])
+    X = list(Mv.cross_product(w) + pv.cross_product(u)) + list(pv.cross_product(w))
+    return [H, F, pv * pv, Mv * pv], X
+
+
+def stationarity(integrals, multipliers, c=0):
+    """dK/dx for K = H + sum lambda_j V_j, and the levels p.p = 1, M.p = c."""
+    K = integrals[0] + sum(l * V for l, V in zip(multipliers, integrals[1:]))
+    return [K.diff(x) for x in M + P] + [integrals[2] - 1, integrals[3] - c]
+
+
+def isolated_points(sols, subs):
+    return sorted(tuple(SR(s.point()[x]).subs(subs) for x in M + P)
+                  for s in sols if s.dimension() == 0)
+
+
+@pytest.mark.slow
+def test_brun_stationary_set_symbolic_against_values():
+    integrals, X = brun()
+    symbolic = stationary_solutions(integrals, M + P, equations=X, levels=[None, 1, 0])
+    at = [f.subs(BRUN_VALUES) for f in integrals]
+    direct = stationary_solutions(at, M + P, equations=[e.subs(BRUN_VALUES) for e in X],
+                                  levels=[None, 1, 0])
+    assert symbolic.is_complete() and direct.is_complete()
+    # the same isolated points (the rest points p = +-e_i, M = 0)
+    assert isolated_points(symbolic, BRUN_VALUES) == isolated_points(direct, {})
+    assert len(isolated_points(direct, {})) == 6
+    # every explicit family, at the values and random values of its free
+    # unknowns, annuls the stationarity equations with its multipliers and
+    # lies on a family of the direct solve (the same components: the
+    # symbolic solve splits a family into its branches p3 = +-sqrt(...))
+    families = [s for s in direct if s.dimension() > 0]
+    rng = np.random.default_rng(1)
+    explicit = [s for s in symbolic if s.is_explicit() and s.dimension() > 0]
+    assert len(explicit) == 6
+    for s in explicit:
+        free = {x: SR(float(rng.uniform(-0.9, 0.9))) for x in M + P
+                if str(s.point()[x]) == str(x)}
+        point = {x: SR(v).subs(BRUN_VALUES).subs(free) for x, v in s.point().items()}
+        mult = {SR(k): SR(v).subs(BRUN_VALUES).subs(point) for k, v in s.multipliers().items()}
+        for e in stationarity(at, list(mult)):
+            value = complex(SR(e).subs(mult).subs(point))
+            assert abs(value) < 1e-9, (s, e, value)
+        assert any(all(abs(complex(SR(e).subs(mult).subs(point))) < 1e-9 for e in d.equations())
+                   for d in families), s
+    # and the one implicit family of each
+    assert sum(1 for s in symbolic if not s.is_explicit()) == 1
+    assert sum(1 for s in direct if s.dimension() > 0) == 4
+
+
+@pytest.mark.slow
+def test_brun_stationary_set_on_a_nonzero_level():
+    """The level M.p = c with c symbolic: the same isolated points as the
+    direct solve at values (the permanent rotations M = c p, p = +-e_i),
+    each a solution of the stationarity equations with its multipliers, and
+    the same number of families."""
+    c = var('c')
+    values = dict(BRUN_VALUES, **{'c': SR(3) / 2})
+    values = {SR(k): v for k, v in values.items()}
+    integrals, X = brun()
+    symbolic = stationary_solutions(integrals, M + P, equations=X, levels=[None, 1, c])
+    at = [f.subs(values) for f in integrals]
+    direct = stationary_solutions(at, M + P, equations=[e.subs(values) for e in X],
+                                  levels=[None, 1, values[c]])
+    assert symbolic.is_complete() and direct.is_complete()
+    assert isolated_points(symbolic, values) == isolated_points(direct, {})
+    expected = sorted(tuple([values[c] * s * e for e in row] + [s * e for e in row])
+                      for row in identity_matrix(3).rows() for s in (1, -1))
+    assert isolated_points(direct, {}) == expected
+    for s in symbolic:
+        if s.dimension() == 0:
+            point = {x: SR(v).subs(values) for x, v in s.point().items()}
+            mult = {SR(k): SR(v).subs(values).subs(point) for k, v in s.multipliers().items()}
+            free = {k: SR(1) / 3 for k, v in mult.items() if v.is_symbol()}
+            for e in stationarity(at, list(mult), values[c]):
+                assert SR(e).subs(mult).subs(free).subs(point).simplify_full() == 0
+    assert sum(1 for s in symbolic if s.dimension() > 0) == \
+        sum(1 for s in direct if s.dimension() > 0)

@@ -59,9 +59,11 @@ from sage.modules.free_module_element import vector
 from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.rational_field import QQ
 
-__all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'positive_dimensional_primes', 'minimal_primes', 'separating_form',
-           'ShapePrime', 'triangular_sets', 'shape']
+__all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
+           'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
+           'minimal_primes', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
 
 #: Attempts at a separating linear form before giving up on the shortcut.
 SEPARATING_ATTEMPTS = 8
@@ -73,6 +75,10 @@ SMALL_DEGREE = 4
 #: Seconds given to Gianni--Trager--Zacharias on a positive-dimensional part
 #: before the characteristic sets are tried instead.
 GTZ_BUDGET = 10
+
+#: Random rational values of the parameters at which a part must be prime
+#: to be taken as prime (:func:`prime_by_specialization`).
+SPECIALIZATIONS = 2
 
 
 def _log(message):
@@ -149,8 +155,13 @@ def minimal_primes(I, shapes=False, split_points=True):
 
 def positive_dimensional_primes(J, budget=None):
     r"""
-    The minimal associated primes of ``J`` by Singular's ``minAssGTZ``
-    within ``budget`` seconds, else by ``minAssChar``.
+    The minimal associated primes of ``J``: the unknowns that a generator
+    gives linearly (:func:`linear_substitutions`) are eliminated first and
+    the rest is decomposed in the ring of the remaining variables, where
+    over a field of parameters a part that is prime at random rational
+    values of the parameters is taken as prime (:func:`prime_by_specialization`);
+    otherwise by Singular's ``minAssGTZ`` within ``budget`` seconds, else
+    by ``minAssChar``.
 
     An alarm already set by the caller (Sage's ``alarm``) is kept: with
     ``budget`` seconds or less left it decides alone, otherwise it is set
@@ -172,15 +183,46 @@ def positive_dimensional_primes(J, budget=None):
         [Ideal (x) of Multivariate Polynomial Ring in x, y, z over Rational Field,
          Ideal (z, y) of Multivariate Polynomial Ring in x, y, z over Rational Field]
 
+    A variable given linearly is eliminated, the rest decomposed, the
+    substitution added to each prime::
+
+        sage: J = R.ideal([z - x*y - 1, x*y*(x - y)])
+        sage: sorted((Q.groebner_basis() for Q in positive_dimensional_primes(J)), key=str)
+        [[x, z - 1], [y, z - 1], [y^2 - z + 1, x - y]]
+
     TESTS:
 
     With no time for ``minAssGTZ``, the characteristic sets give the same
     components::
 
+        sage: J = R.ideal([x*y, x*z])
         sage: sorted((Q.groebner_basis() for Q in positive_dimensional_primes(J, budget=0)), key=str)
         [[x], [y, z]]
     """
-    budget = GTZ_BUDGET if budget is None else budget
+    P = J.ring()
+    gens, substitutions = linear_substitutions([g for g in J.gens() if g != 0])
+    if substitutions:
+        _log(f"{len(substitutions)} unknowns given linearly: eliminated")
+    used = sorted({v for g in gens for v in g.variables()}, key=P.gens().index)
+    back = [x - value for x, value in substitutions]
+    if not used:
+        return [P.ideal(back)] if all(g == 0 for g in gens) else []
+    # a block order does not fit fewer variables
+    order = 'degrevlex' if P.term_order().is_block_order() else P.term_order()
+    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used), order=order)
+    Js = S.ideal([S(g) for g in gens])
+    primes = None
+    if P.base_ring() is not QQ and prime_by_specialization(Js):
+        _log("prime at random values of the parameters: taken as prime")
+        primes = [Js]
+    if primes is None:
+        primes = _gtz_or_characteristic_sets(Js, GTZ_BUDGET if budget is None else budget)
+    return [P.ideal([P(g) for g in Q.gens()] + back) for Q in primes]
+
+
+def _gtz_or_characteristic_sets(J, budget):
+    r"""``minAssGTZ`` within ``budget`` seconds (an alarm of the caller
+    kept), else ``minAssChar``."""
     outer = signal.getitimer(signal.ITIMER_REAL)[0]
     if outer and outer <= budget:
         return J.minimal_associated_primes()
@@ -197,6 +239,117 @@ def positive_dimensional_primes(J, budget=None):
     singular_lib('primdec.lib')
     P = J.ring()
     return [P.ideal(list(Q)) for Q in singular_function('minAssChar')(J)]
+
+
+def linear_substitutions(gens, variables=None):
+    r"""
+    Eliminate the variables (among ``variables``, default all) that a
+    polynomial gives linearly: while some
+    generator is `c x + r` with `c` a nonzero constant (an element of the
+    base field, so a unit) and `x` not in `r`, substitute `x = -r/c` into
+    the other generators. The zero set of the generators is the graph of
+    the substitutions over the zero set of what remains, so the primes of
+    the ideal are those of the rest with `x + r/c` added.
+
+    OUTPUT: ``(rest, substitutions)``, the remaining nonzero generators and
+    the pairs ``(x, value)`` in the order of elimination, each value in the
+    variables not eliminated
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import linear_substitutions
+        sage: R.<x, y, z> = QQ[]
+        sage: linear_substitutions([2*x - y^2, x*z - 1, y*z])
+        ([1/2*y^2*z - 1, y*z], [(x, 1/2*y^2)])
+
+    A coefficient that is not constant is not divided by::
+
+        sage: linear_substitutions([y*x - 1])
+        ([x*y - 1], [])
+        sage: linear_substitutions([x - y - z, y - z^2], variables=[x, y])
+        ([], [(y, z^2), (x, z^2 + z)])
+    """
+    gens, substitutions = list(gens), []
+    while True:
+        found = _linear_generator(gens, variables)
+        if found is None:
+            break
+        g, x, value = found
+        substitutions.append((x, value))
+        gens = [h for h in (h.subs({x: value}) for h in gens if h is not g) if h != 0]
+    # a value may hold unknowns eliminated after it: substitute theirs
+    for k in reversed(range(len(substitutions))):
+        x, value = substitutions[k]
+        later = {y: v for y, v in substitutions[k + 1:]}
+        substitutions[k] = (x, value.subs(later) if later else value)
+    return gens, substitutions
+
+
+def _linear_generator(gens, variables):
+    # the fewest terms first: the substitution that swells least
+    for g in sorted(gens, key=lambda g: len(g.monomials())):
+        for x in g.variables():
+            if (variables is None or x in variables) and g.degree(x) == 1:
+                c = g.coefficient({x: 1})
+                rest = g - c * x
+                if c.is_constant() and rest.degree(x) <= 0:
+                    return g, x, -rest / c.constant_coefficient()
+    return None
+
+
+def prime_by_specialization(J, attempts=SPECIALIZATIONS):
+    r"""
+    Whether the ideal ``J`` over a field of rational functions in parameters
+    is prime, decided at random rational values of the parameters: true if
+    at ``attempts`` random values the specialized ideal equals its only
+    minimal associated prime (Singular's ``minAssChar``) and keeps the
+    dimension of ``J``.
+
+    A decomposition over `\QQ(\text{parameters})` is far slower than over
+    `\QQ`; if ``J`` were not prime, or not radical, so would be its
+    specialization at all values outside a proper algebraic subset of the
+    parameter space, which random values avoid with probability one (the
+    specializations of a modular method). ``False`` means undecided: the
+    caller decomposes ``J`` itself.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import prime_by_specialization
+        sage: K = Frac(QQ['a']); a = K.gen()
+        sage: R.<x, y> = K[]
+        sage: prime_by_specialization(R.ideal([x^2 - a*y^3]))
+        True
+        sage: prime_by_specialization(R.ideal([x^2 - a^2*y^2]))
+        False
+    """
+    P = J.ring()
+    K = P.base_ring()
+    try:
+        base = K.ring()
+    except AttributeError:
+        return False
+    dimension = J.dimension()
+    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+    singular_lib('primdec.lib')
+    for _ in range(attempts):
+        values = [QQ(randint(2, 97)) for _ in base.gens()]
+        try:
+            Js = Pq.ideal([Pq({e: _specialize(c, values) for e, c in g.dict().items()})
+                           for g in J.gens()])
+        except ZeroDivisionError:
+            return False
+        primes = [Pq.ideal(list(Q)) for Q in singular_function('minAssChar')(Js)]
+        if len(primes) != 1 or Js.dimension() != dimension or \
+                any(Js.reduce(g) != 0 for g in primes[0].gens()):
+            return False
+    return True
+
+
+def _specialize(c, values):
+    den = c.denominator()(values)
+    if den == 0:
+        raise ZeroDivisionError
+    return c.numerator()(values) / den
 
 
 def _contains(Q, R):

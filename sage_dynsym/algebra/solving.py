@@ -83,6 +83,7 @@ TESTS::
 """
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
+from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.term_order import TermOrder
@@ -96,7 +97,8 @@ from ..arguments import expression_list
 from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
-from .decomposition import minimal_primes, shape, ShapePrime, triangular_sets
+from .decomposition import (minimal_primes, shape, ShapePrime, triangular_sets,
+                            linear_substitutions)
 from .translation import Translation, NotAlgebraic, translate_expressions
 
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
@@ -872,6 +874,9 @@ def _branches(T, family, positive):
     bound = [i for i in range(len(unknowns)) if i not in free and i not in family._values]
     if not bound or any(T.is_angle(unknowns[i]) for i in bound):
         return [family]
+    if not _radicals_at_random_values(T, family.equations(), [unknowns[i] for i in bound]):
+        _log("a branch needs a step of degree above 2 at random values: kept implicit")
+        return [family]
     try:
         found = solve_exactly([SR(e).numerator() for e in family.equations()],
                               [unknowns[i] for i in bound], positive=positive)
@@ -1004,6 +1009,47 @@ def _qe_family(T, family, positive):
     return AlgebraicSolution(T, family._prime, family._free, family._counted,
                              dict(family._values), dict(family._ring_values),
                              family._relations, conditions)
+
+
+def _radicals_at_random_values(T, equations, bound):
+    r"""
+    Whether the ``equations``, solved for the unknowns ``bound`` at random
+    rational values of every other symbol, have finitely many solutions
+    along triangular sets with steps of degree at most 2 (what
+    :func:`_solve_triangular` writes with radicals). A specialization only
+    splits factors, and the dimension only grows at special values, so
+    infinitely many solutions or a step of larger degree there is the same
+    for the symbols too (with probability one): the symbolic solve (far
+    slower) would not give radicals either. ``True`` when it cannot be
+    tried (angles among the symbols) or no solution is found there.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.solving import _radicals_at_random_values
+        sage: x, y, a = var('x y a')
+        sage: _radicals_at_random_values(None, [x^2 - a*y, y - a], [x, y])
+        True
+        sage: _radicals_at_random_values(None, [x^3 + a*x + 1], [x])
+        False
+    """
+    names = {str(b) for b in bound}
+    others = sorted({v for e in equations for v in SR(e).variables()
+                     if str(v) not in names}, key=str)
+    if T is not None and any(T.is_angle(u) for u in T.unknowns() if u in others):
+        return True
+    at = {v: QQ(randint(2, 97)) for v in others}
+    try:
+        S = Translation([SR(e).subs(at) for e in equations], bound)
+        I = S.ring().ideal(S.equations())
+        dimension = I.dimension()
+        if dimension < 0:       # the symbolic solve decides
+            return True
+        if dimension > 0:
+            return False
+        sets = triangular_sets(I)
+    except (AnalysisError, ArithmeticError, ValueError, TypeError):
+        return True
+    return all(t.degree(v) <= 2 for tri in sets for t in tri for v in t.variables())
 
 
 def _singular_locus_solutions(T, prime, dimension, counted, positive):
@@ -1289,7 +1335,7 @@ def _family(T, prime, free, counted, positive):
     blocks = [b for b, _ in blocks]
     names = [str(g) for b in blocks for g in b]
     Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
-    basis = Pb.ideal([Pb(g) for g in prime.gens()]).groebner_basis()
+    basis = _block_basis(Pb, [Pb(g) for g in prime.gens()], [Pb(str(g)) for g in upper])
     upper_b = [Pb(str(g)) for g in upper]
     middle_b = [Pb(str(g)) for g in middle]
     ring_values, relations, conditions = {}, [], []
@@ -1331,6 +1377,41 @@ def _family(T, prime, free, counted, positive):
                              relations, conditions,
                              reality_known=real is not None or not relations or
                              T.field() is QQ)
+
+
+def _block_basis(Pb, gens, upper):
+    r"""
+    A Gröbner basis of the ideal of ``gens`` in the block order of ``Pb``
+    whose first (lexicographic) block is ``upper``. Where generators give
+    the first variables of ``upper`` linearly (the multipliers, usually),
+    the basis is the `x - v` (`v` free of them) together with a basis of
+    what remains without them: the leading terms of the `x - v` are the
+    `x` alone, prime to the others, so no S-polynomial is left -- and the
+    (slow) basis over a field of parameters is computed without them.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.solving import _block_basis
+        sage: P.<l, m, x, y> = PolynomialRing(QQ, order=TermOrder('lex', 2) + TermOrder('degrevlex', 2))
+        sage: _block_basis(P, [x*l - y + l, x^2 - y], [l, m])
+        [l*x + l - y, l*y - l - x*y + y, x^2 - y]
+        sage: _block_basis(P, [2*l - y + x, x^2 - y, m*x - 1], [l, m])
+        [l + 1/2*x - 1/2*y, m*x - 1, m*y - x, x^2 - y]
+
+    A linear generator in a later multiplier only (``m``) is not used (its
+    value could hold ``l``)::
+
+        sage: _block_basis(P, [m - l*x, l^2 - y], [l, m])
+        [l^2 - y, l*m - x*y, l*x - m, m^2 - x^2*y]
+    """
+    rest, substitutions = linear_substitutions(gens, variables=upper)
+    left = [v for v in upper if all(v != x for x, _ in substitutions)]
+    if substitutions and left and \
+            max(Pb.gens().index(x) for x, _ in substitutions) > Pb.gens().index(left[0]):
+        rest, substitutions = gens, []
+    basis = list(Pb.ideal(rest).groebner_basis()) if rest else []
+    reduced = [x - (Pb.ideal(basis).reduce(v) if basis else v) for x, v in substitutions]
+    return sorted(reduced, reverse=True) + basis
 
 
 def _multipliers_on_family(T, P, prime, elements, multipliers):

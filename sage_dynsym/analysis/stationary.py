@@ -1452,19 +1452,65 @@ def solve_stationary(problem, chart=None, regular=None):
     return stationary_solutions(problem, chart=chart, regular=regular)
 
 
-def _solved(problem, chart=None, regular=None):
+def _solved(problem, chart=None, regular=None, budget=None):
     # the equations of the problem solved exactly (Maxima's solve the
     # fallback for transcendental equations), the dimensions counted in the
     # unknowns that are not multipliers
-    found = solve_exactly(problem.equations, problem.unknowns,
-                          counted=problem.solved_variables(), positive=problem.positive,
-                          extra=[problem.function] + list(problem.rhs or []),
-                          transcendental=True)
+    def solve():
+        return solve_exactly(problem.equations, problem.unknowns,
+                             counted=problem.solved_variables(), positive=problem.positive,
+                             extra=[problem.function] + list(problem.rhs or []),
+                             transcendental=True)
+    found = solve() if budget is None else _within_budget(solve, budget)
     return StationarySolutions(problem, found, chart, regular)
 
 
+def _within_budget(solve, budget):
+    r"""
+    ``solve()`` in a forked process stopped after ``budget`` seconds: a
+    Singular computation interrupted in this process could leave Singular's
+    interpreter without a ring, a killed child leaves nothing behind. Over
+    the budget, an :class:`~sage_dynsym.errors.AnalysisError` says so (no
+    partial result is passed off as the answer).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.stationary import _within_budget
+        sage: _within_budget(lambda: 1 + 1, 60)
+        2
+        sage: _within_budget(lambda: sleep(5), 1)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: budget: the stationary set was not found within 1 s; give the parameters values, or a larger budget (budget=None waits)
+
+    An error of the solving is raised as it is::
+
+        sage: _within_budget(lambda: 1/0, 60)
+        Traceback (most recent call last):
+        ...
+        ZeroDivisionError: rational division by zero
+    """
+    from sage.parallel.decorate import fork
+
+    def child():
+        # an error is passed back to be raised here, not taken for a timeout
+        try:
+            return ('found', solve())
+        except (DynSymError, ArithmeticError, RuntimeError, ValueError, TypeError) as err:
+            return ('error', err)
+    result = fork(child, timeout=budget)()
+    if not isinstance(result, tuple):       # 'NO DATA (timed out)' and the like
+        raise AnalysisError(f"the stationary set was not found within {budget} s; give "
+                            "the parameters values, or a larger budget (budget=None waits)",
+                            entry="budget")
+    if result[0] == 'error':
+        raise result[1]
+    return result[1]
+
+
 def stationary_solutions(integrals, variables=None, equations=None, multipliers=None,
-                         levels=None, positive=(), solve_for=None, chart=None, regular=None):
+                         levels=None, positive=(), solve_for=None, chart=None, regular=None,
+                         budget=None):
     r"""
     Routh--Lyapunov: stationary solutions as conditional extrema of the
     first integrals, computed exactly (see the module documentation). The
@@ -1499,6 +1545,9 @@ def stationary_solutions(integrals, variables=None, equations=None, multipliers=
       space whose coordinates are the variables, and the same solutions in
       a chart regular on its singular set: the solutions are then listed as
       points of the configuration space (:meth:`StationarySolutions.in_chart`)
+    - ``budget`` -- (optional) seconds: the solving runs in a forked process
+      stopped after that time, and raises an
+      :class:`~sage_dynsym.errors.AnalysisError` saying so
 
     OUTPUT: a :class:`StationarySolutions`; iterate over it for the
     :class:`StationarySolution` objects
@@ -1555,14 +1604,14 @@ def stationary_solutions(integrals, variables=None, equations=None, multipliers=
         AnalysisError: solve_exactly: the equations are not algebraic in x (x occurs both inside and outside trigonometric functions) and Maxima's solve could not solve them: [-x*sin(x) + cos(x)]
     """
     if isinstance(integrals, StationaryProblem):
-        return _solved(integrals, chart, regular)
+        return _solved(integrals, chart, regular, budget)
     if isinstance(equations_of_motion(integrals), SecondOrderEquations):
         if (variables, equations, multipliers, levels) != (None,) * 4:
             raise AnalysisError("variables, equations, multipliers and levels are for "
                                 "integrals; the stationary motions of a Routh function or "
                                 "Lagrangian take solve_for= and positive= only",
                                 entry="stationary_solutions")
-        return _solved(_motions_problem(integrals, solve_for, positive), chart, regular)
+        return _solved(_motions_problem(integrals, solve_for, positive), chart, regular, budget)
     if variables is None:
         raise AnalysisError("the phase variables are needed with integrals: "
                             "stationary_solutions(integrals, variables)",
@@ -1604,7 +1653,8 @@ def stationary_solutions(integrals, variables=None, equations=None, multipliers=
 
     return _solved(StationaryProblem(
         K, variables, unknowns, multipliers, system, integrals=integrals,
-        linear=None if rhs is None else linear, rhs=rhs, positive=positive), chart, regular)
+        linear=None if rhs is None else linear, rhs=rhs, positive=positive), chart, regular,
+        budget)
 
 
 def stationary_motions(routh_or_lagrangian, solve_for=None, positive=(), chart=None,
