@@ -81,6 +81,8 @@ TESTS::
     sage: [s.values() for s in solve_exactly([x^2 - 2], [x])]
     [{x: -sqrt(2)}, {x: sqrt(2)}]
 """
+import operator
+
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
@@ -753,13 +755,15 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     _log("decomposing into irreducible components")
     primes = minimal_primes(I, shapes=True, split_points=T.field() is QQ)
     _log(f"{len(primes)} components")
+    found = [s for prime, sh in primes for s in _solve_component(T, prime, sh, counted_set,
+                                                                 positive)]
+    found += _excluded_parts(T, [prime for prime, _ in primes], found, counted_set, positive)
     solutions, seen = [], set()
-    for prime, sh in primes:
-        for s in _solve_component(T, prime, sh, counted_set, positive):
-            key = str(s.values()) if s.is_explicit() and not s._free else None
-            if key is None or key not in seen:     # parts of facstd may overlap
-                seen.add(key)
-                solutions.append(s)
+    for s in found:
+        key = str(s.values()) if s.is_explicit() and not s._free else None
+        if key is None or key not in seen:     # parts of facstd may overlap
+            seen.add(key)
+            solutions.append(s)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
 
@@ -786,6 +790,51 @@ def _sort_key(s):
 # ---------------------------------------------------------------------------
 # one component
 # ---------------------------------------------------------------------------
+
+def _excluded_parts(T, known, solutions, counted, positive):
+    r"""
+    The solutions on the points of a component that the conditions
+    `u \ne 0` of its solutions exclude (a denominator of a value or of a
+    multiplier, containing unknowns, vanishes there): each such part, the
+    component with `u = 0` added, is solved as a further case -- unless it
+    lies on another component (in ``known``, or found here), whose
+    solutions and their own excluded parts list its points.
+
+    EXAMPLES: `x z = y` over `(x, y)` is `z = y/x` for `x \ne 0`; the line
+    `x = y = 0` is a further solution::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, z = var('x y z')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z])]
+        [({x: 0, y: 0, z: z}, []), ({x: x, y: y, z: y/x}, [x != 0])]
+    """
+    known, todo, found = list(known), list(solutions), []
+    unknowns = T.unknowns()
+    while todo:
+        s = todo.pop()
+        P = s._prime
+        for c in s._conditions:
+            lhs = SR(c.lhs())
+            if c.operator() is not operator.ne or not any(lhs.has(u) for u in unknowns):
+                continue
+            d = T.numerator(lhs)[0]
+            J = P.ring().ideal(list(P.gens()) + [d])
+            for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
+                if any(_contains(Q, K) and not _contains(P, K) for K in known):
+                    continue
+                known.append(Q)
+                new = _solve_component(T, Q, sh, counted, positive)
+                found += new
+                todo += new
+    return found
+
+
+def _contains(Q, K):
+    r"""Whether the ideal ``Q`` contains ``K`` (``False`` for a
+    :class:`~sage_dynsym.algebra.decomposition.ShapePrime` ``K``, whose
+    generators are not the prime's)."""
+    return not isinstance(K, ShapePrime) and all(Q.reduce(g) == 0 for g in K.gens())
+
 
 def _unit_generators(T, i):
     return T.generators_of(T.unknowns()[i])
