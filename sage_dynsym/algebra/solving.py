@@ -793,31 +793,35 @@ def _sort_key(s):
 
 def _excluded_parts(T, known, solutions, counted, positive):
     r"""
-    The solutions on the points of a component that the conditions
-    `u \ne 0` of its solutions exclude (a denominator of a value or of a
-    multiplier, containing unknowns, vanishes there): each such part, the
-    component with `u = 0` added, is solved as a further case -- unless it
-    lies on another component (in ``known``, or found here), whose
+    The solutions on the points of a component that the strict conditions
+    of its solutions on unknowns exclude: where a denominator of a value or
+    of a multiplier vanishes (`u \ne 0`), where the radicand of two
+    branches vanishes (`D > 0`: the branches meet there). Each such part,
+    the component with `u = 0` added, is solved as a further case -- unless
+    it lies on another component (in ``known``, or found here), whose
     solutions and their own excluded parts list its points.
 
     EXAMPLES: `x z = y` over `(x, y)` is `z = y/x` for `x \ne 0`; the line
-    `x = y = 0` is a further solution::
+    `x = y = 0` is a further solution. The branches
+    `y = x \pm \sqrt{x^2 - a}` of `y^2 - 2 x y + a = 0`, `y z = 1` meet
+    at the points `x = y = \pm\sqrt{a}`::
 
         sage: from sage_dynsym.algebra.solving import solve_exactly
-        sage: x, y, z = var('x y z')
+        sage: x, y, z, a = var('x y z a')
         sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z])]
         [({x: 0, y: 0, z: z}, []), ({x: x, y: y, z: y/x}, [x != 0])]
+        sage: [s.values() for s in solve_exactly([y^2 - 2*x*y + a, y*z - 1], [x, y, z])
+        ....:  if not s.dimension()]
+        [{x: sqrt(a), y: sqrt(a), z: 1/sqrt(a)}, {x: -sqrt(a), y: -sqrt(a), z: -1/sqrt(a)}]
     """
-    known, todo, found = list(known), list(solutions), []
-    unknowns = T.unknowns()
+    known, todo, found, done = list(known), list(solutions), [], set()
     while todo:
         s = todo.pop()
         P = s._prime
-        for c in s._conditions:
-            lhs = SR(c.lhs())
-            if c.operator() is not operator.ne or not any(lhs.has(u) for u in unknowns):
+        for d in _excluded_by(T, s):
+            if (id(P), d) in done or P.reduce(d) == 0:
                 continue
-            d = T.numerator(lhs)[0]
+            done.add((id(P), d))
             J = P.ring().ideal(list(P.gens()) + [d])
             for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
                 if any(_contains(Q, K) and not _contains(P, K) for K in known):
@@ -827,6 +831,18 @@ def _excluded_parts(T, known, solutions, counted, positive):
                 found += new
                 todo += new
     return found
+
+
+def _excluded_by(T, solution):
+    r"""The polynomials whose zero sets the strict conditions of the
+    solution on unknowns exclude (their numerators and denominators)."""
+    unknowns = T.unknowns()
+    for c in solution._conditions:
+        lhs = SR(c.lhs() - c.rhs())
+        if c.operator() in (operator.ne, operator.gt, operator.lt) and \
+                any(lhs.has(u) for u in unknowns):
+            num, dens = T.numerator(lhs)
+            yield from [num] + dens
 
 
 def _contains(Q, K):
