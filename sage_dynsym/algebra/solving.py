@@ -496,6 +496,15 @@ class AlgebraicSolution(SageObject):
             sage: s = solve_exactly([y^3 - 3*y - x, z^2 - a], [x, y, z])[0]
             sage: s.is_explicit(), s.conditions()
             (True, [a > 0])
+
+        Conditions on unknowns describe this parametrization of its
+        component: the points of the component where they fail (a
+        denominator or a radicand vanishes) are listed in other solutions.
+        `x z = y` is `z = y/x` where `x \ne 0`; its points with `x = 0`
+        are the line `x = y = 0`::
+
+            sage: [(t.values(), t.conditions()) for t in solve_exactly([x*z - y], [x, y, z])]
+            [({x: 0, y: 0, z: z}, []), ({x: x, y: y, z: y/x}, [x != 0])]
         """
         return list(self._conditions)
 
