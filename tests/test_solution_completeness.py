@@ -197,7 +197,9 @@ def test_brun_problem(with_integral):
 def test_clebsch_case():
     # Kirchhoff's equations in Clebsch's case, H = (sum a_i M_i^2 + theta
     # a_j a_k p_i^2)/2 with a = (1, 2, 4), theta = 1 (the momenta named
-    # g1, g2, g3 here)
+    # g1, g2, g3 here): the rotations M_i = +-sqrt(8) p_i/a_i with p3 = 0
+    # were lost behind the condition p3 != 0 of the 3-parameter family
+    # (its multiplier l2 = -4 M3/p3)
     A, theta = [1, 2, 4], 1
     b = [theta * A[1] * A[2], theta * A[0] * A[2], theta * A[0] * A[1]]
     H = sum(A[i] * M[i]**2 + b[i] * G[i]**2 for i in range(3)) / 2
