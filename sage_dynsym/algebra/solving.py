@@ -81,6 +81,8 @@ TESTS::
     sage: [s.values() for s in solve_exactly([x^2 - 2], [x])]
     [{x: -sqrt(2)}, {x: sqrt(2)}]
 """
+import operator
+
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
 from sage.misc.prandom import randint
@@ -496,6 +498,15 @@ class AlgebraicSolution(SageObject):
             sage: s = solve_exactly([y^3 - 3*y - x, z^2 - a], [x, y, z])[0]
             sage: s.is_explicit(), s.conditions()
             (True, [a > 0])
+
+        Conditions on unknowns describe this parametrization of its
+        component: the points of the component where they fail (a
+        denominator or a radicand vanishes) are listed in other solutions.
+        `x z = y` is `z = y/x` where `x \ne 0`; its points with `x = 0`
+        are the line `x = y = 0`::
+
+            sage: [(t.values(), t.conditions()) for t in solve_exactly([x*z - y], [x, y, z])]
+            [({x: 0, y: 0, z: z}, []), ({x: x, y: y, z: y/x}, [x != 0])]
         """
         return list(self._conditions)
 
@@ -755,13 +766,15 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     _log("decomposing into irreducible components")
     primes = minimal_primes(I, shapes=True, split_points=T.field() is QQ)
     _log(f"{len(primes)} components")
+    found = [s for prime, sh in primes for s in _solve_component(T, prime, sh, counted_set,
+                                                                 positive)]
+    found += _excluded_parts(T, [prime for prime, _ in primes], found, counted_set, positive)
     solutions, seen = [], set()
-    for prime, sh in primes:
-        for s in _solve_component(T, prime, sh, counted_set, positive):
-            key = str(s.values()) if s.is_explicit() and not s._free else None
-            if key is None or key not in seen:     # parts of facstd may overlap
-                seen.add(key)
-                solutions.append(s)
+    for s in found:
+        key = str(s.values()) if s.is_explicit() and not s._free else None
+        if key is None or key not in seen:     # parts of facstd may overlap
+            seen.add(key)
+            solutions.append(s)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
 
@@ -788,6 +801,67 @@ def _sort_key(s):
 # ---------------------------------------------------------------------------
 # one component
 # ---------------------------------------------------------------------------
+
+def _excluded_parts(T, known, solutions, counted, positive):
+    r"""
+    The solutions on the points of a component that the strict conditions
+    of its solutions on unknowns exclude: where a denominator of a value or
+    of a multiplier vanishes (`u \ne 0`), where the radicand of two
+    branches vanishes (`D > 0`: the branches meet there). Each such part,
+    the component with `u = 0` added, is solved as a further case -- unless
+    it lies on another component (in ``known``, or found here), whose
+    solutions and their own excluded parts list its points.
+
+    EXAMPLES: `x z = y` over `(x, y)` is `z = y/x` for `x \ne 0`; the line
+    `x = y = 0` is a further solution. The branches
+    `y = x \pm \sqrt{x^2 - a}` of `y^2 - 2 x y + a = 0`, `y z = 1` meet
+    at the points `x = y = \pm\sqrt{a}`::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, z, a = var('x y z a')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z])]
+        [({x: 0, y: 0, z: z}, []), ({x: x, y: y, z: y/x}, [x != 0])]
+        sage: [s.values() for s in solve_exactly([y^2 - 2*x*y + a, y*z - 1], [x, y, z])
+        ....:  if not s.dimension()]
+        [{x: sqrt(a), y: sqrt(a), z: 1/sqrt(a)}, {x: -sqrt(a), y: -sqrt(a), z: -1/sqrt(a)}]
+    """
+    known, todo, found, done = list(known), list(solutions), [], set()
+    while todo:
+        s = todo.pop()
+        P = s._prime
+        for d in _excluded_by(T, s):
+            if (id(P), d) in done or P.reduce(d) == 0:
+                continue
+            done.add((id(P), d))
+            J = P.ring().ideal(list(P.gens()) + [d])
+            for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
+                if any(_contains(Q, K) and not _contains(P, K) for K in known):
+                    continue
+                known.append(Q)
+                new = _solve_component(T, Q, sh, counted, positive)
+                found += new
+                todo += new
+    return found
+
+
+def _excluded_by(T, solution):
+    r"""The polynomials whose zero sets the strict conditions of the
+    solution on unknowns exclude (their numerators and denominators)."""
+    unknowns = T.unknowns()
+    for c in solution._conditions:
+        lhs = SR(c.lhs() - c.rhs())
+        if c.operator() in (operator.ne, operator.gt, operator.lt) and \
+                any(lhs.has(u) for u in unknowns):
+            num, dens = T.numerator(lhs)
+            yield from [num] + dens
+
+
+def _contains(Q, K):
+    r"""Whether the ideal ``Q`` contains ``K`` (``False`` for a
+    :class:`~sage_dynsym.algebra.decomposition.ShapePrime` ``K``, whose
+    generators are not the prime's)."""
+    return not isinstance(K, ShapePrime) and all(Q.reduce(g) == 0 for g in K.gens())
+
 
 def _unit_generators(T, i):
     return T.generators_of(T.unknowns()[i])
