@@ -106,7 +106,8 @@ from .translation import Translation, NotAlgebraic, translate_expressions
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
-           'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'FAMILY_QE_VARIABLES',
+           'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'PARAMETRIZATION_VARIABLES',
+           'FAMILY_QE_VARIABLES',
            'solve_transcendental']
 
 
@@ -975,8 +976,15 @@ def _branches(T, family, positive):
 #: looking for a rational parametrization of an implicit family ...
 PARAMETRIZATION_TRIES = 24
 
-#: ... and no new one after this many seconds.
+#: ... and no new one after this many seconds ...
 PARAMETRIZATION_SECONDS = 20
+
+#: ... and only with at most this many unknowns and parameters together:
+#: each try is a Gröbner basis in another order over the field of the
+#: parameters, a library call that the seconds above cannot stop (Brun's
+#: problem on a level `M \cdot \gamma = c`, 9 unknowns and 5 parameters,
+#: spent minutes in one).
+PARAMETRIZATION_VARIABLES = 8
 
 #: Implicit families with parameters are decided by quantifier elimination
 #: (over their bound unknowns) only up to this many variables.
@@ -1006,6 +1014,10 @@ def _parametrized(T, prime, family, counted, positive):
     from itertools import combinations
     from time import monotonic
     n, d = len(T.unknowns()), len(family._free)
+    if n + len(T.parameters()) > PARAMETRIZATION_VARIABLES:
+        _log(f"an implicit family in {n} unknowns and {len(T.parameters())} parameters: "
+             "not tried by other free unknowns")
+        return None
     order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
     tried, start = 0, monotonic()
     _log(f"an implicit family of dimension {d}: trying other free unknowns")
