@@ -482,6 +482,43 @@ class SymbolicBackend:
         return element
 
 
+class _Structural:
+    r"""
+    A symbolic expression as the key of a cached parent: equal when printed
+    alike. Two symbolic expressions compare by ``bool(a == b)``, which may
+    try to prove an identity by evaluating them at random points, a long
+    computation for nested constants such as `\sin(\sin(\sin k))`.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.trigonometric import _Structural
+        sage: k = var('k')
+        sage: _Structural(sin(sin(k))) == _Structural(sin(sin(k))), _Structural(k) == _Structural(2*k)
+        (True, False)
+        sage: loads(dumps(_Structural(k))).value
+        k
+    """
+    __slots__ = ('value', '_text')
+
+    def __init__(self, value):
+        self.value = SR(value)
+        self._text = repr(self.value)
+
+    def __eq__(self, other):
+        return isinstance(other, _Structural) and self._text == other._text
+
+    def __hash__(self):
+        return hash(self._text)
+
+    def __reduce__(self):
+        return _Structural, (self.value,)
+
+
+def _structural_value(x):
+    r"""The expression of ``x`` (a :class:`_Structural` key or an expression)."""
+    return x.value if isinstance(x, _Structural) else x
+
+
 class TrigPolynomialRing(UniqueRepresentation):
     r"""
     Kinematic quantities as polynomials over `\mathbb{Q}` in the parameters,
@@ -523,20 +560,22 @@ class TrigPolynomialRing(UniqueRepresentation):
         # the normal form of the arguments (angles sorted, as the symbols):
         # equal rings are one object (UniqueRepresentation), and the parent
         # TrigAlgebra is keyed by it
-        unique = []
-        for angle in angles:
+        unique = {}
+        for angle in map(_structural_value, angles):
             angle = _unsigned_angle(angle)
             # no pair for a constant angle whose sine and cosine evaluate
             # (pi/6: sqrt(3) is an atom)
-            if angle not in unique and (angle.cos().operator() is cos
-                                        or angle.sin().operator() is sin):
-                unique.append(angle)
-        return super().__classcall__(cls, tuple(sorted(unique, key=str)),
+            if str(angle) not in unique and (angle.cos().operator() is cos
+                                             or angle.sin().operator() is sin):
+                unique[str(angle)] = angle
+        return super().__classcall__(cls, tuple(_Structural(unique[k]) for k in sorted(unique)),
                                      tuple(sorted({str(v) for v in symbols}, key=str)),
-                                     tuple(SR(a) for a in atoms))
+                                     tuple(_Structural(a) for a in map(_structural_value, atoms)))
 
     def __init__(self, angles, symbols, atoms=()):
-        self._angles, self._symbols, self._atoms = list(angles), list(symbols), list(atoms)
+        self._angles = [a.value for a in angles]
+        self._symbols = list(symbols)
+        self._atoms = [a.value for a in atoms]
         k = len(self._angles)
         # a symbol is a variable of its own name where Singular takes that
         # name (``_C`` it does not)
