@@ -252,6 +252,24 @@ def where_it_runs(x):
 
 @pytest.mark.slow       # a dask.distributed cluster whose worker's children import Sage
 def test_census_on_a_distributed_client_in_child_processes_of_its_worker():
+    # in a pytest process of its own: the cluster's event-loop threads stay
+    # in the process that started it, and Sage's Singular must not be
+    # reached from another thread (a garbage collection there) while later
+    # tests compute in the main one
+    import os
+    import subprocess
+    import sys
+    if os.environ.get('SAGE_DYNSYM_CLUSTER_TEST') == 'inside':
+        return _census_on_a_distributed_client()
+    name = 'test_census_on_a_distributed_client_in_child_processes_of_its_worker'
+    run = subprocess.run([sys.executable, '-m', 'pytest', '-q', '-p', 'no:cacheprovider',
+                          '-m', 'slow', f'{__file__}::{name}'],
+                         env=dict(os.environ, SAGE_DYNSYM_CLUSTER_TEST='inside'),
+                         capture_output=True, text=True, timeout=900)
+    assert run.returncode == 0, run.stdout[-3000:] + run.stderr[-3000:]
+
+
+def _census_on_a_distributed_client():
     import psutil
     from distributed import Client, LocalCluster
     from sage_dynsym.errors import AnalysisError
