@@ -1456,18 +1456,18 @@ def _solved(problem, chart=None, regular=None, budget=None):
     # the equations of the problem solved exactly (Maxima's solve the
     # fallback for transcendental equations), the dimensions counted in the
     # unknowns that are not multipliers
-    def solve():
+    def compute():
         return solve_exactly(problem.equations, problem.unknowns,
                              counted=problem.solved_variables(), positive=problem.positive,
                              extra=[problem.function] + list(problem.rhs or []),
                              transcendental=True)
-    found = solve() if budget is None else _within_budget(solve, budget)
+    found = compute() if budget is None else _within_budget(compute, budget)
     return StationarySolutions(problem, found, chart, regular)
 
 
-def _within_budget(solve, budget):
+def _within_budget(compute, budget):
     r"""
-    ``solve()`` in a forked process stopped after ``budget`` seconds: a
+    ``compute()`` in a forked process stopped after ``budget`` seconds: a
     Singular computation interrupted in this process could leave Singular's
     interpreter without a ring, a killed child leaves nothing behind. Over
     the budget, an :class:`~sage_dynsym.errors.AnalysisError` says so (no
@@ -1495,7 +1495,7 @@ def _within_budget(solve, budget):
     def child():
         # an error is passed back to be raised here, not taken for a timeout
         try:
-            return ('found', solve())
+            return ('found', compute())
         except (DynSymError, ArithmeticError, RuntimeError, ValueError, TypeError) as err:
             return ('error', err)
     result = fork(child, timeout=budget)()
