@@ -90,7 +90,7 @@ from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
 
-__all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at',
+__all__ = ['discriminant_polynomials', 'stationary_ideal', 'add_zero_set_factors', 'check_main_thread', 'sample_runner', 'first_approximation_polynomials', 'equilibria_at',
            'CensusCell', 'Census',
            'equilibrium_census']
 
@@ -153,18 +153,41 @@ def discriminant_polynomials(W, coordinates, parameters):
                        "the census counts isolated equilibria only")
 
 
+def stationary_ideal(equations, unknowns, parameters, extra=()):
+    r"""
+    The ideal of ``equations`` in the polynomial ring of the unknowns and
+    the parameters (angles in their cosines and sines, denominators
+    saturated away), with the ring variables to eliminate to reach the
+    parameters and the numerators of the ``extra`` expressions in that
+    ring: what an elimination onto the parameters starts from.
+
+    OUTPUT: a tuple ``(translation, ideal, state, extra)``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import stationary_ideal
+        sage: x, a = var('x a')
+        sage: T, I, state, extra = stationary_ideal([x^2 - a], [x], [a], [2*x])
+        sage: I.gens(), state, extra
+        ([x0^2 - x1], [x0], [2*x0])
+    """
+    T = Translation(list(equations), list(unknowns) + list(parameters), extra=list(extra))
+    P = T.ring()
+    keep = {str(g) for p in parameters for g in T.generators_of(p)}
+    state = [g for g in P.gens() if str(g) not in keep]
+    ideal = P.ideal(T.equations())
+    for d in T.denominators():
+        ideal = ideal.saturation(P.ideal(d))[0]
+    return T, ideal, state, [T.numerator(e)[0] for e in extra]
+
+
 def _projection(W, q, parameters, extra, degenerate):
     r"""The irreducible factors of the projection on the parameters of
     `\{\nabla W = 0,\ extra = 0\}`; ``degenerate`` is the message when a
     component of the stationary set lies in `extra = 0` over every value."""
-    T = Translation([SR(W).diff(x) for x in q], q + list(parameters), extra=[extra])
+    T, ideal, state, (other,) = stationary_ideal([SR(W).diff(x) for x in q], q, parameters,
+                                                  [extra])
     P = T.ring()
-    keep = {str(g) for p in parameters for g in T.generators_of(p)}
-    state = [g for g in P.gens() if str(g) not in keep]
-    other = T.numerator(extra)[0]
-    ideal = P.ideal(T.equations())
-    for d in T.denominators():
-        ideal = ideal.saturation(P.ideal(d))[0]
     # split first (Singular's factorizing Groebner basis): eliminating from
     # each part takes milliseconds where the whole ideal can take minutes
     parts = [P.ideal(list(part)) for part in ff.facstd(ideal)]
@@ -175,14 +198,31 @@ def _projection(W, q, parameters, extra, degenerate):
                 if g != 0]
         if not gens:
             raise AnalysisError(degenerate, entry="equilibrium_census")
-        # the zero set of the ideal: the factors of the gcd for one parameter;
-        # for two, a curve through it (a finite set of points lies on it)
-        g = gcd(gens) if len(gens) > 1 else gens[0]
-        if g.is_constant():
-            g = gens[0]
-        factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
-                    and -f not in factors]
+        add_zero_set_factors(gens, factors)
     return [T.symbolic(f) for f in factors]
+
+
+def add_zero_set_factors(gens, factors):
+    r"""
+    Append to ``factors`` the irreducible factors (not there yet, up to
+    sign) of a polynomial vanishing on the zero set of the nonzero
+    polynomials ``gens`` in the parameters: the factors of their gcd for
+    one parameter; for two, of a curve through it (a finite set of points
+    lies on it).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import add_zero_set_factors
+        sage: R.<a, b> = QQ[]
+        sage: found = [a - 1]
+        sage: add_zero_set_factors([(a - 1)*(a + 2)*b, (a + 2)*(b + 1)], found); found
+        [a - 1, a + 2]
+    """
+    g = gcd(gens) if len(gens) > 1 else gens[0]
+    if g.is_constant():
+        g = gens[0]
+    factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
+                and -f not in factors]
 
 
 def first_approximation_polynomials(system, parameters, positive=()):
@@ -412,6 +452,21 @@ def _counts(verdicts):
 
 def _count_task(system, values, chart, regular, positive):
     r"""One sample point's counts (a task: module level, picklable arguments)."""
+    check_main_thread(values)
+    _log(f"solving at {values}")
+    return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
+
+
+def check_main_thread(values):
+    r"""
+    Refuse a sample point sent to a thread other than the main one, before
+    PARI runs there (its stack belongs to the main thread).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import check_main_thread
+        sage: check_main_thread({var('a'): 1})
+    """
     if threading.current_thread() is not threading.main_thread():
         # PARI's stack belongs to the main thread: in another one it faults
         raise AnalysisError(f"the sample point {values} was sent to a thread "
@@ -422,8 +477,6 @@ def _count_task(system, values, chart, regular, positive):
                             "in child processes of its workers) or "
                             "executor=concurrent.futures.ProcessPoolExecutor()",
                             entry="executor")
-    _log(f"solving at {values}")
-    return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
 
 
 # -- cells ----------------------------------------------------------------------------
@@ -499,13 +552,45 @@ class CensusCell(SageObject):
         self._bounds = bounds
 
     def _repr_(self):
-        n, stable, linear, undecided = self._counts
-        text = f"{self._description} (sample {', '.join(f'{k} = {v}' for k, v in self._sample.items())}): {n} equilibri{'um' if n == 1 else 'a'}, {stable} stable"
+        n, stable, linear, undecided = self._counts[:4]
+        families = self.families()
+        noun = "isolated" if families else f"equilibri{'um' if n == 1 else 'a'}"
+        if len(self._counts) > 4 and not families:
+            noun = "relative " + noun
+        text = f"{self._description} (sample {', '.join(f'{k} = {v}' for k, v in self._sample.items())}): {n} {noun}, {stable} stable"
         if linear > stable:
             text += f", {linear - stable} more stable in first approximation"
         if undecided:
             text += f", {undecided} undecided"
+        if families:
+            named = {1: ("a curve", "curves"), 2: ("a surface", "surfaces")}
+            parts = []
+            for d in sorted(set(families)):
+                k = families.count(d)
+                one, many = named.get(d, (f"a {d}-dimensional family", f"{d}-dimensional families"))
+                parts.append(one if k == 1 else f"{k} {many}")
+            text += f", and {' and '.join(parts)} of relative equilibria"
         return text
+
+    def families(self):
+        r"""
+        The dimensions of the positive-dimensional families of relative
+        equilibria at the sample (components, irreducible over `\QQ`, with
+        real points), sorted; ``[]`` for a census of a Lagrangian or Routh
+        function, whose equilibria are isolated off its bifurcation set.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.analysis.census import CensusCell
+            sage: cell = CensusCell("1 < c < 2", {var('c'): 3/2}, (6, 0, 2, 0, [1])); cell
+            1 < c < 2 (sample c = 3/2): 6 isolated, 0 stable, 2 more stable in first approximation, and a curve of relative equilibria
+            sage: cell.families()
+            [1]
+            sage: CensusCell("0 < c", {var('c'): 1}, (6, 4, 4, 0, [])), CensusCell("0 < c", {var('c'): 1}, (1, 1, 1, 0))
+            (0 < c (sample c = 1): 6 relative equilibria, 4 stable,
+             0 < c (sample c = 1): 1 equilibrium, 1 stable)
+        """
+        return sorted(self._counts[4]) if len(self._counts) > 4 else []
 
     def description(self):
         r"""The cell as inequalities (text).
@@ -537,7 +622,8 @@ class CensusCell(SageObject):
         return dict(self._sample)
 
     def count(self):
-        r"""The number of distinct equilibria (points of the configuration space).
+        r"""The number of distinct isolated equilibria (points of the
+        configuration space, or of the symplectic leaf).
 
         EXAMPLES: see :class:`CensusCell`.
         """
@@ -597,7 +683,8 @@ class Census(SageObject):
     """
 
     def __init__(self, parameters, polynomials, cells, task, positive, region=None,
-                 refine=None):
+                 refine=None, what="the equilibria"):
+        self._what = what
         self._parameters = parameters
         self._polynomials = polynomials
         self._cells = cells
@@ -620,7 +707,7 @@ class Census(SageObject):
     def _repr_(self):
         where = " and ".join(f"{p} > 0" for p in self._parameters if self._is_positive(p))
         names = ", ".join(map(str, self._parameters))
-        lines = [f"Census of the equilibria over {where or names}: bifurcation set "
+        lines = [f"Census of {self._what} over {where or names}: bifurcation set "
                  f"{self._polynomials}"]
         lines += [f"  {c}" for c in self._cells]
         return "\n".join(lines)
@@ -786,7 +873,7 @@ class Census(SageObject):
             raise AnalysisError(f"give a value to {', '.join(map(str, missing))}, e.g. "
                                 f"count_at({{{', '.join(f'{p}: 1' for p in self._parameters)}}})",
                                 entry="count_at")
-        n, stable, _, _ = self._task(values)
+        n, stable = self._task(values)[:2]
         return n, stable
 
     def plot(self, **options):
@@ -991,15 +1078,8 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     def task(at):
         return _count_task(fixed, at, chart, fixed2, positive)
 
-    def counts_of(samples):
-        _log(f"solving at {len(samples)} sample points")
-        if executor is None:
-            return [task(s) for s in samples]
-        arguments = [(fixed, s, chart, fixed2, positive) for s in samples]
-        if not hasattr(executor, 'submit'):
-            return list(executor(_count_task, arguments))
-        futures = [executor.submit(_count_task, *a) for a in arguments]
-        return [f.result() for f in futures]
+    counts_of = sample_runner(_count_task, lambda s: (fixed, s, chart, fixed2, positive),
+                              executor)
 
     def refine():
         # the first-approximation boundaries are solved with the parameters
@@ -1016,6 +1096,31 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     return Census(parameters, polys, _decomposition(polys, parameters, signs, counts_of),
                   task, positive, region=signs if len(parameters) == 2 else None,
                   refine=refine)
+
+
+def sample_runner(task, arguments_of, executor):
+    r"""
+    A function solving a list of sample points: ``task(*arguments_of(s))``
+    for each sample ``s``, in this process or through ``executor`` (see
+    :func:`equilibrium_census`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import sample_runner
+        sage: run = sample_runner(lambda x, y: x + y, lambda s: (s, 1), None)
+        sage: run([1, 2]), sample_runner(pow, lambda s: (s, 2), lambda f, a: [f(*x) for x in a])([3])
+        ([2, 3], [9])
+    """
+    def counts_of(samples):
+        _log(f"solving at {len(samples)} sample points")
+        arguments = [arguments_of(s) for s in samples]
+        if executor is None:
+            return [task(*a) for a in arguments]
+        if not hasattr(executor, 'submit'):
+            return list(executor(task, arguments))
+        futures = [executor.submit(task, *a) for a in arguments]
+        return [f.result() for f in futures]
+    return counts_of
 
 
 def _inside(polys, parameters, signs):

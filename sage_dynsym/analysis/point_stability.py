@@ -32,7 +32,7 @@ from sage.symbolic.ring import SR
 
 from .charts import algebraic_value
 
-__all__ = ['point_verdict', 'is_gyroscopic']
+__all__ = ['point_verdict', 'is_gyroscopic', 'spectrum_verdict']
 
 
 def _is_positive_definite(K):
@@ -95,6 +95,23 @@ def point_verdict(point, problem, gyroscopic=None):
     else:
         J = exact(linear.jacobian())
         poly = (z * matrix.identity(AA, J.nrows()) - J).det()
+    return spectrum_verdict(poly)
+
+
+def spectrum_verdict(poly):
+    r"""
+    The verdict of the first approximation from its characteristic
+    polynomial (exact coefficients): ``'unstable'`` for a root with a
+    positive real part, ``'stable in first approximation'`` when all roots
+    are simple and on the imaginary axis, ``'undecided'`` otherwise.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.point_stability import spectrum_verdict
+        sage: z = polygen(AA, 'z')
+        sage: [spectrum_verdict(p) for p in (z^2 + 1, z^2 - 1, z^2, (z^2 + 1)^2)]
+        ['stable in first approximation', 'unstable', 'undecided', 'undecided']
+    """
     roots = poly.roots(QQbar)
     if any(r.real() > 0 for r, _ in roots):
         return 'unstable'

@@ -1,0 +1,472 @@
+r"""
+A census of the relative equilibria of a Lie--Poisson system on its
+symplectic leaves
+
+The equilibria of `\dot x = J(x)\nabla H(x)` on a symplectic leaf `\{C_i =
+c_i\}` (the levels of the Casimirs `C_1, \dots, C_k`) are, at the regular
+points of the leaf, the critical points of `H` restricted to it: the
+solutions of
+
+.. MATH::
+
+    \nabla H = \sum_i \lambda_i \nabla C_i, \qquad C_i = c_i,
+
+the critical points of `W = H - \sum_i \lambda_i (C_i - c_i)` in `(x,
+\lambda)` (the relative equilibria of the rigid body and of Kirchhoff's
+equations). The levels `c_i` may depend on the parameters of the census, and
+so may `H`. :func:`leaf_census` counts them over one or two parameters as
+:func:`~sage_dynsym.analysis.census.equilibrium_census` counts the
+equilibria of a Lagrangian:
+
+1. the *bifurcation set*, by elimination (Singular): the ideal of the
+   critical points of `W` with the parameters as variables is decomposed
+   into its prime components; a component over a proper subset of the
+   parameter space gives its equations; a component of isolated points
+   (over a generic parameter) gives the projection of its points where the
+   Hessian of `W` in `(x, \lambda)` -- the bordered Hessian of `H - \lambda
+   \cdot C` on the tangent space of the leaf -- is singular; a component of
+   families gives the projection of its points where the projection onto
+   the parameters is not a submersion (its fibre is singular there, where
+   the real family is born, dies or changes), and its intersections with
+   the other components; and where the leaf itself is singular (the
+   gradients of the Casimirs dependent on the level) is added;
+2. the *cells* as for the Lagrangian census (intervals, or a cylindrical
+   decomposition for two parameters), each with a rational sample;
+3. at each sample the relative equilibria are solved exactly
+   (:func:`~sage_dynsym.analysis.stationary.stationary_solutions` with the
+   levels), the isolated real ones counted, each with its stability:
+   ``'stable'`` by the energy--Casimir method (the second variation of `H -
+   \lambda\cdot C` definite on the tangent space of the leaf:
+   :func:`~sage_dynsym.analysis.energy_casimir.energy_casimir_stability`),
+   ``'unstable'`` for a root of the linearization with a positive real
+   part, ``'stable in first approximation'`` where the linearization
+   restricted to the leaf (the characteristic polynomial without the `k`
+   zero roots transversal to the leaf) has all its roots simple and on the
+   imaginary axis, ``'undecided'`` otherwise. The positive-dimensional
+   components with real points (decided exactly: :func:`has_real_points`)
+   are reported as families, with their dimensions, never counted as
+   points.
+
+The count of isolated relative equilibria and the energy--Casimir stable
+count are constant on the cells; the count stable in first approximation
+is the one at the sample (a pair of roots may collide on the imaginary
+axis inside a cell without any equilibrium degenerating).
+
+EXAMPLES: the free rigid body, `H = \frac12 \sum M_i^2/I_i` with `I =
+(1, 2, 3)`, on the spheres `|M|^2 = c^2`: six relative equilibria (the
+rotations about the principal axes), four stable (the largest and the
+smallest axes; Euler, Arnold), the only bifurcation at `c = 0`::
+
+    sage: from sage_dynsym.analysis.leaf_census import leaf_census
+    sage: M1, M2, M3, c = var('M1 M2 M3 c')
+    sage: J = matrix([[0, -M3, M2], [M3, 0, -M1], [-M2, M1, 0]])
+    sage: H = M1^2/2 + M2^2/4 + M3^2/6
+    sage: leaf_census(H, [M1^2 + M2^2 + M3^2], J, [M1, M2, M3], [c], [c^2])
+    Census of the relative equilibria on the levels M1^2 + M2^2 + M3^2 = c^2 over c: bifurcation set [c]
+      c < 0 (sample c = -1): 6 relative equilibria, 4 stable
+      0 < c (sample c = 1): 6 relative equilibria, 4 stable
+
+REFERENCES:
+
+- V. I. Arnold, *Mathematical Methods of Classical Mechanics*, 2nd ed.,
+  Springer, 1989, §29 and Appendix 2.
+- J. E. Marsden, T. S. Ratiu, *Introduction to Mechanics and Symmetry*,
+  2nd ed., Springer, 1999, §1.7 (the energy--Casimir method).
+- D. Lazard, F. Rouillier, *Solving parametric polynomial systems*, J.
+  Symbolic Comput. 42 (2007) 636--667 (discriminant varieties).
+"""
+import random
+
+from sage.matrix.constructor import matrix
+from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
+from sage.rings.qqbar import AA, QQbar
+from sage.symbolic.ring import SR
+
+from ..errors import AnalysisError
+from ..arguments import symbol_arguments
+from .census import (Census, stationary_ideal, add_zero_set_factors, check_main_thread,
+                     sample_runner, _counts, _decomposition, _inside, _log)
+from .charts import configuration_points
+from .energy_casimir import energy_casimir_stability
+from .point_stability import spectrum_verdict
+from .stationary import stationary_solutions
+
+__all__ = ['has_real_points', 'leaf_bifurcation_polynomials', 'relative_equilibria_at',
+           'leaf_census']
+
+#: the number of random choices tried before a critical locus is given up
+ATTEMPTS = 4
+
+
+def has_real_points(ideal):
+    r"""
+    Whether the complex variety of a polynomial ideal over `\QQ` has a real
+    point, decided exactly. A nonempty real algebraic set has a point
+    nearest to any given point `a`; on a prime component of dimension `d`
+    it is a singular point or a critical point of `|x - a|^2`, where the
+    `(n - d + 1)`-minors of the Jacobian matrix (of `n - d` random
+    combinations of the generators) bordered by `x - a` vanish: a
+    subvariety of smaller dimension, decided in turn, down to finitely many
+    points (solved over the real algebraic numbers).
+
+    INPUT:
+
+    - ``ideal`` -- an ideal of a multivariate polynomial ring over `\QQ`
+
+    OUTPUT: a boolean
+
+    EXAMPLES: the circle `x^2 + y^2 = 1` is real, `x^2 + y^2 = -1` is not,
+    nor the intersection of the sphere with a plane beyond it::
+
+        sage: from sage_dynsym.analysis.leaf_census import has_real_points
+        sage: R.<x, y, z> = QQ[]
+        sage: [has_real_points(R.ideal([x^2 + y^2 - r])) for r in (1, -1)]
+        [True, False]
+        sage: [has_real_points(R.ideal([x^2 + y^2 + z^2 - 1, x + y + z - t])) for t in (1, 2)]
+        [True, False]
+
+    TESTS: a real point only where the variety is singular (the isolated
+    real point of `x^2 + y^2 = 0` on a complex surface)::
+
+        sage: has_real_points(R.ideal([x^2 + y^2])), has_real_points(R.ideal([x^2 + y^2 + 1]))
+        (True, False)
+    """
+    return any(_prime_has_real_points(Q) for Q in ideal.minimal_associated_primes())
+
+
+def _prime_has_real_points(Q):
+    d = Q.dimension()
+    if d < 0:
+        return False
+    if d == 0:
+        return bool(Q.variety(AA))
+    R = Q.ring()
+    x = R.gens()
+    gens = [g for g in Q.gens() if g != 0]
+    for attempt in range(ATTEMPTS):
+        rng = random.Random(attempt)
+        combos = [sum(rng.randint(-9, 9) * g for g in gens) for _ in range(len(x) - d)]
+        rows = [[f.derivative(v) for v in x] for f in combos]
+        rows.append([v - rng.randint(-9, 9) for v in x])
+        Z = Q + R.ideal(matrix(R, rows).minors(len(x) - d + 1))
+        # a strictly smaller subvariety (Q is prime): unless every point was
+        # critical for this choice (a sphere about a, say)
+        if Z.dimension() < d:
+            return has_real_points(Z)
+    raise AnalysisError(f"whether the component {Q} has real points was not decided: every "
+                        f"point was critical in {ATTEMPTS} random choices",
+                        entry="equilibrium_census")
+
+
+def _critical_locus(Q, state, fibre):
+    r"""The polynomials in the parameters where the projection of the
+    prime component ``Q`` (fibres of dimension ``fibre``) onto them is
+    not a submersion: ``Q`` with the maximal minors of the Jacobian matrix
+    in the ``state`` variables of random combinations of its generators,
+    eliminated (``[]`` when nothing was found in the attempts)."""
+    R = Q.ring()
+    gens = [g for g in Q.gens() if g != 0]
+    size = len(state) - fibre
+    for attempt in range(ATTEMPTS):
+        rng = random.Random(attempt)
+        combos = [sum(rng.randint(-9, 9) * g for g in gens) for _ in range(size)]
+        minors = matrix(R, [[f.derivative(v) for v in state] for f in combos]).minors(size)
+        found = [g for g in (Q + R.ideal(minors)).elimination_ideal(state).gens() if g != 0]
+        if found:
+            return found
+    return []
+
+
+def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
+    r"""
+    The bifurcation set of the relative equilibria of `H` on the levels
+    `C_i = c_i` of the Casimirs (see the module documentation): irreducible
+    polynomials in the parameters.
+
+    INPUT:
+
+    - ``H`` -- the Hamiltonian, polynomial in the variables
+    - ``casimirs`` -- the Casimirs `C_i`
+    - ``variables`` -- the variables `x`
+    - ``levels`` -- the values `c_i`, expressions in the parameters
+    - ``parameters`` -- the symbols of the census (the only ones left in
+      ``H`` and ``levels``)
+
+    OUTPUT: a list of symbolic polynomials in the parameters
+
+    EXAMPLES: Brun's problem, `H = \frac12 (M, I^{-1}M) + \frac12 (\gamma,
+    I\gamma)` with `I = (1, 2, 3)`, on the levels `(M, \gamma) = c`,
+    `(\gamma, \gamma) = 1`: the bifurcation values are `|c| = I_k`::
+
+        sage: from sage_dynsym.analysis.leaf_census import leaf_bifurcation_polynomials
+        sage: M1, M2, M3, g1, g2, g3, c = var('M1 M2 M3 g1 g2 g3 c')
+        sage: H = (M1^2 + M2^2/2 + M3^2/3)/2 + (g1^2 + 2*g2^2 + 3*g3^2)/2
+        sage: C = [M1*g1 + M2*g2 + M3*g3, g1^2 + g2^2 + g3^2]
+        sage: sorted(leaf_bifurcation_polynomials(H, C, [M1, M2, M3, g1, g2, g3], [c, 1], [c]))
+        [c - 3, c - 2, c - 1, c + 1, c + 2, c + 3]
+
+    TESTS: a level that is singular for every value of the parameter::
+
+        sage: x, y, z = var('x y z')
+        sage: leaf_bifurcation_polynomials(x + c*y, [x^2 + y^2 + z^2], [x, y, z], [0], [c])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: levels: the level [x^2 + y^2 + z^2 == 0] is singular (the gradients of the Casimirs dependent) for every value of c: choose levels where the leaves are regular
+    """
+    x = [SR(v) for v in variables]
+    lam = [SR.var(f"leaf_multiplier{i + 1}") for i in range(len(casimirs))]
+    W = SR(H) - sum(m * (SR(C) - SR(c)) for m, C, c in zip(lam, casimirs, levels))
+    u = x + lam
+    hessian = matrix(SR, [[W.diff(a).diff(b) for b in u] for a in u]).det()
+    G = matrix(SR, [[SR(C).diff(v) for v in x] for C in casimirs])
+    minors = G.minors(len(casimirs)) if casimirs else []
+    T, ideal, state, extra = stationary_ideal(
+        [W.diff(v) for v in u], u, parameters,
+        [hessian] + [SR(C) - SR(c) for C, c in zip(casimirs, levels)] + minors)
+    P = T.ring()
+    found = []
+    if casimirs:
+        singular = [g for g in P.ideal(extra[1:]).elimination_ideal(state).gens() if g != 0]
+        if not singular:
+            raise AnalysisError(
+                f"the level {[SR(C) == SR(c) for C, c in zip(casimirs, levels)]} is singular "
+                "(the gradients of the Casimirs dependent) for every value of "
+                f"{', '.join(map(str, parameters))}: choose levels where the leaves are "
+                "regular", entry="levels")
+        add_zero_set_factors(singular, found)
+    primes = ideal.minimal_associated_primes()
+    _log(f"{len(primes)} components of the relative equilibria")
+    families = []
+    for Q in primes:
+        below = [g for g in Q.elimination_ideal(state).gens() if g != 0]
+        if below:
+            add_zero_set_factors(below, found)
+            continue
+        fibre = Q.dimension() - len(parameters)
+        if fibre == 0:
+            gens = [g for g in (Q + P.ideal([extra[0]])).elimination_ideal(state).gens()
+                    if g != 0]
+        else:
+            families.append(Q)
+            gens = _critical_locus(Q, state, fibre)
+        if not gens:
+            raise AnalysisError(f"the relative equilibria of the component {Q} are degenerate "
+                                f"for all values of {', '.join(map(str, parameters))}",
+                                entry="equilibrium_census")
+        add_zero_set_factors(gens, found)
+    for Q in families:
+        for other in primes:
+            meet = [g for g in (Q + other).elimination_ideal(state).gens() if g != 0]
+            if other is not Q and meet:
+                add_zero_set_factors(meet, found)
+    return sorted((T.symbolic(f) for f in found), key=str)
+
+
+def _leaf_verdict(H, casimirs, poisson_matrix, x, field, at):
+    r"""The stability of the relative equilibrium ``at`` on its leaf."""
+    verdict = energy_casimir_stability(H, casimirs, poisson_matrix, x, at).verdict()
+    if verdict != 'undecided':
+        return verdict
+    A = matrix(QQbar, [[QQbar(SR(f).diff(v).subs(at)) for v in x] for f in field])
+    G = matrix(QQbar, [[QQbar(SR(C).diff(v).subs(at)) for v in x] for C in casimirs])
+    if G.rank() < len(casimirs):
+        return 'undecided'      # a singular point of the leaf
+    # the field maps into the tangent space of the leaf: the k transversal
+    # roots of its linearization are zeros
+    z = PolynomialRing(QQbar, 'z').gen()
+    leaf, rest = A.charpoly('z').quo_rem(z ** len(casimirs))
+    return spectrum_verdict(leaf) if rest == 0 else 'undecided'
+
+
+def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
+    r"""
+    The relative equilibria on one leaf, at numerical values of the
+    parameters: the isolated real ones with their stability on the leaf,
+    and the dimensions of the families with real points.
+
+    INPUT:
+
+    - ``H``, ``casimirs``, ``poisson_matrix``, ``variables`` -- the
+      system, without parameters
+    - ``levels`` -- the values of the Casimirs (exact numbers)
+
+    OUTPUT: a pair ``(points, families)``: a list of pairs ``(point,
+    verdict)``, ``point`` a :class:`~sage_dynsym.analysis.charts.ConfigurationPoint`,
+    and a sorted list of dimensions
+
+    EXAMPLES: the free rigid body on the sphere `|M|^2 = 1`::
+
+        sage: from sage_dynsym.analysis.leaf_census import relative_equilibria_at
+        sage: M1, M2, M3 = var('M1 M2 M3')
+        sage: J = matrix([[0, -M3, M2], [M3, 0, -M1], [-M2, M1, 0]])
+        sage: points, families = relative_equilibria_at(M1^2/2 + M2^2/4 + M3^2/6,
+        ....:                        [M1^2 + M2^2 + M3^2], J, [M1, M2, M3], [1])
+        sage: sorted((p.embedding(), v) for p, v in points), families
+        ([((-1, 0, 0), 'stable'),
+          ((0, -1, 0), 'unstable'),
+          ((0, 0, -1), 'stable'),
+          ((0, 0, 1), 'stable'),
+          ((0, 1, 0), 'unstable'),
+          ((1, 0, 0), 'stable')],
+         [])
+
+    A symmetric body, `I_1 = I_2`: the rotations about the equatorial axes
+    make a circle on the sphere::
+
+        sage: points, families = relative_equilibria_at((M1^2 + M2^2)/2 + M3^2/6,
+        ....:                        [M1^2 + M2^2 + M3^2], J, [M1, M2, M3], [1])
+        sage: len(points), families
+        (2, [1])
+    """
+    x = [SR(v) for v in variables]
+    field = (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in x])).column(0)
+    sols = stationary_solutions([SR(H)] + [SR(C) for C in casimirs], x, equations=list(field),
+                                levels=list(levels))
+    found = []
+    points = configuration_points(sols, None, found)
+    families = sorted(s.dimension() for s in found if has_real_points(s.solution().ideal()))
+    verdicts = [_leaf_verdict(H, casimirs, poisson_matrix, x, field,
+                              {v: SR(p.value(v)) for v in x}) for p in points]
+    return list(zip(points, verdicts)), families
+
+
+def _leaf_task(system, values):
+    r"""One sample point's counts and families (a task: module level,
+    picklable arguments)."""
+    check_main_thread(values)
+    H, casimirs, J, x, levels = system
+    _log(f"solving at {values}")
+    points, families = relative_equilibria_at(
+        SR(H).subs(values), casimirs, matrix(SR, J).subs(values), x,
+        [SR(c).subs(values) for c in levels])
+    return _counts([v for _, v in points]) + (families,)
+
+
+def _symbols(expressions, skip):
+    return {str(s): s for e in expressions for s in SR(e).variables() if str(s) not in skip}
+
+
+def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, positive=(),
+                values=None, executor=None):
+    r"""
+    The census of the relative equilibria of the Lie--Poisson system
+    `\dot x = J(x)\nabla H` on the levels of its Casimirs over one or two
+    parameters (see the module documentation); a Lie--Poisson system's
+    :meth:`~sage_dynsym.lie.system.LiePoissonSystem.equilibrium_census`
+    and :func:`~sage_dynsym.analysis.census.equilibrium_census` call it.
+
+    INPUT:
+
+    - ``H`` -- the Hamiltonian, polynomial in the variables
+    - ``casimirs`` -- the Casimirs, in the order of ``levels``
+    - ``poisson_matrix`` -- `J(x)`
+    - ``variables`` -- the variables `x`
+    - ``parameters`` -- one or two symbols: symbols of `H` or of the levels
+    - ``levels`` -- one value per Casimir: numbers or expressions in the
+      parameters (``[c, 1]`` for `(M, \gamma) = c`, `(\gamma, \gamma) = 1`)
+    - ``positive`` -- symbols declared positive (a parameter declared
+      positive is censused over its positive values only)
+    - ``values`` -- values for the other symbols of `H` and `J`
+    - ``executor`` -- as for :func:`~sage_dynsym.analysis.census.equilibrium_census`
+
+    OUTPUT: a :class:`~sage_dynsym.analysis.census.Census`; its cells'
+    :meth:`~sage_dynsym.analysis.census.CensusCell.families` give the
+    families of relative equilibria
+
+    EXAMPLES: Brun's problem (see :func:`leaf_bifurcation_polynomials`),
+    for `c > 0`: the six rotations about the principal axes on every leaf;
+    for `1 < c < 3` also a curve of Brun's uniform rotations `M = I\gamma`
+    (Borisov and Mamaev, *Rigid Body Dynamics*, the Brun case)::
+
+        sage: from sage_dynsym.analysis.leaf_census import leaf_census
+        sage: M1, M2, M3, g1, g2, g3, c = var('M1 M2 M3 g1 g2 g3 c')
+        sage: x = [M1, M2, M3, g1, g2, g3]
+        sage: H = (M1^2 + M2^2/2 + M3^2/3)/2 + (g1^2 + 2*g2^2 + 3*g3^2)/2
+        sage: C = [M1*g1 + M2*g2 + M3*g3, g1^2 + g2^2 + g3^2]
+        sage: J = block_matrix([[matrix([[0, -M3, M2], [M3, 0, -M1], [-M2, M1, 0]]),
+        ....:                    matrix([[0, -g3, g2], [g3, 0, -g1], [-g2, g1, 0]])],
+        ....:                   [matrix([[0, -g3, g2], [g3, 0, -g1], [-g2, g1, 0]]), 0]])
+        sage: census = leaf_census(H, C, J, x, [c], [c, 1], positive=[c]); census
+        Census of the relative equilibria on the levels M1*g1 + M2*g2 + M3*g3 = c, g1^2 + g2^2 + g3^2 = 1 over c > 0: bifurcation set [c - 1, c - 2, c - 3]
+          0 < c < 1 (sample c = 1/2): 6 relative equilibria, 2 stable
+          1 < c < 2 (sample c = 3/2): 6 isolated, 0 stable, 2 more stable in first approximation, and a curve of relative equilibria
+          2 < c < 3 (sample c = 5/2): 6 isolated, 0 stable, 2 more stable in first approximation, and a curve of relative equilibria
+          3 < c (sample c = 4): 6 relative equilibria, 2 stable, 2 more stable in first approximation
+        sage: [cell.families() for cell in census.cells()]
+        [[], [1], [1], []]
+        sage: census.count_at({c: 10})
+        (6, 2)
+        sage: TestSuite(census).run(skip=['_test_pickling', '_test_first_approximation'])
+
+    TESTS::
+
+        sage: a = var('a')
+        sage: leaf_census(H, C, J, x, [a], [c, 1])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: a is neither a symbol of H nor of the levels [c, 1]; the census can be over c
+        sage: leaf_census(H, C, J, x, [c], [c])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: levels: give one level per Casimir (M1*g1 + M2*g2 + M3*g3, g1^2 + g2^2 + g3^2), e.g. levels=[c, 1]; got 1
+        sage: leaf_census(H + a*g1, C, J, x, [c], [c, 1])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: values: give a value to a (the census is over c), e.g. values={a: 1}
+        sage: leaf_census(H, C, J, x, [M1], [c, 1])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: M1 is a variable of the system, not a parameter
+        sage: census.cells(first_approximation=True)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: first_approximation: the boundaries of the first approximation of relative equilibria are not computed; stable_count(first_approximation=True) of a cell is its count at the sample
+    """
+    parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    if len(parameters) not in (1, 2):
+        raise AnalysisError(f"a census is over one or two parameters, got {len(parameters)} "
+                            f"({', '.join(map(str, parameters))})", entry="parameters")
+    x = [SR(v) for v in variables]
+    names = {str(v) for v in x}
+    levels = [] if levels is None and not casimirs else levels
+    if levels is None or len(levels) != len(casimirs):
+        raise AnalysisError(f"give one level per Casimir ({', '.join(map(str, casimirs))}), e.g. "
+                            f"levels=[{', '.join(['c'] + ['1'] * (len(casimirs) - 1))}]; got "
+                            f"{'none' if levels is None else len(levels)}", entry="levels")
+    values = {SR.var(k) if isinstance(k, str) else SR(k): v for k, v in (values or {}).items()}
+    own = _symbols([H] + list(matrix(SR, poisson_matrix).list()), names)
+    leveled = _symbols(levels, names)
+    for p in parameters:
+        if str(p) in names:
+            raise AnalysisError(f"{p} is a variable of the system, not a parameter",
+                                entry="parameters")
+        if str(p) not in own and str(p) not in leveled:
+            raise AnalysisError(f"{p} is neither a symbol of H nor of the levels {list(levels)}; "
+                                f"the census can be over {', '.join(sorted(set(own) | set(leveled)))}",
+                                entry="parameters")
+    chosen = {str(p) for p in parameters} | {str(k) for k in values}
+    missing = sorted(s for s in set(own) | set(leveled) if s not in chosen)
+    if missing:
+        raise AnalysisError(f"give a value to {', '.join(missing)} (the census is over "
+                            f"{', '.join(map(str, parameters))}), e.g. values="
+                            f"{{{', '.join(f'{s}: 1' for s in missing)}}}", entry="values")
+    H = SR(H).subs(values)
+    J = matrix(SR, poisson_matrix).subs(values)
+    levels = [SR(c).subs(values) for c in levels]
+    signs = [any(str(p) == str(s) for s in positive) for p in parameters]
+    polys = _inside(leaf_bifurcation_polynomials(H, casimirs, x, levels, parameters),
+                    parameters, signs)
+    _log(f"bifurcation set {polys}")
+    system = (H, list(casimirs), J, x, levels)
+    counts_of = sample_runner(_leaf_task, lambda s: (system, s), executor)
+
+    def refine():
+        raise AnalysisError("the boundaries of the first approximation of relative equilibria "
+                            "are not computed; stable_count(first_approximation=True) of a "
+                            "cell is its count at the sample", entry="first_approximation")
+    what = "the relative equilibria on the levels " + \
+        ", ".join(f"{C} = {c}" for C, c in zip(casimirs, levels))
+    return Census(parameters, polys, _decomposition(polys, parameters, signs, counts_of),
+                  lambda at: _leaf_task(system, at), positive,
+                  region=signs if len(parameters) == 2 else None, refine=refine, what=what)
