@@ -169,7 +169,7 @@ def stationary_ideal(equations, unknowns, parameters, extra=()):
         sage: x, a = var('x a')
         sage: T, I, state, extra = stationary_ideal([x^2 - a], [x], [a], [2*x])
         sage: I.gens(), state, extra
-        ([x0^2 - x1], [x0], [2*x0])
+        ([x1^2 - x0], [x1], [2*x1])
     """
     T = Translation(list(equations), list(unknowns) + list(parameters), extra=list(extra))
     P = T.ring()
@@ -959,20 +959,24 @@ def _cylinders(polys, p1, p2, positive1, positive2):
 
 
 def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
-                       regular=None, executor=None):
+                       regular=None, executor=None, levels=None):
     r"""
     The census of the equilibria (stationary motions) of a Lagrangian or
     Routh function over one or two parameters: the bifurcation set, the
     cells of the parameter space where the numbers of equilibria and of
     stable ones are constant, and those numbers (see the module
-    documentation for the method).
+    documentation for the method). For a Lie--Poisson system, the census
+    of its relative equilibria on the levels of its Casimirs
+    (:func:`~sage_dynsym.analysis.leaf_census.leaf_census`).
 
     INPUT:
 
     - ``system`` -- a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
       or :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` (a
-      mechanical model's ``lagrangian()``, or its ``routh([...])``)
-    - ``parameters`` -- one or two symbols: the axes of the census
+      mechanical model's ``lagrangian()``, or its ``routh([...])``), or a
+      :class:`~sage_dynsym.lie.system.LiePoissonSystem`
+    - ``parameters`` -- one or two symbols: the axes of the census (for a
+      Lie--Poisson system, symbols of `H` or of the ``levels``)
     - ``positive`` -- symbols declared positive (a parameter declared
       positive is censused over its positive values only)
     - ``values`` -- a dict of values for the other symbols; every symbol
@@ -994,6 +998,10 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
       ``dask.distributed`` worker runs its tasks in threads: with a Dask
       ``Client``, use :func:`sage_dynsym.scale.equilibrium_census`, which
       runs them in child processes of the workers
+    - ``levels`` -- for a Lie--Poisson system only: the levels of its
+      Casimirs, one per Casimir in the order of ``system.casimirs()`` (as
+      for its ``stationary_solutions``), numbers or expressions in the
+      parameters
 
     OUTPUT: a :class:`Census`
 
@@ -1042,7 +1050,37 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         Traceback (most recent call last):
         ...
         AnalysisError: executor: the sample point {a: -1} was sent to a thread (ThreadPoolExecutor-...), where Sage's PARI cannot run; ...client=...
+
+    A Lie--Poisson system: the free rigid body on the spheres `|M|^2 = c^2`
+    (see :mod:`~sage_dynsym.analysis.leaf_census`)::
+
+        sage: from sage_dynsym import LiePoissonSystem
+        sage: M1, M2, M3, c = var('M1 M2 M3 c')
+        sage: S = LiePoissonSystem('so3', M1^2/2 + M2^2/4 + M3^2/6)
+        sage: equilibrium_census(S, [c], levels=[c^2], positive=[c])
+        Census of the relative equilibria on the levels M1^2 + M2^2 + M3^2 = c^2 over c > 0: bifurcation set []
+          0 < c (sample c = 1): 6 relative equilibria, 4 stable
+        sage: equilibrium_census(S, [c], levels=[c], chart=1)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: chart: a Lie-Poisson system has no chart or regular chart: its relative equilibria are points of its variables
+        sage: equilibrium_census(L, [a], values={b: 0}, levels=[1])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: levels: levels= is for a Lie-Poisson system (the levels of its Casimirs); a Lagrangian's census takes values=
     """
+    if hasattr(system, 'casimirs') and hasattr(system, 'poisson_matrix'):
+        if chart is not None or regular is not None:
+            raise AnalysisError("a Lie-Poisson system has no chart or regular chart: its "
+                                "relative equilibria are points of its variables",
+                                entry="chart")
+        from .leaf_census import leaf_census
+        return leaf_census(system.hamiltonian(), system.casimirs(), system.poisson_matrix(),
+                           system.variables(), parameters, levels, positive=positive,
+                           values=values, executor=executor)
+    if levels is not None:
+        raise AnalysisError("levels= is for a Lie-Poisson system (the levels of its "
+                            "Casimirs); a Lagrangian's census takes values=", entry="levels")
     parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
     positive = symbol_arguments(positive, 'positive', error=AnalysisError)
     if len(parameters) not in (1, 2):

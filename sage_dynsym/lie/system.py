@@ -536,6 +536,55 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
                                      multipliers=multipliers, levels=levels, positive=positive,
                                      solve_for=solve_for)
 
+    def equilibrium_census(self, parameters, levels=None, positive=None, values=None,
+                           executor=None):
+        r"""
+        The census of the relative equilibria on the levels of the Casimirs
+        over one or two parameters (symbols of `H` or of the ``levels``):
+        the bifurcation set, the cells, and in each the numbers of isolated
+        relative equilibria, of stable ones (energy--Casimir; in first
+        approximation on the leaf) and the families; see
+        :func:`~sage_dynsym.analysis.leaf_census.leaf_census`.
+
+        INPUT:
+
+        - ``parameters`` -- one or two symbols
+        - ``levels`` -- one level per Casimir, in the order of
+          :meth:`casimirs` (as for :meth:`stationary_solutions`): numbers
+          or expressions in the parameters
+        - ``positive`` -- (default: :meth:`positive_parameters`) symbols
+          declared positive; a parameter declared positive is censused over
+          its positive values
+        - ``values`` -- values of the other parameters
+        - ``executor`` -- as for
+          :func:`~sage_dynsym.analysis.census.equilibrium_census`
+
+        OUTPUT: a :class:`~sage_dynsym.analysis.census.Census`
+
+        EXAMPLES: the free rigid body on the sphere `|M|^2 = 1`, with the
+        moments of inertia `1, a, 3`: the rotations about the largest and
+        the smallest axes are stable whatever the order (Euler; Arnold,
+        *Mathematical Methods*, §29); the bifurcations are at `a = 1` and
+        `a = 3`, where two moments are equal and a circle of relative
+        equilibria replaces four of them (at such a value ``count_at``
+        counts the isolated ones only)::
+
+            sage: from sage_dynsym.lie.system import LiePoissonSystem
+            sage: M1, M2, M3, a, c = var('M1 M2 M3 a c')
+            sage: S = LiePoissonSystem('so3', (M1^2 + M2^2/a + M3^2/3)/2, positive=[a])
+            sage: S.equilibrium_census([a], levels=[1])
+            Census of the relative equilibria on the levels M1^2 + M2^2 + M3^2 = 1 over a > 0: bifurcation set [a - 1, a - 3]
+              0 < a < 1 (sample a = 1/2): 6 relative equilibria, 4 stable
+              1 < a < 3 (sample a = 2): 6 relative equilibria, 4 stable
+              3 < a (sample a = 4): 6 relative equilibria, 4 stable
+            sage: S.equilibrium_census([a], levels=[1]).count_at({a: 3})
+            (2, 2)
+        """
+        from ..analysis.census import equilibrium_census
+        return equilibrium_census(self, parameters, levels=levels, values=values,
+                                  positive=self._positive if positive is None else positive,
+                                  executor=executor)
+
     def linearize(self, at):
         r"""
         The first-approximation system at the equilibrium ``at`` (a dict
