@@ -90,7 +90,9 @@ from .charts import configuration_points, same_point
 from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
 
-__all__ = ['discriminant_polynomials', 'stationary_ideal', 'add_zero_set_factors', 'check_main_thread', 'sample_runner', 'first_approximation_polynomials', 'equilibria_at',
+__all__ = ['discriminant_polynomials', 'stationary_ideal', 'add_zero_set_factors',
+           'check_main_thread', 'sample_runner', 'verdict_counts', 'polynomials_inside',
+           'census_cells', 'first_approximation_polynomials', 'equilibria_at',
            'CensusCell', 'Census',
            'equilibrium_census']
 
@@ -443,7 +445,17 @@ def _points(system, values, chart, stationary_motions, positive):
     return [(p, point_verdict(p, problem, gyroscopic)) for p in points]
 
 
-def _counts(verdicts):
+def verdict_counts(verdicts):
+    r"""
+    The counts of a cell from the verdicts of its equilibria: ``(count,
+    stable, stable with those in first approximation, undecided)``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import verdict_counts
+        sage: verdict_counts(['stable', 'unstable', 'stable in first approximation', 'undecided'])
+        (4, 1, 2, 1)
+    """
     stable = sum(1 for v in verdicts if v == 'stable')
     linear = sum(1 for v in verdicts if v in STABLE_VERDICTS)
     undecided = sum(1 for v in verdicts if v == 'undecided')
@@ -454,7 +466,7 @@ def _count_task(system, values, chart, regular, positive):
     r"""One sample point's counts (a task: module level, picklable arguments)."""
     check_main_thread(values)
     _log(f"solving at {values}")
-    return _counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
+    return verdict_counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
 
 
 def check_main_thread(values):
@@ -1069,15 +1081,15 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         ...
         AnalysisError: levels: levels= is for a Lie-Poisson system (the levels of its Casimirs); a Lagrangian's census takes values=
     """
-    if hasattr(system, 'casimirs') and hasattr(system, 'poisson_matrix'):
+    if hasattr(system, 'casimirs') and hasattr(system, 'equilibrium_census'):
         if chart is not None or regular is not None:
             raise AnalysisError("a Lie-Poisson system has no chart or regular chart: its "
                                 "relative equilibria are points of its variables",
                                 entry="chart")
-        from .leaf_census import leaf_census
-        return leaf_census(system.hamiltonian(), system.casimirs(), system.poisson_matrix(),
-                           system.variables(), parameters, levels, positive=positive,
-                           values=values, executor=executor)
+        # the system hands its Hamiltonian, Casimirs and Poisson matrix to
+        # leaf_census (which builds on this module)
+        return system.equilibrium_census(parameters, levels=levels, positive=positive,
+                                         values=values, executor=executor)
     if levels is not None:
         raise AnalysisError("levels= is for a Lie-Poisson system (the levels of its "
                             "Casimirs); a Lagrangian's census takes values=", entry="levels")
@@ -1108,7 +1120,7 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         q2, W2 = _amended_potential(regular[0])
         polys += [f for f in discriminant_polynomials(SR(W2).subs(values), q2, parameters)
                   if all(not bool(SR(f) - g == 0) for g in polys)]
-    polys = _inside(polys, parameters, signs)
+    polys = polynomials_inside(polys, parameters, signs)
     _log(f"bifurcation set {polys}")
     fixed2 = None if regular is None else \
         ((regular[0].subs(values) if values else regular[0]), regular[1])
@@ -1127,11 +1139,11 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
             more += [f for f in first_approximation_polynomials(model, parameters, positive)
                      if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0)
                             for g in polys + more)]
-        more = _inside(more, parameters, signs)
+        more = polynomials_inside(more, parameters, signs)
         _log(f"first-approximation boundaries {more}")
-        return polys + more, _decomposition(polys + more, parameters, signs, counts_of)
+        return polys + more, census_cells(polys + more, parameters, signs, counts_of)
 
-    return Census(parameters, polys, _decomposition(polys, parameters, signs, counts_of),
+    return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
                   task, positive, region=signs if len(parameters) == 2 else None,
                   refine=refine)
 
@@ -1161,18 +1173,39 @@ def sample_runner(task, arguments_of, executor):
     return counts_of
 
 
-def _inside(polys, parameters, signs):
-    r"""For one parameter, the factors with a zero inside the declared
-    signs (only those bound cells); for two, all."""
+def polynomials_inside(polys, parameters, signs):
+    r"""
+    For one parameter, the factors with a zero inside the declared signs
+    (only those bound cells; ``signs`` says for each parameter whether it
+    is declared positive); for two, all.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import polynomials_inside
+        sage: c = var('c')
+        sage: polynomials_inside([c + 1, c - 2, c^2 + 1], [c], [True])
+        [c - 2]
+    """
     if len(parameters) != 1:
         return polys
     return [f for f in polys if any(r > 0 or not signs[0] for r in
                                     _real_roots([f], parameters[0], False))]
 
 
-def _decomposition(polys, parameters, signs, counts_of):
-    r"""The cells adapted to ``polys``, with the counts at their samples
-    (``counts_of`` a list of samples)."""
+def census_cells(polys, parameters, signs, counts_of):
+    r"""
+    The cells adapted to ``polys`` (one or two ``parameters``, ``signs``
+    whether each is declared positive), with the counts at their samples:
+    ``counts_of`` maps a list of samples to their counts.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import census_cells
+        sage: c = var('c')
+        sage: census_cells([c - 1], [c], [True], lambda samples: [(1, 0, 0, 0)] * len(samples))
+        [0 < c < 1 (sample c = 1/2): 1 equilibrium, 0 stable,
+         1 < c (sample c = 2): 1 equilibrium, 0 stable]
+    """
     if len(parameters) == 1:
         shape = [(c.description(), c.sample(), c.bounds())
                  for c in _cells_one(polys, parameters[0], signs[0], lambda s: None)]

@@ -78,6 +78,7 @@ REFERENCES:
 import random
 
 from sage.matrix.constructor import matrix
+from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.qqbar import AA, QQbar
 from sage.symbolic.ring import SR
@@ -85,7 +86,7 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..arguments import symbol_arguments
 from .census import (Census, stationary_ideal, add_zero_set_factors, check_main_thread,
-                     sample_runner, _counts, _decomposition, _inside, _log)
+                     sample_runner, verdict_counts, census_cells, polynomials_inside)
 from .charts import configuration_points
 from .energy_casimir import energy_casimir_stability
 from .point_stability import spectrum_verdict
@@ -93,6 +94,10 @@ from .stationary import stationary_solutions
 
 __all__ = ['has_real_points', 'leaf_bifurcation_polynomials', 'relative_equilibria_at',
            'leaf_census']
+
+def _log(message, level=1):
+    verbose(f"equilibrium_census: {message}", level=level)
+
 
 #: the number of random choices tried before a critical locus is given up
 ATTEMPTS = 4
@@ -339,7 +344,7 @@ def _leaf_task(system, values):
     points, families = relative_equilibria_at(
         SR(H).subs(values), casimirs, matrix(SR, J).subs(values), x,
         [SR(c).subs(values) for c in levels])
-    return _counts([v for _, v in points]) + (families,)
+    return verdict_counts([v for _, v in points]) + (families,)
 
 
 def _symbols(expressions, skip):
@@ -455,7 +460,7 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
     J = matrix(SR, poisson_matrix).subs(values)
     levels = [SR(c).subs(values) for c in levels]
     signs = [any(str(p) == str(s) for s in positive) for p in parameters]
-    polys = _inside(leaf_bifurcation_polynomials(H, casimirs, x, levels, parameters),
+    polys = polynomials_inside(leaf_bifurcation_polynomials(H, casimirs, x, levels, parameters),
                     parameters, signs)
     _log(f"bifurcation set {polys}")
     system = (H, list(casimirs), J, x, levels)
@@ -467,6 +472,6 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
                             "cell is its count at the sample", entry="first_approximation")
     what = "the relative equilibria on the levels " + \
         ", ".join(f"{C} = {c}" for C, c in zip(casimirs, levels))
-    return Census(parameters, polys, _decomposition(polys, parameters, signs, counts_of),
+    return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
                   lambda at: _leaf_task(system, at), positive,
                   region=signs if len(parameters) == 2 else None, refine=refine, what=what)

@@ -580,10 +580,10 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             sage: S.equilibrium_census([a], levels=[1]).count_at({a: 3})
             (2, 2)
         """
-        from ..analysis.census import equilibrium_census
-        return equilibrium_census(self, parameters, levels=levels, values=values,
-                                  positive=self._positive if positive is None else positive,
-                                  executor=executor)
+        from ..analysis.leaf_census import leaf_census
+        return leaf_census(self._H, self.casimirs(), self.poisson_matrix(), self.variables(),
+                           parameters, levels, values=values, executor=executor,
+                           positive=self._positive if positive is None else positive)
 
     def linearize(self, at):
         r"""
