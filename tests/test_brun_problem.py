@@ -15,6 +15,15 @@ independent computations:
   least squares from many random starts (SciPy), six isolated points, plus
   Brun's rotations M = +-sqrt(eps) I gamma exactly where sqrt(eps) I1 < |c|
   < sqrt(eps) I3; against the package's stationary solutions on the level.
+- The census over the area constant c (equilibrium_census with levels
+  [c, 1]): its bifurcation values are sqrt(eps) I_k (the worksheet's table);
+  at random levels inside each cell, the least-squares search finds as many
+  rotations about the axes as the cell counts, Brun's rotations exactly in
+  the cells with a curve of relative equilibria, as many axes with a
+  definite second variation of H - lambda.C on the tangent space of the leaf
+  (NumPy, with the multipliers by least squares) as the cell's stable count,
+  and as many without a growing mode of the linearization (NumPy) as its
+  count stable in first approximation.
 """
 import numpy as np
 import pytest
@@ -159,3 +168,48 @@ def test_package_on_levels_against_least_squares(brun):
         assert np.allclose(explicit, numeric, atol=1e-6)
         # the curves of the package are Brun's rotations: M = +-I gamma on its points
         assert all(s.dimension() == 1 for s in sols if not s.is_explicit())
+
+
+def energy_casimir_definite(x):
+    """Whether H - l1 (M, gamma) - l2 (gamma, gamma) has a definite second
+    variation on the tangent space of the leaf at x (NumPy)."""
+    I = np.array(INERTIA, dtype=float)
+    M, G = np.split(x, 2)
+    grad_H = np.concatenate([M / I, EPS * I * G])
+    grads = np.array([np.concatenate([G, M]), np.concatenate([np.zeros(3), 2 * G])])
+    lam = np.linalg.lstsq(grads.T, grad_H, rcond=None)[0]
+    assert np.allclose(grads.T @ lam, grad_H, atol=1e-9)       # a relative equilibrium
+    hess = np.diag(np.concatenate([1 / I, EPS * I]))
+    hess -= lam[0] * np.block([[np.zeros((3, 3)), np.eye(3)], [np.eye(3), np.zeros((3, 3))]])
+    hess -= lam[1] * np.diag([0, 0, 0, 2, 2, 2])
+    tangent = np.linalg.svd(grads)[2][2:].T                    # the null space of the gradients
+    eig = np.linalg.eigvalsh(tangent.T @ hess @ tangent)
+    return bool(all(eig > 1e-9) or all(eig < -1e-9))
+
+
+@pytest.mark.slow       # the census (about 6 s) and a least-squares search on 8 levels
+def test_census_over_the_area_constant(brun):
+    S = brun[0]
+    c = var('c')
+    census = S.equilibrium_census([c], levels=[c, 1], positive=[c])
+    # the bifurcation values of the worksheet's table: |c| = sqrt(eps) I_k
+    assert [float(v) for v in census.bifurcation_values()] == \
+        pytest.approx([np.sqrt(EPS) * i for i in INERTIA])
+    rng = np.random.default_rng(17)
+    for cell in census.cells():
+        lo, hi = cell.bounds()
+        hi = float(lo) + 3 if hi is None else float(hi)
+        for level in rng.uniform(float(lo) + 0.05, hi - 0.05, size=2):
+            points = stationary_on_level(level)
+            axes = {}
+            for x in points:
+                for k in range(3):
+                    if abs(abs(x[3 + k]) - 1) < 1e-7:
+                        axes[(k, int(np.sign(x[3 + k])))] = x
+            others = [x for x in points if not any(abs(abs(x[3 + k]) - 1) < 1e-7
+                                                   for k in range(3))]
+            assert cell.count() == len(axes), (cell, level)
+            assert cell.families() == ([1] if others else []), (cell, level)
+            assert cell.stable_count() == sum(energy_casimir_definite(x) for x in axes.values())
+            assert cell.stable_count(first_approximation=True) == \
+                sum(max_real_part(x) < 1e-7 for x in axes.values()), (cell, level)
