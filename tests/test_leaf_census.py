@@ -1,0 +1,104 @@
+"""
+The census of relative equilibria on the symplectic leaves
+(sage_dynsym.analysis.leaf_census) against results from outside the code:
+
+- the free rigid body (Euler's top) on so(3)*, H = 1/2 sum M_i^2 / I_i, on
+  the spheres |M|^2 = c^2: six relative equilibria on every sphere c != 0
+  (the rotations about the principal axes), four of them stable (the
+  largest and the smallest axes: Euler; Arnold, Mathematical Methods, 29),
+  the only bifurcation at c = 0. Checked against a least-squares search for
+  the equilibria on random spheres (SciPy) and the definiteness of the
+  second variation of H - lambda |M|^2 on the tangent space of the sphere
+  (NumPy), at random moments of inertia;
+- a symmetric body, I_1 = I_2: the rotations about the equatorial axes form
+  a circle on each sphere (M_3 = 0), reported as a family, not as points;
+- two parameters (a moment of inertia and the level): the bifurcation
+  curves are where two moments are equal and where the sphere shrinks to
+  a point; the plot draws them.
+"""
+import numpy as np
+import pytest
+from scipy.optimize import least_squares
+
+from sage.all import var, QQ
+from sage_dynsym.lie import LiePoissonSystem
+from sage_dynsym.analysis.census import equilibrium_census
+from sage_dynsym.errors import AnalysisError
+
+M1, M2, M3, c, a = var('M1 M2 M3 c a')
+
+
+def euler_points(inertia, radius, starts=60, seed=3):
+    """The equilibria of M' = M x (M / I) on |M| = radius, by least squares."""
+    rng = np.random.default_rng(seed)
+    inertia = np.asarray(inertia, dtype=float)
+
+    def residual(m):
+        return np.concatenate([np.cross(m, m / inertia), [m @ m - radius**2]])
+    found = []
+    for _ in range(starts):
+        fit = least_squares(residual, rng.normal(size=3) * radius, xtol=1e-15, ftol=1e-15,
+                            gtol=1e-15)
+        if fit.cost < 1e-24 and not any(np.allclose(fit.x, y, atol=1e-7) for y in found):
+            found.append(fit.x)
+    return found
+
+
+def energy_casimir_definite(inertia, m):
+    """The second variation of H - l |M|^2 on the tangent plane of the sphere."""
+    inertia = np.asarray(inertia, dtype=float)
+    l = np.linalg.lstsq((2 * m)[:, None], m / inertia, rcond=None)[0][0]
+    tangent = np.linalg.svd(m[None, :])[2][1:].T
+    eig = np.linalg.eigvalsh(tangent.T @ np.diag(1 / inertia - 2 * l) @ tangent)
+    return bool(all(eig > 1e-9) or all(eig < -1e-9))
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_euler_top_against_least_squares(seed):
+    rng = np.random.default_rng(seed)
+    inertia = sorted(QQ(int(k)) / 4 for k in rng.choice(np.arange(1, 40), 3, replace=False))
+    S = LiePoissonSystem('so3', sum(m**2 / i for m, i in zip([M1, M2, M3], inertia)) / 2)
+    census = equilibrium_census(S, [c], levels=[c**2])
+    assert census.bifurcation_set() == [c]
+    assert len(census.cells()) == 2
+    for cell in census.cells():
+        assert cell.families() == []
+        for radius in rng.uniform(0.2, 5, size=2):
+            points = euler_points([float(i) for i in inertia], radius)
+            assert cell.count() == len(points) == 6
+            assert cell.stable_count() == sum(energy_casimir_definite(inertia, m)
+                                              for m in points) == 4
+            # the middle axis is a saddle of H on the sphere: unstable
+            assert cell.stable_count(first_approximation=True) == 4
+
+
+def test_symmetric_body_has_a_circle_of_relative_equilibria():
+    S = LiePoissonSystem('so3', (M1**2 + M2**2) / 2 + M3**2 / 6)
+    cell, = equilibrium_census(S, [c], levels=[c], positive=[c]).cells()
+    # M = (0, 0, +-sqrt(c)) and the circle M3 = 0 (every equatorial axis)
+    assert (cell.count(), cell.stable_count(), cell.families()) == (2, 2, [1])
+    assert "2 isolated, 2 stable, and a curve of relative equilibria" in str(cell)
+
+
+def test_two_parameters_and_the_plot():
+    S = LiePoissonSystem('so3', (M1**2 + M2**2 / a + M3**2 / 3) / 2)
+    census = S.equilibrium_census([a, c], levels=[c], positive=[a, c])
+    assert sorted(map(str, census.bifurcation_set())) == ['a - 1', 'a - 3', 'c']
+    for cell in census.cells():
+        sample = cell.sample()
+        inertia = [1, float(sample[a]), 3]
+        points = euler_points(inertia, np.sqrt(float(sample[c])))
+        assert cell.count() == len(points) == 6
+        assert cell.stable_count() == sum(energy_casimir_definite(inertia, m) for m in points)
+    G = census.plot()
+    assert len(G) >= len(census.cells()) + 3       # the cells and the three curves
+
+
+def test_errors():
+    S = LiePoissonSystem('so3', (M1**2 + M2**2 / a + M3**2 / 3) / 2)
+    with pytest.raises(AnalysisError, match="give one level per Casimir"):
+        S.equilibrium_census([a])
+    with pytest.raises(AnalysisError, match="give a value to a"):
+        S.equilibrium_census([c], levels=[c])
+    with pytest.raises(AnalysisError, match="neither a symbol of H nor of the levels"):
+        S.equilibrium_census([var('b')], levels=[c], values={a: 2})
