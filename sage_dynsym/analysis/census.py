@@ -3,8 +3,9 @@ A census of equilibria over the parameter space
 
 For which values of the parameters are there how many equilibria, and how
 many of them are stable? :func:`equilibrium_census` answers it exactly for
-the stationary motions of a Lagrangian or Routh function whose stationary
-equations depend on one or two parameters:
+the stationary motions of a Lagrangian or Routh function (and for the
+relative equilibria of a Lie--Poisson system on its symplectic leaves, see
+below) whose stationary equations depend on one or two parameters:
 
 1. the *bifurcation set*: the polynomials in the parameters whose zero sets
    bound the regions where the number of real equilibria is constant. With
@@ -34,6 +35,16 @@ equations depend on one or two parameters:
 The values where only a chart artifact degenerates (solutions on the
 chart's singular set that are not equilibria) are in the bifurcation set
 too; the counts on both sides of them are equal.
+
+For a Lie--Poisson system the census is over the relative equilibria on
+the levels of its Casimirs, the levels given by ``levels=`` (numbers or
+expressions in the parameters): the critical points of `H` on the leaf,
+by the same steps with `W = H - \lambda\cdot(C - c)` in the variables and
+the multipliers, the stability on the leaf by the energy--Casimir method
+and the linearization restricted to the leaf, and the positive-dimensional
+families of relative equilibria reported by the cells
+(:meth:`CensusCell.families`), not counted:
+:mod:`~sage_dynsym.analysis.leaf_census`.
 
 The stable count in first approximation changes also where an equilibrium
 stays nondegenerate but its linearization changes (gyroscopic

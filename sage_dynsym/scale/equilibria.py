@@ -281,7 +281,7 @@ def _names(variables):
 
 def equilibrium_census(system, parameters, positive=(), values=None, chart=None, regular=None,
                        client=None, workers=None, timeout=DEFAULT_TIMEOUT,
-                       threshold=CLUSTER_THRESHOLD):
+                       threshold=CLUSTER_THRESHOLD, levels=None):
     r"""
     The census of the equilibria of :func:`sage_dynsym.analysis.census.equilibrium_census`,
     its sample points solved on Dask when the work is large.
@@ -289,7 +289,9 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     INPUT:
 
     - ``system``, ``parameters``, ``positive``, ``values``, ``chart``,
-      ``regular`` -- as for :func:`sage_dynsym.analysis.census.equilibrium_census`
+      ``regular``, ``levels`` -- as for
+      :func:`sage_dynsym.analysis.census.equilibrium_census` (``levels``:
+      of the Casimirs of a Lie--Poisson system)
     - ``client``, ``workers``, ``timeout``, ``threshold`` -- where the
       sample points are solved, as for
       :func:`~sage_dynsym.scale.cluster.run_in_processes`: by default in
@@ -328,6 +330,16 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
           0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
           1 < w (sample w = 2): 4 equilibria, 2 stable
 
+    A Lie--Poisson system on the levels of its Casimirs (the free rigid
+    body on the spheres `|M|^2 = c`)::
+
+        sage: from sage_dynsym import LiePoissonSystem
+        sage: M1, M2, M3, c = var('M1 M2 M3 c')
+        sage: S = LiePoissonSystem('so3', M1^2/2 + M2^2/4 + M3^2/6)
+        sage: equilibrium_census(S, [c], levels=[c], positive=[c], client=False)
+        Census of the relative equilibria on the levels M1^2 + M2^2 + M3^2 = c over c > 0: bifurcation set []
+          0 < c (sample c = 1): 6 relative equilibria, 4 stable
+
     TESTS::
 
         sage: equilibrium_census(L, [w], client=42)
@@ -345,4 +357,5 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
                                 timeout=timeout, threshold=threshold)
 
     return census.equilibrium_census(system, parameters, positive=positive, values=values,
-                                     chart=chart, regular=regular, executor=executor)
+                                     chart=chart, regular=regular, executor=executor,
+                                     levels=levels)
