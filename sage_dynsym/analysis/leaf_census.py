@@ -147,11 +147,9 @@ def _prime_has_real_points(Q):
         return bool(Q.variety(AA))
     R = Q.ring()
     x = R.gens()
-    gens = [g for g in Q.gens() if g != 0]
     for attempt in range(ATTEMPTS):
         rng = random.Random(attempt)
-        combos = [sum(rng.randint(-9, 9) * g for g in gens) for _ in range(len(x) - d)]
-        rows = [[f.derivative(v) for v in x] for f in combos]
+        rows = [[f.derivative(v) for v in x] for f in _combinations(Q, len(x) - d, rng)]
         rows.append([v - rng.randint(-9, 9) for v in x])
         Z = Q + R.ideal(matrix(R, rows).minors(len(x) - d + 1))
         # a strictly smaller subvariety (Q is prime): unless every point was
@@ -163,6 +161,14 @@ def _prime_has_real_points(Q):
                         entry="equilibrium_census")
 
 
+def _combinations(Q, count, rng):
+    r"""``count`` combinations of the generators of ``Q`` with random
+    integer coefficients: where `Q` has codimension ``count``, their
+    Jacobian matrix has the rank of that of `Q` at its generic points."""
+    gens = [g for g in Q.gens() if g != 0]
+    return [sum(rng.randint(-9, 9) * g for g in gens) for _ in range(count)]
+
+
 def _critical_locus(Q, state, fibre):
     r"""The polynomials in the parameters where the projection of the
     prime component ``Q`` (fibres of dimension ``fibre``) onto them is
@@ -170,11 +176,9 @@ def _critical_locus(Q, state, fibre):
     in the ``state`` variables of random combinations of its generators,
     eliminated (``[]`` when nothing was found in the attempts)."""
     R = Q.ring()
-    gens = [g for g in Q.gens() if g != 0]
     size = len(state) - fibre
     for attempt in range(ATTEMPTS):
-        rng = random.Random(attempt)
-        combos = [sum(rng.randint(-9, 9) * g for g in gens) for _ in range(size)]
+        combos = _combinations(Q, size, random.Random(attempt))
         minors = matrix(R, [[f.derivative(v) for v in state] for f in combos]).minors(size)
         found = [g for g in (Q + R.ideal(minors)).elimination_ideal(state).gens() if g != 0]
         if found:
@@ -260,9 +264,9 @@ def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
                                 entry="equilibrium_census")
         add_zero_set_factors(gens, found)
     for Q in families:
-        for other in primes:
+        for other in [R for R in primes if R is not Q]:
             meet = [g for g in (Q + other).elimination_ideal(state).gens() if g != 0]
-            if other is not Q and meet:
+            if meet:
                 add_zero_set_factors(meet, found)
     return sorted((T.symbolic(f) for f in found), key=str)
 
