@@ -122,7 +122,10 @@ def census_plot(census, signs, xmin=None, xmax=None, ymin=None, ymax=None,
         labelled.add(key)
         G += polygon(lower + upper[::-1], color=colours[key], alpha=0.7, thickness=0,
                      **({'legend_label': label} if label else {}))
+    edges = [p for p, positive in zip(params, signs) if positive]
     for f in polys:
+        if any(bool(SR(f) == p) for p in edges):
+            continue    # the edge p = 0 of the window (an implicit plot there is degenerate)
         G += implicit_plot(SR(f), (p1, xmin, xmax), (p2, ymin, ymax), color='black')
     G.axes_labels([str(p1), str(p2)])
     G.set_axes_range(xmin, xmax, ymin, ymax)
