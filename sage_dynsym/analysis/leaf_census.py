@@ -81,6 +81,7 @@ from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.qqbar import AA, QQbar
+from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
@@ -139,10 +140,53 @@ def has_real_points(ideal):
     return any(_prime_has_real_points(Q) for Q in ideal.minimal_associated_primes())
 
 
+def _without_linear_variables(Q):
+    r"""
+    The prime ``Q`` in fewer variables, with the same real points up to a
+    polynomial bijection: a variable `v` of a generator `a v + h` (`a` a
+    nonzero rational, `h` free of `v`) is `-h/a`, substituted into the
+    others; variables that no generator uses (free) are dropped. A boolean
+    when no variable is left: whether there are (real) points.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.leaf_census import _without_linear_variables
+        sage: R.<x, y, z, w> = QQ[]
+        sage: _without_linear_variables(R.ideal([y - x^2, z^2 + y^2 - 1]))
+        Ideal (x^4 + z^2 - 1) of Multivariate Polynomial Ring in x, z over Rational Field
+    """
+    R = Q.ring()
+    gens = [g for g in Q.groebner_basis() if g != 0]
+    solved = True
+    while solved:
+        solved = False
+        for g in gens:
+            v = next((v for v in g.variables()
+                      if g.degree(v) == 1 and g.coefficient({v: 1}).is_constant()), None)
+            if v is not None:
+                a = QQ(g.coefficient({v: 1}))
+                value = -(g - a * v) / a
+                gens = [f.subs({v: value}) for f in gens if f is not g]
+                gens = [f for f in gens if f != 0]
+                solved = True
+                break
+    used = [v for v in R.gens() if any(f.degree(v) > 0 for f in gens)]
+    if not used:
+        return not gens     # no relation left: real (a constant one: no point)
+    S = PolynomialRing(R.base_ring(), len(used), [str(v) for v in used])   # multivariate
+    image = R.hom([S(str(v)) if v in used else S.zero() for v in R.gens()], S)
+    return S.ideal([image(f) for f in gens])
+
+
 def _prime_has_real_points(Q):
     d = Q.dimension()
     if d < 0:
         return False
+    reduced = _without_linear_variables(Q)
+    if isinstance(reduced, bool):
+        return reduced
+    if reduced.ring().ngens() < Q.ring().ngens():
+        return has_real_points(reduced)
     if d == 0:
         return bool(Q.variety(AA))
     R = Q.ring()
@@ -172,14 +216,18 @@ def _combinations(Q, count, rng):
 def _critical_locus(Q, state, fibre):
     r"""The polynomials in the parameters where the projection of the
     prime component ``Q`` (fibres of dimension ``fibre``) onto them is
-    not a submersion: ``Q`` with the maximal minors of the Jacobian matrix
-    in the ``state`` variables of random combinations of its generators,
-    eliminated (``[]`` when nothing was found in the attempts)."""
+    not a submersion: ``Q`` with the maximal minors of the Jacobian matrices
+    in the ``state`` variables of two choices of random combinations of its
+    generators, eliminated (``[]`` when nothing was found in the attempts).
+    Each choice adds the points where its own combinations lose rank; the
+    two together keep only those where `Q`'s Jacobian matrix does."""
     R = Q.ring()
     size = len(state) - fibre
-    for attempt in range(ATTEMPTS):
-        combos = _combinations(Q, size, random.Random(attempt))
-        minors = matrix(R, [[f.derivative(v) for v in state] for f in combos]).minors(size)
+    for attempt in range(0, 2 * ATTEMPTS, 2):
+        minors = []
+        for rng in (random.Random(attempt), random.Random(attempt + 1)):
+            combos = _combinations(Q, size, rng)
+            minors += matrix(R, [[f.derivative(v) for v in state] for f in combos]).minors(size)
         found = [g for g in (Q + R.ideal(minors)).elimination_ideal(state).gens() if g != 0]
         if found:
             return found
@@ -333,10 +381,20 @@ def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
                                 levels=list(levels))
     found = []
     points = configuration_points(sols, None, found)
-    families = sorted(s.dimension() for s in found if has_real_points(s.solution().ideal()))
+    families = sorted(s.dimension() for s in found if _is_real_family(s, sols.multipliers()))
     verdicts = [_leaf_verdict(H, casimirs, poisson_matrix, x, field,
                               {v: SR(p.value(v)) for v in x}) for p in points]
     return list(zip(points, verdicts)), families
+
+
+def _is_real_family(solution, multipliers):
+    r"""Whether a family of relative equilibria has real points: those of
+    its projection on the variables (on a regular leaf the multipliers are
+    the unique, real, solution of a linear system at a real point)."""
+    inner = solution.solution()
+    T = inner.translation()
+    eliminated = [g for m in multipliers for g in T.generators_of(m)]
+    return has_real_points(inner.ideal().elimination_ideal(eliminated))
 
 
 def _leaf_task(system, values):
