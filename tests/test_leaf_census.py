@@ -12,6 +12,14 @@ The census of relative equilibria on the symplectic leaves
   (NumPy), at random moments of inertia;
 - a symmetric body, I_1 = I_2: the rotations about the equatorial axes form
   a circle on each sphere (M_3 = 0), reported as a family, not as points;
+- the heavy Lagrange top (A = B = 1, C = 2, m g l = 1, the centre of mass
+  above the fixed point, gamma the upward vertical) on (M, gamma) = c,
+  (gamma, gamma) = 1: the upright sleeping top is stable for c^2 > 4 A m g l
+  (Maievski), the hanging one always; the permanent rotations about the
+  vertical with the axis inclined (M = W I gamma, W^2 gamma3 = m g l, so
+  c = W + W^-3 with W > 1) exist for c > 4 * 3^(-3/4) (the least value of
+  W + W^-3) -- two circles up to c = 2 (W -> 1: the upright top), one
+  above; checked by a least-squares search;
 - two parameters (a moment of inertia and the level): the bifurcation
   curves are where two moments are equal and where the sphere shrinks to
   a point; the plot draws them.
@@ -103,3 +111,44 @@ def test_errors():
         S.equilibrium_census([c], levels=[c])
     with pytest.raises(AnalysisError, match="neither a symbol of H nor of the levels"):
         S.equilibrium_census([var('b')], levels=[c], values={a: 2})
+
+
+def lagrange_top_points(level, starts=80, seed=11):
+    """The relative equilibria of the Lagrange top above on the level, by least squares."""
+    rng = np.random.default_rng(seed)
+    inertia = np.array([1.0, 1.0, 2.0])
+
+    def residual(x):
+        m, g = np.split(x, 2)
+        field = np.concatenate([np.cross(m, m / inertia) + np.cross(g, [0, 0, 1]),
+                                np.cross(g, m / inertia)])
+        return np.concatenate([field, [g @ g - 1, m @ g - level]])
+    found = []
+    for _ in range(starts):
+        fit = least_squares(residual, rng.normal(size=6) * 2, xtol=1e-15, ftol=1e-15, gtol=1e-15)
+        if fit.cost < 1e-24:
+            found.append(fit.x)
+    return found
+
+
+@pytest.mark.slow       # the census takes about 10 s
+def test_lagrange_top():
+    g1, g2, g3 = var('gamma1 gamma2 gamma3')
+    S = LiePoissonSystem('e3', (M1**2 + M2**2) / 2 + M3**2 / 4 + g3)
+    census = S.equilibrium_census([c], levels=[c, 1], positive=[c])
+    assert [float(v) for v in census.bifurcation_values()] == pytest.approx([4 * 3**-0.75, 2])
+    expected = [(2, 1, []), (2, 1, [1]), (2, 2, [1])]      # (count, stable, families)
+    assert [(x.count(), x.stable_count(), x.families()) for x in census.cells()] == expected
+    for cell in census.cells():
+        level = float(cell.sample()[c])
+        points = lagrange_top_points(level)
+        vertical = {int(np.sign(x[5])) for x in points if abs(abs(x[5]) - 1) < 1e-7}
+        inclined = [x for x in points if abs(abs(x[5]) - 1) > 1e-7]
+        assert len(vertical) == cell.count()
+        assert bool(inclined) == bool(cell.families())
+        for x in inclined:      # M = W I gamma with W^2 gamma3 = 1
+            m, g = np.split(x, 2)
+            w = m[2] / (2 * g[2])
+            assert np.allclose(m, w * np.array([1, 1, 2]) * g) and abs(w**2 * g[2] - 1) < 1e-7
+        # the upright top (gamma3 = 1, M3 = c) is stable exactly for c > 2
+        assert cell.stable_count() == 1 + (level > 2)
