@@ -77,6 +77,7 @@ REFERENCES:
 """
 import random
 
+from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
@@ -234,6 +235,31 @@ def _critical_locus(Q, state, fibre):
     return []
 
 
+def _components(ideal):
+    r"""
+    The minimal associated primes of ``ideal``, split first by Singular's
+    factorizing Groebner basis (the whole ideal, with the parameters as
+    variables, can take minutes where its parts take milliseconds); the
+    primes of one part contained in those of another dropped.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.leaf_census import _components
+        sage: R.<x, y> = QQ[]
+        sage: sorted(str(Q.gens()) for Q in _components(R.ideal([x*y, x*(x - 1)])))
+        ['[x]', '[y, x - 1]']
+        sage: sorted(str(Q.gens()) for Q in _components(R.ideal([x*y*(y - 1), x*(x - 1)*y])))
+        ['[x]', '[y - 1, x - 1]', '[y]']
+    """
+    R = ideal.ring()
+    found = []
+    for part in ff.facstd(ideal):
+        for Q in R.ideal(list(part)).minimal_associated_primes():
+            if all(Q != K for K in found):
+                found.append(Q)
+    return [Q for Q in found if not any(K != Q and K <= Q for K in found)]
+
+
 def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
     r"""
     The bifurcation set of the relative equilibria of `H` on the levels
@@ -291,7 +317,7 @@ def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
                 f"{', '.join(map(str, parameters))}: choose levels where the leaves are "
                 "regular", entry="levels")
         add_zero_set_factors(singular, found)
-    primes = ideal.minimal_associated_primes()
+    primes = _components(ideal)
     _log(f"{len(primes)} components of the relative equilibria")
     families = []
     for Q in primes:
