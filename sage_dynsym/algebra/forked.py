@@ -15,7 +15,10 @@ EXAMPLES::
     sage: from sage_dynsym.algebra.forked import forked
     sage: forked(lambda send: factor(2^64 + 1), 60)
     ([], ('value', 274177 * 67280421310721))
-    sage: forked(lambda send: [send(k) for k in range(3)] and sleep(10), 1)
+    sage: forked(lambda send: [send(k) for k in range(3)] and sleep(10), 1, receive=print)
+    0
+    1
+    2
     ([0, 1, 2], ('timeout', 1))
 """
 import os
@@ -31,7 +34,7 @@ __all__ = ['forked']
 _LENGTH = struct.Struct('>Q')
 
 
-def forked(compute, seconds=None):
+def forked(compute, seconds=None, receive=None):
     r"""
     Run ``compute(send)`` in a forked process stopped after ``seconds``.
 
@@ -42,6 +45,8 @@ def forked(compute, seconds=None):
       sent before the child was stopped is kept)
     - ``seconds`` -- (default: ``None``, no limit) wall-clock seconds after
       which the child is killed
+    - ``receive`` -- (optional) a function called here on each object sent,
+      as soon as it arrives (e.g. to print what the child computed)
 
     OUTPUT: a pair ``(sent, outcome)``: the list of the objects sent, and
     ``('value', v)`` (``compute`` returned ``v``), ``('error', e)`` (it
@@ -63,8 +68,9 @@ def forked(compute, seconds=None):
 
     TESTS::
 
-        sage: forked(lambda send: os._exit(3))
-        ([], ('died', 'exit status 3'))
+        sage: import signal
+        sage: forked(lambda send: os.kill(os.getpid(), signal.SIGKILL))
+        ([], ('died', 'killed by signal 9'))
         sage: class Unpicklable(Exception):
         ....:     __reduce__ = None
         sage: def f(send): raise Unpicklable("no")
@@ -81,7 +87,7 @@ def forked(compute, seconds=None):
     os.close(write_end)
     sent, outcome = [], None
     try:
-        outcome = _collect(read_end, seconds, sent)
+        outcome = _collect(read_end, seconds, sent, receive)
     finally:
         os.close(read_end)
         if outcome is None or outcome[0] == 'timeout':
@@ -95,7 +101,8 @@ def forked(compute, seconds=None):
 
 def _child(compute, write_end):
     # never returns: the child must not go on with the parent's program
-    status = 1
+    # (its callers' finally blocks, atexit handlers): it kills itself at the
+    # end, its outcome written (or the parent sees it died)
     try:
         try:
             from sage.interfaces.quit import invalidate_all
@@ -116,13 +123,12 @@ def _child(compute, write_end):
                     if outcome[0] == 'error' else "(the value")
             _write(write_end, ('error', RuntimeError(
                 f"{what} of the forked process could not be passed back)")))
-        status = 0
     finally:
         try:
             sys.stdout.flush()
             sys.stderr.flush()
         finally:
-            os._exit(status)
+            os.kill(os.getpid(), signal.SIGKILL)
 
 
 def _write(fd, message):
@@ -132,8 +138,9 @@ def _write(fd, message):
         data = data[os.write(fd, data):]
 
 
-def _collect(read_end, seconds, sent):
-    # the outcome read from the pipe, what is sent before it appended to sent
+def _collect(read_end, seconds, sent, receive):
+    # the outcome read from the pipe; what is sent before it appended to
+    # sent and passed to receive
     deadline = None if seconds is None else time.monotonic() + seconds
     buffer = b''
     while True:
@@ -154,3 +161,5 @@ def _collect(read_end, seconds, sent):
             if kind != 'sent':
                 return (kind, obj)
             sent.append(obj)
+            if receive is not None:
+                receive(obj)
