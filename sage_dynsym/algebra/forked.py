@@ -113,22 +113,29 @@ def _child(compute, write_end):
         def send(obj):
             _write(write_end, ('sent', obj))
         try:
-            outcome = ('value', compute(send))
+            value = compute(send)
         except Exception as err:
-            outcome = ('error', err)
-        try:
-            _write(write_end, outcome)
-        except Exception:
-            what = (f"{type(outcome[1]).__name__}: {outcome[1]} (the exception"
-                    if outcome[0] == 'error' else "(the value")
-            _write(write_end, ('error', RuntimeError(
-                f"{what} of the forked process could not be passed back)")))
+            # passed back to be raised there; raised here too, where the
+            # finally below ends the child before anything is printed
+            _passed_back(write_end, ('error', err),
+                         f"{type(err).__name__}: {err} (the exception")
+            raise
+        _passed_back(write_end, ('value', value), "(the value")
     finally:
         try:
             sys.stdout.flush()
             sys.stderr.flush()
         finally:
             os.kill(os.getpid(), signal.SIGKILL)
+
+
+def _passed_back(fd, outcome, what):
+    # an object that cannot be pickled comes back as a RuntimeError naming it
+    try:
+        _write(fd, outcome)
+    except (pickle.PicklingError, TypeError, AttributeError):
+        _write(fd, ('error', RuntimeError(f"{what} of the forked process could not be "
+                                          "passed back)")))
 
 
 def _write(fd, message):
