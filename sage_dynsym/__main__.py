@@ -52,6 +52,7 @@ import argparse
 import os
 import sys
 
+from .algebra.forked import forked
 from .arguments import count_option
 
 #: Exit status of a run whose reports all printed but some section of
@@ -150,7 +151,7 @@ def main(argv=None):
             return fail(args.output, f"-o: the folder {folder} does not exist")
         if os.path.isdir(args.output):
             return fail(args.output, f"-o: {args.output} is a folder, not a file")
-    from .description import load, write_atomically
+    from .description import write_atomically
     from .errors import DynSymError, brief
     reports, status, failed = [], 0, []
     show_progress = sys.stderr.isatty() if args.progress is None else args.progress
@@ -160,9 +161,7 @@ def main(argv=None):
         reports.append(written)
         printed = []        # the blocks printed so far
         try:
-            _with_time_limit(args.time_limit, lambda: _print_report(
-                load(path), args, failed, written, printed,
-                _progress(path) if show_progress else None))
+            _report(path, args, failed, written, printed, show_progress)
         except DynSymError as err:
             status = fail(path, err)
             continue
@@ -188,21 +187,53 @@ def main(argv=None):
     return status or (INCOMPLETE if failed else 0)
 
 
-def _print_report(model, args, failed, written, printed, progress):
-    r"""Print the report of ``model`` section by section, each as soon as it
-    is computed (readable, or in full with ``--full``), append each block
-    printed to ``printed`` and its full text, with the LaTeX, to ``written``
-    (for ``-o``)."""
+def _report(path, args, failed, written, printed, show_progress):
+    r"""Print the report of the file ``path`` section by section, each as
+    soon as it is computed (readable, or in full with ``--full``), append
+    each block printed to ``printed`` and its full text, with the LaTeX, to
+    ``written`` (for ``-o``). With ``--time-limit`` it is computed in a
+    forked process killed after that time, which sends each block here to
+    be printed: the command goes on to the next file, and a Singular or
+    PARI call stopped by an alarm in this process would leave the library
+    broken for it (a segfault later). A child that dies (a crash) is one
+    error line too."""
+    from .description import load
+    progress = _progress(path) if show_progress else None
+
+    def shown(block):
+        text, full = block
+        _progress_done(progress is not None)
+        print(text, flush=True)
+        printed.append(text)
+        written.extend(full)
+    if not args.time_limit:
+        return _blocks(load(path), args, failed, shown, progress)
+
+    def child(send):
+        failures = []
+        _blocks(load(path), args, failures, send, progress)
+        return failures
+    _, (how, value) = forked(child, args.time_limit, receive=shown)
+    if how == 'value':
+        return failed.extend(value)
+    if how == 'error':
+        raise value
+    if how == 'timeout':
+        raise _TimeLimit()
+    raise RuntimeError(f"the process computing the report ended without it ({value})")
+
+
+def _blocks(model, args, failed, shown, progress):
+    r"""Pass each block of the report of ``model``, as soon as it is
+    computed, to ``shown``: a pair (its text to print, its full text with
+    the LaTeX for ``-o``, empty without it)."""
     from .report.writer import report_blocks
     from .dynamics.reporting import render
     blocks = report_blocks(model, sections=args.sections, budget=args.budget,
                            analysis=not args.no_analysis, failed=failed, progress=progress)
     for block in blocks:
-        _progress_done(progress is not None)
-        print("\n".join(render(block, full=args.full, latex=args.latex)), flush=True)
-        printed.append(block)
-        if args.output:
-            written.extend(render(block, full=True, latex=True))
+        shown(("\n".join(render(block, full=args.full, latex=args.latex)),
+               render(block, full=True, latex=True) if args.output else []))
 
 
 def _progress(path):
@@ -228,19 +259,6 @@ def _progress_done(shown):
 
 class _TimeLimit(Exception):
     pass
-
-
-def _with_time_limit(seconds, compute):
-    if not seconds:
-        return compute()
-    from cysignals.alarm import alarm, cancel_alarm, AlarmInterrupt
-    alarm(seconds)
-    try:
-        return compute()
-    except AlarmInterrupt as err:
-        raise _TimeLimit() from err
-    finally:
-        cancel_alarm()
 
 
 if __name__ == "__main__":

@@ -15,7 +15,8 @@ in the analysis (many components, most of them points):
    `\sqrt{I} + (F(u))` (the shape lemma; a random form separates the
    points with probability one, and separation is checked by degrees);
 3. a positive-dimensional part goes to Singular's ``minAssGTZ``
-   (Gianni--Trager--Zacharias) for at most :data:`GTZ_BUDGET` seconds,
+   (Gianni--Trager--Zacharias) for at most :data:`GTZ_BUDGET` seconds
+   (in a forked process, stopped safely),
    then to the characteristic sets of ``minAssChar`` (Wang), which is far
    faster on some ideals (the stationary set of a generic Kirchhoff
    Hamiltonian at given parameter values: 2.7 s against over 40 s).
@@ -49,10 +50,6 @@ REFERENCES:
 - H.-G. Gräbe, *Minimal primary decomposition and factorized Gröbner
   bases*, AAECC 8 (1997) 265--278.
 """
-import signal
-import time
-
-from cysignals.signals import AlarmInterrupt
 from sage.libs.singular.function import singular_function, lib as singular_lib
 from sage.matrix.constructor import matrix
 from sage.modules.free_module_element import vector
@@ -60,6 +57,8 @@ from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
+
+from .forked import forked
 
 __all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
            'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
@@ -163,9 +162,10 @@ def positive_dimensional_primes(J, budget=None):
     otherwise by Singular's ``minAssGTZ`` within ``budget`` seconds, else
     by ``minAssChar``.
 
-    An alarm already set by the caller (Sage's ``alarm``) is kept: with
-    ``budget`` seconds or less left it decides alone, otherwise it is set
-    again for the time that remains.
+    ``minAssGTZ`` runs in a forked process killed at the budget (an alarm
+    interrupting a Singular call would leave Singular broken in this
+    process). An alarm set by the caller (Sage's ``alarm``) still
+    interrupts the wait, and the child is killed.
 
     INPUT:
 
@@ -221,26 +221,29 @@ def positive_dimensional_primes(J, budget=None):
 
 
 def _gtz_or_characteristic_sets(J, budget):
-    r"""``minAssGTZ`` within ``budget`` seconds (an alarm of the caller
-    kept), else ``minAssChar``."""
-    outer = signal.getitimer(signal.ITIMER_REAL)[0]
-    if outer and outer <= budget:
-        return J.minimal_associated_primes()
-    start = time.monotonic()
-    # over a field of parameters GTZ is the one that runs over its budget,
-    # and a Singular library call interrupted by the alarm can leave
-    # Singular's state broken (a later segfault): characteristic sets there
-    if budget > 0 and J.ring().base_ring().is_prime_field():
-        try:
-            signal.setitimer(signal.ITIMER_REAL, budget)
-            return J.minimal_associated_primes()
-        except AlarmInterrupt:
-            _log(f"minAssGTZ over {budget} s: characteristic sets instead")
-        finally:
-            signal.setitimer(signal.ITIMER_REAL,
-                             max(outer - (time.monotonic() - start), 1e-3) if outer else 0)
-    singular_lib('primdec.lib')
+    r"""``minAssGTZ`` within ``budget`` seconds, else ``minAssChar``.
+
+    GTZ runs in a forked process killed at the budget: a Singular library
+    call interrupted by an alarm leaves Singular's state broken in this
+    process (a later call segfaulted), a killed child leaves nothing
+    behind. The primes come back as the strings of their generators. A
+    principal ideal (most calls from the stationary sets met in the tests:
+    one quadric in two unknowns, its primes the factors of the generator)
+    is decomposed here, which no budget has to bound. Over a field of
+    parameters GTZ is the one that runs over its budget: characteristic
+    sets at once."""
     P = J.ring()
+    if budget > 0 and P.base_ring().is_prime_field():
+        if len([g for g in J.gens() if g != 0]) == 1:
+            return J.minimal_associated_primes()
+        _, (how, found) = forked(lambda send: [[str(g) for g in Q.gens()]
+                                               for Q in J.minimal_associated_primes()], budget)
+        if how == 'value':
+            return [P.ideal([P(g) for g in Q]) for Q in found]
+        if how == 'error':
+            raise found
+        _log(f"minAssGTZ: {how} ({found}): characteristic sets instead")
+    singular_lib('primdec.lib')
     return [P.ideal(list(Q)) for Q in singular_function('minAssChar')(J)]
 
 

@@ -1459,10 +1459,12 @@ def _family(T, prime, free, counted, positive):
                 {T.symbolic_generators()[int(k[1:])]: v for k, v in subs.items()
                  if T.symbolic_generators()[int(k[1:])].is_symbol()}))
     values = _assemble(T, ring_values, {})
+    # without parameters too: a search that found no smooth real point and
+    # could not prove there is none (quantifier elimination too large, or
+    # over its time) leaves the reality undecided, never taken for real
     return AlgebraicSolution(T, prime, free, counted, values, ring_values,
                              relations, conditions,
-                             reality_known=real is not None or not relations or
-                             T.field() is QQ)
+                             reality_known=real is not None or not relations)
 
 
 def _block_basis(Pb, gens, upper):

@@ -1104,7 +1104,6 @@ class RingCalculus:
         from ..symbols import t
         self.ring = ring
         self.zero = ring.zero
-        P = ring.ring
         self._direct = [ring.generator(q, None) for q in coordinates]
         self._time = ring.generator(t, None)
         # per angle: its ring pair and the ring derivatives of the angle

@@ -358,7 +358,12 @@ def _rationalized(f, relation, sol):
         ...
         AnalysisError: first_approximation: the stability boundary sin(p) > 1/2 of this solution is not algebraic in the parameters (sin(p) - 1/2): take an algebraic function of them as the parameter
     """
-    radicals = []
+    # the radicals keyed by the printed expanded form of their base and
+    # their index: comparing symbolic keys tried to prove each equality
+    # (numerically, then by Maxima), half the time of this function on the
+    # gyrostat; two spellings left apart would only give a norm of higher
+    # degree, the expansion merges the usual ones (-(2p + 1)(2p - 1), 1 - 4p^2)
+    radicals = {}
 
     def rebuild(e):
         op = e.operator()
@@ -367,14 +372,13 @@ def _rationalized(f, relation, sol):
         args = [rebuild(a) for a in e.operands()]
         if op is operator.pow and args[1] in QQ and not QQ(args[1]).is_integer():
             n, d = QQ(args[1]).numerator(), QQ(args[1]).denominator()
-            key = (args[0], d)
-            if key not in [k for k, _ in radicals]:
-                radicals.append((key, SR.var(f"radical{len(radicals)}")))
-            t = next(v for k, v in radicals if k == key)
-            return t ** n
+            key = (str(SR(args[0]).expand()), d)
+            if key not in radicals:
+                radicals[key] = (args[0], d, SR.var(f"radical{len(radicals)}"))
+            return radicals[key][2] ** n
         return op(*args)
     g = rebuild(SR(f)).numerator()
-    for (base, d), t in reversed(radicals):
+    for base, d, t in reversed(list(radicals.values())):
         num, den = SR(base).numerator_denominator()
         g = SR(g.resultant(t ** d * den - num, t)) if g.has(t) else g
     if any(not g.is_polynomial(v) for v in g.variables()):

@@ -504,13 +504,18 @@ def exceptional_values(model, at, parameter, interval, order=4, samples=40, prec
         if poly.base_ring() is not QQ:
             poly = PR(AA, 't')(poly)
         return sorted(r for r in poly.roots(AA, multiplicities=False) if a < r < b)
-    found['first approximation'] = roots_in(p.discriminant())
+    # the discriminant (of a quadratic) by its formula and the resultants in
+    # s over the ring of t by Sylvester determinants: Sage asks PARI first, which refuses a polynomial in s
+    # over t when PARI's variable t is older than s ('incorrect priority'):
+    # the error, caught by Sage, went through an abort that pytest's fault
+    # handler printed as 'Fatal Python error: Aborted'
+    found['first approximation'] = roots_in(p[1] ** 2 - 4 * p[2] * p[0])   # p is quadratic
     for k1 in range(1, order):
         for k2 in range(k1 + 1, order + 1 - k1):
             if math.gcd(k1, k2) != 1:
                 continue
             # omega1/omega2 = k2/k1: s1 = (k2/k1)^2 s2 for two roots s = -omega^2
-            q = p.resultant(p(s * QQ(k2) ** 2 / QQ(k1) ** 2))
+            q = p.sylvester_matrix(p(s * QQ(k2) ** 2 / QQ(k1) ** 2)).det()
             hits = [r for r in roots_in(q) if _ratio(p, r, k2 / QQ(k1))]
             if hits:
                 found[f"resonance {k1}:{k2}"] = hits

@@ -1,0 +1,172 @@
+r"""
+A computation in a forked process, abandoned safely after a time
+
+A Singular (or PARI, Maxima) library call interrupted by an alarm can leave
+the library's state broken in the process that goes on (a later call
+segfaulted in CI); a forked child that is killed leaves nothing behind.
+:func:`forked` runs ``compute(send)`` in a child, passes back what the
+child sends along the way and its result (pickled through a pipe), and
+kills it after ``seconds``. It uses no signal: the wait is a ``select`` on
+the pipe, so it works in any thread (Sage's ``fork`` decorator waits under
+an alarm, which only the main thread receives).
+
+EXAMPLES::
+
+    sage: from sage_dynsym.algebra.forked import forked
+    sage: forked(lambda send: factor(2^64 + 1), 60)
+    ([], ('value', 274177 * 67280421310721))
+    sage: forked(lambda send: [send(k) for k in range(3)] and sleep(10), 1, receive=print)
+    0
+    1
+    2
+    ([0, 1, 2], ('timeout', 1))
+"""
+import os
+import pickle
+import select
+import signal
+import struct
+import sys
+import time
+
+__all__ = ['forked']
+
+_LENGTH = struct.Struct('>Q')
+
+
+def forked(compute, seconds=None, receive=None):
+    r"""
+    Run ``compute(send)`` in a forked process stopped after ``seconds``.
+
+    INPUT:
+
+    - ``compute`` -- a function of one argument ``send``: ``send(x)``
+      passes the picklable object ``x`` to this process at once (what was
+      sent before the child was stopped is kept)
+    - ``seconds`` -- (default: ``None``, no limit) wall-clock seconds after
+      which the child is killed
+    - ``receive`` -- (optional) a function called here on each object sent,
+      as soon as it arrives (e.g. to print what the child computed)
+
+    OUTPUT: a pair ``(sent, outcome)``: the list of the objects sent, and
+    ``('value', v)`` (``compute`` returned ``v``), ``('error', e)`` (it
+    raised the exception ``e``: an exception that cannot be pickled comes
+    back as a ``RuntimeError`` naming it), ``('timeout', seconds)`` or
+    ``('died', why)`` (the child ended without a result, e.g. a crash)
+
+    The standard output and error of the child are this process's own
+    (flushed before the fork).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.forked import forked
+        sage: R.<x, y> = QQ[]
+        sage: forked(lambda send: R.ideal([x*y, x^2]).groebner_basis(), 60)
+        ([], ('value', [x^2, x*y]))
+        sage: forked(lambda send: 1/0)
+        ([], ('error', ZeroDivisionError('rational division by zero')))
+
+    TESTS::
+
+        sage: import signal
+        sage: forked(lambda send: os.kill(os.getpid(), signal.SIGKILL))
+        ([], ('died', 'killed by signal 9'))
+        sage: class Unpicklable(Exception):
+        ....:     __reduce__ = None
+        sage: def f(send): raise Unpicklable("no")
+        sage: forked(f)
+        ([], ('error', RuntimeError('Unpicklable: no (the exception of the forked process could not be passed back)')))
+    """
+    sys.stdout.flush()
+    sys.stderr.flush()
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        os.close(read_end)
+        _child(compute, write_end)
+    os.close(write_end)
+    sent, outcome = [], None
+    try:
+        outcome = _collect(read_end, seconds, sent, receive)
+    finally:
+        os.close(read_end)
+        if outcome is None or outcome[0] == 'timeout':
+            os.kill(pid, signal.SIGKILL)
+        _, status = os.waitpid(pid, 0)
+    if outcome[0] == 'died':
+        outcome = ('died', f"killed by signal {os.WTERMSIG(status)}" if os.WIFSIGNALED(status)
+                   else f"exit status {os.WEXITSTATUS(status)}")
+    return sent, outcome
+
+
+def _child(compute, write_end):
+    # never returns: the child must not go on with the parent's program
+    # (its callers' finally blocks, atexit handlers): it kills itself at the
+    # end, its outcome written (or the parent sees it died)
+    try:
+        try:
+            from sage.interfaces.quit import invalidate_all
+            invalidate_all()        # the parent's pexpect interfaces are not the child's
+        except ImportError:
+            pass
+
+        def send(obj):
+            _write(write_end, ('sent', obj))
+        try:
+            value = compute(send)
+        except Exception as err:
+            # passed back to be raised there; raised here too, where the
+            # finally below ends the child before anything is printed
+            _passed_back(write_end, ('error', err),
+                         f"{type(err).__name__}: {err} (the exception")
+            raise
+        _passed_back(write_end, ('value', value), "(the value")
+    finally:
+        try:
+            sys.stdout.flush()
+            sys.stderr.flush()
+        finally:
+            os.kill(os.getpid(), signal.SIGKILL)
+
+
+def _passed_back(fd, outcome, what):
+    # an object that cannot be pickled comes back as a RuntimeError naming it
+    try:
+        _write(fd, outcome)
+    except (pickle.PicklingError, TypeError, AttributeError):
+        _write(fd, ('error', RuntimeError(f"{what} of the forked process could not be "
+                                          "passed back)")))
+
+
+def _write(fd, message):
+    data = pickle.dumps(message)
+    data = _LENGTH.pack(len(data)) + data
+    while data:
+        data = data[os.write(fd, data):]
+
+
+def _collect(read_end, seconds, sent, receive):
+    # the outcome read from the pipe; what is sent before it appended to
+    # sent and passed to receive
+    deadline = None if seconds is None else time.monotonic() + seconds
+    buffer = b''
+    while True:
+        wait = None if deadline is None else max(deadline - time.monotonic(), 0)
+        ready, _, _ = select.select([read_end], [], [], wait)
+        if not ready:
+            return ('timeout', seconds)
+        chunk = os.read(read_end, 1 << 16)
+        if not chunk:
+            return ('died', None)
+        buffer += chunk
+        while len(buffer) >= _LENGTH.size:
+            size = _LENGTH.unpack_from(buffer)[0]
+            if len(buffer) < _LENGTH.size + size:
+                break
+            kind, obj = pickle.loads(buffer[_LENGTH.size:_LENGTH.size + size])
+            buffer = buffer[_LENGTH.size + size:]
+            if kind != 'sent':
+                return (kind, obj)
+            sent.append(obj)
+            if receive is not None:
+                receive(obj)
