@@ -115,6 +115,7 @@ from .motion import SecondOrderEquations
 from .quadratic_forms import (restrict_to_subspace, sylvester_conditions, form_matrix,
                               signed_leading_minors)
 from ..algebra.solving import solve_exactly, normalize, SolutionList
+from ..algebra.forked import forked
 # the modified method has a module of its own; this import keeps its old path
 from .modified_routh import ModifiedRouthLyapunov
 
@@ -1471,8 +1472,9 @@ def _within_budget(compute, budget):
     r"""
     ``compute()`` in a forked process stopped after ``budget`` seconds: a
     Singular computation interrupted in this process could leave Singular's
-    interpreter without a ring, a killed child leaves nothing behind. Over
-    the budget, an :class:`~sage_dynsym.errors.AnalysisError` says so (no
+    interpreter without a ring, a killed child leaves nothing behind. The
+    wait uses no signal (:func:`~sage_dynsym.algebra.forked.forked`): it
+    works in any thread, e.g. a Dask worker's. Over the budget, an :class:`~sage_dynsym.errors.AnalysisError` says so (no
     partial result is passed off as the answer).
 
     EXAMPLES::
@@ -1492,22 +1494,18 @@ def _within_budget(compute, budget):
         ...
         ZeroDivisionError: rational division by zero
     """
-    from sage.parallel.decorate import fork
-
-    def child():
-        # an error is passed back to be raised here, not taken for a timeout
-        try:
-            return ('found', compute())
-        except (DynSymError, ArithmeticError, RuntimeError, ValueError, TypeError) as err:
-            return ('error', err)
-    result = fork(child, timeout=budget)()
-    if not isinstance(result, tuple):       # 'NO DATA (timed out)' and the like
+    _, (outcome, value) = forked(lambda send: compute(), budget)
+    if outcome == 'timeout':
         raise AnalysisError(f"the stationary set was not found within {budget} s; give "
                             "the parameters values, or a larger budget (budget=None waits)",
                             entry="budget")
-    if result[0] == 'error':
-        raise result[1]
-    return result[1]
+    if outcome == 'error':
+        # an error of the solving is raised as it is, not taken for a timeout
+        raise value
+    if outcome == 'died':
+        raise AnalysisError(f"the process solving the stationary set ended without an "
+                            f"answer ({value})", entry="budget")
+    return value
 
 
 def stationary_solutions(integrals, variables=None, equations=None, multipliers=None,
