@@ -55,13 +55,24 @@ from ..errors import AnalysisError
 from .conditions import simplify_conjunction
 from .translation import Translation
 
-__all__ = ['QEPCAD_TIMEOUT', 'QEPCAD_MEMCELLS', 'exists', 'exists_real_solution']
+__all__ = ['QEPCAD_TIMEOUT', 'QEPCAD_MEMCELLS', 'QEPCAD_ANSWERS_KEPT', 'exists', 'exists_real_solution']
 
 #: Time limit (seconds) of one QEPCAD run.
 QEPCAD_TIMEOUT = 60
 
 #: Memory cells given to QEPCAD (its garbage-collected space).
 QEPCAD_MEMCELLS = 20_000_000
+
+#: How many QEPCAD answers are remembered (by their input script).
+QEPCAD_ANSWERS_KEPT = 512
+
+# QEPCAD's printed answer (or the time limit it ran out of) for each input
+# script: the stability regions of the solutions of one model ask the same
+# emptiness questions many times (the two covers of SO(3) by Euler angles
+# give each orientation twice), each up to QEPCAD's time limit. The
+# script names its variables x0, x1, ...: the answer is read back with the
+# symbols of the question being asked, not of the one remembered.
+_answers = {}
 
 _OPS = {'>': '>', '<': '<', '>=': '>=', '<=': '<=', '==': '=', '!=': '/='}
 
@@ -216,11 +227,29 @@ def _qepcad(quantified, parts, positive, timeout):
         script += "assume [ " + r" /\ ".join(assume) + " ]\n"
     script += "go\ngo\ngo\nfinish\n"
     verbose(f"QEPCAD: {formula}", level=1, caller_name="exists")
+    text = _qepcad_answer(script, timeout)
+    symbols = {n: (T.symbolic(flat.gen(k))) for k, n in enumerate(names)}
+    alternatives = _TarskiParser(text, flat, symbols).dnf()
+    return _simplified_alternatives(alternatives, positive)
+
+
+def _qepcad_answer(script, timeout):
+    r"""QEPCAD's quantifier-free answer to ``script``, remembered; a script
+    that ran out of time is not run again with a time limit no larger."""
+    known = _answers.get(script)
+    if known is not None and (known[0] == 'answer' or timeout <= known[1]):
+        if known[0] == 'answer':
+            return known[1]
+        raise AnalysisError(f"QEPCAD did not finish within {known[1]} s (raise "
+                            "timeout=, or simplify the problem)", entry="exists")
+    if len(_answers) >= QEPCAD_ANSWERS_KEPT:
+        _answers.pop(next(iter(_answers)))
     command = shlex.split(_qepcad_command())
     try:
         run = subprocess.run(command, input=script, capture_output=True, text=True,
                              timeout=timeout)
     except subprocess.TimeoutExpired as err:
+        _answers[script] = ('timeout', timeout)
         raise AnalysisError(f"QEPCAD did not finish within {timeout} s (raise "
                             "timeout=, or simplify the problem)", entry="exists") from err
     match = re.search(r"An equivalent quantifier-free formula:\s*(.*?)\s*=+\s+The End",
@@ -228,10 +257,8 @@ def _qepcad(quantified, parts, positive, timeout):
     if match is None:
         tail = (run.stdout + run.stderr).strip().splitlines()[-3:]
         raise AnalysisError("QEPCAD failed: " + ' | '.join(tail), entry="exists")
-    text = ' '.join(match.group(1).split())
-    symbols = {n: (T.symbolic(flat.gen(k))) for k, n in enumerate(names)}
-    alternatives = _TarskiParser(text, flat, symbols).dnf()
-    return _simplified_alternatives(alternatives, positive)
+    _answers[script] = ('answer', ' '.join(match.group(1).split()))
+    return _answers[script][1]
 
 
 class _TarskiParser:
