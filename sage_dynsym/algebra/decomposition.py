@@ -56,7 +56,7 @@ from cysignals.signals import AlarmInterrupt
 from sage.libs.singular.function import singular_function, lib as singular_lib
 from sage.matrix.constructor import matrix
 from sage.modules.free_module_element import vector
-from sage.misc.prandom import randint
+from sage.misc.prandom import randint, sample
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
@@ -339,7 +339,9 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
     singular_lib('primdec.lib')
     for _ in range(attempts):
-        values = [QQ(randint(2, 97)) for _ in base.gens()]
+        # distinct values: equal parameters (equal moments of inertia) are
+        # the special values met most often, where components split
+        values = [QQ(v) for v in sample(range(2, 1000), base.ngens())]
         try:
             Js = Pq.ideal([Pq({e: _specialize(c, values) for e, c in g.dict().items()})
                            for g in J.gens()])
