@@ -312,7 +312,9 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     `\QQ`; if ``J`` were not prime, or not radical, so would be its
     specialization at all values outside a proper algebraic subset of the
     parameter space, which random values avoid with probability one (the
-    specializations of a modular method). The dimension of ``J`` is that of
+    specializations of a modular method); over `\QQ` a prime can also split
+    at the values of a thin set (`x^2 - a y^2` where `a` is a square), where
+    the answer is ``False``: only slower, never wrong. The dimension of ``J`` is that of
     its specialization at values outside such a subset too, so it is not
     computed: a Gröbner basis over the field of the parameters can take
     minutes where the specialized ones take a fraction of a second (the
@@ -328,6 +330,16 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
         True
         sage: prime_by_specialization(R.ideal([x^2 - a^2*y^2]))
         False
+
+    TESTS:
+
+    An ideal that is prime unless two parameters are equal is found prime
+    at every try (the values are distinct)::
+
+        sage: K = Frac(QQ['a, b']); a, b = K.gens()
+        sage: R.<x, y> = K[]
+        sage: all(prime_by_specialization(R.ideal([x^2 - (a - b)*y^3])) for _ in range(50))
+        True
     """
     P = J.ring()
     K = P.base_ring()
