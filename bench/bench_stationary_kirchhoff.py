@@ -31,9 +31,25 @@ that of this process and its children. With ``-v`` the solver's
 progress (Sage's ``verbose``: translation, factorizing Groebner basis,
 components) is printed.
 
-Target (issue 33): each under a minute. Measured (2 loaded cores): Brun's
-problem 4 s on each level; the generic case with symbolic parameters is
-still over the budget (its Groebner bases over the field of 12 parameters).
+Target (issue 33): each under a minute. Measured 2026-12-05 on 2 cores
+loaded by other jobs (wall / CPU of this process and its children):
+Clebsch 1.8 / 1.1 s, B diagonal 6.2 / 4.1 s, B symmetric with values
+13.0 / 8.9 s, Brun on M.gamma = 0 6.7 / 4.4 s, Brun on M.gamma = c
+62 / 44 s (45 to 53 s wall in runs without the budget's fork; 20 to 36 s
+of it one Groebner basis, in the block order of the 1-parameter family,
+over the field of the 5 parameters, and about 15 s the characteristic
+sets at the random values that decide that its parts are prime). The
+generic case with symbolic parameters is still over the budget. Its first
+Groebner basis (degrevlex over the field of the 12 parameters) takes 1.5 s
+with M first and the multipliers last, over 100 s with p before M (the
+translation's order puts the multipliers first, then p, then M); but then
+its two components (M = p = 0, and the family where p is a kernel vector)
+are split in half a second at rational values and not within minutes over
+the field: saturation by p1 over 300 s, the quotient by p1, minAssChar
+and minAssGTZ each over 200 s, and after M is substituted (it enters
+linearly) one Groebner basis of the 5 remaining unknowns 130 s. Putting
+the unknowns in their own order (M first, multipliers last) for every
+problem made Brun's problem on M.gamma = c take over 300 s.
 
 Usage: python bench/bench_stationary_kirchhoff.py [--budget 120] [-v] [--only NAME]
 """

@@ -734,7 +734,7 @@ class StationarySolution(MotionSolution):
             sage: X = list(Mv.cross_product(w) + gv.cross_product(u)) + list(gv.cross_product(w))
             sage: sols = stationary_solutions([H, gv*gv, Mv*gv], list(Mv) + list(gv), equations=X)
             sage: s = next(s for s in sols if s.point()[g3] == M3/(I3*sqrt(eps))
-            ....:          and s.point()[g1] != 0)
+            ....:          and not s.point()[g1].is_zero())
             sage: s.point()[g1], s.conditions()  # long time
             (M1/(I1*sqrt(epsilon)), [g3 != 0, I3 != 0, epsilon > 0, I1 != 0, M1 != 0, I2 != 0])
             sage: [c.verdict() for c in s.stability().cases()]  # long time
