@@ -52,7 +52,6 @@ import argparse
 import os
 import sys
 
-from .algebra.forked import forked
 from .arguments import count_option
 
 #: Exit status of a run whose reports all printed but some section of
@@ -198,6 +197,7 @@ def _report(path, args, failed, written, printed, show_progress):
     broken for it (a segfault later). A child that dies (a crash) is one
     error line too."""
     from .description import load
+    from .algebra.forked import forked      # here: --help answers without loading Sage
     progress = _progress(path) if show_progress else None
 
     def shown(block):
