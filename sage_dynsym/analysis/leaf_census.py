@@ -407,20 +407,62 @@ def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
                                 levels=list(levels))
     found = []
     points = configuration_points(sols, None, found)
-    families = sorted(s.dimension() for s in found if _is_real_family(s, sols.multipliers()))
+    real = _real_families(found, sols.multipliers())
+    # a family may be written in branches (square roots), whose ends are
+    # listed as points of their own: points of a family are not isolated
+    points = [p for p in points if not any(_contains(J, T, {v: p.value(v) for v in x})
+                                           for J, T, _ in real)]
+    families = sorted(d for _, _, d in real)
     verdicts = [_leaf_verdict(H, casimirs, poisson_matrix, x, field,
                               {v: SR(p.value(v)) for v in x}) for p in points]
     return list(zip(points, verdicts)), families
 
 
-def _is_real_family(solution, multipliers):
-    r"""Whether a family of relative equilibria has real points: those of
-    its projection on the variables (on a regular leaf the multipliers are
-    the unique, real, solution of a linear system at a real point)."""
-    inner = solution.solution()
-    T = inner.translation()
-    eliminated = [g for m in multipliers for g in T.generators_of(m)]
-    return has_real_points(inner.ideal().elimination_ideal(eliminated))
+def _real_families(families, multipliers):
+    r"""
+    The distinct components of the families of relative equilibria that
+    have real points, as triples ``(ideal, translation, dimension)``: the projection of
+    each on the variables (on a regular leaf the multipliers are the unique,
+    real, solution of a linear system at a real point), the branches of
+    one component (the signs of its square roots) counted once.
+
+    EXAMPLES: the symmetric body's circle of rotations about the equatorial
+    axes is one component, its two halves `M_2 = \pm\sqrt{1 - M_1^2}` one
+    family::
+
+        sage: from sage_dynsym.analysis.leaf_census import _real_families
+        sage: from sage_dynsym.analysis.stationary import stationary_solutions
+        sage: M1, M2, M3 = var('M1 M2 M3')
+        sage: H = (M1^2 + M2^2)/2 + M3^2/6
+        sage: X = [-M2*M3/3 + M3*M2, M1*M3/3 - M3*M1, 0]
+        sage: sols = stationary_solutions([H, M1^2 + M2^2 + M3^2], [M1, M2, M3],
+        ....:                             equations=X, levels=[1])
+        sage: [([T.symbolic(g) for g in J.gens()], d) for J, T, d in
+        ....:  _real_families([s for s in sols if s.dimension() > 0], sols.multipliers())]
+        [([M3, M1^2 + M2^2 - 1], 1)]
+    """
+    found = []
+    for solution in families:
+        inner = solution.solution()
+        T = inner.translation()
+        eliminated = [g for m in multipliers for g in T.generators_of(m)]
+        J = inner.ideal().elimination_ideal(eliminated)
+        if all(J != K for K, _, _ in found) and has_real_points(J):
+            found.append((J, T, solution.dimension()))
+    return found
+
+
+def _contains(J, T, values):
+    r"""Whether the point ``values`` (a dict variable: exact real value)
+    lies on the variety of ``J`` (an ideal of the ring of ``T``)."""
+    R = J.ring()
+    images = [QQbar(0)] * R.ngens()
+    for v, value in values.items():
+        gens = T.generators_of(v)
+        if len(gens) != 1:
+            return False        # an angle: not a variable of a Lie algebra
+        images[R.gens().index(R(gens[0]))] = QQbar(value)
+    return all(g(*images) == 0 for g in J.gens())
 
 
 def _leaf_task(system, values):
