@@ -95,7 +95,11 @@ def normal_form_stability(H, compute_normal_form, order=4, positive=(), prec=256
                        "(Lagrange-Dirichlet): a definite first integral, whatever the "
                        "resonances" if signs[0] > 0 else "the energy is negative definite at "
                        "the equilibrium: a definite first integral", 'energy')
-    if _sign(chi[0]) == 0 or _sign(chi.discriminant()) == 0:
+    # a multiple root: the resultant of chi and chi' (a Sylvester determinant:
+    # chi.discriminant() asks PARI first, which refuses a polynomial over
+    # QQbar; the caught error went through an abort that pytest's fault
+    # handler printed as 'Fatal Python error: Aborted')
+    if _sign(chi[0]) == 0 or _sign(chi.sylvester_matrix(chi.derivative()).det()) == 0:
         return verdict('undecided', "multiple or zero roots of the linearization: a critical "
                        "case the normal forms of this package do not treat", 'normal form')
     order = max(order, 4) if n == 2 else order
@@ -145,7 +149,7 @@ def _exact_resonances(chi, nf, order, eps):
             p = sum(chi[2 * j] * s ** j for j in range(3))
             r = QQ(abs(k[1])) / QQ(abs(k[0])) if abs(w[0]) > abs(w[1]) else \
                 QQ(abs(k[0])) / QQ(abs(k[1]))
-            if _sign(p.resultant(p(r ** 2 * s))) != 0:
+            if _sign(p.sylvester_matrix(p(r ** 2 * s)).det()) != 0:   # not PARI: see above
                 raise AnalysisError(f"the frequencies {w} are within {eps} of the resonance "
                                     f"k = {k} without being resonant: increase prec",
                                     entry="prec")
