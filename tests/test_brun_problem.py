@@ -162,12 +162,24 @@ def test_package_on_levels_against_least_squares(brun):
     S, M, g, H = brun
     for c in (QQ(1) / 2, QQ(3) / 2, 4):
         sols = S.stationary_solutions(levels=[c, 1])
-        explicit = sorted(tuple(float(s.point()[v]) for v in M + g) for s in sols if s.is_explicit())
+        points = [np.array([float(s.point()[v]) for v in M + g])
+                  for s in sols if s.dimension() == 0]
+        # points of Brun's curve (M = sign(c) sqrt(eps) I gamma, (I gamma, gamma) =
+        # |c|/sqrt(eps)) may be listed on their own: the ends of the branches
+        # of the curve written with square roots
+        I = np.array(INERTIA, dtype=float)
+
+        def on_curve(x):
+            return np.allclose(x[:3], np.sign(float(c)) * np.sqrt(EPS) * I * x[3:], atol=1e-9)
+        for x in filter(on_curve, points):
+            assert abs(x[3:] @ (I * x[3:]) - abs(float(c)) / np.sqrt(EPS)) < 1e-9
+            assert abs(x[3:] @ x[3:] - 1) < 1e-9
+        isolated = sorted(tuple(x) for x in points if not on_curve(x))
         numeric = sorted({tuple(np.round(x, 6) + 0.0) for x in stationary_on_level(float(c))
                           if any(abs(abs(x[3 + k]) - 1) < 1e-7 for k in range(3))})
-        assert np.allclose(explicit, numeric, atol=1e-6)
-        # the curves of the package are Brun's rotations: M = +-I gamma on its points
-        assert all(s.dimension() == 1 for s in sols if not s.is_explicit())
+        assert np.allclose(isolated, numeric, atol=1e-6)
+        # the families of the package are curves (Brun's rotations)
+        assert all(s.dimension() == 1 for s in sols if s.dimension() > 0)
 
 
 def energy_casimir_definite(x):
