@@ -77,14 +77,15 @@ REFERENCES:
 """
 import random
 
+from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.qqbar import AA, QQbar
+from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..algebra.decomposition import linear_substitutions, minimal_primes
 from ..arguments import symbol_arguments
 from .census import (Census, stationary_ideal, add_zero_set_factors, check_main_thread,
                      sample_runner, verdict_counts, census_cells, polynomials_inside)
@@ -156,7 +157,20 @@ def _without_linear_variables(Q):
         Ideal (x^4 + z^2 - 1) of Multivariate Polynomial Ring in x, z over Rational Field
     """
     R = Q.ring()
-    gens, _ = linear_substitutions([g for g in Q.groebner_basis() if g != 0])
+    gens = [g for g in Q.groebner_basis() if g != 0]
+    solved = True
+    while solved:
+        solved = False
+        for g in gens:
+            v = next((v for v in g.variables()
+                      if g.degree(v) == 1 and g.coefficient({v: 1}).is_constant()), None)
+            if v is not None:
+                a = QQ(g.coefficient({v: 1}))
+                value = -(g - a * v) / a
+                gens = [f.subs({v: value}) for f in gens if f is not g]
+                gens = [f for f in gens if f != 0]
+                solved = True
+                break
     used = [v for v in R.gens() if any(f.degree(v) > 0 for f in gens)]
     if not used:
         return not gens     # no relation left: real (a constant one: no point)
@@ -221,6 +235,31 @@ def _critical_locus(Q, state, fibre):
     return []
 
 
+def _components(ideal):
+    r"""
+    The minimal associated primes of ``ideal``, split first by Singular's
+    factorizing Groebner basis (the whole ideal, with the parameters as
+    variables, can take minutes where its parts take milliseconds); the
+    primes of one part contained in those of another dropped.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.leaf_census import _components
+        sage: R.<x, y> = QQ[]
+        sage: sorted(str(Q.gens()) for Q in _components(R.ideal([x*y, x*(x - 1)])))
+        ['[x]', '[y, x - 1]']
+        sage: sorted(str(Q.gens()) for Q in _components(R.ideal([x*y*(y - 1), x*(x - 1)*y])))
+        ['[x]', '[y - 1, x - 1]', '[y]']
+    """
+    R = ideal.ring()
+    found = []
+    for part in ff.facstd(ideal):
+        for Q in R.ideal(list(part)).minimal_associated_primes():
+            if all(Q != K for K in found):
+                found.append(Q)
+    return [Q for Q in found if not any(K != Q and K <= Q for K in found)]
+
+
 def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
     r"""
     The bifurcation set of the relative equilibria of `H` on the levels
@@ -278,10 +317,7 @@ def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
                 f"{', '.join(map(str, parameters))}: choose levels where the leaves are "
                 "regular", entry="levels")
         add_zero_set_factors(singular, found)
-    # split first by the factorizing Groebner basis: the whole ideal, with
-    # the parameters as variables, can take minutes where its parts take
-    # milliseconds
-    primes = minimal_primes(ideal)
+    primes = _components(ideal)
     _log(f"{len(primes)} components of the relative equilibria")
     families = []
     for Q in primes:
