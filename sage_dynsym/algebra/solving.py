@@ -776,8 +776,173 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         if key is None or key not in seen:     # parts of facstd may overlap
             seen.add(key)
             solutions.append(s)
+    solutions = _without_noise(T, solutions, positive)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
+
+
+def _without_noise(T, solutions, positive):
+    r"""
+    The solutions without those that are no solutions: the branches whose
+    conditions no real values satisfy, and the points that a branch
+    contains.
+
+    A branch (see :func:`_branches`) is dropped only when quantifier
+    elimination proves that no real values of its unknowns and parameters
+    (the declared ``positive`` ones positive) satisfy its conditions: then
+    it has no real point. Where that is undecided (QEPCAD missing, over
+    its budget, conditions not rational) it stays, with its conditions.
+
+    The ends of a branch, where a radicand vanishes (its condition `D > 0`
+    fails), were solved as components of their own by
+    :func:`_excluded_parts`. A point is dropped only if a branch that stays
+    contains it, decided exactly by :func:`_closed_branch`: the branch's
+    strict conditions widened to `D \ge 0` (after checking exactly that the
+    values are real, finite and on the component at every point the
+    widening adds), the point satisfying them and equal to the branch's
+    values there.
+
+    EXAMPLES: `y^2 = -a (x^2 + 1)` has branches real only where `a < 0`;
+    with `a` declared positive there is none. `z^2 = 1 - x^2`,
+    `y = x` as branches over `x`; their ends `x = \pm 1` are not listed
+    apart::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, z, a = var('x y z a')
+        sage: list(solve_exactly([y^2 + a*(x^2 + 1), z - y], [x, y, z], positive=[a]))
+        []
+        sage: sols = solve_exactly([x^2 + z^2 - 1, y - x], [x, y, z])
+        sage: [(s.dimension(), s.conditions()) for s in sols]  # not tested
+    """
+    cache = {}
+    kept = [s for s in solutions if not _never_real(s, positive, cache)]
+    families = [s for s in kept if len(s._free) == 1 and s.is_explicit()]
+    points = [s for s in kept if not s._free and s.is_explicit()]
+    dropped, widened = set(), {}
+    for f in families:
+        closed, inside = _closed_branch(T, f, points)
+        if inside:
+            widened[id(f)] = closed
+            dropped.update(id(p) for p in inside)
+    return [widened.get(id(s), s) for s in kept if id(s) not in dropped]
+
+
+def _never_real(solution, positive, cache):
+    r"""Whether quantifier elimination proves that no real values satisfy
+    the conditions of ``solution`` (``False`` when undecided)."""
+    conditions = solution._conditions
+    if not conditions or not solution._reality_known:
+        return False
+    symbols = sorted({v for c in conditions for v in SR(c.lhs() - c.rhs()).variables()},
+                     key=str)
+    key = tuple(sorted(map(str, conditions)))
+    if not symbols or key in cache:
+        return cache.get(key, False)
+    try:
+        field = PolynomialRing(QQ, [str(v) for v in symbols]).fraction_field()
+        for c in conditions:
+            field(SR(c.lhs() - c.rhs()))
+    except (TypeError, ValueError):
+        cache[key] = False      # not rational: quantifier elimination would take atoms
+        return False
+    from .quantifier_elimination import exists
+    signs = [SR(p) > 0 for p in positive if any(str(SR(p)) == str(v) for v in symbols)]
+    try:
+        cache[key] = not exists(symbols, list(conditions) + signs, timeout=REALITY_QE_TIMEOUT)
+    except AnalysisError:
+        cache[key] = False
+    if cache[key]:
+        _log(f"a branch real nowhere under {list(conditions)}: dropped")
+    return cache[key]
+
+
+def _closed_branch(T, family, points):
+    r"""
+    The branch ``family`` (one free unknown, no parameters) with its strict
+    conditions widened (`D > 0` to `D \ge 0`) and the ``points`` it then
+    contains; ``(family, [])`` when no point is contained or the widening
+    cannot be proved right. It is right when at every point it adds (the
+    real roots of the boundaries that satisfy the widened conditions) the
+    branch's values are real, finite and on the component: exact
+    arithmetic in ``AA``, the generators of the component's prime ideal
+    evaluated there.
+    """
+    u = T.unknowns()[family._free[0]]
+    conditions = family._conditions
+    if T.parameters() or isinstance(family._prime, ShapePrime) or \
+            any(T.is_angle(v) for v in T.unknowns()) or \
+            any(set(map(str, SR(c.lhs() - c.rhs()).variables())) - {str(u)}
+                for c in conditions):
+        return family, []
+    strict = [c for c in conditions if c.operator() in (operator.gt, operator.lt)]
+    if not strict:
+        return family, []
+    wide = {operator.gt: operator.ge, operator.lt: operator.le}
+    closed = [wide[c.operator()](c.lhs(), c.rhs()) if c in strict else c for c in conditions]
+    R = PolynomialRing(QQ, 'u')
+    for c in strict:
+        try:
+            boundary = R(SR(c.lhs() - c.rhs()).numerator().subs({u: R.gen()}))
+        except (TypeError, ValueError):
+            return family, []
+        for r, _ in boundary.roots(AA):
+            at = SR(QQ(r)) if r in QQ else r.radical_expression()
+            if at.parent() is not SR:
+                return family, []       # no radicals: not compared exactly here
+            if _holds_at(closed, u, at) and _values_at(T, family, u, at, check=True) is None:
+                return family, []
+    inside = []
+    for p in points:
+        at = p._values.get(family._free[0])
+        if at is None or not _holds_at(closed, u, at):
+            continue
+        here = _values_at(T, family, u, at)
+        try:
+            if here is not None and all(here[i] == AA(SR(p._values.get(i, 0)))
+                                        for i in here):
+                inside.append(p)
+        except (TypeError, ValueError, ArithmeticError):
+            continue
+    if not inside:
+        return family, []
+    return AlgebraicSolution(T, family._prime, family._free, family._counted,
+                             dict(family._values), dict(family._ring_values), [],
+                             closed), inside
+
+
+def _holds_at(conditions, u, at):
+    r"""Whether the conditions (in the unknown ``u`` only) hold at the
+    exact value ``at`` (compared in ``AA``; ``False`` when not real)."""
+    try:
+        return all(bool(c.operator()(AA(SR(c.lhs() - c.rhs()).subs({u: at})), 0))
+                   for c in conditions)
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+
+
+def _values_at(T, family, u, at, check=False):
+    r"""The values (index: element of ``AA``) of the branch at ``u =
+    at``; ``None`` where one is not real or finite or (``check``) the
+    point is not on the component."""
+    unknowns = T.unknowns()
+    values = {}
+    try:
+        for i, v in enumerate(unknowns):
+            values[i] = AA(SR(family._values.get(i, v)).subs({u: at}))
+    except (TypeError, ValueError, ArithmeticError):
+        return None
+    if check:
+        P = family._prime.ring()
+        images = [None] * P.ngens()
+        for i, v in enumerate(unknowns):
+            gens = T.generators_of(v)
+            if len(gens) != 1:
+                return None
+            images[P.gens().index(P(gens[0]))] = values[i]
+        if any(x is None for x in images) or \
+                any(g(*images) != 0 for g in family._prime.gens()):
+            return None
+    return values
 
 
 def _sort_key(s):
