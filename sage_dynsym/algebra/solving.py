@@ -802,17 +802,44 @@ def _without_noise(T, solutions, positive):
     widening adds), the point satisfying them and equal to the branch's
     values there.
 
-    EXAMPLES: `y^2 = -a (x^2 + 1)` has branches real only where `a < 0`;
-    with `a` declared positive there is none. `z^2 = 1 - x^2`,
-    `y = x` as branches over `x`; their ends `x = \pm 1` are not listed
-    apart::
+    EXAMPLES: the branches of `y^2 = x - a`, `z^2 = -x - a` are real
+    where `a < x < -a`: nowhere when `a` is declared positive::
 
         sage: from sage_dynsym.algebra.solving import solve_exactly
         sage: x, y, z, a = var('x y z a')
-        sage: list(solve_exactly([y^2 + a*(x^2 + 1), z - y], [x, y, z], positive=[a]))
+        sage: list(solve_exactly([y^2 - x + a, z^2 + x + a], [x, y, z], positive=[a]))
         []
-        sage: sols = solve_exactly([x^2 + z^2 - 1, y - x], [x, y, z])
-        sage: [(s.dimension(), s.conditions()) for s in sols]  # not tested
+        sage: len(solve_exactly([y^2 - x + a, z^2 + x + a], [x, y, z]))
+        8
+
+    Without parameters, a curve is written in branches only when whether
+    it is real is not decided otherwise (here the random fibres and
+    quantifier elimination are switched off to show it). The branches of
+    `y^2 = x - 1`, `z^2 = 3 - x` end where `y = 0` or `z = 0`: those four
+    points are on the branches, which are listed for `1 \le x \le 3`;
+    `y^2 = x - 1`, `z^2 = -x - 1` has no real point::
+
+        sage: import sage_dynsym.algebra.solving as solving
+        sage: solving.REAL_POINT_SAMPLES, solving.REALITY_QE_VARIABLES = 0, 0
+        sage: sols = solve_exactly([y^2 - x + 1, z^2 + x - 3], [x, y, z])
+        sage: [(s.dimension(), s.conditions()) for s in sols]
+        [(1, [x - 1 >= 0, x - 3 <= 0]),
+         (1, [x - 1 >= 0, x - 3 <= 0]),
+         (1, [x - 1 >= 0, x - 3 <= 0]),
+         (1, [x - 1 >= 0, x - 3 <= 0])]
+        sage: list(solve_exactly([y^2 - x + 1, z^2 + x + 1], [x, y, z]))
+        []
+
+    The point `(1, 0, 0)` at the end of the branches `y = \pm\sqrt{x - 1}`,
+    `z = 1/y` is not on them (`z` is infinite there): it stays::
+
+        sage: C, Q = [y^2 - x + 1, y*z - 1], [x - 1, y, z]
+        sage: for s in solve_exactly([c*q for c in C for q in Q], [x, y, z]):
+        ....:     print(s)
+        Solution {x: 1, y: 0, z: 0} (dimension 0)
+        Solution {x: x, y: sqrt(x - 1), z: 1/sqrt(x - 1)} (dimension 1, if x - 1 > 0)
+        Solution {x: x, y: -sqrt(x - 1), z: -1/sqrt(x - 1)} (dimension 1, if x - 1 > 0)
+        sage: solving.REAL_POINT_SAMPLES, solving.REALITY_QE_VARIABLES = 12, 5
     """
     cache = {}
     kept = [s for s in solutions if not _never_real(s, positive, cache)]
