@@ -407,12 +407,9 @@ def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
                                 levels=list(levels))
     found = []
     points = configuration_points(sols, None, found)
-    real = _real_families(found, sols.multipliers())
-    # a family may be written in branches (square roots), whose ends are
-    # listed as points of their own: points of a family are not isolated
-    points = [p for p in points if not any(_contains(J, T, {v: p.value(v) for v in x})
-                                           for J, T, _ in real)]
-    families = sorted(d for _, _, d in real)
+    # (the ends of a family's branches are not listed as points: the
+    # solver drops a point only where a listed branch contains it exactly)
+    families = sorted(d for _, _, d in _real_families(found, sols.multipliers()))
     verdicts = [_leaf_verdict(H, casimirs, poisson_matrix, x, field,
                               {v: SR(p.value(v)) for v in x}) for p in points]
     return list(zip(points, verdicts)), families
@@ -450,19 +447,6 @@ def _real_families(families, multipliers):
         if all(J != K for K, _, _ in found) and has_real_points(J):
             found.append((J, T, solution.dimension()))
     return found
-
-
-def _contains(J, T, values):
-    r"""Whether the point ``values`` (a dict variable: exact real value)
-    lies on the variety of ``J`` (an ideal of the ring of ``T``)."""
-    R = J.ring()
-    images = [QQbar(0)] * R.ngens()
-    for v, value in values.items():
-        gens = T.generators_of(v)
-        if len(gens) != 1:
-            return False        # an angle: not a variable of a Lie algebra
-        images[R.gens().index(R(gens[0]))] = QQbar(value)
-    return all(g(*images) == 0 for g in J.gens())
 
 
 def _leaf_task(system, values):
