@@ -502,7 +502,9 @@ class AlgebraicSolution(SageObject):
 
         Conditions on unknowns describe this parametrization of its
         component: the points of the component where they fail (a
-        denominator or a radicand vanishes) are listed in other solutions.
+        denominator or a radicand vanishes) are listed in other solutions,
+        or (without parameters) in this one, its condition `D > 0` widened
+        to `D \ge 0`, where its values are real and finite there.
         `x z = y` is `z = y/x` where `x \ne 0`; its points with `x = 0`
         are the line `x = y = 0`::
 
@@ -858,7 +860,9 @@ def _never_real(solution, positive, cache):
     r"""Whether quantifier elimination proves that no real values satisfy
     the conditions of ``solution`` (``False`` when undecided)."""
     conditions = solution._conditions
-    if not conditions or not solution._reality_known:
+    # points: their conditions are on the parameters only, simplified when
+    # made; a call of QEPCAD for each would cost more than it finds
+    if not conditions or not solution._reality_known or not solution._free:
         return False
     symbols = sorted({v for c in conditions for v in SR(c.lhs() - c.rhs()).variables()},
                      key=str)
@@ -905,7 +909,8 @@ def _closed_branch(T, family, points):
     if not strict:
         return family, []
     wide = {operator.gt: operator.ge, operator.lt: operator.le}
-    closed = [wide[c.operator()](c.lhs(), c.rhs()) if c in strict else c for c in conditions]
+    closed = [wide[c.operator()](c.lhs(), c.rhs()) if c.operator() in wide else c
+              for c in conditions]
     R = PolynomialRing(QQ, 'u')
     for c in strict:
         try:
@@ -925,8 +930,8 @@ def _closed_branch(T, family, points):
             continue
         here = _values_at(T, family, u, at)
         try:
-            if here is not None and all(here[i] == AA(SR(p._values.get(i, 0)))
-                                        for i in here):
+            if here is not None and all(here[i] == AA(SR(v))
+                                        for i, v in enumerate(p.values().values())):
                 inside.append(p)
         except (TypeError, ValueError, ArithmeticError):
             continue
