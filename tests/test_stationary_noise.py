@@ -73,28 +73,18 @@ def test_brun_leaves_against_least_squares(c):
     assert len(axes) == 6
     # exactly the six rotations about the axes are listed as points
     assert len(points) == 6 and np.allclose(points, axes, atol=1e-6)
-    families = [s for s in sols if s.dimension() > 0]
-    # Brun's rotations for 1 < |c| < 3: a curve, listed in branches, every
-    # branch on M = I gamma with (I gamma, gamma) = c; none for |c| < 1
+    families = [s.solution() for s in sols if s.dimension() > 0]
+    # Brun's rotations for 1 < |c| < 3: one curve (in branches, or one
+    # implicit family where a real point of it was found at random), none
+    # for |c| < 1; the curve is M = I gamma with (I gamma, gamma) = c
     assert bool(others) == bool(families) == (1 < c < 3)
+    M, g = x[:3], x[3:]
     for s in families:
-        values = s.solution().values()
-        assert all((values[x[k]] - int(INERTIA[k]) * values[x[3 + k]]).is_zero()
-                   for k in range(3))
-    # and every point found off the axes lies on one listed branch
+        assert all(s.contains(M[k] - int(INERTIA[k]) * g[k]) for k in range(3))
+        assert s.contains(sum(int(i) * gg**2 for i, gg in zip(INERTIA, g)) - c)
     for p in others:
-        assert any(on_branch(s.solution(), x, p) for s in families)
-
-
-def on_branch(solution, x, p):
-    """Whether the numerical point p is on the branch (its free unknown at p,
-    its conditions there, its values equal to p)."""
-    free, = solution.free_unknowns()
-    at = {free: p[x.index(free)]}
-    if not all(bool(c.subs(at)) for c in solution.conditions()):
-        return False
-    values = solution.values()
-    return all(abs(complex(values[v].subs(at)) - p[i]) < 1e-6 for i, v in enumerate(x))
+        assert np.allclose(p[:3], INERTIA * p[3:], atol=1e-7)
+        assert abs(p[3:] @ (INERTIA * p[3:]) - float(c)) < 1e-7
 
 
 def test_symmetric_body_circle():
