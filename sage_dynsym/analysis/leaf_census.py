@@ -667,10 +667,11 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
     The boundaries of the stability in first approximation
     (:func:`leaf_first_approximation_polynomials`) add no bifurcation value
     here: the roots of the linearization on the leaf collide only at
-    complex `c`. In each cell two relative equilibria stay stable in first
-    approximation (the rotations about the smallest axis, `\gamma = \pm
-    e_1`; for `c > 3` also `\pm e_3`, stable by the energy--Casimir method,
-    and for `c < 1` those about the smallest axis are)::
+    complex `c`. The rotations about the first axis, `\gamma = \pm e_1`,
+    are stable in first approximation for every `c \ne 1` (by the
+    energy--Casimir method for `c < 1`); those about the third, `\gamma =
+    \pm e_3`, by the energy--Casimir method for `c > 3` (their roots on the
+    leaf are double: never stable in first approximation alone)::
 
         sage: census.bifurcation_set(first_approximation=True)
         [c - 1, c - 2, c - 3]
