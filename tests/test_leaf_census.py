@@ -78,6 +78,11 @@ def test_euler_top_against_least_squares(seed):
                                               for m in points) == 4
             # the middle axis is a saddle of H on the sphere: unstable
             assert cell.stable_count(first_approximation=True) == 4
+    # on a sphere (a leaf of dimension 2) the linearization has one pair of roots
+    # +-i w, which cannot collide: no boundary besides c = 0
+    assert census.bifurcation_set(first_approximation=True) == [c]
+    assert [x.stable_count(first_approximation=True)
+            for x in census.cells(first_approximation=True)] == [4, 4]
 
 
 def test_symmetric_body_has_a_circle_of_relative_equilibria():

@@ -728,7 +728,7 @@ class Census(SageObject):
             if self._refine is None:
                 raise AnalysisError("this census was built without its system: use "
                                     "equilibrium_census(...)", entry="first_approximation")
-            self._refined = self._refine()
+            self._refined = self._refine(self._cells)
         return self._refined
 
     def _repr_(self):
@@ -1146,13 +1146,13 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     counts_of = sample_runner(_count_task, lambda s: (fixed, s, chart, fixed2, positive),
                               executor)
 
-    def refine():
+    def refine(cells):
         # the first-approximation boundaries are solved with the parameters
         # symbolic, only when asked: that can take much longer than the census
         more = []
         for model in [fixed] + ([] if fixed2 is None else [fixed2[0]]):
             more += first_approximation_polynomials(model, parameters, positive)
-        return refined_cells(polys, more, parameters, signs, counts_of)
+        return refined_cells(polys, more, parameters, signs, counts_of, cells)
 
     return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
                   task, positive, region=signs if len(parameters) == 2 else None,
@@ -1203,14 +1203,15 @@ def polynomials_inside(polys, parameters, signs):
                                     _real_roots([f], parameters[0], False))]
 
 
-def refined_cells(polys, more, parameters, signs, counts_of):
+def refined_cells(polys, more, parameters, signs, counts_of, cells=()):
     r"""
     The bifurcation set ``polys`` with the boundaries ``more`` of the
     stability in first approximation appended (those not in it already, up
     to sign, with a zero inside the declared signs for one parameter), and
     the cells adapted to it (see :func:`census_cells`): what a census's
     ``cells(first_approximation=True)`` and
-    ``bifurcation_set(first_approximation=True)`` give.
+    ``bifurcation_set(first_approximation=True)`` give. The counts of the
+    ``cells`` of ``polys`` are reused at the samples they share.
 
     OUTPUT: a pair ``(polynomials, cells)``
 
@@ -1229,7 +1230,19 @@ def refined_cells(polys, more, parameters, signs, counts_of):
             kept.append(f)
     kept = polynomials_inside(kept, parameters, signs)
     _log(f"first-approximation boundaries {kept}")
-    return polys + kept, census_cells(polys + kept, parameters, signs, counts_of)
+    known = {_sample_key(cell.sample()): cell._counts for cell in cells}
+
+    def counts(samples):
+        # a sample of a coarse cell is solved already (the cells of an
+        # unchanged interval keep their samples)
+        new = [s for s in samples if _sample_key(s) not in known]
+        known.update(zip(map(_sample_key, new), counts_of(new) if new else []))
+        return [known[_sample_key(s)] for s in samples]
+    return polys + kept, census_cells(polys + kept, parameters, signs, counts)
+
+
+def _sample_key(sample):
+    return tuple(sorted((str(k), v) for k, v in sample.items()))
 
 
 def census_cells(polys, parameters, signs, counts_of):

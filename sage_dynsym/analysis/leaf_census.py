@@ -718,11 +718,11 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
     system = (H, list(casimirs), J, x, levels)
     counts_of = sample_runner(_leaf_task, lambda s: (system, s), executor)
 
-    def refine():
+    def refine(cells):
         # solved with the parameters symbolic only when asked (a discriminant
         # on each component of relative equilibria)
         more = leaf_first_approximation_polynomials(H, casimirs, J, x, levels, parameters)
-        return refined_cells(polys, more, parameters, signs, counts_of)
+        return refined_cells(polys, more, parameters, signs, counts_of, cells)
     what = "the relative equilibria on the levels " + \
         ", ".join(f"{C} = {c}" for C, c in zip(casimirs, levels))
     return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
