@@ -22,7 +22,14 @@ The census of relative equilibria on the symplectic leaves
   above; checked by a least-squares search;
 - two parameters (a moment of inertia and the level): the bifurcation
   curves are where two moments are equal and where the sphere shrinks to
-  a point; the plot draws them.
+  a point; the plot draws them;
+- the stability in first approximation (cells(first_approximation=True)):
+  at random levels of each refined cell of Brun's problem and of the
+  Lagrange top, the count of relative equilibria whose linearization on the
+  leaf (written by hand here, projected on the tangent space of the leaf)
+  has simple imaginary eigenvalues (NumPy), or whose second variation is
+  definite there; Brun's boundaries against the discriminants of the
+  characteristic polynomials at the rotations about the axes (SymPy).
 """
 import numpy as np
 import pytest
@@ -157,6 +164,19 @@ def test_lagrange_top():
             assert np.allclose(m, w * np.array([1, 1, 2]) * g) and abs(w**2 * g[2] - 1) < 1e-7
         # the upright top (gamma3 = 1, M3 = c) is stable exactly for c > 2
         assert cell.stable_count() == 1 + (level > 2)
+    # the first approximation, at random levels of each refined cell, against NumPy's
+    # eigenvalues on the leaf at the upright and the hanging top (M = c gamma3 e3)
+    rng = np.random.default_rng(2)
+    for cell in census.cells(first_approximation=True):
+        lo, hi = cell.bounds()
+        for level in rng.uniform(float(lo), float(hi) if hi is not None else float(lo) + 3, 3):
+            stable = 0
+            for up in (1, -1):
+                spectrum, definite = e3_leaf(np.array([0, 0, up * level, 0, 0, up]),
+                                             np.diag([1, 1, 1 / 2]),
+                                             lambda g: np.array([0, 0, 1.0]), np.zeros((3, 3)))
+                stable += definite or simple_and_imaginary(spectrum)
+            assert cell.stable_count(first_approximation=True) == stable
 
 
 # -- Brun's problem: the stability in first approximation ------------------------------
@@ -180,31 +200,30 @@ def brun_field(x):
                            np.cross(g, BRUN_A @ m)])
 
 
-def brun_leaf_spectrum(x):
-    """The eigenvalues of the linearization of Brun's field on the leaf through x."""
+def e3_leaf(x, inertia, potential_gradient, potential_hessian):
+    """For H = (M, A M)/2 + U(gamma) on e(3)*: the eigenvalues of the linearization of
+    M' = M x AM + gamma x grad U, gamma' = gamma x AM on the leaf through the relative
+    equilibrium x, and whether the second variation of H - l1 (M, gamma) - l2 (gamma, gamma)
+    is definite on the tangent space of the leaf (the energy-Casimir method)."""
     m, g = np.split(x, 2)
-    am, bg = BRUN_A @ m, BRUN_B @ g
-    jacobian = np.block([[-cross_matrix(am) + cross_matrix(m) @ BRUN_A,
-                          -cross_matrix(bg) + cross_matrix(g) @ BRUN_B],
-                         [cross_matrix(g) @ BRUN_A, -cross_matrix(am)]])
+    am, du = inertia @ m, potential_gradient(g)
+    jacobian = np.block([[-cross_matrix(am) + cross_matrix(m) @ inertia,
+                          -cross_matrix(du) + cross_matrix(g) @ potential_hessian],
+                         [cross_matrix(g) @ inertia, -cross_matrix(am)]])
     gradients = np.array([np.concatenate([g, m]), np.concatenate([np.zeros(3), 2 * g])])
     tangent = np.linalg.svd(gradients)[2][2:].T         # orthonormal basis of the kernel
     # the linearization maps into the tangent space at a relative equilibrium
     assert np.allclose(gradients @ jacobian, 0, atol=1e-9)
-    return np.linalg.eigvals(tangent.T @ jacobian @ tangent)
-
-
-def brun_energy_casimir_definite(x):
-    """The second variation of H - l1 (M, gamma) - l2 (gamma, gamma) definite on the
-    tangent space of the leaf (the multipliers from grad H = l1 grad C1 + l2 grad C2)."""
-    m, g = np.split(x, 2)
-    gradients = np.array([np.concatenate([g, m]), np.concatenate([np.zeros(3), 2 * g])])
-    l1, l2 = np.linalg.lstsq(gradients.T, np.concatenate([BRUN_A @ m, BRUN_B @ g]),
-                             rcond=None)[0]
-    second = np.block([[BRUN_A, -l1 * np.eye(3)], [-l1 * np.eye(3), BRUN_B - 2 * l2 * np.eye(3)]])
-    tangent = np.linalg.svd(gradients)[2][2:].T
+    l1, l2 = np.linalg.lstsq(gradients.T, np.concatenate([am, du]), rcond=None)[0]
+    second = np.block([[inertia, -l1 * np.eye(3)],
+                       [-l1 * np.eye(3), potential_hessian - 2 * l2 * np.eye(3)]])
     eig = np.linalg.eigvalsh(tangent.T @ second @ tangent)
-    return bool(all(eig > 1e-9) or all(eig < -1e-9))
+    return (np.linalg.eigvals(tangent.T @ jacobian @ tangent),
+            bool(all(eig > 1e-9) or all(eig < -1e-9)))
+
+
+def brun_leaf(x):
+    return e3_leaf(x, BRUN_A, lambda g: BRUN_B @ g, BRUN_B)
 
 
 def simple_and_imaginary(roots, tol=1e-7):
@@ -252,8 +271,8 @@ def test_brun_first_approximation_against_numpy(brun_census):
         for level in rng.uniform(float(lo), top, size=3):
             points = brun_isolated_points(level)
             assert len(points) == cell.count()
-            definite = [brun_energy_casimir_definite(x) for x in points]
-            linear = [simple_and_imaginary(brun_leaf_spectrum(x)) for x in points]
+            definite = [brun_leaf(x)[1] for x in points]
+            linear = [simple_and_imaginary(brun_leaf(x)[0]) for x in points]
             assert cell.stable_count() == sum(definite)
             # stable (energy-Casimir) or stable in first approximation; for c > 3 the
             # rotations about the third axis are stable with double roots on the leaf
