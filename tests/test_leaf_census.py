@@ -110,6 +110,10 @@ def test_two_parameters_and_the_plot():
         points = euler_points(inertia, np.sqrt(float(sample[c])))
         assert cell.count() == len(points) == 6
         assert cell.stable_count() == sum(energy_casimir_definite(inertia, m) for m in points)
+    # one pair of roots +-i w on a sphere: no boundary of the first approximation (nor
+    # a = 0, where the Hamiltonian M2^2/a is not defined)
+    assert sorted(map(str, census.bifurcation_set(first_approximation=True))) == \
+        ['a - 1', 'a - 3', 'c']
     G = census.plot()
     # the cells and the two curves a = 1, a = 3 (c = 0 is the edge of the window)
     assert len(G) >= len(census.cells()) + 2

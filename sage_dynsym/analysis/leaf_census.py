@@ -453,7 +453,10 @@ def leaf_first_approximation_polynomials(H, casimirs, poisson_matrix, variables,
             gens = [g for g in (Q + P.ideal([b])).elimination_ideal(state).gens() if g != 0]
             if gens:
                 add_zero_set_factors(gens, found)
-    return sorted((T.symbolic(f) for f in found), key=str)
+    # the factors of d came with the multiple dA: where d = 0 the system is
+    # not defined (the stationary ideal is saturated there)
+    d = T.to_ring(d)
+    return sorted((T.symbolic(f) for f in found if not f.divides(d)), key=str)
 
 
 def _leaf_verdict(H, casimirs, poisson_matrix, x, field, at):
