@@ -103,7 +103,7 @@ from .point_stability import point_verdict, is_gyroscopic
 
 __all__ = ['discriminant_polynomials', 'stationary_ideal', 'add_zero_set_factors',
            'check_main_thread', 'sample_runner', 'verdict_counts', 'polynomials_inside',
-           'census_cells', 'first_approximation_polynomials', 'equilibria_at',
+           'census_cells', 'refined_cells', 'first_approximation_polynomials', 'equilibria_at',
            'CensusCell', 'Census',
            'equilibrium_census']
 
@@ -728,7 +728,7 @@ class Census(SageObject):
             if self._refine is None:
                 raise AnalysisError("this census was built without its system: use "
                                     "equilibrium_census(...)", entry="first_approximation")
-            self._refined = self._refine()
+            self._refined = self._refine(self._cells)
         return self._refined
 
     def _repr_(self):
@@ -1146,17 +1146,13 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     counts_of = sample_runner(_count_task, lambda s: (fixed, s, chart, fixed2, positive),
                               executor)
 
-    def refine():
+    def refine(cells):
         # the first-approximation boundaries are solved with the parameters
         # symbolic, only when asked: that can take much longer than the census
         more = []
         for model in [fixed] + ([] if fixed2 is None else [fixed2[0]]):
-            more += [f for f in first_approximation_polynomials(model, parameters, positive)
-                     if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0)
-                            for g in polys + more)]
-        more = polynomials_inside(more, parameters, signs)
-        _log(f"first-approximation boundaries {more}")
-        return polys + more, census_cells(polys + more, parameters, signs, counts_of)
+            more += first_approximation_polynomials(model, parameters, positive)
+        return refined_cells(polys, more, parameters, signs, counts_of, cells)
 
     return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
                   task, positive, region=signs if len(parameters) == 2 else None,
@@ -1205,6 +1201,48 @@ def polynomials_inside(polys, parameters, signs):
         return polys
     return [f for f in polys if any(r > 0 or not signs[0] for r in
                                     _real_roots([f], parameters[0], False))]
+
+
+def refined_cells(polys, more, parameters, signs, counts_of, cells=()):
+    r"""
+    The bifurcation set ``polys`` with the boundaries ``more`` of the
+    stability in first approximation appended (those not in it already, up
+    to sign, with a zero inside the declared signs for one parameter), and
+    the cells adapted to it (see :func:`census_cells`): what a census's
+    ``cells(first_approximation=True)`` and
+    ``bifurcation_set(first_approximation=True)`` give. The counts of the
+    ``cells`` of ``polys`` are reused at the samples they share.
+
+    OUTPUT: a pair ``(polynomials, cells)``
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis.census import refined_cells
+        sage: c = var('c')
+        sage: polys, cells = refined_cells([c - 1], [1 - c, c - 2, c + 5], [c], [True],
+        ....:                              lambda samples: [(1, 0, 0, 0)] * len(samples))
+        sage: polys, [cell.description() for cell in cells]
+        ([c - 1, c - 2], ['0 < c < 1', '1 < c < 2', '2 < c'])
+    """
+    kept = []
+    for f in more:
+        if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0) for g in polys + kept):
+            kept.append(f)
+    kept = polynomials_inside(kept, parameters, signs)
+    _log(f"first-approximation boundaries {kept}")
+    known = {_sample_key(cell.sample()): cell._counts for cell in cells}
+
+    def counts(samples):
+        # a sample of a coarse cell is solved already (the cells of an
+        # unchanged interval keep their samples)
+        new = [s for s in samples if _sample_key(s) not in known]
+        known.update(zip(map(_sample_key, new), counts_of(new) if new else []))
+        return [known[_sample_key(s)] for s in samples]
+    return polys + kept, census_cells(polys + kept, parameters, signs, counts)
+
+
+def _sample_key(sample):
+    return tuple(sorted((str(k), v) for k, v in sample.items()))
 
 
 def census_cells(polys, parameters, signs, counts_of):

@@ -48,9 +48,14 @@ equilibria of a Lagrangian:
    points.
 
 The count of isolated relative equilibria and the energy--Casimir stable
-count are constant on the cells; the count stable in first approximation
-is the one at the sample (a pair of roots may collide on the imaginary
-axis inside a cell without any equilibrium degenerating).
+count are constant on the cells. The count stable in first approximation
+also changes where two roots of the linearization on the leaf collide
+without any equilibrium degenerating: those boundaries
+(:func:`leaf_first_approximation_polynomials`, the discriminant of the
+characteristic polynomial on the leaf eliminated on the relative
+equilibria) are computed when ``cells(first_approximation=True)`` is
+asked for; its cells have a constant
+``stable_count(first_approximation=True)``.
 
 EXAMPLES: the free rigid body, `H = \frac12 \sum M_i^2/I_i` with `I =
 (1, 2, 3)`, on the spheres `|M|^2 = c^2`: six relative equilibria (the
@@ -77,6 +82,7 @@ REFERENCES:
 """
 import random
 
+from sage.arith.functions import lcm
 from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
 from sage.misc.verbose import verbose
@@ -88,14 +94,15 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError
 from ..arguments import symbol_arguments
 from .census import (Census, stationary_ideal, add_zero_set_factors, check_main_thread,
-                     sample_runner, verdict_counts, census_cells, polynomials_inside)
+                     sample_runner, verdict_counts, census_cells, polynomials_inside,
+                     refined_cells)
 from .charts import configuration_points
 from .energy_casimir import energy_casimir_stability
 from .point_stability import spectrum_verdict
 from .stationary import stationary_solutions
 
-__all__ = ['has_real_points', 'leaf_bifurcation_polynomials', 'relative_equilibria_at',
-           'leaf_census']
+__all__ = ['has_real_points', 'leaf_bifurcation_polynomials',
+           'leaf_first_approximation_polynomials', 'relative_equilibria_at', 'leaf_census']
 
 def _log(message, level=1):
     verbose(f"equilibrium_census: {message}", level=level)
@@ -297,9 +304,7 @@ def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
         AnalysisError: levels: the level [x^2 + y^2 + z^2 == 0] is singular (the gradients of the Casimirs dependent) for every value of c: choose levels where the leaves are regular
     """
     x = [SR(v) for v in variables]
-    lam = [SR.var(f"leaf_multiplier{i + 1}") for i in range(len(casimirs))]
-    W = SR(H) - sum(m * (SR(C) - SR(c)) for m, C, c in zip(lam, casimirs, levels))
-    u = x + lam
+    W, u = _lagrange_function(H, casimirs, x, levels)
     hessian = matrix(SR, [[W.diff(a).diff(b) for b in u] for a in u]).det()
     G = matrix(SR, [[SR(C).diff(v) for v in x] for C in casimirs])
     minors = G.minors(len(casimirs)) if casimirs else []
@@ -343,6 +348,115 @@ def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
             if meet:
                 add_zero_set_factors(meet, found)
     return sorted((T.symbolic(f) for f in found), key=str)
+
+
+def _lagrange_function(H, casimirs, x, levels):
+    r"""`W = H - \sum_i \lambda_i (C_i - c_i)` and its unknowns `(x,
+    \lambda)`: the relative equilibria on the leaf are its critical points."""
+    lam = [SR.var(f"leaf_multiplier{i + 1}") for i in range(len(casimirs))]
+    W = SR(H) - sum(m * (SR(C) - SR(c)) for m, C, c in zip(lam, casimirs, levels))
+    return W, x + lam
+
+
+def _hamiltonian_field(H, poisson_matrix, x):
+    r"""The vector field `J(x)\nabla H` (a vector of expressions)."""
+    return (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in x])).column(0)
+
+
+def leaf_first_approximation_polynomials(H, casimirs, poisson_matrix, variables, levels,
+                                         parameters):
+    r"""
+    The boundaries, in the parameters, of the stability in first
+    approximation of the isolated relative equilibria on the levels `C_i =
+    c_i`: irreducible polynomials in the parameters.
+
+    At a relative equilibrium the linearization of `\dot x = J(x)\nabla H`
+    has the characteristic polynomial `z^k p(z)` (`k` the number of
+    Casimirs: the roots transversal to the leaf), `p` the one of the
+    linearization on the leaf, even for a Hamiltonian system: `p(z) =
+    q(z^2)`. Its roots are all simple and on the imaginary axis (stable in
+    first approximation) iff those of `q` are simple, real and negative;
+    that changes only where a root of `q` crosses zero (`q(0) = 0`, where
+    the equilibrium is degenerate on its leaf) or two roots collide (the
+    discriminant of `q` vanishes). The projections of those two sets on the
+    parameters are computed by elimination (Singular) on each component of
+    isolated relative equilibria of the stationary ideal (see
+    :func:`leaf_bifurcation_polynomials`); a component where `q` has a
+    multiple root everywhere adds nothing (its equilibria are never stable
+    in first approximation; the energy--Casimir verdict changes only where
+    they are degenerate).
+
+    INPUT: as for :func:`leaf_bifurcation_polynomials`, with
+    ``poisson_matrix`` the matrix `J(x)`
+
+    OUTPUT: a list of symbolic polynomials in the parameters
+
+    EXAMPLES: Brun's problem (see :func:`leaf_bifurcation_polynomials`):
+    besides the degenerate values `|c| = 1, 2, 3`, pairs of roots collide
+    at the zeros of a polynomial of degree 4 in `c`::
+
+        sage: from sage_dynsym.analysis.leaf_census import leaf_first_approximation_polynomials
+        sage: M1, M2, M3, g1, g2, g3, c = var('M1 M2 M3 g1 g2 g3 c')
+        sage: H = (M1^2 + M2^2/2 + M3^2/3)/2 + (g1^2 + 2*g2^2 + 3*g3^2)/2
+        sage: C = [M1*g1 + M2*g2 + M3*g3, g1^2 + g2^2 + g3^2]
+        sage: J = block_matrix([[matrix([[0, -M3, M2], [M3, 0, -M1], [-M2, M1, 0]]),
+        ....:                    matrix([[0, -g3, g2], [g3, 0, -g1], [-g2, g1, 0]])],
+        ....:                   [matrix([[0, -g3, g2], [g3, 0, -g1], [-g2, g1, 0]]), 0]])
+        sage: leaf_first_approximation_polynomials(H, C, J, [M1, M2, M3, g1, g2, g3], [c, 1], [c])
+        [c + 1, c + 2, c + 3, c - 1, c - 2, c - 3, c^4 + 14*c^2 + 1, c^4 - 4*c^2 + 16]
+
+    Neither quartic has a real root: the count stable in first
+    approximation changes only where the count does.
+
+    TESTS: a function that is not a Casimir of `J`: the linearization on
+    its levels is not Hamiltonian::
+
+        sage: x, y, z = var('x y z')
+        sage: leaf_first_approximation_polynomials((x^2 + 2*y^2 + 3*z^2)/2, [x + y],
+        ....:     matrix([[0, x, 0], [-x, 0, 1], [0, -1, 0]]), [x, y, z], [c], [c])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: casimirs: the characteristic polynomial of the linearization on the leaf is not even on the relative equilibria [-1/2*x + y, z, leaf_multiplier1 - x, c - 3/2*x]: the linearization is not Hamiltonian on the levels of x + y; give the Casimirs of J (all of them)
+    """
+    x = [SR(v) for v in variables]
+    W, u = _lagrange_function(H, casimirs, x, levels)
+    field = _hamiltonian_field(H, poisson_matrix, x)
+    entries = [f.diff(v) for f in field for v in x]
+    T, ideal, state, _ = stationary_ideal([W.diff(v) for v in u], u, parameters, entries)
+    P = T.ring()
+    # the parameters may have denominators: a multiple dA of the Jacobian
+    # matrix (d in the parameters) has the roots d z, simple and imaginary
+    # where those of A are, for d real and nonzero
+    fractions = [T.fraction(e) for e in entries]
+    d = lcm([f.denominator() for f in fractions])
+    A = matrix(P, len(x), len(x), [T.to_ring((f * d).numerator()) for f in fractions])
+    coefficients = A.charpoly('z').list()[len(casimirs):]
+    even, odd = coefficients[::2], coefficients[1::2]
+    R = PolynomialRing(QQ, list(P.variable_names()) + ['leaf_w'])
+    w = R.gen(len(P.gens()))
+    q = sum(R(str(a)) * w ** i for i, a in enumerate(even))
+    back = R.hom(list(P.gens()) + [P.zero()], P)
+    boundaries = [even[0]] + ([back(q.discriminant(w))] if len(even) > 2 else [])
+    found = []
+    for Q in _components(ideal):
+        if any(g != 0 for g in Q.elimination_ideal(state).gens()) or \
+                Q.dimension() > len(parameters):
+            continue        # over a proper subset of the parameters, or a family
+        if any(Q.reduce(a) != 0 for a in odd):
+            raise AnalysisError(
+                f"the characteristic polynomial of the linearization on the leaf is not even "
+                f"on the relative equilibria {[T.symbolic(g) for g in Q.gens()]}: the "
+                "linearization is not Hamiltonian on the levels of "
+                f"{', '.join(map(str, casimirs))}; give the Casimirs of J (all of them)",
+                entry="casimirs")
+        for b in boundaries:
+            gens = [g for g in (Q + P.ideal([b])).elimination_ideal(state).gens() if g != 0]
+            if gens:
+                add_zero_set_factors(gens, found)
+    # the factors of d came with the multiple dA: where d = 0 the system is
+    # not defined (the stationary ideal is saturated there)
+    d = T.to_ring(d)
+    return sorted((T.symbolic(f) for f in found if not f.divides(d)), key=str)
 
 
 def _leaf_verdict(H, casimirs, poisson_matrix, x, field, at):
@@ -402,7 +516,7 @@ def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
         (2, [1])
     """
     x = [SR(v) for v in variables]
-    field = (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in x])).column(0)
+    field = _hamiltonian_field(H, poisson_matrix, x)
     sols = stationary_solutions([SR(H)] + [SR(C) for C in casimirs], x, equations=list(field),
                                 levels=list(levels))
     found = []
@@ -515,7 +629,7 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
         [[], [1], [1], []]
         sage: census.count_at({c: 10})
         (6, 2)
-        sage: TestSuite(census).run(skip=['_test_pickling', '_test_first_approximation'])
+        sage: TestSuite(census).run(skip=['_test_pickling'])
 
     TESTS::
 
@@ -536,10 +650,21 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
         Traceback (most recent call last):
         ...
         AnalysisError: parameters: M1 is a variable of the system, not a parameter
-        sage: census.cells(first_approximation=True)
-        Traceback (most recent call last):
-        ...
-        AnalysisError: first_approximation: the boundaries of the first approximation of relative equilibria are not computed; stable_count(first_approximation=True) of a cell is its count at the sample
+
+    The boundaries of the stability in first approximation
+    (:func:`leaf_first_approximation_polynomials`) add no bifurcation value
+    here: the roots of the linearization on the leaf collide only at
+    complex `c`. The rotations about the first axis, `\gamma = \pm e_1`,
+    are stable in first approximation for every `c \ne 1` (by the
+    energy--Casimir method for `c < 1`); those about the third, `\gamma =
+    \pm e_3`, by the energy--Casimir method for `c > 3` (their roots on the
+    leaf are double: never stable in first approximation alone)::
+
+        sage: census.bifurcation_set(first_approximation=True)
+        [c - 1, c - 2, c - 3]
+        sage: [(cell.count(), cell.stable_count(), cell.stable_count(first_approximation=True))
+        ....:  for cell in census.cells(first_approximation=True)]
+        [(6, 2, 2), (6, 0, 2), (6, 0, 2), (6, 2, 4)]
     """
     parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
     positive = symbol_arguments(positive, 'positive', error=AnalysisError)
@@ -580,10 +705,11 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
     system = (H, list(casimirs), J, x, levels)
     counts_of = sample_runner(_leaf_task, lambda s: (system, s), executor)
 
-    def refine():
-        raise AnalysisError("the boundaries of the first approximation of relative equilibria "
-                            "are not computed; stable_count(first_approximation=True) of a "
-                            "cell is its count at the sample", entry="first_approximation")
+    def refine(cells):
+        # solved with the parameters symbolic only when asked (a discriminant
+        # on each component of relative equilibria)
+        more = leaf_first_approximation_polynomials(H, casimirs, J, x, levels, parameters)
+        return refined_cells(polys, more, parameters, signs, counts_of, cells)
     what = "the relative equilibria on the levels " + \
         ", ".join(f"{C} = {c}" for C, c in zip(casimirs, levels))
     return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
