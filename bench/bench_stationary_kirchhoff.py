@@ -51,6 +51,22 @@ linearly) one Groebner basis of the 5 remaining unknowns 130 s. Putting
 the unknowns in their own order (M first, multipliers last) for every
 problem made Brun's problem on M.gamma = c take over 300 s.
 
+Measured 2026-12-05 (fourth session) on the generic case: in the block
+order (M, p | lambda), degrevlex in each block, the Groebner basis of the
+Lagrange system takes 0.04 s with lambda1 (the multiplier of p.p) before
+lambda2 and 21 s with them swapped (plain degrevlex: 7 to over 15 s in
+every order tried). The system is homogeneous in (M, p) (the multipliers
+of degree 0), so its saturation by p1 is that basis with each element
+divided by its largest power of p1 (Bayer's criterion, p1 last in its
+block): the two components (M = p = 0, and the family) in 0.45 s. What
+then stalls is the rest of the solver on the family: its dimension is
+computed again in the translation's degrevlex order (over 10 minutes,
+4.7 GB). A route needs the whole component pipeline (dimension, free
+unknowns, block basis of the multipliers) to work in an order chosen by
+trying, not only the decomposition. In Brun's problem on M.gamma = c the
+block basis of the family (24 s in the solver) did not finish in 30 s in
+any of 18 orders of its blocks tried from the prime's own generators.
+
 Usage: python bench/bench_stationary_kirchhoff.py [--budget 120] [-v] [--only NAME]
 """
 import argparse
