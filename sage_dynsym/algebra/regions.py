@@ -212,7 +212,7 @@ def _witness(alternative, positive, rng):
     return None
 
 
-def prune_empty(alternatives, positive=(), seed=0):
+def prune_empty(alternatives, positive=(), seed=0, timeout=EMPTINESS_TIMEOUT):
     r"""
     Drop the alternatives that are empty: an alternative is kept when a
     sample point satisfies it (checked exactly), dropped when quantifier
@@ -225,6 +225,8 @@ def prune_empty(alternatives, positive=(), seed=0):
     - ``alternatives`` -- a region
     - ``positive`` -- symbols declared positive
     - ``seed`` -- (default: 0) the seed of the sampling
+    - ``timeout`` -- (default: :data:`EMPTINESS_TIMEOUT`) seconds allowed
+      to QEPCAD for each alternative
 
     OUTPUT: a region
 
@@ -248,7 +250,7 @@ def prune_empty(alternatives, positive=(), seed=0):
         declared = [v for v in variables if str(v) in {str(SR(p)) for p in positive}]
         try:
             if exists(variables, list(alt) + [v > 0 for v in declared],
-                      timeout=EMPTINESS_TIMEOUT) == []:
+                      timeout=timeout) == []:
                 continue
         except AnalysisError:
             pass

@@ -101,6 +101,7 @@ from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
 from .decomposition import (minimal_primes, shape, ShapePrime, triangular_sets,
                             linear_substitutions)
+from .regions import prune_empty
 from .translation import Translation, NotAlgebraic, translate_expressions
 
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
@@ -858,7 +859,9 @@ def _without_noise(T, solutions, positive):
 
 def _never_real(solution, positive, cache):
     r"""Whether quantifier elimination proves that no real values satisfy
-    the conditions of ``solution`` (``False`` when undecided)."""
+    the conditions of ``solution`` (``False`` when undecided, or when a
+    sample point satisfies them: see
+    :func:`~sage_dynsym.algebra.regions.prune_empty`)."""
     conditions = solution._conditions
     # points: their conditions are on the parameters only, simplified when
     # made; a call of QEPCAD for each would cost more than it finds
@@ -876,12 +879,7 @@ def _never_real(solution, positive, cache):
     except (TypeError, ValueError):
         cache[key] = False      # not rational: quantifier elimination would take atoms
         return False
-    from .quantifier_elimination import exists
-    signs = [SR(p) > 0 for p in positive if any(str(SR(p)) == str(v) for v in symbols)]
-    try:
-        cache[key] = not exists(symbols, list(conditions) + signs, timeout=REALITY_QE_TIMEOUT)
-    except AnalysisError:
-        cache[key] = False
+    cache[key] = not prune_empty([list(conditions)], positive, timeout=REALITY_QE_TIMEOUT)
     if cache[key]:
         _log(f"a branch real nowhere under {list(conditions)}: dropped")
     return cache[key]
