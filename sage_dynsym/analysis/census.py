@@ -478,10 +478,13 @@ def verdict_counts(verdicts):
 
 
 def _count_task(system, values, chart, regular, positive):
-    r"""One sample point's counts (a task: module level, picklable arguments)."""
+    r"""One sample point's counts, and no families: the equilibria of a
+    Lagrangian are isolated off the bifurcation set (a task: module level,
+    picklable arguments)."""
     check_main_thread(values)
     _log(f"solving at {values}")
-    return verdict_counts([v for _, v in equilibria_at(system, values, chart, regular, positive)])
+    points = equilibria_at(system, values, chart, regular, positive)
+    return verdict_counts([v for _, v in points]), None
 
 
 def check_main_thread(values):
@@ -560,6 +563,18 @@ class CensusCell(SageObject):
     rational sample point and those numbers there. Created by
     :func:`equilibrium_census`.
 
+    INPUT:
+
+    - ``description`` -- the cell as inequalities (text)
+    - ``sample`` -- a dict of rational values of the parameters
+    - ``counts`` -- the tuple ``(count, stable, stable with those in first
+      approximation, undecided)`` at the sample
+    - ``bounds`` -- (optional) for one parameter, the bounds of the interval
+    - ``families`` -- (default: ``None``) for a census of relative
+      equilibria, the dimensions of the families of relative equilibria at
+      the sample (``[]`` for none); ``None`` for a census of the equilibria
+      of a Lagrangian or Routh function
+
     EXAMPLES::
 
         sage: from sage_dynsym import Lagrangian
@@ -572,17 +587,18 @@ class CensusCell(SageObject):
         ({w: 2}, 4, 2, 0)
     """
 
-    def __init__(self, description, sample, counts, bounds=None):
+    def __init__(self, description, sample, counts, bounds=None, families=None):
         self._description = description
         self._sample = sample
-        self._counts = counts
+        self._counts = tuple(counts)
         self._bounds = bounds
+        self._families = None if families is None else sorted(families)
 
     def _repr_(self):
-        n, stable, linear, undecided = self._counts[:4]
+        n, stable, linear, undecided = self._counts
         families = self.families()
         noun = "isolated" if families else f"equilibri{'um' if n == 1 else 'a'}"
-        if len(self._counts) > 4 and not families:
+        if self._families is not None and not families:
             noun = "relative " + noun
         text = f"{self._description} (sample {', '.join(f'{k} = {v}' for k, v in self._sample.items())}): {n} {noun}, {stable} stable"
         if linear > stable:
@@ -609,15 +625,16 @@ class CensusCell(SageObject):
         EXAMPLES::
 
             sage: from sage_dynsym.analysis.census import CensusCell
-            sage: cell = CensusCell("1 < c < 2", {var('c'): 3/2}, (6, 0, 2, 0, [1])); cell
+            sage: c = var('c')
+            sage: cell = CensusCell("1 < c < 2", {c: 3/2}, (6, 0, 2, 0), families=[1]); cell
             1 < c < 2 (sample c = 3/2): 6 isolated, 0 stable, 2 more stable in first approximation, and a curve of relative equilibria
             sage: cell.families()
             [1]
-            sage: CensusCell("0 < c", {var('c'): 1}, (6, 4, 4, 0, [])), CensusCell("0 < c", {var('c'): 1}, (1, 1, 1, 0))
+            sage: CensusCell("0 < c", {c: 1}, (6, 4, 4, 0), families=[]), CensusCell("0 < c", {c: 1}, (1, 1, 1, 0))
             (0 < c (sample c = 1): 6 relative equilibria, 4 stable,
              0 < c (sample c = 1): 1 equilibrium, 1 stable)
         """
-        return sorted(self._counts[4]) if len(self._counts) > 4 else []
+        return list(self._families or [])
 
     def description(self):
         r"""The cell as inequalities (text).
@@ -900,7 +917,7 @@ class Census(SageObject):
             raise AnalysisError(f"give a value to {', '.join(map(str, missing))}, e.g. "
                                 f"count_at({{{', '.join(f'{p}: 1' for p in self._parameters)}}})",
                                 entry="count_at")
-        n, stable = self._task(values)[:2]
+        (n, stable, _, _), _ = self._task(values)
         return n, stable
 
     def plot(self, **options):
@@ -938,14 +955,16 @@ class Census(SageObject):
         return census_plot(self, self._region, **options)
 
 
-def _cells_one(polys, p, positive, counts):
+def _intervals_one(polys, p, positive):
+    r"""The open intervals of ``p`` between the real roots of ``polys``, as
+    ``(description, sample, bounds)``."""
     cells = []
     for lo, hi in _intervals(_real_roots(polys, p, positive), positive):
         sample = {p: _between(lo, hi)}
         text = (f"{_shown(lo)} < " if lo is not None else "") + str(p) + \
             (f" < {_shown(hi)}" if hi is not None else "")
         cells.append((text, sample, (lo, hi)))
-    return [CensusCell(text, sample, counts(sample), bounds) for text, sample, bounds in cells]
+    return cells
 
 
 def _cylinders(polys, p1, p2, positive1, positive2):
@@ -1220,7 +1239,7 @@ def refined_cells(polys, more, parameters, signs, counts_of, cells=()):
         sage: from sage_dynsym.analysis.census import refined_cells
         sage: c = var('c')
         sage: polys, cells = refined_cells([c - 1], [1 - c, c - 2, c + 5], [c], [True],
-        ....:                              lambda samples: [(1, 0, 0, 0)] * len(samples))
+        ....:                              lambda samples: [((1, 0, 0, 0), None)] * len(samples))
         sage: polys, [cell.description() for cell in cells]
         ([c - 1, c - 2], ['0 < c < 1', '1 < c < 2', '2 < c'])
     """
@@ -1230,7 +1249,7 @@ def refined_cells(polys, more, parameters, signs, counts_of, cells=()):
             kept.append(f)
     kept = polynomials_inside(kept, parameters, signs)
     _log(f"first-approximation boundaries {kept}")
-    known = {_sample_key(cell.sample()): cell._counts for cell in cells}
+    known = {_sample_key(cell.sample()): (cell._counts, cell._families) for cell in cells}
 
     def counts(samples):
         # a sample of a coarse cell is solved already (the cells of an
@@ -1249,20 +1268,21 @@ def census_cells(polys, parameters, signs, counts_of):
     r"""
     The cells adapted to ``polys`` (one or two ``parameters``, ``signs``
     whether each is declared positive), with the counts at their samples:
-    ``counts_of`` maps a list of samples to their counts.
+    ``counts_of`` maps a list of samples to their pairs ``(counts,
+    families)`` (see :class:`CensusCell`).
 
     EXAMPLES::
 
         sage: from sage_dynsym.analysis.census import census_cells
         sage: c = var('c')
-        sage: census_cells([c - 1], [c], [True], lambda samples: [(1, 0, 0, 0)] * len(samples))
+        sage: census_cells([c - 1], [c], [True], lambda samples: [((1, 0, 0, 0), None)] * len(samples))
         [0 < c < 1 (sample c = 1/2): 1 equilibrium, 0 stable,
          1 < c (sample c = 2): 1 equilibrium, 0 stable]
     """
     if len(parameters) == 1:
-        shape = [(c.description(), c.sample(), c.bounds())
-                 for c in _cells_one(polys, parameters[0], signs[0], lambda s: None)]
+        shape = _intervals_one(polys, parameters[0], signs[0])
     else:
         shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
     found = counts_of([sample for _, sample, _ in shape])
-    return [CensusCell(text, sample, n, bounds) for (text, sample, bounds), n in zip(shape, found)]
+    return [CensusCell(text, sample, counts, bounds, families)
+            for (text, sample, bounds), (counts, families) in zip(shape, found)]

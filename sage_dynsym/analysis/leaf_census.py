@@ -572,7 +572,7 @@ def _leaf_task(system, values):
     points, families = relative_equilibria_at(
         SR(H).subs(values), casimirs, matrix(SR, J).subs(values), x,
         [SR(c).subs(values) for c in levels])
-    return verdict_counts([v for _, v in points]) + (families,)
+    return verdict_counts([v for _, v in points]), families
 
 
 def _symbols(expressions, skip):
