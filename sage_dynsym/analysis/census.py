@@ -81,35 +81,23 @@ REFERENCES:
   satellite*, Cosmic Research 22 (1984) 257--260.
 """
 import operator
-import threading
 import warnings
 
-from sage.arith.misc import gcd
 from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
-from sage.misc.verbose import verbose
-from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
-from sage.rings.qqbar import AA
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..arguments import symbol_arguments
-from ..algebra.translation import Translation
 from .charts import configuration_points, same_point
-from .verdict import STABLE_VERDICTS
 from .point_stability import point_verdict, is_gyroscopic
+from ._census import (log, stationary_ideal, add_zero_set_factors, verdict_counts,
+                      check_main_thread, polynomials_inside, real_roots, cell_shapes)
 
-__all__ = ['discriminant_polynomials', 'stationary_ideal', 'add_zero_set_factors',
-           'check_main_thread', 'sample_runner', 'verdict_counts', 'polynomials_inside',
-           'census_cells', 'refined_cells', 'first_approximation_polynomials', 'equilibria_at',
-           'CensusCell', 'Census',
-           'equilibrium_census']
-
-
-def _log(message, level=1):
-    verbose(f"equilibrium_census: {message}", level=level)
+__all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at',
+           'CensusCell', 'Census', 'equilibrium_census']
 
 
 # -- the stationary problem -------------------------------------------------------
@@ -166,34 +154,6 @@ def discriminant_polynomials(W, coordinates, parameters):
                        "the census counts isolated equilibria only")
 
 
-def stationary_ideal(equations, unknowns, parameters, extra=()):
-    r"""
-    The ideal of ``equations`` in the polynomial ring of the unknowns and
-    the parameters (angles in their cosines and sines, denominators
-    saturated away), with the ring variables to eliminate to reach the
-    parameters and the numerators of the ``extra`` expressions in that
-    ring: what an elimination onto the parameters starts from.
-
-    OUTPUT: a tuple ``(translation, ideal, state, extra)``
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import stationary_ideal
-        sage: x, a = var('x a')
-        sage: T, I, state, extra = stationary_ideal([x^2 - a], [x], [a], [2*x])
-        sage: I.gens(), state, extra
-        ([x1^2 - x0], [x1], [2*x1])
-    """
-    T = Translation(list(equations), list(unknowns) + list(parameters), extra=list(extra))
-    P = T.ring()
-    keep = {str(g) for p in parameters for g in T.generators_of(p)}
-    state = [g for g in P.gens() if str(g) not in keep]
-    ideal = P.ideal(T.equations())
-    for d in T.denominators():
-        ideal = ideal.saturation(P.ideal(d))[0]
-    return T, ideal, state, [T.numerator(e)[0] for e in extra]
-
-
 def _projection(W, q, parameters, extra, degenerate):
     r"""The irreducible factors of the projection on the parameters of
     `\{\nabla W = 0,\ extra = 0\}`; ``degenerate`` is the message when a
@@ -204,7 +164,7 @@ def _projection(W, q, parameters, extra, degenerate):
     # split first (Singular's factorizing Groebner basis): eliminating from
     # each part takes milliseconds where the whole ideal can take minutes
     parts = [P.ideal(list(part)) for part in ff.facstd(ideal)]
-    _log(f"eliminating {len(state)} variables from {len(parts)} parts")
+    log(f"eliminating {len(state)} variables from {len(parts)} parts")
     factors = []
     for part in parts:
         gens = [g for g in (part + P.ideal([other])).elimination_ideal(state).gens()
@@ -213,29 +173,6 @@ def _projection(W, q, parameters, extra, degenerate):
             raise AnalysisError(degenerate, entry="equilibrium_census")
         add_zero_set_factors(gens, factors)
     return [T.symbolic(f) for f in factors]
-
-
-def add_zero_set_factors(gens, factors):
-    r"""
-    Append to ``factors`` the irreducible factors (not there yet, up to
-    sign) of a polynomial vanishing on the zero set of the nonzero
-    polynomials ``gens`` in the parameters: the factors of their gcd for
-    one parameter; for two, of a curve through it (a finite set of points
-    lies on it).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import add_zero_set_factors
-        sage: R.<a, b> = QQ[]
-        sage: found = [a - 1]
-        sage: add_zero_set_factors([(a - 1)*(a + 2)*b, (a + 2)*(b + 1)], found); found
-        [a - 1, a + 2]
-    """
-    g = gcd(gens) if len(gens) > 1 else gens[0]
-    if g.is_constant():
-        g = gens[0]
-    factors += [f for f, _ in g.factor() if not f.is_constant() and f not in factors
-                and -f not in factors]
 
 
 def first_approximation_polynomials(system, parameters, positive=()):
@@ -306,7 +243,7 @@ def first_approximation_polynomials(system, parameters, positive=()):
                             entry="first_approximation")
     found, undecided = [], []
     solutions = stationary_motions(system, positive=positive)
-    _log(f"the stability of {len(solutions)} stationary solutions, the parameters symbolic")
+    log(f"the stability of {len(solutions)} stationary solutions, the parameters symbolic")
     for sol in solutions:
         verdict = sol.stability()
         undecided += [f"{sol} where {case.region() or 'the parameters are'}"
@@ -460,100 +397,14 @@ def _points(system, values, chart, stationary_motions, positive):
     return [(p, point_verdict(p, problem, gyroscopic)) for p in points]
 
 
-def verdict_counts(verdicts):
-    r"""
-    The counts of a cell from the verdicts of its equilibria: ``(count,
-    stable, stable with those in first approximation, undecided)``.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import verdict_counts
-        sage: verdict_counts(['stable', 'unstable', 'stable in first approximation', 'undecided'])
-        (4, 1, 2, 1)
-    """
-    stable = sum(1 for v in verdicts if v == 'stable')
-    linear = sum(1 for v in verdicts if v in STABLE_VERDICTS)
-    undecided = sum(1 for v in verdicts if v == 'undecided')
-    return len(verdicts), stable, linear, undecided
-
-
 def _count_task(system, values, chart, regular, positive):
     r"""One sample point's counts, and no families: the equilibria of a
     Lagrangian are isolated off the bifurcation set (a task: module level,
     picklable arguments)."""
     check_main_thread(values)
-    _log(f"solving at {values}")
+    log(f"solving at {values}")
     points = equilibria_at(system, values, chart, regular, positive)
     return verdict_counts([v for _, v in points]), None
-
-
-def check_main_thread(values):
-    r"""
-    Refuse a sample point sent to a thread other than the main one, before
-    PARI runs there (its stack belongs to the main thread).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import check_main_thread
-        sage: check_main_thread({var('a'): 1})
-    """
-    if threading.current_thread() is not threading.main_thread():
-        # PARI's stack belongs to the main thread: in another one it faults
-        raise AnalysisError(f"the sample point {values} was sent to a thread "
-                            f"({threading.current_thread().name}), where Sage's PARI cannot "
-                            "run; solve the samples in the main thread of processes: "
-                            "sage_dynsym.scale.equilibrium_census(..., client=...) (Dask's "
-                            "process pool with client='local'; with a dask.distributed Client, "
-                            "in child processes of its workers) or "
-                            "executor=concurrent.futures.ProcessPoolExecutor()",
-                            entry="executor")
-
-
-# -- cells ----------------------------------------------------------------------------
-
-def _between(a, b):
-    r"""A rational strictly between ``a < b`` (``None`` for no bound), of the
-    smallest denominator, the closest to ``a`` among those."""
-    if a is None and b is None:
-        return QQ(0)
-    if a is None:
-        return QQ((b - 1).ceil())
-    if b is None:
-        return QQ(a.floor() + 1)
-    den = 1
-    while True:
-        n = (a * den).floor() + 1
-        if QQ(n) / den < b:
-            return QQ(n) / den
-        den += 1
-
-
-def _real_roots(polys, x, positive):
-    r"""The distinct real roots in ``x`` of the univariate ``polys``,
-    sorted; with ``positive``, those `> 0` and `0` itself as a bound."""
-    ring = PolynomialRing(QQ, 'z')
-    roots = set()
-    for f in polys:
-        if SR(f).has(x):
-            f = ring(SR(f).coefficients(x, sparse=False))
-            roots.update(r for r, _ in f.roots(AA))
-    if positive:
-        roots = {r for r in roots if r > 0} | {AA(0)}
-    return sorted(roots)
-
-
-def _intervals(roots, positive):
-    bounds = ([] if positive else [None]) + list(roots) + [None]
-    return list(zip(bounds[:-1], bounds[1:]))
-
-
-def _shown(value):
-    r"""A bound as radicals when they are real ones, else as a real algebraic number."""
-    try:
-        text = str(value.radical_expression())
-    except (AttributeError, ValueError, NotImplementedError, TypeError):
-        return str(value)
-    return str(value) if 'I' in text else text
 
 
 class CensusCell(SageObject):
@@ -695,7 +546,26 @@ class CensusCell(SageObject):
 class Census(SageObject):
     r"""
     The census of the equilibria of a system over one or two parameters:
-    its bifurcation set and its cells. Created by :func:`equilibrium_census`.
+    its bifurcation set and its cells. Created by :func:`equilibrium_census`
+    (and :func:`~sage_dynsym.analysis.leaf_census.leaf_census`), which give
+    it what differs between systems; the cells, the solving of their
+    samples and the first-approximation refinement are its own.
+
+    INPUT:
+
+    - ``parameters`` -- one or two symbols
+    - ``polynomials`` -- the bifurcation set (for one parameter, the
+      factors without a zero inside the declared signs are dropped)
+    - ``task``, ``arguments_of`` -- ``task(*arguments_of(sample))`` solves a
+      sample point (a dict over the parameters) and returns a pair
+      ``(counts, families)`` as :class:`CensusCell` takes them; ``task`` is
+      what ``executor`` runs (a function at module level)
+    - ``boundaries`` -- a function returning the boundaries of the
+      stability in first approximation (polynomials in the parameters),
+      called the first time they are asked for
+    - ``positive`` -- symbols declared positive
+    - ``executor`` -- as for :func:`equilibrium_census`
+    - ``what`` -- what is counted (text)
 
     EXAMPLES::
 
@@ -724,28 +594,93 @@ class Census(SageObject):
         sage: TestSuite(cusp).run(skip='_test_pickling')
         doctest:warning...
         UserWarning: first_approximation: ... where [[3*x^2 - a < 0]] is undecided: ...
+
+    The first-approximation boundaries are added to the bifurcation set
+    once (up to sign), those with a zero inside the declared signs only;
+    a sample is solved once::
+
+        sage: from sage_dynsym.analysis.census import Census
+        sage: c = var('c')
+        sage: solved = []
+        sage: def task(sample):
+        ....:     solved.append(sample)
+        ....:     return (1, 0, 0, 0), None
+        sage: census = Census([c], [c - 1], task, lambda s: (s,), lambda: [1 - c, c - 2, c + 5],
+        ....:                 [c]); census
+        Census of the equilibria over c > 0: bifurcation set [c - 1]
+          0 < c < 1 (sample c = 1/2): 1 equilibrium, 0 stable
+          1 < c (sample c = 2): 1 equilibrium, 0 stable
+        sage: census.bifurcation_set(first_approximation=True)
+        [c - 1, c - 2]
+        sage: [cell.description() for cell in census.cells(first_approximation=True)], solved
+        (['0 < c < 1', '1 < c < 2', '2 < c'], [{c: 1/2}, {c: 2}, {c: 3/2}, {c: 3}])
+        sage: Census([c], [c - 1], task, None, None, [c])
+        Traceback (most recent call last):
+        ...
+        AnalysisError: Census: task, arguments_of and boundaries are functions; a census of a system is built by equilibrium_census(system, parameters, ...)
     """
 
-    def __init__(self, parameters, polynomials, cells, task, positive, region=None,
-                 refine=None, what="the equilibria"):
+    def __init__(self, parameters, polynomials, task, arguments_of, boundaries, positive,
+                 executor=None, what="the equilibria"):
+        self._parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
+        self._positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+        if not all(callable(f) for f in (task, arguments_of, boundaries)):
+            raise AnalysisError("task, arguments_of and boundaries are functions; a census of "
+                                "a system is built by equilibrium_census(system, parameters, "
+                                "...)", entry="Census")
         self._what = what
-        self._parameters = parameters
-        self._polynomials = polynomials
-        self._cells = cells
+        self._signs = [self._is_positive(p) for p in self._parameters]
         self._task = task
-        self._positive = positive
-        self._region = region
-        self._refine = refine
+        self._arguments_of = arguments_of
+        self._executor = executor
+        self._solved = {}
+        self._boundaries = boundaries
         self._refined = None
+        self._polynomials = polynomials_inside(list(polynomials), self._parameters, self._signs)
+        log(f"bifurcation set {self._polynomials}")
+        self._cells = self._cells_of(self._polynomials)
+
+    def _solve(self, samples):
+        r"""The pairs ``(counts, families)`` at the ``samples``, through the
+        executor; a sample solved already is not solved again (the cells of
+        an interval that a refinement leaves unchanged keep their samples)."""
+        def key(sample):
+            return tuple(sorted((str(k), v) for k, v in sample.items()))
+        new = [s for s in samples if key(s) not in self._solved]
+        log(f"solving at {len(new)} sample points")
+        arguments = [self._arguments_of(s) for s in new]
+        if self._executor is None or not arguments:
+            found = [self._task(*a) for a in arguments]
+        elif hasattr(self._executor, 'submit'):
+            futures = [self._executor.submit(self._task, *a) for a in arguments]
+            found = [f.result() for f in futures]
+        else:
+            found = list(self._executor(self._task, arguments))
+        self._solved.update(zip(map(key, new), found))
+        return [self._solved[key(s)] for s in samples]
+
+    def _cells_of(self, polys):
+        r"""The cells adapted to ``polys``, with the counts at their samples."""
+        shapes = cell_shapes(polys, self._parameters, self._signs)
+        found = self._solve([sample for _, sample, _ in shapes])
+        return [CensusCell(text, sample, counts, bounds, families)
+                for (text, sample, bounds), (counts, families) in zip(shapes, found)]
 
     def _first_approximation(self):
-        r"""The bifurcation set with the first-approximation boundaries and
-        its cells, computed once (see :meth:`cells`)."""
+        r"""The bifurcation set with the boundaries of the stability in first
+        approximation appended (those not in it already, up to sign, with a
+        zero inside the declared signs for one parameter) and its cells,
+        computed once (see :meth:`cells`)."""
         if self._refined is None:
-            if self._refine is None:
-                raise AnalysisError("this census was built without its system: use "
-                                    "equilibrium_census(...)", entry="first_approximation")
-            self._refined = self._refine(self._cells)
+            kept = []
+            for f in self._boundaries():
+                if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0)
+                       for g in self._polynomials + kept):
+                    kept.append(f)
+            kept = polynomials_inside(kept, self._parameters, self._signs)
+            log(f"first-approximation boundaries {kept}")
+            polys = self._polynomials + kept
+            self._refined = (polys, self._cells_of(polys))
         return self._refined
 
     def _repr_(self):
@@ -868,7 +803,7 @@ class Census(SageObject):
                                 "equations", entry="bifurcation_values")
         p = self._parameters[0]
         polys = self.bifurcation_set(first_approximation)
-        return [r for r in _real_roots(polys, p, self._is_positive(p))
+        return [r for r in real_roots(polys, p, self._is_positive(p))
                 if r != 0 or any(SR(f).subs({p: 0}).is_zero() for f in polys)]
 
     def cells(self, first_approximation=False):
@@ -917,7 +852,7 @@ class Census(SageObject):
             raise AnalysisError(f"give a value to {', '.join(map(str, missing))}, e.g. "
                                 f"count_at({{{', '.join(f'{p}: 1' for p in self._parameters)}}})",
                                 entry="count_at")
-        (n, stable, _, _), _ = self._task(values)
+        (n, stable, _, _), _ = self._task(*self._arguments_of(values))
         return n, stable
 
     def plot(self, **options):
@@ -952,56 +887,7 @@ class Census(SageObject):
              '1 equilibrium, 0 stable (with first approximation)']
         """
         from .census_plot import census_plot
-        return census_plot(self, self._region, **options)
-
-
-def _intervals_one(polys, p, positive):
-    r"""The open intervals of ``p`` between the real roots of ``polys``, as
-    ``(description, sample, bounds)``."""
-    cells = []
-    for lo, hi in _intervals(_real_roots(polys, p, positive), positive):
-        sample = {p: _between(lo, hi)}
-        text = (f"{_shown(lo)} < " if lo is not None else "") + str(p) + \
-            (f" < {_shown(hi)}" if hi is not None else "")
-        cells.append((text, sample, (lo, hi)))
-    return cells
-
-
-def _cylinders(polys, p1, p2, positive1, positive2):
-    r"""Sample points of the open cells of a cylindrical decomposition of
-    the plane adapted to ``polys``: the intervals of ``p1`` between the
-    critical values of the projection, and in each the intervals of ``p2``
-    between the sections."""
-    ring = PolynomialRing(QQ, [str(p1), str(p2)])
-    F = ring(1)
-    for f in polys:
-        F *= ring(SR(f).polynomial(QQ))
-    F = F.radical() if hasattr(F, 'radical') else F
-    y = ring.gen(1)
-    critical = [F.polynomial(y).leading_coefficient()]
-    if F.degree(y) > 0:
-        # in the bivariate ring (Singular's resultant): the univariate
-        # discriminant over QQ[p1] goes through PARI, which refuses the
-        # variable order ("incorrect priority in gtopoly") by an abort()
-        # that cysignals recovers from but faulthandler reports
-        critical.append(F.discriminant(y))
-    if positive2:
-        # a section crossing the boundary p2 = 0 changes the count of sections
-        critical.append(F.subs({y: 0}))
-    critical = [SR(c) for c in critical if not c.is_constant()]
-    out = []
-    for lo, hi in _intervals(_real_roots(critical, p1, positive1), positive1):
-        s1 = _between(lo, hi)
-        over = SR(F.subs({ring.gen(0): s1}))
-        sections = _real_roots([over], p2, positive2) if over.has(p2) else \
-            ([AA(0)] if positive2 else [])
-        for k, (a, b) in enumerate(_intervals(sections, positive2)):
-            text = ((f"{_shown(lo)} < " if lo is not None else "") + str(p1) +
-                    (f" < {_shown(hi)}" if hi is not None else "") +
-                    (f", {p2} in section {k + 1} of {len(sections) + (0 if positive2 else 1)}"
-                     if len(sections) > (1 if positive2 else 0) else ""))
-            out.append((text, {p1: s1, p2: _between(a, b)}, (lo, hi, k, len(sections))))
-    return out
+        return census_plot(self, self._signs, **options)
 
 
 def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
@@ -1148,141 +1034,21 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
                             f"over {', '.join(map(str, parameters))}), e.g. values="
                             f"{{{', '.join(f'{s}: 1' for s in missing)}}}", entry="values")
     fixed = system.subs(values) if values else system
-    signs = [any(str(p) == str(s) for s in positive) for p in parameters]
     polys = discriminant_polynomials(SR(W).subs(values), q, parameters)
     if regular is not None:
         q2, W2 = _amended_potential(regular[0])
         polys += [f for f in discriminant_polynomials(SR(W2).subs(values), q2, parameters)
                   if all(not bool(SR(f) - g == 0) for g in polys)]
-    polys = polynomials_inside(polys, parameters, signs)
-    _log(f"bifurcation set {polys}")
     fixed2 = None if regular is None else \
         ((regular[0].subs(values) if values else regular[0]), regular[1])
 
-    def task(at):
-        return _count_task(fixed, at, chart, fixed2, positive)
-
-    counts_of = sample_runner(_count_task, lambda s: (fixed, s, chart, fixed2, positive),
-                              executor)
-
-    def refine(cells):
-        # the first-approximation boundaries are solved with the parameters
-        # symbolic, only when asked: that can take much longer than the census
+    def boundaries():
+        # solved with the parameters symbolic, only when asked: that can
+        # take much longer than the census
         more = []
         for model in [fixed] + ([] if fixed2 is None else [fixed2[0]]):
             more += first_approximation_polynomials(model, parameters, positive)
-        return refined_cells(polys, more, parameters, signs, counts_of, cells)
+        return more
 
-    return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
-                  task, positive, region=signs if len(parameters) == 2 else None,
-                  refine=refine)
-
-
-def sample_runner(task, arguments_of, executor):
-    r"""
-    A function solving a list of sample points: ``task(*arguments_of(s))``
-    for each sample ``s``, in this process or through ``executor`` (see
-    :func:`equilibrium_census`).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import sample_runner
-        sage: run = sample_runner(lambda x, y: x + y, lambda s: (s, 1), None)
-        sage: run([1, 2]), sample_runner(pow, lambda s: (s, 2), lambda f, a: [f(*x) for x in a])([3])
-        ([2, 3], [9])
-    """
-    def counts_of(samples):
-        _log(f"solving at {len(samples)} sample points")
-        arguments = [arguments_of(s) for s in samples]
-        if executor is None:
-            return [task(*a) for a in arguments]
-        if not hasattr(executor, 'submit'):
-            return list(executor(task, arguments))
-        futures = [executor.submit(task, *a) for a in arguments]
-        return [f.result() for f in futures]
-    return counts_of
-
-
-def polynomials_inside(polys, parameters, signs):
-    r"""
-    For one parameter, the factors with a zero inside the declared signs
-    (only those bound cells; ``signs`` says for each parameter whether it
-    is declared positive); for two, all.
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import polynomials_inside
-        sage: c = var('c')
-        sage: polynomials_inside([c + 1, c - 2, c^2 + 1], [c], [True])
-        [c - 2]
-    """
-    if len(parameters) != 1:
-        return polys
-    return [f for f in polys if any(r > 0 or not signs[0] for r in
-                                    _real_roots([f], parameters[0], False))]
-
-
-def refined_cells(polys, more, parameters, signs, counts_of, cells=()):
-    r"""
-    The bifurcation set ``polys`` with the boundaries ``more`` of the
-    stability in first approximation appended (those not in it already, up
-    to sign, with a zero inside the declared signs for one parameter), and
-    the cells adapted to it (see :func:`census_cells`): what a census's
-    ``cells(first_approximation=True)`` and
-    ``bifurcation_set(first_approximation=True)`` give. The counts of the
-    ``cells`` of ``polys`` are reused at the samples they share.
-
-    OUTPUT: a pair ``(polynomials, cells)``
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import refined_cells
-        sage: c = var('c')
-        sage: polys, cells = refined_cells([c - 1], [1 - c, c - 2, c + 5], [c], [True],
-        ....:                              lambda samples: [((1, 0, 0, 0), None)] * len(samples))
-        sage: polys, [cell.description() for cell in cells]
-        ([c - 1, c - 2], ['0 < c < 1', '1 < c < 2', '2 < c'])
-    """
-    kept = []
-    for f in more:
-        if all(not bool(SR(f) - g == 0) and not bool(SR(f) + g == 0) for g in polys + kept):
-            kept.append(f)
-    kept = polynomials_inside(kept, parameters, signs)
-    _log(f"first-approximation boundaries {kept}")
-    known = {_sample_key(cell.sample()): (cell._counts, cell._families) for cell in cells}
-
-    def counts(samples):
-        # a sample of a coarse cell is solved already (the cells of an
-        # unchanged interval keep their samples)
-        new = [s for s in samples if _sample_key(s) not in known]
-        known.update(zip(map(_sample_key, new), counts_of(new) if new else []))
-        return [known[_sample_key(s)] for s in samples]
-    return polys + kept, census_cells(polys + kept, parameters, signs, counts)
-
-
-def _sample_key(sample):
-    return tuple(sorted((str(k), v) for k, v in sample.items()))
-
-
-def census_cells(polys, parameters, signs, counts_of):
-    r"""
-    The cells adapted to ``polys`` (one or two ``parameters``, ``signs``
-    whether each is declared positive), with the counts at their samples:
-    ``counts_of`` maps a list of samples to their pairs ``(counts,
-    families)`` (see :class:`CensusCell`).
-
-    EXAMPLES::
-
-        sage: from sage_dynsym.analysis.census import census_cells
-        sage: c = var('c')
-        sage: census_cells([c - 1], [c], [True], lambda samples: [((1, 0, 0, 0), None)] * len(samples))
-        [0 < c < 1 (sample c = 1/2): 1 equilibrium, 0 stable,
-         1 < c (sample c = 2): 1 equilibrium, 0 stable]
-    """
-    if len(parameters) == 1:
-        shape = _intervals_one(polys, parameters[0], signs[0])
-    else:
-        shape = _cylinders(polys, parameters[0], parameters[1], signs[0], signs[1])
-    found = counts_of([sample for _, sample, _ in shape])
-    return [CensusCell(text, sample, counts, bounds, families)
-            for (text, sample, bounds), (counts, families) in zip(shape, found)]
+    return Census(parameters, polys, _count_task, lambda s: (fixed, s, chart, fixed2, positive),
+                  boundaries, positive, executor=executor)

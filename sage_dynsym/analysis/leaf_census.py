@@ -85,7 +85,6 @@ import random
 from sage.arith.functions import lcm
 from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
-from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.qqbar import AA, QQbar
 from sage.rings.rational_field import QQ
@@ -93,9 +92,9 @@ from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
 from ..arguments import symbol_arguments
-from .census import (Census, stationary_ideal, add_zero_set_factors, check_main_thread,
-                     sample_runner, verdict_counts, census_cells, polynomials_inside,
-                     refined_cells)
+from ._census import (log, stationary_ideal, add_zero_set_factors, check_main_thread,
+                      verdict_counts)
+from .census import Census
 from .charts import configuration_points
 from .energy_casimir import energy_casimir_stability
 from .point_stability import spectrum_verdict
@@ -103,10 +102,6 @@ from .stationary import stationary_solutions
 
 __all__ = ['has_real_points', 'leaf_bifurcation_polynomials',
            'leaf_first_approximation_polynomials', 'relative_equilibria_at', 'leaf_census']
-
-def _log(message, level=1):
-    verbose(f"equilibrium_census: {message}", level=level)
-
 
 #: the number of random choices tried before a critical locus is given up
 ATTEMPTS = 4
@@ -323,7 +318,7 @@ def leaf_bifurcation_polynomials(H, casimirs, variables, levels, parameters):
                 "regular", entry="levels")
         add_zero_set_factors(singular, found)
     primes = _components(ideal)
-    _log(f"{len(primes)} components of the relative equilibria")
+    log(f"{len(primes)} components of the relative equilibria")
     families = []
     for Q in primes:
         below = [g for g in Q.elimination_ideal(state).gens() if g != 0]
@@ -568,7 +563,7 @@ def _leaf_task(system, values):
     picklable arguments)."""
     check_main_thread(values)
     H, casimirs, J, x, levels = system
-    _log(f"solving at {values}")
+    log(f"solving at {values}")
     points, families = relative_equilibria_at(
         SR(H).subs(values), casimirs, matrix(SR, J).subs(values), x,
         [SR(c).subs(values) for c in levels])
@@ -698,20 +693,14 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
     H = SR(H).subs(values)
     J = matrix(SR, poisson_matrix).subs(values)
     levels = [SR(c).subs(values) for c in levels]
-    signs = [any(str(p) == str(s) for s in positive) for p in parameters]
-    polys = polynomials_inside(leaf_bifurcation_polynomials(H, casimirs, x, levels, parameters),
-                    parameters, signs)
-    _log(f"bifurcation set {polys}")
     system = (H, list(casimirs), J, x, levels)
-    counts_of = sample_runner(_leaf_task, lambda s: (system, s), executor)
 
-    def refine(cells):
+    def boundaries():
         # solved with the parameters symbolic only when asked (a discriminant
         # on each component of relative equilibria)
-        more = leaf_first_approximation_polynomials(H, casimirs, J, x, levels, parameters)
-        return refined_cells(polys, more, parameters, signs, counts_of, cells)
+        return leaf_first_approximation_polynomials(H, casimirs, J, x, levels, parameters)
     what = "the relative equilibria on the levels " + \
         ", ".join(f"{C} = {c}" for C, c in zip(casimirs, levels))
-    return Census(parameters, polys, census_cells(polys, parameters, signs, counts_of),
-                  lambda at: _leaf_task(system, at), positive,
-                  region=signs if len(parameters) == 2 else None, refine=refine, what=what)
+    return Census(parameters, leaf_bifurcation_polynomials(H, casimirs, x, levels, parameters),
+                  _leaf_task, lambda s: (system, s), boundaries, positive, executor=executor,
+                  what=what)
