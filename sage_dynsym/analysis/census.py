@@ -44,7 +44,8 @@ the multipliers, the stability on the leaf by the energy--Casimir method
 and the linearization restricted to the leaf, and the positive-dimensional
 families of relative equilibria reported by the cells
 (:meth:`CensusCell.families`), not counted:
-:mod:`~sage_dynsym.analysis.leaf_census`.
+:mod:`~sage_dynsym.analysis.leaf_census`, the census that the class of the
+Lie--Poisson systems registers (:func:`register_census`).
 
 The stable count in first approximation changes also where an equilibrium
 stays nondegenerate but its linearization changes (gyroscopic
@@ -97,7 +98,11 @@ from ._census import (log, stationary_ideal, add_zero_set_factors, verdict_count
                       check_main_thread, polynomials_inside, real_roots, cell_shapes)
 
 __all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at',
-           'CensusCell', 'Census', 'equilibrium_census']
+           'CensusCell', 'Census', 'register_census', 'equilibrium_census']
+
+#: the censuses of the objects of classes of higher layers, by class (see
+#: :func:`register_census`)
+_CENSUSES = {}
 
 
 # -- the stationary problem -------------------------------------------------------
@@ -108,7 +113,8 @@ def _amended_potential(system):
     from .motion import SecondOrderEquations
     data = equations_of_motion(system)
     if not isinstance(data, SecondOrderEquations) or data.function() is None:
-        raise AnalysisError(f"expected a Lagrangian or Routh function, got "
+        others = "".join(f" or a {cls.__name__}" for cls in _CENSUSES)
+        raise AnalysisError(f"expected a Lagrangian or Routh function{others}, got "
                             f"{type(system).__name__}; for a mechanical model pass "
                             "model.lagrangian() (or its routh([...]))",
                             entry="equilibrium_census")
@@ -890,6 +896,62 @@ class Census(SageObject):
         return census_plot(self, self._signs, **options)
 
 
+def register_census(cls, census):
+    r"""
+    Register ``census`` as the census of :func:`equilibrium_census` for the
+    objects of the class ``cls`` and of its subclasses: a class of a higher
+    layer, which the analysis does not import (the Lie--Poisson systems of
+    :mod:`~sage_dynsym.lie` register theirs, which is
+    :func:`~sage_dynsym.analysis.leaf_census.leaf_census`).
+
+    INPUT:
+
+    - ``cls`` -- a class
+    - ``census`` -- a function ``census(system, parameters, positive=,
+      values=, chart=, regular=, executor=, levels=)`` (the arguments of
+      :func:`equilibrium_census`) returning a :class:`Census`, and raising
+      the package's error for an option it does not take
+
+    OUTPUT: ``census``
+
+    EXAMPLES: a bead on a hoop turning at a given rate, as an object whose
+    census is that of its Lagrangian::
+
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import register_census, equilibrium_census
+        sage: class Hoop:
+        ....:     def __init__(self, rate):
+        ....:         self.rate = rate
+        sage: def hoop_census(hoop, parameters, **options):
+        ....:     th, dth = var('theta dtheta')
+        ....:     L = Lagrangian(dth^2/2 + hoop.rate^2*sin(th)^2/2 + cos(th), [th])
+        ....:     return equilibrium_census(L, parameters, **options)
+        sage: register_census(Hoop, hoop_census)
+        <function hoop_census at ...>
+        sage: w = var('w')
+        sage: equilibrium_census(Hoop(w), [w], positive=[w])
+        Census of the equilibria over w > 0: bifurcation set [w - 1]
+          0 < w < 1 (sample w = 1/2): 2 equilibria, 1 stable
+          1 < w (sample w = 2): 4 equilibria, 2 stable
+
+    TESTS::
+
+        sage: register_census(Hoop(w), hoop_census)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: register_census: expected a class and a function, got <...Hoop object at ...> and <function hoop_census at ...>
+        sage: register_census(Hoop, 42)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: register_census: expected a class and a function, got <class '...Hoop'> and 42
+    """
+    if not isinstance(cls, type) or not callable(census):
+        raise AnalysisError(f"expected a class and a function, got {cls!r} and {census!r}",
+                            entry="register_census")
+    _CENSUSES[cls] = census
+    return census
+
+
 def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
                        regular=None, executor=None, levels=None):
     r"""
@@ -905,8 +967,9 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
 
     - ``system`` -- a :class:`~sage_dynsym.dynamics.lagrangian.Lagrangian`
       or :class:`~sage_dynsym.dynamics.lagrangian.RouthFunction` (a
-      mechanical model's ``lagrangian()``, or its ``routh([...])``), or a
-      :class:`~sage_dynsym.lie.system.LiePoissonSystem`
+      mechanical model's ``lagrangian()``, or its ``routh([...])``), or an
+      object of a class with a census of its own (:func:`register_census`):
+      a :class:`~sage_dynsym.lie.system.LiePoissonSystem`
     - ``parameters`` -- one or two symbols: the axes of the census (for a
       Lie--Poisson system, symbols of `H` or of the ``levels``)
     - ``positive`` -- symbols declared positive (a parameter declared
@@ -1000,16 +1063,18 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
         Traceback (most recent call last):
         ...
         AnalysisError: levels: levels= is for a Lie-Poisson system (the levels of its Casimirs); a Lagrangian's census takes values=
+
+    An object without a census::
+
+        sage: equilibrium_census(42, [a], values={b: 0})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: equilibrium_census: expected a Lagrangian or Routh function ...LiePoissonSystem..., got Integer; for a mechanical model pass model.lagrangian() (or its routh([...]))
     """
-    if hasattr(system, 'casimirs') and hasattr(system, 'equilibrium_census'):
-        if chart is not None or regular is not None:
-            raise AnalysisError("a Lie-Poisson system has no chart or regular chart: its "
-                                "relative equilibria are points of its variables",
-                                entry="chart")
-        # the system hands its Hamiltonian, Casimirs and Poisson matrix to
-        # leaf_census (which builds on this module)
-        return system.equilibrium_census(parameters, levels=levels, positive=positive,
-                                         values=values, executor=executor)
+    census = next((_CENSUSES[cls] for cls in type(system).__mro__ if cls in _CENSUSES), None)
+    if census is not None:
+        return census(system, parameters, positive=positive, values=values, chart=chart,
+                      regular=regular, executor=executor, levels=levels)
     if levels is not None:
         raise AnalysisError("levels= is for a Lie-Poisson system (the levels of its "
                             "Casimirs); a Lagrangian's census takes values=", entry="levels")

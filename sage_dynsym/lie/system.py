@@ -74,6 +74,7 @@ from sage.symbolic.ring import SR
 from ..analysis import linearize as _linearize
 from ..analysis.motion import FirstOrderEquations
 from ..analysis.stationary import stationary_solutions as _stationary_solutions
+from ..analysis.census import register_census
 from ..dynamics.model import Model
 from ..errors import ModelError, AnalysisError, brief
 from ..arguments import expression_list, symbol_arguments
@@ -774,6 +775,20 @@ class LiePoissonSystem(LiePoissonFormat, Model, NumericalMethods):
             rows = [(f"\\dot{{{latex(x)}}}", f) for x, f in zip(self.variables(), self.equations())]
             return Derivation('Lie-Poisson', ('H', self.hamiltonian()), rows, None)
         return {'Lie-Poisson': derivation}
+
+
+def _census(system, parameters, positive=(), values=None, chart=None, regular=None,
+            executor=None, levels=None):
+    r"""The census of :func:`~sage_dynsym.analysis.census.equilibrium_census`
+    for a Lie--Poisson system: :meth:`LiePoissonSystem.equilibrium_census`."""
+    if chart is not None or regular is not None:
+        raise AnalysisError("a Lie-Poisson system has no chart or regular chart: its "
+                            "relative equilibria are points of its variables", entry="chart")
+    return system.equilibrium_census(parameters, levels=levels, positive=positive,
+                                     values=values, executor=executor)
+
+
+register_census(LiePoissonSystem, _census)
 
 
 def _names_of(symbols):
