@@ -72,6 +72,42 @@ tilted ones above (Goldstein, *Classical Mechanics*, §2.6)::
     sage: [c.stable_count(first_approximation=True) for c in census.cells()]
     [1, 2]
 
+The turning saddle, the example of the first approximation that the
+functions and methods below refer to: a particle in the saddle potential
+`(x^2 - 2y^2)/2` turning at the rate `w`, seen in the turning frame. Its
+one equilibrium degenerates only at `w = 1` (the discriminant of its
+amended potential has no other positive root); it is stable in first
+approximation for `1 < w^2 < 9/8` (gyroscopic stabilization), a boundary
+that ``first_approximation=True`` adds::
+
+    sage: from sage_dynsym.analysis.census import (discriminant_polynomials,
+    ....:                                          first_approximation_polynomials)
+    sage: x, y, dx, dy = var('x y dx dy')
+    sage: turning = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
+    ....:                      + (w^2 + 2)*y^2/2, [x, y])
+    sage: discriminant_polynomials(-(w^2 - 1)*x^2/2 - (w^2 + 2)*y^2/2, [x, y], [w])
+    [w - 1, w + 1, w^2 + 2]
+    sage: first_approximation_polynomials(turning, [w], positive=[w])
+    [w - 1, 8*w^2 - 9]
+    sage: saddle = equilibrium_census(turning, [w], positive=[w])
+    sage: saddle.bifurcation_set(), saddle.bifurcation_set(first_approximation=True)
+    ([w - 1], [w - 1, 8*w^2 - 9])
+    sage: for cell in saddle.cells(first_approximation=True): print(cell)
+    0 < w < 1 (sample w = 1/2): 1 equilibrium, 0 stable
+    1 < w < 3/2*sqrt(1/2) (sample w = 18/17): 1 equilibrium, 0 stable, 1 more stable in first approximation
+    3/2*sqrt(1/2) < w (sample w = 2): 1 equilibrium, 0 stable
+
+Its plot with ``first_approximation=True`` colours the cells by
+``stable_count(first_approximation=True)``: stable on the middle step; the
+census passes its own consistency tests (see :class:`Census`)::
+
+    sage: G = saddle.plot(first_approximation=True)
+    sage: [p.options()['legend_label'] for p in G]
+    ['1 equilibrium, 0 stable (with first approximation)',
+     '1 equilibrium, 1 stable (with first approximation)',
+     '1 equilibrium, 0 stable (with first approximation)']
+    sage: TestSuite(saddle).run(skip='_test_pickling')
+
 REFERENCES:
 
 - D. Lazard, F. Rouillier, *Solving parametric polynomial systems*, J.
@@ -202,27 +238,15 @@ def first_approximation_polynomials(system, parameters, positive=()):
 
     OUTPUT: a list of irreducible symbolic polynomials in the parameters
 
-    EXAMPLES: a particle in a saddle potential `(x^2 - 2y^2)/2` turning at
-    the rate `w`, seen in the turning frame: the saddle is stable in first
-    approximation for `1 < w^2 < 9/8` (gyroscopic stabilization); only
-    `w = 1` is a degenerate equilibrium::
-
-        sage: from sage_dynsym import Lagrangian
-        sage: from sage_dynsym.analysis.census import (first_approximation_polynomials,
-        ....:                                          discriminant_polynomials)
-        sage: x, y, dx, dy, w = var('x y dx dy w')
-        sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
-        ....:                + (w^2 + 2)*y^2/2, [x, y])
-        sage: first_approximation_polynomials(L, [w], positive=[w])
-        [w - 1, 8*w^2 - 9]
-        sage: discriminant_polynomials(-(w^2 - 1)*x^2/2 - (w^2 + 2)*y^2/2, [x, y], [w])
-        [w - 1, w + 1, w^2 + 2]
-
+    EXAMPLES: the turning saddle of the module documentation, stable in
+    first approximation for `1 < w^2 < 9/8` (``[w - 1, 8*w^2 - 9]``).
     The cusp: the minima of an implicit family end where `3x^2 = a`, on
     the discriminant. Where `3x^2 < a` (the maxima) the verdict is not
     decided with the parameters symbolic: a warning says so (the census
     decides them at its samples)::
 
+        sage: from sage_dynsym import Lagrangian
+        sage: from sage_dynsym.analysis.census import first_approximation_polynomials
         sage: x, dx, a, b = var('x dx a b')
         sage: L = Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x])
         sage: first_approximation_polynomials(L, [a, b])
@@ -588,13 +612,10 @@ class Census(SageObject):
     A census keeps the function that counts at a point (a closure over the
     system), which cannot be pickled, so the pickling test is skipped; the
     cells are consistent with the bifurcation set and with a recount at
-    their samples::
+    their samples (the turning saddle's census is tested in the module
+    documentation)::
 
         sage: TestSuite(census).run(skip='_test_pickling')
-        sage: x, y, dx, dy = var('x y dx dy')
-        sage: turning = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
-        ....:                      + (w^2 + 2)*y^2/2, [x, y])
-        sage: TestSuite(equilibrium_census(turning, [w], positive=[w])).run(skip='_test_pickling')
         sage: x, dx, a, b = var('x dx a b')
         sage: cusp = equilibrium_census(Lagrangian(dx^2/2 - x^4/4 + a*x^2/2 - b*x, [x]), [a, b])
         sage: TestSuite(cusp).run(skip='_test_pickling')
@@ -766,17 +787,10 @@ class Census(SageObject):
           in the set already: the cells of ``cells(first_approximation=True)``,
           where ``stable_count(first_approximation=True)`` is constant too
 
-        EXAMPLES: see :class:`Census`, and a saddle stabilized by turning
-        (`1 < w^2 < 9/8`, see :func:`first_approximation_polynomials`)::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.census import equilibrium_census
-            sage: x, y, dx, dy, w = var('x y dx dy w')
-            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
-            ....:                + (w^2 + 2)*y^2/2, [x, y])
-            sage: census = equilibrium_census(L, [w], positive=[w])
-            sage: census.bifurcation_set(), census.bifurcation_set(first_approximation=True)
-            ([w - 1], [w - 1, 8*w^2 - 9])
+        EXAMPLES: see :class:`Census`, and the turning saddle of the module
+        documentation, stabilized by turning for `1 < w^2 < 9/8`: its
+        bifurcation set ``[w - 1]`` becomes ``[w - 1, 8*w^2 - 9]`` with
+        ``first_approximation=True``.
         """
         if first_approximation:
             return list(self._first_approximation()[0])
@@ -825,19 +839,9 @@ class Census(SageObject):
           (the stability regions are computed with the parameters symbolic
           on the first call)
 
-        EXAMPLES: see :class:`Census`; the turning saddle is stable in first
-        approximation in the middle cell only::
-
-            sage: from sage_dynsym import Lagrangian
-            sage: from sage_dynsym.analysis.census import equilibrium_census
-            sage: x, y, dx, dy, w = var('x y dx dy w')
-            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
-            ....:                + (w^2 + 2)*y^2/2, [x, y])
-            sage: census = equilibrium_census(L, [w], positive=[w])
-            sage: for cell in census.cells(first_approximation=True): print(cell)
-            0 < w < 1 (sample w = 1/2): 1 equilibrium, 0 stable
-            1 < w < 3/2*sqrt(1/2) (sample w = 18/17): 1 equilibrium, 0 stable, 1 more stable in first approximation
-            3/2*sqrt(1/2) < w (sample w = 2): 1 equilibrium, 0 stable
+        EXAMPLES: see :class:`Census`; the turning saddle of the module
+        documentation is stable in first approximation in the middle cell
+        of its ``cells(first_approximation=True)`` only.
         """
         if first_approximation:
             return list(self._first_approximation()[1])
@@ -880,17 +884,9 @@ class Census(SageObject):
 
         With ``first_approximation=True``, the cells of
         ``cells(first_approximation=True)`` coloured by
-        ``stable_count(first_approximation=True)``: the turning saddle (see
-        :meth:`cells`) is stable in first approximation on the middle step::
-
-            sage: x, y, dx, dy, w = var('x y dx dy w')
-            sage: L = Lagrangian((dx^2 + dy^2)/2 + w*(x*dy - y*dx) + (w^2 - 1)*x^2/2
-            ....:                + (w^2 + 2)*y^2/2, [x, y])
-            sage: G = equilibrium_census(L, [w], positive=[w]).plot(first_approximation=True)
-            sage: [p.options()['legend_label'] for p in G]
-            ['1 equilibrium, 0 stable (with first approximation)',
-             '1 equilibrium, 1 stable (with first approximation)',
-             '1 equilibrium, 0 stable (with first approximation)']
+        ``stable_count(first_approximation=True)``: see the turning saddle of
+        the module documentation, stable in first approximation on the
+        middle step.
         """
         from .census_plot import census_plot
         return census_plot(self, self._signs, **options)
