@@ -34,6 +34,7 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
+from ..arguments import symbol_arguments
 from ..algebra.translation import Translation
 from .verdict import STABLE_VERDICTS
 
@@ -48,6 +49,56 @@ def log(message, level=1):
         sage: log("solving at {a: 1}")
     """
     verbose(f"equilibrium_census: {message}", level=level)
+
+
+# -- the arguments ------------------------------------------------------------------
+
+def census_arguments(parameters, positive, values):
+    r"""
+    The ``parameters`` (one or two) and the ``positive`` symbols of a
+    census as lists of symbols, and its ``values`` as a dict over symbols
+    (keys given as names or symbols), checked.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._census import census_arguments
+        sage: census_arguments(['a'], [], {'b': 1})
+        ([a], [], {b: 1})
+        sage: census_arguments(['a', 'b', 'c'], [], None)
+        Traceback (most recent call last):
+        ...
+        AnalysisError: parameters: a census is over one or two parameters, got 3 (a, b, c)
+    """
+    parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
+    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+    if len(parameters) not in (1, 2):
+        raise AnalysisError(f"a census is over one or two parameters, got {len(parameters)} "
+                            f"({', '.join(map(str, parameters))})", entry="parameters")
+    values = {SR.var(k) if isinstance(k, str) else SR(k): v for k, v in (values or {}).items()}
+    return parameters, positive, values
+
+
+def check_values(symbols, parameters, values):
+    r"""
+    Refuse a census where one of the ``symbols`` of the system is neither
+    one of its ``parameters`` nor given one of the ``values``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.analysis._census import check_values
+        sage: a, b, c = var('a b c')
+        sage: check_values([a, b], [a], {b: 1})
+        sage: check_values([a, b, c], [a], {})
+        Traceback (most recent call last):
+        ...
+        AnalysisError: values: give a value to b, c (the census is over a), e.g. values={b: 1, c: 1}
+    """
+    chosen = {str(p) for p in parameters} | {str(k) for k in values}
+    missing = sorted({str(s) for s in symbols} - chosen)
+    if missing:
+        raise AnalysisError(f"give a value to {', '.join(missing)} (the census is over "
+                            f"{', '.join(map(str, parameters))}), e.g. values="
+                            f"{{{', '.join(f'{s}: 1' for s in missing)}}}", entry="values")
 
 
 # -- eliminations onto the parameters -----------------------------------------------

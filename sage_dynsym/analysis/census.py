@@ -127,11 +127,11 @@ from sage.structure.sage_object import SageObject
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..arguments import symbol_arguments
 from .charts import configuration_points, same_point
 from .point_stability import point_verdict, is_gyroscopic
-from ._census import (log, stationary_ideal, add_zero_set_factors, verdict_counts,
-                      check_main_thread, polynomials_inside, real_roots, cell_shapes)
+from ._census import (log, census_arguments, check_values, stationary_ideal,
+                      add_zero_set_factors, verdict_counts, check_main_thread,
+                      polynomials_inside, real_roots, cell_shapes)
 
 __all__ = ['discriminant_polynomials', 'first_approximation_polynomials', 'equilibria_at',
            'CensusCell', 'Census', 'register_census', 'equilibrium_census']
@@ -649,8 +649,7 @@ class Census(SageObject):
 
     def __init__(self, parameters, polynomials, task, arguments_of, boundaries, positive,
                  executor=None, what="the equilibria"):
-        self._parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
-        self._positive = symbol_arguments(positive, 'positive', error=AnalysisError)
+        self._parameters, self._positive, _ = census_arguments(parameters, positive, None)
         if not all(callable(f) for f in (task, arguments_of, boundaries)):
             raise AnalysisError("task, arguments_of and boundaries are functions; a census of "
                                 "a system is built by equilibrium_census(system, parameters, "
@@ -1074,12 +1073,7 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
     if levels is not None:
         raise AnalysisError("levels= is for a Lie-Poisson system (the levels of its "
                             "Casimirs); a Lagrangian's census takes values=", entry="levels")
-    parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
-    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
-    if len(parameters) not in (1, 2):
-        raise AnalysisError(f"a census is over one or two parameters, got {len(parameters)} "
-                            f"({', '.join(map(str, parameters))})", entry="parameters")
-    values = {SR.var(k) if isinstance(k, str) else SR(k): v for k, v in (values or {}).items()}
+    parameters, positive, values = census_arguments(parameters, positive, values)
     q, W = _amended_potential(system)
     names = {str(x) for x in q}
     symbols = sorted((v for v in SR(W).variables() if str(v) not in names), key=str)
@@ -1088,12 +1082,7 @@ def equilibrium_census(system, parameters, positive=(), values=None, chart=None,
             raise AnalysisError(f"{p} is a coordinate of the system, not a parameter; the "
                                 f"parameters are {', '.join(map(str, symbols))}",
                                 entry="parameters")
-    chosen = {str(p) for p in parameters} | {str(k) for k in values}
-    missing = [s for s in symbols if str(s) not in chosen]
-    if missing:
-        raise AnalysisError(f"give a value to {', '.join(map(str, missing))} (the census is "
-                            f"over {', '.join(map(str, parameters))}), e.g. values="
-                            f"{{{', '.join(f'{s}: 1' for s in missing)}}}", entry="values")
+    check_values(symbols, parameters, values)
     fixed = system.subs(values) if values else system
     polys = discriminant_polynomials(SR(W).subs(values), q, parameters)
     if regular is not None:

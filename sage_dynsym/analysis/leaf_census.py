@@ -91,9 +91,8 @@ from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from ..arguments import symbol_arguments
-from ._census import (log, stationary_ideal, add_zero_set_factors, check_main_thread,
-                      verdict_counts)
+from ._census import (log, census_arguments, check_values, stationary_ideal,
+                      add_zero_set_factors, check_main_thread, verdict_counts)
 from .census import Census
 from .charts import configuration_points
 from .energy_casimir import energy_casimir_stability
@@ -661,11 +660,7 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
         ....:  for cell in census.cells(first_approximation=True)]
         [(6, 2, 2), (6, 0, 2), (6, 0, 2), (6, 2, 4)]
     """
-    parameters = symbol_arguments(parameters, 'parameters', error=AnalysisError)
-    positive = symbol_arguments(positive, 'positive', error=AnalysisError)
-    if len(parameters) not in (1, 2):
-        raise AnalysisError(f"a census is over one or two parameters, got {len(parameters)} "
-                            f"({', '.join(map(str, parameters))})", entry="parameters")
+    parameters, positive, values = census_arguments(parameters, positive, values)
     x = [SR(v) for v in variables]
     names = {str(v) for v in x}
     levels = [] if levels is None and not casimirs else levels
@@ -673,7 +668,6 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
         raise AnalysisError(f"give one level per Casimir ({', '.join(map(str, casimirs))}), e.g. "
                             f"levels=[{', '.join(['c'] + ['1'] * (len(casimirs) - 1))}]; got "
                             f"{'none' if levels is None else len(levels)}", entry="levels")
-    values = {SR.var(k) if isinstance(k, str) else SR(k): v for k, v in (values or {}).items()}
     own = _symbols([H] + list(matrix(SR, poisson_matrix).list()), names)
     leveled = _symbols(levels, names)
     for p in parameters:
@@ -684,12 +678,7 @@ def leaf_census(H, casimirs, poisson_matrix, variables, parameters, levels, posi
             raise AnalysisError(f"{p} is neither a symbol of H nor of the levels {list(levels)}; "
                                 f"the census can be over {', '.join(sorted(set(own) | set(leveled)))}",
                                 entry="parameters")
-    chosen = {str(p) for p in parameters} | {str(k) for k in values}
-    missing = sorted(s for s in set(own) | set(leveled) if s not in chosen)
-    if missing:
-        raise AnalysisError(f"give a value to {', '.join(missing)} (the census is over "
-                            f"{', '.join(map(str, parameters))}), e.g. values="
-                            f"{{{', '.join(f'{s}: 1' for s in missing)}}}", entry="values")
+    check_values(set(own) | set(leveled), parameters, values)
     H = SR(H).subs(values)
     J = matrix(SR, poisson_matrix).subs(values)
     levels = [SR(c).subs(values) for c in levels]
