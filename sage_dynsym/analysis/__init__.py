@@ -35,7 +35,7 @@ from .damping_limit import small_damping_limit, DampingLimit
 from .spectrum import spectrum_regions
 from .stability import linear_stability, energy_stability
 from .charts import ConfigurationChart, configuration_points
-from .census import equilibrium_census, Census, CensusCell
+from .census import equilibrium_census, Census, CensusCell, register_census
 from .stationary import (stationary_solutions, stationary_motions, check_integral,
                          StationarySolution, StationarySolutions, StationaryProblem,
                          solve_stationary, ModifiedRouthLyapunov)
@@ -49,6 +49,6 @@ __all__ = ['equilibrium_family', 'EquilibriumFamily', 'hurwitz_matrix', 'hurwitz
            'simultaneous_reduction', 'simplify_conditions', 'solve_exactly', 'normalize', 'exists',
            'kelvin_chetaev', 'StabilityVerdict', 'small_damping_limit', 'DampingLimit',
            'spectrum_regions', 'linear_stability', 'energy_stability', 'ConfigurationChart',
-           'configuration_points', 'equilibrium_census', 'Census', 'CensusCell',
+           'configuration_points', 'equilibrium_census', 'Census', 'CensusCell', 'register_census',
            'stationary_solutions', 'stationary_motions', 'check_integral', 'StationarySolution',
            'StationarySolutions', 'StationaryProblem', 'solve_stationary', 'ModifiedRouthLyapunov']
