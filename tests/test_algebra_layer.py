@@ -135,3 +135,47 @@ def test_the_lyapunov_function_keeps_its_one_letter_name():
     sols = stationary_solutions([x**2 + y**2], [x, y])
     assert sols.lyapunov_function() is sols.K()
     assert str(sols.lyapunov_function()) == str(x**2 + y**2)
+
+
+# ----------------------------------------------------------------------
+# No import hook: the earlier names are plain modules (issue 31), not a
+# finder on sys.meta_path that maps names as they are asked for.
+
+_HOOK_WORDS = ("meta_path", "path_hooks", "MetaPathFinder", "PathEntryFinder", "importlib.abc",
+               "importlib.machinery", "find_spec", "exec_module")
+
+
+def test_no_module_of_the_package_installs_an_import_hook():
+    from deprecated_aliases import PACKAGE
+    found = [f"{path.relative_to(PACKAGE)}: {word}" for path in sorted(PACKAGE.rglob("*.py"))
+             for word in _HOOK_WORDS if word in path.read_text(encoding="utf-8")]
+    assert not found
+
+
+def test_importing_everything_leaves_the_import_system_as_it_was():
+    # in a fresh process: the finders and path hooks after Sage are the same
+    # after importing every module of the package, the earlier names too
+    import subprocess
+    code = ("import importlib, pkgutil, sys, warnings, sage.all\n"
+            "before = (list(sys.meta_path), list(sys.path_hooks))\n"
+            "warnings.simplefilter('ignore', DeprecationWarning)\n"
+            "import sage_dynsym\n"
+            "for info in pkgutil.walk_packages(sage_dynsym.__path__, 'sage_dynsym.'):\n"
+            "    importlib.import_module(info.name)\n"
+            "assert len(sys.modules) > 150\n"
+            "assert (list(sys.meta_path), list(sys.path_hooks)) == before\n")
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300)
+    assert run.returncode == 0, run.stderr[-3000:]
+
+
+@pytest.mark.parametrize("old, new", MOVED)
+def test_an_earlier_path_is_a_plain_module(old, new):
+    # its docstring, the import of moved_module and one call naming the new module
+    from deprecated_aliases import PACKAGE
+    import ast
+    path = PACKAGE.joinpath(*old.split(".")).with_suffix(".py")
+    body = ast.parse(path.read_text(encoding="utf-8")).body
+    assert len(body) == 3 and isinstance(body[0].value, ast.Constant)
+    assert ast.unparse(body[1]) == "from sage_dynsym.errors import moved_module"
+    assert ast.unparse(body[2]) == f"moved_module(__name__, 'sage_dynsym.{new}')"
