@@ -26,6 +26,7 @@ RESULT_CLASSES = [
     "sage_dynsym.analysis.linear.LinearSystem",
     "sage_dynsym.analysis.verdict.StabilityVerdict",
     "sage_dynsym.scale.maps.StabilityMap",
+    "sage_dynsym.scale.sweeps.Sweep",
     "sage_dynsym.analysis.stationary.StationarySolutions",
     "sage_dynsym.analysis.census.Census",
     "sage_dynsym.analysis.normal_forms.BirkhoffNormalForm",
