@@ -274,6 +274,11 @@ class PoissonStructure(SageObject):
         Poisson structure on (q, p)
         sage: P.bracket(q, p), P.bracket(q^2, p^2), P.is_lie_poisson()
         (1, 4*p*q, False)
+
+    It has no value equality (two of them are equal only if they are the
+    same object), so the pickling test, which compares the copy with the
+    original, is skipped::
+
         sage: TestSuite(P).run(skip=['_test_pickling'])
 
     TESTS::
