@@ -24,6 +24,7 @@ RESULT_CLASSES = [
     "sage_dynsym.dynamics.hamiltonian.Hamiltonian",
     "sage_dynsym.circuits.circuit.Circuit",
     "sage_dynsym.lie.system.LiePoissonSystem",
+    "sage_dynsym.lie.algebras.PoissonStructure",
     "sage_dynsym.analysis.linear.LinearSystem",
     "sage_dynsym.analysis.verdict.StabilityVerdict",
     "sage_dynsym.scale.maps.StabilityMap",

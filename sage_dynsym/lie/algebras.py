@@ -340,6 +340,25 @@ class PoissonStructure(SageObject):
                             f"{{{b}, {{{c}, {a}}}}} + {{{c}, {{{a}, {b}}}}} = "
                             f"{_normal(jac)}, not 0", entry="algebra")
 
+    def _test_bracket(self, **options):
+        r"""The bracket of :meth:`bracket` takes the matrix's entries on
+        the coordinates, and on three polynomials of them it is
+        antisymmetric, a derivation (Leibniz's rule) and satisfies the
+        Jacobi identity.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        x, J, n = self._variables, self._J, len(self._variables)
+        for i in range(n):
+            for j in range(n):
+                tester.assertTrue(vanishes(self.bracket(x[i], x[j]) - J[i, j], maxima=False))
+        F, G, H = x[0] ** 2 + x[-1], x[0] * x[-1] + 1, sum(x) ** 2
+        b = self.bracket
+        for value in (b(F, G) + b(G, F), b(F, G * H) - b(F, G) * H - G * b(F, H),
+                      b(F, b(G, H)) + b(G, b(H, F)) + b(H, b(F, G))):
+            tester.assertTrue(vanishes(SR(value).expand(), maxima=False), f"{value} is not 0")
+
     # -- accessors ---------------------------------------------------------
 
     def _repr_(self):
