@@ -22,6 +22,7 @@ RESULT_CLASSES = [
     "sage_dynsym.dynamics.lagrangian.RouthFunction",
     "sage_dynsym.dynamics.nonholonomic.NonholonomicLagrangian",
     "sage_dynsym.dynamics.compact.CompactEquations",
+    "sage_dynsym.dynamics.reduced.ReducedEquations",
     "sage_dynsym.dynamics.hamiltonian.Hamiltonian",
     "sage_dynsym.circuits.circuit.Circuit",
     "sage_dynsym.lie.system.LiePoissonSystem",
