@@ -114,15 +114,28 @@ def test_the_moved_table_is_the_one_of_the_package():
 
 def test_the_package_imports_no_earlier_name():
     # the package's own modules import the new names: importing all of them
-    # with deprecation warnings as errors, in a fresh process, succeeds
+    # with deprecation warnings as errors, in a fresh process, succeeds; and
+    # (no import hook) the finders and path hooks after Sage are the same
+    # after importing every module, the earlier names too
     import subprocess
-    code = ("import importlib, pkgutil, warnings, sage.all, sage_dynsym\n"
-            "warnings.filterwarnings('error', category=DeprecationWarning,"
-            " module='sage_dynsym')\n"
+    code = ("import importlib, pkgutil, sys, warnings, sage.all\n"
+            "before = (list(sys.meta_path), list(sys.path_hooks))\n"
+            "import sage_dynsym\n"
             "aliases = set(%r)\n"
-            "for info in pkgutil.walk_packages(sage_dynsym.__path__, 'sage_dynsym.'):\n"
-            "    if info.name not in aliases:\n"
-            "        importlib.import_module(info.name)\n") % sorted(DEPRECATED_ALIASES)
+            "names = [info.name for info in pkgutil.walk_packages(sage_dynsym.__path__,"
+            " 'sage_dynsym.')]\n"
+            "with warnings.catch_warnings():\n"
+            "    warnings.filterwarnings('error', category=DeprecationWarning,"
+            " module='sage_dynsym')\n"
+            "    for name in names:\n"
+            "        if name not in aliases:\n"
+            "            importlib.import_module(name)\n"
+            "warnings.simplefilter('ignore', DeprecationWarning)\n"
+            "for name in sorted(aliases):\n"
+            "    importlib.import_module(name)\n"
+            "assert len(names) > 150, len(names)\n"
+            "assert (list(sys.meta_path), list(sys.path_hooks)) == before, 'an import hook'\n"
+            ) % sorted(DEPRECATED_ALIASES)
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          timeout=300)
     assert run.returncode == 0, run.stderr[-3000:]
@@ -135,3 +148,30 @@ def test_the_lyapunov_function_keeps_its_one_letter_name():
     sols = stationary_solutions([x**2 + y**2], [x, y])
     assert sols.lyapunov_function() is sols.K()
     assert str(sols.lyapunov_function()) == str(x**2 + y**2)
+
+
+# ----------------------------------------------------------------------
+# No import hook: the earlier names are plain modules (issue 31), not a
+# finder on sys.meta_path that maps names as they are asked for.
+
+_HOOK_WORDS = ("meta_path", "path_hooks", "MetaPathFinder", "PathEntryFinder", "importlib.abc",
+               "importlib.machinery", "find_spec", "exec_module")
+
+
+def test_no_module_of_the_package_installs_an_import_hook():
+    from deprecated_aliases import PACKAGE
+    found = [f"{path.relative_to(PACKAGE)}: {word}" for path in sorted(PACKAGE.rglob("*.py"))
+             for word in _HOOK_WORDS if word in path.read_text(encoding="utf-8")]
+    assert not found
+
+
+@pytest.mark.parametrize("old, new", MOVED)
+def test_an_earlier_path_is_a_plain_module(old, new):
+    # its docstring, the import of moved_module and one call naming the new module
+    from deprecated_aliases import PACKAGE
+    import ast
+    path = PACKAGE.joinpath(*old.split(".")).with_suffix(".py")
+    body = ast.parse(path.read_text(encoding="utf-8")).body
+    assert len(body) == 3 and isinstance(body[0].value, ast.Constant)
+    assert ast.unparse(body[1]) == "from sage_dynsym.errors import moved_module"
+    assert ast.unparse(body[2]) == f"moved_module(__name__, 'sage_dynsym.{new}')"

@@ -90,3 +90,25 @@ def test_isolated_windings_coupled_by_mutual_inductance():
     ours = (s * Bm - A).det().expand()
     theirs = (s * matrix([[2, 1], [1, 3]]) + matrix([[5, 0], [0, 7]])).det().expand()
     assert (ours / ours.coefficient(s, 2) - theirs / theirs.coefficient(s, 2)).expand() == 0
+
+
+def test_a_failure_is_shown_on_the_status_line(tmp_path, monkeypatch):
+    # a page boundary: the package's errors by their message, an unforeseen
+    # one with its class, a file that cannot be written with the system's
+    # message; never a traceback, and nothing derived or saved after them
+    B = SystemBuilder()
+
+    def broken():
+        raise ZeroDivisionError("no model")
+    monkeypatch.setattr(B, "model", broken)
+    B.derive()
+    assert B.status.value == "<b>error:</b> ZeroDivisionError: no model"
+    assert B.output.value == ""
+    monkeypatch.undo()
+    B.path.value = str(tmp_path / "missing" / "system.yaml")
+    B.save()
+    assert B.status.value.startswith("<b>error:</b> ") and "saved" not in B.status.value
+    assert "ZeroDivisionError" not in B.status.value
+    B.path.value = str(tmp_path / "system.yaml")
+    B.save()
+    assert B.status.value == f"saved to {tmp_path / 'system.yaml'}"

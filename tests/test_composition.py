@@ -235,11 +235,7 @@ def _foreign():
 
 #: Today's reads of other modules' private state; removed as the objects get
 #: public interfaces (a test says when an entry is no longer needed).
-FOREIGN_ALLOWED = {
-    # Sage's Graphics keeps its keyword options behind private names only
-    "sage_dynsym.numerics.trajectory": {"G._set_extra_kwds"},
-    "sage_dynsym.scale.maps": {"G._extra_kwds"},
-}
+FOREIGN_ALLOWED = {}
 
 
 def test_no_reads_of_private_state_owned_by_other_modules():

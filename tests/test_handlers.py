@@ -22,8 +22,7 @@ BOUNDARIES = {
     "__main__.py: main",                    # the command line: one line per failure
     "scale/cli.py: main",
     "dynamics/reporting.py: report_blocks",  # a report: the section says it failed
-    "interact/builder.py: derive",          # a page: the status line, not a traceback
-    "interact/builder.py: save",
+    "interact/builder.py: _attempt",        # a page: the status line, not a traceback
     "scale/kernel.py: sweep_chunk",         # a sweep: the failure recorded with its point
     "scale/cluster.py: _reply",             # a worker's child: the failure sent back, raised there
 }

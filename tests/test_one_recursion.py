@@ -111,6 +111,32 @@ def test_the_mechanics_equations_use_the_same_recursion():
     assert A1 == [0, 0] and T0 == 0
 
 
+@pytest.mark.parametrize('method', ['auto', 'polynomial', 'symbolic', 'recursive'])
+def test_each_calculus_method_of_the_model_gives_the_textbook_equations(method):
+    # the strategy is chosen on the model: its Lagrangian, its numerical
+    # right-hand side (built after the choice) and its substituted copies
+    # follow it, and every method gives the textbook equations
+    bodies = [RigidBody('one', rotations=[(3, q1)], **_point_mass(m1, l1)),
+              RigidBody('two', parent='one', joint=[l1, 0, 0], rotations=[(3, q2)],
+                        **_point_mass(m2, l2))]
+    S = MechanicalSystem(bodies, [q1, q2], force_function=UniformGravity([0, -g, 0]))
+    values = {'m1': 1.5, 'm2': 0.8, 'l1': 1.2, 'l2': 0.9, 'g': 9.81}
+    before = S.numerical_rhs(values, backend='python', algorithm='equations')
+    S.set_calculus_method(method)
+    assert S.calculus_method() == method and S.subs({g: 1}).calculus_method() == method
+    reference = M_REF * vector(SR, var('ddq1 ddq2')) + H_REF     # the accelerations' names
+    assert all(_zero(a - b) for a, b in zip(S.lagrangian().lagrange_equations(), reference))
+    after = S.numerical_rhs(values, backend='python', algorithm='equations')
+    x = np.array([0.3, -1.1, 0.7, 0.2])
+    assert np.allclose(after(0.0, x), before(0.0, x), rtol=1e-12, atol=1e-12)
+
+
+def test_the_calculus_method_is_checked():
+    from sage_dynsym.errors import ModelError
+    with pytest.raises(ModelError, match="calculus_method: expected one of"):
+        MechanicalSystem([RigidBody('b', rotations=[(3, q1)])], [q1], calculus_method='sympy')
+
+
 def test_inverse_dynamics_is_the_textbook_left_hand_side():
     from sage_dynsym.numerics.newton_euler import inverse_dynamics
     ddq1, ddq2 = var('ddq1 ddq2')

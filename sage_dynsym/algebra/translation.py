@@ -90,7 +90,8 @@ from sage.rings.real_mpfr import RR
 from sage.symbolic.ring import SR
 
 from ..errors import AnalysisError
-from .expression_walk import TRIGONOMETRIC, MAX_ANGLE_MULTIPLE, split_angle, angle_sum, trig_value
+from .expression_walk import (ExpressionWalker, MAX_ANGLE_MULTIPLE, split_angle, angle_sum,
+                              trig_value)
 from .trigonometric import TrigPolynomialRing, NotAlgebraic, NotPolynomial
 from .trig_algebra import TrigAlgebra
 from .polynomials import polynomial_to_sr, is_constant, FACTOR_LIMIT
@@ -783,26 +784,37 @@ def expand_angles(expr, angles):
         sage: expand_angles(cos(q + a), [q])
         cos(a)*cos(q) - sin(a)*sin(q)
     """
-    names = {str(SR(a)): SR(a) for a in angles}
-    if not names:
-        return SR(expr)
+    names = {str(SR(a)) for a in angles}
+    return _AngleExpansion(names).walk(expr) if names else SR(expr)
 
-    def is_angle(v):
-        return str(v) in names
 
-    def walk(e):
+class _AngleExpansion(ExpressionWalker):
+    # the walk of :func:`expand_angles`: symbolic in, symbolic out; every
+    # other function is rebuilt from its walked arguments
+
+    def __init__(self, names):
+        self._names = names
+
+    def _is_angle(self, v):
+        return str(v) in self._names
+
+    def symbol(self, e):
+        return e
+
+    number = symbol
+
+    def atom(self, e):
         op = e.operator()
-        if op is None:
-            return e
-        args = [walk(a) for a in e.operands()]
-        if op in TRIGONOMETRIC and any(map(is_angle, args[0].variables())):
-            try:
-                multiples, rest = split_angle(op, args[0], is_angle)
-            except AnalysisError:
-                return op(*args)
-            C, S = (SR(1), SR(0)) if rest.is_zero() else (cos(rest), sin(rest))
-            C, S = angle_sum(C, S, multiples, lambda v: (cos(v), sin(v)))
-            return trig_value(op, C.expand(), S.expand())
-        return op(*args)
+        return e if op is None else op(*[self.walk(a) for a in e.operands()])
 
-    return walk(SR(expr))
+    def trig(self, op, e):
+        argument = self.walk(e.operands()[0])
+        if not any(map(self._is_angle, argument.variables())):
+            return op(argument)
+        try:
+            multiples, rest = split_angle(op, argument, self._is_angle)
+        except AnalysisError:
+            return op(argument)
+        C, S = (SR(1), SR(0)) if rest.is_zero() else (cos(rest), sin(rest))
+        C, S = angle_sum(C, S, multiples, lambda v: (cos(v), sin(v)))
+        return trig_value(op, C.expand(), S.expand())

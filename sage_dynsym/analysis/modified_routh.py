@@ -157,6 +157,11 @@ class ModifiedRouthLyapunov(SageObject):
         sage: MR = ModifiedRouthLyapunov(Lagrangian((dr^2 + r^2*dphi^2)/2 + 1/r, [r, phi]).routh([phi]))
         sage: MR.velocity_on_manifold()
         -p_phi*f(r)
+
+    It has no value equality (two of them are equal only if they are the
+    same object), so the pickling test, which compares the copy with the
+    original, is skipped::
+
         sage: TestSuite(MR).run(skip=['_test_pickling'])
 
     A Lagrangian without cyclic coordinates is its own Routh function: for

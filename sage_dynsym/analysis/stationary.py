@@ -332,6 +332,11 @@ class StationarySolution(MotionSolution):
         sage: sols = stationary_solutions([(x^2 + a*y^2)/2, x^2 + y^2], [x, y])
         sage: s = sols[1]; s
         Stationary solution {x: x, y: 0}, lambda1 = -1/2 (1-parameter family)
+
+    It has no value equality (two of them are equal only if they are the
+    same object), so the pickling test, which compares the copy with the
+    original, is skipped::
+
         sage: TestSuite(s).run(skip=['_test_pickling'])
     """
 

@@ -52,6 +52,12 @@ class CompactEquations(SageObject):
         sage: C = equations_cse([sin(x + y)^2 + x, sin(x + y)*y])
         sage: C.subexpressions(), C.equations()
         ([(x1_, sin(x + y))], [x1_^2 + x, x1_*y])
+
+    TESTS: its symbols are defined in order. It has no value equality (two
+    of them are equal only if they are the same object), so the pickling
+    test, which compares the copy with the original, is skipped::
+
+        sage: TestSuite(C).run(skip=['_test_pickling'])
     """
 
     def __init__(self, subexpressions, equations):
@@ -64,6 +70,29 @@ class CompactEquations(SageObject):
                                  expression_argument(e, "subexpressions"))
                                 for s, e in pairs]
         self._equations = expression_list(equations, "equations")
+
+    def _test_definitions(self, **options):
+        r"""Each name of :meth:`subexpressions` is a new symbol, and each
+        expression uses only the names defined before it.
+
+        EXAMPLES: run by ``TestSuite`` (see the class); a name used before
+        its definition::
+
+            sage: from sage_dynsym.dynamics.compact import CompactEquations
+            sage: a, b, x = var('a b x')
+            sage: CompactEquations([(a, b + 1), (b, x^2)], [a])._test_definitions()
+            Traceback (most recent call last):
+            ...
+            AssertionError: b + 1 uses b before its definition
+        """
+        tester = self._tester(**options)
+        names = [s for s, _ in self._subexpressions]
+        tester.assertTrue(all(s.is_symbol() for s in names))
+        tester.assertEqual(len(set(names)), len(names))
+        for k, (symbol, expr) in enumerate(self._subexpressions):
+            later = set(expr.variables()) & set(names[k:])
+            tester.assertFalse(later, f"{expr} uses {', '.join(map(str, later))} before its "
+                                      "definition")
 
     def subexpressions(self):
         r"""

@@ -405,6 +405,12 @@ class NonholonomicLagrangian(Lagrangian):
         True
         sage: NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy]).equations_record()
         Second-order equations in (x, y): [ddx - mu1, mu1*y + ddy] == 0 with velocity constraints [-dy*y + dx] == 0
+
+    Its equations take the constraint forces along the rows the numerics
+    impose on the accelerations, and its conserved energy is an integral
+    of its equations::
+
+        sage: TestSuite(L).run()
     """
 
     def __init__(self, expr, coordinates, velocities=None, *, nonholonomic=(), **options):
@@ -416,6 +422,25 @@ class NonholonomicLagrangian(Lagrangian):
     @cached_method
     def _equations_method(self):
         return NonholonomicEquations(self, self.constraint_set())
+
+    def _test_constraint_forces(self, **options):
+        r"""The equations contain each multiplier `\mu_k` with the
+        coefficients `-G_k` (the forces `G^T\mu` moved to the left), where
+        `G\ddot q = h` are the constraints on the accelerations that the
+        numerics impose (:meth:`acceleration_constraints
+        <sage_dynsym.dynamics.nonholonomic.VelocityConstraints.acceleration_constraints>`):
+        the holonomic rows first, then those of the velocity constraints.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        G, _, multipliers = self.constraint_set().acceleration_constraints()
+        tester.assertEqual(multipliers, self.multipliers())
+        equations = self.lagrange_equations()
+        for mu, row in zip(multipliers, G.rows()):
+            for e, a in zip(equations, row):
+                tester.assertTrue(bool((SR(e).diff(mu) + a).simplify_full() == 0),
+                                  f"the coefficient of {mu} in {e} is not {-a}")
 
     def velocity_constraint_matrix(self):
         r"""

@@ -77,13 +77,19 @@ class ReducedEquations(SageObject):
 
     EXAMPLES: see the module documentation.
 
-    TESTS::
+    TESTS:
+
+    The velocities it expresses by the speeds satisfy the constraints, and
+    its mass matrix is symmetric. It has no value equality (two of them are
+    equal only if they are the same object), so the pickling test, which
+    compares the copy with the original, is skipped::
 
         sage: from sage_dynsym.dynamics.nonholonomic import NonholonomicLagrangian
         sage: x, y, dx, dy = var('x y dx dy')
         sage: L = NonholonomicLagrangian((dx^2 + dy^2)/2, [x, y], nonholonomic=[dx - y*dy])
         sage: L.reduced_equations().speeds()
         [dy]
+        sage: TestSuite(L.reduced_equations()).run(skip=['_test_pickling'])
         sage: L.reduced_equations([dx, dy])
         Traceback (most recent call last):
         ...
@@ -163,6 +169,27 @@ class ReducedEquations(SageObject):
                 pivots.append(j)
                 rank += 1
         return [i for i in range(n) if i not in pivots]
+
+    def _test_constraints(self, **options):
+        r"""The velocities of :meth:`dependent_velocities` satisfy the
+        constraints of the Lagrangian (those on the velocities, and the
+        holonomic ones differentiated once) whatever the speeds, and
+        :meth:`mass_matrix` is symmetric.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        from ..algebra.solving import vanishes
+        tester = self._tester(**options)
+        L, values = self._L, self.dependent_velocities()
+        constraints = [time_derivative(f, self._q, self._dq, [0] * len(self._q))
+                       for f in L.constraints()]
+        constraints += getattr(L, 'nonholonomic_constraints', lambda: [])()
+        for g in constraints:
+            tester.assertTrue(vanishes(SR(g).subs(values)),
+                              f"the velocities {values} do not satisfy {g} == 0")
+        M = self.mass_matrix()
+        tester.assertTrue(all(vanishes(M[i, j] - M[j, i]) for i in range(M.nrows())
+                              for j in range(i)))
 
     def _repr_(self):
         speeds = ", ".join(str(self._dq[i]) for i in self._u)

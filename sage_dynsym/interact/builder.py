@@ -579,17 +579,16 @@ class SystemBuilder:
         """
         from .forms import derive, derivation_latex
         self.output.value = ""
-        try:
+
+        def derivation():
             model = self.model()
             # the kind's first form (Lagrange for a mechanical system,
             # Brayton-Moser for a circuit), from the model's class
-            block = derivation_latex(derive(model, next(iter(model.equation_forms()))))
-        except DynSymError as err:
-            self.status.value = f"<b>error:</b> {_escape(err)}"
+            return model, derivation_latex(derive(model, next(iter(model.equation_forms()))))
+        done, found = self._attempt(derivation)
+        if not done:
             return
-        except Exception as err:        # never a traceback in the page
-            self.status.value = f"<b>error:</b> {_escape(type(err).__name__)}: {_escape(err)}"
-            return
+        model, block = found
         self.status.value = f"{_escape(model)}"
         self.output.value = f"$${_escape(block)}$$"
 
@@ -609,15 +608,20 @@ class SystemBuilder:
             self.confirm.layout.display = None
             return
         self._hide_confirm()
+        if self._attempt(lambda: save(self.model(), path), expected=(DynSymError, OSError))[0]:
+            self.status.value = f"saved to {_escape(path)}"
+
+    def _attempt(self, action, expected=DynSymError):
+        # ``(True, action())``, or ``(False, None)`` with the failure shown
+        # on the status line: the expected errors by their message, any
+        # other by its class too
         try:
-            save(self.model(), path)
-        except (DynSymError, OSError) as err:
+            return True, action()
+        except expected as err:
             self.status.value = f"<b>error:</b> {_escape(err)}"
-            return
-        except Exception as err:        # never a traceback in the page
+        except Exception as err:        # a page: the status line, never a traceback
             self.status.value = f"<b>error:</b> {_escape(type(err).__name__)}: {_escape(err)}"
-            return
-        self.status.value = f"saved to {_escape(path)}"
+        return False, None
 
 
 def _text_fields(keys, values):

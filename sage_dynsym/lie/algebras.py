@@ -274,6 +274,11 @@ class PoissonStructure(SageObject):
         Poisson structure on (q, p)
         sage: P.bracket(q, p), P.bracket(q^2, p^2), P.is_lie_poisson()
         (1, 4*p*q, False)
+
+    It has no value equality (two of them are equal only if they are the
+    same object), so the pickling test, which compares the copy with the
+    original, is skipped::
+
         sage: TestSuite(P).run(skip=['_test_pickling'])
 
     TESTS::
@@ -334,6 +339,25 @@ class PoissonStructure(SageObject):
                             f"the matrix breaks the Jacobi identity: {{{a}, {{{b}, {c}}}}} + "
                             f"{{{b}, {{{c}, {a}}}}} + {{{c}, {{{a}, {b}}}}} = "
                             f"{_normal(jac)}, not 0", entry="algebra")
+
+    def _test_bracket(self, **options):
+        r"""The bracket of :meth:`bracket` takes the matrix's entries on
+        the coordinates, and on three polynomials of them it is
+        antisymmetric, a derivation (Leibniz's rule) and satisfies the
+        Jacobi identity.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        x, J, n = self._variables, self._J, len(self._variables)
+        for i in range(n):
+            for j in range(n):
+                tester.assertTrue(vanishes(self.bracket(x[i], x[j]) - J[i, j], maxima=False))
+        F, G, H = x[0] ** 2 + x[-1], x[0] * x[-1] + 1, sum(x) ** 2
+        b = self.bracket
+        for value in (b(F, G) + b(G, F), b(F, G * H) - b(F, G) * H - G * b(F, H),
+                      b(F, b(G, H)) + b(G, b(H, F)) + b(H, b(F, G))):
+            tester.assertTrue(vanishes(SR(value).expand(), maxima=False), f"{value} is not 0")
 
     # -- accessors ---------------------------------------------------------
 

@@ -123,6 +123,7 @@ from ..symbols import momentum, t, check_mechanical_names, exact_decimals
 from ..arguments import symbol_arguments
 from ..dynamics.holonomic import check_constraints
 from ..dynamics.model import Model
+from ..numerics.methods import object_cache
 from ..numerics.values import check_model_values
 from .force_functions import check_force_function, force_terms
 from .constraint_set import ConstraintSet
@@ -132,7 +133,7 @@ from .operating_points import checked_operating_points
 from .report import report_title, report_sections
 from .system_checks import check_declared_symbols, checked_load, PhysicalConditions
 from .system_kinematics import SystemKinematics
-from .system_lagrangian import LagrangianBuilder
+from .system_lagrangian import LagrangianBuilder, check_calculus_method
 from .system_numerics import MechanicalNumerics
 
 __all__ = ['MechanicalSystem', 'check_constraints', 'DelegatedMethod']
@@ -225,6 +226,9 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
     - ``positive`` -- (optional) parameters known to be positive; the
       analysis (stationary motions and their stability in reports) assumes
       no other sign
+    - ``calculus_method`` -- (default: ``'auto'``) how the kinematics and
+      the equations are computed: ``'polynomial'``, ``'symbolic'``,
+      ``'recursive'`` or ``'auto'`` (see :meth:`set_calculus_method`)
 
     EXAMPLES::
 
@@ -245,7 +249,7 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
 
     def __init__(self, bodies, coordinates, parameters=None, force_function=None,
                  dissipation=0, forces=None, name=None, positive=(), loads=(), constraints=(),
-                 nonholonomic=(), rolling=(), operating_points=None):
+                 nonholonomic=(), rolling=(), operating_points=None, calculus_method='auto'):
         self._kinematics = kinematics = SystemKinematics(bodies, coordinates)
         q = kinematics.coordinates()
         self._parameters = None if parameters is None else [SR(p) for p in parameters]
@@ -277,9 +281,12 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
             operating_points, q, kinematics.velocities(), self._parameters)
         self._physical = PhysicalConditions(kinematics, self._positive,
                                             self._constraint_set.rolling(), self.force_terms())
-        self._builder = LagrangianBuilder(kinematics, self._force, self._dissipation,
-                                          self._forces, self._loads, self._constraint_set,
-                                          self._name, self._positive)
+        self._builder = self._lagrangian_builder(calculus_method)
+
+    def _lagrangian_builder(self, calculus_method):
+        return LagrangianBuilder(self._kinematics, self._force, self._dissipation, self._forces,
+                                 self._loads, self._constraint_set, self._name, self._positive,
+                                 calculus_method=calculus_method)
 
     # ------------------------------------------------------------------
     # the model interface
@@ -404,7 +411,7 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
         bodies = [b.subs(substitution, parent=K.bodies()[K.parent_index(k) - 1].name()
                          if K.parent_index(k) else 0)
                   for k, b in enumerate(K.bodies(), 1)]
-        return MechanicalSystem(bodies, K.coordinates(),
+        return MechanicalSystem(bodies, K.coordinates(), calculus_method=self.calculus_method(),
                                 parameters=kept, force_function=force,
                                 dissipation=sub(self._dissipation),
                                 forces=[sub(f) for f in self._forces], name=self._name,
@@ -696,12 +703,106 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
     constraints = DelegatedMethod('constraint_set', ConstraintSet, 'holonomic')
     nonholonomic_constraints = DelegatedMethod('constraint_set', ConstraintSet, 'nonholonomic')
 
+    def calculus_method(self):
+        r"""
+        How the system computes its kinematics and its equations: one of
+        ``'auto'`` (the default), ``'polynomial'``, ``'symbolic'`` and
+        ``'recursive'`` (see :meth:`set_calculus_method`).
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody
+            sage: a = var('a')
+            sage: MechanicalSystem([RigidBody('b', rotations=[(3, a)])], [a]).calculus_method()
+            'auto'
+        """
+        return self._builder.calculus_method()
+
+    def set_calculus_method(self, method):
+        r"""
+        Choose how the system computes its kinematics and its equations, as
+        a manifold of Sage chooses its calculus method (see REFERENCES
+        below): the strategy of the system, not part of its
+        description (the equations are the same; their form and the time
+        they take differ). What was computed with the former method is
+        forgotten.
+
+        INPUT:
+
+        - ``method`` -- one of
+
+          - ``'polynomial'`` -- the kinematics in the polynomial ring of the
+            sines and cosines of the angles
+            (:class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`),
+            the Christoffel coefficients of the equations combined there;
+          - ``'symbolic'`` -- the kinematics in Sage's symbolic ring
+            (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`),
+            the mass matrix differentiated there;
+          - ``'recursive'`` -- the equations assembled body by body by the
+            Newton--Euler recursion;
+          - ``'auto'`` -- the polynomial kinematics where the model is
+            polynomial in the sines and cosines, and the form of the
+            equations chosen by the size of the system
+
+          (the details: :meth:`LagrangianBuilder.lagrangian
+          <sage_dynsym.mechanics.system_lagrangian.LagrangianBuilder.lagrangian>`,
+          whose ``christoffel`` it is by default)
+
+        EXAMPLES: the planar double pendulum (point masses `m` at the ends
+        of two rods of length `l`, gravity along `-y`): its second equation
+        `m l^2 (1 + \cos b)\ddot a + m l^2\ddot b + m l^2\sin b\,\dot a^2
+        + m g l\cos(a + b) = 0` expanded, and assembled body by body::
+
+            sage: from sage_dynsym import MechanicalSystem, RigidBody, UniformGravity
+            sage: a, b, m, l, g = var('a b m l g')
+            sage: point_mass = dict(mass=m, mass_center=[l, 0, 0],
+            ....:                   inertia=diagonal_matrix([0, m*l^2, m*l^2]))
+            sage: S = MechanicalSystem([RigidBody('b1', rotations=[(3, a)], **point_mass),
+            ....:                       RigidBody('b2', parent='b1', rotations=[(3, b)],
+            ....:                                 joint=[l, 0, 0], **point_mass)],
+            ....:                      [a, b], force_function=UniformGravity([0, -g, 0]))
+            sage: E = S.lagrangian().lagrange_equations(); E[1]
+            da^2*l^2*m*sin(b) + dda*l^2*m*(cos(b) + 1) + (cos(a)*cos(b) - sin(a)*sin(b))*g*l*m + ddb*l^2*m
+            sage: S.set_calculus_method('recursive'); S.calculus_method()
+            'recursive'
+            sage: R = S.lagrangian().lagrange_equations(); R[1]
+            ddb*l^2*m + (g*cos(a)*cos(b) + (-da^2*l + g*sin(a))*(-sin(b)))*(l*m) + (l^2*m*cos(b) + l^2*m)*dda
+            sage: all(bool((r - e).expand() == 0) for r, e in zip(R, E))
+            True
+
+        The kinematics in the symbolic ring gives the same kinetic energy::
+
+            sage: T = S.kinetic_energy(); S.set_calculus_method('symbolic')
+            sage: bool(S.kinetic_energy() == T), str(S.lagrangian().lagrange_equations()) == str(E)
+            (True, True)
+
+        TESTS::
+
+            sage: S.set_calculus_method('sympy')
+            Traceback (most recent call last):
+            ...
+            ModelError: calculus_method: expected one of 'auto', 'polynomial', 'symbolic', 'recursive', got 'sympy'
+            sage: S.calculus_method(), S.subs({g: 1}).calculus_method()
+            ('symbolic', 'symbolic')
+
+        REFERENCES:
+
+        - the model of this method: the calculus method of Sage's manifolds,
+          ``sage.manifolds.manifold.TopologicalManifold.set_calculus_method``
+          (SageManifolds), chosen on the manifold and passed to its charts
+        """
+        self._builder = self._lagrangian_builder(check_calculus_method(method))
+        self.lagrangian.clear_cache()
+        # the numerical forms made of the former equations
+        object_cache(self).clear()
+
     @cached_method
-    def lagrangian(self, christoffel='auto'):
+    def lagrangian(self, christoffel=None):
         r"""
         The Lagrangian `L = T + U`, with the system's dissipation function,
         generalized forces and constraints; ``christoffel`` chooses how the
-        equations get their Christoffel coefficients (see
+        equations get their Christoffel coefficients (default: as the
+        :meth:`calculus_method` of the system; see
         :meth:`LagrangianBuilder.lagrangian
         <sage_dynsym.mechanics.system_lagrangian.LagrangianBuilder.lagrangian>`).
 

@@ -45,7 +45,32 @@ from .kinematics import Kinematics
 # derivation (see bench/bench_chain.py); see lagrangian().
 _POLYNOMIAL_CHRISTOFFEL_TERMS = 10000
 
-__all__ = ['LagrangianBuilder']
+#: The calculus methods of a mechanical system: how its kinematics and the
+#: equations of its Lagrangian are computed (see :meth:`LagrangianBuilder.lagrangian`).
+CALCULUS_METHODS = ('auto', 'polynomial', 'symbolic', 'recursive')
+
+__all__ = ['CALCULUS_METHODS', 'check_calculus_method', 'LagrangianBuilder']
+
+
+def check_calculus_method(method, entry="calculus_method"):
+    r"""
+    ``method`` if it is one of :data:`CALCULUS_METHODS`, else a
+    :class:`~sage_dynsym.errors.ModelError` naming ``entry``.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.mechanics.system_lagrangian import check_calculus_method
+        sage: check_calculus_method('symbolic')
+        'symbolic'
+        sage: check_calculus_method('sympy')
+        Traceback (most recent call last):
+        ...
+        ModelError: calculus_method: expected one of 'auto', 'polynomial', 'symbolic', 'recursive', got 'sympy'
+    """
+    if method not in CALCULUS_METHODS:
+        raise ModelError(f"expected one of {', '.join(map(repr, CALCULUS_METHODS))}, got "
+                         f"{method!r}", entry=entry)
+    return method
 
 
 class LagrangianBuilder(SageObject):
@@ -70,6 +95,12 @@ class LagrangianBuilder(SageObject):
       system
     - ``name`` -- (optional) the name of the Lagrangian
     - ``positive`` -- (optional) the parameters declared positive
+    - ``calculus_method`` -- (default: ``'auto'``) one of
+      :data:`CALCULUS_METHODS`: the default way :meth:`lagrangian` forms
+      the equations; with ``'symbolic'`` the kinematics is computed in
+      Sage's symbolic ring too, not in the polynomial ring of the sines and
+      cosines (:class:`~sage_dynsym.algebra.trigonometric.SymbolicBackend`
+      instead of :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`)
 
     EXAMPLES::
 
@@ -85,8 +116,9 @@ class LagrangianBuilder(SageObject):
     """
 
     def __init__(self, kinematics, force_function=None, dissipation=0, forces=None, loads=(),
-                 constraints=None, name=None, positive=()):
+                 constraints=None, name=None, positive=(), calculus_method='auto'):
         self._kinematics = kinematics
+        self._method = check_calculus_method(calculus_method)
         self._coordinates = kinematics.coordinates()
         self._velocities = kinematics.velocities()
         self._terms = force_terms(force_function)
@@ -98,6 +130,22 @@ class LagrangianBuilder(SageObject):
         self._nonholonomic = [] if constraints is None else constraints.nonholonomic()
         self._name = name
         self._positive = list(positive)
+
+    def calculus_method(self):
+        r"""
+        The calculus method (one of :data:`CALCULUS_METHODS`), see the
+        class documentation.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym import RigidBody
+            sage: from sage_dynsym.mechanics.system_kinematics import SystemKinematics
+            sage: from sage_dynsym.mechanics.system_lagrangian import LagrangianBuilder
+            sage: K = SystemKinematics([RigidBody('b', rotations=[(3, var('a'))])], [var('a')])
+            sage: LagrangianBuilder(K).calculus_method()
+            'auto'
+        """
+        return self._method
 
     def _repr_(self):
         n = len(self._kinematics.bodies())
@@ -146,8 +194,11 @@ class LagrangianBuilder(SageObject):
         r"""
         The kinematics over a :class:`~sage_dynsym.algebra.trigonometric.TrigPolynomialRing`
         when the model is polynomial in the sines and cosines of its angles
-        and in its parameters (the usual case), else ``None``.
+        and in its parameters (the usual case) and the calculus method is
+        not ``'symbolic'``, else ``None``.
         """
+        if self._method == 'symbolic':
+            return None
         dynamic = self._coordinates + self._velocities + [t]
         data = list(dynamic)
         for body in self._kinematics.bodies():
@@ -308,7 +359,7 @@ class LagrangianBuilder(SageObject):
         return forces
 
     @cached_method
-    def lagrangian(self, christoffel='auto'):
+    def lagrangian(self, christoffel=None):
         r"""
         The Lagrangian `L = T + U`, with the system's dissipation function and
         generalized forces.
@@ -347,6 +398,9 @@ class LagrangianBuilder(SageObject):
             spatial chains of ``bench/``: up to 4 links), then
             ``'recursive'``.
 
+          - ``None`` (default) -- the calculus method of the builder (of
+            the system: see :meth:`calculus_method`).
+
           Models that are not polynomial in the sines and cosines of their
           angles use ``'symbolic'`` instead of ``'polynomial'``.
 
@@ -382,7 +436,7 @@ class LagrangianBuilder(SageObject):
             sage: S.lagrangian('fast')
             Traceback (most recent call last):
             ...
-            ModelError: christoffel must be 'auto', 'polynomial', 'recursive' or 'symbolic', got 'fast'
+            ModelError: christoffel: expected one of 'auto', 'polynomial', 'symbolic', 'recursive', got 'fast'
 
         A chain of 9 planar links takes the recursive form (compared with
         the other forms in ``tests/test_compact_equations.py``), and so does a
@@ -401,9 +455,8 @@ class LagrangianBuilder(SageObject):
             sage: MechanicalSystem([b], [x]).lagrangian('recursive').lagrange_equations()
             [4*ddx*m]
         """
-        if christoffel not in ('auto', 'polynomial', 'recursive', 'symbolic'):
-            raise ModelError("christoffel must be 'auto', 'polynomial', 'recursive' or "
-                             f"'symbolic', got {christoffel!r}")
+        christoffel = (self._method if christoffel is None
+                       else check_calculus_method(christoffel, entry="christoffel"))
         kinematics, bodies = self._kinematics.symbolic(), self._kinematics.bodies()
         if christoffel == 'recursive' and not kinematics.recursive_applies():
             christoffel = 'symbolic'

@@ -56,6 +56,11 @@ class Event(SageObject):
         sage: x = var('x')
         sage: Event(x - 1, direction=1, terminal=True)
         Event x - 1 == 0, increasing, terminal
+
+    It has no value equality (two of them are equal only if they are the
+    same object), so the pickling test, which compares the copy with the
+    original, is skipped::
+
         sage: TestSuite(Event(x)).run(skip=['_test_pickling'])
 
     TESTS::

@@ -514,13 +514,13 @@ class Trajectory(SageObject):
         for expression, color in zip(expressions, colors):
             values = self._array(expression, times, states)
             label = {} if len(expressions) == 1 else {'legend_label': _label(expression)}
-            G += line(list(zip(times.tolist(), values.tolist())), color=color, **label,
-                      **options)
+            # the title as an option of the curves (Graphics keeps it)
+            G += line(list(zip(times.tolist(), values.tolist())), color=color, title=title,
+                      **label, **options)
         if len(expressions) > 1:
             # lower left corner of the legend just right of the axes
             G.set_legend_options(loc=(1.02, 0.0))
         G.axes_labels(['$t$', ylabel or ', '.join(_label(e) for e in expressions)])
-        G._set_extra_kwds({'title': title})
         return G
 
     def phase_portrait(self, x, y, **options):

@@ -1098,15 +1098,18 @@ class StabilityMap(SageObject):
         stable, alpha = stable[tuple(index)], alpha[tuple(index)]
         kinds = self.classes()[tuple(index)]
         title = options.pop('title', None)
+        # the title as an option of the first picture (Graphics keeps it)
+        title = dict(title=self._title(fixed) if title is None else title)
         G = Graphics()
         if len(free) == 1:
-            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, kinds, options)
+            G += self._plot_line(keys[free[0]], axes[free[0]], alpha, kinds,
+                                 dict(options, **title))
             G.axes_labels([f"${latex(keys[free[0]])}$", r"max $\mathrm{Re}\,\lambda$"])
         else:
             # a frame with ticks, not axes through the origin
             options = dict(dict(frame=True, axes=False, ticks_integer=False), **options)
             plane = [keys[i] for i in free], [axes[i] for i in free]
-            G += _class_picture(*plane[1], kinds, options)
+            G += _class_picture(*plane[1], kinds, dict(options, **title))
             boundary = Graphics() if conditions is None else \
                 _exact_boundary(conditions, fixed, *plane, options)
             G += boundary
@@ -1114,7 +1117,6 @@ class StabilityMap(SageObject):
                          + ([('black', 'exact boundary')] if boundary else []))
             G.set_legend_options(**_LEGEND)
             G.axes_labels([f"${latex(k)}$" for k in plane[0]])
-        G._extra_kwds['title'] = self._title(fixed) if title is None else title
         G.set_aspect_ratio('automatic')
         return G
 

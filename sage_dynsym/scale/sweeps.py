@@ -318,11 +318,40 @@ class Sweep(SageObject):
     samples), with any trailing dimensions of the function's values.
 
     EXAMPLES: see :func:`sweep`.
+
+    TESTS:
+
+    Sweeps have no value equality (they hold NumPy arrays), so the pickling
+    test is skipped; the values stand over the points, one axis a
+    parameter::
+
+        sage: from sage_dynsym.scale import sweep
+        sage: W = sweep(lambda a, b: (a, a*b), {'a': (0, 1, 3), 'b': (1, 2, 2)}, client=False)
+        sage: TestSuite(W).run(skip='_test_pickling')
+        sage: R = sweep(lambda a: a, {'a': (0, 1)}, samples=5, client=False)
+        sage: TestSuite(R).run(skip='_test_pickling')
     """
 
     def __init__(self, points, values, keys):
         result_arrays(points, [values], 'Sweep')
         self._points, self._values, self._keys = points, values, list(keys)
+
+    def _test_points(self, **options):
+        r"""The values have the shape of the points first; there is one
+        axis per parameter, in their order, as long as its dimension of the
+        grid (for random samples: as the number of samples), with finite
+        values.
+
+        EXAMPLES: run by ``TestSuite`` (see the class).
+        """
+        tester = self._tester(**options)
+        shape = self._points.shape
+        tester.assertEqual(self._values.shape[:len(shape)], shape)
+        axes = self.axes()
+        tester.assertEqual(list(axes), self.parameters())
+        lengths = shape if self._points.is_grid() else [self._points.size] * len(axes)
+        tester.assertEqual([len(axis) for axis in axes.values()], list(lengths))
+        tester.assertTrue(all(np.isfinite(axis).all() for axis in axes.values()))
 
     def _repr_(self):
         names = ', '.join(map(str, self._keys))
