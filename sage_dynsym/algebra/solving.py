@@ -89,6 +89,7 @@ from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.term_order import TermOrder
+from sage.rings.integer_ring import ZZ
 from sage.rings.qqbar import AA
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
@@ -102,6 +103,7 @@ from .conditions import (positive_conditions, nonzero_conditions, conjunction,
 from .decomposition import (minimal_primes, shape, ShapePrime, triangular_sets,
                             linear_substitutions)
 from .regions import prune_empty
+from .expression_walk import ExpressionWalker
 from .translation import Translation, NotAlgebraic, translate_expressions
 
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
@@ -846,11 +848,18 @@ def _without_noise(T, solutions, positive):
     """
     cache = {}
     kept = [s for s in solutions if not _never_real(s, positive, cache)]
-    families = [s for s in kept if len(s._free) == 1 and s.is_explicit()]
-    points = [s for s in kept if not s._free and s.is_explicit()]
+    explicit = [s for s in kept if s.is_explicit()]
     dropped, widened = set(), {}
-    for f in families:
-        closed, inside = _closed_branch(T, f, points)
+    # the largest branches first: a branch that contains another is kept
+    # (a branch dropped into a larger one would not carry what it contains)
+    for f in sorted((s for s in explicit if s._free), key=lambda s: -len(s._free)):
+        if id(f) in dropped:
+            continue
+        smaller = [s for s in explicit if len(s._free) < len(f._free) and id(s) not in widened]
+        if len(f._free) == 1 and not T.parameters():
+            closed, inside = _closed_branch(T, f, [s for s in smaller if not s._free])
+        else:
+            closed, inside = _closed_symbolically(T, f, smaller, positive)
         if inside:
             widened[id(f)] = closed
             dropped.update(id(p) for p in inside)
@@ -938,6 +947,150 @@ def _closed_branch(T, family, points):
     return AlgebraicSolution(T, family._prime, family._free, family._counted,
                              dict(family._values), dict(family._ring_values), [],
                              closed), inside
+
+
+def _closed_symbolically(T, family, others, positive):
+    r"""
+    The branch ``family`` with its strict conditions widened (`D > 0` to
+    `D \ge 0`) and the solutions among ``others`` (explicit, with fewer
+    free unknowns) that it then contains; ``(family, [])`` when none is
+    contained or the widening cannot be proved right.
+
+    The widening is proved by identities, for every value of the
+    parameters and free unknowns at once: each square root `\sqrt R` in
+    the values is a new variable `s` with `s^2 = R`; `R \ge 0` must be
+    one of the widened conditions (so `s` is real), no denominator may
+    hold an `s` (it could vanish where `R = 0`) and each of its factors
+    must be required nonzero by a condition; then the generators of the
+    component, at the values, must lie in the ideal of the `s^2 - R`
+    (a Gröbner basis decides it): they vanish wherever the values are
+    defined, at the points the widening adds too. A solution is
+    contained if the branch's values at its values are its values and its
+    conditions imply the widened ones there (each holds identically or is
+    one of its conditions).
+    """
+    unknowns = T.unknowns()
+    conditions = family._conditions
+    strict = [c for c in conditions if c.operator() in (operator.gt, operator.lt)]
+    if not strict or not others or isinstance(family._prime, ShapePrime) or \
+            any(T.is_angle(v) for v in unknowns):
+        return family, []
+    wide = {operator.gt: operator.ge, operator.lt: operator.le}
+    closed = [wide[c.operator()](c.lhs(), c.rhs()) if c.operator() in wide else c
+              for c in conditions]
+    if not _widening_holds(T, family, closed, positive):
+        return family, []
+    inside = [s for s in others if _inside(T, family, closed, s)]
+    if not inside:
+        return family, []
+    return AlgebraicSolution(T, family._prime, family._free, family._counted,
+                             dict(family._values), dict(family._ring_values), [],
+                             closed), inside
+
+
+class _SquareRoots(ExpressionWalker):
+    r"""A rational expression in symbols and square roots of rational
+    expressions without roots, each `R^{n/2}` written `s^n` with a new
+    symbol `s` for `\sqrt R` (:attr:`roots`: the pairs `(s, R)`); any
+    other atom is refused (``ValueError``)."""
+
+    def __init__(self):
+        self.roots = {}
+
+    def symbol(self, e):
+        return e
+
+    def number(self, e):
+        return e
+
+    def atom(self, e):
+        if e.operator() is operator.pow:
+            base, exponent = e.operands()
+            n = QQ(exponent.pyobject()) if exponent.is_numeric() else None
+            if n is not None and n.denominator() == 2:
+                _SquareRoots().walk(base)       # no root inside a root
+                key = str(base)
+                if key not in self.roots:
+                    self.roots[key] = (SR.symbol(f"root_of_{len(self.roots)}_"), base)
+                return self.roots[key][0] ** ZZ(2 * n)
+        raise ValueError(f"{e} is not a square root of a rational expression")
+
+
+def _widening_holds(T, family, closed, positive):
+    r"""Whether the values of ``family`` are real, finite and on its
+    component wherever the ``closed`` conditions hold (see
+    :func:`_closed_symbolically`)."""
+    roots = _SquareRoots()
+    try:
+        values = [roots.walk(SR(family._values.get(i, v))) for i, v in enumerate(T.unknowns())]
+    except (ValueError, TypeError):
+        return False
+    s_symbols = [s for s, _ in roots.roots.values()]
+    if {str(v) for v in T.unknowns() + list(T.parameters())} & set(map(str, s_symbols)):
+        return False
+    nonzero = [SR(c.lhs() - c.rhs()) for c in closed if c.operator() is operator.ne]
+    nonnegative = [SR(c.lhs() - c.rhs()) * (1 if c.operator() is operator.ge else -1)
+                   for c in closed if c.operator() in (operator.ge, operator.le)]
+    for s, R in roots.roots.values():
+        if not (R.is_numeric() and R > 0) and \
+                not any(_positive_multiple(D, R) for D in nonnegative):
+            return False
+    for v in values + [R for _, R in roots.roots.values()]:
+        for f, _ in SR(v).denominator().factor_list():
+            if f.is_numeric():
+                continue
+            if any(f.has(s) for s in s_symbols) or \
+                    not any(_positive_multiple(g, f) or _positive_multiple(g, -f)
+                            for g in nonzero) and str(f) not in map(str, positive):
+                return False
+    relations = [(s ** 2 - R).numerator() for s, R in roots.roots.values()]
+    at = dict(zip(T.unknowns(), values))
+    try:
+        images = [SR(T.symbolic(g)).subs(at).numerator() for g in family._prime.gens()]
+        names = sorted({str(x) for e in images + relations for x in SR(e).variables()})
+        if not names:
+            return all(SR(e).is_zero() for e in images)
+        R = PolynomialRing(QQ, names)
+        ideal = R.ideal([R(r) for r in relations]) if relations else R.ideal([R(0)])
+        return all(ideal.reduce(R(e)) == 0 for e in images)
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+
+
+def _positive_multiple(D, R):
+    r"""Whether ``D`` is ``R`` times a positive rational number."""
+    try:
+        q = normalize(SR(D) / SR(R))
+        return q.is_numeric() and QQ(q.pyobject()) > 0
+    except (TypeError, ValueError, ArithmeticError, ZeroDivisionError):
+        return False
+
+
+def _inside(T, family, closed, solution):
+    r"""Whether every point of the explicit ``solution`` is the point of
+    the widened branch (values of ``family``, conditions ``closed``) at
+    the same free unknowns (see :func:`_closed_symbolically`)."""
+    if solution._prime is None or not solution.is_explicit():
+        return False
+    unknowns = T.unknowns()
+    at = {unknowns[i]: SR(solution._values.get(i, unknowns[i])) for i in family._free}
+    try:
+        for i, v in enumerate(unknowns):
+            here = SR(family._values.get(i, v)).subs(at)
+            if not normalize(here - SR(solution._values.get(i, v))).is_zero():
+                return False
+        own = {str(c) for c in solution._conditions}
+        for c in closed:
+            c = c.subs(at)
+            lhs = normalize(SR(c.lhs() - c.rhs()))
+            if lhs.is_numeric():
+                if not c.operator()(lhs, 0):
+                    return False
+            elif str(c.operator()(lhs, 0)) not in own and str(c) not in own:
+                return False
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    return True
 
 
 def _holds_at(conditions, u, at):
