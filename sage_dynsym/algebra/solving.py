@@ -845,6 +845,24 @@ def _without_noise(T, solutions, positive):
         Solution {x: x, y: sqrt(x - 1), z: 1/sqrt(x - 1)} (dimension 1, if x - 1 > 0)
         Solution {x: x, y: -sqrt(x - 1), z: -1/sqrt(x - 1)} (dimension 1, if x - 1 > 0)
         sage: solving.REAL_POINT_SAMPLES, solving.REALITY_QE_VARIABLES = 12, 5
+
+    With parameters (and with several free unknowns) a branch is widened
+    when identities prove it (:func:`_closed_symbolically`): the end
+    `(a, 0)` of the branches `y = \pm\sqrt{x - a}` is on them, the ends
+    `(\pm\sqrt a, 0)` of `y = \pm\sqrt{a - x^2}` likewise::
+
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([y^2 - x + a], [x, y])]
+        [({x: x, y: sqrt(-a + x)}, [a - x <= 0]), ({x: x, y: -sqrt(-a + x)}, [a - x <= 0])]
+        sage: [s.conditions() for s in solve_exactly([x^2 + y^2 - a], [x, y])]
+        [[x^2 - a <= 0], [x^2 - a <= 0]]
+
+    The line `x = a, y = z = 0` at the end of the branches
+    `y = \pm\sqrt{x - a}`, `w = z/y` is not on them (`w` is infinite
+    there): it stays::
+
+        sage: w = var('w')
+        sage: [(s.dimension(), s.conditions()) for s in solve_exactly([y^2 - x + a, z - w*y], [x, y, z, w])]
+        [(1, []), (2, [a - x < 0]), (2, [a - x < 0])]
     """
     cache = {}
     kept = [s for s in solutions if not _never_real(s, positive, cache)]
