@@ -226,3 +226,14 @@ def test_brun_symbolic_level_zero_axes_on_circles():
                 point = {v: 0 for v in M + P}
                 point[M[k]], point[P[j]] = QQ(7) / 5, sign
                 assert on_listed([s.solution() for s in sols], point, at), (k, j, sign)
+
+
+def test_branch_end_where_the_equation_is_undefined():
+    # (y^2 - x + a)/y = 0 (by hand): y = +-sqrt(x - a) with y != 0, so x > a;
+    # the end (a, 0) is not a solution (the equation is not defined there):
+    # neither listed nor added to the branches
+    x, y, a = var('x y a')
+    sols = solve_exactly([(y**2 - x + a) / y], [x, y])
+    assert len(sols) == 2 and all(s.dimension() == 1 for s in sols)
+    assert not on_listed(sols, {x: QQ(1) / 3, y: 0}, {a: QQ(1) / 3})
+    assert on_listed(sols, {x: QQ(4) / 3, y: 1}, {a: QQ(1) / 3})

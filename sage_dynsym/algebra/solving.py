@@ -1053,16 +1053,18 @@ def _widening_holds(T, family, closed, positive):
         if not (R.is_numeric() and R > 0) and \
                 not any(_positive_multiple(D, R) for D in nonnegative):
             return False
-    for v in values + [R for _, R in roots.roots.values()]:
-        for f, _ in SR(v).denominator().factor_list():
-            if f.is_numeric():
-                continue
-            if any(f.has(s) for s in s_symbols) or \
-                    not any(_positive_multiple(g, f) or _positive_multiple(g, -f)
-                            for g in nonzero) and str(f) not in map(str, positive):
-                return False
-    relations = [(s ** 2 - R).numerator() for s, R in roots.roots.values()]
     at = dict(zip(T.unknowns(), values))
+    try:
+        # finite, and where the equations are defined (no denominator of
+        # theirs vanishing at the values)
+        if not all(_required_nonzero(SR(v).denominator(), nonzero, s_symbols, positive)
+                   for v in values + [R for _, R in roots.roots.values()]) or \
+                not all(_required_nonzero(SR(T.symbolic(d)).subs(at).numerator(), nonzero,
+                                          s_symbols, positive) for d in T.denominators()):
+            return False
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    relations = [(s ** 2 - R).numerator() for s, R in roots.roots.values()]
     try:
         images = [SR(T.symbolic(g)).subs(at).numerator() for g in family._prime.gens()]
         names = sorted({str(x) for e in images + relations for x in SR(e).variables()})
@@ -1073,6 +1075,23 @@ def _widening_holds(T, family, closed, positive):
         return all(ideal.reduce(R(e)) == 0 for e in images)
     except (TypeError, ValueError, ArithmeticError):
         return False
+
+
+def _required_nonzero(expr, nonzero, s_symbols, positive):
+    r"""Whether each factor of ``expr`` is a nonzero number, a parameter
+    declared positive, or required nonzero by one of the conditions
+    ``nonzero`` (up to a constant factor); never where it holds one of the
+    ``s_symbols`` (square roots, which may vanish)."""
+    for f, _ in SR(expr).factor_list():
+        if f.is_numeric():
+            if f.is_zero():
+                return False
+            continue
+        if any(f.has(s) for s in s_symbols) or \
+                not any(_positive_multiple(g, f) or _positive_multiple(g, -f) for g in nonzero) \
+                and str(f) not in map(str, positive):
+            return False
+    return True
 
 
 def _positive_multiple(D, R):
@@ -1202,8 +1221,10 @@ def _excluded_parts(T, known, solutions, counted, positive):
             done.add((id(P), d))
             J = P.ring().ideal(list(P.gens()) + [d])
             for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
-                if any(_contains(Q, K) and not _contains(P, K) for K in known):
-                    continue
+                if any(_contains(Q, K) and not _contains(P, K) for K in known) or \
+                        any(not isinstance(Q, ShapePrime) and Q.reduce(f) == 0
+                            for f in T.denominators()):
+                    continue        # on another component, or where the equations are not defined
                 known.append(Q)
                 new = _solve_component(T, Q, sh, counted, positive)
                 found += new
