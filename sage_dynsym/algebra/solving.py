@@ -506,8 +506,8 @@ class AlgebraicSolution(SageObject):
         Conditions on unknowns describe this parametrization of its
         component: the points of the component where they fail (a
         denominator or a radicand vanishes) are listed in other solutions,
-        or (without parameters) in this one, its condition `D > 0` widened
-        to `D \ge 0`, where its values are real and finite there.
+        or in this one, its condition `D > 0` widened to `D \ge 0`, where
+        its values are proved real, finite and on the component there.
         `x z = y` is `z = y/x` where `x \ne 0`; its points with `x = 0`
         are the line `x = y = 0`::
 
@@ -800,12 +800,15 @@ def _without_noise(T, solutions, positive):
 
     The ends of a branch, where a radicand vanishes (its condition `D > 0`
     fails), were solved as components of their own by
-    :func:`_excluded_parts`. A point is dropped only if a branch that stays
-    contains it, decided exactly by :func:`_closed_branch`: the branch's
-    strict conditions widened to `D \ge 0` (after checking exactly that the
-    values are real, finite and on the component at every point the
-    widening adds), the point satisfying them and equal to the branch's
-    values there.
+    :func:`_excluded_parts`. A solution is dropped only if a branch that
+    stays (of more free unknowns) contains it, decided exactly: the
+    branch's strict conditions widened to `D \ge 0` (after checking exactly
+    that the values are real, finite and on the component at every point
+    the widening adds), the solution satisfying them and equal to the
+    branch's values there -- for a branch of one free unknown without
+    parameters at the points in ``AA`` (:func:`_closed_branch`), otherwise
+    by identities (:func:`_closed_symbolically`). Where that is not proved
+    the solution stays listed (redundant, never wrong).
 
     EXAMPLES: the branches of `y^2 = x - a`, `z^2 = -x - a` are real
     where `a < x < -a`: nowhere when `a` is declared positive::
