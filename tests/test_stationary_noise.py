@@ -148,3 +148,92 @@ def test_branch_end_not_contained_is_kept(branches_forced):
     points = [s.values() for s in sols if s.dimension() == 0]
     assert points == [{x: 1, y: 0, z: 0}]
     assert len([s for s in sols if s.dimension() == 1]) == 2
+
+
+def on_listed(sols, point, at=None):
+    """Whether some listed explicit solution has the values ``point`` (a
+    dict of unknowns) with its conditions holding (``at``: parameter values)."""
+    at = at or {}
+    for s in sols:
+        if not s.is_explicit() or any(v not in point for v in s.free_unknowns()):
+            continue
+        free = {v: point[v] for v in s.free_unknowns()}
+        subs = {**at, **free}
+        try:
+            if all(bool(c.subs(subs)) for c in s.conditions()) and \
+                    all(abs(float(s.values()[v].subs(subs)) - float(point[v])) < 1e-12
+                        for v in point):
+                return True
+        except (TypeError, ValueError):
+            continue
+    return False
+
+
+@pytest.mark.parametrize("a", [QQ(-3) / 2, 0, QQ(2) / 7])
+def test_branch_ends_contained_with_a_parameter(a):
+    # y^2 = x - a (by hand): real for x >= a, y = +-sqrt(x - a), its only
+    # point with y = 0 the end (a, 0); likewise with z free (a surface whose
+    # points with y = 0 are the line x = a): the ends are on the branches,
+    # nothing is listed apart
+    x, y, z, p = var('x y z a')
+    for unknowns in ([x, y], [x, y, z]):
+        sols = solve_exactly([y**2 - x + p], unknowns)
+        assert len(sols) == 2 and all(s.dimension() == len(unknowns) - 1 for s in sols)
+        for zv in ([0] if len(unknowns) == 2 else [QQ(5), QQ(-1) / 3]):
+            end = {x: a, y: 0, z: zv} if len(unknowns) == 3 else {x: a, y: 0}
+            assert on_listed(sols, end, {p: a})
+            for sign in (1, -1):
+                inner = {**end, x: a + 2, y: sign * np.sqrt(2.0)}
+                assert on_listed(sols, inner, {p: a})
+
+
+def test_branch_end_at_infinity_with_a_parameter_is_kept():
+    # y^2 = x - a, z = w y: for y != 0, w = z/y; the line x = a, y = z = 0
+    # (w free) is a solution (by hand: both equations hold) that no branch
+    # reaches (w = z/y is infinite there), so it is listed
+    x, y, z, w, a = var('x y z w a')
+    sols = solve_exactly([y**2 - x + a, z - w * y], [x, y, z, w])
+    line = [s for s in sols if s.dimension() == 1]
+    assert len(line) == 1 and line[0].values() == {x: a, y: 0, z: 0, w: w}
+
+
+@pytest.mark.slow       # Brun's problem with symbolic parameters (a few seconds)
+def test_brun_symbolic_level_zero_axes_on_circles():
+    # Brun's problem on (gamma, gamma) = 1, (M, gamma) = 0 with symbolic a_i,
+    # eps, its integral F = (M, M)/2 - eps (gamma, A gamma)/(2 a1 a2 a3) free
+    # (H = (M, A M)/2 + eps (gamma, A^-1 gamma)/2): the stationary set holds
+    # the sets M = m e_k, gamma on the unit circle orthogonal to e_k; the
+    # lines M = m e_k, gamma = +-e_j (j != k) lie on those circles (by hand:
+    # e_j is a unit vector orthogonal to e_k; on such a set the equations for
+    # the multipliers do not depend on gamma: lambda3 = 0, lambda1 and lambda2
+    # fixed by a_k), so no 1-dimensional set is listed apart, and each such
+    # line is on a listed circle
+    M, P, A = list(var('M1 M2 M3')), list(var('p1 p2 p3')), list(var('a1 a2 a3'))
+    eps = var('epsilon')
+    H = sum(A[i] * M[i]**2 + eps * P[i]**2 / A[i] for i in range(3)) / 2
+    F = (sum(m**2 for m in M) - eps * sum(A[i] * P[i]**2 for i in range(3))
+         / (A[0] * A[1] * A[2])) / 2
+    Mv, pv = vector(M), vector(P)
+    dM, dp = vector([H.diff(v) for v in M]), vector([H.diff(v) for v in P])
+    X = list(Mv.cross_product(dM) + pv.cross_product(dp)) + list(pv.cross_product(dM))
+    sols = stationary_solutions([H, F, pv * pv, Mv * pv], M + P, equations=X,
+                                levels=[None, 1, 0])
+    assert not [s for s in sols if s.dimension() == 1]
+    at = {var(n): v for n, v in (('a1', 1), ('a2', 2), ('a3', 3), ('epsilon', 1))}
+    for k in range(3):
+        for j in range(3):
+            for sign in ((1, -1) if j != k else ()):
+                point = {v: 0 for v in M + P}
+                point[M[k]], point[P[j]] = QQ(7) / 5, sign
+                assert on_listed([s.solution() for s in sols], point, at), (k, j, sign)
+
+
+def test_branch_end_where_the_equation_is_undefined():
+    # (y^2 - x + a)/y = 0 (by hand): y = +-sqrt(x - a) with y != 0, so x > a;
+    # the end (a, 0) is not a solution (the equation is not defined there):
+    # neither listed nor added to the branches
+    x, y, a = var('x y a')
+    sols = solve_exactly([(y**2 - x + a) / y], [x, y])
+    assert len(sols) == 2 and all(s.dimension() == 1 for s in sols)
+    assert not on_listed(sols, {x: QQ(1) / 3, y: 0}, {a: QQ(1) / 3})
+    assert on_listed(sols, {x: QQ(4) / 3, y: 1}, {a: QQ(1) / 3})

@@ -89,6 +89,7 @@ from sage.misc.prandom import randint
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.term_order import TermOrder
+from sage.rings.integer_ring import ZZ
 from sage.rings.qqbar import AA
 from sage.rings.rational_field import QQ
 from sage.structure.sage_object import SageObject
@@ -102,6 +103,7 @@ from .conditions import (positive_conditions, nonzero_conditions, conjunction,
 from .decomposition import (minimal_primes, shape, ShapePrime, triangular_sets,
                             linear_substitutions)
 from .regions import prune_empty
+from .expression_walk import ExpressionWalker
 from .translation import Translation, NotAlgebraic, translate_expressions
 
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
@@ -504,8 +506,8 @@ class AlgebraicSolution(SageObject):
         Conditions on unknowns describe this parametrization of its
         component: the points of the component where they fail (a
         denominator or a radicand vanishes) are listed in other solutions,
-        or (without parameters) in this one, its condition `D > 0` widened
-        to `D \ge 0`, where its values are real and finite there.
+        or in this one, its condition `D > 0` widened to `D \ge 0`, where
+        its values are proved real, finite and on the component there.
         `x z = y` is `z = y/x` where `x \ne 0`; its points with `x = 0`
         are the line `x = y = 0`::
 
@@ -798,12 +800,15 @@ def _without_noise(T, solutions, positive):
 
     The ends of a branch, where a radicand vanishes (its condition `D > 0`
     fails), were solved as components of their own by
-    :func:`_excluded_parts`. A point is dropped only if a branch that stays
-    contains it, decided exactly by :func:`_closed_branch`: the branch's
-    strict conditions widened to `D \ge 0` (after checking exactly that the
-    values are real, finite and on the component at every point the
-    widening adds), the point satisfying them and equal to the branch's
-    values there.
+    :func:`_excluded_parts`. A solution is dropped only if a branch that
+    stays (of more free unknowns) contains it, decided exactly: the
+    branch's strict conditions widened to `D \ge 0` (after checking exactly
+    that the values are real, finite and on the component at every point
+    the widening adds), the solution satisfying them and equal to the
+    branch's values there -- for a branch of one free unknown without
+    parameters at the points in ``AA`` (:func:`_closed_branch`), otherwise
+    by identities (:func:`_closed_symbolically`). Where that is not proved
+    the solution stays listed (redundant, never wrong).
 
     EXAMPLES: the branches of `y^2 = x - a`, `z^2 = -x - a` are real
     where `a < x < -a`: nowhere when `a` is declared positive::
@@ -843,14 +848,39 @@ def _without_noise(T, solutions, positive):
         Solution {x: x, y: sqrt(x - 1), z: 1/sqrt(x - 1)} (dimension 1, if x - 1 > 0)
         Solution {x: x, y: -sqrt(x - 1), z: -1/sqrt(x - 1)} (dimension 1, if x - 1 > 0)
         sage: solving.REAL_POINT_SAMPLES, solving.REALITY_QE_VARIABLES = 12, 5
+
+    With parameters (and with several free unknowns) a branch is widened
+    when identities prove it (:func:`_closed_symbolically`): the end
+    `(a, 0)` of the branches `y = \pm\sqrt{x - a}` is on them, the ends
+    `(\pm\sqrt a, 0)` of `y = \pm\sqrt{a - x^2}` likewise::
+
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([y^2 - x + a], [x, y])]
+        [({x: x, y: sqrt(-a + x)}, [a - x <= 0]), ({x: x, y: -sqrt(-a + x)}, [a - x <= 0])]
+        sage: [s.conditions() for s in solve_exactly([x^2 + y^2 - a], [x, y])]
+        [[x^2 - a <= 0], [x^2 - a <= 0]]
+
+    The line `x = a, y = z = 0` at the end of the branches
+    `y = \pm\sqrt{x - a}`, `w = z/y` is not on them (`w` is infinite
+    there): it stays::
+
+        sage: w = var('w')
+        sage: [(s.dimension(), s.conditions()) for s in solve_exactly([y^2 - x + a, z - w*y], [x, y, z, w])]
+        [(1, []), (2, [a - x < 0]), (2, [a - x < 0])]
     """
     cache = {}
     kept = [s for s in solutions if not _never_real(s, positive, cache)]
-    families = [s for s in kept if len(s._free) == 1 and s.is_explicit()]
-    points = [s for s in kept if not s._free and s.is_explicit()]
+    explicit = [s for s in kept if s.is_explicit()]
     dropped, widened = set(), {}
-    for f in families:
-        closed, inside = _closed_branch(T, f, points)
+    # the largest branches first: a branch that contains another is kept
+    # (a branch dropped into a larger one would not carry what it contains)
+    for f in sorted((s for s in explicit if s._free), key=lambda s: -len(s._free)):
+        if id(f) in dropped:
+            continue
+        smaller = [s for s in explicit if len(s._free) < len(f._free) and id(s) not in widened]
+        if len(f._free) == 1 and not T.parameters():
+            closed, inside = _closed_branch(T, f, [s for s in smaller if not s._free])
+        else:
+            closed, inside = _closed_symbolically(T, f, smaller, positive)
         if inside:
             widened[id(f)] = closed
             dropped.update(id(p) for p in inside)
@@ -938,6 +968,169 @@ def _closed_branch(T, family, points):
     return AlgebraicSolution(T, family._prime, family._free, family._counted,
                              dict(family._values), dict(family._ring_values), [],
                              closed), inside
+
+
+def _closed_symbolically(T, family, others, positive):
+    r"""
+    The branch ``family`` with its strict conditions widened (`D > 0` to
+    `D \ge 0`) and the solutions among ``others`` (explicit, with fewer
+    free unknowns) that it then contains; ``(family, [])`` when none is
+    contained or the widening cannot be proved right.
+
+    The widening is proved by identities, for every value of the
+    parameters and free unknowns at once: each square root `\sqrt R` in
+    the values is a new variable `s` with `s^2 = R`; `R \ge 0` must be
+    one of the widened conditions (so `s` is real), no denominator may
+    hold an `s` (it could vanish where `R = 0`) and each of its factors
+    must be required nonzero by a condition; then the generators of the
+    component, at the values, must lie in the ideal of the `s^2 - R`
+    (a Gröbner basis decides it): they vanish wherever the values are
+    defined, at the points the widening adds too. A solution is
+    contained if the branch's values at its values are its values and its
+    conditions imply the widened ones there (each holds identically or is
+    one of its conditions).
+    """
+    unknowns = T.unknowns()
+    conditions = family._conditions
+    strict = [c for c in conditions if c.operator() in (operator.gt, operator.lt)]
+    if not strict or not others or isinstance(family._prime, ShapePrime) or \
+            any(T.is_angle(v) for v in unknowns):
+        return family, []
+    wide = {operator.gt: operator.ge, operator.lt: operator.le}
+    closed = [wide[c.operator()](c.lhs(), c.rhs()) if c.operator() in wide else c
+              for c in conditions]
+    if not _widening_holds(T, family, closed, positive):
+        return family, []
+    inside = [s for s in others if _inside(T, family, closed, s)]
+    if not inside:
+        return family, []
+    return AlgebraicSolution(T, family._prime, family._free, family._counted,
+                             dict(family._values), dict(family._ring_values), [],
+                             closed), inside
+
+
+class _SquareRoots(ExpressionWalker):
+    r"""A rational expression in symbols and square roots of rational
+    expressions without roots, each `R^{n/2}` written `s^n` with a new
+    symbol `s` for `\sqrt R` (:attr:`roots`: the pairs `(s, R)`); any
+    other atom is refused (``ValueError``)."""
+
+    def __init__(self):
+        self.roots = {}
+
+    def symbol(self, e):
+        return e
+
+    def number(self, e):
+        return e
+
+    def atom(self, e):
+        if e.operator() is operator.pow:
+            base, exponent = e.operands()
+            n = QQ(exponent.pyobject()) if exponent.is_numeric() else None
+            if n is not None and n.denominator() == 2:
+                _SquareRoots().walk(base)       # no root inside a root
+                key = str(base)
+                if key not in self.roots:
+                    self.roots[key] = (SR.symbol(f"root_of_{len(self.roots)}_"), base)
+                return self.roots[key][0] ** ZZ(2 * n)
+        raise ValueError(f"{e} is not a square root of a rational expression")
+
+
+def _widening_holds(T, family, closed, positive):
+    r"""Whether the values of ``family`` are real, finite and on its
+    component wherever the ``closed`` conditions hold (see
+    :func:`_closed_symbolically`)."""
+    roots = _SquareRoots()
+    try:
+        values = [roots.walk(SR(family._values.get(i, v))) for i, v in enumerate(T.unknowns())]
+    except (ValueError, TypeError):
+        return False
+    s_symbols = [s for s, _ in roots.roots.values()]
+    if {str(v) for v in T.unknowns() + list(T.parameters())} & set(map(str, s_symbols)):
+        return False
+    nonzero = [SR(c.lhs() - c.rhs()) for c in closed if c.operator() is operator.ne]
+    nonnegative = [SR(c.lhs() - c.rhs()) * (1 if c.operator() is operator.ge else -1)
+                   for c in closed if c.operator() in (operator.ge, operator.le)]
+    for s, R in roots.roots.values():
+        if not (R.is_numeric() and R > 0) and \
+                not any(_positive_multiple(D, R) for D in nonnegative):
+            return False
+    at = dict(zip(T.unknowns(), values))
+    try:
+        # finite, and where the equations are defined (no denominator of
+        # theirs vanishing at the values)
+        if not all(_required_nonzero(SR(v).denominator(), nonzero, s_symbols, positive)
+                   for v in values + [R for _, R in roots.roots.values()]) or \
+                not all(_required_nonzero(SR(T.symbolic(d)).subs(at).numerator(), nonzero,
+                                          s_symbols, positive) for d in T.denominators()):
+            return False
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    relations = [(s ** 2 - R).numerator() for s, R in roots.roots.values()]
+    try:
+        images = [SR(T.symbolic(g)).subs(at).numerator() for g in family._prime.gens()]
+        names = sorted({str(x) for e in images + relations for x in SR(e).variables()})
+        if not names:
+            return all(SR(e).is_zero() for e in images)
+        R = PolynomialRing(QQ, names)
+        ideal = R.ideal([R(r) for r in relations]) if relations else R.ideal([R(0)])
+        return all(ideal.reduce(R(e)) == 0 for e in images)
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+
+
+def _required_nonzero(expr, nonzero, s_symbols, positive):
+    r"""Whether each factor of ``expr`` is a nonzero number, a parameter
+    declared positive, or required nonzero by one of the conditions
+    ``nonzero`` (up to a constant factor); never where it holds one of the
+    ``s_symbols`` (square roots, which may vanish)."""
+    for f, _ in SR(expr).factor_list():
+        if f.is_numeric():
+            if f.is_zero():
+                return False
+            continue
+        if any(f.has(s) for s in s_symbols) or \
+                not any(_positive_multiple(g, f) or _positive_multiple(g, -f) for g in nonzero) \
+                and str(f) not in map(str, positive):
+            return False
+    return True
+
+
+def _positive_multiple(D, R):
+    r"""Whether ``D`` is ``R`` times a positive rational number."""
+    try:
+        q = normalize(SR(D) / SR(R))
+        return q.is_numeric() and QQ(q.pyobject()) > 0
+    except (TypeError, ValueError, ArithmeticError, ZeroDivisionError):
+        return False
+
+
+def _inside(T, family, closed, solution):
+    r"""Whether every point of the explicit ``solution`` is the point of
+    the widened branch (values of ``family``, conditions ``closed``) at
+    the same free unknowns (see :func:`_closed_symbolically`)."""
+    if solution._prime is None or not solution.is_explicit():
+        return False
+    unknowns = T.unknowns()
+    at = {unknowns[i]: SR(solution._values.get(i, unknowns[i])) for i in family._free}
+    try:
+        for i, v in enumerate(unknowns):
+            here = SR(family._values.get(i, v)).subs(at)
+            if not normalize(here - SR(solution._values.get(i, v))).is_zero():
+                return False
+        own = {str(c) for c in solution._conditions}
+        for c in closed:
+            c = c.subs(at)
+            lhs = normalize(SR(c.lhs() - c.rhs()))
+            if lhs.is_numeric():
+                if not c.operator()(lhs, 0):
+                    return False
+            elif str(c.operator()(lhs, 0)) not in own and str(c) not in own:
+                return False
+    except (TypeError, ValueError, ArithmeticError):
+        return False
+    return True
 
 
 def _holds_at(conditions, u, at):
@@ -1031,8 +1224,10 @@ def _excluded_parts(T, known, solutions, counted, positive):
             done.add((id(P), d))
             J = P.ring().ideal(list(P.gens()) + [d])
             for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
-                if any(_contains(Q, K) and not _contains(P, K) for K in known):
-                    continue
+                if any(_contains(Q, K) and not _contains(P, K) for K in known) or \
+                        any(not isinstance(Q, ShapePrime) and Q.reduce(f) == 0
+                            for f in T.denominators()):
+                    continue        # on another component, or where the equations are not defined
                 known.append(Q)
                 new = _solve_component(T, Q, sh, counted, positive)
                 found += new
