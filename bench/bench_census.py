@@ -41,6 +41,21 @@ def direct(h, starts=300):
     return len(found), minima
 
 
+def cell_table(census, symbol, reference, exact, name):
+    """Each cell's sample, the census's numbers there (``exact(cell)``) and the
+    reference's (``reference(sample)``, timed), and how many cells agree."""
+    print(f"{'sample ' + str(symbol):>10} {'exact':>10} {name:>10} {name + ' s':>10}")
+    agree = 0
+    for cell in census.cells():
+        value = cell.sample()[symbol]
+        start = time.time()
+        ref, mine = tuple(reference(float(value))), tuple(exact(cell))
+        agree += ref == mine
+        print(f"{str(value):>10} {'/'.join(map(str, mine)):>10} {'/'.join(map(str, ref)):>10} "
+              f"{time.time() - start:10.2f}")
+    print(f"agreement: {agree} of {len(census.cells())} cells")
+
+
 def heavy_top(quick, compare):
     """The asymmetric heavy top's verdicts and census (see the module documentation)."""
     from sage.all import var
@@ -74,18 +89,10 @@ def heavy_top(quick, compare):
     print(census)
     print(f"census: {time.time() - start:.1f} s wall, {time.process_time() - cpu:.1f} s CPU "
           f"for {len(census.cells())} cells")
-    print(f"{'sample c':>10} {'exact':>12} {'Staude':>12} {'Staude s':>9}")
-    agree = 0
-    for cell in census.cells():
-        level = cell.sample()[c]
-        start = time.time()
-        ref = verdicts(float(level))
-        exact = (cell.count(), cell.stable_count(), cell.stable_count(first_approximation=True))
-        agree += ref == exact
-        print(f"{str(level):>10} {'/'.join(map(str, exact)):>12} {'/'.join(map(str, ref)):>12} "
-              f"{time.time() - start:9.2f}")
-    print(f"agreement (count/stable/with first approximation): {agree} of "
-          f"{len(census.cells())} cells")
+    print("count/stable/stable with those in first approximation:")
+    cell_table(census, c, verdicts, lambda cell: (cell.count(), cell.stable_count(),
+                                                  cell.stable_count(first_approximation=True)),
+               'Staude')
 
 
 def main():
@@ -131,16 +138,7 @@ def main():
     total = time.time() - start
     print(census)
     print(f"census: {total:.1f} s for {len(census.cells())} cells")
-    print(f"{'sample h':>10} {'exact':>10} {'direct':>10} {'direct s':>9}")
-    agree = 0
-    for cell in census.cells():
-        value = cell.sample()[h]
-        start = time.time()
-        ref = direct(float(value))
-        agree += ref == (cell.count(), cell.stable_count())
-        print(f"{str(value):>10} {cell.count():>5}/{cell.stable_count():<4} "
-              f"{ref[0]:>5}/{ref[1]:<4} {time.time() - start:9.2f}")
-    print(f"agreement: {agree} of {len(census.cells())} cells")
+    cell_table(census, h, direct, lambda cell: (cell.count(), cell.stable_count()), 'direct')
     if executor is not None:
         executor.shutdown()
 
