@@ -28,7 +28,11 @@ second variation is definite on the tangent space of the leaf iff the bordered
 matrix [[B, G^T], [G, 0]] has n eigenvalues of the sign and k of the other: Gould,
 "On practical conditions for the existence and uniqueness of solutions to the
 general equality quadratic programming problem", Math. Programming 32 (1985) 90-99),
-and the first approximation by the eigenvalues of the linearization on the leaf.
+and the first approximation by the eigenvalues of the linearization on the leaf. The
+count stable in first approximation also changes where two of those eigenvalues
+collide: those levels are located along the parametrization (the discriminant of
+q, p(z) = q(z^2) the characteristic polynomial on the leaf, changes sign) and
+compared with the refined cells (cells(first_approximation=True)).
 """
 import numpy as np
 import pytest
@@ -88,6 +92,30 @@ def staude_points(level):
     return found
 
 
+def leaf_discriminant(t):
+    """On the rotation of parameter t: the discriminant of q, p(z) = q(z^2) the
+    characteristic polynomial of the linearization on the leaf (NumPy's eigenvalues),
+    relative to the square of the middle coefficient: zero where two roots collide."""
+    roots = e3_leaf(staude_rotation(t, 1), np.diag(1 / INERTIA), lambda g: CENTRE,
+                    np.zeros((3, 3)))[0]
+    p = np.real(np.poly(roots))
+    return (p[2]**2 - 4 * p[4]) / p[2]**2
+
+
+def staude_collisions(top=20):
+    """The levels |c| < top where two roots of the linearization on the leaf of a
+    permanent rotation collide (where the stability in first approximation may
+    change), by sign changes of leaf_discriminant on the scans."""
+    found = []
+    for ts in _scans(2000):
+        ts = ts[[staude_f(t) < top for t in ts]]       # (also away from the poles)
+        d = np.array([leaf_discriminant(t) for t in ts])
+        for i in np.nonzero(np.sign(d[:-1]) != np.sign(d[1:]))[0]:
+            if ts[i + 1] - ts[i] < 1:           # not across a gap left by the filter
+                found.append(staude_f(brentq(leaf_discriminant, ts[i], ts[i + 1], xtol=1e-15)))
+    return sorted(found)
+
+
 def bordered_definite(x):
     """Whether the second variation of H - l1 (M, gamma) - l2 (gamma, gamma) is definite on
     the tangent space of the leaf at x: the inertia of the bordered Hessian."""
@@ -124,7 +152,7 @@ def test_staude_parametrization_is_on_the_leaf():
             assert abs(m @ g - sign * staude_f(t)) < 1e-12
 
 
-@pytest.mark.slow       # the census takes about a minute
+@pytest.mark.slow       # the census and its refinement take about two minutes
 def test_asymmetric_heavy_top_census():
     M1, M2, M3, g1, g2, g3, c = var('M1 M2 M3 gamma1 gamma2 gamma3 c')
     H = (M1**2 + M2**2 / 2 + M3**2 / 3) / 2 + g1 + g2 + g3
@@ -148,3 +176,17 @@ def test_asymmetric_heavy_top_census():
             assert verdicts(other)[:2] == (count, stable)
     # 2 rotations near c = 0, 4 beyond the first minimum, 6 beyond the second
     assert [x.count() for x in cells] == [6, 4, 2, 4, 6]
+    # the first approximation: its boundaries are the degenerate rotations and the
+    # collisions of roots on the leaf; its count at random levels inside each cell
+    collisions = staude_collisions()
+    assert len(collisions) == 2
+    values = [float(v) for v in census.bifurcation_values(first_approximation=True)]
+    assert values == pytest.approx(sorted(v * s for v in minima + collisions for s in (1, -1)),
+                                   rel=1e-9)
+    for cell in census.cells(first_approximation=True):
+        lo, hi = [None if b is None else float(b) for b in cell.bounds()]
+        lo, hi = (hi - 3 if lo is None else lo), (lo + 3 if hi is None else hi)
+        for other in rng.uniform(lo + (hi - lo) / 50, hi - (hi - lo) / 50, size=2):
+            other += 0.5 if abs(other) < 0.1 else 0
+            assert verdicts(other) == (cell.count(), cell.stable_count(),
+                                       cell.stable_count(first_approximation=True))
