@@ -12,7 +12,15 @@ same sample points. The table gives, per cell, both counts and both times.
 
 Target: the whole census within minutes on 2 cores.
 
-Usage: python bench/bench_census.py [--quick] [--executor process]
+``--heavy-top``: the census of the relative equilibria of the asymmetric heavy
+top (I = (1, 2, 3), centre of mass r = (1, 1, 1), levels (M, gamma) = c,
+(gamma, gamma) = 1) over c, its cells against Staude's parametrization of the
+permanent rotations (SciPy/NumPy, tests/test_heavy_top_census.py), and the time
+of one exact stability verdict at the sample c = -4 (points of degree 18) in the
+number field of the point; with ``--compare`` also by algebraic numbers (QQbar),
+the route before (minutes per point).
+
+Usage: python bench/bench_census.py [--quick] [--executor process] [--heavy-top [--compare]]
 """
 import argparse
 import os
@@ -33,12 +41,73 @@ def direct(h, starts=300):
     return len(found), minima
 
 
+def cell_table(census, symbol, reference, exact, name):
+    """Each cell's sample, the census's numbers there (``exact(cell)``) and the
+    reference's (``reference(sample)``, timed), and how many cells agree."""
+    print(f"{'sample ' + str(symbol):>10} {'exact':>10} {name:>10} {name + ' s':>10}")
+    agree = 0
+    for cell in census.cells():
+        value = cell.sample()[symbol]
+        start = time.time()
+        ref, mine = tuple(reference(float(value))), tuple(exact(cell))
+        agree += ref == mine
+        print(f"{str(value):>10} {'/'.join(map(str, mine)):>10} {'/'.join(map(str, ref)):>10} "
+              f"{time.time() - start:10.2f}")
+    print(f"agreement: {agree} of {len(census.cells())} cells")
+
+
+def heavy_top(quick, compare):
+    """The asymmetric heavy top's verdicts and census (see the module documentation)."""
+    from sage.all import var
+    from sage_dynsym.lie import LiePoissonSystem
+    from sage_dynsym.analysis.leaf_census import relative_equilibria_at
+    from sage_dynsym.analysis.point_stability import relative_equilibrium_verdict, \
+        _algebraic_leaf_verdict
+    from test_heavy_top_census import verdicts
+    M1, M2, M3, g1, g2, g3, c = var('M1 M2 M3 gamma1 gamma2 gamma3 c')
+    H = (M1**2 + M2**2 / 2 + M3**2 / 3) / 2 + g1 + g2 + g3
+    S = LiePoissonSystem('e3', H)
+    x, C, J = S.variables(), S.casimirs(), S.poisson_matrix()
+    start = time.process_time()
+    points, _ = relative_equilibria_at(H, C, J, x, [-4, 1])
+    print(f"c = -4: {len(points)} relative equilibria solved and decided in "
+          f"{time.process_time() - start:.2f} s CPU")
+    values = [points[0][0].value(v) for v in x]
+    start = time.process_time()
+    verdict = relative_equilibrium_verdict(H, C, J, x, values)
+    print(f"one verdict in the number field of the point: {verdict} in "
+          f"{time.process_time() - start:.2f} s CPU")
+    if compare:
+        start = time.process_time()
+        verdict = _algebraic_leaf_verdict(H, C, J, x, values)
+        print(f"the same by algebraic numbers (QQbar): {verdict} in "
+              f"{time.process_time() - start:.1f} s CPU")
+    if quick:
+        return
+    start, cpu = time.time(), time.process_time()
+    census = S.equilibrium_census([c], levels=[c, 1])
+    print(census)
+    print(f"census: {time.time() - start:.1f} s wall, {time.process_time() - cpu:.1f} s CPU "
+          f"for {len(census.cells())} cells")
+    print("count/stable/stable with those in first approximation:")
+    cell_table(census, c, verdicts, lambda cell: (cell.count(), cell.stable_count(),
+                                                  cell.stable_count(first_approximation=True)),
+               'Staude')
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument('--quick', action='store_true', help='one sample point only')
     parser.add_argument('--executor', choices=['none', 'process'], default='none',
                         help='solve the sample points in 2 worker processes')
+    parser.add_argument('--heavy-top', action='store_true',
+                        help='the census of the asymmetric heavy top instead')
+    parser.add_argument('--compare', action='store_true',
+                        help='with --heavy-top: also one verdict by algebraic numbers')
     args = parser.parse_args()
+    if args.heavy_top:
+        heavy_top(args.quick, args.compare)
+        return
     first, second = gyrostat([(3, 'alpha'), (1, 'beta'), (2, 'gamma')]), \
         gyrostat([(3, 'alpha'), (2, 'beta'), (1, 'gamma')])
     h = first[0].momenta()[0]
@@ -69,16 +138,7 @@ def main():
     total = time.time() - start
     print(census)
     print(f"census: {total:.1f} s for {len(census.cells())} cells")
-    print(f"{'sample h':>10} {'exact':>10} {'direct':>10} {'direct s':>9}")
-    agree = 0
-    for cell in census.cells():
-        value = cell.sample()[h]
-        start = time.time()
-        ref = direct(float(value))
-        agree += ref == (cell.count(), cell.stable_count())
-        print(f"{str(value):>10} {cell.count():>5}/{cell.stable_count():<4} "
-              f"{ref[0]:>5}/{ref[1]:<4} {time.time() - start:9.2f}")
-    print(f"agreement: {agree} of {len(census.cells())} cells")
+    cell_table(census, h, direct, lambda cell: (cell.count(), cell.stable_count()), 'direct')
     if executor is not None:
         executor.shutdown()
 

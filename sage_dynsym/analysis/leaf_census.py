@@ -36,13 +36,15 @@ equilibria of a Lagrangian:
    (:func:`~sage_dynsym.analysis.stationary.stationary_solutions` with the
    levels), the isolated real ones counted, each with its stability:
    ``'stable'`` by the energy--Casimir method (the second variation of `H -
-   \lambda\cdot C` definite on the tangent space of the leaf:
-   :func:`~sage_dynsym.analysis.energy_casimir.energy_casimir_stability`),
+   \lambda\cdot C` definite on the tangent space of the leaf),
    ``'unstable'`` for a root of the linearization with a positive real
    part, ``'stable in first approximation'`` where the linearization
    restricted to the leaf (the characteristic polynomial without the `k`
    zero roots transversal to the leaf) has all its roots simple and on the
-   imaginary axis, ``'undecided'`` otherwise. The positive-dimensional
+   imaginary axis, ``'undecided'`` otherwise, computed in the number field
+   of each point with certified signs
+   (:func:`~sage_dynsym.analysis.point_stability.relative_equilibrium_verdict`).
+   The positive-dimensional
    components with real points (decided exactly: :func:`has_real_points`)
    are reported as families, with their dimensions, never counted as
    points.
@@ -86,7 +88,7 @@ from sage.arith.functions import lcm
 from sage.libs.singular.function_factory import ff
 from sage.matrix.constructor import matrix
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
-from sage.rings.qqbar import AA, QQbar
+from sage.rings.qqbar import AA
 from sage.rings.rational_field import QQ
 from sage.symbolic.ring import SR
 
@@ -95,8 +97,7 @@ from ._census import (log, census_arguments, check_values, stationary_ideal,
                       add_zero_set_factors, check_main_thread, verdict_counts)
 from .census import Census
 from .charts import configuration_points
-from .energy_casimir import energy_casimir_stability
-from .point_stability import spectrum_verdict
+from .point_stability import relative_equilibrium_verdict
 from .stationary import stationary_solutions
 
 __all__ = ['has_real_points', 'leaf_bifurcation_polynomials',
@@ -453,22 +454,6 @@ def leaf_first_approximation_polynomials(H, casimirs, poisson_matrix, variables,
     return sorted((T.symbolic(f) for f in found if not f.divides(d)), key=str)
 
 
-def _leaf_verdict(H, casimirs, poisson_matrix, x, field, at):
-    r"""The stability of the relative equilibrium ``at`` on its leaf."""
-    verdict = energy_casimir_stability(H, casimirs, poisson_matrix, x, at).verdict()
-    if verdict != 'undecided':
-        return verdict
-    A = matrix(QQbar, [[QQbar(SR(f).diff(v).subs(at)) for v in x] for f in field])
-    G = matrix(QQbar, [[QQbar(SR(C).diff(v).subs(at)) for v in x] for C in casimirs])
-    if G.rank() < len(casimirs):
-        return 'undecided'      # a singular point of the leaf
-    # the field maps into the tangent space of the leaf: the k transversal
-    # roots of its linearization are zeros
-    z = PolynomialRing(QQbar, 'z').gen()
-    leaf, rest = A.charpoly('z').quo_rem(z ** len(casimirs))
-    return spectrum_verdict(leaf) if rest == 0 else 'undecided'
-
-
 def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
     r"""
     The relative equilibria on one leaf, at numerical values of the
@@ -518,8 +503,8 @@ def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
     # (the ends of a family's branches are not listed as points: the
     # solver drops a point only where a listed branch contains it exactly)
     families = sorted(d for _, _, d in _real_families(found, sols.multipliers()))
-    verdicts = [_leaf_verdict(H, casimirs, poisson_matrix, x, field,
-                              {v: SR(p.value(v)) for v in x}) for p in points]
+    verdicts = [relative_equilibrium_verdict(H, casimirs, poisson_matrix, x,
+                                             [p.value(v) for v in x]) for p in points]
     return list(zip(points, verdicts)), families
 
 
