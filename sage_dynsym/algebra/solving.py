@@ -460,8 +460,12 @@ class AlgebraicSolution(SageObject):
             (False, [x^5 - x - 1])
         """
         subs = {k: v for k, v in self._ring_values.items()}
-        relations = [r if r.parent() is SR else normalize(self._T.symbolic(r, subs))
-                     for r in self._relations]
+        # a relation in none of the unknowns given explicitly is already in
+        # the normal form (normalizing it again parses it again: over a
+        # minute for a family of a generic Kirchhoff Hamiltonian)
+        relations = [r if r.parent() is SR else
+                     self._T.symbolic(r) if all(str(v) not in subs for v in r.variables())
+                     else normalize(self._T.symbolic(r, subs)) for r in self._relations]
         # a relation that the explicit values satisfy identically says nothing
         return [r for r in relations if not r.is_zero()]
 
