@@ -59,9 +59,11 @@ from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 
 from .forked import forked
+from .term_orders import restricted_order
 
 __all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
            'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
+           'in_prime_by_specialization',
            'minimal_primes', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
 
 #: Attempts at a separating linear form before giving up on the shortcut.
@@ -207,10 +209,13 @@ def positive_dimensional_primes(J, budget=None):
     back = [x - value for x, value in substitutions]
     if not used:
         return [P.ideal(back)] if all(g == 0 for g in gens) else []
-    # a block order does not fit fewer variables
-    order = 'degrevlex' if P.term_order().is_block_order() else P.term_order()
-    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used), order=order)
-    Js = S.ideal([S(g) for g in gens])
+    positions = [P.gens().index(v) for v in used]
+    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used),
+                       order=restricted_order(P.term_order(), positions))
+    # by exponents: a conversion by names looks for a coercion that a
+    # matrix order of the larger ring does not give
+    Js = S.ideal([S({tuple(e[k] for k in positions): c for e, c in g.dict().items()})
+                  for g in gens])
     primes = None
     if P.base_ring() is not QQ and prime_by_specialization(Js):
         _log("prime at random values of the parameters: taken as prime")
@@ -368,6 +373,57 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
                 any(Js.reduce(g) != 0 for g in primes[0].gens()):
             return False
     return True
+
+
+def in_prime_by_specialization(Q, f, attempts=SPECIALIZATIONS):
+    r"""
+    Whether the polynomial ``f`` lies in the prime ``Q`` of a polynomial
+    ring over a field of rational functions in parameters, decided at
+    random rational values of the parameters: true if at each of
+    ``attempts`` random values ``f`` lies in the ideal of the generators of
+    ``Q`` specialized there.
+
+    If `f = \sum h_k g_k` over the field, the same holds at every value
+    where no denominator of the `h_k` vanishes; if `f \notin Q`, then
+    `Q + (f)` has a smaller dimension, and so have its specializations at
+    values outside a proper algebraic subset: the random values of
+    :func:`prime_by_specialization`, with the same risk (a thin set). A
+    normal form over the field of many parameters can take minutes where
+    the specialized ones take milliseconds (the family of a generic
+    Kirchhoff Hamiltonian). Values where a coefficient has a pole are
+    drawn again.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import in_prime_by_specialization
+        sage: K = Frac(QQ['a']); a = K.gen()
+        sage: R.<x, y> = PolynomialRing(K)
+        sage: Q = R.ideal([x^2 - a*y])
+        sage: in_prime_by_specialization(Q, (x^2 - a*y)*(x + 1/(a - 2)))
+        True
+        sage: in_prime_by_specialization(Q, x*y)
+        False
+    """
+    P = Q.ring()
+    base = P.base_ring().ring()
+    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+
+    def at(g, values):
+        return Pq({e: _specialize(c, values) for e, c in g.dict().items()})
+
+    done = 0
+    for _ in range(10 * attempts):
+        values = [QQ(v) for v in sample(range(2, 1000), base.ngens())]
+        try:
+            J, g = Pq.ideal([at(h, values) for h in Q.gens()]), at(P(f), values)
+        except ZeroDivisionError:
+            continue
+        if J.reduce(g) != 0:
+            return False
+        done += 1
+        if done == attempts:
+            return True
+    raise ValueError("no values of the parameters where the coefficients are defined")
 
 
 def _specialize(c, values):
