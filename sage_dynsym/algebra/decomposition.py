@@ -53,17 +53,18 @@ REFERENCES:
 from sage.libs.singular.function import singular_function, lib as singular_lib
 from sage.matrix.constructor import matrix
 from sage.modules.free_module_element import vector
+from sage.structure.sequence import Sequence
 from sage.misc.prandom import randint, sample
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 
 from .forked import forked
-from .term_orders import restricted_order
+from .term_orders import restricted_order, reverse_block
 
 __all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
            'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
-           'in_prime_by_specialization',
+           'in_prime_by_specialization', 'homogeneous_parts', 'with_basis',
            'minimal_primes', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
 
 #: Attempts at a separating linear form before giving up on the shortcut.
@@ -118,12 +119,15 @@ def minimal_primes(I, shapes=False, split_points=True):
     if all(g == 0 for g in I.gens()):
         found = [(P.ideal([P(0)]), None)]
         return found if shapes else [Q for Q, _ in found]
-    facstd = singular_function('facstd')
-    try:
-        parts = [P.ideal(list(J)) for J in facstd(I)]
-    except RuntimeError:
-        parts = [I]
-    _log(f"factorizing Groebner basis: {len(parts)} parts")
+    parts = homogeneous_parts(I) if P.base_ring() is not QQ else None
+    if parts is not None:
+        _log(f"split by saturations (homogeneous ideal): {len(parts)} parts")
+    else:
+        try:
+            parts = [P.ideal(list(J)) for J in singular_function('facstd')(I)]
+        except RuntimeError:
+            parts = [I]
+        _log(f"factorizing Groebner basis: {len(parts)} parts")
     points, varieties = [], []
     for J in parts:
         if J.is_one():
@@ -138,7 +142,7 @@ def minimal_primes(I, shapes=False, split_points=True):
             # (few, of low degree) suit the characteristic sets far better
             # than the Groebner basis facstd returns
             for Q in positive_dimensional_primes(I if len(parts) == 1 else J):
-                Q = P.ideal(Q.groebner_basis())
+                Q = with_basis(P, Q.groebner_basis())
                 target = points if Q.dimension() == 0 else varieties
                 if all(not _same(Q, R) for R, _ in target):
                     target.append((Q, None))
@@ -152,6 +156,70 @@ def minimal_primes(I, shapes=False, split_points=True):
               if not any(_vanishes_on(R, Q, sh) for R, _ in varieties)]
     result = varieties + points
     return result if shapes else [Q for Q, _ in result]
+
+
+def homogeneous_parts(I):
+    r"""
+    Ideals whose zero sets make up that of ``I``, by saturation, when
+    ``I`` is homogeneous in the variables of the first block of its
+    ring's order and that block is ordered by degree reverse
+    lexicographically (:func:`~sage_dynsym.algebra.term_orders.reverse_block`);
+    else ``None``.
+
+    With `x` the last variable of the block, `V(I) = V(I : x^\infty) \cup
+    V(I + (x))`. By Bayer's criterion the saturation costs nothing once a
+    Gröbner basis is known: every element of the reduced basis is
+    homogeneous, its leading monomial has the least power of `x` among
+    its terms, and the elements divided by their largest power of `x`
+    are a basis of `I : x^\infty`. Then `I + (x)` is split by the next
+    variable, up to the first. Over a field of many parameters this
+    replaces the factorizing Gröbner basis, whose factorizations take
+    minutes there: the Lagrange system of a generic Kirchhoff Hamiltonian
+    (homogeneous in the unknowns, the multipliers of degree 0) splits in
+    about a second.
+
+    The parts are not prime and may contain each other; the caller
+    decomposes them and keeps the minimal primes.
+
+    EXAMPLES: `x y l = 0, x^2 = l y^2`, homogeneous in `x, y`: where
+    `y \ne 0`, `x = l = 0`; where `y = 0`, `x = 0`::
+
+        sage: from sage_dynsym.algebra.decomposition import homogeneous_parts
+        sage: R.<x, y, l> = PolynomialRing(QQ, order=TermOrder('degrevlex', 2) + TermOrder('degrevlex', 1))
+        sage: [J.radical().gens() for J in homogeneous_parts(R.ideal([x*y*l, x^2 - l*y^2]))]
+        [[l, x], [y, x]]
+        sage: homogeneous_parts(R.ideal([x - 1])) is None
+        True
+
+    REFERENCES:
+
+    - [BS1987]_ D. Bayer, M. Stillman, *A criterion for detecting
+      m-regularity*, Invent. Math. 87 (1987), 1-11.
+    - [Eis1995]_ D. Eisenbud, *Commutative Algebra with a View Toward
+      Algebraic Geometry*, Springer 1995, Proposition 15.12.
+    """
+    P = I.ring()
+    block = reverse_block(P.term_order(), P.ngens())
+    if block is None:
+        return None
+    variables = [P.gen(k) for k in block]
+
+    def homogeneous(g):
+        return len({sum(m.degree(v) for v in variables) for m in g.monomials()}) <= 1
+
+    if not all(homogeneous(g) for g in I.gens()):
+        return None
+    parts, J = [], I
+    for x in variables:
+        G = J.groebner_basis()
+        # a basis of the saturation; interreduced, the reduced one
+        saturated = P.ideal([g // x ** g.lm().degree(x) for g in G]).interreduced_basis()
+        if not any(g.is_constant() for g in saturated):
+            parts.append(with_basis(P, saturated))
+        J = P.ideal(list(G) + [x])
+        if J.is_one():
+            return parts
+    return parts + [J]
 
 
 def positive_dimensional_primes(J, budget=None):
@@ -287,7 +355,10 @@ def linear_substitutions(gens, variables=None):
             break
         g, x, value = found
         substitutions.append((x, value))
-        gens = [h for h in (h.subs({x: value}) for h in gens if h is not g) if h != 0]
+        # only where x occurs: a substitution rewrites every coefficient,
+        # minutes for the large ones over a field of many parameters
+        gens = [h for h in (h.subs({x: value}) if h.degree(x) else h
+                            for h in gens if h is not g) if h != 0]
     # a value may hold unknowns eliminated after it: substitute theirs
     for k in reversed(range(len(substitutions))):
         x, value = substitutions[k]
@@ -439,7 +510,31 @@ def _contains(Q, R):
 
 
 def _same(Q, R):
-    return all(Q.reduce(g) == 0 for g in R.gens()) and all(R.reduce(g) == 0 for g in Q.gens())
+    # equal reduced Groebner bases: no normal form over the field, where
+    # one can take minutes (a square of a variable against a family of a
+    # generic Kirchhoff Hamiltonian: over 400 s)
+    def monic(basis):
+        return {g / g.lc() for g in basis}
+    return monic(Q.groebner_basis()) == monic(R.groebner_basis())
+
+
+def with_basis(P, basis):
+    r"""The ideal of ``P`` generated by ``basis``, known to be its reduced
+    Gröbner basis (in the order of ``P``): its dimension, normal forms and
+    comparisons use it without computing it again, which over a field of
+    many parameters takes seconds even for a basis.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import with_basis
+        sage: R.<x, y> = QQ[]
+        sage: J = with_basis(R, R.ideal([x^2 - y, y^2 - x]).groebner_basis())
+        sage: J.dimension(), J.reduce(x^3)
+        (0, x*y)
+    """
+    J = P.ideal(list(basis))
+    J.groebner_basis.set_cache(Sequence(list(basis), P, check=False, immutable=True))
+    return J
 
 
 def _on_shape(f, sh):

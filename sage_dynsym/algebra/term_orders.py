@@ -46,7 +46,7 @@ from sage.rings.polynomial.term_order import TermOrder
 from .forked import forked
 
 __all__ = ['ORDER_TRIAL_SECONDS', 'ORDER_ROUNDS', 'block_order', 'restricted_order',
-           'fastest_order']
+           'reverse_block', 'fastest_order']
 
 #: Seconds each candidate order gets in the first round of
 #: :func:`fastest_order`; every round gives each four times more.
@@ -116,6 +116,53 @@ def restricted_order(order, positions):
     if order.is_block_order():
         return TermOrder('degrevlex', len(positions))
     return order
+
+
+def reverse_block(order, n):
+    r"""
+    The variables of the first block of ``order`` (on ``n`` variables) in
+    which it is a degree reverse lexicographic order, from the last (the
+    smallest) to the first, or ``None``: all of them for ``degrevlex``, the
+    first block of a block order if it is ``degrevlex``; for a matrix
+    order, the variables of its first row if that row is 1 on
+    them and 0 elsewhere and the next rows are minus the unit vectors of
+    all of them but one (as :func:`block_order` writes it).
+
+    On a polynomial homogeneous in these variables (the others of degree
+    0) such an order takes the leading monomial among those with the
+    least power of the last variable, which is what Bayer's criterion for
+    saturation needs (:func:`~sage_dynsym.algebra.decomposition.homogeneous_parts`).
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.term_orders import block_order, reverse_block
+        sage: reverse_block(block_order([[2, 0], [1]], 3), 3)
+        [0, 2]
+        sage: reverse_block(TermOrder('degrevlex'), 3)
+        [2, 1, 0]
+        sage: reverse_block(TermOrder('degrevlex', 2) + TermOrder('lex', 1), 3)
+        [1, 0]
+        sage: reverse_block(TermOrder('lex'), 3) is None
+        True
+    """
+    if order.name() == 'degrevlex':
+        return list(reversed(range(n)))
+    if order.is_block_order():
+        first = order.blocks()[0]
+        return list(reversed(range(len(first)))) if first.name() == 'degrevlex' else None
+    if order.name() != 'matrix':
+        return None
+    rows = order.matrix().rows()
+    block = [k for k in range(n) if rows[0][k]]
+    if any(rows[0][k] != 1 for k in block):
+        return None
+    last = []
+    for row in rows[1:len(block)]:
+        units = [k for k in block if row[k] == -1]
+        if len(units) != 1 or any(row[k] for k in range(n) if k != units[0]):
+            return None
+        last.append(units[0])
+    return last + [k for k in block if k not in last]
 
 
 def fastest_order(ideal, candidates):
