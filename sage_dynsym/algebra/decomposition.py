@@ -287,7 +287,9 @@ def positive_dimensional_primes(J, budget=None):
     primes = None
     if P.base_ring() is not QQ and prime_by_specialization(Js):
         _log("prime at random values of the parameters: taken as prime")
-        primes = [Js]
+        # J itself (the substitutions keep the ideal), with the basis it
+        # may know: recomputing one over the field can take half a minute
+        return [J]
     if primes is None:
         primes = _gtz_or_characteristic_sets(Js, GTZ_BUDGET if budget is None else budget)
     return [P.ideal([P(g) for g in Q.gens()] + back) for Q in primes]
@@ -368,9 +370,12 @@ def linear_substitutions(gens, variables=None):
 
 
 def _linear_generator(gens, variables):
-    # the fewest terms first: the substitution that swells least
+    # the fewest terms first: the substitution that swells least; in a
+    # generator's own leading variable first: in a reduced Groebner basis
+    # it occurs in no other generator, so nothing is substituted
     for g in sorted(gens, key=lambda g: len(g.monomials())):
-        for x in g.variables():
+        lead = g.lm()
+        for x in sorted(g.variables(), key=lambda v: v != lead):
             if (variables is None or x in variables) and g.degree(x) == 1:
                 c = g.coefficient({x: 1})
                 rest = g - c * x

@@ -82,6 +82,7 @@ TESTS::
     [{x: -sqrt(2)}, {x: sqrt(2)}]
 """
 import operator
+from itertools import combinations
 
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
@@ -1071,17 +1072,25 @@ def _excluded_parts(T, known, solutions, counted, positive):
         [{x: sqrt(a), y: sqrt(a), z: 1/sqrt(a)}, {x: -sqrt(a), y: -sqrt(a), z: -1/sqrt(a)}]
     """
     known, todo, found, done = list(known), list(solutions), [], set()
+    # the primes each part contains because it was cut out of them: no
+    # normal form of their (possibly large) generators is needed for these
+    inside = {}
     while todo:
         s = todo.pop()
         P = s._prime
         for d in _excluded_by(T, s):
-            if (id(P), d) in done or P.reduce(d) == 0:
+            # P is prime: d lies in it if one of its factors does (the
+            # factors are cheap to reduce where a power of one took minutes)
+            if (id(P), d) in done or any(P.reduce(f) == 0 for f, _ in d.factor()):
                 continue
             done.add((id(P), d))
             J = P.ring().ideal(list(P.gens()) + [d])
+            above = inside.get(id(P), set()) | {id(P)}
             for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
-                if any(_contains(Q, K) and not _contains(P, K) for K in known):
+                if any(id(K) not in above and not _contains(P, K) and _contains(Q, K)
+                       for K in known):
                     continue
+                inside[id(Q)] = above
                 known.append(Q)
                 new = _solve_component(T, Q, sh, counted, positive)
                 found += new
@@ -1125,20 +1134,21 @@ def _free_unknowns(T, prime, counted):
     among the counted unknowns first (so their number is the dimension of
     the projection to them).
 
-    The strongly independent sets of the prime's standard basis in its own
-    ring (no lead monomial in their variables: Singular's ``indepSet``)
-    are free sets, read off the basis at once. The first of full size in
-    the order of preference is taken if all its unknowns are counted:
-    then no set has more counted unknowns. Otherwise the unknowns are
-    tried one by one, each by the dimension of an elimination ideal, which
-    over a field of many parameters can take minutes where the basis is
-    at hand."""
+    The unknowns are tried one by one, each by the dimension of an
+    elimination ideal. In a ring whose order was chosen by trying
+    (:func:`_choose_order`), where these eliminations take minutes over a
+    field of many parameters, the strongly independent sets of the
+    prime's basis (no leading monomial in their variables: Singular's
+    ``indepSet``) are read off the basis at hand instead: the first of
+    full size in the order of preference is taken if all its unknowns are
+    counted (no set has more counted unknowns then)."""
     n = len(T.unknowns())
     total = prime.dimension()
     order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
-    free = _strongly_independent_unknowns(T, prime, total, order)
-    if free is not None and all(i in counted for i in free):
-        return free
+    if prime.ring().term_order() != TermOrder('degrevlex', prime.ring().ngens()):
+        free = _strongly_independent_unknowns(T, prime, total, order)
+        if free is not None and all(i in counted for i in free):
+            return free
     free, keep = [], []
     for i in order:
         if len(free) == total:
@@ -1785,11 +1795,12 @@ def _family_from_equations(T, prime, upper, middle, positive):
     with the equations themselves as the linear system, `\lambda = N/D`
     with `D` not vanishing on the component. Where `D \ne 0` the
     component is the graph of these values over the set where the prime's
-    generators with `\lambda = N/D` put in vanish: their numerators are the
-    relations, with no multiplier and no Gröbner basis with the
-    multipliers first (the slow one for the systems solved with their
-    multipliers last). Bound counted unknowns that a relation gives
-    linearly in the free ones get their values.
+    generators with `\lambda = N/D` put in vanish: its basis (in the order
+    with the multipliers last) is the relations, the multipliers in them
+    standing for their values -- no Gröbner basis with the multipliers
+    first (the slow one for these systems), and no substitution into its
+    large elements. Bound counted unknowns that a relation free of
+    multipliers gives linearly in the free ones get their values.
     """
     P = prime.ring()
     # membership in the prime at random values of the parameters: a normal
@@ -1803,15 +1814,11 @@ def _family_from_equations(T, prime, upper, middle, positive):
         ring_values[name] = normalize(T.symbolic(value))
         conditions = conjunction(conditions, nonzero_conditions(
             T.symbolic(value.denominator()), positive)) or []
-    at = _generators_at(T, P, values)
-    relations = []
-    for g in prime.groebner_basis():
-        if any(g.degree(v) for v in upper):
-            g = T.to_ring(T.flat_ring()(_evaluate_in(T, g, at).numerator()))
-        if g != 0 and g not in relations:
-            relations.append(g)
-    relations, found = _bound_values(T, relations, middle, ring_values, positive)
-    return ring_values, relations, conjunction(conditions, found) or []
+    basis = list(prime.groebner_basis())
+    with_multipliers = [g for g in basis if any(g.degree(v) for v in upper)]
+    relations, found = _bound_values(T, [g for g in basis if g not in with_multipliers],
+                                     middle, ring_values, positive)
+    return ring_values, with_multipliers + relations, conjunction(conditions, found) or []
 
 
 def _bound_values(T, relations, middle, ring_values, positive):
@@ -1911,9 +1918,16 @@ def _multiplier_values(T, P, prime, elements, multipliers, member=None):
     if A.rank() < len(multipliers):
         return None
     # independent rows only: the others agree with them on the component
-    # (its relations), not over the whole function field
-    pivots = list(A.pivot_rows())
-    x = A.matrix_from_rows(pivots).solve_right(
+    # (its relations), not over the whole function field; the first rows
+    # whose minor does not vanish on the component (on a component inside
+    # the zero set of the first independent ones, others give the values)
+    for pivots in combinations(range(A.nrows()), len(multipliers)):
+        minor = A.matrix_from_rows(list(pivots)).det()
+        if minor != 0 and not member(T.to_ring(T.flat_ring()(minor.numerator()))):
+            break
+    else:
+        return None
+    x = A.matrix_from_rows(list(pivots)).solve_right(
         matrix(F, [[rhs[k]] for k in pivots])).column(0)
     result = {}
     for v, value in zip(multipliers, x):
