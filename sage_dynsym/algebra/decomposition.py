@@ -193,9 +193,9 @@ def homogeneous_parts(I):
 
     REFERENCES:
 
-    - [BS1987]_ D. Bayer, M. Stillman, *A criterion for detecting
+    - D. Bayer, M. Stillman, *A criterion for detecting
       m-regularity*, Invent. Math. 87 (1987), 1-11.
-    - [Eis1995]_ D. Eisenbud, *Commutative Algebra with a View Toward
+    - D. Eisenbud, *Commutative Algebra with a View Toward
       Algebraic Geometry*, Springer 1995, Proposition 15.12.
     """
     P = I.ring()

@@ -34,7 +34,7 @@ variable of the ring::
 
 REFERENCES:
 
-- [GP2008]_ G.-M. Greuel, G. Pfister, *A Singular Introduction to
+- G.-M. Greuel, G. Pfister, *A Singular Introduction to
   Commutative Algebra*, 2nd ed., Springer 2008, §1.2 (matrix orders,
   block orders) and §1.8.2 (elimination orders).
 """
