@@ -322,7 +322,7 @@ class Translation:
             sage: T.use_order(TermOrder('lex')); T.ring().term_order()
             Lexicographic term order
             sage: T.equations()
-            [x1^2 + x0 - 1]
+            [x0 + x1^2 - 1]
         """
         self._ring = self._ring.change_ring(order=order)
         self._equations = [self._ring(g) for g in self._equations]
