@@ -31,41 +31,43 @@ that of this process and its children. With ``-v`` the solver's
 progress (Sage's ``verbose``: translation, factorizing Groebner basis,
 components) is printed.
 
-Target (issue 33): each under a minute. Measured 2026-12-05 on 2 cores
-loaded by other jobs (wall / CPU of this process and its children):
-Clebsch 1.8 / 1.1 s, B diagonal 6.2 / 4.1 s, B symmetric with values
-13.0 / 8.9 s, Brun on M.gamma = 0 6.7 / 4.4 s, Brun on M.gamma = c
-62 / 44 s (45 to 53 s wall in runs without the budget's fork; 20 to 36 s
-of it one Groebner basis, in the block order of the 1-parameter family,
-over the field of the 5 parameters, and about 15 s the characteristic
-sets at the random values that decide that its parts are prime). The
-generic case with symbolic parameters is still over the budget. Its first
-Groebner basis (degrevlex over the field of the 12 parameters) takes 1.5 s
-with M first and the multipliers last, over 100 s with p before M (the
-translation's order puts the multipliers first, then p, then M); but then
-its two components (M = p = 0, and the family where p is a kernel vector)
-are split in half a second at rational values and not within minutes over
-the field: saturation by p1 over 300 s, the quotient by p1, minAssChar
-and minAssGTZ each over 200 s, and after M is substituted (it enters
-linearly) one Groebner basis of the 5 remaining unknowns 130 s. Putting
-the unknowns in their own order (M first, multipliers last) for every
-problem made Brun's problem on M.gamma = c take over 300 s.
+Target (issue 33): each under a minute. Measured 2026-12-05 (fifth
+session) on 2 cores lightly loaded (wall = CPU of the solving child):
+Clebsch 0.6 s, B diagonal 2.6 s, B symmetric with values 11.6 s, Brun on
+M.gamma = 0 2.8 s, Brun on M.gamma = c 30.3 s, and the generic case with
+its 12 coefficients symbolic 58.9 s (it did not finish in 600 s before).
 
-Measured 2026-12-05 (fourth session) on the generic case: in the block
-order (M, p | lambda), degrevlex in each block, the Groebner basis of the
-Lagrange system takes 0.04 s with lambda1 (the multiplier of p.p) before
-lambda2 and 21 s with them swapped (plain degrevlex: 7 to over 15 s in
-every order tried). The system is homogeneous in (M, p) (the multipliers
-of degree 0), so its saturation by p1 is that basis with each element
-divided by its largest power of p1 (Bayer's criterion, p1 last in its
-block): the two components (M = p = 0, and the family) in 0.45 s. What
-then stalls is the rest of the solver on the family: its dimension is
-computed again in the translation's degrevlex order (over 10 minutes,
-4.7 GB). A route needs the whole component pipeline (dimension, free
-unknowns, block basis of the multipliers) to work in an order chosen by
-trying, not only the decomposition. In Brun's problem on M.gamma = c the
-block basis of the family (24 s in the solver) did not finish in 30 s in
-any of 18 orders of its blocks tried from the prime's own generators.
+What the generic case needed, in the order the solver meets it:
+
+- the term order chosen by trying (``algebra.term_orders.fastest_order``):
+  its Groebner basis takes a fraction of a second in the block order of
+  the unknowns before the multipliers, each block in the order given, and
+  7 to over 15 s in ``degrevlex`` in every order of the variables tried
+  (21 s with the two multipliers swapped);
+- the decomposition by saturations (``decomposition.homogeneous_parts``):
+  the system is homogeneous in (M, p), so by Bayer's criterion each
+  saturation by the last variable of that block is read off the basis,
+  where the factorizing Groebner basis took 20 to 45 s over the field;
+- the free unknowns read off the prime's basis (strongly independent
+  sets) instead of elimination ideals (over 10 minutes);
+- the multipliers of the family from the stationarity equations (Cramer,
+  with the membership in the prime decided at random values of the
+  parameters) instead of a basis with the multipliers first (did not
+  finish); a normal form of the square of a variable against the family's
+  basis took 445 s, its factors are reduced instead;
+- primes compared by their reduced bases, ideals that keep the basis
+  they were built from, and the parts where a multiplier's denominator
+  vanishes never compared with the primes they were cut out of.
+
+The result: the rest point M = p = 0, the family of dimension 2 (p an
+eigenvector of C - (B + lambda2) A^-1 (B + lambda2), M = -A^-1 (B +
+lambda2) p) where p1 != 0, and its part p1 = 0 (dimension 1).
+
+Brun's problem on M.gamma = c spends most of its time on the part where
+the multipliers' denominator |M|^2 - c^2 vanishes (its decomposition at
+random values about 15 s, its block basis about 17 s); on the levels that
+denominator is |M x gamma|^2, whose real zeros are the six rotations about
+the axes already listed.
 
 Usage: python bench/bench_stationary_kirchhoff.py [--budget 120] [-v] [--only NAME]
 """

@@ -190,3 +190,94 @@ def test_brun_stationary_set_on_a_nonzero_level():
                 assert SR(e).subs(mult).subs(free).subs(point).simplify_full() == 0
     assert sum(1 for s in symbolic if s.dimension() > 0) >= \
         sum(1 for s in direct if s.dimension() > 0)
+
+
+# The generic Hamiltonian with its 12 coefficients symbolic: the stationary
+# set is solved over their field (in the block order of the unknowns and
+# the multipliers, which the solver finds by trying), and checked at
+# rational values against the eigenvector construction above: every
+# constructed point (M, p, l1, l2) lies on the component of dimension 2
+# (its prime's generators vanish there) and has its multipliers.
+
+SYMBOLIC_A = list(var('a1 a2 a3'))
+SYMBOLIC_C = list(var('c1 c2 c3'))
+SYMBOLIC_B = matrix(SR, 3, 3, lambda i, j: SR.var(f"b{min(i, j) + 1}{max(i, j) + 1}"))
+
+
+def symbolic_kirchhoff():
+    Mv, pv = vector(SR, M), vector(SR, P)
+    H = (sum(SYMBOLIC_A[i] * M[i]**2 + SYMBOLIC_C[i] * P[i]**2 for i in range(3)) / 2
+         + Mv * SYMBOLIC_B * pv)
+    w = vector(SR, [H.diff(x) for x in M])
+    u = vector(SR, [H.diff(x) for x in P])
+    X = list(Mv.cross_product(w) + pv.cross_product(u)) + list(pv.cross_product(w))
+    return [H, pv * pv, Mv * pv], X
+
+
+def vanishes_at(poly, T, at, params):
+    """Whether a polynomial of the solver's ring vanishes at the point ``at``
+    (values of its unknowns by name) and the parameter values ``params``,
+    relative to the size of its terms (200-bit arithmetic)."""
+    from sage.all import RealField
+    R = RealField(200)
+    ring_values = {}
+    for u in T.unknowns():
+        (g,) = T.generators_of(u)
+        ring_values[str(g)] = R(at[str(u)])
+    pvals = [R(params[str(a)]) for a in T.parameters()]
+    names = poly.parent().variable_names()
+    total, size = R(0), R(0)
+    for exps, c in poly.dict().items():
+        term = R(c.numerator()(*pvals)) / R(c.denominator()(*pvals))
+        for name, e in zip(names, exps):
+            term *= ring_values[name] ** e
+        total += term
+        size += abs(term)
+    return abs(total) <= 1e-8 * max(size, 1)
+
+
+@pytest.mark.slow
+def test_generic_kirchhoff_symbolic_parameters():
+    integrals, X = symbolic_kirchhoff()
+    sols = stationary_solutions(integrals, M + P, equations=X)
+    family = [s for s in sols if s.dimension() == 2]
+    assert len(family) == 1
+    solution = family[0].solution()
+    T, prime = solution.translation(), solution.ideal()
+    # the rest point M = p = 0
+    zero = {x: 0 for x in M + P}
+    assert any(s.is_explicit() and all(SR(v).subs(zero) == 0 for v in s.point().values())
+               for s in sols)
+    rng = np.random.default_rng(7)
+    for _ in range(2):
+        a = rng.integers(1, 9, 3).astype(float)
+        b = rng.integers(-3, 4, (3, 3)).astype(float)
+        b = (b + b.T) / 2
+        c = rng.integers(1, 19, 3).astype(float)
+        params = {f"a{i + 1}": a[i] for i in range(3)}
+        params.update({f"c{i + 1}": c[i] for i in range(3)})
+        params.update({f"b{i + 1}{j + 1}": b[i, j] for i in range(3) for j in range(i, 3)})
+        Ainv = np.diag(1 / a)
+        checked = 0
+        for l2 in (-1.5, 0.3, 2.0):
+            Bl = b + l2 * np.eye(3)
+            vals, vecs = np.linalg.eigh(np.diag(c) - Bl @ Ainv @ Bl)
+            for k in range(3):
+                p = vecs[:, k]
+                if abs(p[0]) < 1e-3:
+                    continue    # the family's multipliers divide by p1
+                m = -Ainv @ Bl @ p
+                at = dict(zip(['M1', 'M2', 'M3', 'p1', 'p2', 'p3'], np.concatenate([m, p])))
+                at.update(lambda1=-vals[k] / 2, lambda2=l2)
+                assert all(vanishes_at(g, T, at, params) for g in prime.gens())
+                # the check tells a point off the family (p moved along it)
+                assert not all(vanishes_at(g, T, dict(at, p2=at['p2'] + 1e-3), params)
+                               for g in prime.gens())
+                subs = {SR.var(k): v for k, v in list(params.items()) + list(at.items())
+                        if not k.startswith('lambda')}
+                mult = {str(k): float(SR(v).subs(subs)) for k, v in
+                        family[0].multipliers().items()}
+                assert mult['lambda1'] == pytest.approx(-vals[k] / 2, rel=1e-6, abs=1e-6)
+                assert mult['lambda2'] == pytest.approx(l2, rel=1e-6, abs=1e-6)
+                checked += 1
+        assert checked >= 6

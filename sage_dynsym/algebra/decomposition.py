@@ -60,10 +60,12 @@ from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 
 from .forked import forked
+from .term_orders import restricted_order, reverse_block
 
 __all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
            'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
-           'minimal_primes', 'with_basis', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
+           'in_prime_by_specialization', 'homogeneous_parts', 'with_basis',
+           'minimal_primes', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
 
 #: Attempts at a separating linear form before giving up on the shortcut.
 SEPARATING_ATTEMPTS = 8
@@ -117,12 +119,15 @@ def minimal_primes(I, shapes=False, split_points=True):
     if all(g == 0 for g in I.gens()):
         found = [(P.ideal([P(0)]), None)]
         return found if shapes else [Q for Q, _ in found]
-    facstd = singular_function('facstd')
-    try:
-        parts = [P.ideal(list(J)) for J in facstd(I)]
-    except RuntimeError:
-        parts = [I]
-    _log(f"factorizing Groebner basis: {len(parts)} parts")
+    parts = homogeneous_parts(I) if P.base_ring() is not QQ else None
+    if parts is not None:
+        _log(f"split by saturations (homogeneous ideal): {len(parts)} parts")
+    else:
+        try:
+            parts = [P.ideal(list(J)) for J in singular_function('facstd')(I)]
+        except RuntimeError:
+            parts = [I]
+        _log(f"factorizing Groebner basis: {len(parts)} parts")
     points, varieties = [], []
     for J in parts:
         if J.is_one():
@@ -151,6 +156,70 @@ def minimal_primes(I, shapes=False, split_points=True):
               if not any(_vanishes_on(R, Q, sh) for R, _ in varieties)]
     result = varieties + points
     return result if shapes else [Q for Q, _ in result]
+
+
+def homogeneous_parts(I):
+    r"""
+    Ideals whose zero sets make up that of ``I``, by saturation, when
+    ``I`` is homogeneous in the variables of the first block of its
+    ring's order and that block is ordered by degree reverse
+    lexicographically (:func:`~sage_dynsym.algebra.term_orders.reverse_block`);
+    else ``None``.
+
+    With `x` the last variable of the block, `V(I) = V(I : x^\infty) \cup
+    V(I + (x))`. By Bayer's criterion the saturation costs nothing once a
+    Gröbner basis is known: every element of the reduced basis is
+    homogeneous, its leading monomial has the least power of `x` among
+    its terms, and the elements divided by their largest power of `x`
+    are a basis of `I : x^\infty`. Then `I + (x)` is split by the next
+    variable, up to the first. Over a field of many parameters this
+    replaces the factorizing Gröbner basis, whose factorizations take
+    minutes there: the Lagrange system of a generic Kirchhoff Hamiltonian
+    (homogeneous in the unknowns, the multipliers of degree 0) splits in
+    about a second.
+
+    The parts are not prime and may contain each other; the caller
+    decomposes them and keeps the minimal primes.
+
+    EXAMPLES: `x y l = 0, x^2 = l y^2`, homogeneous in `x, y`: where
+    `y \ne 0`, `x = l = 0`; where `y = 0`, `x = 0`::
+
+        sage: from sage_dynsym.algebra.decomposition import homogeneous_parts
+        sage: R.<x, y, l> = PolynomialRing(QQ, order=TermOrder('degrevlex', 2) + TermOrder('degrevlex', 1))
+        sage: [J.radical().gens() for J in homogeneous_parts(R.ideal([x*y*l, x^2 - l*y^2]))]
+        [[l, x], [y, x]]
+        sage: homogeneous_parts(R.ideal([x - 1])) is None
+        True
+
+    REFERENCES:
+
+    - D. Bayer, M. Stillman, *A criterion for detecting
+      m-regularity*, Invent. Math. 87 (1987), 1-11.
+    - D. Eisenbud, *Commutative Algebra with a View Toward
+      Algebraic Geometry*, Springer 1995, Proposition 15.12.
+    """
+    P = I.ring()
+    block = reverse_block(P.term_order(), P.ngens())
+    if block is None:
+        return None
+    variables = [P.gen(k) for k in block]
+
+    def homogeneous(g):
+        return len({sum(m.degree(v) for v in variables) for m in g.monomials()}) <= 1
+
+    if not all(homogeneous(g) for g in I.gens()):
+        return None
+    parts, J = [], I
+    for x in variables:
+        G = J.groebner_basis()
+        # a basis of the saturation; interreduced, the reduced one
+        saturated = P.ideal([g // x ** g.lm().degree(x) for g in G]).interreduced_basis()
+        if not any(g.is_constant() for g in saturated):
+            parts.append(with_basis(P, saturated))
+        J = P.ideal(list(G) + [x])
+        if J.is_one():
+            return parts
+    return parts + [J]
 
 
 def positive_dimensional_primes(J, budget=None):
@@ -208,14 +277,19 @@ def positive_dimensional_primes(J, budget=None):
     back = [x - value for x, value in substitutions]
     if not used:
         return [P.ideal(back)] if all(g == 0 for g in gens) else []
-    # a block order does not fit fewer variables
-    order = 'degrevlex' if P.term_order().is_block_order() else P.term_order()
-    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used), order=order)
-    Js = S.ideal([S(g) for g in gens])
+    positions = [P.gens().index(v) for v in used]
+    S = PolynomialRing(P.base_ring(), [str(v) for v in used], len(used),
+                       order=restricted_order(P.term_order(), positions))
+    # by exponents: a conversion by names looks for a coercion that a
+    # matrix order of the larger ring does not give
+    Js = S.ideal([S({tuple(e[k] for k in positions): c for e, c in g.dict().items()})
+                  for g in gens])
     primes = None
     if P.base_ring() is not QQ and prime_by_specialization(Js):
         _log("prime at random values of the parameters: taken as prime")
-        primes = [Js]
+        # J itself (the substitutions keep the ideal), with the basis it
+        # may know: recomputing one over the field can take half a minute
+        return [J]
     if primes is None:
         primes = _gtz_or_characteristic_sets(Js, GTZ_BUDGET if budget is None else budget)
     return [P.ideal([P(g) for g in Q.gens()] + back) for Q in primes]
@@ -296,9 +370,12 @@ def linear_substitutions(gens, variables=None):
 
 
 def _linear_generator(gens, variables):
-    # the fewest terms first: the substitution that swells least
+    # the fewest terms first: the substitution that swells least; in a
+    # generator's own leading variable first: in a reduced Groebner basis
+    # it occurs in no other generator, so nothing is substituted
     for g in sorted(gens, key=lambda g: len(g.monomials())):
-        for x in g.variables():
+        lead = g.lm()
+        for x in sorted(g.variables(), key=lambda v: v != lead):
             if (variables is None or x in variables) and g.degree(x) == 1:
                 c = g.coefficient({x: 1})
                 rest = g - c * x
@@ -374,6 +451,57 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     return True
 
 
+def in_prime_by_specialization(Q, f, attempts=SPECIALIZATIONS):
+    r"""
+    Whether the polynomial ``f`` lies in the prime ``Q`` of a polynomial
+    ring over a field of rational functions in parameters, decided at
+    random rational values of the parameters: true if at each of
+    ``attempts`` random values ``f`` lies in the ideal of the generators of
+    ``Q`` specialized there.
+
+    If `f = \sum h_k g_k` over the field, the same holds at every value
+    where no denominator of the `h_k` vanishes; if `f \notin Q`, then
+    `Q + (f)` has a smaller dimension, and so have its specializations at
+    values outside a proper algebraic subset: the random values of
+    :func:`prime_by_specialization`, with the same risk (a thin set). A
+    normal form over the field of many parameters can take minutes where
+    the specialized ones take milliseconds (the family of a generic
+    Kirchhoff Hamiltonian). Values where a coefficient has a pole are
+    drawn again.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import in_prime_by_specialization
+        sage: K = Frac(QQ['a']); a = K.gen()
+        sage: R.<x, y> = PolynomialRing(K)
+        sage: Q = R.ideal([x^2 - a*y])
+        sage: in_prime_by_specialization(Q, (x^2 - a*y)*(x + 1/(a - 2)))
+        True
+        sage: in_prime_by_specialization(Q, x*y)
+        False
+    """
+    P = Q.ring()
+    base = P.base_ring().ring()
+    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+
+    def at(g, values):
+        return Pq({e: _specialize(c, values) for e, c in g.dict().items()})
+
+    done = 0
+    for _ in range(10 * attempts):
+        values = [QQ(v) for v in sample(range(2, 1000), base.ngens())]
+        try:
+            J, g = Pq.ideal([at(h, values) for h in Q.gens()]), at(P(f), values)
+        except ZeroDivisionError:
+            continue
+        if J.reduce(g) != 0:
+            return False
+        done += 1
+        if done == attempts:
+            return True
+    raise ValueError("no values of the parameters where the coefficients are defined")
+
+
 def _specialize(c, values):
     den = c.denominator()(values)
     if den == 0:
@@ -412,7 +540,6 @@ def with_basis(P, basis):
     J = P.ideal(list(basis))
     J.groebner_basis.set_cache(Sequence(list(basis), P, check=False, immutable=True))
     return J
-
 
 
 def _on_shape(f, sh):

@@ -82,10 +82,12 @@ TESTS::
     [{x: -sqrt(2)}, {x: sqrt(2)}]
 """
 import operator
+from itertools import combinations
 
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
 from sage.misc.prandom import randint
+from sage.libs.singular.function import singular_function
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.polynomial.term_order import TermOrder
@@ -100,17 +102,19 @@ from ..arguments import expression_list
 from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
-from .decomposition import (minimal_primes, shape, ShapePrime, triangular_sets,
+from .decomposition import (minimal_primes, in_prime_by_specialization, shape, ShapePrime,
+                            triangular_sets,
                             linear_substitutions)
 from .regions import prune_empty
 from .expression_walk import ExpressionWalker
+from .term_orders import block_order, fastest_order
 from .translation import Translation, NotAlgebraic, translate_expressions
 
 __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
            'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'PARAMETRIZATION_VARIABLES',
-           'FAMILY_QE_VARIABLES',
+           'FAMILY_QE_VARIABLES', 'MAX_DECIDED_TERMS',
            'solve_transcendental']
 
 
@@ -757,6 +761,7 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         {[str(u) for u in unknowns].index(str(SR(c))) for c in counted}
     if T.ring() is None:
         raise AnalysisError("no unknowns to solve for", entry="solve_exactly")
+    _choose_order(T, counted_set)
     P = T.ring()
     gens = T.equations()
     I = P.ideal(gens) if gens else P.ideal([P(0)])
@@ -788,6 +793,47 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     solutions = _without_noise(T, solutions, positive)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
+
+
+def _choose_order(T, counted):
+    r"""
+    Solve in the term order where the system's Gröbner basis is found
+    first (:func:`~sage_dynsym.algebra.term_orders.fastest_order`): the
+    translation's ``degrevlex``, or the block order with the counted
+    unknowns before the others (the multipliers), each block in the order
+    the unknowns were given. Only systems with parameters and multipliers
+    are tried: over `\QQ`, or without multipliers, the bases met are fast
+    in ``degrevlex``.
+
+    EXAMPLES: the Lagrange system of a generic Kirchhoff Hamiltonian with
+    12 symbolic coefficients is solved in the block order (its basis takes
+    a fraction of a second there, over 7 seconds in ``degrevlex``)::
+
+        sage: from sage_dynsym.algebra.solving import _choose_order
+        sage: from sage_dynsym.algebra.translation import Translation
+        sage: M, p, l = list(var('M1 M2 M3')), list(var('p1 p2 p3')), list(var('l1 l2'))
+        sage: a, c = list(var('a1 a2 a3')), list(var('c1 c2 c3'))
+        sage: B = matrix(3, 3, lambda i, j: var(f"b{min(i, j) + 1}{max(i, j) + 1}"))
+        sage: Bp, BM = B * vector(p), B * vector(M)
+        sage: eqs = [a[i]*M[i] + Bp[i] + l[1]*p[i] for i in range(3)]
+        sage: eqs += [BM[i] + l[1]*M[i] + c[i]*p[i] + 2*l[0]*p[i] for i in range(3)]
+        sage: T = Translation(eqs, M + p + l)
+        sage: _choose_order(T, set(range(6))); T.ring().term_order().name()
+        'matrix'
+    """
+    n = len(T.unknowns())
+    others = [i for i in range(n) if i not in counted]
+    if T.field() is QQ or not others or len(others) == n or not T.equations():
+        return
+    P = T.ring()
+
+    def positions(unknowns):
+        return [P.gens().index(g) for i in unknowns for g in _unit_generators(T, i)]
+
+    candidate = block_order([positions(sorted(counted)), positions(others)], P.ngens())
+    if fastest_order(P.ideal(T.equations()), [None, candidate]) is candidate:
+        _log("the block order of the unknowns and the multipliers")
+        T.use_order(candidate)
 
 
 def _without_noise(T, solutions, positive):
@@ -1219,19 +1265,27 @@ def _excluded_parts(T, known, solutions, counted, positive):
         [{x: sqrt(a), y: sqrt(a), z: 1/sqrt(a)}, {x: -sqrt(a), y: -sqrt(a), z: -1/sqrt(a)}]
     """
     known, todo, found, done = list(known), list(solutions), [], set()
+    # the primes each part contains because it was cut out of them: no
+    # normal form of their (possibly large) generators is needed for these
+    inside = {}
     while todo:
         s = todo.pop()
         P = s._prime
         for d in _excluded_by(T, s):
-            if (id(P), d) in done or P.reduce(d) == 0:
+            # P is prime: d lies in it if one of its factors does (the
+            # factors are cheap to reduce where a power of one took minutes)
+            if (id(P), d) in done or any(P.reduce(f) == 0 for f, _ in d.factor()):
                 continue
             done.add((id(P), d))
             J = P.ring().ideal(list(P.gens()) + [d])
+            above = inside.get(id(P), set()) | {id(P)}
             for Q, sh in minimal_primes(J, shapes=True, split_points=T.field() is QQ):
-                if any(_contains(Q, K) and not _contains(P, K) for K in known) or \
+                if any(id(K) not in above and not _contains(P, K) and _contains(Q, K)
+                       for K in known) or \
                         any(not isinstance(Q, ShapePrime) and Q.reduce(f) == 0
                             for f in T.denominators()):
                     continue        # on another component, or where the equations are not defined
+                inside[id(Q)] = above
                 known.append(Q)
                 new = _solve_component(T, Q, sh, counted, positive)
                 found += new
@@ -1273,10 +1327,23 @@ def _projection_dimension(prime, keep):
 def _free_unknowns(T, prime, counted):
     r"""A maximal set of unknowns that the component leaves free, chosen
     among the counted unknowns first (so their number is the dimension of
-    the projection to them)."""
+    the projection to them).
+
+    The unknowns are tried one by one, each by the dimension of an
+    elimination ideal. In a ring whose order was chosen by trying
+    (:func:`_choose_order`), where these eliminations take minutes over a
+    field of many parameters, the strongly independent sets of the
+    prime's basis (no leading monomial in their variables: Singular's
+    ``indepSet``) are read off the basis at hand instead: the first of
+    full size in the order of preference is taken if all its unknowns are
+    counted (no set has more counted unknowns then)."""
     n = len(T.unknowns())
     total = prime.dimension()
     order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
+    if prime.ring().term_order() != TermOrder('degrevlex', prime.ring().ngens()):
+        free = _strongly_independent_unknowns(T, prime, total, order)
+        if free is not None and all(i in counted for i in free):
+            return free
     free, keep = [], []
     for i in order:
         if len(free) == total:
@@ -1288,6 +1355,26 @@ def _free_unknowns(T, prime, counted):
     return free
 
 
+def _strongly_independent_unknowns(T, prime, total, order):
+    # the unknowns of each strongly independent set of full size; the first
+    # in the order of preference (``None`` if there is none to read)
+    if total == 0 or isinstance(prime, ShapePrime):
+        return None
+    P = prime.ring()
+    basis = P.ideal(prime.groebner_basis())
+    candidates = []
+    for flags in singular_function('indepSet')(basis, 1, attributes={basis: {'isSB': 1}}):
+        variables = {k for k, flag in enumerate(flags) if flag}
+        unknowns = [i for i in order
+                    if any(P.gens().index(g) in variables for g in _unit_generators(T, i))]
+        if len(variables) == total and len(unknowns) == total:
+            candidates.append(unknowns)
+    if not candidates:
+        return None
+    rank = {i: k for k, i in enumerate(order)}
+    return min(candidates, key=lambda u: sorted(rank[i] for i in u))
+
+
 def _solve_component(T, prime, sh, counted, positive):
     if sh == 'points':      # a zero-dimensional part over a field of parameters
         if prime.vector_space_dimension() > MAX_EXPLICIT_DEGREE:
@@ -1296,7 +1383,8 @@ def _solve_component(T, prime, sh, counted, positive):
     free = [] if sh is not None else _free_unknowns(T, prime, counted)
     if free:
         family = _family(T, prime, free, counted, positive)
-        if family is not None and not family._reality_known:
+        if family is not None and not family._reality_known \
+                and _relation_terms(family) <= MAX_DECIDED_TERMS:
             # where its reality is not known, its branches may say, or a
             # rational parametrization, or quantifier elimination
             found = _branches(T, family, positive)
@@ -1314,6 +1402,28 @@ def _solve_component(T, prime, sh, counted, positive):
     if sh is not None and sh[1].degree() > MAX_EXPLICIT_DEGREE:
         return [_implicit(T, prime, counted, positive)]
     return _parametric_points(T, prime, counted, positive)
+
+
+#: Implicit families whose relations have more terms than this (counting
+#: the terms of their coefficients in the parameters) are returned with
+#: their reality undecided: their branches would be radicals of
+#: expressions of that size, and writing the relations symbolically for
+#: the tries takes minutes (a family of a generic Kirchhoff Hamiltonian:
+#: one relation of about 3000 terms over 12 parameters).
+MAX_DECIDED_TERMS = 1000
+
+
+def _relation_terms(family):
+    r"""The number of terms of the relations of a family, each coefficient
+    counted by the terms of its numerator and denominator."""
+    total = 0
+    for r in family._relations:
+        if r.parent() is SR:
+            continue
+        for c in r.coefficients():
+            total += 1 if c.parent() is QQ else \
+                len(c.numerator().monomials()) + len(c.denominator().monomials())
+    return total
 
 
 def _branches(T, family, positive):
@@ -1798,7 +1908,12 @@ def _family(T, prime, free, counted, positive):
     gives: multipliers as rational functions of the variables where it has
     an equation linear in one multiplier; bound variables as rational
     functions of the free ones where it has an equation linear in them;
-    the remaining equations are the relations of the family."""
+    the remaining equations are the relations of the family.
+
+    A system solved with its multipliers last (:func:`_choose_order`: the
+    basis with the multipliers first is the slow one there) gets its
+    multipliers from its own equations instead
+    (:func:`_family_from_equations`)."""
     P = prime.ring()
     free_gens = [g for i in free for g in _unit_generators(T, i)]
     bound = [g for g in P.gens() if g not in free_gens]
@@ -1807,41 +1922,16 @@ def _family(T, prime, free, counted, positive):
     index = {str(g): i for i in range(len(T.unknowns())) for g in _unit_generators(T, i)}
     upper = [g for g in bound if index[str(g)] not in counted]
     middle = [g for g in bound if index[str(g)] in counted]
-    blocks = [(b, kind) for b, kind in ((upper, 'lex'), (middle, 'degrevlex'),
-                                         (free_gens, 'degrevlex')) if b]
-    order = TermOrder(blocks[0][1], len(blocks[0][0]))
-    for b, kind in blocks[1:]:
-        order = order + TermOrder(kind, len(b))
-    blocks = [b for b, _ in blocks]
-    names = [str(g) for b in blocks for g in b]
-    Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
-    basis = _block_basis(Pb, [Pb(g) for g in prime.gens()], [Pb(str(g)) for g in upper])
-    upper_b = [Pb(str(g)) for g in upper]
-    middle_b = [Pb(str(g)) for g in middle]
-    ring_values, relations, conditions = {}, [], []
-    with_multipliers = [g for g in basis if any(g.degree(v) for v in upper_b)]
-    solved = _multipliers_on_family(T, P, prime, with_multipliers, upper_b)
-    if solved is None:
-        relations += [P(g) for g in with_multipliers]
-    else:
-        for v, (value, denominator) in solved.items():
-            ring_values[v] = value
-            conditions = conjunction(conditions, nonzero_conditions(denominator, positive)) or []
-    for g in basis:
-        if any(g.degree(v) for v in upper_b):
-            continue
-        found = _linear_in(g, [v for v in middle_b if g.degree(v) > 0], middle_b)
-        if found is not None and str(found[0]) not in ring_values:
-            v, a, b = found
-            a_sr, b_sr = T.symbolic(P(a)), T.symbolic(P(b))
-            ring_values[str(v)] = normalize(-b_sr / a_sr)
-            conditions = conjunction(conditions, nonzero_conditions(a_sr, positive)) or []
-        else:
-            relations.append(P(g))
+    found = None
+    if upper and P.term_order() != TermOrder('degrevlex', P.ngens()):
+        found = _family_from_equations(T, prime, upper, middle, positive)
+    if found is None:
+        found = _family_from_basis(T, prime, upper, middle, free_gens, positive)
+    ring_values, relations, conditions = found
     circle = {str(r) for r in T.circle_relations()}
     relations = [r for r in relations if str(r) not in circle]
     real = None
-    if any(all(not r.degree(v) for v in upper_b) for r in map(Pb, relations)):
+    if any(all(not r.degree(v) for v in upper) for r in relations):
         real = _has_smooth_real_point(T, prime, len(free))
         if real is False:
             return None
@@ -1859,6 +1949,88 @@ def _family(T, prime, free, counted, positive):
     return AlgebraicSolution(T, prime, free, counted, values, ring_values,
                              relations, conditions,
                              reality_known=real is not None or not relations)
+
+
+def _family_from_basis(T, prime, upper, middle, free_gens, positive):
+    r"""``(ring_values, relations, conditions)`` of a family from its
+    Gröbner basis in the block order (multipliers ``upper``, lexicographic
+    | bound counted ``middle`` | free), see :func:`_family`."""
+    P = prime.ring()
+    blocks = [(b, kind) for b, kind in ((upper, 'lex'), (middle, 'degrevlex'),
+                                         (free_gens, 'degrevlex')) if b]
+    order = TermOrder(blocks[0][1], len(blocks[0][0]))
+    for b, kind in blocks[1:]:
+        order = order + TermOrder(kind, len(b))
+    names = [str(g) for b, _ in blocks for g in b]
+    Pb = PolynomialRing(P.base_ring(), names, len(names), order=order)
+    basis = _block_basis(Pb, [Pb(g) for g in prime.gens()], [Pb(str(g)) for g in upper])
+    upper_b = [Pb(str(g)) for g in upper]
+    middle_b = [Pb(str(g)) for g in middle]
+    ring_values, relations, conditions = {}, [], []
+    with_multipliers = [g for g in basis if any(g.degree(v) for v in upper_b)]
+    solved = _multipliers_on_family(T, P, prime, with_multipliers, upper_b)
+    if solved is None:
+        relations += [P(g) for g in with_multipliers]
+    else:
+        for v, (value, denominator) in solved.items():
+            ring_values[v] = value
+            conditions = conjunction(conditions, nonzero_conditions(denominator, positive)) or []
+    found = _bound_values(T, [P(g) for g in basis if all(not g.degree(v) for v in upper_b)],
+                          [P(v) for v in middle_b], ring_values, positive)
+    return ring_values, relations + found[0], conjunction(conditions, found[1]) or []
+
+
+def _family_from_equations(T, prime, upper, middle, positive):
+    r"""
+    ``(ring_values, relations, conditions)`` of a family whose multipliers
+    ``upper`` the equations of the system determine on it, or ``None``.
+
+    The equations are linear in the multipliers (a Lagrange system), so on
+    the component they are the values of :func:`_multipliers_on_family`
+    with the equations themselves as the linear system, `\lambda = N/D`
+    with `D` not vanishing on the component. Where `D \ne 0` the
+    component is the graph of these values over the set where the prime's
+    generators with `\lambda = N/D` put in vanish: its basis (in the order
+    with the multipliers last) is the relations, the multipliers in them
+    standing for their values -- no Gröbner basis with the multipliers
+    first (the slow one for these systems), and no substitution into its
+    large elements. Bound counted unknowns that a relation free of
+    multipliers gives linearly in the free ones get their values.
+    """
+    P = prime.ring()
+    # membership in the prime at random values of the parameters: a normal
+    # form over their field took minutes (generic Kirchhoff)
+    values = _multiplier_values(T, P, prime, T.equations(), upper,
+                                member=lambda f: in_prime_by_specialization(prime, f))
+    if values is None:
+        return None
+    ring_values, conditions = {}, []
+    for name, value in values.items():
+        ring_values[name] = normalize(T.symbolic(value))
+        conditions = conjunction(conditions, nonzero_conditions(
+            T.symbolic(value.denominator()), positive)) or []
+    basis = list(prime.groebner_basis())
+    with_multipliers = [g for g in basis if any(g.degree(v) for v in upper)]
+    relations, found = _bound_values(T, [g for g in basis if g not in with_multipliers],
+                                     middle, ring_values, positive)
+    return ring_values, with_multipliers + relations, conjunction(conditions, found) or []
+
+
+def _bound_values(T, relations, middle, ring_values, positive):
+    r"""The bound counted unknowns (``middle``) that one of ``relations``
+    gives linearly in the others, put in ``ring_values``: returns the
+    relations not used and the conditions (their coefficients nonzero)."""
+    rest, conditions = [], []
+    for g in relations:
+        found = _linear_in(g, [v for v in middle if g.degree(v) > 0], middle)
+        if found is not None and str(found[0]) not in ring_values:
+            v, a, b = found
+            a_sr, b_sr = T.symbolic(a), T.symbolic(b)
+            ring_values[str(v)] = normalize(-b_sr / a_sr)
+            conditions = conjunction(conditions, nonzero_conditions(a_sr, positive)) or []
+        else:
+            rest.append(g)
+    return rest, conditions
 
 
 def _block_basis(Pb, gens, upper):
@@ -1905,8 +2077,24 @@ def _multipliers_on_family(T, P, prime, elements, multipliers):
     denominator)}`` (symbolic), or ``None`` when they are not determined
     (or the solution does not hold on the whole component).
     """
+    values = _multiplier_values(T, P, prime, elements, multipliers)
+    if values is None:
+        return None
+    return {name: (normalize(T.symbolic(value)), T.symbolic(value.denominator()))
+            for name, value in values.items()}
+
+
+def _multiplier_values(T, P, prime, elements, multipliers, member=None):
+    r"""The multipliers on the component of ``prime`` from the
+    ``elements`` linear in them, as elements of the translation's flat
+    fraction field ``{name: value}``, or ``None`` (see
+    :func:`_multipliers_on_family`); ``member(f)`` tells whether ``f``
+    lies in the prime (default: its normal form is zero)."""
     if not multipliers:
         return {}
+    if member is None:
+        def member(f):
+            return prime.reduce(f) == 0
     F = T.fraction(SR(0)).parent()
     linear = [g for g in elements
               if all(sum(m.degree(v) for v in multipliers) <= 1 for m in g.monomials())]
@@ -1925,28 +2113,40 @@ def _multipliers_on_family(T, P, prime, elements, multipliers):
     if A.rank() < len(multipliers):
         return None
     # independent rows only: the others agree with them on the component
-    # (its relations), not over the whole function field
-    pivots = list(A.pivot_rows())
-    x = A.matrix_from_rows(pivots).solve_right(
+    # (its relations), not over the whole function field; the first rows
+    # whose minor does not vanish on the component (on a component inside
+    # the zero set of the first independent ones, others give the values)
+    for pivots in combinations(range(A.nrows()), len(multipliers)):
+        minor = A.matrix_from_rows(list(pivots)).det()
+        if minor != 0 and not member(T.to_ring(T.flat_ring()(minor.numerator()))):
+            break
+    else:
+        return None
+    x = A.matrix_from_rows(list(pivots)).solve_right(
         matrix(F, [[rhs[k]] for k in pivots])).column(0)
     result = {}
     for v, value in zip(multipliers, x):
         # the value must make sense on the component: its denominator may
         # not vanish there
-        den = T.to_ring(T.flat_ring()(value.denominator()))
-        if prime.reduce(den) == 0:
+        if member(T.to_ring(T.flat_ring()(value.denominator()))):
             return None
-        result[str(v)] = (normalize(T.symbolic(value)), T.symbolic(value.denominator()))
+        result[str(v)] = value
     # and it must solve every equation on the component (not only generically)
-    names = [str(v) for v in multipliers]
+    at = _generators_at(T, P, result)
     for g in elements:
-        poly = P(g)
-        at = [x[names.index(str(w))] if str(w) in names else F(T.flat_ring()(
-            T.to_flat(w)[0])) / F(T.flat_ring()(T.to_flat(w)[1])) for w in P.gens()]
-        value = _evaluate_in(T, poly, at)
-        if prime.reduce(T.to_ring(T.flat_ring()(value.numerator()))) != 0:
+        value = _evaluate_in(T, P(g), at)
+        if not member(T.to_ring(T.flat_ring()(value.numerator()))):
             return None
     return result
+
+
+def _generators_at(T, P, values):
+    r"""The generators of ``P`` as elements of the flat fraction field,
+    those named in ``values`` replaced by their values there."""
+    F = T.fraction(SR(0)).parent()
+    return [values[str(w)] if str(w) in values else
+            F(T.flat_ring()(T.to_flat(w)[0])) / F(T.flat_ring()(T.to_flat(w)[1]))
+            for w in P.gens()]
 
 
 def _evaluate_in(T, poly, at):

@@ -306,6 +306,29 @@ class Translation:
         """
         return self._ring
 
+    def use_order(self, order):
+        r"""Give :meth:`ring` the term order ``order`` (its variables stay
+        where they are): the equations, denominators and everything
+        translated later are polynomials of the new ring.
+
+        The translation's own order is ``degrevlex``; a system whose Gröbner
+        bases are far faster in another order (a block order with the
+        multipliers last, say) is solved there.
+
+        EXAMPLES::
+
+            sage: from sage_dynsym.algebra.translation import Translation
+            sage: x, y = var('x y')
+            sage: T = Translation([x^2 + y - 1], [x, y])
+            sage: T.use_order(TermOrder('lex')); T.ring().term_order()
+            Lexicographic term order
+            sage: T.equations()
+            [x0 + x1^2 - 1]
+        """
+        self._ring = self._ring.change_ring(order=order)
+        self._equations = [self._ring(g) for g in self._equations]
+        self._denominators = [self._ring(g) for g in self._denominators]
+
     def field(self):
         r"""The field of the parameters: `\QQ`, or rational functions in them.
 
