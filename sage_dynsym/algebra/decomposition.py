@@ -432,15 +432,12 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     except AttributeError:
         return False
     dimensions = set()
-    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+    Pq, at = _specialization(P)
     singular_lib('primdec.lib')
     for _ in range(attempts):
-        # distinct values: equal parameters (equal moments of inertia) are
-        # the special values met most often, where components split
-        values = [QQ(v) for v in sample(range(2, 1000), base.ngens())]
+        values = _random_values(base)
         try:
-            Js = Pq.ideal([Pq({e: _specialize(c, values) for e, c in g.dict().items()})
-                           for g in J.gens()])
+            Js = Pq.ideal([at(g, values) for g in J.gens()])
         except ZeroDivisionError:
             return False
         primes = [Pq.ideal(list(Q)) for Q in singular_function('minAssChar')(Js)]
@@ -482,14 +479,10 @@ def in_prime_by_specialization(Q, f, attempts=SPECIALIZATIONS):
     """
     P = Q.ring()
     base = P.base_ring().ring()
-    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
-
-    def at(g, values):
-        return Pq({e: _specialize(c, values) for e, c in g.dict().items()})
-
+    Pq, at = _specialization(P)
     done = 0
     for _ in range(10 * attempts):
-        values = [QQ(v) for v in sample(range(2, 1000), base.ngens())]
+        values = _random_values(base)
         try:
             J, g = Pq.ideal([at(h, values) for h in Q.gens()]), at(P(f), values)
         except ZeroDivisionError:
@@ -500,6 +493,24 @@ def in_prime_by_specialization(Q, f, attempts=SPECIALIZATIONS):
         if done == attempts:
             return True
     raise ValueError("no values of the parameters where the coefficients are defined")
+
+
+def _random_values(base):
+    # distinct values: equal parameters (equal moments of inertia) are the
+    # special values met most often, where components split
+    return [QQ(v) for v in sample(range(2, 1000), base.ngens())]
+
+
+def _specialization(P):
+    # the ring of P over QQ (same variables and order), and the map of a
+    # polynomial of P to it at values of the parameters (ZeroDivisionError
+    # at a pole of a coefficient)
+    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+
+    def at(g, values):
+        return Pq({e: _specialize(c, values) for e, c in g.dict().items()})
+
+    return Pq, at
 
 
 def _specialize(c, values):

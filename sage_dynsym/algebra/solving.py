@@ -836,6 +836,12 @@ def _choose_order(T, counted):
         T.use_order(candidate)
 
 
+def _order_chosen(P):
+    # whether the ring's order is one _choose_order took instead of the
+    # translation's degrevlex (the steps that are slow there go other ways)
+    return P.term_order() != TermOrder('degrevlex', P.ngens())
+
+
 def _without_noise(T, solutions, positive):
     r"""
     The solutions without those that are no solutions: the branches whose
@@ -1340,7 +1346,7 @@ def _free_unknowns(T, prime, counted):
     n = len(T.unknowns())
     total = prime.dimension()
     order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
-    if prime.ring().term_order() != TermOrder('degrevlex', prime.ring().ngens()):
+    if _order_chosen(prime.ring()):
         free = _strongly_independent_unknowns(T, prime, total, order)
         if free is not None and all(i in counted for i in free):
             return free
@@ -1923,7 +1929,7 @@ def _family(T, prime, free, counted, positive):
     upper = [g for g in bound if index[str(g)] not in counted]
     middle = [g for g in bound if index[str(g)] in counted]
     found = None
-    if upper and P.term_order() != TermOrder('degrevlex', P.ngens()):
+    if upper and _order_chosen(P):
         found = _family_from_equations(T, prime, upper, middle, positive)
     if found is None:
         found = _family_from_basis(T, prime, upper, middle, free_gens, positive)
