@@ -64,7 +64,8 @@ from .term_orders import restricted_order, reverse_block
 
 __all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
            'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
-           'in_prime_by_specialization', 'homogeneous_parts', 'with_basis',
+           'in_prime_by_specialization', 'membership_by_specialization', 'is_unit_ideal',
+           'homogeneous_parts', 'with_basis',
            'minimal_primes', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
 
 #: Attempts at a separating linear form before giving up on the shortcut.
@@ -114,7 +115,7 @@ def minimal_primes(I, shapes=False, split_points=True):
         [Ideal (x) of ..., Ideal (x^2 + (-a)) of ...]
     """
     P = I.ring()
-    if I.is_one():
+    if is_unit_ideal(I):
         return []
     if all(g == 0 for g in I.gens()):
         found = [(P.ideal([P(0)]), None)]
@@ -123,14 +124,19 @@ def minimal_primes(I, shapes=False, split_points=True):
     if parts is not None:
         _log(f"split by saturations (homogeneous ideal): {len(parts)} parts")
     else:
+        # from the reduced basis (known from the test above): on the
+        # system's own generators facstd can split into parts that are
+        # far harder to decompose (Brun's problem on M.gamma = c: parts of
+        # 14 generators that take minutes, against 8 linear ones)
         try:
-            parts = [P.ideal(list(J)) for J in singular_function('facstd')(I)]
+            parts = [P.ideal(list(J)) for J in
+                     singular_function('facstd')(P.ideal(list(I.groebner_basis())))]
         except RuntimeError:
             parts = [I]
         _log(f"factorizing Groebner basis: {len(parts)} parts")
     points, varieties = [], []
     for J in parts:
-        if J.is_one():
+        if is_unit_ideal(J):
             continue
         zero = J.dimension() == 0
         if zero and not split_points:
@@ -217,7 +223,7 @@ def homogeneous_parts(I):
         if not any(g.is_constant() for g in saturated):
             parts.append(with_basis(P, saturated))
         J = P.ideal(list(G) + [x])
-        if J.is_one():
+        if is_unit_ideal(J):
             return parts
     return parts + [J]
 
@@ -270,6 +276,14 @@ def positive_dimensional_primes(J, budget=None):
         [[x], [y, z]]
     """
     P = J.ring()
+    # before the substitutions: over a field of many parameters they swell
+    # the coefficients (seconds each for the parts of a generic Kirchhoff
+    # system), over QQ at the values drawn they cost nothing
+    if P.base_ring() is not QQ and prime_by_specialization(J):
+        _log("prime at random values of the parameters: taken as prime")
+        # J itself, with the basis it may know: recomputing one over the
+        # field can take half a minute
+        return [J]
     gens, substitutions = linear_substitutions([g for g in J.gens() if g != 0])
     if substitutions:
         _log(f"{len(substitutions)} unknowns given linearly: eliminated")
@@ -284,14 +298,7 @@ def positive_dimensional_primes(J, budget=None):
     # matrix order of the larger ring does not give
     Js = S.ideal([S({tuple(e[k] for k in positions): c for e, c in g.dict().items()})
                   for g in gens])
-    primes = None
-    if P.base_ring() is not QQ and prime_by_specialization(Js):
-        _log("prime at random values of the parameters: taken as prime")
-        # J itself (the substitutions keep the ideal), with the basis it
-        # may know: recomputing one over the field can take half a minute
-        return [J]
-    if primes is None:
-        primes = _gtz_or_characteristic_sets(Js, GTZ_BUDGET if budget is None else budget)
+    primes = _gtz_or_characteristic_sets(Js, GTZ_BUDGET if budget is None else budget)
     return [P.ideal([P(g) for g in Q.gens()] + back) for Q in primes]
 
 
@@ -402,8 +409,11 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     its specialization at values outside such a subset too, so it is not
     computed: a Gröbner basis over the field of the parameters can take
     minutes where the specialized ones take a fraction of a second (the
-    stationary set of a generic Kirchhoff Hamiltonian). ``False`` means
-    undecided: the caller decomposes ``J`` itself.
+    stationary set of a generic Kirchhoff Hamiltonian). At each value the
+    unknowns that a specialized generator gives linearly are eliminated
+    over `\QQ` first (:func:`linear_substitutions`; over the field of the
+    parameters the same substitutions swell the coefficients). ``False``
+    means undecided: the caller decomposes ``J`` itself.
 
     EXAMPLES::
 
@@ -426,22 +436,25 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
         True
     """
     P = J.ring()
-    K = P.base_ring()
     try:
-        base = K.ring()
+        at = _Specialization(P)
     except AttributeError:
         return False
     dimensions = set()
-    Pq, at = _specialization(P)
     singular_lib('primdec.lib')
+    gens = [g for g in J.gens() if g != 0]
     for _ in range(attempts):
-        values = _random_values(base)
+        values = at.random_values()
         try:
-            Js = Pq.ideal([at(g, values) for g in J.gens()])
+            specialized = [at(g, values) for g in gens]
         except ZeroDivisionError:
             return False
-        primes = [Pq.ideal(list(Q)) for Q in singular_function('minAssChar')(Js)]
-        dimensions.add(Js.dimension())
+        # the unknowns given linearly eliminated over QQ (the graph of the
+        # substitutions over the rest: same primality, dimension shifted)
+        rest, substitutions = linear_substitutions(specialized)
+        Js = at.ring.ideal(rest or [at.ring(0)])
+        primes = [at.ring.ideal(list(Q)) for Q in singular_function('minAssChar')(Js)]
+        dimensions.add(Js.dimension() - len(substitutions))
         if len(primes) != 1 or len(dimensions) != 1 or \
                 any(Js.reduce(g) != 0 for g in primes[0].gens()):
             return False
@@ -477,61 +490,141 @@ def in_prime_by_specialization(Q, f, attempts=SPECIALIZATIONS):
         sage: in_prime_by_specialization(Q, x*y)
         False
     """
-    P = Q.ring()
-    base = P.base_ring().ring()
-    Pq, at = _specialization(P)
-    done = 0
-    for _ in range(10 * attempts):
-        values = _random_values(base)
-        try:
-            J, g = Pq.ideal([at(h, values) for h in Q.gens()]), at(P(f), values)
-        except ZeroDivisionError:
-            continue
-        if J.reduce(g) != 0:
-            return False
-        done += 1
-        if done == attempts:
-            return True
-    raise ValueError("no values of the parameters where the coefficients are defined")
+    return membership_by_specialization(Q, attempts)(f)
 
 
-def _random_values(base):
-    # distinct values: equal parameters (equal moments of inertia) are the
-    # special values met most often, where components split
-    return [QQ(v) for v in sample(range(2, 1000), base.ngens())]
+def membership_by_specialization(Q, attempts=SPECIALIZATIONS):
+    r"""
+    The test of :func:`in_prime_by_specialization` for many polynomials
+    against one prime ``Q``: a function of ``f``. The random values, the
+    specialized generators of ``Q`` and their Gröbner bases over `\QQ` are
+    drawn and computed once; a polynomial with a pole at the values drawn
+    is tested at new ones.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import membership_by_specialization
+        sage: K = Frac(QQ['a']); a = K.gen()
+        sage: R.<x, y> = PolynomialRing(K)
+        sage: member = membership_by_specialization(R.ideal([x^2 - a*y]))
+        sage: member((x^2 - a*y)*x), member(x*y), member(x^2/a - y)
+        (True, False, True)
+    """
+    at = _Specialization(Q.ring())
+    gens = list(Q.gens())
+    drawn = []
+
+    def draw():
+        for _ in range(10 * attempts):
+            values = at.random_values()
+            try:
+                drawn.append((values, at.ideal(gens, values)))
+                return
+            except ZeroDivisionError:
+                continue
+        raise ValueError("no values of the parameters where the coefficients are defined")
+
+    def member(f):
+        f, done, k = Q.ring()(f), 0, 0
+        for _ in range(10 * attempts):
+            if k == len(drawn):
+                draw()
+            values, J = drawn[k]
+            k += 1
+            try:
+                g = at(f, values)
+            except ZeroDivisionError:
+                continue
+            if J.reduce(g) != 0:
+                return False
+            done += 1
+            if done == attempts:
+                return True
+        raise ValueError("no values of the parameters where the coefficients are defined")
+
+    return member
 
 
-def _specialization(P):
-    # the ring of P over QQ (same variables and order), and the map of a
-    # polynomial of P to it at values of the parameters (ZeroDivisionError
-    # at a pole of a coefficient)
-    Pq = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+class _Specialization:
+    r"""The map of the polynomials of ``P``, a ring over a field of
+    rational functions in parameters, to the ring over `\QQ` with the same
+    variables and order, at rational values of the parameters
+    (``ZeroDivisionError`` at a pole of a coefficient). A polynomial's
+    coefficients are read once (the conversion of Singular's rational
+    functions to Sage's is the slow part: seconds for the large generators
+    of a generic Kirchhoff family) and kept for the next values.
 
-    def at(g, values):
-        return Pq({e: _specialize(c, values) for e, c in g.dict().items()})
+    ``AttributeError`` if the base field of ``P`` is not one of rational
+    functions."""
 
-    return Pq, at
+    def __init__(self, P):
+        self.parameters = P.base_ring().ring()
+        self.ring = PolynomialRing(QQ, P.variable_names(), P.ngens(), order=P.term_order())
+        self._terms = {}
 
+    def random_values(self):
+        # distinct values: equal parameters (equal moments of inertia) are
+        # the special values met most often, where components split
+        return [QQ(v) for v in sample(range(2, 1000), self.parameters.ngens())]
 
-def _specialize(c, values):
-    den = c.denominator()(values)
-    if den == 0:
-        raise ZeroDivisionError
-    return c.numerator()(values) / den
+    def __call__(self, g, values):
+        # by the object: its own terms are read once (a polynomial's hash
+        # reads them all); the polynomial is kept so that its id stays its
+        if id(g) not in self._terms:
+            self._terms[id(g)] = (g, [(e, c.numerator(), c.denominator())
+                                      for e, c in g.dict().items()])
+        specialized = {}
+        for e, num, den in self._terms[id(g)][1]:
+            d = den(values)
+            if d == 0:
+                raise ZeroDivisionError
+            specialized[e] = num(values) / d
+        return self.ring(specialized)
+
+    def ideal(self, gens, values):
+        return self.ring.ideal([self(g, values) for g in gens])
 
 
 def _contains(Q, R):
-    r"""Whether `R \subseteq Q` (so `Q` is not minimal when they differ)."""
-    return all(Q.reduce(g) == 0 for g in R.gens()) and not _same(Q, R)
+    r"""Whether `R \subsetneq Q`, for primes ``Q`` and ``R`` (so `Q` is not
+    minimal). Then `V(Q)` is a proper subvariety of the irreducible `V(R)`,
+    of smaller dimension: only then are normal forms computed (over a
+    field of many parameters they take seconds)."""
+    return Q.dimension() < R.dimension() and all(Q.reduce(g) == 0 for g in R.gens())
 
 
 def _same(Q, R):
     # equal reduced Groebner bases: no normal form over the field, where
     # one can take minutes (a square of a variable against a family of a
-    # generic Kirchhoff Hamiltonian: over 400 s)
+    # generic Kirchhoff Hamiltonian: over 400 s); the leading monomials
+    # first, a cheap necessary condition
     def monic(basis):
         return {g / g.lc() for g in basis}
-    return monic(Q.groebner_basis()) == monic(R.groebner_basis())
+    G, H = Q.groebner_basis(), R.groebner_basis()
+    return sorted(g.lm() for g in G) == sorted(h.lm() for h in H) and monic(G) == monic(H)
+
+
+def is_unit_ideal(J):
+    r"""
+    Whether the ideal ``J`` is the whole ring, read off its Gröbner basis
+    in the ring's own order (computed once and kept).
+
+    Sage's ``is_one`` compares ``J`` with the unit ideal, which computes a
+    basis in the degree reverse lexicographic order whatever the ring's
+    order: for the stationary set of a generic Kirchhoff Hamiltonian, in
+    the block order chosen because it is fast, that took seconds per
+    call.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import is_unit_ideal
+        sage: R.<x, y> = PolynomialRing(QQ, order='lex')
+        sage: is_unit_ideal(R.ideal([x*y - 1, x])), is_unit_ideal(R.ideal([x*y - 1]))
+        (True, False)
+        sage: is_unit_ideal(R.ideal([R(0)]))
+        False
+    """
+    return any(g.is_constant() and g != 0 for g in J.groebner_basis())
 
 
 def with_basis(P, basis):

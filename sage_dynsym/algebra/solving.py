@@ -102,9 +102,8 @@ from ..arguments import expression_list
 from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
-from .decomposition import (minimal_primes, in_prime_by_specialization, shape, ShapePrime,
-                            triangular_sets,
-                            linear_substitutions)
+from .decomposition import (minimal_primes, membership_by_specialization, is_unit_ideal,
+                            shape, ShapePrime, triangular_sets, linear_substitutions)
 from .regions import prune_empty
 from .expression_walk import ExpressionWalker
 from .term_orders import block_order, fastest_order
@@ -775,7 +774,7 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         if f.degree() > 0:
             I = I.saturation(f)[0]
     n_eq = len(equations)
-    if I.is_one():
+    if is_unit_ideal(I):
         _log("the equations are inconsistent")
         return SolutionSet(T, [], n_eq)
     _log("decomposing into irreducible components")
@@ -1660,7 +1659,7 @@ def _singular_locus_solutions(T, prime, dimension, counted, positive):
               for r in combinations(range(J.nrows()), rank)
               for c in combinations(range(J.ncols()), rank)]
     locus = P.ideal(gens + [m for m in minors if m != 0])
-    if locus.is_one():
+    if is_unit_ideal(locus):
         return []
     result = []
     for Q, sh in minimal_primes(locus, shapes=True):
@@ -2007,7 +2006,7 @@ def _family_from_equations(T, prime, upper, middle, positive):
     # membership in the prime at random values of the parameters: a normal
     # form over their field took minutes (generic Kirchhoff)
     values = _multiplier_values(T, P, prime, T.equations(), upper,
-                                member=lambda f: in_prime_by_specialization(prime, f))
+                                member=membership_by_specialization(prime))
     if values is None:
         return None
     ring_values, conditions = {}, []
