@@ -399,6 +399,7 @@ class AlgebraicSolution(SageObject):
         self._conditions = conditions
         self._real_points = real_points
         self._reality_known = reality_known
+        self._membership = None            # contains() at random values, made once
 
     def _repr_(self):
         kind = "" if self.is_explicit() else ", implicit: given by its equations"
@@ -683,18 +684,34 @@ class AlgebraicSolution(SageObject):
     def contains(self, expr):
         r"""
         Whether ``expr`` (rational in the unknowns, its symbols among those
-        of the system) vanishes on the whole component.
+        of the system) vanishes on the whole component: whether its
+        numerator lies in the component's prime ideal.
+
+        Over `\QQ` this is a normal form. With parameters it is decided at
+        random rational values of them
+        (:func:`~sage_dynsym.algebra.decomposition.membership_by_specialization`,
+        with its probability-one argument): a normal form over the field of
+        many parameters can take minutes (the family of a generic Kirchhoff
+        Hamiltonian, 12 coefficients: over 20 s for one equation of
+        motion), the specialized ones milliseconds.
 
         EXAMPLES::
 
             sage: from sage_dynsym.algebra.solving import solve_exactly
-            sage: x, y = var('x y')
+            sage: x, y, a = var('x y a')
             sage: s = solve_exactly([x^2 + y^2 - 1], [x, y])[0]
             sage: s.contains((x^2 + y^2 - 1)*x), s.contains(x)
             (True, False)
+            sage: s = solve_exactly([x^2 - a*y^3], [x, y])[0]
+            sage: s.contains((x^2 - a*y^3)*(x + a)/(y - a)), s.contains(x - a*y)
+            (True, False)
         """
         num, _ = self._T.numerator(expr)
-        return self._prime.reduce(num) == 0
+        if self._T.field() is QQ or isinstance(self._prime, ShapePrime):
+            return self._prime.reduce(num) == 0
+        if self._membership is None:
+            self._membership = membership_by_specialization(self._prime)
+        return self._membership(num)
 
 
 def _log(message):

@@ -461,6 +461,14 @@ class StationarySolution(MotionSolution):
         rhs = self._problem.rhs
         if rhs is None:
             return None
+        if not self.is_explicit():
+            # an implicit family: the equations' membership in its prime, not
+            # a normal form of the values put in them (minutes over a field
+            # of many parameters: a generic Kirchhoff Hamiltonian's family)
+            try:
+                return all(self._solution.contains(X) for X in rhs)
+            except AnalysisError:
+                pass        # a symbol the system does not know: the values put in
         return all(normalize(self._at(X)).is_zero() for X in rhs)
 
     def stationary_problem(self):
