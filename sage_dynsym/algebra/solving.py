@@ -400,6 +400,7 @@ class AlgebraicSolution(SageObject):
         self._real_points = real_points
         self._reality_known = reality_known
         self._membership = None            # contains() at random values, made once
+        self._terms = None                 # the size of the relations, counted once
 
     def _repr_(self):
         kind = "" if self.is_explicit() else ", implicit: given by its equations"
@@ -632,7 +633,9 @@ class AlgebraicSolution(SageObject):
         r"""
         The value of a symbolic expression at this solution: trigonometric
         functions of angles are expanded to `\cos q, \sin q` first, then the
-        known values substituted and the result normalized.
+        known values substituted and the result normalized: on an implicit
+        family, in normal form modulo its relations, unless these have more
+        than :data:`MAX_DECIDED_TERMS` terms.
 
         EXAMPLES::
 
@@ -650,11 +653,22 @@ class AlgebraicSolution(SageObject):
         plain = {k: v for k, v in subs.items() if k.is_symbol() and not
                  (self._T.is_angle(k))}
         e = e.subs(trig).subs(plain)
-        if self._relations and not isinstance(self._prime, ShapePrime):
+        if self._relations and not isinstance(self._prime, ShapePrime) and \
+                self._relation_terms() <= MAX_DECIDED_TERMS:
             reduced = self.reduce(e)
             if reduced is not None:
                 return reduced
         return normalize(e)
+
+    def _relation_terms(self):
+        # the number of terms of the relations, each coefficient counted by
+        # the terms of its numerator and denominator (read once)
+        if self._terms is None:
+            self._terms = sum(1 if c.parent() is QQ else
+                              len(c.numerator().monomials()) + len(c.denominator().monomials())
+                              for r in self._relations if r.parent() is not SR
+                              for c in r.coefficients())
+        return self._terms
 
     def reduce(self, expr):
         r"""
@@ -1406,7 +1420,7 @@ def _solve_component(T, prime, sh, counted, positive):
     if free:
         family = _family(T, prime, free, counted, positive)
         if family is not None and not family._reality_known \
-                and _relation_terms(family) <= MAX_DECIDED_TERMS:
+                and family._relation_terms() <= MAX_DECIDED_TERMS:
             # where its reality is not known, its branches may say, or a
             # rational parametrization, or quantifier elimination
             found = _branches(T, family, positive)
@@ -1431,21 +1445,12 @@ def _solve_component(T, prime, sh, counted, positive):
 #: their reality undecided: their branches would be radicals of
 #: expressions of that size, and writing the relations symbolically for
 #: the tries takes minutes (a family of a generic Kirchhoff Hamiltonian:
-#: one relation of about 3000 terms over 12 parameters).
+#: one relation of about 3000 terms over 12 parameters). Expressions
+#: evaluated on such a family are not put in normal form modulo its
+#: relations (:meth:`AlgebraicSolution.evaluate`): each normal form took
+#: seconds there.
 MAX_DECIDED_TERMS = 1000
 
-
-def _relation_terms(family):
-    r"""The number of terms of the relations of a family, each coefficient
-    counted by the terms of its numerator and denominator."""
-    total = 0
-    for r in family._relations:
-        if r.parent() is SR:
-            continue
-        for c in r.coefficients():
-            total += 1 if c.parent() is QQ else \
-                len(c.numerator().monomials()) + len(c.denominator().monomials())
-    return total
 
 
 def _branches(T, family, positive):
