@@ -764,13 +764,15 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     P = T.ring()
     gens = T.equations()
     I = P.ideal(gens) if gens else P.ideal([P(0)])
-    saturate = list(T.denominators())
+    # the polynomials that must not vanish at a solution: the denominators
+    # of the equations, the numerators of the expressions required nonzero
+    required = list(T.denominators())
     for e in nonzero:
         num, dens = T.numerator(e)
         if num == 0:
             raise AnalysisError(f"{e} is required nonzero but is zero", entry="nonzero")
-        saturate.append(num)
-    for f in saturate:
+        required.append(num)
+    for f in required:
         if f.degree() > 0:
             I = I.saturation(f)[0]
     n_eq = len(equations)
@@ -782,14 +784,16 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     _log(f"{len(primes)} components")
     found = [s for prime, sh in primes for s in _solve_component(T, prime, sh, counted_set,
                                                                  positive)]
-    found += _excluded_parts(T, [prime for prime, _ in primes], found, counted_set, positive)
+    found += _excluded_parts(T, [prime for prime, _ in primes], found, counted_set, positive,
+                             required)
     solutions, seen = [], set()
     for s in found:
         key = str(s.values()) if s.is_explicit() and not s._free else None
         if key is None or key not in seen:     # parts of facstd may overlap
             seen.add(key)
             solutions.append(s)
-    solutions = _without_noise(T, solutions, positive)
+    solutions = _pointwise(T, solutions, required, positive)
+    solutions = _without_noise(T, solutions, positive, required)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
 
@@ -841,7 +845,7 @@ def _order_chosen(P):
     return P.term_order() != TermOrder('degrevlex', P.ngens())
 
 
-def _without_noise(T, solutions, positive):
+def _without_noise(T, solutions, positive, required):
     r"""
     The solutions without those that are no solutions: the branches whose
     conditions no real values satisfy, and the points that a branch
@@ -933,13 +937,92 @@ def _without_noise(T, solutions, positive):
             continue
         smaller = [s for s in explicit if len(s._free) < len(f._free) and id(s) not in widened]
         if len(f._free) == 1 and not T.parameters():
-            closed, inside = _closed_branch(T, f, [s for s in smaller if not s._free])
+            closed, inside = _closed_branch(T, f, [s for s in smaller if not s._free],
+                                            required)
         else:
-            closed, inside = _closed_symbolically(T, f, smaller, positive)
+            closed, inside = _closed_symbolically(T, f, smaller, positive, required)
         if inside:
             widened[id(f)] = closed
             dropped.update(id(p) for p in inside)
     return [widened.get(id(s), s) for s in kept if id(s) not in dropped]
+
+
+def _pointwise(T, solutions, required, positive):
+    r"""
+    The solutions with the conditions that the polynomials ``required``
+    (the equations' denominators, the numerators of the expressions
+    required nonzero) do not vanish at their values: for each factor `f`
+    of one at the values, `f \ne 0` -- unless it is a nonzero constant, a
+    parameter declared positive, or implied by the solution's conditions
+    (:func:`_implied_nonzero`). A solution where one vanishes identically
+    is no solution: dropped. The saturation removed only the components
+    inside their zero sets; this removes the points of the others there.
+
+    An implicit solution gets the conditions on its parameters and free
+    unknowns only (its conditions are stated on those): a factor in its
+    bound unknowns is not a condition of it (the saturation guarantees
+    that it does not vanish on the whole component).
+
+    EXAMPLES: `x = y` is a solution of `(x - y)/y = 0` only where
+    `y \ne 0`::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, a = var('x y a')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([(x - y)/y], [x, y])]
+        [({x: x, y: x}, [x != 0])]
+
+    The point `x = a` of `x^2 = a x` (besides `x = 0`, which is required
+    nonzero) exists where `a \ne 0`; where `a = 1` too, `x - 1` vanishes::
+
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x^2 - a*x], [x],
+        ....:                                                        nonzero=[x*(x - 1)])]
+        [({x: a}, [a != 0, a - 1 != 0])]
+    """
+    result = []
+    for s in solutions:
+        conditions = _nonzero_at(T, s, required, positive)
+        if conditions is None:
+            _log(f"a solution {s.values()} where a required nonzero polynomial vanishes: dropped")
+        elif len(conditions) == len(s._conditions):
+            result.append(s)
+        else:
+            result.append(AlgebraicSolution(T, s._prime, s._free, s._counted, dict(s._values),
+                                            dict(s._ring_values), s._relations, conditions,
+                                            s._real_points, s._reality_known))
+    return result
+
+
+def _nonzero_at(T, solution, required, positive):
+    r"""The conditions of ``solution`` with those that no polynomial of
+    ``required`` vanishes at its values (see :func:`_pointwise`); ``None``
+    if one vanishes identically there."""
+    unknowns = T.unknowns()
+    stated = {str(p) for p in T.parameters()} | {str(unknowns[i]) for i in solution._free}
+    conditions = list(solution._conditions)
+    for f in required:
+        value = solution.evaluate(T.symbolic(f))
+        found = nonzero_conditions(SR(value).numerator(), positive)
+        if found is None:
+            return None
+        for c in found:
+            h = SR(c.lhs() - c.rhs())
+            if set(map(str, h.variables())) <= stated and \
+                    not _implied_nonzero(h, conditions, positive):
+                conditions.append(c)
+    return conditions
+
+
+def _implied_nonzero(h, conditions, positive):
+    r"""Whether the ``conditions`` imply `h \ne 0`: each factor of `h` is
+    required nonzero by one (up to a constant factor, see
+    :func:`_required_nonzero`), or `h` or `h^2` is a constant multiple of
+    the side of a strict inequality."""
+    nonzero = [SR(c.lhs() - c.rhs()) for c in conditions if c.operator() is operator.ne]
+    strict = [SR(c.lhs() - c.rhs()) for c in conditions
+              if c.operator() in (operator.gt, operator.lt)]
+    return _required_nonzero(h, nonzero, [], positive) or \
+        any(_positive_multiple(D, g) or _positive_multiple(-D, g)
+            for D in strict for g in (h, h ** 2))
 
 
 def _never_real(solution, positive, cache):
@@ -970,7 +1053,7 @@ def _never_real(solution, positive, cache):
     return cache[key]
 
 
-def _closed_branch(T, family, points):
+def _closed_branch(T, family, points, required):
     r"""
     The branch ``family`` (one free unknown, no parameters) with its strict
     conditions widened (`D > 0` to `D \ge 0`) and the ``points`` it then
@@ -1004,7 +1087,8 @@ def _closed_branch(T, family, points):
             at = SR(QQ(r)) if r in QQ else r.radical_expression()
             if at.parent() is not SR:
                 return family, []       # no radicals: not compared exactly here
-            if _holds_at(closed, u, at) and _values_at(T, family, u, at, check=True) is None:
+            if _holds_at(closed, u, at) and \
+                    _values_at(T, family, u, at, check=True, required=required) is None:
                 return family, []
     inside = []
     for p in points:
@@ -1025,7 +1109,7 @@ def _closed_branch(T, family, points):
                              closed), inside
 
 
-def _closed_symbolically(T, family, others, positive):
+def _closed_symbolically(T, family, others, positive, required):
     r"""
     The branch ``family`` with its strict conditions widened (`D > 0` to
     `D \ge 0`) and the solutions among ``others`` (explicit, with fewer
@@ -1054,7 +1138,7 @@ def _closed_symbolically(T, family, others, positive):
     wide = {operator.gt: operator.ge, operator.lt: operator.le}
     closed = [wide[c.operator()](c.lhs(), c.rhs()) if c.operator() in wide else c
               for c in conditions]
-    if not _widening_holds(T, family, closed, positive):
+    if not _widening_holds(T, family, closed, positive, required):
         return family, []
     inside = [s for s in others if _inside(T, family, closed, s)]
     if not inside:
@@ -1092,7 +1176,7 @@ class _SquareRoots(ExpressionWalker):
         raise ValueError(f"{e} is not a square root of a rational expression")
 
 
-def _widening_holds(T, family, closed, positive):
+def _widening_holds(T, family, closed, positive, required):
     r"""Whether the values of ``family`` are real, finite and on its
     component wherever the ``closed`` conditions hold (see
     :func:`_closed_symbolically`)."""
@@ -1113,12 +1197,13 @@ def _widening_holds(T, family, closed, positive):
             return False
     at = dict(zip(T.unknowns(), values))
     try:
-        # finite, and where the equations are defined (no denominator of
-        # theirs vanishing at the values)
+        # finite, and where the equations are defined and the expressions
+        # required nonzero are not zero (no polynomial of ``required``
+        # vanishing at the values)
         if not all(_required_nonzero(SR(v).denominator(), nonzero, s_symbols, positive)
                    for v in values + [R for _, R in roots.roots.values()]) or \
                 not all(_required_nonzero(SR(T.symbolic(d)).subs(at).numerator(), nonzero,
-                                          s_symbols, positive) for d in T.denominators()):
+                                          s_symbols, positive) for d in required):
             return False
     except (TypeError, ValueError, ArithmeticError):
         return False
@@ -1198,10 +1283,12 @@ def _holds_at(conditions, u, at):
         return False
 
 
-def _values_at(T, family, u, at, check=False):
+def _values_at(T, family, u, at, check=False, required=()):
     r"""The values (index: element of ``AA``) of the branch at ``u =
     at``; ``None`` where one is not real or finite or (``check``) the
-    point is not on the component."""
+    point is not on the component or one of the polynomials ``required``
+    (the equations' denominators, the numerators required nonzero)
+    vanishes there."""
     unknowns = T.unknowns()
     values = {}
     try:
@@ -1218,7 +1305,8 @@ def _values_at(T, family, u, at, check=False):
                 return None
             images[P.gens().index(P(gens[0]))] = values[i]
         if any(x is None for x in images) or \
-                any(g(*images) != 0 for g in family._prime.gens()):
+                any(g(*images) != 0 for g in family._prime.gens()) or \
+                any(f(*images) == 0 for f in required):
             return None
     return values
 
@@ -1246,7 +1334,7 @@ def _sort_key(s):
 # one component
 # ---------------------------------------------------------------------------
 
-def _excluded_parts(T, known, solutions, counted, positive):
+def _excluded_parts(T, known, solutions, counted, positive, required):
     r"""
     The solutions on the points of a component that the strict conditions
     of its solutions on unknowns exclude: where a denominator of a value or
@@ -1288,8 +1376,10 @@ def _excluded_parts(T, known, solutions, counted, positive):
                 if any(id(K) not in above and not _contains(P, K) and _contains(Q, K)
                        for K in known) or \
                         any(not isinstance(Q, ShapePrime) and Q.reduce(f) == 0
-                            for f in T.denominators()):
-                    continue        # on another component, or where the equations are not defined
+                            for f in required):
+                    # on another component, or where the equations are not
+                    # defined or an expression required nonzero vanishes
+                    continue
                 inside[id(Q)] = above
                 known.append(Q)
                 new = _solve_component(T, Q, sh, counted, positive)
