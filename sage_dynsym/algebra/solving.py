@@ -11,7 +11,10 @@ equilibria, stationary motions -- is solved here, exactly:
 2. the ideal is saturated by those denominators (and by expressions the
    caller requires to be nonzero) and decomposed into its minimal
    associated primes (Singular, ``minAssGTZ``) -- the irreducible
-   components of the solution set;
+   components of the solution set; the saturation removes the components
+   where one vanishes, and each solution carries the conditions that none
+   vanishes at its points (a point where one vanishes identically is
+   dropped);
 3. each component gets its dimension (the number of unknowns it leaves
    free, multipliers not counted when the caller says so), and its points
    are written explicitly where possible:
@@ -717,8 +720,11 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
       ``f(q)``); every other symbol is a parameter
     - ``counted`` -- (default: all) the unknowns counted in the dimension
       (e.g. not the Lagrange multipliers)
-    - ``nonzero`` -- expressions that must not vanish (components inside
-      their zero set are removed)
+    - ``nonzero`` -- expressions that must not vanish: components inside
+      the zero set of one are removed, and every solution carries the
+      conditions that its numerator's factors do not vanish at its values
+      (exactly as for the denominators of the equations, where the
+      equations are not defined)
     - ``positive`` -- parameters declared positive (used in the conditions)
     - ``extra`` -- expressions to be evaluated or tested later (their
       symbols are registered as parameters)
@@ -744,6 +750,32 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         ....:     print(s)
         Solution {x: sqrt(1/2)*sqrt(c), y: sqrt(1/2)*sqrt(c)} (dimension 0)
         Solution {x: -sqrt(1/2)*sqrt(c), y: -sqrt(1/2)*sqrt(c)} (dimension 0)
+
+    A solution holds only where the equations are defined and the
+    expressions ``nonzero`` do not vanish, at each of its points: `x = y`
+    solves `(x - y)/y = 0` only for `y \ne 0`, and likewise `x - y = 0`
+    with `y` required nonzero; the branches `y = \pm\sqrt{x - a}` of
+    `y^2 = x - a` end at `x = a` (where `y = 0`) without `y` required
+    nonzero, and before it with::
+
+        sage: a = var('a')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([(x - y)/y], [x, y])]
+        [({x: x, y: x}, [x != 0])]
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x - y], [x, y], nonzero=[y])]
+        [({x: x, y: x}, [x != 0])]
+        sage: [s.conditions() for s in solve_exactly([y^2 - x + a], [x, y])]
+        [[a - x <= 0], [a - x <= 0]]
+        sage: [s.conditions() for s in solve_exactly([y^2 - x + a], [x, y], nonzero=[y])]
+        [[a - x < 0], [a - x < 0]]
+
+    A point where a required nonzero expression vanishes is no solution;
+    a point where it vanishes for some values of the parameters exists
+    only for the others::
+
+        sage: [s.values() for s in solve_exactly([x*(x - 1)], [x], nonzero=[x])]
+        [{x: 1}]
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x - a], [x], nonzero=[x - 1])]
+        [({x: a}, [a - 1 != 0])]
     """
     unknowns = expression_list(unknowns, "unknowns", AnalysisError, names=True)
     equations = expression_list(equations, "equations", AnalysisError,
@@ -976,7 +1008,7 @@ def _pointwise(T, solutions, required, positive):
 
         sage: [(s.values(), s.conditions()) for s in solve_exactly([x^2 - a*x], [x],
         ....:                                                        nonzero=[x*(x - 1)])]
-        [({x: a}, [a != 0, a - 1 != 0])]
+        [({x: a}, [a - 1 != 0, a != 0])]
     """
     result = []
     for s in solutions:
