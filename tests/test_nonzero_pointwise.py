@@ -182,3 +182,15 @@ def test_point_where_required_expression_vanishes_is_dropped():
         assert not _holds(s.conditions(), v)
     # a point inside the zero set of a denominator for all parameter values
     assert len(solve_exactly([u * (u - 1) / u], [u])) == 1
+
+
+def test_excluded_part_inside_the_zero_set_is_dropped():
+    # x z = y is z = y/x for x != 0; its points with x = 0 are the line
+    # x = y = 0 (a part solved on its own): where x + y is required
+    # nonzero, the line is no solution, and the family needs x + y != 0
+    x, y, z = var('x y z')
+    sols = solve_exactly([x * z - y], [x, y, z], nonzero=[x + y])
+    assert [s.values() for s in sols] == [{x: x, y: y, z: y / x}]
+    conditions = sols[0].conditions()
+    for point, expected in (({x: 1, y: 2}, True), ({x: 1, y: -1}, False), ({x: 0, y: 1}, False)):
+        assert all(bool(c.subs(point)) for c in conditions) is expected

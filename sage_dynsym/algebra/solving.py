@@ -768,6 +768,10 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         sage: [s.conditions() for s in solve_exactly([y^2 - x + a], [x, y], nonzero=[y])]
         [[a - x < 0], [a - x < 0]]
 
+    An implicit solution carries these conditions where they are on its
+    parameters and free unknowns (where one is on the unknowns it binds, the
+    saturation still removed the components on which it vanishes).
+
     A point where a required nonzero expression vanishes is no solution;
     a point where it vanishes for some values of the parameters exists
     only for the others::
@@ -1388,6 +1392,17 @@ def _excluded_parts(T, known, solutions, counted, positive, required):
         sage: [s.values() for s in solve_exactly([y^2 - 2*x*y + a, y*z - 1], [x, y, z])
         ....:  if not s.dimension()]
         [{x: sqrt(a), y: sqrt(a), z: 1/sqrt(a)}, {x: -sqrt(a), y: -sqrt(a), z: -1/sqrt(a)}]
+
+    A part where an expression required nonzero vanishes is no solution:
+    with `x` (or `x + y`) required nonzero, the line `x = y = 0` is not
+    one; with `z - 1`, it is where `z \ne 1`::
+
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z],
+        ....:                                                        nonzero=[x + y])]
+        [({x: x, y: y, z: y/x}, [x != 0, x + y != 0])]
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z],
+        ....:                                                        nonzero=[z - 1])]
+        [({x: 0, y: 0, z: z}, [z - 1 != 0]), ({x: x, y: y, z: y/x}, [x != 0, x - y != 0])]
     """
     known, todo, found, done = list(known), list(solutions), [], set()
     # the primes each part contains because it was cut out of them: no
