@@ -491,7 +491,9 @@ class AlgebraicSolution(SageObject):
         r"""
         Conditions on the parameters (and the free unknowns) for this
         solution to exist and be real, a list of relationals; ``[]`` when it
-        exists for all admissible values.
+        exists for all admissible values. They include that the equations'
+        denominators and the expressions required nonzero do not vanish
+        (see :func:`solve_exactly`).
 
         For an implicit solution whose reality could not be decided (see
         :meth:`is_reality_decided`), the conditions found (e.g. nonzero
@@ -899,7 +901,9 @@ def _without_noise(T, solutions, positive, required):
     stays (of more free unknowns) contains it, decided exactly: the
     branch's strict conditions widened to `D \ge 0` (after checking exactly
     that the values are real, finite and on the component at every point
-    the widening adds), the solution satisfying them and equal to the
+    the widening adds, and that no polynomial of ``required`` -- the
+    equations' denominators, the numerators of the expressions required
+    nonzero -- vanishes there), the solution satisfying them and equal to the
     branch's values there -- for a branch of one free unknown without
     parameters at the points in ``AA`` (:func:`_closed_branch`), otherwise
     by identities (:func:`_closed_symbolically`). Where that is not proved
@@ -1096,7 +1100,8 @@ def _closed_branch(T, family, points, required):
     contains; ``(family, [])`` when no point is contained or the widening
     cannot be proved right. It is right when at every point it adds (the
     real roots of the boundaries that satisfy the widened conditions) the
-    branch's values are real, finite and on the component: exact
+    branch's values are real, finite and on the component, and no
+    polynomial of ``required`` vanishes there: exact
     arithmetic in ``AA``, the generators of the component's prime ideal
     evaluated there.
     """
@@ -1155,9 +1160,11 @@ def _closed_symbolically(T, family, others, positive, required):
     The widening is proved by identities, for every value of the
     parameters and free unknowns at once: each square root `\sqrt R` in
     the values is a new variable `s` with `s^2 = R`; `R \ge 0` must be
-    one of the widened conditions (so `s` is real), no denominator may
-    hold an `s` (it could vanish where `R = 0`) and each of its factors
-    must be required nonzero by a condition; then the generators of the
+    one of the widened conditions (so `s` is real), no denominator -- of
+    the values, of the equations, or a polynomial of ``required`` (the
+    numerators required nonzero) at the values -- may hold an `s` (it
+    could vanish where `R = 0`) and each of its factors must be required
+    nonzero by a condition; then the generators of the
     component, at the values, must lie in the ideal of the `s^2 - R`
     (a Gröbner basis decides it): they vanish wherever the values are
     defined, at the points the widening adds too. A solution is
