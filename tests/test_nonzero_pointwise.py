@@ -20,7 +20,7 @@ import operator
 import random
 
 import pytest
-from sage.all import AA, QQ, SR, PolynomialRing, var
+from sage.all import AA, QQ, SR, PolynomialRing, cos, sin, var
 
 import sage_dynsym.algebra.solving as solving
 from sage_dynsym.algebra.solving import solve_exactly
@@ -194,3 +194,14 @@ def test_excluded_part_inside_the_zero_set_is_dropped():
     conditions = sols[0].conditions()
     for point, expected in (({x: 1, y: 2}, True), ({x: 1, y: -1}, False), ({x: 0, y: 1}, False)):
         assert all(bool(c.subs(point)) for c in conditions) is expected
+
+
+def test_implicit_family_condition_on_its_free_unknown():
+    # cos q = x with sin q in a denominator: the family over x is implicit
+    # (q bound); sin q = 0 exactly at x = +-1 on it, so its conditions must
+    # fail there and hold at every other x in (-1, 1)
+    x, q = var('x q')
+    (s,) = solve_exactly([(x - cos(q)) / sin(q)], [x, q])
+    assert not s.is_explicit() and s.free_unknowns() == [x]
+    for at, expected in ((1, False), (-1, False), (QQ((1, 3)), True), (0, True)):
+        assert all(bool(c.subs({x: at})) for c in s.conditions()) is expected

@@ -116,13 +116,18 @@ __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
            'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'PARAMETRIZATION_VARIABLES',
-           'FAMILY_QE_VARIABLES', 'MAX_DECIDED_TERMS',
+           'FAMILY_QE_VARIABLES', 'MAX_DECIDED_TERMS', 'IMPLICIT_NONZERO_POWERS',
            'solve_transcendental']
 
 
 #: Zero-dimensional components with parameters of a larger degree are not
 #: solved by radicals (they are returned implicitly).
 MAX_EXPLICIT_DEGREE = 16
+
+#: Powers `f^k` of a polynomial required nonzero tried on an implicit
+#: solution, for one that is a function of its free unknowns and parameters
+#: (then `f \ne 0` is a condition on those).
+IMPLICIT_NONZERO_POWERS = (2, 3, 4)
 
 #: Implicit components are tested for real points by quantifier elimination
 #: only up to this many variables (parameters and unknowns together) ...
@@ -1017,6 +1022,18 @@ def _pointwise(T, solutions, required, positive):
         sage: [(s.values(), s.conditions()) for s in solve_exactly([x^2 - a*x], [x],
         ....:                                                        nonzero=[x*(x - 1)])]
         [({x: a}, [a - 1 != 0, a != 0])]
+
+    An implicit family: `\cos q = x` over `x` with `\sin q` in a
+    denominator holds where `\sin^2 q = 1 - x^2` is not zero; `y^3 = x`
+    with `y` in a denominator where `x \ne 0`::
+
+        sage: q = var('q')
+        sage: s = solve_exactly([(x - cos(q))/sin(q)], [x, q])[0]
+        sage: s.is_explicit(), s.free_unknowns(), s.conditions()
+        (False, [x], [x - 1 != 0, x + 1 != 0])
+        sage: s = solve_exactly([(y^3 - x)/y], [x, y])[0]
+        sage: s.is_explicit(), s.free_unknowns(), s.conditions()
+        (False, [x], [x != 0])
     """
     result = []
     for s in solutions:
@@ -1038,12 +1055,26 @@ def _nonzero_at(T, solution, required, positive):
     if one vanishes identically there."""
     unknowns = T.unknowns()
     stated = {str(p) for p in T.parameters()} | {str(unknowns[i]) for i in solution._free}
+
+    def at_values(f):
+        return nonzero_conditions(SR(solution.evaluate(T.symbolic(f))).numerator(), positive)
+
+    def statable(found):
+        return all(set(map(str, c.lhs().variables())) <= stated for c in found)
+
     conditions = list(solution._conditions)
     for f in required:
-        value = solution.evaluate(T.symbolic(f))
-        found = nonzero_conditions(SR(value).numerator(), positive)
+        found = at_values(f)
         if found is None:
             return None
+        # modulo an implicit component a power `f^k` may be a function of
+        # the free unknowns and parameters (`\sin^2 q = 1 - x^2` where
+        # `\cos q = x`; `y^3 = x`): `f \ne 0` exactly where it is not zero
+        for k in IMPLICIT_NONZERO_POWERS if solution._relations else ():
+            if statable(found):
+                break
+            power = at_values(f ** k)
+            found = power if power is not None and statable(power) else found
         for c in found:
             h = SR(c.lhs() - c.rhs())
             if set(map(str, h.variables())) <= stated and \
