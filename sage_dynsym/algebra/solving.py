@@ -11,7 +11,10 @@ equilibria, stationary motions -- is solved here, exactly:
 2. the ideal is saturated by those denominators (and by expressions the
    caller requires to be nonzero) and decomposed into its minimal
    associated primes (Singular, ``minAssGTZ``) -- the irreducible
-   components of the solution set;
+   components of the solution set; the saturation removes the components
+   where one vanishes, and each solution carries the conditions that none
+   vanishes at its points (a point where one vanishes identically is
+   dropped);
 3. each component gets its dimension (the number of unknowns it leaves
    free, multipliers not counted when the caller says so), and its points
    are written explicitly where possible:
@@ -113,13 +116,18 @@ __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
            'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'PARAMETRIZATION_VARIABLES',
-           'FAMILY_QE_VARIABLES', 'MAX_DECIDED_TERMS',
+           'FAMILY_QE_VARIABLES', 'MAX_DECIDED_TERMS', 'IMPLICIT_NONZERO_POWERS',
            'solve_transcendental']
 
 
 #: Zero-dimensional components with parameters of a larger degree are not
 #: solved by radicals (they are returned implicitly).
 MAX_EXPLICIT_DEGREE = 16
+
+#: Powers `f^k` of a polynomial required nonzero tried on an implicit
+#: solution, for one that is a function of its free unknowns and parameters
+#: (then `f \ne 0` is a condition on those).
+IMPLICIT_NONZERO_POWERS = (2, 3, 4)
 
 #: Implicit components are tested for real points by quantifier elimination
 #: only up to this many variables (parameters and unknowns together) ...
@@ -490,7 +498,9 @@ class AlgebraicSolution(SageObject):
         r"""
         Conditions on the parameters (and the free unknowns) for this
         solution to exist and be real, a list of relationals; ``[]`` when it
-        exists for all admissible values.
+        exists for all admissible values. They include that the equations'
+        denominators and the expressions required nonzero do not vanish
+        (see :func:`solve_exactly`).
 
         For an implicit solution whose reality could not be decided (see
         :meth:`is_reality_decided`), the conditions found (e.g. nonzero
@@ -748,8 +758,11 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
       ``f(q)``); every other symbol is a parameter
     - ``counted`` -- (default: all) the unknowns counted in the dimension
       (e.g. not the Lagrange multipliers)
-    - ``nonzero`` -- expressions that must not vanish (components inside
-      their zero set are removed)
+    - ``nonzero`` -- expressions that must not vanish: components inside
+      the zero set of one are removed, and every solution carries the
+      conditions that its numerator's factors do not vanish at its values
+      (exactly as for the denominators of the equations, where the
+      equations are not defined)
     - ``positive`` -- parameters declared positive (used in the conditions)
     - ``extra`` -- expressions to be evaluated or tested later (their
       symbols are registered as parameters)
@@ -775,6 +788,36 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         ....:     print(s)
         Solution {x: sqrt(1/2)*sqrt(c), y: sqrt(1/2)*sqrt(c)} (dimension 0)
         Solution {x: -sqrt(1/2)*sqrt(c), y: -sqrt(1/2)*sqrt(c)} (dimension 0)
+
+    A solution holds only where the equations are defined and the
+    expressions ``nonzero`` do not vanish, at each of its points: `x = y`
+    solves `(x - y)/y = 0` only for `y \ne 0`, and likewise `x - y = 0`
+    with `y` required nonzero; the branches `y = \pm\sqrt{x - a}` of
+    `y^2 = x - a` end at `x = a` (where `y = 0`) without `y` required
+    nonzero, and before it with::
+
+        sage: a = var('a')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([(x - y)/y], [x, y])]
+        [({x: x, y: x}, [x != 0])]
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x - y], [x, y], nonzero=[y])]
+        [({x: x, y: x}, [x != 0])]
+        sage: [s.conditions() for s in solve_exactly([y^2 - x + a], [x, y])]
+        [[a - x <= 0], [a - x <= 0]]
+        sage: [s.conditions() for s in solve_exactly([y^2 - x + a], [x, y], nonzero=[y])]
+        [[a - x < 0], [a - x < 0]]
+
+    An implicit solution carries these conditions where they are on its
+    parameters and free unknowns (where one is on the unknowns it binds, the
+    saturation still removed the components on which it vanishes).
+
+    A point where a required nonzero expression vanishes is no solution;
+    a point where it vanishes for some values of the parameters exists
+    only for the others::
+
+        sage: [s.values() for s in solve_exactly([x*(x - 1)], [x], nonzero=[x])]
+        [{x: 1}]
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x - a], [x], nonzero=[x - 1])]
+        [({x: a}, [a - 1 != 0])]
     """
     unknowns = expression_list(unknowns, "unknowns", AnalysisError, names=True)
     equations = expression_list(equations, "equations", AnalysisError,
@@ -795,13 +838,15 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     P = T.ring()
     gens = T.equations()
     I = P.ideal(gens) if gens else P.ideal([P(0)])
-    saturate = list(T.denominators())
+    # the polynomials that must not vanish at a solution: the denominators
+    # of the equations, the numerators of the expressions required nonzero
+    required = list(T.denominators())
     for e in nonzero:
         num, dens = T.numerator(e)
         if num == 0:
             raise AnalysisError(f"{e} is required nonzero but is zero", entry="nonzero")
-        saturate.append(num)
-    for f in saturate:
+        required.append(num)
+    for f in required:
         if f.degree() > 0:
             I = I.saturation(f)[0]
     n_eq = len(equations)
@@ -813,14 +858,16 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     _log(f"{len(primes)} components")
     found = [s for prime, sh in primes for s in _solve_component(T, prime, sh, counted_set,
                                                                  positive)]
-    found += _excluded_parts(T, [prime for prime, _ in primes], found, counted_set, positive)
+    found += _excluded_parts(T, [prime for prime, _ in primes], found, counted_set, positive,
+                             required)
     solutions, seen = [], set()
     for s in found:
         key = str(s.values()) if s.is_explicit() and not s._free else None
         if key is None or key not in seen:     # parts of facstd may overlap
             seen.add(key)
             solutions.append(s)
-    solutions = _without_noise(T, solutions, positive)
+    solutions = _pointwise(T, solutions, required, positive)
+    solutions = _without_noise(T, solutions, positive, required)
     solutions.sort(key=_sort_key)
     return SolutionSet(T, solutions, n_eq)
 
@@ -872,7 +919,7 @@ def _order_chosen(P):
     return P.term_order() != TermOrder('degrevlex', P.ngens())
 
 
-def _without_noise(T, solutions, positive):
+def _without_noise(T, solutions, positive, required):
     r"""
     The solutions without those that are no solutions: the branches whose
     conditions no real values satisfy, and the points that a branch
@@ -890,7 +937,9 @@ def _without_noise(T, solutions, positive):
     stays (of more free unknowns) contains it, decided exactly: the
     branch's strict conditions widened to `D \ge 0` (after checking exactly
     that the values are real, finite and on the component at every point
-    the widening adds), the solution satisfying them and equal to the
+    the widening adds, and that no polynomial of ``required`` -- the
+    equations' denominators, the numerators of the expressions required
+    nonzero -- vanishes there), the solution satisfying them and equal to the
     branch's values there -- for a branch of one free unknown without
     parameters at the points in ``AA`` (:func:`_closed_branch`), otherwise
     by identities (:func:`_closed_symbolically`). Where that is not proved
@@ -964,13 +1013,118 @@ def _without_noise(T, solutions, positive):
             continue
         smaller = [s for s in explicit if len(s._free) < len(f._free) and id(s) not in widened]
         if len(f._free) == 1 and not T.parameters():
-            closed, inside = _closed_branch(T, f, [s for s in smaller if not s._free])
+            closed, inside = _closed_branch(T, f, [s for s in smaller if not s._free],
+                                            required)
         else:
-            closed, inside = _closed_symbolically(T, f, smaller, positive)
+            closed, inside = _closed_symbolically(T, f, smaller, positive, required)
         if inside:
             widened[id(f)] = closed
             dropped.update(id(p) for p in inside)
     return [widened.get(id(s), s) for s in kept if id(s) not in dropped]
+
+
+def _pointwise(T, solutions, required, positive):
+    r"""
+    The solutions with the conditions that the polynomials ``required``
+    (the equations' denominators, the numerators of the expressions
+    required nonzero) do not vanish at their values: for each factor `f`
+    of one at the values, `f \ne 0` -- unless it is a nonzero constant, a
+    parameter declared positive, or implied by the solution's conditions
+    (:func:`_implied_nonzero`). A solution where one vanishes identically
+    is no solution: dropped. The saturation removed only the components
+    inside their zero sets; this removes the points of the others there.
+
+    An implicit solution gets the conditions on its parameters and free
+    unknowns only (its conditions are stated on those): a factor in its
+    bound unknowns is not a condition of it (the saturation guarantees
+    that it does not vanish on the whole component).
+
+    EXAMPLES: `x = y` is a solution of `(x - y)/y = 0` only where
+    `y \ne 0`::
+
+        sage: from sage_dynsym.algebra.solving import solve_exactly
+        sage: x, y, a = var('x y a')
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([(x - y)/y], [x, y])]
+        [({x: x, y: x}, [x != 0])]
+
+    The point `x = a` of `x^2 = a x` (besides `x = 0`, which is required
+    nonzero) exists where `a \ne 0`; where `a = 1` too, `x - 1` vanishes::
+
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x^2 - a*x], [x],
+        ....:                                                        nonzero=[x*(x - 1)])]
+        [({x: a}, [a - 1 != 0, a != 0])]
+
+    An implicit family: `\cos q = x` over `x` with `\sin q` in a
+    denominator holds where `\sin^2 q = 1 - x^2` is not zero; `y^3 = x`
+    with `y` in a denominator where `x \ne 0`::
+
+        sage: q = var('q')
+        sage: s = solve_exactly([(x - cos(q))/sin(q)], [x, q])[0]
+        sage: s.is_explicit(), s.free_unknowns(), s.conditions()
+        (False, [x], [x - 1 != 0, x + 1 != 0])
+        sage: s = solve_exactly([(y^3 - x)/y], [x, y])[0]
+        sage: s.is_explicit(), s.free_unknowns(), s.conditions()
+        (False, [x], [x != 0])
+    """
+    result = []
+    for s in solutions:
+        conditions = _nonzero_at(T, s, required, positive)
+        if conditions is None:
+            _log(f"a solution {s.values()} where a required nonzero polynomial vanishes: dropped")
+        elif len(conditions) == len(s._conditions):
+            result.append(s)
+        else:
+            result.append(AlgebraicSolution(T, s._prime, s._free, s._counted, dict(s._values),
+                                            dict(s._ring_values), s._relations, conditions,
+                                            s._real_points, s._reality_known))
+    return result
+
+
+def _nonzero_at(T, solution, required, positive):
+    r"""The conditions of ``solution`` with those that no polynomial of
+    ``required`` vanishes at its values (see :func:`_pointwise`); ``None``
+    if one vanishes identically there."""
+    unknowns = T.unknowns()
+    stated = {str(p) for p in T.parameters()} | {str(unknowns[i]) for i in solution._free}
+
+    def at_values(f):
+        return nonzero_conditions(SR(solution.evaluate(T.symbolic(f))).numerator(), positive)
+
+    def statable(found):
+        return all(set(map(str, c.lhs().variables())) <= stated for c in found)
+
+    conditions = list(solution._conditions)
+    for f in required:
+        found = at_values(f)
+        if found is None:
+            return None
+        # modulo an implicit component a power `f^k` may be a function of
+        # the free unknowns and parameters (`\sin^2 q = 1 - x^2` where
+        # `\cos q = x`; `y^3 = x`): `f \ne 0` exactly where it is not zero
+        for k in IMPLICIT_NONZERO_POWERS if solution._relations else ():
+            if statable(found):
+                break
+            power = at_values(f ** k)
+            found = power if power is not None and statable(power) else found
+        for c in found:
+            h = SR(c.lhs() - c.rhs())
+            if set(map(str, h.variables())) <= stated and \
+                    not _implied_nonzero(h, conditions, positive):
+                conditions.append(c)
+    return conditions
+
+
+def _implied_nonzero(h, conditions, positive):
+    r"""Whether the ``conditions`` imply `h \ne 0`: each factor of `h` is
+    required nonzero by one (up to a constant factor, see
+    :func:`_required_nonzero`), or `h` or `h^2` is a constant multiple of
+    the side of a strict inequality."""
+    nonzero = [SR(c.lhs() - c.rhs()) for c in conditions if c.operator() is operator.ne]
+    strict = [SR(c.lhs() - c.rhs()) for c in conditions
+              if c.operator() in (operator.gt, operator.lt)]
+    return _required_nonzero(h, nonzero, [], positive) or \
+        any(_positive_multiple(D, g) or _positive_multiple(-D, g)
+            for D in strict for g in (h, h ** 2))
 
 
 def _never_real(solution, positive, cache):
@@ -1001,14 +1155,15 @@ def _never_real(solution, positive, cache):
     return cache[key]
 
 
-def _closed_branch(T, family, points):
+def _closed_branch(T, family, points, required):
     r"""
     The branch ``family`` (one free unknown, no parameters) with its strict
     conditions widened (`D > 0` to `D \ge 0`) and the ``points`` it then
     contains; ``(family, [])`` when no point is contained or the widening
     cannot be proved right. It is right when at every point it adds (the
     real roots of the boundaries that satisfy the widened conditions) the
-    branch's values are real, finite and on the component: exact
+    branch's values are real, finite and on the component, and no
+    polynomial of ``required`` vanishes there: exact
     arithmetic in ``AA``, the generators of the component's prime ideal
     evaluated there.
     """
@@ -1035,7 +1190,8 @@ def _closed_branch(T, family, points):
             at = SR(QQ(r)) if r in QQ else r.radical_expression()
             if at.parent() is not SR:
                 return family, []       # no radicals: not compared exactly here
-            if _holds_at(closed, u, at) and _values_at(T, family, u, at, check=True) is None:
+            if _holds_at(closed, u, at) and \
+                    _values_at(T, family, u, at, check=True, required=required) is None:
                 return family, []
     inside = []
     for p in points:
@@ -1056,7 +1212,7 @@ def _closed_branch(T, family, points):
                              closed), inside
 
 
-def _closed_symbolically(T, family, others, positive):
+def _closed_symbolically(T, family, others, positive, required):
     r"""
     The branch ``family`` with its strict conditions widened (`D > 0` to
     `D \ge 0`) and the solutions among ``others`` (explicit, with fewer
@@ -1066,9 +1222,11 @@ def _closed_symbolically(T, family, others, positive):
     The widening is proved by identities, for every value of the
     parameters and free unknowns at once: each square root `\sqrt R` in
     the values is a new variable `s` with `s^2 = R`; `R \ge 0` must be
-    one of the widened conditions (so `s` is real), no denominator may
-    hold an `s` (it could vanish where `R = 0`) and each of its factors
-    must be required nonzero by a condition; then the generators of the
+    one of the widened conditions (so `s` is real), no denominator -- of
+    the values, of the equations, or a polynomial of ``required`` (the
+    numerators required nonzero) at the values -- may hold an `s` (it
+    could vanish where `R = 0`) and each of its factors must be required
+    nonzero by a condition; then the generators of the
     component, at the values, must lie in the ideal of the `s^2 - R`
     (a Gröbner basis decides it): they vanish wherever the values are
     defined, at the points the widening adds too. A solution is
@@ -1085,7 +1243,7 @@ def _closed_symbolically(T, family, others, positive):
     wide = {operator.gt: operator.ge, operator.lt: operator.le}
     closed = [wide[c.operator()](c.lhs(), c.rhs()) if c.operator() in wide else c
               for c in conditions]
-    if not _widening_holds(T, family, closed, positive):
+    if not _widening_holds(T, family, closed, positive, required):
         return family, []
     inside = [s for s in others if _inside(T, family, closed, s)]
     if not inside:
@@ -1123,7 +1281,7 @@ class _SquareRoots(ExpressionWalker):
         raise ValueError(f"{e} is not a square root of a rational expression")
 
 
-def _widening_holds(T, family, closed, positive):
+def _widening_holds(T, family, closed, positive, required):
     r"""Whether the values of ``family`` are real, finite and on its
     component wherever the ``closed`` conditions hold (see
     :func:`_closed_symbolically`)."""
@@ -1144,12 +1302,13 @@ def _widening_holds(T, family, closed, positive):
             return False
     at = dict(zip(T.unknowns(), values))
     try:
-        # finite, and where the equations are defined (no denominator of
-        # theirs vanishing at the values)
+        # finite, and where the equations are defined and the expressions
+        # required nonzero are not zero (no polynomial of ``required``
+        # vanishing at the values)
         if not all(_required_nonzero(SR(v).denominator(), nonzero, s_symbols, positive)
                    for v in values + [R for _, R in roots.roots.values()]) or \
                 not all(_required_nonzero(SR(T.symbolic(d)).subs(at).numerator(), nonzero,
-                                          s_symbols, positive) for d in T.denominators()):
+                                          s_symbols, positive) for d in required):
             return False
     except (TypeError, ValueError, ArithmeticError):
         return False
@@ -1229,10 +1388,12 @@ def _holds_at(conditions, u, at):
         return False
 
 
-def _values_at(T, family, u, at, check=False):
+def _values_at(T, family, u, at, check=False, required=()):
     r"""The values (index: element of ``AA``) of the branch at ``u =
     at``; ``None`` where one is not real or finite or (``check``) the
-    point is not on the component."""
+    point is not on the component or one of the polynomials ``required``
+    (the equations' denominators, the numerators required nonzero)
+    vanishes there."""
     unknowns = T.unknowns()
     values = {}
     try:
@@ -1249,7 +1410,8 @@ def _values_at(T, family, u, at, check=False):
                 return None
             images[P.gens().index(P(gens[0]))] = values[i]
         if any(x is None for x in images) or \
-                any(g(*images) != 0 for g in family._prime.gens()):
+                any(g(*images) != 0 for g in family._prime.gens()) or \
+                any(f(*images) == 0 for f in required):
             return None
     return values
 
@@ -1277,7 +1439,7 @@ def _sort_key(s):
 # one component
 # ---------------------------------------------------------------------------
 
-def _excluded_parts(T, known, solutions, counted, positive):
+def _excluded_parts(T, known, solutions, counted, positive, required):
     r"""
     The solutions on the points of a component that the strict conditions
     of its solutions on unknowns exclude: where a denominator of a value or
@@ -1299,6 +1461,17 @@ def _excluded_parts(T, known, solutions, counted, positive):
         sage: [s.values() for s in solve_exactly([y^2 - 2*x*y + a, y*z - 1], [x, y, z])
         ....:  if not s.dimension()]
         [{x: sqrt(a), y: sqrt(a), z: 1/sqrt(a)}, {x: -sqrt(a), y: -sqrt(a), z: -1/sqrt(a)}]
+
+    A part where an expression required nonzero vanishes is no solution:
+    with `x` (or `x + y`) required nonzero, the line `x = y = 0` is not
+    one; with `z - 1`, it is where `z \ne 1`::
+
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z],
+        ....:                                                        nonzero=[x + y])]
+        [({x: x, y: y, z: y/x}, [x != 0, x + y != 0])]
+        sage: [(s.values(), s.conditions()) for s in solve_exactly([x*z - y], [x, y, z],
+        ....:                                                        nonzero=[z - 1])]
+        [({x: 0, y: 0, z: z}, [z - 1 != 0]), ({x: x, y: y, z: y/x}, [x != 0, x - y != 0])]
     """
     known, todo, found, done = list(known), list(solutions), [], set()
     # the primes each part contains because it was cut out of them: no
@@ -1319,8 +1492,10 @@ def _excluded_parts(T, known, solutions, counted, positive):
                 if any(id(K) not in above and not _contains(P, K) and _contains(Q, K)
                        for K in known) or \
                         any(not isinstance(Q, ShapePrime) and Q.reduce(f) == 0
-                            for f in T.denominators()):
-                    continue        # on another component, or where the equations are not defined
+                            for f in required):
+                    # on another component, or where the equations are not
+                    # defined or an expression required nonzero vanishes
+                    continue
                 inside[id(Q)] = above
                 known.append(Q)
                 new = _solve_component(T, Q, sh, counted, positive)
