@@ -31,11 +31,12 @@ that of this process and its children. With ``-v`` the solver's
 progress (Sage's ``verbose``: translation, factorizing Groebner basis,
 components) is printed.
 
-Target (issue 33): each under a minute. Measured 2026-12-05 (fifth
-session) on 2 cores lightly loaded (wall = CPU of the solving child):
-Clebsch 0.6 s, B diagonal 2.6 s, B symmetric with values 11.6 s, Brun on
-M.gamma = 0 2.8 s, Brun on M.gamma = c 30.3 s, and the generic case with
-its 12 coefficients symbolic 58.9 s (it did not finish in 600 s before).
+Target (issue 33): each under a minute. Measured 2026-12-05 (sixth
+session) on 2 cores, idle machine (wall = CPU of the solving child):
+Clebsch 0.6 s, B diagonal 2.0 s, B symmetric with values 11.5 s, Brun on
+M.gamma = 0 2.9 s, Brun on M.gamma = c 33.9 s, and the generic case with
+its 12 coefficients symbolic 11.2 s (62 s at the start of that session,
+over 600 s before the fifth).
 
 What the generic case needed, in the order the solver meets it:
 
@@ -57,7 +58,15 @@ What the generic case needed, in the order the solver meets it:
   basis took 445 s, its factors are reduced instead;
 - primes compared by their reduced bases, ideals that keep the basis
   they were built from, and the parts where a multiplier's denominator
-  vanishes never compared with the primes they were cut out of.
+  vanishes never compared with the primes they were cut out of;
+- (sixth session, 62 s to 11 s) a specialization that reads each
+  polynomial's coefficients once (converting Singular's rational
+  functions in 12 parameters to Sage's was 16 s), primality at random
+  values tested before the linear substitutions (13 s of them over the
+  field, nothing over QQ), the unit ideal read off the basis in the
+  ring's own order (Sage's ``is_one`` computes a ``degrevlex`` basis, the
+  slow order here: 15 s), and containment tested only between primes of
+  different dimensions.
 
 The result: the rest point M = p = 0, the family of dimension 2 (p an
 eigenvector of C - (B + lambda2) A^-1 (B + lambda2), M = -A^-1 (B +
