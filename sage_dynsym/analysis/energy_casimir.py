@@ -45,7 +45,27 @@ from sage.symbolic.ring import SR
 from ..errors import AnalysisError, brief
 from .verdict import StabilityVerdict
 
-__all__ = ['energy_casimir_stability']
+__all__ = ['energy_casimir_stability', 'hamiltonian_field']
+
+
+def hamiltonian_field(H, poisson_matrix, variables):
+    r"""
+    The vector field `J(x) \nabla H` of the Hamiltonian ``H`` for the
+    Poisson matrix ``poisson_matrix`` in ``variables`` (a vector of
+    symbolic expressions).
+
+    EXAMPLES: the free rigid body on `so(3)^*`, `J(M) = [M\times]`, gives
+    Euler's equations `\dot M = M \times \nabla H`::
+
+        sage: from sage_dynsym.analysis.energy_casimir import hamiltonian_field
+        sage: M1, M2, M3, I1, I2, I3 = var('M1 M2 M3 I1 I2 I3')
+        sage: J = matrix([[0, -M3, M2], [M3, 0, -M1], [-M2, M1, 0]])
+        sage: H = (M1^2/I1 + M2^2/I2 + M3^2/I3)/2
+        sage: hamiltonian_field(H, J, [M1, M2, M3])
+        (-M2*M3/I2 + M2*M3/I3, M1*M3/I1 - M1*M3/I3, -M1*M2/I1 + M1*M2/I2)
+    """
+    return (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in variables])
+            ).column(0)
 
 
 def energy_casimir_stability(H, casimirs, poisson_matrix, variables, at, integrals=(),
@@ -123,8 +143,7 @@ def energy_casimir_stability(H, casimirs, poisson_matrix, variables, at, integra
     def hessian(f):
         return matrix(QQbar, [[at_point(SR(f).diff(a).diff(b)) for b in variables]
                               for a in variables])
-    field = (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in variables])
-             ).column(0)
+    field = hamiltonian_field(H, poisson_matrix, variables)
     try:
         value = [at_point(f) for f in field]
         gradient = matrix(QQbar, [[at_point(SR(H).diff(v)) for v in variables]])

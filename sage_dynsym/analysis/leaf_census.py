@@ -97,6 +97,7 @@ from ._census import (log, census_arguments, check_values, stationary_ideal,
                       add_zero_set_factors, check_main_thread, verdict_counts)
 from .census import Census
 from .charts import configuration_points
+from .energy_casimir import hamiltonian_field
 from .point_stability import relative_equilibrium_verdict
 from .stationary import stationary_solutions
 
@@ -353,11 +354,6 @@ def _lagrange_function(H, casimirs, x, levels):
     return W, x + lam
 
 
-def _hamiltonian_field(H, poisson_matrix, x):
-    r"""The vector field `J(x)\nabla H` (a vector of expressions)."""
-    return (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in x])).column(0)
-
-
 def leaf_first_approximation_polynomials(H, casimirs, poisson_matrix, variables, levels,
                                          parameters):
     r"""
@@ -415,7 +411,7 @@ def leaf_first_approximation_polynomials(H, casimirs, poisson_matrix, variables,
     """
     x = [SR(v) for v in variables]
     W, u = _lagrange_function(H, casimirs, x, levels)
-    field = _hamiltonian_field(H, poisson_matrix, x)
+    field = hamiltonian_field(H, poisson_matrix, x)
     entries = [f.diff(v) for f in field for v in x]
     T, ideal, state, _ = stationary_ideal([W.diff(v) for v in u], u, parameters, entries)
     P = T.ring()
@@ -495,7 +491,7 @@ def relative_equilibria_at(H, casimirs, poisson_matrix, variables, levels):
         (2, [1])
     """
     x = [SR(v) for v in variables]
-    field = _hamiltonian_field(H, poisson_matrix, x)
+    field = hamiltonian_field(H, poisson_matrix, x)
     sols = stationary_solutions([SR(H)] + [SR(C) for C in casimirs], x, equations=list(field),
                                 levels=list(levels))
     found = []

@@ -40,7 +40,7 @@ from sage.rings.real_mpfi import RealIntervalField
 from sage.symbolic.ring import SR
 
 from .charts import algebraic_value
-from .energy_casimir import energy_casimir_stability
+from .energy_casimir import energy_casimir_stability, hamiltonian_field
 
 __all__ = ['point_verdict', 'is_gyroscopic', 'spectrum_verdict', 'relative_equilibrium_verdict']
 
@@ -398,7 +398,7 @@ def _algebraic_leaf_verdict(H, casimirs, poisson_matrix, x, point):
     verdict = energy_casimir_stability(H, casimirs, poisson_matrix, x, at).verdict()
     if verdict != 'undecided':
         return verdict
-    field = (matrix(SR, poisson_matrix) * matrix(SR, [[SR(H).diff(v)] for v in x])).column(0)
+    field = hamiltonian_field(H, poisson_matrix, x)
     A = matrix(QQbar, [[QQbar(SR(f).diff(v).subs(at)) for v in x] for f in field])
     G = matrix(QQbar, [[QQbar(SR(C).diff(v).subs(at)) for v in x] for C in casimirs])
     if G.rank() < len(casimirs):

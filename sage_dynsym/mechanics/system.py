@@ -133,7 +133,7 @@ from .operating_points import checked_operating_points
 from .report import report_title, report_sections
 from .system_checks import check_declared_symbols, checked_load, PhysicalConditions
 from .system_kinematics import SystemKinematics
-from .system_lagrangian import LagrangianBuilder, check_calculus_method
+from .system_lagrangian import LagrangianBuilder
 from .system_numerics import MechanicalNumerics
 
 __all__ = ['MechanicalSystem', 'check_constraints', 'DelegatedMethod']
@@ -791,7 +791,8 @@ class MechanicalSystem(MechanicalFormat, MechanicalNumerics, Model):
           ``sage.manifolds.manifold.TopologicalManifold.set_calculus_method``
           (SageManifolds), chosen on the manifold and passed to its charts
         """
-        self._builder = self._lagrangian_builder(check_calculus_method(method))
+        # the builder checks the method (before the caches below are touched)
+        self._builder = self._lagrangian_builder(method)
         self.lagrangian.clear_cache()
         # the numerical forms made of the former equations
         object_cache(self).clear()
