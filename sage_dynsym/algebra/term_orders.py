@@ -49,8 +49,13 @@ __all__ = ['ORDER_TRIAL_SECONDS', 'ORDER_ROUNDS', 'block_order', 'restricted_ord
            'reverse_block', 'fastest_order']
 
 #: Seconds each candidate order gets in the first round of
-#: :func:`fastest_order`; every round gives each four times more.
-ORDER_TRIAL_SECONDS = 2
+#: :func:`fastest_order`; every round gives each four times more. The
+#: choice depends on the machine's load: a first candidate that needs a
+#: fraction of a second (Brun's problem on M.gamma = 0 in ``degrevlex``)
+#: lost its 2 s once under a loaded test run, and the order chosen instead
+#: made a later step run for over half an hour; 5 s leaves a margin of
+#: more than twenty times.
+ORDER_TRIAL_SECONDS = 5
 
 #: Rounds of :func:`fastest_order` before it gives up on the candidates.
 ORDER_ROUNDS = 3
