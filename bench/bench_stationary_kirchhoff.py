@@ -35,9 +35,12 @@ Target (issue 33): each under a minute. Measured 2026-12-05 (sixth
 session) on 2 cores, idle machine (wall = CPU of the solving child):
 Clebsch 0.6 s, B diagonal 2.0 s, B symmetric with values 11.5 s, Brun on
 M.gamma = 0 2.9 s, Brun on M.gamma = c 33.9 s, and the generic case with
-its 12 coefficients symbolic 11.2 s (15.0 s once the first round of the
-order race was raised from 2 to 5 s; 62 s at the start of that session,
-over 600 s before the fifth).
+its 12 coefficients symbolic 11.2 s (62 s at the start of that session,
+over 600 s before the fifth). Measured 2026-12-05 (seventh session), the
+order race timed in processor time with 3 s for its first round: Clebsch
+0.6 s, B diagonal 1.9 s, B symmetric with values 11.7 s, Brun on
+M.gamma = 0 3.0 s, Brun on M.gamma = c 32.0 s, generic 12.1 s; the same
+solutions in every case.
 
 What the generic case needed, in the order the solver meets it:
 

@@ -15,8 +15,9 @@ in the analysis (many components, most of them points):
    `\sqrt{I} + (F(u))` (the shape lemma; a random form separates the
    points with probability one, and separation is checked by degrees);
 3. a positive-dimensional part goes to Singular's ``minAssGTZ``
-   (Gianni--Trager--Zacharias) for at most :data:`GTZ_BUDGET` seconds
-   (in a forked process, stopped safely),
+   (Gianni--Trager--Zacharias) for at most :data:`GTZ_BUDGET` seconds of
+   processor time (in a forked process, stopped safely; processor time, so
+   that the route does not depend on the machine's load),
    then to the characteristic sets of ``minAssChar`` (Wang), which is far
    faster on some ideals (the stationary set of a generic Kirchhoff
    Hamiltonian at given parameter values: 2.7 s against over 40 s).
@@ -75,8 +76,9 @@ SEPARATING_ATTEMPTS = 8
 #: generators (readable); larger ones are kept as a :class:`ShapePrime`.
 SMALL_DEGREE = 4
 
-#: Seconds given to Gianni--Trager--Zacharias on a positive-dimensional part
-#: before the characteristic sets are tried instead.
+#: Seconds of processor time given to Gianni--Trager--Zacharias on a
+#: positive-dimensional part before the characteristic sets are tried
+#: instead.
 GTZ_BUDGET = 10
 
 #: Random rational values of the parameters at which a part must be prime
@@ -235,7 +237,7 @@ def positive_dimensional_primes(J, budget=None):
     the rest is decomposed in the ring of the remaining variables, where
     over a field of parameters a part that is prime at random rational
     values of the parameters is taken as prime (:func:`prime_by_specialization`);
-    otherwise by Singular's ``minAssGTZ`` within ``budget`` seconds, else
+    otherwise by Singular's ``minAssGTZ`` within ``budget`` seconds of processor time, else
     by ``minAssChar``.
 
     ``minAssGTZ`` runs in a forked process killed at the budget (an alarm
@@ -246,7 +248,8 @@ def positive_dimensional_primes(J, budget=None):
     INPUT:
 
     - ``J`` -- an ideal of a polynomial ring over a field
-    - ``budget`` -- (default: :data:`GTZ_BUDGET`) seconds for ``minAssGTZ``
+    - ``budget`` -- (default: :data:`GTZ_BUDGET`) seconds of processor time
+      for ``minAssGTZ``
 
     OUTPUT: a list of prime ideals of the ring of ``J``
 
@@ -303,7 +306,8 @@ def positive_dimensional_primes(J, budget=None):
 
 
 def _gtz_or_characteristic_sets(J, budget):
-    r"""``minAssGTZ`` within ``budget`` seconds, else ``minAssChar``.
+    r"""``minAssGTZ`` within ``budget`` seconds of processor time, else
+    ``minAssChar``.
 
     GTZ runs in a forked process killed at the budget: a Singular library
     call interrupted by an alarm leaves Singular's state broken in this
@@ -319,12 +323,14 @@ def _gtz_or_characteristic_sets(J, budget):
         if len([g for g in J.gens() if g != 0]) == 1:
             return J.minimal_associated_primes()
         _, (how, found) = forked(lambda send: [[str(g) for g in Q.gens()]
-                                               for Q in J.minimal_associated_primes()], budget)
+                                               for Q in J.minimal_associated_primes()],
+                                 cpu_seconds=budget)
         if how == 'value':
             return [P.ideal([P(g) for g in Q]) for Q in found]
         if how == 'error':
             raise found
-        _log(f"minAssGTZ: {how} ({found}): characteristic sets instead")
+        _log(f"minAssGTZ: over {found} s of processor time: characteristic sets instead"
+             if how == 'cpu' else f"minAssGTZ: {how} ({found}): characteristic sets instead")
     singular_lib('primdec.lib')
     return [P.ideal(list(Q)) for Q in singular_function('minAssChar')(J)]
 

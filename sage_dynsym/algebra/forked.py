@@ -10,6 +10,12 @@ kills it after ``seconds``. It uses no signal: the wait is a ``select`` on
 the pipe, so it works in any thread (Sage's ``fork`` decorator waits under
 an alarm, which only the main thread receives).
 
+A budget that decides *which way* a computation goes (the term order
+tried first, a decomposition that falls back on another) must not depend
+on the machine's load: ``cpu_seconds`` stops the child after that much
+processor time of its own (the kernel's limit ``RLIMIT_CPU``), which a
+busy machine does not shorten, where wall-clock ``seconds`` would.
+
 EXAMPLES::
 
     sage: from sage_dynsym.algebra.forked import forked
@@ -21,8 +27,10 @@ EXAMPLES::
     2
     ([0, 1, 2], ('timeout', 1))
 """
+import math
 import os
 import pickle
+import resource
 import select
 import signal
 import struct
@@ -34,7 +42,7 @@ __all__ = ['forked']
 _LENGTH = struct.Struct('>Q')
 
 
-def forked(compute, seconds=None, receive=None):
+def forked(compute, seconds=None, receive=None, cpu_seconds=None):
     r"""
     Run ``compute(send)`` in a forked process stopped after ``seconds``.
 
@@ -47,12 +55,16 @@ def forked(compute, seconds=None, receive=None):
       which the child is killed
     - ``receive`` -- (optional) a function called here on each object sent,
       as soon as it arrives (e.g. to print what the child computed)
+    - ``cpu_seconds`` -- (default: ``None``, no limit) seconds of processor
+      time of the child after which it is stopped (rounded up to a whole
+      second, the kernel's unit)
 
     OUTPUT: a pair ``(sent, outcome)``: the list of the objects sent, and
     ``('value', v)`` (``compute`` returned ``v``), ``('error', e)`` (it
     raised the exception ``e``: an exception that cannot be pickled comes
-    back as a ``RuntimeError`` naming it), ``('timeout', seconds)`` or
-    ``('died', why)`` (the child ended without a result, e.g. a crash)
+    back as a ``RuntimeError`` naming it), ``('timeout', seconds)``,
+    ``('cpu', cpu_seconds)`` (over its processor time) or ``('died',
+    why)`` (the child ended without a result, e.g. a crash)
 
     The standard output and error of the child are this process's own
     (flushed before the fork).
@@ -65,6 +77,14 @@ def forked(compute, seconds=None, receive=None):
         ([], ('value', [x^2, x*y]))
         sage: forked(lambda send: 1/0)
         ([], ('error', ZeroDivisionError('rational division by zero')))
+
+    A child that computes for longer than one second of processor time is
+    stopped, however long it waited before; sleeping costs none::
+
+        sage: forked(lambda send: sleep(2) or factor(2^64 + 1), cpu_seconds=1)
+        ([], ('value', 274177 * 67280421310721))
+        sage: forked(lambda send: len([k for k in range(10^10)]), cpu_seconds=1)
+        ([], ('cpu', 1))
 
     TESTS::
 
@@ -83,6 +103,8 @@ def forked(compute, seconds=None, receive=None):
     pid = os.fork()
     if pid == 0:
         os.close(read_end)
+        if cpu_seconds is not None:
+            _limit_processor_time(cpu_seconds)
         _child(compute, write_end)
     os.close(write_end)
     sent, outcome = [], None
@@ -92,11 +114,26 @@ def forked(compute, seconds=None, receive=None):
         os.close(read_end)
         if outcome is None or outcome[0] == 'timeout':
             os.kill(pid, signal.SIGKILL)
-        _, status = os.waitpid(pid, 0)
+        _, status, usage = os.wait4(pid, 0)
     if outcome[0] == 'died':
+        if (cpu_seconds is not None and os.WIFSIGNALED(status)
+                and usage.ru_utime + usage.ru_stime >= math.ceil(cpu_seconds) - 0.5):
+            return sent, ('cpu', cpu_seconds)
         outcome = ('died', f"killed by signal {os.WTERMSIG(status)}" if os.WIFSIGNALED(status)
                    else f"exit status {os.WEXITSTATUS(status)}")
     return sent, outcome
+
+
+def _limit_processor_time(seconds):
+    # in the child, whose processor time starts at 0 at the fork: the kernel
+    # sends SIGXCPU at the soft limit and SIGKILL a second later (if SIGXCPU
+    # was caught); no core file is written for either
+    whole = max(1, math.ceil(seconds))
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    _, hard = resource.getrlimit(resource.RLIMIT_CPU)
+    if hard != resource.RLIM_INFINITY and hard <= whole:
+        whole = max(1, hard - 1)
+    resource.setrlimit(resource.RLIMIT_CPU, (whole, whole + 1))
 
 
 def _child(compute, write_end):

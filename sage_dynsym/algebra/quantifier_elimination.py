@@ -40,7 +40,9 @@ REFERENCES:
 - C. W. Brown, *QEPCAD B: a program for computing with semi-algebraic sets
   using CADs*, ACM SIGSAM Bulletin 37 (2003) 97--108.
 """
+import math
 import re
+import signal
 import shlex
 import subprocess
 
@@ -55,10 +57,15 @@ from ..errors import AnalysisError
 from .conditions import simplify_conjunction
 from .translation import Translation
 
-__all__ = ['QEPCAD_TIMEOUT', 'QEPCAD_MEMCELLS', 'QEPCAD_ANSWERS_KEPT', 'exists', 'exists_real_solution']
+__all__ = ['QEPCAD_TIMEOUT', 'QEPCAD_WALL_FACTOR', 'QEPCAD_MEMCELLS', 'QEPCAD_ANSWERS_KEPT', 'exists', 'exists_real_solution']
 
-#: Time limit (seconds) of one QEPCAD run.
+#: Time limit of one QEPCAD run: seconds of its processor time, so that
+#: whether a question is decided does not depend on the machine's load.
 QEPCAD_TIMEOUT = 60
+
+#: A QEPCAD run is also stopped after this many times its time limit in
+#: wall-clock seconds (a process that waits instead of computing).
+QEPCAD_WALL_FACTOR = 10
 
 #: Memory cells given to QEPCAD (its garbage-collected space).
 QEPCAD_MEMCELLS = 20_000_000
@@ -97,7 +104,7 @@ def exists(quantified, conditions, positive=(), timeout=QEPCAD_TIMEOUT):
     - ``conditions`` -- list of relationals (or expressions, meaning ``> 0``),
       rational in their symbols (other parts are atoms)
     - ``positive`` -- symbols declared positive (assumed)
-    - ``timeout`` -- seconds allowed to QEPCAD
+    - ``timeout`` -- seconds of processor time allowed to QEPCAD
 
     OUTPUT: a list of alternatives, each a list of relationals in the
     remaining symbols
@@ -244,14 +251,21 @@ def _qepcad_answer(script, timeout):
                             "timeout=, or simplify the problem)", entry="exists")
     if len(_answers) >= QEPCAD_ANSWERS_KEPT:
         _answers.pop(next(iter(_answers)))
-    command = shlex.split(_qepcad_command())
+    # the limit of processor time set by the shell that starts QEPCAD
+    # (ulimit -t, whole seconds): the kernel stops it there
+    seconds = max(1, math.ceil(timeout))
+    command = ['sh', '-c', f'ulimit -t {seconds} && exec "$@"', 'sh']
+    command += shlex.split(_qepcad_command())
     try:
         run = subprocess.run(command, input=script, capture_output=True, text=True,
-                             timeout=timeout)
-    except subprocess.TimeoutExpired as err:
+                             timeout=QEPCAD_WALL_FACTOR * seconds)
+        over = run.returncode in (-signal.SIGXCPU, -signal.SIGKILL)
+    except subprocess.TimeoutExpired:
+        over = True
+    if over:
         _answers[script] = ('timeout', timeout)
         raise AnalysisError(f"QEPCAD did not finish within {timeout} s (raise "
-                            "timeout=, or simplify the problem)", entry="exists") from err
+                            "timeout=, or simplify the problem)", entry="exists")
     match = re.search(r"An equivalent quantifier-free formula:\s*(.*?)\s*=+\s+The End",
                       run.stdout, re.S)
     if match is None:

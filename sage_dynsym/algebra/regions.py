@@ -42,7 +42,8 @@ __all__ = ['WITNESS_SAMPLES', 'EMPTINESS_TIMEOUT', 'MAX_ALTERNATIVES', 'simplify
 #: elimination is asked whether it is empty.
 WITNESS_SAMPLES = 400
 
-#: Seconds given to QEPCAD to decide that an alternative is empty.
+#: Seconds of processor time given to QEPCAD to decide that an alternative
+#: is empty.
 EMPTINESS_TIMEOUT = 20
 
 #: More alternatives than this in one region are not simplified further:

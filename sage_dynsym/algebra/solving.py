@@ -133,7 +133,7 @@ IMPLICIT_NONZERO_POWERS = (2, 3, 4)
 #: only up to this many variables (parameters and unknowns together) ...
 REALITY_QE_VARIABLES = 5
 
-#: ... and for at most this many seconds.
+#: ... and for at most this many seconds of processor time (of QEPCAD).
 REALITY_QE_TIMEOUT = 10
 
 
@@ -1682,7 +1682,7 @@ def _branches(T, family, positive):
 #: looking for a rational parametrization of an implicit family ...
 PARAMETRIZATION_TRIES = 24
 
-#: ... and no new one after this many seconds ...
+#: ... and no new one after this many seconds of processor time ...
 PARAMETRIZATION_SECONDS = 20
 
 #: ... and only with at most this many unknowns and parameters together:
@@ -1718,17 +1718,20 @@ def _parametrized(T, prime, family, counted, positive):
         ({x: (y^3 + 1)/(a*y), y: y, z: 1/y}, [y != 0, a != 0])
     """
     from itertools import combinations
-    from time import monotonic
+    # processor time of this thread (the computing is Singular's, here),
+    # not the clock: the families parametrized must not depend on the
+    # machine's load, nor on other threads of this process
+    from time import thread_time
     n, d = len(T.unknowns()), len(family._free)
     if n + len(T.parameters()) > PARAMETRIZATION_VARIABLES:
         _log(f"an implicit family in {n} unknowns and {len(T.parameters())} parameters: "
              "not tried by other free unknowns")
         return None
     order = [i for i in range(n) if i in counted] + [i for i in range(n) if i not in counted]
-    tried, start = 0, monotonic()
+    tried, start = 0, thread_time()
     _log(f"an implicit family of dimension {d}: trying other free unknowns")
     for choice in combinations(order, d):
-        if tried >= PARAMETRIZATION_TRIES or monotonic() - start > PARAMETRIZATION_SECONDS:
+        if tried >= PARAMETRIZATION_TRIES or thread_time() - start > PARAMETRIZATION_SECONDS:
             break
         if sorted(choice) == sorted(family._free):
             continue

@@ -48,14 +48,14 @@ from .forked import forked
 __all__ = ['ORDER_TRIAL_SECONDS', 'ORDER_ROUNDS', 'block_order', 'restricted_order',
            'reverse_block', 'fastest_order']
 
-#: Seconds each candidate order gets in the first round of
-#: :func:`fastest_order`; every round gives each four times more. The
-#: choice depends on the machine's load: a first candidate that needs a
+#: Seconds of processor time each candidate order gets in the first round
+#: of :func:`fastest_order`; every round gives each four times more.
+#: Processor time, not wall-clock time: the choice must not depend on the
+#: machine's load. Timed by the clock, a first candidate that needs a
 #: fraction of a second (Brun's problem on M.gamma = 0 in ``degrevlex``)
 #: lost its 2 s once under a loaded test run, and the order chosen instead
-#: made a later step run for over half an hour; 5 s leaves a margin of
-#: more than twenty times.
-ORDER_TRIAL_SECONDS = 5
+#: made a later step run for over half an hour.
+ORDER_TRIAL_SECONDS = 3
 
 #: Rounds of :func:`fastest_order` before it gives up on the candidates.
 ORDER_ROUNDS = 3
@@ -174,9 +174,14 @@ def fastest_order(ideal, candidates):
     r"""
     The first of the term orders ``candidates`` in which a Gröbner basis of
     ``ideal`` is found, trying each in turn in a forked process within
-    :data:`ORDER_TRIAL_SECONDS`, then four and sixteen times as long
-    (:data:`ORDER_ROUNDS` rounds); ``None`` if none finished (or the
-    ring's own order, given as ``None``, finished first).
+    :data:`ORDER_TRIAL_SECONDS` of processor time, then four and sixteen
+    times as long (:data:`ORDER_ROUNDS` rounds); ``None`` if none finished
+    (or the ring's own order, given as ``None``, finished first, or a
+    trial failed other than by its budget).
+
+    The budgets are processor time of the child, so the order chosen is
+    the same on a busy machine as on an idle one (a busy machine only
+    makes the trials take longer).
 
     A candidate ``None`` stands for the ring's own order. The caller
     computes the basis again in the order returned: it cannot be brought
@@ -205,10 +210,17 @@ def fastest_order(ideal, candidates):
         for order in candidates:
             R = P if order is None else P.change_ring(order=order)
             J = R.ideal([R(g) for g in ideal.gens()])
-            _, (how, _) = forked(lambda send: len(J.groebner_basis()), budget)
+            _, (how, why) = forked(lambda send: len(J.groebner_basis()), cpu_seconds=budget)
             if how == 'value':
-                verbose(f"Groebner basis within {budget} s in the term order {order}",
+                verbose(f"Groebner basis within {budget} s of processor time in the term "
+                        f"order {order}",
                         level=1, caller_name="fastest_order")
                 return order
+            if how != 'cpu':
+                # a child that failed says nothing about the orders: the
+                # ring's own order, where the error (if any) is raised
+                verbose(f"the trial of the term order {order} failed ({how}: {why}): the "
+                        "ring's own order", level=1, caller_name="fastest_order")
+                return None
         budget *= 4
     return None

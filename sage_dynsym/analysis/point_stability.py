@@ -198,15 +198,27 @@ def _sturm_counts(M, G, K, prec):
     p = (M.change_ring(F) * z**2 + G.change_ring(F) * z + K.change_ring(F)).det()
     n = K.nrows()
     q = PolynomialRing(F, 'mu')([p[2 * k] for k in range(n + 1)])
-    sequence = [q, q.derivative()]
-    while sequence[-1].degree() > 0:
-        r = -(sequence[-2] % sequence[-1])
-        if r.degree() < 0 or r.leading_coefficient().contains_zero():
-            return None     # its degree is not certain (or q is not squarefree)
-        sequence.append(r)
-    if any(f.leading_coefficient().contains_zero() or f[0].contains_zero() for f in sequence):
+    # a remainder whose leading coefficient may be zero has no certain
+    # degree (or q is not squarefree)
+    sequence = _sturm_sequence(q, lambda c: c.contains_zero())
+    if sequence is None or any(f.leading_coefficient().contains_zero() or f[0].contains_zero()
+                               for f in sequence):
         return None
     return _sturm_root_counts(sequence, lambda x: 1 if x > 0 else -1)
+
+
+def _sturm_sequence(f, uncertain=lambda c: False):
+    r"""The Sturm sequence of the squarefree polynomial ``f`` (``f``, its
+    derivative, then minus the remainders), or ``None`` when a remainder is
+    zero or its leading coefficient is ``uncertain`` (an interval that
+    contains zero)."""
+    sequence = [f, f.derivative()]
+    while sequence[-1].degree() > 0:
+        r = -(sequence[-2] % sequence[-1])
+        if r.degree() < 0 or uncertain(r.leading_coefficient()):
+            return None
+        sequence.append(r)
+    return sequence
 
 
 def _sturm_root_counts(sequence, sign):
@@ -447,10 +459,7 @@ def _number_field_spectrum_verdict(poly, to_algebraic):
     if zero:
         free = free // w
     if free.degree() > 0:
-        sequence = [free, free.derivative()]
-        while sequence[-1].degree() > 0:
-            sequence.append(-(sequence[-2] % sequence[-1]))
-        negative, positive = _sturm_root_counts(sequence, _sign)
+        negative, positive = _sturm_root_counts(_sturm_sequence(free), _sign)
     else:
         negative = positive = 0
     if negative + positive < free.degree() or positive:
