@@ -116,12 +116,24 @@ def forked(compute, seconds=None, receive=None, cpu_seconds=None):
             os.kill(pid, signal.SIGKILL)
         _, status, usage = os.wait4(pid, 0)
     if outcome[0] == 'died':
-        if (cpu_seconds is not None and os.WIFSIGNALED(status)
-                and usage.ru_utime + usage.ru_stime >= math.ceil(cpu_seconds) - 0.5):
+        if cpu_seconds is not None and _over_processor_time(status, usage, cpu_seconds):
             return sent, ('cpu', cpu_seconds)
         outcome = ('died', f"killed by signal {os.WTERMSIG(status)}" if os.WIFSIGNALED(status)
                    else f"exit status {os.WEXITSTATUS(status)}")
     return sent, outcome
+
+
+def _over_processor_time(status, usage, seconds):
+    # stopped by the kernel at the limit: SIGXCPU at the soft limit, or
+    # SIGKILL at the hard one (a second later) if SIGXCPU was caught; the
+    # kernel's count and the one reported can differ by a tick, so the
+    # processor time reported is compared with a margin
+    if not os.WIFSIGNALED(status):
+        return False
+    if os.WTERMSIG(status) == signal.SIGXCPU:
+        return True
+    return (os.WTERMSIG(status) == signal.SIGKILL
+            and usage.ru_utime + usage.ru_stime >= 0.9 * max(1, math.ceil(seconds)))
 
 
 def _limit_processor_time(seconds):

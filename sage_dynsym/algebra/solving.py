@@ -89,7 +89,7 @@ from itertools import combinations
 
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
-from sage.misc.prandom import randint
+from sage.misc.prandom import sample
 from sage.libs.singular.function import singular_function
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
@@ -109,10 +109,11 @@ from .decomposition import (minimal_primes, membership_by_specialization, is_uni
                             shape, ShapePrime, triangular_sets, linear_substitutions)
 from .regions import prune_empty
 from .expression_walk import ExpressionWalker
+from .forked import forked
 from .term_orders import block_order, fastest_order
 from .translation import Translation, NotAlgebraic, translate_expressions
 
-__all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
+__all__ = ['MAX_EXPLICIT_DEGREE', 'CHOSEN_ORDER_SECONDS', 'BRANCH_SOLVE_SECONDS', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 'normalize',
            'vanishes', 'SolutionList', 'SolutionSet', 'SolutionSet_transcendental',
            'AlgebraicSolution', 'solve_exactly', 'REAL_POINT_SAMPLES', 'TranscendentalSolution',
            'PARAMETRIZATION_TRIES', 'PARAMETRIZATION_SECONDS', 'PARAMETRIZATION_VARIABLES',
@@ -123,6 +124,15 @@ __all__ = ['MAX_EXPLICIT_DEGREE', 'REALITY_QE_VARIABLES', 'REALITY_QE_TIMEOUT', 
 #: Zero-dimensional components with parameters of a larger degree are not
 #: solved by radicals (they are returned implicitly).
 MAX_EXPLICIT_DEGREE = 16
+
+#: Seconds of processor time for the branches of an implicit family in
+#: several bound unknowns (:func:`_branches`); over them it stays implicit.
+BRANCH_SOLVE_SECONDS = 30
+
+#: Seconds of processor time for a system solved in the term order chosen
+#: by trying, then as many in ``degrevlex``, before it is solved in the
+#: chosen order without a limit (:func:`_in_chosen_order`).
+CHOSEN_ORDER_SECONDS = 60
 
 #: Powers `f^k` of a polynomial required nonzero tried on an implicit
 #: solution, for one that is a function of its free unknowns and parameters
@@ -834,7 +844,19 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
         {[str(u) for u in unknowns].index(str(SR(c))) for c in counted}
     if T.ring() is None:
         raise AnalysisError("no unknowns to solve for", entry="solve_exactly")
-    _choose_order(T, counted_set)
+    chosen = _choose_order(T, counted_set)
+
+    def solve():
+        return _solve_translated(T, len(equations), nonzero, counted_set, positive)
+    if chosen is None:
+        return solve()
+    return _in_chosen_order(T, chosen, solve)
+
+
+def _solve_translated(T, n_eq, nonzero, counted_set, positive):
+    r"""The :class:`SolutionSet` of the translated system ``T`` (of
+    ``n_eq`` equations) in the term order of its ring: the work of
+    :func:`solve_exactly` once the order is chosen."""
     P = T.ring()
     gens = T.equations()
     I = P.ideal(gens) if gens else P.ideal([P(0)])
@@ -849,7 +871,6 @@ def solve_exactly(equations, unknowns, counted=None, nonzero=(), positive=(),
     for f in required:
         if f.degree() > 0:
             I = I.saturation(f)[0]
-    n_eq = len(equations)
     if is_unit_ideal(I):
         _log("the equations are inconsistent")
         return SolutionSet(T, [], n_eq)
@@ -882,6 +903,9 @@ def _choose_order(T, counted):
     are tried: over `\QQ`, or without multipliers, the bases met are fast
     in ``degrevlex``.
 
+    OUTPUT: the block order if it was taken (``T`` now uses it), else
+    ``None``
+
     EXAMPLES: the Lagrange system of a generic Kirchhoff Hamiltonian with
     12 symbolic coefficients is solved in the block order (its basis takes
     a fraction of a second there, over 7 seconds in ``degrevlex``)::
@@ -895,7 +919,9 @@ def _choose_order(T, counted):
         sage: eqs = [a[i]*M[i] + Bp[i] + l[1]*p[i] for i in range(3)]
         sage: eqs += [BM[i] + l[1]*M[i] + c[i]*p[i] + 2*l[0]*p[i] for i in range(3)]
         sage: T = Translation(eqs, M + p + l)
-        sage: _choose_order(T, set(range(6))); T.ring().term_order().name()
+        sage: _choose_order(T, set(range(6))) == T.ring().term_order()
+        True
+        sage: T.ring().term_order().name()
         'matrix'
     """
     n = len(T.unknowns())
@@ -908,9 +934,60 @@ def _choose_order(T, counted):
         return [P.gens().index(g) for i in unknowns for g in _unit_generators(T, i)]
 
     candidate = block_order([positions(sorted(counted)), positions(others)], P.ngens())
-    if fastest_order(P.ideal(T.equations()), [None, candidate]) is candidate:
-        _log("the block order of the unknowns and the multipliers")
-        T.use_order(candidate)
+    if fastest_order(P.ideal(T.equations()), [None, candidate]) is not candidate:
+        return None
+    _log("the block order of the unknowns and the multipliers")
+    T.use_order(candidate)
+    return candidate
+
+
+def _in_chosen_order(T, chosen, solve):
+    r"""
+    ``solve()`` in the term order ``chosen`` by trying, within
+    :data:`CHOSEN_ORDER_SECONDS` of processor time; over it, within as
+    much again in ``degrevlex``; then, without a limit, in ``chosen``.
+
+    The order is chosen by the time of one Gröbner basis, and the later
+    steps (decompositions, triangular sets of the components, nested
+    solves of their branches) can be far slower there than in
+    ``degrevlex``: Brun's problem on `(M, \gamma) = 0` solved in the block
+    order runs for over a quarter of an hour in the characteristic sets
+    of a part the factorizing basis gives there, and in 3 s in
+    ``degrevlex``. Each try runs in a forked process (a Singular call
+    cannot be stopped safely in this one), and its solutions come back
+    pickled. The waste is bounded: at most twice
+    :data:`CHOSEN_ORDER_SECONDS` before the last, unlimited, try.
+
+    EXAMPLES: a computation over its budget in the order chosen is done
+    in ``degrevlex``::
+
+        sage: import sage_dynsym.algebra.solving as solving
+        sage: from sage_dynsym.algebra.translation import Translation
+        sage: from sage_dynsym.algebra.term_orders import block_order
+        sage: x, y, l, a = var('x y l a')
+        sage: T = Translation([x - a*l, y - l], [x, y, l])
+        sage: chosen = block_order([[0, 1], [2]], 3)
+        sage: T.use_order(chosen)
+        sage: def solve():
+        ....:     if T.ring().term_order() == chosen:
+        ....:         while True: pass        # as if far slower in this order
+        ....:     return T.ring().term_order().name()
+        sage: solving.CHOSEN_ORDER_SECONDS = 1
+        sage: solving._in_chosen_order(T, chosen, solve)
+        'degrevlex'
+        sage: solving.CHOSEN_ORDER_SECONDS = 60
+    """
+    for order in (chosen, TermOrder('degrevlex', T.ring().ngens())):
+        T.use_order(order)
+        _, (how, value) = forked(lambda send: solve(), cpu_seconds=CHOSEN_ORDER_SECONDS)
+        if how == 'value':
+            return value
+        if how == 'error':
+            raise value
+        _log(f"not solved within {CHOSEN_ORDER_SECONDS} s of processor time in the term "
+             f"order {order.name()} ({how})")
+    T.use_order(chosen)
+    return solve()
 
 
 def _order_chosen(P):
@@ -1635,7 +1712,9 @@ def _branches(T, family, positive):
     parameters taken as parameters (a zero-dimensional system over their
     field: radicals, with the conditions of reality). Each real branch is
     an explicit family; the family is returned unchanged when a branch
-    cannot be written (or an unknown it binds is an angle).
+    cannot be written (or an unknown it binds is an angle), or when the
+    branches in several bound unknowns are not found within
+    :data:`BRANCH_SOLVE_SECONDS` of processor time.
 
     Only families whose reality is not known otherwise are split (a curve
     without parameters stays one implicit family).
@@ -1658,9 +1737,25 @@ def _branches(T, family, positive):
     if not _radicals_at_random_values(T, family.equations(), [unknowns[i] for i in bound]):
         _log("a branch needs a step of degree above 2 at random values: kept implicit")
         return [family]
+    equations = [SR(e).numerator() for e in family.equations()]
+    unknowns_bound = [unknowns[i] for i in bound]
+
+    def solve():
+        return solve_exactly(equations, unknowns_bound, positive=positive)
     try:
-        found = solve_exactly([SR(e).numerator() for e in family.equations()],
-                              [unknowns[i] for i in bound], positive=positive)
+        if len(bound) == 1:
+            found = solve()
+        else:
+            # the test at random values above decides with probability one,
+            # not always: a system of several unknowns whose triangular sets
+            # over the field of the parameters run long is left implicit
+            _, (how, found) = forked(lambda send: solve(), cpu_seconds=BRANCH_SOLVE_SECONDS)
+            if how == 'error':
+                raise found
+            if how != 'value':
+                _log(f"the branches not solved within {BRANCH_SOLVE_SECONDS} s of processor "
+                     f"time ({how}): kept implicit")
+                return [family]
     except (AnalysisError, ValueError, TypeError, NotImplementedError):
         return [family]
     if not found.is_complete() or any(b.dimension() or not b.is_explicit() for b in found):
@@ -1806,17 +1901,26 @@ def _qe_family(T, family, positive):
                              family._relations, conditions)
 
 
-def _radicals_at_random_values(T, equations, bound):
+def _radicals_at_random_values(T, equations, bound, attempts=2):
     r"""
     Whether the ``equations``, solved for the unknowns ``bound`` at random
     rational values of every other symbol, have finitely many solutions
     along triangular sets with steps of degree at most 2 (what
-    :func:`_solve_triangular` writes with radicals). A specialization only
-    splits factors, and the dimension only grows at special values, so
-    infinitely many solutions or a step of larger degree there is the same
-    for the symbols too (with probability one): the symbolic solve (far
-    slower) would not give radicals either. ``True`` when it cannot be
-    tried (angles among the symbols) or no solution is found there.
+    :func:`_solve_triangular` writes with radicals), at each of
+    ``attempts`` draws. A specialization only splits factors, and the
+    dimension only grows at special values, so infinitely many solutions
+    or a step of larger degree there is the same for the symbols too (with
+    probability one): the symbolic solve (far slower) would not give
+    radicals either. ``True`` when it cannot be tried (angles among the
+    symbols) or no solution is found at any draw (the symbolic solve
+    decides).
+
+    The values are distinct: equal values are the special ones met most
+    often (equal moments of inertia), where the steps can factor into
+    quadratic ones although the symbolic system's do not. Brun's problem
+    on `M \cdot \gamma = 0` drew two equal values once in about thirty
+    runs, and its symbolic solve then went on for over half an hour on a
+    component of degree 12. Each draw must agree, for the same reason.
 
     EXAMPLES::
 
@@ -1826,25 +1930,37 @@ def _radicals_at_random_values(T, equations, bound):
         True
         sage: _radicals_at_random_values(None, [x^3 + a*x + 1], [x])
         False
+
+    TESTS: a step of degree 5 that splits into steps of degrees 2 and 1
+    where `a = b` (drawn from 2 to 97 with repeats, as before, such a draw
+    came about twice in 200) is never taken for radicals::
+
+        sage: b = var('b')
+        sage: f = (x^2 - a)*(x^2 - b)*(x - 1) + (a - b)*x^3
+        sage: any(_radicals_at_random_values(None, [f], [x]) for _ in range(200))
+        False
     """
     names = {str(b) for b in bound}
     others = sorted({v for e in equations for v in SR(e).variables()
                      if str(v) not in names}, key=str)
     if T is not None and any(T.is_angle(u) for u in T.unknowns() if u in others):
         return True
-    at = {v: QQ(randint(2, 97)) for v in others}
-    try:
-        S = Translation([SR(e).subs(at) for e in equations], bound)
-        I = S.ring().ideal(S.equations())
-        dimension = I.dimension()
-        if dimension < 0:       # the symbolic solve decides
+    for _ in range(attempts):
+        at = dict(zip(others, (QQ(v) for v in sample(range(2, 1000), len(others)))))
+        try:
+            S = Translation([SR(e).subs(at) for e in equations], bound)
+            I = S.ring().ideal(S.equations())
+            dimension = I.dimension()
+            if dimension < 0:       # no solution at these values
+                continue
+            if dimension > 0:
+                return False
+            sets = triangular_sets(I)
+        except (AnalysisError, ArithmeticError, ValueError, TypeError):
             return True
-        if dimension > 0:
+        if any(t.degree(v) > 2 for tri in sets for t in tri for v in t.variables()):
             return False
-        sets = triangular_sets(I)
-    except (AnalysisError, ArithmeticError, ValueError, TypeError):
-        return True
-    return all(t.degree(v) <= 2 for tri in sets for t in tri for v in t.variables())
+    return True
 
 
 def _singular_locus_solutions(T, prime, dimension, counted, positive):
