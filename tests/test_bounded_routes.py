@@ -70,20 +70,28 @@ def test_a_failed_trial_chooses_nothing(monkeypatch):
     assert term_orders.fastest_order(R.ideal([x**2 - y, y**2 - x]), [None, TermOrder('lex')]) is None
 
 
-@pytest.mark.slow
-def test_a_system_slow_in_the_order_chosen_is_solved_in_degrevlex(monkeypatch):
-    # Brun's problem on M.gamma = 0 with symbolic coefficients: its basis
-    # takes 0.02 s in degrevlex, so the block order is never chosen for it;
-    # forced into the block order, its solve runs for over a quarter of an
-    # hour there. Over CHOSEN_ORDER_SECONDS it is solved in degrevlex, with
-    # the solutions the test of that system checks by hand
+def _brun_level_zero_logged(monkeypatch, **patches):
+    # Brun's problem on M.gamma = 0 with symbolic coefficients, solved with
+    # the attributes ``patches`` of the solver replaced; its own test checks
+    # the solutions (by hand, see there); what the solver logged
     import sage_dynsym.algebra.solving as solving
     from test_stationary_noise import test_brun_symbolic_level_zero_axes_on_circles
-    monkeypatch.setattr(solving, 'fastest_order', lambda ideal, candidates: candidates[-1])
-    monkeypatch.setattr(solving, 'CHOSEN_ORDER_SECONDS', 5)
+    for name, value in patches.items():
+        monkeypatch.setattr(solving, name, value)
     logged = []
     monkeypatch.setattr(solving, '_log', logged.append)
     test_brun_symbolic_level_zero_axes_on_circles()
+    return logged
+
+
+@pytest.mark.slow
+def test_a_system_slow_in_the_order_chosen_is_solved_in_degrevlex(monkeypatch):
+    # its basis takes 0.02 s in degrevlex, so the block order is never
+    # chosen for it; forced into the block order, its solve runs for over a
+    # quarter of an hour there. Over CHOSEN_ORDER_SECONDS it is solved in
+    # degrevlex
+    logged = _brun_level_zero_logged(monkeypatch, CHOSEN_ORDER_SECONDS=5,
+                                     fastest_order=lambda ideal, candidates: candidates[-1])
     assert any("not solved within 5 s of processor time in the term order matrix (cpu)" in m
                for m in logged)
 
@@ -91,15 +99,9 @@ def test_a_system_slow_in_the_order_chosen_is_solved_in_degrevlex(monkeypatch):
 @pytest.mark.slow
 def test_branches_over_their_budget_stay_implicit(monkeypatch):
     # the route an unlucky draw took (the test at random values taken as
-    # saying radicals): the symbolic solve of the branches of Brun's
-    # families is stopped at its budget, the families stay implicit, and
-    # the solutions still pass the checks of that system's test
-    import sage_dynsym.algebra.solving as solving
-    from test_stationary_noise import test_brun_symbolic_level_zero_axes_on_circles
-    monkeypatch.setattr(solving, '_radicals_at_random_values', lambda *args: True)
-    monkeypatch.setattr(solving, 'BRANCH_SOLVE_SECONDS', 2)
-    logged = []
-    monkeypatch.setattr(solving, '_log', logged.append)
-    test_brun_symbolic_level_zero_axes_on_circles()
+    # saying radicals): the symbolic solve of the branches of its families
+    # is stopped at its budget, and the families stay implicit
+    logged = _brun_level_zero_logged(monkeypatch, BRANCH_SOLVE_SECONDS=2,
+                                     _radicals_at_random_values=lambda *args: True)
     assert any("branches not solved within 2 s of processor time (cpu): kept implicit" in m
                for m in logged)
