@@ -82,7 +82,8 @@ SMALL_DEGREE = 4
 GTZ_BUDGET = 10
 
 #: Random rational values of the parameters at which a part must be prime
-#: to be taken as prime (:func:`prime_by_specialization`).
+#: to be taken as prime, and at most as many more drawn again where it
+#: splits (:func:`prime_by_specialization`).
 SPECIALIZATIONS = 2
 
 
@@ -403,15 +404,17 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     is prime, decided at random rational values of the parameters: true if
     at ``attempts`` random values the specialized ideal equals its only
     minimal associated prime (Singular's ``minAssChar``), of the same
-    dimension at each of them.
+    dimension at each of them, before it splits at as many others.
 
     A decomposition over `\QQ(\text{parameters})` is far slower than over
     `\QQ`; if ``J`` were not prime, or not radical, so would be its
     specialization at all values outside a proper algebraic subset of the
     parameter space, which random values avoid with probability one (the
     specializations of a modular method); over `\QQ` a prime can also split
-    at the values of a thin set (`x^2 - a y^2` where `a` is a square), where
-    the answer is ``False``: only slower, never wrong. The dimension of ``J`` is that of
+    at the values of a thin set (`x^2 - a y^2` where `a` is a square): such
+    a value is replaced by another, and only a prime that splits at
+    ``attempts`` values is answered ``False`` (only slower, never wrong).
+    The dimension of ``J`` is that of
     its specialization at values outside such a subset too, so it is not
     computed: a Gröbner basis over the field of the parameters can take
     minutes where the specialized ones take a fraction of a second (the
@@ -440,6 +443,23 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
         sage: R.<x, y> = K[]
         sage: all(prime_by_specialization(R.ideal([x^2 - (a - b)*y^3])) for _ in range(50))
         True
+
+    A prime that splits at the first value drawn (`x^2 - 4 y^2`) is still
+    found prime at the next two; an ideal that is not prime is refused
+    after two values where it splits::
+
+        sage: from sage_dynsym.algebra import decomposition
+        sage: K = Frac(QQ['a']); a = K.gen()
+        sage: R.<x, y> = K[]
+        sage: original = decomposition._Specialization.random_values
+        sage: draws = iter([[QQ(4)], [QQ(5)], [QQ(7)]])
+        sage: decomposition._Specialization.random_values = lambda self: next(draws)
+        sage: prime_by_specialization(R.ideal([x^2 - a*y^2]))
+        True
+        sage: draws = iter([[QQ(5)], [QQ(7)]])
+        sage: prime_by_specialization(R.ideal([x^2 - a^2*y^2]))
+        False
+        sage: decomposition._Specialization.random_values = original
     """
     P = J.ring()
     try:
@@ -449,21 +469,34 @@ def prime_by_specialization(J, attempts=SPECIALIZATIONS):
     dimensions = set()
     singular_lib('primdec.lib')
     gens = [g for g in J.gens() if g != 0]
-    for _ in range(attempts):
+    prime, split = 0, 0
+    while prime < attempts:
+        # a draw where the specialization splits (or a denominator
+        # vanishes) is drawn again, up to as many times: an ideal that is
+        # not prime splits at almost all values, so it is refused as soon;
+        # a prime one splits only on a thin set (x^2 - a y^2 where a is a
+        # square: 3 draws in 100), which one unlucky draw no longer turns
+        # into the slow decomposition over the field
+        if split >= attempts:
+            return False
         values = at.random_values()
         try:
             specialized = [at(g, values) for g in gens]
         except ZeroDivisionError:
-            return False
+            split += 1
+            continue
         # the unknowns given linearly eliminated over QQ (the graph of the
         # substitutions over the rest: same primality, dimension shifted)
         rest, substitutions = linear_substitutions(specialized)
         Js = at.ring.ideal(rest or [at.ring(0)])
         primes = [at.ring.ideal(list(Q)) for Q in singular_function('minAssChar')(Js)]
+        if len(primes) != 1 or any(Js.reduce(g) != 0 for g in primes[0].gens()):
+            split += 1
+            continue
         dimensions.add(Js.dimension() - len(substitutions))
-        if len(primes) != 1 or len(dimensions) != 1 or \
-                any(Js.reduce(g) != 0 for g in primes[0].gens()):
+        if len(dimensions) != 1:
             return False
+        prime += 1
     return True
 
 
