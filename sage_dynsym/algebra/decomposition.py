@@ -60,12 +60,13 @@ from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
 from sage.rings.rational_field import QQ
 
-from .forked import forked
+from .forked import within_processor_time
 from .term_orders import restricted_order, reverse_block
 
 __all__ = ['SEPARATING_ATTEMPTS', 'SMALL_DEGREE', 'GTZ_BUDGET', 'SPECIALIZATIONS',
            'positive_dimensional_primes', 'linear_substitutions', 'prime_by_specialization',
            'in_prime_by_specialization', 'membership_by_specialization', 'is_unit_ideal',
+           'distinct_random_values',
            'homogeneous_parts', 'with_basis',
            'minimal_primes', 'separating_form', 'ShapePrime', 'triangular_sets', 'shape']
 
@@ -323,15 +324,13 @@ def _gtz_or_characteristic_sets(J, budget):
     if budget > 0 and P.base_ring().is_prime_field():
         if len([g for g in J.gens() if g != 0]) == 1:
             return J.minimal_associated_primes()
-        _, (how, found) = forked(lambda send: [[str(g) for g in Q.gens()]
-                                               for Q in J.minimal_associated_primes()],
-                                 cpu_seconds=budget)
-        if how == 'value':
+        done, found = within_processor_time(lambda: [[str(g) for g in Q.gens()]
+                                                     for Q in J.minimal_associated_primes()],
+                                            budget)
+        if done:
             return [P.ideal([P(g) for g in Q]) for Q in found]
-        if how == 'error':
-            raise found
-        _log(f"minAssGTZ: over {found} s of processor time: characteristic sets instead"
-             if how == 'cpu' else f"minAssGTZ: {how} ({found}): characteristic sets instead")
+        _log(f"minAssGTZ: over {budget} s of processor time: characteristic sets instead"
+             if found == 'cpu' else f"minAssGTZ: {found}: characteristic sets instead")
     singular_lib('primdec.lib')
     return [P.ideal(list(Q)) for Q in singular_function('minAssChar')(J)]
 
@@ -584,6 +583,24 @@ def membership_by_specialization(Q, attempts=SPECIALIZATIONS):
     return member
 
 
+def distinct_random_values(n):
+    r"""
+    ``n`` distinct random rationals (integers from 2 to 999): the values at
+    which parameters are specialized to decide something with probability
+    one. Distinct, because equal parameters (equal moments of inertia) are
+    the special values met most often: there components split and steps
+    factor.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.decomposition import distinct_random_values
+        sage: v = distinct_random_values(5)
+        sage: len(set(v)) == 5 and all(2 <= x <= 999 and x in ZZ for x in v)
+        True
+    """
+    return [QQ(v) for v in sample(range(2, 1000), n)]
+
+
 class _Specialization:
     r"""The map of the polynomials of ``P``, a ring over a field of
     rational functions in parameters, to the ring over `\QQ` with the same
@@ -602,9 +619,7 @@ class _Specialization:
         self._terms = {}
 
     def random_values(self):
-        # distinct values: equal parameters (equal moments of inertia) are
-        # the special values met most often, where components split
-        return [QQ(v) for v in sample(range(2, 1000), self.parameters.ngens())]
+        return distinct_random_values(self.parameters.ngens())
 
     def __call__(self, g, values):
         # by the object: its own terms are read once (a polynomial's hash

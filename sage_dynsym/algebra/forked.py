@@ -37,7 +37,7 @@ import struct
 import sys
 import time
 
-__all__ = ['forked']
+__all__ = ['forked', 'within_processor_time']
 
 _LENGTH = struct.Struct('>Q')
 
@@ -121,6 +121,36 @@ def forked(compute, seconds=None, receive=None, cpu_seconds=None):
         outcome = ('died', f"killed by signal {os.WTERMSIG(status)}" if os.WIFSIGNALED(status)
                    else f"exit status {os.WEXITSTATUS(status)}")
     return sent, outcome
+
+
+def within_processor_time(compute, seconds):
+    r"""
+    ``compute()`` in a forked process (:func:`forked`) within ``seconds``
+    of its processor time, for a computation that has another way to go
+    when it is stopped.
+
+    OUTPUT: ``(True, value)``; or ``(False, why)`` when the child was
+    stopped at its processor time (``why`` is ``'cpu'``) or ended without a
+    result (``why`` says how). An exception of ``compute`` is raised here.
+
+    EXAMPLES::
+
+        sage: from sage_dynsym.algebra.forked import within_processor_time
+        sage: within_processor_time(lambda: 2 + 2, 5)
+        (True, 4)
+        sage: within_processor_time(lambda: len([k for k in range(10^10)]), 1)
+        (False, 'cpu')
+        sage: within_processor_time(lambda: 1/0, 5)
+        Traceback (most recent call last):
+        ...
+        ZeroDivisionError: rational division by zero
+    """
+    _, (how, value) = forked(lambda send: compute(), cpu_seconds=seconds)
+    if how == 'value':
+        return True, value
+    if how == 'error':
+        raise value
+    return False, how if how == 'cpu' else f"{how}: {value}"
 
 
 def _over_processor_time(status, usage, seconds):

@@ -89,7 +89,6 @@ from itertools import combinations
 
 from sage.functions.trig import arccos, arcsin, arctan2
 from sage.matrix.constructor import matrix
-from sage.misc.prandom import sample
 from sage.libs.singular.function import singular_function
 from sage.misc.verbose import verbose
 from sage.rings.polynomial.polynomial_ring_constructor import PolynomialRing
@@ -106,10 +105,11 @@ from ..errors import AnalysisError
 from .conditions import (positive_conditions, nonzero_conditions, conjunction,
                          simplify_conjunction)
 from .decomposition import (minimal_primes, membership_by_specialization, is_unit_ideal,
+                            distinct_random_values,
                             shape, ShapePrime, triangular_sets, linear_substitutions)
 from .regions import prune_empty
 from .expression_walk import ExpressionWalker
-from .forked import forked
+from .forked import within_processor_time
 from .term_orders import block_order, fastest_order
 from .translation import Translation, NotAlgebraic, translate_expressions
 
@@ -979,13 +979,11 @@ def _in_chosen_order(T, chosen, solve):
     """
     for order in (chosen, TermOrder('degrevlex', T.ring().ngens())):
         T.use_order(order)
-        _, (how, value) = forked(lambda send: solve(), cpu_seconds=CHOSEN_ORDER_SECONDS)
-        if how == 'value':
+        done, value = within_processor_time(solve, CHOSEN_ORDER_SECONDS)
+        if done:
             return value
-        if how == 'error':
-            raise value
         _log(f"not solved within {CHOSEN_ORDER_SECONDS} s of processor time in the term "
-             f"order {order.name()} ({how})")
+             f"order {order.name()} ({value})")
     T.use_order(chosen)
     return solve()
 
@@ -1749,12 +1747,10 @@ def _branches(T, family, positive):
             # the test at random values above decides with probability one,
             # not always: a system of several unknowns whose triangular sets
             # over the field of the parameters run long is left implicit
-            _, (how, found) = forked(lambda send: solve(), cpu_seconds=BRANCH_SOLVE_SECONDS)
-            if how == 'error':
-                raise found
-            if how != 'value':
+            done, found = within_processor_time(solve, BRANCH_SOLVE_SECONDS)
+            if not done:
                 _log(f"the branches not solved within {BRANCH_SOLVE_SECONDS} s of processor "
-                     f"time ({how}): kept implicit")
+                     f"time ({found}): kept implicit")
                 return [family]
     except (AnalysisError, ValueError, TypeError, NotImplementedError):
         return [family]
@@ -1946,7 +1942,7 @@ def _radicals_at_random_values(T, equations, bound, attempts=2):
     if T is not None and any(T.is_angle(u) for u in T.unknowns() if u in others):
         return True
     for _ in range(attempts):
-        at = dict(zip(others, (QQ(v) for v in sample(range(2, 1000), len(others)))))
+        at = dict(zip(others, distinct_random_values(len(others))))
         try:
             S = Translation([SR(e).subs(at) for e in equations], bound)
             I = S.ring().ideal(S.equations())
